@@ -1,0 +1,219 @@
+//! The four model variants of [S] and a fully custom one.
+//!
+//! Weight function [S-17]:  W(a) = 1 − c₁(1 − a²) − c₂(1 − a⁴).
+//! It weights the elastic energy of a mode, u_ela ∝ a_r·W [S-14], and the stress broadening,
+//! Δp ∝ W^α [S-15] (α = ½ in [S]'s models 1–3, ¼ in model 4). The Griffith criterion is
+//! σ_a = k_G √(q E* f γ(q)) [S-8] with k_G = 2 for models 3, 4 ("twice the given value",
+//! [S] §2.3), optionally capped at the theoretical adhesive stress γ_s/ρ.
+//!
+//! | model | c₁ | c₂ | α | k_G | cap |
+//! |---|---|---|---|---|---|
+//! | 1 | 0 | 0 | ½ | 1 | no |
+//! | 2 | 0.55 | 0 | ½ | 1 | no |
+//! | 3 | −2/9 | 2/3 | ½ | 2 | yes |
+//! | 4 | 0.65 | 0 | ¼ | 2 | yes |
+//!
+//! Model 4 is printed in [S] as W = 0.35 + 0.65(1 − a²), contradicting "W(a_r → 0) = 0.35"
+//! in the next sentence; physics.md §7 erratum 2 fixes it to W = 0.35 + 0.65a² (c₁ = 0.65).
+
+use crate::error::{Error, Result};
+use serde::{Deserialize, Serialize};
+
+/// Which variant of the theory a [`Model`] is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ModelKind {
+    /// Model 1: original Persson theory.
+    One,
+    /// Model 2: Persson's energy weight also applied to the broadening.
+    Two,
+    /// Model 3: gauged on [S-18].
+    Three,
+    /// Model 4: re-tuned for the thin adhesive system II.
+    Four,
+    /// Every coefficient set by the user.
+    Custom,
+}
+
+/// Coefficients of one variant of the theory. Build with [`Model::named`] or [`Model::custom`].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Model {
+    /// Which variant.
+    pub kind: ModelKind,
+    /// c₁ of [S-17].
+    pub c1: f64,
+    /// c₂ of [S-17].
+    pub c2: f64,
+    /// Broadening exponent α: Δp ∝ W^α.
+    pub alpha: f64,
+    /// Griffith prefactor k_G in σ_a = k_G √(qE*fγ).
+    pub k_griffith: f64,
+    /// Whether σ_a is capped at γ_s/ρ.
+    pub cap: bool,
+}
+
+impl Model {
+    /// Model 1–4 of [S] (model 4 with erratum 2 applied).
+    pub fn named(n: u8) -> Result<Model> {
+        let m = match n {
+            1 => (ModelKind::One, 0.0, 0.0, 0.5, 1.0, false),
+            2 => (ModelKind::Two, 0.55, 0.0, 0.5, 1.0, false),
+            3 => (ModelKind::Three, -2.0 / 9.0, 2.0 / 3.0, 0.5, 2.0, true),
+            4 => (ModelKind::Four, 0.65, 0.0, 0.25, 2.0, true),
+            _ => return Err(Error::field("model", n, "1, 2, 3 or 4 (or custom)")),
+        };
+        Ok(Model {
+            kind: m.0,
+            c1: m.1,
+            c2: m.2,
+            alpha: m.3,
+            k_griffith: m.4,
+            cap: m.5,
+        })
+    }
+
+    /// A custom model; validated: W(a) ≥ 0 on [0, 1], 0 < α ≤ 4, k_G > 0.
+    pub fn custom(c1: f64, c2: f64, alpha: f64, k_griffith: f64, cap: bool) -> Result<Model> {
+        let m = Model {
+            kind: ModelKind::Custom,
+            c1,
+            c2,
+            alpha,
+            k_griffith,
+            cap,
+        };
+        m.validate()?;
+        Ok(m)
+    }
+
+    /// Checks the coefficients (used for custom models and after user edits).
+    pub fn validate(&self) -> Result<()> {
+        if !self.c1.is_finite() {
+            return Err(Error::field(
+                "model.c1",
+                self.c1,
+                "a finite number with W(a) >= 0 on [0, 1]",
+            ));
+        }
+        if !self.c2.is_finite() {
+            return Err(Error::field(
+                "model.c2",
+                self.c2,
+                "a finite number with W(a) >= 0 on [0, 1]",
+            ));
+        }
+        if !(self.alpha > 0.0 && self.alpha <= 4.0) {
+            return Err(Error::field("model.alpha", self.alpha, "0 < alpha <= 4"));
+        }
+        if !(self.k_griffith > 0.0 && self.k_griffith <= 100.0) {
+            return Err(Error::field(
+                "model.k_griffith",
+                self.k_griffith,
+                "0 < k_griffith <= 100",
+            ));
+        }
+        let wmin = self.w_min();
+        if wmin < 0.0 {
+            return Err(Error::field(
+                "model.c1/c2",
+                format!("({}, {}) giving min W = {wmin:.4}", self.c1, self.c2),
+                "coefficients with W(a) = 1 - c1(1-a^2) - c2(1-a^4) >= 0 for all 0 <= a <= 1",
+            ));
+        }
+        Ok(())
+    }
+
+    /// W(a) of [S-17].
+    #[inline]
+    pub fn w(&self, a: f64) -> f64 {
+        let b = a * a;
+        1.0 - self.c1 * (1.0 - b) - self.c2 * (1.0 - b * b)
+    }
+
+    /// The broadening weight W(a)^{2α} that multiplies the stress variance [S-15].
+    /// W is clamped at 0 (it can only be negative through rounding for a valid model).
+    #[inline]
+    pub fn broadening(&self, a: f64) -> f64 {
+        let w = self.w(a).max(0.0);
+        if self.alpha == 0.5 {
+            w
+        } else {
+            w.powf(2.0 * self.alpha)
+        }
+    }
+
+    /// Minimum of W over a ∈ [0, 1] (W is quadratic in b = a²).
+    pub fn w_min(&self) -> f64 {
+        let w0 = 1.0 - self.c1 - self.c2;
+        let mut m = w0.min(1.0);
+        if self.c2 > 0.0 {
+            let b = -self.c1 / (2.0 * self.c2);
+            if b > 0.0 && b < 1.0 {
+                m = m.min(w0 + self.c1 * b + self.c2 * b * b);
+            }
+        }
+        m
+    }
+
+    /// Short human-readable name: "model 3" or "custom".
+    pub fn label(&self) -> String {
+        match self.kind {
+            ModelKind::One => "model 1".into(),
+            ModelKind::Two => "model 2".into(),
+            ModelKind::Three => "model 3".into(),
+            ModelKind::Four => "model 4".into(),
+            ModelKind::Custom => "custom".into(),
+        }
+    }
+
+    /// The model number 1–4, or `None` for custom.
+    pub fn number(&self) -> Option<u8> {
+        match self.kind {
+            ModelKind::One => Some(1),
+            ModelKind::Two => Some(2),
+            ModelKind::Three => Some(3),
+            ModelKind::Four => Some(4),
+            ModelKind::Custom => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn weight_limits() {
+        // W(1) = 1 for every model; W(0) = 1 − c1 − c2: 1, 0.45, 5/9, 0.35
+        for (n, w0) in [(1, 1.0), (2, 0.45), (3, 5.0 / 9.0), (4, 0.35)] {
+            let m = Model::named(n).unwrap();
+            assert!((m.w(1.0) - 1.0).abs() < 1e-15);
+            assert!((m.w(0.0) - w0).abs() < 1e-15, "model {n}");
+            assert!(m.w_min() <= w0 + 1e-15 && m.w_min() > 0.0, "model {n}");
+        }
+        // [S] §2.3: model 3's W "remains larger than one half" on [0, 1]; its minimum is at
+        // a² = 1/6: W = 5/9 − 1/27 + 1/54 = 29/54
+        let m3 = Model::named(3).unwrap();
+        assert!((m3.w_min() - 29.0 / 54.0).abs() < 1e-15);
+        // model 4 with the erratum: W = 0.35 + 0.65 a²
+        let m4 = Model::named(4).unwrap();
+        assert!((m4.w(0.5) - (0.35 + 0.65 * 0.25)).abs() < 1e-15);
+        // broadening exponent: model 4 variance weight is W^{1/2}
+        assert!((m4.broadening(0.0) - 0.35f64.sqrt()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn custom_validation() {
+        assert!(Model::custom(0.5, 0.0, 0.5, 1.0, false).is_ok());
+        let e = Model::custom(1.5, 0.0, 0.5, 1.0, false).unwrap_err().to_string();
+        assert!(e.contains("model.c1/c2"), "{e}");
+        let e = Model::custom(0.0, 0.0, 0.0, 1.0, false).unwrap_err().to_string();
+        assert!(e.contains("model.alpha") && e.contains("0 < alpha <= 4"), "{e}");
+        let e = Model::custom(f64::NAN, 0.0, 0.5, 1.0, false).unwrap_err().to_string();
+        assert!(e.contains("model.c1"), "{e}");
+        // interior minimum: c1 = -2, c2 = 2 → W(b) = 1 − 2b + 2b²... min at b = 0.5: 0.5
+        let m = Model::custom(-2.0, 2.0, 0.5, 1.0, false).unwrap();
+        assert!((m.w_min() - 0.5).abs() < 1e-15);
+        assert!(Model::named(5).unwrap_err().to_string().contains("model = 5"));
+    }
+}

@@ -1,0 +1,35 @@
+//! Every tolerance the tests (and `asperity bench --quick`) check against, in one place, each
+//! with its justification.
+
+/// Slab factor against independent evaluations: the series and scaled closed form are
+/// accurate to a few ulps; the naive form in [0.3, 30] loses at most ~2 digits.
+pub const SLAB_FACTOR_REL: f64 = 1e-12;
+
+/// Gauss–Legendre quadrature of the spectrum's moments against their closed forms: 8-point
+/// panels of width ≤ 0.25 in ln q integrate q^k with |k| ≤ 6 to ~1e-15; 1e-12 leaves room for
+/// summation rounding over ~10³ nodes.
+pub const QUADRATURE_REL: f64 = 1e-12;
+
+/// Model 1 on a semi-infinite body against erf(√2 p*): the ODE reduces to a quadrature of the
+/// gradient measure (error ≤ rtol = 1e-9 in v → ~1e-10 in a_r) plus the closed-form ḡ.
+pub const MODEL1_ERF_ABS: f64 = 1e-9;
+
+/// Table 1 of [S] (σ̄_c*, variance): the paper prints 4 decimals and its own discretisation
+/// differs slightly; reference-values.md gives ±0.0005 as the target.
+pub const TABLE1_ABS: f64 = 5e-4;
+
+/// The model columns of the eq. (18) table in reference-values.md, printed to 5 digits and
+/// computed on the ideal PSD: 0.5 % relative (the issue's stated bound).
+pub const EQ18_TABLE_REL: f64 = 5e-3;
+
+/// ∫Pr dσ = a_r and ∫σPr dσ = p on a 4001-point trapezoid grid up to p + 8Δ: the trapezoid
+/// error for a smooth density with Δ ≥ 0.05 is ≲ 1e-6 relative.
+pub const PR_INTEGRAL_REL: f64 = 1e-5;
+
+/// Agreement of the adaptive variance ODE with an independent oracle (autonomous-ODE
+/// quadrature G(v) = 4∫W^{-2α}dv for t = ∞): both are converged to ~1e-10.
+pub const ORACLE_REL: f64 = 1e-7;
+
+/// Target relative error of a_r at the default accuracy against a refined solution
+/// (issue 2: below 1e-6).
+pub const DEFAULT_ACCURACY_REL: f64 = 1e-6;
