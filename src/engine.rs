@@ -58,6 +58,8 @@ pub struct Evaluation {
     pub converged: bool,
     /// Estimated absolute error of a_r.
     pub error_estimate: f64,
+    /// Elastic energy U per nominal area (J/m²) [S-11]; see [`crate::energy`].
+    pub elastic_energy: f64,
     /// Wall time (s).
     pub elapsed_s: f64,
 }
@@ -79,6 +81,7 @@ pub fn evaluate(scene: &Scene, opts: &Options) -> Result<Evaluation> {
         None => sol.default_sigma_max(),
     };
     let (sigma, density) = sol.sample(sigma_max, opts.sigma_points);
+    let elastic_energy = crate::energy::elastic_energy(scene, |q| sol.area_at(q));
     Ok(Evaluation {
         a_r: sol.a_r,
         mean_contact_stress: sol.mean_contact_stress,
@@ -88,6 +91,7 @@ pub fn evaluate(scene: &Scene, opts: &Options) -> Result<Evaluation> {
         resolution: sol.resolution,
         converged: true,
         error_estimate: sol.error_estimate,
+        elastic_energy,
         elapsed_s: t0.elapsed().as_secs_f64(),
     })
 }

@@ -9,11 +9,13 @@
 //! - [`model`]: weight function W(a) [S-17] and the four model variants.
 //! - [`mirror`]: mirror-Gaussian distribution and moments [S-7, S-22].
 //! - [`persson`]: the adhesionless theory, the W-coupled variance ODE [S-2, S-15, S-22].
+//! - [`energy`]: elastic energy U [S-11, S-14].
 //! - [`scene`], [`preset`]: inputs and preset systems.
 //! - [`engine`]: one evaluation of a scene, whatever it needs (the front ends call this).
 //! - [`cli`]: the headless commands.
 
 pub mod cli;
+pub mod energy;
 pub mod engine;
 pub mod error;
 pub mod fft2;

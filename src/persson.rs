@@ -82,6 +82,9 @@ pub struct Solution {
     pub error_estimate: f64,
     /// Right-hand-side evaluations (work measure).
     pub evaluations: usize,
+    /// Dense record of v(q): (ln q, v, dv/d ln q) at the solver's points, for interpolation.
+    #[serde(skip)]
+    pub trajectory: Trajectory,
 }
 
 impl Solution {
@@ -96,6 +99,20 @@ impl Solution {
         let sigma: Vec<f64> = (0..n).map(|i| sigma_max * i as f64 / (n - 1) as f64).collect();
         let density = sigma.iter().map(|&s| self.density(s)).collect();
         (sigma, density)
+    }
+
+    /// Reduced variance v(q) at resolution q (cubic Hermite on the solver's points; for a
+    /// discrete spectrum, the value after the last shell with |q'| ≤ q).
+    pub fn variance_at(&self, q: f64) -> f64 {
+        if q <= 0.0 {
+            return 0.0;
+        }
+        self.trajectory.eval(q.ln())
+    }
+
+    /// a_r(q) at resolution q.
+    pub fn area_at(&self, q: f64) -> f64 {
+        area_of_variance(self.pressure, self.variance_at(q))
     }
 
     /// A σ* range that shows the whole distribution: up to p* + 5Δ*.
@@ -129,7 +146,7 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
         .map(|i| (q_l.ln() + (q_s / q_l).ln() * i as f64 / (npts - 1) as f64).exp())
         .collect();
 
-    let (v_end, err_v, evaluations, resolution) = match &scene.spectrum {
+    let (v_end, err_v, evaluations, resolution, trajectory) = match &scene.spectrum {
         Spectrum::SelfAffine(sa) => {
             let sa = *sa;
             let mut rhs = |s: f64, v: f64| -> f64 {
@@ -171,7 +188,7 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
                     }
                 })
                 .collect();
-            (v_end, traj.err_sum, traj.evaluations, resolution)
+            (v_end, traj.err_sum, traj.evaluations, resolution, traj)
         }
         Spectrum::Discrete(d) => {
             let mut v = 0.0;
@@ -196,7 +213,25 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
                     }
                 })
                 .collect();
-            (v, 0.0, 2 * d.modes.len(), resolution)
+            // step-function record: v is constant between shells (zero slope)
+            let mut traj = Trajectory::default();
+            let mut prev = 0.0;
+            for &(q, vv) in &shells {
+                let s = q.ln();
+                traj.s.push(s - 1e-12);
+                traj.y.push(prev);
+                traj.dy.push(0.0);
+                traj.s.push(s);
+                traj.y.push(vv);
+                traj.dy.push(0.0);
+                prev = vv;
+            }
+            if traj.s.is_empty() {
+                traj.s.push(q_l.ln());
+                traj.y.push(0.0);
+                traj.dy.push(0.0);
+            }
+            (v, 0.0, 2 * d.modes.len(), resolution, traj)
         }
     };
 
@@ -219,5 +254,6 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
         resolution,
         error_estimate,
         evaluations,
+        trajectory,
     })
 }
