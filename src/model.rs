@@ -142,6 +142,12 @@ impl Model {
         }
     }
 
+    /// True when the broadening weight W^{2α} is identically 1 (c₁ = c₂ = 0, or α = 0): the
+    /// variance is then a plain quadrature, no ODE needed.
+    pub fn constant_broadening(&self) -> bool {
+        (self.c1 == 0.0 && self.c2 == 0.0) || self.alpha == 0.0
+    }
+
     /// Minimum of W over a ∈ [0, 1] (W is quadratic in b = a²).
     pub fn w_min(&self) -> f64 {
         let w0 = 1.0 - self.c1 - self.c2;

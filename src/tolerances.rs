@@ -10,9 +10,11 @@ pub const SLAB_FACTOR_REL: f64 = 1e-12;
 /// summation rounding over ~10³ nodes.
 pub const QUADRATURE_REL: f64 = 1e-12;
 
-/// Model 1 on a semi-infinite body against erf(√2 p*): the ODE reduces to a quadrature of the
-/// gradient measure (error ≤ rtol = 1e-9 in v → ~1e-10 in a_r) plus the closed-form ḡ.
-pub const MODEL1_ERF_ABS: f64 = 1e-9;
+/// Model 1 on a semi-infinite body against erf(√2 p*): with W = 1 the ODE is a pure quadrature
+/// of the gradient measure, which Dormand–Prince integrates to ~1e-12 at the default rtol
+/// (1e-7). Relative, so that it binds at p* = 1e-8 too. With W ≡ 1 the solver takes the
+/// quadrature path (v = ∫f²q²dm/4ḡ², Gauss–Legendre to ~1e-14), so 1e-9 has margin.
+pub const MODEL1_ERF_REL: f64 = 1e-9;
 
 /// Table 1 of [S] (σ̄_c*, variance): the paper prints 4 decimals and its own discretisation
 /// differs slightly; reference-values.md gives ±0.0005 as the target.
