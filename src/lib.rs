@@ -12,8 +12,10 @@
 //! - [`energy`]: elastic energy U [S-11, S-14].
 //! - [`scene`], [`preset`]: inputs and preset systems.
 //! - [`engine`]: one evaluation of a scene, whatever it needs (the front ends call this).
+//! - [`benchmark`]: speed-against-error ladders (`asperity bench`).
 //! - [`cli`]: the headless commands.
 
+pub mod benchmark;
 pub mod cli;
 pub mod energy;
 pub mod engine;

@@ -4,6 +4,8 @@
 //! with a non-zero exit code. Flag names and JSON keys are a public interface.
 
 use crate::engine;
+pub mod bench;
+
 use crate::error::{Error, Result};
 use crate::model::Model;
 use crate::persson::Accuracy;
@@ -36,6 +38,8 @@ pub enum Command {
     Run(RunArgs),
     /// List the available presets.
     Presets,
+    /// Speed against error for every solver; the full run writes BENCHMARKS.md.
+    Bench(bench::BenchArgs),
 }
 
 /// Output format of `run`.
@@ -349,6 +353,7 @@ pub fn main() -> i32 {
             }
             Ok(())
         }
+        Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let out = evaluate(&preset.name, &scene, &args)?;
             match args.format {

@@ -1,0 +1,302 @@
+//! Speed against error: ladders of accuracy settings for each solver, timed (median of several
+//! runs) and compared with a converged reference (a much finer solution, and closed forms
+//! where they exist). `asperity bench` prints the tables; the full run writes BENCHMARKS.md.
+//!
+//! Every rung that is the solver's default carries an error bound; `--quick` fails (non-zero
+//! exit) if any default rung exceeds its bound, so CI guards the accuracy of what users see.
+
+use crate::error::Result;
+use crate::model::Model;
+use crate::persson::{self, Accuracy};
+use crate::preset::Preset;
+use crate::scene::Scene;
+use crate::tolerances::DEFAULT_ACCURACY_REL;
+use serde::Serialize;
+use statrs::function::erf::erf;
+use std::time::Instant;
+
+/// One rung of a ladder.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Rung {
+    /// Solver name ("adhesionless theory", ...).
+    pub solver: String,
+    /// The case (preset, model, load, thickness).
+    pub case: String,
+    /// The accuracy setting of this rung.
+    pub setting: String,
+    /// Whether this rung is the solver's default.
+    pub default: bool,
+    /// Median wall time (s).
+    pub median_s: f64,
+    /// Number of timed runs.
+    pub runs: usize,
+    /// (quantity, relative error against the reference).
+    pub errors: Vec<(String, f64)>,
+    /// Bound on the largest error (checked on default rungs).
+    pub bound: Option<f64>,
+    /// Memory of the solution's working arrays (bytes), where meaningful.
+    pub memory_bytes: Option<u64>,
+}
+
+impl Rung {
+    /// Largest relative error of the rung.
+    pub fn max_error(&self) -> f64 {
+        self.errors.iter().map(|e| e.1).fold(0.0, f64::max)
+    }
+    /// True if the rung has a bound and exceeds it.
+    pub fn violates(&self) -> bool {
+        let e = self.max_error();
+        self.bound.is_some_and(|b| e.is_nan() || e > b)
+    }
+}
+
+/// A hard case and its outcome.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct HardCase {
+    /// Solver.
+    pub solver: String,
+    /// Description of the case.
+    pub case: String,
+    /// Outcome: "converged", or the error message.
+    pub outcome: String,
+    /// Key number (a_r) if converged.
+    pub a_r: Option<f64>,
+    /// Error estimate / residual reported by the solver.
+    pub residual: Option<f64>,
+    /// Wall time (s).
+    pub time_s: f64,
+}
+
+/// The whole report.
+#[derive(Debug, Clone, Serialize, PartialEq, Default)]
+pub struct Report {
+    /// Ladders.
+    pub rungs: Vec<Rung>,
+    /// Hard cases.
+    pub hard_cases: Vec<HardCase>,
+}
+
+/// Median wall time of `f` over `runs` runs (after one warm-up), in seconds.
+pub fn median_time<T>(runs: usize, mut f: impl FnMut() -> T) -> f64 {
+    std::hint::black_box(f());
+    let mut t: Vec<f64> = (0..runs.max(1))
+        .map(|_| {
+            let t0 = Instant::now();
+            std::hint::black_box(f());
+            t0.elapsed().as_secs_f64()
+        })
+        .collect();
+    t.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    t[t.len() / 2]
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    if b == 0.0 {
+        a.abs()
+    } else {
+        (a / b - 1.0).abs()
+    }
+}
+
+fn scene_of(preset: &str, model: u8, p: f64, t: f64) -> Result<Scene> {
+    let mut s = Preset::resolve(preset)?.scene()?;
+    s.model = Model::named(model)?;
+    s.pressure = p;
+    s.thickness_qr = t;
+    s.gamma = 0.0;
+    Ok(s)
+}
+
+fn fmt_t(t: f64) -> String {
+    if t.is_infinite() {
+        "inf".into()
+    } else {
+        format!("{t}")
+    }
+}
+
+/// Ladder of the adhesionless theory: rtol from 1e-4 to 1e-10 against rtol = 1e-13 and, for
+/// model 1, against erf(√2 p*).
+pub fn adhesionless(quick: bool) -> Result<Report> {
+    let runs = if quick { 5 } else { 51 };
+    let default_rtol = Accuracy::default().rtol;
+    let ladder: &[f64] = if quick {
+        &[1e-5, 1e-7, 1e-9]
+    } else {
+        &[1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10]
+    };
+    let cases: &[(&str, u8, f64, f64)] = &[
+        ("system-1", 1, 0.01, f64::INFINITY),
+        ("system-1", 3, 0.01, f64::INFINITY),
+        ("system-1", 4, 0.1, 0.5),
+        ("system-2", 4, 0.005, 0.1),
+    ];
+    let mut rep = Report::default();
+    for &(preset, model, p, t) in cases {
+        let scene = scene_of(preset, model, p, t)?;
+        let reference = persson::solve(
+            &scene,
+            &Accuracy {
+                rtol: 1e-13,
+                ..Accuracy::default()
+            },
+        )?;
+        let exact_area = (model == 1 && t.is_infinite()).then(|| erf(2f64.sqrt() * p));
+        for &rtol in ladder {
+            let acc = Accuracy {
+                rtol,
+                ..Accuracy::default()
+            };
+            let sol = persson::solve(&scene, &acc)?;
+            let time = median_time(runs, || persson::solve(&scene, &acc).map(|s| s.a_r));
+            let mut errors = vec![
+                ("a_r".to_string(), rel(sol.a_r, reference.a_r)),
+                (
+                    "mean_contact_stress".to_string(),
+                    rel(sol.mean_contact_stress, reference.mean_contact_stress),
+                ),
+                (
+                    "contact_stress_variance".to_string(),
+                    rel(sol.contact_stress_variance, reference.contact_stress_variance),
+                ),
+            ];
+            if let Some(x) = exact_area {
+                errors.push(("a_r vs erf(sqrt2 p*)".into(), rel(sol.a_r, x)));
+            }
+            let is_default = rtol == default_rtol;
+            rep.rungs.push(Rung {
+                solver: "adhesionless theory".into(),
+                case: format!("{preset} model {model} p*={p} t*q_r={}", fmt_t(t)),
+                setting: format!("rtol={rtol:.0e} ({} rhs evals)", sol.evaluations),
+                default: is_default,
+                median_s: time,
+                runs,
+                errors,
+                bound: is_default.then_some(DEFAULT_ACCURACY_REL),
+                memory_bytes: Some((sol.trajectory.s.len() * 3 * 8 + sol.resolution.len() * 24) as u64),
+            });
+        }
+    }
+    // hard cases
+    for (preset, model, p, t) in [
+        ("system-1", 3u8, 1e-8, f64::INFINITY),
+        ("system-1", 3, 10.0, f64::INFINITY),
+        ("system-2", 4, 0.005, 1e-4),
+        ("system-2", 2, 1e-8, 1e-4),
+    ] {
+        let scene = scene_of(preset, model, p, t)?;
+        let t0 = Instant::now();
+        let r = persson::solve(&scene, &Accuracy::default());
+        let time_s = t0.elapsed().as_secs_f64();
+        rep.hard_cases.push(HardCase {
+            solver: "adhesionless theory".into(),
+            case: format!("{preset} model {model} p*={p:e} t*q_r={}", fmt_t(t)),
+            outcome: match &r {
+                Ok(_) => "converged".into(),
+                Err(e) => e.to_string(),
+            },
+            a_r: r.as_ref().ok().map(|s| s.a_r),
+            residual: r.as_ref().ok().map(|s| s.error_estimate),
+            time_s,
+        });
+    }
+    Ok(rep)
+}
+
+/// Renders the ladders as markdown tables (one per solver) and the hard cases.
+pub fn markdown(rep: &Report) -> String {
+    let mut out = String::new();
+    let mut solvers: Vec<&str> = rep.rungs.iter().map(|r| r.solver.as_str()).collect();
+    solvers.dedup();
+    for solver in solvers {
+        out.push_str(&format!("### {solver}\n\n"));
+        out.push_str("| case | setting | default | median time | max rel. error | errors | memory |\n");
+        out.push_str("|---|---|---|---|---|---|---|\n");
+        for r in rep.rungs.iter().filter(|r| r.solver == solver) {
+            let errs = r
+                .errors
+                .iter()
+                .map(|(k, v)| format!("{k} {v:.1e}"))
+                .collect::<Vec<_>>()
+                .join(", ");
+            out.push_str(&format!(
+                "| {} | {} | {} | {} | {:.1e}{} | {} | {} |\n",
+                r.case,
+                r.setting,
+                if r.default { "**yes**" } else { "" },
+                fmt_time(r.median_s),
+                r.max_error(),
+                match r.bound {
+                    Some(b) => format!(" (bound {b:.0e}{})", if r.violates() { ", **FAILED**" } else { "" }),
+                    None => String::new(),
+                },
+                errs,
+                r.memory_bytes.map_or("".into(), fmt_bytes),
+            ));
+        }
+        out.push('\n');
+    }
+    if !rep.hard_cases.is_empty() {
+        out.push_str("### Hard cases\n\n| solver | case | outcome | a_r | residual / error estimate | time |\n|---|---|---|---|---|---|\n");
+        for h in &rep.hard_cases {
+            out.push_str(&format!(
+                "| {} | {} | {} | {} | {} | {} |\n",
+                h.solver,
+                h.case,
+                h.outcome,
+                h.a_r.map_or("".into(), |a| format!("{a:.6e}")),
+                h.residual.map_or("".into(), |a| format!("{a:.1e}")),
+                fmt_time(h.time_s)
+            ));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// "12.3 µs", "4.5 ms", "1.23 s".
+pub fn fmt_time(s: f64) -> String {
+    if s < 1e-3 {
+        format!("{:.1} µs", s * 1e6)
+    } else if s < 1.0 {
+        format!("{:.2} ms", s * 1e3)
+    } else {
+        format!("{s:.2} s")
+    }
+}
+
+fn fmt_bytes(b: u64) -> String {
+    if b < 1 << 20 {
+        format!("{:.1} KiB", b as f64 / 1024.0)
+    } else {
+        format!("{:.1} MiB", b as f64 / (1 << 20) as f64)
+    }
+}
+
+/// A one-line description of this machine (CPU model and core count).
+pub fn machine() -> String {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown CPU".into());
+    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+    format!("{cpu}, {cores} cores available to the process")
+}
+
+/// The BENCHMARKS.md document around the tables.
+pub fn document(tables: &str) -> String {
+    format!(
+        "# Benchmarks: speed against error\n\n\
+         Generated by `cargo run --release -- bench` (this file; `--quick` runs a short version in CI and \
+         fails if a default setting exceeds its error bound).\n\n\
+         Machine: {}.\n\n\
+         Times are medians of repeated runs; errors are relative, against a much finer solution of the \
+         same solver (and closed forms where they exist). The default of each solver is marked.\n\n{}",
+        machine(),
+        tables
+    )
+}
