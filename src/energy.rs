@@ -8,14 +8,60 @@
 //! with dm = 2πqC(q)dq (the spectrum's height-variance measure). a_r(q) comes from whichever
 //! solver produced the scene's solution (adhesionless ODE or the adhesive fixed point).
 //! Reduced energy: U* = U/(E*ḡ·h_rms), so that p*·(ū/h_rms) has the same unit.
+//!
+//! Quadrature: near q_L the variance grows linearly, V ∝ q − q_L, so at small load
+//! a_r(q) ≈ p/√(2V) ∝ (q − q_L)^{−1/2}: an end-point singularity that Gauss panels in ln q
+//! integrate only to ~1e-4. The first segment of a continuum spectrum is therefore integrated
+//! with 8-point panels of width 1 in ln(q − q_L) (down to 1e-16 of its width, where the
+//! neglected part is < 1e-8 relative), which makes the integrand smooth; the other segments use
+//! the spectrum's panels ([`crate::spectrum::Spectrum::nodes`]).
 
 use crate::scene::Scene;
-use crate::spectrum::PANEL_WIDTH_LN;
+use crate::spectrum::{Mode, Spectrum, PANEL_WIDTH_LN};
 
-/// U in J/m² for a given a_r(q) (evaluated on the spectrum's quadrature nodes).
+/// 8-point Gauss–Legendre nodes (positive half) and weights on [−1, 1].
+const GL8: [(f64, f64); 4] = [
+    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
+    (0.960_289_856_497_536_3, 0.101_228_536_290_376_3),
+];
+
+/// Quadrature nodes (q, dm) for the energy integral (see the module docs).
+pub fn energy_nodes(spectrum: &Spectrum) -> Vec<Mode> {
+    let Spectrum::SelfAffine(sa) = spectrum else {
+        return spectrum.nodes(PANEL_WIDTH_LN);
+    };
+    let bp = spectrum.breakpoints();
+    let (lo, hi) = (bp[0], bp[1]);
+    let (ya, yb) = (((hi - lo) * 1e-16).ln(), (hi - lo).ln());
+    let panels = (yb - ya).ceil() as usize;
+    let h = (yb - ya) / panels as f64;
+    let mut out = Vec::with_capacity(panels * 8 + 400);
+    for k in 0..panels {
+        let mid = ya + (k as f64 + 0.5) * h;
+        let signed = GL8.iter().rev().map(|&(x, w)| (-x, w)).chain(GL8.iter().copied());
+        for (x, wt) in signed {
+            let d = (mid + 0.5 * h * x).exp();
+            let q = (lo + d).min(hi);
+            // dm = 2πqC dq, dq = d·du
+            let c = if bp.len() > 2 { sa.c0 } else { sa.psd(q) };
+            out.push(Mode {
+                q,
+                dm: 0.5 * h * wt * 2.0 * std::f64::consts::PI * q * c * d,
+            });
+        }
+    }
+    // the remaining segments: the spectrum's own panels after those of the first segment
+    let first = ((hi.ln() - lo.ln()) / PANEL_WIDTH_LN).ceil().max(1.0) as usize * 8;
+    out.extend(spectrum.nodes(PANEL_WIDTH_LN).into_iter().skip(first));
+    out
+}
+
+/// U in J/m² for a given a_r(q) (evaluated on [`energy_nodes`]).
 pub fn elastic_energy(scene: &Scene, a_of_q: impl Fn(f64) -> f64) -> f64 {
     let t = scene.thickness_m();
-    let nodes = scene.spectrum.nodes(PANEL_WIDTH_LN);
+    let nodes = energy_nodes(&scene.spectrum);
     let mut sum = 0.0;
     for m in &nodes {
         let a = a_of_q(m.q);

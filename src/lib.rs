@@ -10,6 +10,8 @@
 //! - [`mirror`]: mirror-Gaussian distribution and moments [S-7, S-22].
 //! - [`persson`]: the adhesionless theory, the W-coupled variance ODE [S-2, S-15, S-22].
 //! - [`energy`]: elastic energy U [S-11, S-14].
+//! - [`gap`]: mean gap ū(p₀) [S-12] by the energy route, and the Yang–Persson closed form.
+//! - [`sweep`]: a_r, ū, σ̄_c, U over a log-spaced load range (parallel; shared U table).
 //! - [`scene`], [`preset`]: inputs and preset systems.
 //! - [`engine`]: one evaluation of a scene, whatever it needs (the front ends call this).
 //! - [`benchmark`]: speed-against-error ladders (`asperity bench`).
@@ -21,6 +23,7 @@ pub mod energy;
 pub mod engine;
 pub mod error;
 pub mod fft2;
+pub mod gap;
 pub mod mirror;
 pub mod model;
 pub mod ode;
@@ -29,6 +32,7 @@ pub mod preset;
 pub mod scene;
 pub mod slab;
 pub mod spectrum;
+pub mod sweep;
 pub mod tolerances;
 
 pub use error::{Error, Result};

@@ -72,7 +72,8 @@ impl Model {
         })
     }
 
-    /// A custom model; validated: W(a) ≥ 0 on [0, 1], 0 < α ≤ 4, k_G > 0.
+    /// A custom model; validated: W(a) ≥ 0 on [0, 1], 0 ≤ α ≤ 4, k_G > 0. α = 0 puts W only
+    /// in the elastic energy (Persson 2007, Yang & Persson 2008), not in the broadening.
     pub fn custom(c1: f64, c2: f64, alpha: f64, k_griffith: f64, cap: bool) -> Result<Model> {
         let m = Model {
             kind: ModelKind::Custom,
@@ -102,8 +103,8 @@ impl Model {
                 "a finite number with W(a) >= 0 on [0, 1]",
             ));
         }
-        if !(self.alpha > 0.0 && self.alpha <= 4.0) {
-            return Err(Error::field("model.alpha", self.alpha, "0 < alpha <= 4"));
+        if !(self.alpha >= 0.0 && self.alpha <= 4.0) {
+            return Err(Error::field("model.alpha", self.alpha, "0 <= alpha <= 4"));
         }
         if !(self.k_griffith > 0.0 && self.k_griffith <= 100.0) {
             return Err(Error::field(
@@ -132,8 +133,12 @@ impl Model {
 
     /// The broadening weight W(a)^{2α} that multiplies the stress variance [S-15].
     /// W is clamped at 0 (it can only be negative through rounding for a valid model).
+    /// α = 0 gives 1 for every W, W = 0 included (W only in the energy).
     #[inline]
     pub fn broadening(&self, a: f64) -> f64 {
+        if self.alpha == 0.0 {
+            return 1.0;
+        }
         let w = self.w(a).max(0.0);
         if self.alpha == 0.5 {
             w
@@ -213,8 +218,15 @@ mod tests {
         assert!(Model::custom(0.5, 0.0, 0.5, 1.0, false).is_ok());
         let e = Model::custom(1.5, 0.0, 0.5, 1.0, false).unwrap_err().to_string();
         assert!(e.contains("model.c1/c2"), "{e}");
-        let e = Model::custom(0.0, 0.0, 0.0, 1.0, false).unwrap_err().to_string();
-        assert!(e.contains("model.alpha") && e.contains("0 < alpha <= 4"), "{e}");
+        let e = Model::custom(0.0, 0.0, -0.1, 1.0, false).unwrap_err().to_string();
+        assert!(e.contains("model.alpha") && e.contains("0 <= alpha <= 4"), "{e}");
+        let e = Model::custom(0.0, 0.0, 4.5, 1.0, false).unwrap_err().to_string();
+        assert!(e.contains("model.alpha"), "{e}");
+        // α = 0: W only in the energy; the broadening weight is 1 even where W = 0
+        let m0 = Model::custom(1.0, 0.0, 0.0, 1.0, false).unwrap();
+        assert_eq!(m0.w(0.0), 0.0);
+        assert_eq!(m0.broadening(0.0), 1.0);
+        assert_eq!(m0.broadening(0.7), 1.0);
         let e = Model::custom(f64::NAN, 0.0, 0.5, 1.0, false).unwrap_err().to_string();
         assert!(e.contains("model.c1"), "{e}");
         // interior minimum: c1 = -2, c2 = 2 → W(b) = 1 − 2b + 2b²... min at b = 0.5: 0.5

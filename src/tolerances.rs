@@ -35,3 +35,31 @@ pub const ORACLE_REL: f64 = 1e-7;
 /// Target relative error of a_r at the default accuracy against a refined solution
 /// (issue 2: below 1e-6).
 pub const DEFAULT_ACCURACY_REL: f64 = 1e-6;
+
+/// Mean gap: energy route (U on a grid of step 0.1 in ln p*, cubic-Lagrange derivative) against
+/// the Yang–Persson closed form, for p* ≤ 0.5 (issue 4: 1e-4). Measured ≤ 7e-6 on system 1;
+/// the Richardson estimate of the grid error matches the measured difference.
+pub const GAP_CLOSED_FORM_REL: f64 = 1e-4;
+
+/// Elastic energy at full contact (p* ≥ p*_full, a_r = 1 − O(1e-16)) against
+/// u_ela^(f) = (E*/4)∫qf dm: both use Gauss panels of the same spectrum to ~1e-13.
+pub const FULL_CONTACT_ENERGY_REL: f64 = 1e-10;
+
+/// Small-load scaling of U: U/p* constant and U ∝ W(0) at fixed a_r(q). The corrections are
+/// O(p*) (the region q − q_L ≲ p*² where a_r(q) ≈ 1): measured 1.5e-4 between p* = 1e-5 and
+/// 1e-6 on system 1, hence tested at p* = 1e-7 and 1e-8 (~1.5e-6).
+pub const SMALL_LOAD_ENERGY_REL: f64 = 1e-4;
+
+/// Persson's asymptote: the slope −dū/d ln p* between p* = 1e-7 and 1e-6 against
+/// u₀ = √π γ_P ∫dq q²C w. The slope deficit is the region near q_L where w p/E* ≳ 1, of
+/// relative size O(p*·(q_L-scale)); 1e-3 leaves a margin over the measured value.
+pub const ASYMPTOTE_SLOPE_REL: f64 = 1e-3;
+
+/// Model 1 on system 1: ū/h_rms "near 1.85 at p* = 0.01 and near 0.23 at p* = 0.1"
+/// (issue 4; the closed form gives 1.84658 and 0.234688): ±0.01 absolute.
+pub const SYSTEM1_GAP_ABS: f64 = 1e-2;
+
+/// A 64-point chart sweep against a 4× finer sweep at the shared loads: the finer grid is the
+/// reference; the coarse grid's step ≤ 0.15 in ln p* gives ≤ ~1e-3 relative error in ū where
+/// ū > 1e-3 h_rms (4th-order rule).
+pub const SWEEP_REFINEMENT_REL: f64 = 2e-3;

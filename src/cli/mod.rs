@@ -1,4 +1,4 @@
-//! Command-line interface: `asperity [tui]`, `asperity run`, `asperity presets`.
+//! Command-line interface: `asperity [tui]`, `asperity run`, `asperity sweep`, `asperity presets`.
 //!
 //! The headless commands print JSON or a table to stdout; errors go to stderr as one line
 //! with a non-zero exit code. Flag names and JSON keys are a public interface.
@@ -15,6 +15,8 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use serde::Serialize;
 use std::io::IsTerminal;
 use std::io::Write;
+
+pub mod sweep;
 
 /// asperity: explore Persson's contact-mechanics theory of rough, adhesive, elastic contacts.
 #[derive(Debug, Parser)]
@@ -40,6 +42,8 @@ pub enum Command {
     Presets,
     /// Speed against error for every solver; the full run writes BENCHMARKS.md.
     Bench(bench::BenchArgs),
+    /// Sweep the load: one row per p* with a_r, mean gap, mean contact stress, elastic energy.
+    Sweep(sweep::SweepArgs),
 }
 
 /// Output format of `run`.
@@ -244,6 +248,12 @@ pub struct RunOutput {
     pub converged: bool,
     /// Estimated absolute error of a_r.
     pub error_estimate: f64,
+    /// Mean gap ū (m) by the energy route [S-12]; null when unavailable (p* <= 0).
+    pub mean_gap: Option<f64>,
+    /// ū/h_rms; null when unavailable.
+    pub mean_gap_rel: Option<f64>,
+    /// Elastic energy U per nominal area (J/m²) [S-11].
+    pub elastic_energy: f64,
     /// Wall time of the solve (s).
     pub elapsed_s: f64,
     /// Resolved inputs.
@@ -280,6 +290,7 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         sigma_max: args.sigma_max,
     };
     let ev = engine::evaluate(scene, &opts)?;
+    let gap = crate::gap::mean_gap(scene, &opts)?;
     Ok(RunOutput {
         preset: preset_name.to_string(),
         a_r: ev.a_r,
@@ -288,6 +299,9 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         width: ev.width,
         converged: ev.converged,
         error_estimate: ev.error_estimate,
+        mean_gap: gap.map(|g| g.metres),
+        mean_gap_rel: gap.map(|g| g.relative),
+        elastic_energy: ev.elastic_energy,
         elapsed_s: ev.elapsed_s,
         scene: scene.summary(),
         pr: PrTable {
@@ -333,6 +347,10 @@ fn run_table(out: &RunOutput) -> String {
     );
     line("width*", format!("{:.6}", out.width));
     line("error_estimate (a_r)", format!("{:.2e}", out.error_estimate));
+    if let (Some(g), Some(r)) = (out.mean_gap, out.mean_gap_rel) {
+        line("mean_gap", format!("{g:.6e} m (u/h_rms = {r:.6})"));
+    }
+    line("elastic_energy", format!("{:.6e} J/m^2", out.elastic_energy));
     line("converged", format!("{}", out.converged));
     line("elapsed_s", format!("{:.3e}", out.elapsed_s));
     t.trim_end().to_string()
@@ -354,6 +372,7 @@ pub fn main() -> i32 {
             Ok(())
         }
         Some(Command::Bench(args)) => bench::run(&args),
+        Some(Command::Sweep(args)) => sweep::run(&args).map(|text| emit(&text)),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let out = evaluate(&preset.name, &scene, &args)?;
             match args.format {
