@@ -63,6 +63,13 @@ use std::f64::consts::PI;
 /// tested scenes; see `tests/gap.rs`).
 pub const GAP_STEP_LN: f64 = 0.1;
 
+/// ODE tolerance of the energies that enter the energy route. The route differentiates U in
+/// p, and at small loads ū ≈ ΔU/p*: U must be smooth in p* to ~p*·tol, not just accurate to
+/// the default rtol. Adaptive step sequences that change with p* make U noisy at the rtol
+/// level; on a thin slab (t·q_r = 0.01, U ≈ const at small p*) rtol = 1e-7 made ū(p*)
+/// non-monotone below p* = 1e-7, rtol = 1e-11 does not. A 64-point sweep still costs ~10 ms.
+pub const ENERGY_RTOL: f64 = 1e-11;
+
 /// erf argument p*/√(2v_full) above which the contact is taken as full (erf(6) = 1 − 2e-17).
 pub const FULL_CONTACT_ERF_ARG: f64 = 6.0;
 

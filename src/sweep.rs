@@ -112,11 +112,13 @@ pub struct Sweep {
     pub monotone: bool,
 }
 
-/// Options that make per-load evaluations cheap (no Pr table, no resolution record).
+/// Options that make per-load evaluations cheap (no Pr table, no resolution record) and
+/// accurate enough for the energy route ([`gap::ENERGY_RTOL`]).
 fn lean(opts: &Options) -> Options {
     let mut o = *opts;
     o.sigma_points = 2;
     o.accuracy.resolution_points = 2;
+    o.accuracy.rtol = o.accuracy.rtol.min(gap::ENERGY_RTOL);
     o
 }
 
