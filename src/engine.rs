@@ -2,6 +2,7 @@
 //! adhesionless mirror-Gaussian path when γ_s = 0, the adhesive solver otherwise) and returns
 //! the quantities every front end shows. The CLI and the TUI call only this (and the sweep).
 
+use crate::adhesion::{self, AdhesionAccuracy, AdhesiveSolution};
 use crate::error::{Error, Result};
 use crate::persson::{self, Accuracy, ResolutionPoint};
 use crate::scene::Scene;
@@ -17,6 +18,11 @@ pub struct Options {
     pub sigma_points: usize,
     /// Largest σ* of the sample (None: p* + 5Δ*).
     pub sigma_max: Option<f64>,
+    /// Accuracy of the adhesive solver (used when γ_s > 0).
+    pub adhesion: AdhesionAccuracy,
+    /// Estimate the adhesive solver's discretisation error with a second solve at half the
+    /// resolution (about +40 % time); without it `error_estimate` is the fixed-point residual.
+    pub adhesion_error_estimate: bool,
 }
 
 impl Default for Options {
@@ -25,6 +31,8 @@ impl Default for Options {
             accuracy: Accuracy::default(),
             sigma_points: 201,
             sigma_max: None,
+            adhesion: AdhesionAccuracy::default(),
+            adhesion_error_estimate: true,
         }
     }
 }
@@ -60,19 +68,50 @@ pub struct Evaluation {
     pub error_estimate: f64,
     /// Elastic energy U per nominal area (J/m²) [S-11]; see [`crate::energy`].
     pub elastic_energy: f64,
+    /// σ_a*(q_s): the adhesive wall sits at σ* = −σ_a* (0 without adhesion).
+    pub sigma_a: f64,
+    /// Contact under tension ∫_{−σ_a}^0 Pr dσ* (0 without adhesion).
+    pub tensile_area: f64,
+    /// Fraction of the nominal area that left the contact through the wall, 1 − a_r.
+    pub detached_fraction: f64,
+    /// γ(q)/γ_s at the `resolution` points (empty without adhesion).
+    pub gamma_q: Vec<f64>,
+    /// σ_a*(q) at the `resolution` points (empty without adhesion).
+    pub sigma_a_q: Vec<f64>,
+    /// Fixed-point iterations (0 without adhesion: the closed form needs none).
+    pub iterations: usize,
+    /// Fixed-point residual max|G(a) − a|/a_r (0 without adhesion).
+    pub residual: f64,
+    /// "adhesionless", "loading", or "loading (continuation in gamma)".
+    pub branch: String,
+    /// a_r of a distinct unloading branch (started from full contact), if one exists.
+    pub unloading_a_r: Option<f64>,
+    /// γ̃_glo = γ_s/u_ela^(f) [S-24].
+    pub gamma_glo: f64,
     /// Wall time (s).
     pub elapsed_s: f64,
+    /// The adhesive solution (warm start for a neighbouring scene).
+    #[serde(skip)]
+    pub adhesive: Option<Box<AdhesiveSolution>>,
 }
 
 /// Evaluates a scene.
 pub fn evaluate(scene: &Scene, opts: &Options) -> Result<Evaluation> {
+    evaluate_warm(scene, opts, None, None)
+}
+
+/// Evaluates a scene, warm-starting the adhesive solver from a neighbouring evaluation and
+/// checking `cancel` between fixed-point iterations.
+pub fn evaluate_warm(
+    scene: &Scene,
+    opts: &Options,
+    warm: Option<&Evaluation>,
+    cancel: Option<&std::sync::atomic::AtomicBool>,
+) -> Result<Evaluation> {
     scene.validate()?;
     let t0 = Instant::now();
     if scene.gamma > 0.0 {
-        return Err(Error::Unsupported(format!(
-            "gamma = {} J/m^2 (adhesion) is not yet supported by this build; use gamma 0",
-            scene.gamma
-        )));
+        return evaluate_adhesive(scene, opts, warm, cancel, t0);
     }
     let sol = persson::solve(scene, &opts.accuracy)?;
     let sigma_max = match opts.sigma_max {
@@ -92,6 +131,120 @@ pub fn evaluate(scene: &Scene, opts: &Options) -> Result<Evaluation> {
         converged: true,
         error_estimate: sol.error_estimate,
         elastic_energy,
+        sigma_a: 0.0,
+        tensile_area: 0.0,
+        detached_fraction: 1.0 - sol.a_r,
+        gamma_q: Vec::new(),
+        sigma_a_q: Vec::new(),
+        iterations: 0,
+        residual: 0.0,
+        branch: "adhesionless".into(),
+        unloading_a_r: None,
+        gamma_glo: 0.0,
         elapsed_s: t0.elapsed().as_secs_f64(),
+        adhesive: None,
     })
+}
+
+fn evaluate_adhesive(
+    scene: &Scene,
+    opts: &Options,
+    warm: Option<&Evaluation>,
+    cancel: Option<&std::sync::atomic::AtomicBool>,
+    t0: Instant,
+) -> Result<Evaluation> {
+    let warm_sol = warm.and_then(|w| w.adhesive.as_deref());
+    let sol = adhesion::solve(scene, &opts.adhesion, warm_sol, cancel)?;
+    let error_estimate = if opts.adhesion_error_estimate {
+        // the scheme is second order in both resolutions: |a_h − a_2h|/3
+        let mut coarse = opts.adhesion;
+        coarse.steps_per_ln_q *= 0.5;
+        coarse.points_per_width *= 0.5;
+        coarse.explore_branches = false;
+        match adhesion::solve(scene, &coarse, None, cancel) {
+            Ok(c) => (c.a_r - sol.a_r).abs() / 3.0 + sol.residual * sol.a_r,
+            Err(Error::Cancelled) => return Err(Error::Cancelled),
+            Err(_) => f64::NAN,
+        }
+    } else {
+        sol.residual * sol.a_r
+    };
+    if !error_estimate.is_finite() {
+        return Err(Error::NotConverged {
+            solver: "adhesive theory".into(),
+            reason: "the half-resolution check did not converge; the error cannot be estimated".into(),
+        });
+    }
+    let npts = opts.accuracy.resolution_points.max(2);
+    let (q_l, q_s) = (scene.spectrum.q_l(), scene.spectrum.q_s());
+    let out_q: Vec<f64> = (0..npts)
+        .map(|i| (q_l.ln() + (q_s / q_l).ln() * i as f64 / (npts - 1) as f64).exp())
+        .collect();
+    let resolution = out_q
+        .iter()
+        .map(|&q| ResolutionPoint {
+            q,
+            a_r: adhesion::interpolate(&sol, q, &sol.a_q),
+            variance: adhesion::interpolate(&sol, q, &sol.v_q),
+        })
+        .collect();
+    let gamma_q = out_q
+        .iter()
+        .map(|&q| adhesion::interpolate(&sol, q, &sol.gamma_q))
+        .collect();
+    let sigma_a_q = out_q
+        .iter()
+        .map(|&q| adhesion::interpolate(&sol, q, &sol.sigma_a_q))
+        .collect();
+    let (sigma, density) = resample(&sol, opts);
+    Ok(Evaluation {
+        a_r: sol.a_r,
+        mean_contact_stress: sol.mean_contact_stress,
+        contact_stress_variance: sol.contact_stress_variance,
+        width: sol.width,
+        pr: PrCurve { sigma, density },
+        resolution,
+        converged: true,
+        error_estimate,
+        elastic_energy: sol.elastic_energy,
+        sigma_a: sol.sigma_a,
+        tensile_area: sol.tensile_area,
+        detached_fraction: sol.detached_fraction,
+        gamma_q,
+        sigma_a_q,
+        iterations: sol.iterations,
+        residual: sol.residual,
+        branch: sol.branch.clone(),
+        unloading_a_r: sol.unloading_a_r,
+        gamma_glo: sol.gamma_glo,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+        adhesive: Some(Box::new(sol)),
+    })
+}
+
+/// Pr(σ*) of an adhesive solution on `sigma_points` points from −σ_a* to σ_max (linear
+/// interpolation of the solver's grid; 0 beyond it).
+fn resample(sol: &AdhesiveSolution, opts: &Options) -> (Vec<f64>, Vec<f64>) {
+    let n = opts.sigma_points.max(2);
+    let lo = -sol.sigma_a;
+    let hi = match opts.sigma_max {
+        Some(s) if s > lo => s,
+        _ => sol.pressure + 5.0 * sol.width,
+    };
+    let src_s = &sol.sigma;
+    let src_d = &sol.density;
+    let sigma: Vec<f64> = (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect();
+    let density = sigma
+        .iter()
+        .map(|&s| {
+            let i = src_s.partition_point(|&x| x < s);
+            if i == 0 || i >= src_s.len() {
+                return 0.0;
+            }
+            let (s0, s1) = (src_s[i - 1], src_s[i]);
+            let t = if s1 > s0 { (s - s0) / (s1 - s0) } else { 0.0 };
+            (src_d[i - 1] + t * (src_d[i] - src_d[i - 1])).max(0.0)
+        })
+        .collect();
+    (sigma, density)
 }

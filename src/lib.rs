@@ -9,6 +9,8 @@
 //! - [`model`]: weight function W(a) [S-17] and the four model variants.
 //! - [`mirror`]: mirror-Gaussian distribution and moments [S-7, S-22].
 //! - [`persson`]: the adhesionless theory, the W-coupled variance ODE [S-2, S-15, S-22].
+//! - [`adhesion`]: the adhesive theory: moving absorbing wall, γ(q), σ_a(q), fixed point
+//!   [S-5..S-9, S-14].
 //! - [`energy`]: elastic energy U [S-11, S-14].
 //! - [`gap`]: mean gap ū(p₀) [S-12] by the energy route, and the Yang–Persson closed form.
 //! - [`sweep`]: a_r, ū, σ̄_c, U over a log-spaced load range (parallel; shared U table).
@@ -17,6 +19,7 @@
 //! - [`benchmark`]: speed-against-error ladders (`asperity bench`).
 //! - [`cli`]: the headless commands.
 
+pub mod adhesion;
 pub mod benchmark;
 pub mod cli;
 pub mod energy;

@@ -119,15 +119,17 @@ fn lean(opts: &Options) -> Options {
     o.sigma_points = 2;
     o.accuracy.resolution_points = 2;
     o.accuracy.rtol = o.accuracy.rtol.min(gap::ENERGY_RTOL);
+    o.adhesion_error_estimate = false;
+    o.adhesion.explore_branches = false;
     o
 }
 
 /// Evaluates one load (the continuation hook: `_previous` is the neighbouring load's result,
 /// to be used as the adhesive solver's warm start once it exists).
-pub fn evaluate_node(scene: &Scene, p: f64, opts: &Options, _previous: Option<&Evaluation>) -> Result<Evaluation> {
+pub fn evaluate_node(scene: &Scene, p: f64, opts: &Options, previous: Option<&Evaluation>) -> Result<Evaluation> {
     let mut s = scene.clone();
     s.pressure = p;
-    engine::evaluate(&s, opts)
+    engine::evaluate_warm(&s, opts, previous, None)
 }
 
 fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
@@ -153,7 +155,13 @@ pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&At
         let mut out: Vec<Evaluation> = Vec::with_capacity(ps.len());
         for &p in ps {
             check_cancel(cancel)?;
-            let ev = evaluate_node(scene, p, &opts, out.last())?;
+            let ev = evaluate_node(scene, p, &opts, out.last()).map_err(|e| match e {
+                Error::NotConverged { solver, reason } => Error::NotConverged {
+                    solver: format!("{solver} at p* = {p:.6e}"),
+                    reason,
+                },
+                e => e,
+            })?;
             out.push(ev);
         }
         Ok(out)

@@ -63,3 +63,34 @@ pub const SYSTEM1_GAP_ABS: f64 = 1e-2;
 /// reference; the coarse grid's step ≤ 0.15 in ln p* gives ≤ ~1e-3 relative error in ū where
 /// ū > 1e-3 h_rms (4th-order rule).
 pub const SWEEP_REFINEMENT_REL: f64 = 2e-3;
+
+// Adhesion (issue 3)
+
+/// Constant wall on the grid against erf((p + σ_a)/√(2V)) (model 1, half-space): the sine
+/// propagator is exact in v and spectrally accurate in σ; what remains is the trapezoid sum of
+/// a_r on the grid (spectral for the odd-periodic density) and round-off (issue 3: 1e-8).
+pub const EXACT_WALL_ABS: f64 = 1e-8;
+
+/// σ_a ≡ 0 with a W-coupled broadening: the march (RK4 in the variance measure on 24 steps per
+/// ln q) against the adaptive ODE at rtol 1e-7 (~1e-9). RK4 is 4th order; 1e-6 has margin.
+pub const ZERO_WALL_REL: f64 = 1e-6;
+
+/// Observed order of convergence of the moving-wall propagator. Measured ≈ 1.2 (errors 8.3e-4,
+/// 3.6e-4, 1.6e-4 for 6/12/24 steps per ln q with 4/8/16 points per width): the splitting of
+/// wall motion (a shift that leaves an empty gap of width δ at the wall) and diffusion is
+/// first order at an absorbing boundary, although each part alone is second order or better.
+/// The test asserts first order (> 0.9).
+pub const MOVING_WALL_MIN_ORDER: f64 = 0.9;
+
+/// The default adhesive resolution against a 4× finer one (a_r, relative), systems 1 and 2 at
+/// their reference loads. Measured 1.1e-3 (system 2, model 4) and below on system 1; first
+/// order, so ~1/4 of the coarse error remains in the reference: 3e-3.
+pub const ADHESION_DEFAULT_REL: f64 = 3e-3;
+
+/// The half-resolution error estimate of the default adhesive solve, relative to a_r: it must
+/// flag the first-order error (~1e-3) without being vacuous.
+pub const ADHESION_ESTIMATE_REL: f64 = 5e-3;
+
+/// ∫Pr dσ* = a_r for the resampled adhesive Pr (4001 points, linear interpolation of the
+/// solver's grid, trapezoid): the interpolation error of a density with ≥ 10 points per width.
+pub const ADHESIVE_PR_INTEGRAL_REL: f64 = 2e-3;

@@ -143,8 +143,6 @@ impl SceneArgs {
     pub fn resolve(&self, pressure: Option<f64>) -> Result<(Preset, Scene)> {
         let preset = Preset::resolve(&self.preset)?;
         let mut scene = preset.scene()?;
-        // γ: until the adhesion solver lands, the default is no adhesion.
-        scene.gamma = 0.0;
         let mut model = scene.model;
         if let Some(m) = &self.model {
             match parse_model(m)? {
@@ -252,8 +250,30 @@ pub struct RunOutput {
     pub mean_gap: Option<f64>,
     /// ū/h_rms; null when unavailable.
     pub mean_gap_rel: Option<f64>,
+    /// Why the mean gap is null (e.g. a load on the way to full contact where the adhesive
+    /// fixed point did not converge); absent when it is given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mean_gap_note: Option<String>,
     /// Elastic energy U per nominal area (J/m²) [S-11].
     pub elastic_energy: f64,
+    /// σ_a*(q_s): the adhesive wall at σ* = −σ_a* (0 without adhesion).
+    pub sigma_a: f64,
+    /// Contact area under tension, ∫_{−σ_a}^0 Pr dσ*.
+    pub tensile_area: f64,
+    /// 1 − a_r: the fraction that left the contact through the wall.
+    pub detached_fraction: f64,
+    /// Fixed-point iterations of the adhesive solver (0 without adhesion).
+    pub iterations: usize,
+    /// Fixed-point residual max|G(a) − a|/a_r (0 without adhesion).
+    pub residual: f64,
+    /// "adhesionless", "loading" or "loading (continuation in gamma)".
+    pub branch: String,
+    /// a_r of a distinct unloading branch (from full contact), null if none was found.
+    pub unloading_a_r: Option<f64>,
+    /// γ(q)/γ_s along `resolution.q` (empty without adhesion).
+    pub gamma_q: Vec<f64>,
+    /// σ_a*(q) along `resolution.q` (empty without adhesion).
+    pub sigma_a_q: Vec<f64>,
     /// Wall time of the solve (s).
     pub elapsed_s: f64,
     /// Resolved inputs.
@@ -288,9 +308,16 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         },
         sigma_points: args.sigma_points,
         sigma_max: args.sigma_max,
+        ..engine::Options::default()
     };
     let ev = engine::evaluate(scene, &opts)?;
-    let gap = crate::gap::mean_gap(scene, &opts)?;
+    // the gap needs the loading branch at every load up to full contact: report why it is
+    // missing rather than failing the whole run
+    let (gap, mean_gap_note) = match crate::gap::mean_gap(scene, &opts) {
+        Ok(None) => (None, Some("the mean gap is defined for p* > 0 only".to_string())),
+        Ok(g) => (g, None),
+        Err(e) => (None, Some(format!("mean gap unavailable: {e}"))),
+    };
     Ok(RunOutput {
         preset: preset_name.to_string(),
         a_r: ev.a_r,
@@ -301,7 +328,17 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         error_estimate: ev.error_estimate,
         mean_gap: gap.map(|g| g.metres),
         mean_gap_rel: gap.map(|g| g.relative),
+        mean_gap_note,
         elastic_energy: ev.elastic_energy,
+        sigma_a: ev.sigma_a,
+        tensile_area: ev.tensile_area,
+        detached_fraction: ev.detached_fraction,
+        iterations: ev.iterations,
+        residual: ev.residual,
+        branch: ev.branch.clone(),
+        unloading_a_r: ev.unloading_a_r,
+        gamma_q: ev.gamma_q.clone(),
+        sigma_a_q: ev.sigma_a_q.clone(),
         elapsed_s: ev.elapsed_s,
         scene: scene.summary(),
         pr: PrTable {
@@ -349,6 +386,20 @@ fn run_table(out: &RunOutput) -> String {
     line("error_estimate (a_r)", format!("{:.2e}", out.error_estimate));
     if let (Some(g), Some(r)) = (out.mean_gap, out.mean_gap_rel) {
         line("mean_gap", format!("{g:.6e} m (u/h_rms = {r:.6})"));
+    } else if let Some(n) = &out.mean_gap_note {
+        line("mean_gap", n.clone());
+    }
+    if out.branch != "adhesionless" {
+        line("sigma_a*", format!("{:.6} (wall at sigma* = -sigma_a*)", out.sigma_a));
+        line("tensile_area", format!("{:.6e}", out.tensile_area));
+        line("branch", out.branch.clone());
+        if let Some(u) = out.unloading_a_r {
+            line("unloading_a_r", format!("{u:.8} (a second, unloading branch)"));
+        }
+        line(
+            "iterations",
+            format!("{} (residual {:.1e})", out.iterations, out.residual),
+        );
     }
     line("elastic_energy", format!("{:.6e} J/m^2", out.elastic_energy));
     line("converged", format!("{}", out.converged));
