@@ -22,7 +22,8 @@
 //! # Propagation (moving wall)
 //!
 //! The march runs over steps in ln q (uniform per PSD segment). In the frame x = σ + σ_a the
-//! wall sits at x = 0. Each step holds the wall at its value at the step's midpoint q and
+//! wall sits at x = 0. Each step holds the wall at its mean over the step (with γ linear in ln q
+//! between nodes, the mean of √γ₊ in closed form: smooth where γ turns positive) and
 //!
 //! 1. shifts Pr by the change of σ_a since the previous step (4-point Lagrange interpolation;
 //!    the stencil uses the odd continuation of Pr through the wall, mass below the wall is
@@ -113,8 +114,6 @@ struct Step {
     b: f64,
     /// ∫_step (qE*f/4) dm (J/m²): full-contact elastic energy of the step's modes.
     e: f64,
-    /// The part of `e` in the second half of the step.
-    e_upper: f64,
 }
 
 /// The step grid of a scene (q nodes and steps).
@@ -170,7 +169,6 @@ fn build_grid(scene: &Scene, steps_per_ln_q: f64) -> Grid {
                         q_mid: mid.exp(),
                         b: integ(a, bb, &bfun),
                         e: integ(a, bb, &efun),
-                        e_upper: integ(mid, bb, &efun),
                     });
                     q.push(bb.exp());
                 }
@@ -187,7 +185,6 @@ fn build_grid(scene: &Scene, steps_per_ln_q: f64) -> Grid {
                     q_mid: m.q,
                     b: f * f * m.q * m.q * m.dm / (4.0 * g2),
                     e,
-                    e_upper: 0.5 * e,
                 });
                 q.push(m.q);
             }
@@ -252,6 +249,10 @@ struct Heat {
     plan: Option<Plan>,
     buf: Vec<Complex64>,
     scratch: Vec<Complex64>,
+    /// (coefficient, decay rate) of the mass integral per odd sine mode.
+    terms: Vec<(f64, f64)>,
+    n: usize,
+    x: f64,
 }
 
 impl Heat {
@@ -261,13 +262,16 @@ impl Heat {
             plan: None,
             buf: Vec::new(),
             scratch: Vec::new(),
+            terms: Vec::new(),
+            n: 0,
+            x: 0.0,
         }
     }
 
-    /// p: values at x_j = j·h, j = 0..=N (p[0] = p[N] = 0). Evolves by variance dv and
-    /// returns ∫_0^X p dx of the result, integrated spectrally (Σ_{k odd} b_k·2X/(kπ) for
-    /// p = Σ b_k sin(kπx/X)): the trapezoid rule would be only O(h²) here, because p'(0) ≠ 0.
-    fn apply(&mut self, p: &mut [f64], h: f64, dv: f64) -> f64 {
+    /// Loads grid values p at x_j = j·h, j = 0..=N (p[0] = p[N] = 0): one forward transform
+    /// of the odd extension. Afterwards [`Heat::mass`] gives ∫_0^X p dx after any extra
+    /// variance dv in O(N), and [`Heat::finish`] writes the evolved values back.
+    fn load(&mut self, p: &[f64], h: f64) {
         let n = p.len() - 1;
         let m = 2 * n;
         if self.plan.as_ref().map(|pl| pl.0) != Some(m) {
@@ -277,7 +281,7 @@ impl Heat {
             self.scratch = vec![Complex64::new(0.0, 0.0); len];
             self.plan = Some((m, fwd, inv));
         }
-        let (_, fwd, inv) = self.plan.as_ref().expect("planned");
+        let (_, fwd, _) = self.plan.as_ref().expect("planned");
         self.buf.clear();
         self.buf.resize(m, Complex64::new(0.0, 0.0));
         for j in 1..n {
@@ -286,15 +290,32 @@ impl Heat {
         }
         fwd.process_with_scratch(&mut self.buf, &mut self.scratch);
         let x = n as f64 * h;
+        self.n = n;
+        self.x = x;
+        // ∫_0^X p dx = Σ_{k odd} b_k·2X/(kπ) for p = Σ b_k sin(kπx/X), b_k = −2 Im(c_k),
+        // c = FFT/M: spectral, where the trapezoid rule is O(h²) because p'(0) ≠ 0
+        self.terms.clear();
+        for k in (1..n).step_by(2) {
+            let b = -2.0 * self.buf[k].im / m as f64;
+            let kk = k as f64 * PI / x;
+            self.terms.push((b * 2.0 * x / (k as f64 * PI), 0.5 * kk * kk));
+        }
+    }
+
+    /// ∫_0^X p dx after a further variance dv (exact for the loaded trigonometric interpolant).
+    fn mass(&self, dv: f64) -> f64 {
+        self.terms.iter().map(|&(c, r)| c * (-r * dv).exp()).sum()
+    }
+
+    /// Writes the loaded values evolved by dv back into p.
+    fn finish(&mut self, p: &mut [f64], dv: f64) {
+        let (n, x) = (self.n, self.x);
+        let m = 2 * n;
+        let (_, _, inv) = self.plan.as_ref().expect("loaded");
         let c = 0.5 * dv * (PI / x) * (PI / x);
-        let mut mass = 0.0;
         for k in 0..m {
             let kk = k.min(m - k) as f64;
             self.buf[k] *= (-c * kk * kk).exp() / m as f64;
-            if k < n && k % 2 == 1 {
-                // b_k = −2 Im c_k
-                mass += -2.0 * self.buf[k].im * 2.0 * x / (k as f64 * PI);
-            }
         }
         inv.process_with_scratch(&mut self.buf, &mut self.scratch);
         p[0] = 0.0;
@@ -302,6 +323,14 @@ impl Heat {
         for j in 1..n {
             p[j] = self.buf[j].re;
         }
+    }
+
+    /// Evolves p by dv and returns its integral.
+    #[cfg(test)]
+    fn apply(&mut self, p: &mut [f64], h: f64, dv: f64) -> f64 {
+        self.load(p, h);
+        let mass = self.mass(dv);
+        self.finish(p, dv);
         mass
     }
 }
@@ -321,6 +350,17 @@ struct March {
     v: f64,
     wall: f64,
     state: State,
+}
+
+/// RK4 substeps of a march step: 8 while the accumulated variance measure is still small
+/// against the step's (a_r falls fast there), else 1. A function of the grid only, never of
+/// the iterate, so that the fixed-point map stays continuous.
+fn substeps(b_before: f64, b: f64) -> usize {
+    if b_before < 4.0 * b {
+        8
+    } else {
+        1
+    }
 }
 
 /// Mirror-Gaussian contact fraction at distance d from the wall with variance v.
@@ -411,9 +451,12 @@ impl<'a> Marcher<'a> {
         let mut v = 0.0f64;
         let mut wall = walls.first().copied().unwrap_or(0.0);
         let mut state = State::Analytic;
+        let mut b_cum = 0.0;
         for (k, st) in self.grid.steps.iter().enumerate() {
+            if k > 0 {
+                b_cum += self.grid.steps[k - 1].b;
+            }
             let s_k = walls[k];
-            let a_k = a_nodes[k];
             let forced = self.force_grid_from == Some(k) && v > 0.0;
             if let State::Analytic = state {
                 if s_k != wall || forced {
@@ -449,7 +492,7 @@ impl<'a> Marcher<'a> {
                     // RK4 in B for dv/dB = W^{2α}(a(v)), a(v) = erf((p + σ_a)/√(2v))
                     let d = p0 + wall;
                     let rate = |vv: f64| model.broadening(mirror_area(d, vv));
-                    let nsub = if v < 4.0 * st.b { 8 } else { 1 };
+                    let nsub = substeps(b_cum, st.b);
                     let hb = st.b / nsub as f64;
                     for _ in 0..nsub {
                         let k1 = rate(v);
@@ -473,18 +516,24 @@ impl<'a> Marcher<'a> {
                     if p.len() - 1 < n_need {
                         p.resize(n_need + 1, 0.0);
                     }
-                    // predictor–corrector on W(ā)
-                    let saved = p.clone();
-                    let dv_pred = model.broadening(a_k) * st.b;
-                    let mut mass = self.heat.apply(p, *h, dv_pred);
-                    let a_pred = mass.clamp(0.0, 1.0);
-                    let dv = model.broadening(0.5 * (a_k + a_pred)) * st.b;
-                    if (dv - dv_pred).abs() > 1e-15 * dv.abs() {
-                        p.copy_from_slice(&saved);
-                        mass = self.heat.apply(p, *h, dv);
+                    // the same RK4 rule in B as the analytic stage, with a(v) from the loaded
+                    // sine coefficients: the switch between the stages is continuous
+                    self.heat.load(p, *h);
+                    let heat = &self.heat;
+                    let rate = |u: f64| model.broadening(heat.mass(u).clamp(0.0, 1.0));
+                    let nsub = substeps(b_cum, st.b);
+                    let hb = st.b / nsub as f64;
+                    let mut dv = 0.0;
+                    for _ in 0..nsub {
+                        let k1 = rate(dv);
+                        let k2 = rate(dv + 0.5 * hb * k1);
+                        let k3 = rate(dv + 0.5 * hb * k2);
+                        let k4 = rate(dv + hb * k3);
+                        dv += hb * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
                     }
+                    let a = heat.mass(dv).clamp(0.0, 1.0);
+                    self.heat.finish(p, dv);
                     v += dv;
-                    let a = mass.clamp(0.0, 1.0);
                     a_nodes.push(a);
                     v_nodes.push(v);
                     // coarsen: keep every other node
@@ -546,12 +595,23 @@ fn walls_for(scene: &Scene, grid: &Grid, a: &[f64]) -> Walls {
             ((top - e) / am).max(0.0)
         }
     };
+    // the wall of each step is its mean over the step: σ_a ∝ √γ rises like a square root
+    // where γ(q) turns positive, and a midpoint sample would make the wall (and the fixed-point
+    // map) jump each time that onset crosses a midpoint; with γ linear between the nodes the
+    // mean of √γ₊ is exact and the onset enters as γ^{3/2}, smoothly
+    let gamma_raw = |j: usize| -> f64 {
+        if a[j] <= 0.0 {
+            -1.0
+        } else {
+            (top - e_node[j]) / a[j]
+        }
+    };
     let mut mid = Vec::with_capacity(k);
     for j in 0..k {
-        let st = &grid.steps[j];
-        let am = 0.5 * (a[j] + a[j + 1]);
-        let e_mid = e_node[j + 1] + am * model.w(am) * st.e_upper;
-        mid.push(sigma_of(st.q_mid, gamma_of(e_mid, am)));
+        let q = grid.steps[j].q_mid;
+        let ms = mean_sqrt_positive(gamma_raw(j), gamma_raw(j + 1));
+        let s = model.k_griffith * (q * scene.modulus * slab_factor_at(q, t)).sqrt() * ms;
+        mid.push(s.min(cap) / unit);
     }
     let gamma_nodes: Vec<f64> = (0..=k).map(|j| gamma_of(e_node[j], a[j])).collect();
     let sigma_nodes = (0..=k).map(|j| sigma_of(grid.q[j], gamma_nodes[j])).collect();
@@ -564,6 +624,19 @@ fn walls_for(scene: &Scene, grid: &Grid, a: &[f64]) -> Walls {
         sigma_nodes,
         energy: e_node[0],
     }
+}
+
+/// The mean over s ∈ [0, 1] of √max(0, g₀ + (g₁ − g₀)s).
+fn mean_sqrt_positive(g0: f64, g1: f64) -> f64 {
+    let (lo, hi) = (g0.min(g1), g0.max(g1));
+    if hi <= 0.0 {
+        return 0.0;
+    }
+    if hi - lo <= 1e-12 * hi {
+        return (0.5 * (lo + hi)).max(0.0).sqrt();
+    }
+    let lo_part = if lo > 0.0 { lo * lo.sqrt() } else { 0.0 };
+    2.0 / 3.0 * (hi * hi.sqrt() - lo_part) / (hi - lo)
 }
 
 /// Anderson mixing (type II, Walker & Ni 2011) for y = G(y) in y = ln a ∈ [−690, 0]^n.
