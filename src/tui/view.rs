@@ -247,8 +247,41 @@ fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
             None => dash(),
         },
     );
+    // the scene in physical units (shown when the panel is tall enough)
+    let sc = &app.scene;
+    lines.push(Line::from(Span::styled("─ scene ─", pal.dim())));
+    for (k, v) in [
+        ("p", si(sc.pressure * sc.stress_unit(), "Pa")),
+        ("E*", si(sc.modulus, "Pa")),
+        ("h_rms", si(sc.spectrum.rms_height(), "m")),
+        ("ḡ", sig(sc.rms_gradient(), 4)),
+        ("λ_r/λ_s", sig(sc.spectrum.q_s() / sc.spectrum.q_r(), 4)),
+    ] {
+        lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
+    }
     let block = Block::bordered().title(" parameters ");
     f.render_widget(Paragraph::new(lines).block(block), area);
+}
+
+/// A value with an SI prefix: 250.0 kPa, 0.7766 µm.
+pub fn si(x: f64, unit: &str) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return format!("{} {unit}", plot::format_number(x));
+    }
+    const PREFIXES: [(f64, &str); 9] = [
+        (1e12, "T"),
+        (1e9, "G"),
+        (1e6, "M"),
+        (1e3, "k"),
+        (1.0, ""),
+        (1e-3, "m"),
+        (1e-6, "µ"),
+        (1e-9, "n"),
+        (1e-12, "p"),
+    ];
+    let a = x.abs();
+    let (f, p) = PREFIXES.iter().find(|(f, _)| a >= *f).copied().unwrap_or((1e-12, "p"));
+    format!("{} {p}{unit}", sig(x / f, 4))
 }
 
 /// `s` padded with spaces to `w` display columns (combining accents take none).

@@ -369,6 +369,106 @@ mod tests {
         assert_eq!(c.len(), 2);
     }
 
+    fn request(gen: u64, p: f64) -> Request {
+        let mut scene = crate::preset::Preset::resolve("system-1").unwrap().scene().unwrap();
+        scene.gamma = 0.0;
+        scene.pressure = p;
+        Request {
+            gen,
+            source: "system-1".into(),
+            scene,
+            range: (1e-3, 1.0),
+        }
+    }
+
+    fn serve(req: &Request, caches: &mut Caches, cancel: bool, stale: bool) -> Vec<Reply> {
+        let out = std::cell::RefCell::new(Vec::new());
+        process(req, caches, &AtomicBool::new(cancel), &|| stale, &|r| {
+            out.borrow_mut().push(r)
+        });
+        out.into_inner()
+    }
+
+    fn kinds(replies: &[Reply]) -> Vec<&'static str> {
+        replies
+            .iter()
+            .map(|r| match r {
+                Reply::Point { result, .. } => {
+                    if result.is_ok() {
+                        "point"
+                    } else {
+                        "point-err"
+                    }
+                }
+                Reply::Sweep { .. } => "sweep",
+                Reply::Gap { .. } => "gap",
+                Reply::Done { .. } => "done",
+            })
+            .collect()
+    }
+
+    #[test]
+    fn cancelled_or_stale_work_is_abandoned_and_cached_work_is_instant() {
+        let mut c = Caches::default();
+        let req = request(1, 0.01);
+        // cancelled: the point (one engine call) is sent, the sweeps are abandoned
+        assert_eq!(kinds(&serve(&req, &mut c, true, false)), ["point"]);
+        assert!(c.sweeps.is_empty() && c.gaps.is_empty());
+        // stale before the sweep
+        assert_eq!(kinds(&serve(&req, &mut c, false, true)), ["point"]);
+        // full
+        let full = serve(&req, &mut c, false, false);
+        assert_eq!(kinds(&full), ["point", "sweep", "gap", "done"]);
+        // now everything comes from the caches, even with the cancel flag up
+        let again = serve(&req, &mut c, true, false);
+        assert_eq!(again, full);
+        // a new p* reuses the sweep
+        let other = serve(&request(2, 0.02), &mut c, false, false);
+        assert_eq!(kinds(&other), ["point", "sweep", "gap", "done"]);
+        assert_eq!(c.sweeps.len(), 1);
+        if let (Reply::Gap { result: Ok(g1), .. }, Reply::Gap { result: Ok(g2), .. }) = (&full[2], &other[2]) {
+            assert!(g2 < g1, "the gap closes with load: {g1} -> {g2}");
+        } else {
+            panic!("{full:?}");
+        }
+    }
+
+    #[test]
+    fn adhesive_error_is_reported_not_thrown() {
+        let mut c = Caches::default();
+        let mut req = request(1, 0.01);
+        req.scene.gamma = 0.05;
+        let r = serve(&req, &mut c, false, false);
+        // until the adhesive solver lands the engine refuses; either way the UI gets a reply
+        assert_eq!(r.last(), Some(&Reply::Done { gen: 1 }));
+    }
+
+    #[test]
+    fn threaded_worker_ends_on_the_newest_generation() {
+        let (tx, rx) = channel();
+        let w = Worker::spawn(move |r| {
+            let _ = tx.send(r);
+        });
+        for g in 1..=30 {
+            w.submit(request(g, 1e-3 * g as f64));
+        }
+        let mut last_gen = 0;
+        loop {
+            let r = rx
+                .recv_timeout(std::time::Duration::from_secs(60))
+                .expect("worker reply");
+            let gen = match &r {
+                Reply::Point { gen, .. } | Reply::Sweep { gen, .. } | Reply::Gap { gen, .. } => *gen,
+                Reply::Done { gen } => *gen,
+            };
+            assert!(gen >= last_gen, "replies never go back in generation");
+            last_gen = gen;
+            if r == (Reply::Done { gen: 30 }) {
+                break;
+            }
+        }
+    }
+
     #[test]
     fn keys_separate_what_matters() {
         let scene = crate::preset::Preset::resolve("system-1").unwrap().scene().unwrap();
