@@ -144,6 +144,8 @@ pub struct App {
     pub gen: u64,
     /// The current point (for the current scene, or the last one while computing).
     pub point: Option<Result<PointData>>,
+    /// Generation of the request whose reply set [`App::point`].
+    pub point_gen: u64,
     /// The load curves.
     pub sweep: Option<Result<SweepData>>,
     /// ū/h_rms at the current point.
@@ -246,6 +248,7 @@ impl App {
             message: None,
             gen: 0,
             point: None,
+            point_gen: 0,
             sweep: None,
             gap: None,
             busy: false,
@@ -302,8 +305,9 @@ impl App {
     /// Takes a worker reply: kept only if it belongs to the current scene.
     pub fn on_reply(&mut self, reply: Reply) {
         match reply {
-            Reply::Point { key, result, .. } => {
+            Reply::Point { gen, key, result } => {
                 if key == point_key(&self.source, &self.scene) {
+                    self.point_gen = self.point_gen.max(gen);
                     if result.is_err() {
                         self.sweep = None;
                         self.gap = None;

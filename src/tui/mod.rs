@@ -81,7 +81,7 @@ impl Trace {
             return;
         }
         let ms = t0.elapsed().as_secs_f64() * 1e3;
-        if !self.point_logged && app.point.is_some() {
+        if !self.point_logged && app.point.is_some() && app.point_gen >= gen {
             let _ = writeln!(f, "gen {gen} point_drawn_ms {ms:.2}");
             self.point_logged = true;
         }
