@@ -107,4 +107,3 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
     a.point = None;
     render(&a, 80, 24);
 }
-

@@ -152,6 +152,8 @@ pub struct App {
     pub gap: Option<Result<f64>>,
     /// A request is being served.
     pub busy: bool,
+    /// When the current request was made (while busy).
+    pub busy_since: Option<std::time::Instant>,
     /// Spinner phase (advanced by ticks while busy).
     pub spinner: usize,
     /// Set when the user quits.
@@ -252,6 +254,7 @@ impl App {
             sweep: None,
             gap: None,
             busy: false,
+            busy_since: None,
             spinner: 0,
             quit: false,
             show_timing: true,
@@ -284,6 +287,7 @@ impl App {
         self.pending = false;
         self.gen += 1;
         self.busy = true;
+        self.busy_since = Some(std::time::Instant::now());
         Some(Request {
             gen: self.gen,
             source: self.source.clone(),
@@ -328,6 +332,7 @@ impl App {
             Reply::Done { gen } => {
                 if gen == self.gen {
                     self.busy = false;
+                    self.busy_since = None;
                 }
             }
         }

@@ -16,6 +16,9 @@ use statrs::function::erf::erf;
 /// Smallest usable terminal.
 pub const MIN_SIZE: (u16, u16) = (60, 20);
 
+/// How long a computation runs before the spinner shows.
+const SPINNER_DELAY: std::time::Duration = std::time::Duration::from_millis(150);
+
 const SPINNER: [&str; 8] = ["⠋", "⠙", "⠹", "⠸", "⠼", "⠴", "⠦", "⠧"];
 
 /// Colours (Okabe–Ito, colour-blind safe) or plain styles under `NO_COLOR`.
@@ -126,7 +129,8 @@ fn draw_title(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         Span::styled(" asperity ", Style::default().add_modifier(Modifier::BOLD)),
         Span::raw(format!("· {} · {} ", app.preset.name, app.scene.model.label())),
     ];
-    if app.busy && app.show_timing {
+    // the spinner only once a computation has taken a while (most take milliseconds)
+    if app.show_timing && app.busy_since.is_some_and(|t| t.elapsed() >= SPINNER_DELAY) {
         spans.push(Span::styled(
             format!("{} computing", SPINNER[app.spinner % SPINNER.len()]),
             pal.guide(),
@@ -547,8 +551,11 @@ fn draw_area(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     let all: Vec<&[(f64, f64)]> = curves.iter().map(|c| c.points.as_slice()).collect();
     let xb = plot::bounds(&all, true, 0.0).unwrap_or([0.0, 1.0]);
     let mut yb = plot::bounds(&all, false, 0.05).unwrap_or([0.0, 1.0]);
-    if app.area_mode == AreaMode::Ratio {
-        yb = plot::guard(0.0, yb[1]);
+    match app.area_mode {
+        AreaMode::Ratio => yb = plot::guard(0.0, yb[1]),
+        // a_r <= 1: no padding above log10(1) = 0
+        AreaMode::Log if yb[1] > 0.0 && yb[0] < 0.0 => yb = plot::guard(yb[0], 0.0),
+        AreaMode::Log => {}
     }
     let p = app.scene.pressure;
     let pt = app.point.as_ref().and_then(|r| r.as_ref().ok());
