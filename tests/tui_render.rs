@@ -107,3 +107,27 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
     a.point = None;
     render(&a, 80, 24);
 }
+
+/// The adhesive view with a made-up point (a tensile part down to a wall at −σ_a* = −0.3 and
+/// the adhesionless comparison) until the engine reports one: checks the negative σ* range,
+/// the σ* = 0 guide and the wall marker.
+#[test]
+fn adhesive_view_with_a_synthetic_point() {
+    let mut a = app("system-1");
+    if let Some(Ok(p)) = a.point.as_mut() {
+        let comparison = p.pr.clone();
+        p.pr = (0..=200)
+            .map(|i| {
+                let s = -0.3 + 2.0 * i as f64 / 200.0;
+                (s, 0.04 * (-(s - 0.3) * (s - 0.3) / 0.2).exp())
+            })
+            .collect();
+        p.wall = Some(-0.3);
+        p.adhesionless = Some(comparison);
+        p.extra = vec![("σ_a*".into(), "0.3000".into())];
+    }
+    insta::assert_snapshot!("synthetic_adhesive_80x24", render(&a, 80, 24));
+    a.compare = false;
+    let s = render(&a, 80, 24);
+    assert!(!s.contains("γ_s=0"));
+}

@@ -25,6 +25,15 @@ pub fn branch_label(ev: &Evaluation) -> String {
     }
 }
 
+/// Extra read-outs (label, value) shown under "state" in the panel, in this order.
+pub fn extra_readouts(_ev: &Evaluation) -> Vec<(String, String)> {
+    // Adhesion merge, e.g.:
+    //   vec![("σ_a*".into(), format!("{:.4}", ev.sigma_a)),
+    //        ("detached".into(), format!("{:.3}", ev.detached_fraction)),
+    //        ("residual".into(), format!("{:.1e}", ev.residual))]
+    Vec::new()
+}
+
 /// What the explorer shows of one evaluation at the current p*.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PointData {
@@ -47,6 +56,8 @@ pub struct PointData {
     pub wall: Option<f64>,
     /// Pr(σ*) of the same scene without adhesion (only computed when γ_s > 0).
     pub adhesionless: Option<Vec<(f64, f64)>>,
+    /// See [`extra_readouts`].
+    pub extra: Vec<(String, String)>,
 }
 
 impl PointData {
@@ -62,6 +73,7 @@ impl PointData {
             pr: pr_points(ev),
             wall: wall_marker(ev),
             adhesionless: None,
+            extra: extra_readouts(ev),
         }
     }
 }
@@ -104,3 +116,22 @@ pub fn gap_of_sweep(s: &Sweep) -> Option<f64> {
 /// Whether the explorer opens a preset with the preset's γ_s (true) or with adhesion off
 /// (false, like the CLI until the adhesive solver lands). Adhesion merge: set to true.
 pub const ADHESION_BY_DEFAULT: bool = false;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn point_data_copies_the_evaluation() {
+        let mut scene = crate::preset::Preset::resolve("system-1").unwrap().scene().unwrap();
+        scene.gamma = 0.0;
+        let ev = crate::engine::evaluate(&scene, &crate::engine::Options::default()).unwrap();
+        let pd = PointData::from_evaluation(&ev);
+        assert_eq!(pd.a_r, ev.a_r);
+        assert_eq!(pd.pr.len(), ev.pr.sigma.len());
+        assert_eq!(pd.pr[3], (ev.pr.sigma[3], ev.pr.density[3]));
+        assert_eq!(pd.branch, "converged");
+        // adhesionless: no wall
+        assert_eq!(pd.wall, None);
+    }
+}

@@ -242,6 +242,11 @@ fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         "state",
         pt.map_or_else(|| if app.busy { "…".into() } else { dash() }, |p| p.branch.clone()),
     );
+    if let Some(p) = pt {
+        for (k, v) in &p.extra {
+            row(k, v.clone());
+        }
+    }
     row("err a_r", pt.map_or_else(dash, |p| format!("{:.1e}", p.error_estimate)));
     row(
         "time",
@@ -430,6 +435,15 @@ fn draw_pr(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
                 (pal.compare(), Marker::Dot, GraphType::Line),
             );
             key.extend(legend("•", "γ_s=0", pal.compare()));
+        }
+        if xb[0] < 0.0 && xb[1] > 0.0 {
+            // σ* = 0 separates tension from compression
+            curves.push(Curve {
+                points: plot::vertical(0.0, yb),
+                style: pal.guide(),
+                marker: Marker::Braille,
+                graph: GraphType::Line,
+            });
         }
         if let Some(w) = p.wall {
             curves.push(Curve {
