@@ -13,6 +13,30 @@ struct Tmux {
 }
 
 impl Tmux {
+    /// A detached 120×40 session on its own socket running the explorer (with `env` before
+    /// the command) in `dir`, then printing its exit status.
+    fn start(name: &str, dir: &std::path::Path, env: &str) -> Tmux {
+        let t = Tmux {
+            socket: format!("asperity-e2e-{name}-{}", std::process::id()),
+        };
+        let command = format!("{env} {BIN} tui --preset system-1; echo EXIT=$?; sleep 60");
+        let out = t.cmd(&[
+            "new-session",
+            "-d",
+            "-x",
+            "120",
+            "-y",
+            "40",
+            "-s",
+            "main",
+            "-c",
+            dir.to_str().unwrap(),
+            &command,
+        ]);
+        assert!(out.status.success(), "tmux: {}", String::from_utf8_lossy(&out.stderr));
+        t
+    }
+
     fn cmd(&self, args: &[&str]) -> std::process::Output {
         Command::new("tmux")
             .arg("-u")
@@ -70,29 +94,14 @@ fn explorer_in_tmux() {
     }
     let dir = std::env::temp_dir().join(format!("asperity-e2e-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let t = Tmux {
-        socket: format!("asperity-e2e-{}", std::process::id()),
-    };
-    let command = format!("{BIN} tui --preset system-1; echo EXIT=$?; sleep 60");
-    let out = t.cmd(&[
-        "new-session",
-        "-d",
-        "-x",
-        "120",
-        "-y",
-        "40",
-        "-s",
-        "main",
-        "-c",
-        dir.to_str().unwrap(),
-        &command,
-    ]);
-    assert!(out.status.success(), "tmux: {}", String::from_utf8_lossy(&out.stderr));
-
+    let t = Tmux::start("main", &dir, "");
     let s = t.wait("the first frame with results", |s| {
         s.contains("a_r(p*)") && s.contains("converged") && s.contains("0.02142")
     });
     assert!(s.contains("system-1") && s.contains("model 3"), "{s}");
+    // colour by default (the NO_COLOR test checks the opposite)
+    let styled = String::from_utf8_lossy(&t.cmd(&["capture-pane", "-e", "-p", "-t", "main"]).stdout).into_owned();
+    assert!(styled.contains("[38;"), "{styled}");
 
     // p* is selected: one fine step up, 10^(-1.95)
     t.keys(&["Right"]);
@@ -126,6 +135,26 @@ fn explorer_in_tmux() {
     // the alternate screen is gone: the explorer's frame is no longer visible
     assert!(!s.contains("parameters"), "{s}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn no_color_and_too_small_in_tmux() {
+    if !have_tmux() {
+        eprintln!("SKIPPED no_color_and_too_small_in_tmux: tmux is not installed");
+        return;
+    }
+    let t = Tmux::start("nocolor", &std::env::temp_dir(), "NO_COLOR=1");
+    t.wait("the first frame", |s| s.contains("converged"));
+    let styled = String::from_utf8_lossy(&t.cmd(&["capture-pane", "-e", "-p", "-t", "main"]).stdout).into_owned();
+    assert!(styled.contains("converged"), "{styled}");
+    assert!(!styled.contains("[38;"), "NO_COLOR: no foreground colours\n{styled}");
+    t.cmd(&["resize-window", "-t", "main", "-x", "50", "-y", "15"]);
+    t.wait("the too-small screen", |s| s.contains("terminal too small"));
+    t.cmd(&["resize-window", "-t", "main", "-x", "120", "-y", "40"]);
+    t.wait("the explorer again", |s| s.contains("converged"));
+    t.keys(&["C-c"]);
+    let s = t.wait("a clean exit", |s| s.contains("EXIT="));
+    assert!(s.contains("EXIT=0"), "{s}");
 }
 
 #[test]
