@@ -74,6 +74,10 @@ fn help_custom_ratio_and_small() {
     key(&mut a, KeyCode::Char('a'));
     compute_now(&mut a, &mut Caches::default());
     insta::assert_snapshot!("custom_ratio_80x24", render(&a, 80, 24));
+    key(&mut a, KeyCode::Char('p'));
+    let picker = render(&a, 80, 24);
+    assert!(picker.contains(" presets ") && picker.contains("system-2"), "{picker}");
+    key(&mut a, KeyCode::Esc);
     let small = render(&a, 40, 10);
     assert!(small.contains("terminal too small"));
 }

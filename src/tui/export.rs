@@ -100,6 +100,25 @@ mod tests {
     use super::*;
 
     #[test]
+    fn export_writes_three_files_without_overwriting() {
+        let dir = std::env::temp_dir().join(format!("asperity-export-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let mut app = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
+        app.export_dir = dir.clone();
+        crate::tui::worker::compute_now(&mut app, &mut Default::default());
+        let first = export(&app).unwrap();
+        assert_eq!(first.len(), 3, "{first:?}");
+        let second = export(&app).unwrap();
+        assert!(second[0].ends_with("asperity-system-1-2.toml"), "{second:?}");
+        let csv = std::fs::read_to_string(&first[2]).unwrap();
+        assert!(csv.starts_with("p,a_r,mean_gap_rel"));
+        assert_eq!(csv.lines().count(), 1 + crate::tui::worker::SWEEP_POINTS);
+        let back = Preset::load(std::path::Path::new(&first[0])).unwrap();
+        assert_eq!(crate::tui::app::initial_scene(&back).unwrap(), app.scene);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
     fn exported_scene_loads_back() {
         let p = Preset::resolve("system-1").unwrap();
         let mut s = p.scene().unwrap();
