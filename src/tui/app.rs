@@ -93,7 +93,7 @@ pub enum Overlay {
 pub enum AreaMode {
     /// log a_r against log p*.
     Log,
-    /// a_r/p* against log p* ([S] Fig. 1).
+    /// a_r/p* against log p* (\[S\] Fig. 1).
     Ratio,
 }
 

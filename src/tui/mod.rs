@@ -100,7 +100,8 @@ pub fn run(source: &str, preset: Preset) -> Result<()> {
     let reply_tx = tx.clone();
     let worker = Worker::spawn(move |r| {
         let _ = reply_tx.send(Msg::Reply(r));
-    });
+    })
+    .map_err(|e| Error::Io(format!("cannot start the worker thread: {e}")))?;
 
     let _guard = TerminalGuard;
     let mut terminal = ratatui::try_init().map_err(|e| Error::Io(format!("cannot open the terminal: {e}")))?;

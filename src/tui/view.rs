@@ -479,7 +479,7 @@ fn draw_pr(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     }
 }
 
-/// Eq. (18) of [S]: a_r = erf(1.9p*)(1 − a₀²) + a₀³ with a₀ = erf(1.45p*) (adhesionless,
+/// Eq. (18) of \[S\]: a_r = erf(1.9p*)(1 − a₀²) + a₀³ with a₀ = erf(1.45p*) (adhesionless,
 /// semi-infinite).
 pub fn eq18(p: f64) -> f64 {
     let a0 = erf(1.45 * p);

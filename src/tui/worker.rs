@@ -313,16 +313,15 @@ pub struct Worker {
 
 impl Worker {
     /// Starts the thread; every reply goes to `reply` (which must not block for long).
-    pub fn spawn(reply: impl Fn(Reply) + Send + 'static) -> Worker {
+    pub fn spawn(reply: impl Fn(Reply) + Send + 'static) -> std::io::Result<Worker> {
         let (tx, rx) = channel::<Request>();
         let latest = Arc::new(AtomicU64::new(0));
         let cancel = Arc::new(AtomicBool::new(false));
         let (l, c) = (latest.clone(), cancel.clone());
         std::thread::Builder::new()
             .name("asperity-worker".into())
-            .spawn(move || run(rx, &l, &c, &reply))
-            .expect("spawn the worker thread");
-        Worker { tx, latest, cancel }
+            .spawn(move || run(rx, &l, &c, &reply))?;
+        Ok(Worker { tx, latest, cancel })
     }
 
     /// Queues a request (never blocks). Older requests become stale at once.
@@ -448,7 +447,8 @@ mod tests {
         let (tx, rx) = channel();
         let w = Worker::spawn(move |r| {
             let _ = tx.send(r);
-        });
+        })
+        .unwrap();
         for g in 1..=30 {
             w.submit(request(g, 1e-3 * g as f64));
         }
