@@ -19,7 +19,10 @@ impl Tmux {
         let t = Tmux {
             socket: format!("asperity-e2e-{name}-{}", std::process::id()),
         };
-        let command = format!("{env} {BIN} tui --preset system-1; echo EXIT=$?; sleep 60");
+        // after the explorer: its exit status and whether the tty is back in canonical mode
+        let command = format!(
+            "{env} {BIN} tui --preset system-1; echo EXIT=$?; stty -a | grep -o -- '-*icanon' | sed 's/^/TTY=/'; sleep 60"
+        );
         let out = t.cmd(&[
             "new-session",
             "-d",
@@ -130,8 +133,8 @@ fn explorer_in_tmux() {
     assert!(dir.join("asperity-system-1-1-pr.csv").is_file());
 
     t.keys(&["q"]);
-    let s = t.wait("a clean exit", |s| s.contains("EXIT="));
-    assert!(s.contains("EXIT=0"), "{s}");
+    let s = t.wait("a clean exit", |s| s.contains("TTY="));
+    assert!(s.contains("EXIT=0") && s.contains("TTY=icanon"), "{s}");
     // the alternate screen is gone: the explorer's frame is no longer visible
     assert!(!s.contains("parameters"), "{s}");
     let _ = std::fs::remove_dir_all(&dir);
@@ -155,6 +158,25 @@ fn no_color_and_too_small_in_tmux() {
     t.keys(&["C-c"]);
     let s = t.wait("a clean exit", |s| s.contains("EXIT="));
     assert!(s.contains("EXIT=0"), "{s}");
+}
+
+#[test]
+fn terminal_restored_after_a_panic() {
+    if !have_tmux() {
+        eprintln!("SKIPPED terminal_restored_after_a_panic: tmux is not installed");
+        return;
+    }
+    let t = Tmux::start("panic", &std::env::temp_dir(), "ASPERITY_PANIC_KEY=Z");
+    t.wait("the first frame", |s| s.contains("converged"));
+    t.keys(&["Z"]);
+    let s = t.wait("the exit", |s| s.contains("TTY="));
+    assert!(s.contains("EXIT=101"), "a panic exits with 101\n{s}");
+    assert!(s.contains("TTY=icanon"), "raw mode is off again\n{s}");
+    assert!(
+        s.contains("ASPERITY_PANIC_KEY pressed"),
+        "the panic message is visible\n{s}"
+    );
+    assert!(!s.contains("parameters"), "the alternate screen is gone\n{s}");
 }
 
 #[test]

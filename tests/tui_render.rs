@@ -43,6 +43,8 @@ fn system1_adhesionless() {
     assert!(a.sweep.as_ref().is_some_and(|p| p.is_ok()));
     insta::assert_snapshot!("system1_80x24", render(&a, 80, 24));
     insta::assert_snapshot!("system1_160x48", render(&a, 160, 48));
+    // the smallest size the explorer draws in full
+    insta::assert_snapshot!("system1_60x20", render(&a, 60, 20));
 }
 
 #[test]

@@ -12,6 +12,9 @@
 //! spinner) only while the worker is busy, so an idle explorer uses no CPU. The terminal is
 //! restored on every exit path: a drop guard on return, ratatui's panic hook on panic.
 //!
+//! `ASPERITY_PANIC_KEY=C` makes the key C panic (for the test that the terminal is restored
+//! after a panic).
+//!
 //! `ASPERITY_TRACE=FILE` appends one line per generation with the time from the key press to
 //! the first frame showing the current point and to the frame showing every chart.
 
@@ -123,6 +126,7 @@ pub fn run(source: &str, preset: Preset) -> Result<()> {
         .map_err(|e| Error::Io(format!("cannot start the input thread: {e}")))?;
 
     let mut trace = Trace::new();
+    let panic_key = std::env::var("ASPERITY_PANIC_KEY").ok().and_then(|k| k.chars().next());
     loop {
         if let Some(req) = app.take_request() {
             if trace.started.is_none_or(|(g, _)| g != req.gen) && trace.file.is_some() {
@@ -162,6 +166,9 @@ pub fn run(source: &str, preset: Preset) -> Result<()> {
             match msg {
                 Msg::Input(Event::Key(k)) if k.kind != KeyEventKind::Release => {
                     let t0 = Instant::now();
+                    if panic_key.is_some_and(|c| k.code == event::KeyCode::Char(c)) {
+                        panic!("ASPERITY_PANIC_KEY pressed");
+                    }
                     app.on_key(k);
                     if app.has_pending() {
                         trace.started = Some((app.gen + 1, t0));

@@ -82,7 +82,9 @@ pub fn draw(f: &mut Frame, app: &App) {
         return;
     }
     let status_line = status_line(app, pal);
-    let status_rows = if status_line.width() > area.width as usize {
+    // messages may take two rows; the key hint is cut instead
+    let is_hint = app.edit.is_none() && app.message.is_none() && app.compute_error().is_none();
+    let status_rows = if !is_hint && status_line.width() > area.width as usize {
         2
     } else {
         1
@@ -95,7 +97,11 @@ pub fn draw(f: &mut Frame, app: &App) {
     .areas(area);
     draw_title(f, title, app, pal);
     f.render_widget(Paragraph::new(status_line).wrap(Wrap { trim: false }), status);
-    let panel_w = if area.width >= 120 { 34 } else { 28 };
+    let panel_w = match area.width {
+        120.. => 34,
+        80.. => 28,
+        _ => 24,
+    };
     let [panel, charts] = Layout::horizontal([Constraint::Length(panel_w), Constraint::Fill(1)]).areas(body);
     draw_panel(f, panel, app, pal);
     let [top, bottom] = Layout::vertical([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(charts);
