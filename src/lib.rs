@@ -18,6 +18,7 @@
 //! - [`engine`]: one evaluation of a scene, whatever it needs (the front ends call this).
 //! - [`benchmark`]: speed-against-error ladders (`asperity bench`).
 //! - [`cli`]: the headless commands.
+//! - [`tui`]: the terminal explorer (the only module that uses ratatui).
 
 pub mod adhesion;
 pub mod benchmark;
@@ -37,5 +38,6 @@ pub mod slab;
 pub mod spectrum;
 pub mod sweep;
 pub mod tolerances;
+pub mod tui;
 
 pub use error::{Error, Result};

@@ -444,17 +444,16 @@ pub fn main() -> i32 {
 
 fn tui_entry(preset_name: &str) -> Result<()> {
     // Validate the preset first so a bad one gives the same error as the CLI.
-    let _ = Preset::resolve(preset_name)?;
+    let preset = Preset::resolve(preset_name)?;
     if !std::io::stdout().is_terminal() {
         eprintln!(
             "asperity: stdout is not a terminal, so the explorer cannot open.\n\
              For scripts use the headless commands, e.g.\n  \
              asperity run --preset {preset_name} --format json\n  \
+             asperity sweep --preset {preset_name} --from 1e-3 --to 1 --points 50\n  \
              asperity presets"
         );
         return Err(Error::Unsupported("the terminal explorer needs a terminal".into()));
     }
-    Err(Error::Unsupported(
-        "the terminal explorer is not built yet; use `asperity run --preset NAME`".into(),
-    ))
+    crate::tui::run(preset_name, preset)
 }

@@ -1,0 +1,137 @@
+//! The only place the explorer reads [`Evaluation`] and [`Sweep`] fields: everything the
+//! views show is copied into the small structs below. When the engine grows fields (the
+//! adhesive solver's σ_a*, branch, iterations, residual, detached fraction), wire them in
+//! [`wall_marker`], [`branch_label`] and [`PointData::from_evaluation`]; nothing else in
+//! `tui` needs to change.
+
+use crate::engine::Evaluation;
+use crate::sweep::Sweep;
+
+/// Position of the tensile wall in the Pr(σ*) chart, σ* = −σ_a* (reduced). `None` when there
+/// is no wall to draw (adhesionless, or the engine does not report it).
+pub fn wall_marker(_ev: &Evaluation) -> Option<f64> {
+    // Adhesion merge: `Some(-ev.sigma_a)` when `ev.sigma_a > 0`.
+    None
+}
+
+/// One-word state of the solution for the read-out: "converged", "NOT converged", or (with
+/// adhesion) the branch and iteration count.
+pub fn branch_label(ev: &Evaluation) -> String {
+    // Adhesion merge: e.g. format!("{} ({} it)", ev.branch, ev.iterations).
+    if ev.converged {
+        "converged".into()
+    } else {
+        "NOT converged".into()
+    }
+}
+
+/// Extra read-outs (label, value) shown under "state" in the panel, in this order.
+pub fn extra_readouts(_ev: &Evaluation) -> Vec<(String, String)> {
+    // Adhesion merge, e.g.:
+    //   vec![("σ_a*".into(), format!("{:.4}", ev.sigma_a)),
+    //        ("detached".into(), format!("{:.3}", ev.detached_fraction)),
+    //        ("residual".into(), format!("{:.1e}", ev.residual))]
+    Vec::new()
+}
+
+/// What the explorer shows of one evaluation at the current p*.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointData {
+    /// a_r.
+    pub a_r: f64,
+    /// σ̄_c*.
+    pub mean_contact_stress: f64,
+    /// Whether the solver met its tolerance.
+    pub converged: bool,
+    /// See [`branch_label`].
+    pub branch: String,
+    /// Estimated absolute error of a_r.
+    pub error_estimate: f64,
+    /// Wall time of the evaluation (s).
+    pub elapsed_s: f64,
+    /// Pr(σ*) as (σ*, density) over whatever σ* range the engine sampled (negative σ* with
+    /// adhesion).
+    pub pr: Vec<(f64, f64)>,
+    /// −σ_a*, see [`wall_marker`].
+    pub wall: Option<f64>,
+    /// Pr(σ*) of the same scene without adhesion (only computed when γ_s > 0).
+    pub adhesionless: Option<Vec<(f64, f64)>>,
+    /// See [`extra_readouts`].
+    pub extra: Vec<(String, String)>,
+}
+
+impl PointData {
+    /// Copies what the views need.
+    pub fn from_evaluation(ev: &Evaluation) -> PointData {
+        PointData {
+            a_r: ev.a_r,
+            mean_contact_stress: ev.mean_contact_stress,
+            converged: ev.converged,
+            branch: branch_label(ev),
+            error_estimate: ev.error_estimate,
+            elapsed_s: ev.elapsed_s,
+            pr: pr_points(ev),
+            wall: wall_marker(ev),
+            adhesionless: None,
+            extra: extra_readouts(ev),
+        }
+    }
+}
+
+/// Pr(σ*) of an evaluation as chart points.
+pub fn pr_points(ev: &Evaluation) -> Vec<(f64, f64)> {
+    ev.pr.sigma.iter().copied().zip(ev.pr.density.iter().copied()).collect()
+}
+
+/// The load curves the explorer draws.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SweepData {
+    /// p*.
+    pub p: Vec<f64>,
+    /// a_r(p*).
+    pub a_r: Vec<f64>,
+    /// ū/h_rms.
+    pub gap_rel: Vec<f64>,
+    /// σ̄_c*(p*).
+    pub mean_contact_stress: Vec<f64>,
+}
+
+impl SweepData {
+    /// Copies the rows of a sweep.
+    pub fn from_sweep(s: &Sweep) -> SweepData {
+        SweepData {
+            p: s.rows.iter().map(|r| r.p).collect(),
+            a_r: s.rows.iter().map(|r| r.a_r).collect(),
+            gap_rel: s.rows.iter().map(|r| r.mean_gap_rel).collect(),
+            mean_contact_stress: s.rows.iter().map(|r| r.mean_contact_stress).collect(),
+        }
+    }
+}
+
+/// ū/h_rms at the current p* from a one-point sweep.
+pub fn gap_of_sweep(s: &Sweep) -> Option<f64> {
+    s.rows.first().map(|r| r.mean_gap_rel)
+}
+
+/// Whether the explorer opens a preset with the preset's γ_s (true) or with adhesion off
+/// (false, like the CLI until the adhesive solver lands). Adhesion merge: set to true.
+pub const ADHESION_BY_DEFAULT: bool = false;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn point_data_copies_the_evaluation() {
+        let mut scene = crate::preset::Preset::resolve("system-1").unwrap().scene().unwrap();
+        scene.gamma = 0.0;
+        let ev = crate::engine::evaluate(&scene, &crate::engine::Options::default()).unwrap();
+        let pd = PointData::from_evaluation(&ev);
+        assert_eq!(pd.a_r, ev.a_r);
+        assert_eq!(pd.pr.len(), ev.pr.sigma.len());
+        assert_eq!(pd.pr[3], (ev.pr.sigma[3], ev.pr.density[3]));
+        assert_eq!(pd.branch, "converged");
+        // adhesionless: no wall
+        assert_eq!(pd.wall, None);
+    }
+}

@@ -1,0 +1,229 @@
+//! The key table: the single source of truth for both dispatch ([`action_for`]) and the help
+//! overlay (which renders [`TABLE`] row by row). Key names are a public interface.
+
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+/// Everything a key can do in the main view.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Action {
+    /// Select the previous parameter.
+    Up,
+    /// Select the next parameter.
+    Down,
+    /// Decrease the selected parameter (fine step).
+    Dec,
+    /// Increase the selected parameter (fine step).
+    Inc,
+    /// Decrease (coarse step).
+    DecCoarse,
+    /// Increase (coarse step).
+    IncCoarse,
+    /// Type a value for the selected parameter (also: start typing a digit).
+    Edit,
+    /// Cycle the model 1 → 2 → 3 → 4 → custom.
+    CycleModel,
+    /// Open the preset picker.
+    Presets,
+    /// Reset every parameter to the preset's.
+    Reset,
+    /// Export the current curves (CSV) and scene (TOML) into the working directory.
+    Export,
+    /// Switch the area chart between log a_r and a_r/p*.
+    AreaMode,
+    /// Show or hide the adhesionless comparison curve in the Pr chart.
+    Compare,
+    /// Open or close this help.
+    Help,
+    /// Quit.
+    Quit,
+}
+
+/// One key: a code plus the modifiers it needs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Key(pub KeyCode, pub KeyModifiers);
+
+const NONE: KeyModifiers = KeyModifiers::NONE;
+const SHIFT: KeyModifiers = KeyModifiers::SHIFT;
+const CTRL: KeyModifiers = KeyModifiers::CONTROL;
+
+/// One row of the key table.
+#[derive(Debug, Clone, Copy)]
+pub struct Binding {
+    /// The keys that trigger the action.
+    pub keys: &'static [Key],
+    /// How the keys are written in the help.
+    pub label: &'static str,
+    /// What happens.
+    pub action: Action,
+    /// One line of help.
+    pub help: &'static str,
+}
+
+/// The key table of the main view.
+pub const TABLE: &[Binding] = &[
+    Binding {
+        keys: &[Key(KeyCode::Up, NONE), Key(KeyCode::Char('k'), NONE)],
+        label: "↑ k",
+        action: Action::Up,
+        help: "previous parameter",
+    },
+    Binding {
+        keys: &[
+            Key(KeyCode::Down, NONE),
+            Key(KeyCode::Char('j'), NONE),
+            Key(KeyCode::Tab, NONE),
+        ],
+        label: "↓ j Tab",
+        action: Action::Down,
+        help: "next parameter",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Left, NONE), Key(KeyCode::Char('h'), NONE)],
+        label: "← h",
+        action: Action::Dec,
+        help: "decrease (fine; p*, t·q_r, γ_s step in log)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Right, NONE), Key(KeyCode::Char('l'), NONE)],
+        label: "→ l",
+        action: Action::Inc,
+        help: "increase (fine)",
+    },
+    Binding {
+        keys: &[
+            Key(KeyCode::Left, SHIFT),
+            Key(KeyCode::PageDown, NONE),
+            Key(KeyCode::Char('H'), NONE),
+        ],
+        label: "⇧← PgDn",
+        action: Action::DecCoarse,
+        help: "decrease (coarse)",
+    },
+    Binding {
+        keys: &[
+            Key(KeyCode::Right, SHIFT),
+            Key(KeyCode::PageUp, NONE),
+            Key(KeyCode::Char('L'), NONE),
+        ],
+        label: "⇧→ PgUp",
+        action: Action::IncCoarse,
+        help: "increase (coarse)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Enter, NONE)],
+        label: "0-9 Enter",
+        action: Action::Edit,
+        help: "type a value (inf, 0 = off), Enter applies, Esc cancels",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('m'), NONE)],
+        label: "m",
+        action: Action::CycleModel,
+        help: "cycle model 1, 2, 3, 4, custom",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('p'), NONE)],
+        label: "p",
+        action: Action::Presets,
+        help: "pick a preset",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('r'), NONE)],
+        label: "r",
+        action: Action::Reset,
+        help: "reset to the preset",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('e'), NONE)],
+        label: "e",
+        action: Action::Export,
+        help: "export curves (CSV) and scene (TOML) here",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('a'), NONE)],
+        label: "a",
+        action: Action::AreaMode,
+        help: "area chart: log a_r / a_r/p*",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('c'), NONE)],
+        label: "c",
+        action: Action::Compare,
+        help: "Pr chart: adhesionless comparison on/off",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('?'), NONE), Key(KeyCode::F(1), NONE)],
+        label: "? F1",
+        action: Action::Help,
+        help: "this help",
+    },
+    Binding {
+        keys: &[
+            Key(KeyCode::Char('q'), NONE),
+            Key(KeyCode::Esc, NONE),
+            Key(KeyCode::Char('c'), CTRL),
+        ],
+        label: "q Esc ^C",
+        action: Action::Quit,
+        help: "quit",
+    },
+];
+
+/// Whether `key` matches the event. Shift is ignored for characters (terminals disagree on
+/// whether `?` or `L` carry it); other modifiers must match exactly.
+pub fn matches(key: Key, ev: &KeyEvent) -> bool {
+    if key.0 != ev.code {
+        return false;
+    }
+    let relevant = KeyModifiers::SHIFT | KeyModifiers::CONTROL | KeyModifiers::ALT;
+    let mut got = ev.modifiers & relevant;
+    let mut want = key.1 & relevant;
+    if matches!(ev.code, KeyCode::Char(_)) {
+        got.remove(KeyModifiers::SHIFT);
+        want.remove(KeyModifiers::SHIFT);
+    }
+    got == want
+}
+
+/// The action bound to a key event, from [`TABLE`].
+pub fn action_for(ev: &KeyEvent) -> Option<Action> {
+    TABLE
+        .iter()
+        .find(|b| b.keys.iter().any(|k| matches(*k, ev)))
+        .map(|b| b.action)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ev(code: KeyCode, m: KeyModifiers) -> KeyEvent {
+        KeyEvent::new(code, m)
+    }
+
+    #[test]
+    fn dispatch_follows_the_table() {
+        assert_eq!(action_for(&ev(KeyCode::Up, NONE)), Some(Action::Up));
+        assert_eq!(action_for(&ev(KeyCode::Left, NONE)), Some(Action::Dec));
+        assert_eq!(action_for(&ev(KeyCode::Left, SHIFT)), Some(Action::DecCoarse));
+        assert_eq!(action_for(&ev(KeyCode::PageUp, NONE)), Some(Action::IncCoarse));
+        assert_eq!(action_for(&ev(KeyCode::Char('?'), SHIFT)), Some(Action::Help));
+        assert_eq!(action_for(&ev(KeyCode::Char('c'), CTRL)), Some(Action::Quit));
+        assert_eq!(action_for(&ev(KeyCode::Char('c'), NONE)), Some(Action::Compare));
+        assert_eq!(action_for(&ev(KeyCode::Char('q'), NONE)), Some(Action::Quit));
+        assert_eq!(action_for(&ev(KeyCode::Char('x'), NONE)), None);
+        assert_eq!(action_for(&ev(KeyCode::Left, CTRL)), None);
+    }
+
+    #[test]
+    fn every_key_is_bound_once() {
+        let mut seen: Vec<Key> = Vec::new();
+        for b in TABLE {
+            assert!(!b.keys.is_empty() && !b.help.is_empty() && !b.label.is_empty());
+            for k in b.keys {
+                assert!(!seen.contains(k), "{k:?} bound twice");
+                seen.push(*k);
+            }
+        }
+    }
+}

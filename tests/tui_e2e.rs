@@ -1,0 +1,207 @@
+//! End to end: the real binary in a real pseudo-terminal (tmux). Starts the explorer, changes
+//! p*, switches the model, opens and closes the help, quits, and checks the screen and the
+//! exit status. Skipped, with a message, when tmux is not installed. Also: the headless
+//! behaviour (stdout not a terminal, bad preset).
+
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+const BIN: &str = env!("CARGO_BIN_EXE_asperity");
+
+struct Tmux {
+    socket: String,
+}
+
+impl Tmux {
+    /// A detached 120×40 session on its own socket running the explorer (with `env` before
+    /// the command) in `dir`, then printing its exit status.
+    fn start(name: &str, dir: &std::path::Path, env: &str) -> Tmux {
+        let t = Tmux {
+            socket: format!("asperity-e2e-{name}-{}", std::process::id()),
+        };
+        // after the explorer: its exit status and whether the tty is back in canonical mode
+        let command = format!(
+            "{env} {BIN} tui --preset system-1; echo EXIT=$?; stty -a | grep -o -- '-*icanon' | sed 's/^/TTY=/'; sleep 60"
+        );
+        let out = t.cmd(&[
+            "new-session",
+            "-d",
+            "-x",
+            "120",
+            "-y",
+            "40",
+            "-s",
+            "main",
+            "-c",
+            dir.to_str().unwrap(),
+            &command,
+        ]);
+        assert!(out.status.success(), "tmux: {}", String::from_utf8_lossy(&out.stderr));
+        t
+    }
+
+    fn cmd(&self, args: &[&str]) -> std::process::Output {
+        Command::new("tmux")
+            .arg("-u")
+            .arg("-L")
+            .arg(&self.socket)
+            .args(args)
+            .output()
+            .expect("run tmux")
+    }
+
+    fn screen(&self) -> String {
+        String::from_utf8_lossy(&self.cmd(&["capture-pane", "-p", "-t", "main"]).stdout).into_owned()
+    }
+
+    fn keys(&self, keys: &[&str]) {
+        let mut args = vec!["send-keys", "-t", "main"];
+        args.extend_from_slice(keys);
+        assert!(self.cmd(&args).status.success());
+    }
+
+    /// Polls the screen until `pred` holds (10 s at most); returns the screen.
+    fn wait(&self, what: &str, pred: impl Fn(&str) -> bool) -> String {
+        let t0 = Instant::now();
+        loop {
+            let s = self.screen();
+            if pred(&s) {
+                return s;
+            }
+            if t0.elapsed() > Duration::from_secs(10) {
+                panic!("timed out waiting for {what}; screen:\n{s}");
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        }
+    }
+}
+
+impl Drop for Tmux {
+    fn drop(&mut self) {
+        let _ = self.cmd(&["kill-server"]);
+    }
+}
+
+fn have_tmux() -> bool {
+    Command::new("tmux")
+        .arg("-V")
+        .output()
+        .is_ok_and(|o| o.status.success())
+}
+
+#[test]
+fn explorer_in_tmux() {
+    if !have_tmux() {
+        eprintln!("SKIPPED explorer_in_tmux: tmux is not installed (apt-get install tmux)");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("asperity-e2e-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let t = Tmux::start("main", &dir, "");
+    let s = t.wait("the first frame with results", |s| {
+        s.contains("a_r(p*)") && s.contains("converged")
+    });
+    assert!(s.contains("system-1") && s.contains("model 3"), "{s}");
+    // colour by default (the NO_COLOR test checks the opposite)
+    let styled = String::from_utf8_lossy(&t.cmd(&["capture-pane", "-e", "-p", "-t", "main"]).stdout).into_owned();
+    assert!(styled.contains("[38;"), "{styled}");
+
+    // p* is selected: one fine step up, 10^(-1.95)
+    t.keys(&["Right"]);
+    t.wait("p* = 0.01122", |s| s.contains("0.01122") && s.contains("converged"));
+
+    // cycle the model
+    t.keys(&["m"]);
+    t.wait("model 4", |s| s.contains("model 4"));
+
+    // help from the key table, any key closes it
+    t.keys(&["?"]);
+    t.wait("the help", |s| {
+        s.contains("previous parameter") && s.contains("cycle model")
+    });
+    t.keys(&["x"]);
+    t.wait("the help to close", |s| !s.contains("previous parameter"));
+
+    // typing a value
+    t.keys(&["5", "e", "-", "3", "Enter"]);
+    t.wait("p* = 0.005", |s| s.contains("0.005000"));
+
+    // export writes into the working directory
+    t.keys(&["e"]);
+    t.wait("the export paths", |s| s.contains("exported"));
+    assert!(dir.join("asperity-system-1-1.toml").is_file());
+    assert!(dir.join("asperity-system-1-1-pr.csv").is_file());
+
+    t.keys(&["q"]);
+    let s = t.wait("a clean exit", |s| s.contains("TTY="));
+    assert!(s.contains("EXIT=0") && s.contains("TTY=icanon"), "{s}");
+    // the alternate screen is gone: the explorer's frame is no longer visible
+    assert!(!s.contains("parameters"), "{s}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn no_color_and_too_small_in_tmux() {
+    if !have_tmux() {
+        eprintln!("SKIPPED no_color_and_too_small_in_tmux: tmux is not installed");
+        return;
+    }
+    let t = Tmux::start("nocolor", &std::env::temp_dir(), "NO_COLOR=1");
+    t.wait("the first frame", |s| s.contains("converged"));
+    let styled = String::from_utf8_lossy(&t.cmd(&["capture-pane", "-e", "-p", "-t", "main"]).stdout).into_owned();
+    assert!(styled.contains("converged"), "{styled}");
+    assert!(!styled.contains("[38;"), "NO_COLOR: no foreground colours\n{styled}");
+    t.cmd(&["resize-window", "-t", "main", "-x", "50", "-y", "15"]);
+    t.wait("the too-small screen", |s| s.contains("terminal too small"));
+    t.cmd(&["resize-window", "-t", "main", "-x", "120", "-y", "40"]);
+    t.wait("the explorer again", |s| s.contains("converged"));
+    t.keys(&["C-c"]);
+    let s = t.wait("a clean exit", |s| s.contains("EXIT="));
+    assert!(s.contains("EXIT=0"), "{s}");
+}
+
+#[test]
+fn terminal_restored_after_a_panic() {
+    if !have_tmux() {
+        eprintln!("SKIPPED terminal_restored_after_a_panic: tmux is not installed");
+        return;
+    }
+    let t = Tmux::start("panic", &std::env::temp_dir(), "ASPERITY_PANIC_KEY=Z");
+    t.wait("the first frame", |s| s.contains("converged"));
+    t.keys(&["Z"]);
+    let s = t.wait("the exit", |s| s.contains("TTY="));
+    assert!(s.contains("EXIT=101"), "a panic exits with 101\n{s}");
+    assert!(s.contains("TTY=icanon"), "raw mode is off again\n{s}");
+    assert!(
+        s.contains("ASPERITY_PANIC_KEY pressed"),
+        "the panic message is visible\n{s}"
+    );
+    assert!(!s.contains("parameters"), "the alternate screen is gone\n{s}");
+}
+
+#[test]
+fn not_a_terminal_explains_the_headless_commands() {
+    let out = Command::new(BIN).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("not a terminal") && err.contains("asperity run") && err.contains("asperity sweep"),
+        "{err}"
+    );
+}
+
+#[test]
+fn bad_preset_is_the_cli_error() {
+    let out = Command::new(BIN)
+        .args(["tui", "--preset", "no-such-preset"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let tui_err = String::from_utf8_lossy(&out.stderr).into_owned();
+    let run = Command::new(BIN)
+        .args(["run", "--preset", "no-such-preset"])
+        .output()
+        .unwrap();
+    assert_eq!(tui_err, String::from_utf8_lossy(&run.stderr));
+    assert!(tui_err.contains("no-such-preset"), "{tui_err}");
+}
