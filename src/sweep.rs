@@ -9,9 +9,9 @@
 //!
 //! Adhesionless loads are independent and run in parallel (rayon). Adhesive loads are run in
 //! order of increasing p* (the loading branch, continuation from the neighbouring load): the
-//! hook for a warm start is [`evaluate_node`], which today calls [`crate::engine::evaluate`]
-//! cold; until the adhesive solver lands an adhesive sweep returns the engine's
-//! `Error::Unsupported` unchanged.
+//! warm start is [`evaluate_node`]: each load starts the fixed point from the previous load's
+//! a_r(q), which cuts the iterations and keeps the sweep on the loading branch (an adhesive
+//! jump shows as a non-monotone stretch, flagged by [`Sweep::monotone`]).
 //!
 //! Cancellation: the caller may pass an `AtomicBool`; when it is set the sweep stops between
 //! evaluations and returns [`Error::Cancelled`].
@@ -124,12 +124,18 @@ fn lean(opts: &Options) -> Options {
     o
 }
 
-/// Evaluates one load (the continuation hook: `_previous` is the neighbouring load's result,
-/// to be used as the adhesive solver's warm start once it exists).
-pub fn evaluate_node(scene: &Scene, p: f64, opts: &Options, previous: Option<&Evaluation>) -> Result<Evaluation> {
+/// Evaluates one load, warm-started from the neighbouring load's result (continuation), and
+/// abandoning an adhesive fixed point when `cancel` is set.
+pub fn evaluate_node(
+    scene: &Scene,
+    p: f64,
+    opts: &Options,
+    previous: Option<&Evaluation>,
+    cancel: Option<&AtomicBool>,
+) -> Result<Evaluation> {
     let mut s = scene.clone();
     s.pressure = p;
-    engine::evaluate_warm(&s, opts, previous, None)
+    engine::evaluate_warm(&s, opts, previous, cancel)
 }
 
 fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
@@ -148,14 +154,14 @@ pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&At
         ps.par_iter()
             .map(|&p| {
                 check_cancel(cancel)?;
-                evaluate_node(scene, p, &opts, None)
+                evaluate_node(scene, p, &opts, None, cancel)
             })
             .collect()
     } else {
         let mut out: Vec<Evaluation> = Vec::with_capacity(ps.len());
         for &p in ps {
             check_cancel(cancel)?;
-            let ev = evaluate_node(scene, p, &opts, out.last()).map_err(|e| match e {
+            let ev = evaluate_node(scene, p, &opts, out.last(), cancel).map_err(|e| match e {
                 Error::NotConverged { solver, reason } => Error::NotConverged {
                     solver: format!("{solver} at p* = {p:.6e}"),
                     reason,

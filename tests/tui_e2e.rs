@@ -76,6 +76,11 @@ impl Tmux {
     }
 }
 
+/// A frame that shows a solved point: "converged" (adhesionless) or the adhesive branch.
+fn solved(s: &str) -> bool {
+    s.contains("converged") || s.contains("loading (")
+}
+
 impl Drop for Tmux {
     fn drop(&mut self) {
         let _ = self.cmd(&["kill-server"]);
@@ -98,9 +103,7 @@ fn explorer_in_tmux() {
     let dir = std::env::temp_dir().join(format!("asperity-e2e-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let t = Tmux::start("main", &dir, "");
-    let s = t.wait("the first frame with results", |s| {
-        s.contains("a_r(p*)") && s.contains("converged")
-    });
+    let s = t.wait("the first frame with results", |s| s.contains("a_r(p*)") && solved(s));
     assert!(s.contains("system-1") && s.contains("model 3"), "{s}");
     // colour by default (the NO_COLOR test checks the opposite)
     let styled = String::from_utf8_lossy(&t.cmd(&["capture-pane", "-e", "-p", "-t", "main"]).stdout).into_owned();
@@ -108,7 +111,7 @@ fn explorer_in_tmux() {
 
     // p* is selected: one fine step up, 10^(-1.95)
     t.keys(&["Right"]);
-    t.wait("p* = 0.01122", |s| s.contains("0.01122") && s.contains("converged"));
+    t.wait("p* = 0.01122", |s| s.contains("0.01122") && solved(s));
 
     // cycle the model
     t.keys(&["m"]);
@@ -147,14 +150,14 @@ fn no_color_and_too_small_in_tmux() {
         return;
     }
     let t = Tmux::start("nocolor", &std::env::temp_dir(), "NO_COLOR=1");
-    t.wait("the first frame", |s| s.contains("converged"));
+    t.wait("the first frame", |s| solved(s));
     let styled = String::from_utf8_lossy(&t.cmd(&["capture-pane", "-e", "-p", "-t", "main"]).stdout).into_owned();
-    assert!(styled.contains("converged"), "{styled}");
+    assert!(solved(&styled), "{styled}");
     assert!(!styled.contains("[38;"), "NO_COLOR: no foreground colours\n{styled}");
     t.cmd(&["resize-window", "-t", "main", "-x", "50", "-y", "15"]);
     t.wait("the too-small screen", |s| s.contains("terminal too small"));
     t.cmd(&["resize-window", "-t", "main", "-x", "120", "-y", "40"]);
-    t.wait("the explorer again", |s| s.contains("converged"));
+    t.wait("the explorer again", |s| solved(s));
     t.keys(&["C-c"]);
     let s = t.wait("a clean exit", |s| s.contains("EXIT="));
     assert!(s.contains("EXIT=0"), "{s}");
@@ -167,7 +170,7 @@ fn terminal_restored_after_a_panic() {
         return;
     }
     let t = Tmux::start("panic", &std::env::temp_dir(), "ASPERITY_PANIC_KEY=Z");
-    t.wait("the first frame", |s| s.contains("converged"));
+    t.wait("the first frame", |s| solved(s));
     t.keys(&["Z"]);
     let s = t.wait("the exit", |s| s.contains("TTY="));
     assert!(s.contains("EXIT=101"), "a panic exits with 101\n{s}");

@@ -38,7 +38,14 @@ fn key(a: &mut App, code: KeyCode) {
 
 #[test]
 fn system1_adhesionless() {
-    let a = app("system-1");
+    let mut a = app("system-1");
+    // select γ_s and type 0 (off)
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Char('0'));
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.scene.gamma, 0.0);
+    compute_now(&mut a, &mut Caches::default());
     assert!(a.point.as_ref().is_some_and(|p| p.is_ok()));
     assert!(a.sweep.as_ref().is_some_and(|p| p.is_ok()));
     insta::assert_snapshot!("system1_80x24", render(&a, 80, 24));
@@ -49,13 +56,10 @@ fn system1_adhesionless() {
 
 #[test]
 fn system1_with_adhesion() {
-    let mut a = app("system-1");
-    // select γ_s and step it on: the preset's γ_s
-    key(&mut a, KeyCode::Down);
-    key(&mut a, KeyCode::Down);
-    key(&mut a, KeyCode::Right);
+    // the preset's own γ_s is the default
+    let a = app("system-1");
     assert_eq!(a.scene.gamma, 0.05);
-    compute_now(&mut a, &mut Caches::default());
+    assert!(a.point.as_ref().is_some_and(|p| p.is_ok()));
     insta::assert_snapshot!("system1_adhesion_80x24", render(&a, 80, 24));
     insta::assert_snapshot!("system1_adhesion_160x48", render(&a, 160, 48));
 }

@@ -9,29 +9,40 @@ use crate::sweep::Sweep;
 
 /// Position of the tensile wall in the Pr(σ*) chart, σ* = −σ_a* (reduced). `None` when there
 /// is no wall to draw (adhesionless, or the engine does not report it).
-pub fn wall_marker(_ev: &Evaluation) -> Option<f64> {
-    // Adhesion merge: `Some(-ev.sigma_a)` when `ev.sigma_a > 0`.
-    None
+pub fn wall_marker(ev: &Evaluation) -> Option<f64> {
+    (ev.sigma_a > 0.0).then_some(-ev.sigma_a)
 }
 
 /// One-word state of the solution for the read-out: "converged", "NOT converged", or (with
 /// adhesion) the branch and iteration count.
 pub fn branch_label(ev: &Evaluation) -> String {
-    // Adhesion merge: e.g. format!("{} ({} it)", ev.branch, ev.iterations).
-    if ev.converged {
-        "converged".into()
-    } else {
-        "NOT converged".into()
+    if !ev.converged {
+        return "NOT converged".into();
     }
+    if ev.branch == "adhesionless" {
+        return "converged".into();
+    }
+    let mut s = format!("{} ({} it)", ev.branch, ev.iterations);
+    if ev.unloading_a_r.is_some() {
+        s.push_str(", 2 branches");
+    }
+    s
 }
 
 /// Extra read-outs (label, value) shown under "state" in the panel, in this order.
-pub fn extra_readouts(_ev: &Evaluation) -> Vec<(String, String)> {
-    // Adhesion merge, e.g.:
-    //   vec![("σ_a*".into(), format!("{:.4}", ev.sigma_a)),
-    //        ("detached".into(), format!("{:.3}", ev.detached_fraction)),
-    //        ("residual".into(), format!("{:.1e}", ev.residual))]
-    Vec::new()
+pub fn extra_readouts(ev: &Evaluation) -> Vec<(String, String)> {
+    if ev.branch == "adhesionless" {
+        return Vec::new();
+    }
+    let mut v = vec![
+        ("σ_a*".into(), format!("{:.4}", ev.sigma_a)),
+        ("tensile".into(), format!("{:.3e}", ev.tensile_area)),
+        ("residual".into(), format!("{:.1e}", ev.residual)),
+    ];
+    if let Some(u) = ev.unloading_a_r {
+        v.push(("unload a_r".into(), format!("{u:.5}")));
+    }
+    v
 }
 
 /// What the explorer shows of one evaluation at the current p*.
@@ -113,9 +124,9 @@ pub fn gap_of_sweep(s: &Sweep) -> Option<f64> {
     s.rows.first().map(|r| r.mean_gap_rel)
 }
 
-/// Whether the explorer opens a preset with the preset's γ_s (true) or with adhesion off
-/// (false, like the CLI until the adhesive solver lands). Adhesion merge: set to true.
-pub const ADHESION_BY_DEFAULT: bool = false;
+/// Whether the explorer opens a preset with the preset's γ_s (true, like the CLI) or with
+/// adhesion off (false).
+pub const ADHESION_BY_DEFAULT: bool = true;
 
 #[cfg(test)]
 mod tests {

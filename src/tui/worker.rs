@@ -188,8 +188,8 @@ fn point_options() -> Options {
     }
 }
 
-fn evaluate_point(scene: &Scene) -> Result<PointData> {
-    let ev = engine::evaluate(scene, &point_options())?;
+fn evaluate_point(scene: &Scene, cancel: &AtomicBool) -> Result<PointData> {
+    let ev = engine::evaluate_warm(scene, &point_options(), None, Some(cancel))?;
     let mut pd = PointData::from_evaluation(&ev);
     if scene.gamma > 0.0 {
         let mut s0 = scene.clone();
@@ -217,7 +217,10 @@ pub fn process(
     let point = match caches.points.get(&pkey) {
         Some(p) => p,
         None => {
-            let p = evaluate_point(&req.scene);
+            let p = evaluate_point(&req.scene, cancel);
+            if matches!(p, Err(Error::Cancelled)) {
+                return;
+            }
             caches.points.put(pkey.clone(), p.clone());
             p
         }
@@ -244,7 +247,7 @@ pub fn process(
                 to: req.range.1,
                 points: SWEEP_POINTS,
             };
-            match sweep::sweep(&req.scene, &spec, &Options::default(), Some(cancel)) {
+            match sweep::sweep(&req.scene, &spec, &Options::chart(), Some(cancel)) {
                 Err(Error::Cancelled) => return,
                 r => {
                     let r = r.map(|s| SweepData::from_sweep(&s));
@@ -271,7 +274,7 @@ pub fn process(
                 to: p,
                 points: 1,
             };
-            match sweep::sweep(&req.scene, &spec, &Options::default(), Some(cancel)) {
+            match sweep::sweep(&req.scene, &spec, &Options::chart(), Some(cancel)) {
                 Err(Error::Cancelled) => return,
                 r => {
                     let g =
