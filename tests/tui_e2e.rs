@@ -150,14 +150,14 @@ fn no_color_and_too_small_in_tmux() {
         return;
     }
     let t = Tmux::start("nocolor", &std::env::temp_dir(), "NO_COLOR=1");
-    t.wait("the first frame", |s| solved(s));
+    t.wait("the first frame", solved);
     let styled = String::from_utf8_lossy(&t.cmd(&["capture-pane", "-e", "-p", "-t", "main"]).stdout).into_owned();
     assert!(solved(&styled), "{styled}");
     assert!(!styled.contains("[38;"), "NO_COLOR: no foreground colours\n{styled}");
     t.cmd(&["resize-window", "-t", "main", "-x", "50", "-y", "15"]);
     t.wait("the too-small screen", |s| s.contains("terminal too small"));
     t.cmd(&["resize-window", "-t", "main", "-x", "120", "-y", "40"]);
-    t.wait("the explorer again", |s| solved(s));
+    t.wait("the explorer again", solved);
     t.keys(&["C-c"]);
     let s = t.wait("a clean exit", |s| s.contains("EXIT="));
     assert!(s.contains("EXIT=0"), "{s}");
@@ -170,7 +170,7 @@ fn terminal_restored_after_a_panic() {
         return;
     }
     let t = Tmux::start("panic", &std::env::temp_dir(), "ASPERITY_PANIC_KEY=Z");
-    t.wait("the first frame", |s| solved(s));
+    t.wait("the first frame", solved);
     t.keys(&["Z"]);
     let s = t.wait("the exit", |s| s.contains("TTY="));
     assert!(s.contains("EXIT=101"), "a panic exits with 101\n{s}");
