@@ -146,8 +146,8 @@ fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
     }
 }
 
-/// Evaluates the scene at every p* of `ps` (ascending): in parallel without adhesion, in
-/// order with continuation with it.
+/// Evaluates the scene at every p* of `ps` (ascending): in parallel without adhesion; with it
+/// in order of increasing load with continuation, one chunk of the range per thread.
 pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<Evaluation>> {
     let opts = lean(opts);
     if scene.gamma == 0.0 {
@@ -158,21 +158,40 @@ pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&At
             })
             .collect()
     } else {
-        let mut out: Vec<Evaluation> = Vec::with_capacity(ps.len());
-        for &p in ps {
-            check_cancel(cancel)?;
-            let ev = evaluate_node(scene, p, &opts, out.last(), cancel).map_err(|e| match e {
-                Error::NotConverged { solver, reason } => Error::NotConverged {
-                    solver: format!("{solver} at p* = {p:.6e}"),
-                    reason,
-                },
-                e => e,
-            })?;
-            out.push(ev);
+        // continuation runs in order of increasing load; the range is cut into one chunk per
+        // worker thread (each ≥ MIN_CHUNK loads), each chunk starting cold, i.e. from the
+        // adhesionless solution: the loading branch, like the continuation itself
+        let threads = rayon::current_num_threads().clamp(1, 8);
+        let chunks = (ps.len() / MIN_CHUNK).clamp(1, threads);
+        let size = ps.len().div_ceil(chunks);
+        let parts: Vec<Result<Vec<Evaluation>>> = ps
+            .par_chunks(size.max(1))
+            .map(|part| {
+                let mut out: Vec<Evaluation> = Vec::with_capacity(part.len());
+                for &p in part {
+                    check_cancel(cancel)?;
+                    let ev = evaluate_node(scene, p, &opts, out.last(), cancel).map_err(|e| match e {
+                        Error::NotConverged { solver, reason } => Error::NotConverged {
+                            solver: format!("{solver} at p* = {p:.6e}"),
+                            reason,
+                        },
+                        e => e,
+                    })?;
+                    out.push(ev);
+                }
+                Ok(out)
+            })
+            .collect();
+        let mut out = Vec::with_capacity(ps.len());
+        for part in parts {
+            out.extend(part?);
         }
         Ok(out)
     }
 }
+
+/// Fewest loads per continuation chunk of an adhesive sweep.
+const MIN_CHUNK: usize = 16;
 
 /// U* = U/(E*ḡh_rms) at every p* of `ps` (see [`evaluations`]).
 pub fn energies(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<f64>> {
