@@ -203,6 +203,183 @@ pub fn adhesionless(quick: bool) -> Result<Report> {
     Ok(rep)
 }
 
+fn adhesive_scene(preset: &str, model: u8, p: f64, t: f64) -> Result<Scene> {
+    let mut s = Preset::resolve(preset)?.scene()?;
+    s.model = Model::named(model)?;
+    s.pressure = p;
+    s.thickness_qr = t;
+    Ok(s)
+}
+
+/// Ladder of the adhesive theory: (march steps per ln q, grid points per width) against a much
+/// finer solution (192, 40); plus the propagator against its exact constant-wall case.
+pub fn adhesive(quick: bool) -> Result<Report> {
+    use crate::adhesion::{self, AdhesionAccuracy};
+    use crate::tolerances::{ADHESION_DEFAULT_REL, EXACT_WALL_ABS};
+    let runs = if quick { 3 } else { 15 };
+    let def = AdhesionAccuracy::default();
+    let acc = |s: f64, p: f64| AdhesionAccuracy {
+        steps_per_ln_q: s,
+        points_per_width: p,
+        explore_branches: false,
+        ..def
+    };
+    let (reference_acc, ladder): (AdhesionAccuracy, &[(f64, f64)]) = if quick {
+        (acc(96.0, 40.0), &[(12.0, 5.0), (24.0, 10.0)])
+    } else {
+        (
+            acc(192.0, 40.0),
+            &[(6.0, 3.0), (12.0, 5.0), (24.0, 10.0), (48.0, 20.0), (96.0, 20.0)],
+        )
+    };
+    let mut cases: Vec<(&str, u8, f64, f64)> = vec![
+        ("system-1", 3, 0.01, f64::INFINITY),
+        ("system-2", 4, 0.005, f64::INFINITY),
+    ];
+    if !quick {
+        cases.push(("system-1", 4, 0.01, f64::INFINITY));
+        cases.push(("system-2", 4, 0.005, 0.25));
+    }
+    let mut rep = Report::default();
+    for &(preset, model, p, t) in &cases {
+        let scene = adhesive_scene(preset, model, p, t)?;
+        let reference = adhesion::solve(&scene, &reference_acc, None, None)?;
+        for &(st, ppw) in ladder {
+            let a = acc(st, ppw);
+            let sol = adhesion::solve(&scene, &a, None, None)?;
+            let time = median_time(runs, || adhesion::solve(&scene, &a, None, None).map(|s| s.a_r));
+            let is_default = st == def.steps_per_ln_q && ppw == def.points_per_width;
+            let cells = sol.sigma.len() as u64;
+            rep.rungs.push(Rung {
+                solver: "adhesive theory".into(),
+                case: format!("{preset} model {model} p*={p} t*q_r={}", fmt_t(t)),
+                setting: format!("{st} steps/ln q, {ppw} points/width ({} it)", sol.iterations),
+                default: is_default,
+                median_s: time,
+                runs,
+                errors: vec![
+                    ("a_r".to_string(), rel(sol.a_r, reference.a_r)),
+                    (
+                        "mean_contact_stress".to_string(),
+                        rel(sol.mean_contact_stress, reference.mean_contact_stress),
+                    ),
+                ],
+                bound: is_default.then_some(ADHESION_DEFAULT_REL),
+                memory_bytes: Some(cells * 8 * 6 + sol.q.len() as u64 * 8 * 8),
+            });
+        }
+    }
+    // the propagator alone against its exact case: constant wall, model 1 (a_r = erf((p+σ_a)/√(2V)))
+    let mut s1 = adhesive_scene("system-1", 1, 0.01, f64::INFINITY)?;
+    s1.gamma = 0.0;
+    for (st, ppw) in [(12.0, 5.0), (24.0, 10.0)] {
+        let a = acc(st, ppw);
+        let run = || adhesion::propagate_with_wall(&s1, &a, |_| 0.3, true).map(|r| *r.1.last().unwrap_or(&0.0));
+        let got = run()?;
+        let exact = erf((0.01 + 0.3) / 0.5f64.sqrt());
+        let time = median_time(runs, run);
+        rep.rungs.push(Rung {
+            solver: "adhesive theory".into(),
+            case: "propagator, constant wall sigma_a*=0.3, system-1 model 1 p*=0.01".into(),
+            setting: format!("{st} steps/ln q, {ppw} points/width"),
+            default: st == def.steps_per_ln_q,
+            median_s: time,
+            runs,
+            errors: vec![("a_r vs erf((p+sigma_a)/sqrt(2V))".into(), (got - exact).abs())],
+            bound: (st == def.steps_per_ln_q).then_some(EXACT_WALL_ABS),
+            memory_bytes: None,
+        });
+    }
+    // hard cases
+    let base = adhesive_scene("system-1", 3, 0.01, f64::INFINITY)?;
+    let glo = base.gamma_glo();
+    let mut hard: Vec<(String, Scene)> = Vec::new();
+    for target in [0.01, 10.0] {
+        let mut s = base.clone();
+        s.gamma = base.gamma * target / glo;
+        hard.push((format!("system-1 model 3 p*=0.01 gamma_glo={target}"), s));
+    }
+    for (p, t) in [
+        (0.005, 0.15),
+        (0.005, 0.1),
+        (0.005, 0.01),
+        (1e-5, f64::INFINITY),
+        (1.0, f64::INFINITY),
+    ] {
+        hard.push((
+            format!("system-2 model 4 p*={p:e} t*q_r={}", fmt_t(t)),
+            adhesive_scene("system-2", 4, p, t)?,
+        ));
+    }
+    for (case, scene) in hard {
+        let t0 = Instant::now();
+        let r = adhesion::solve(&scene, &def, None, None);
+        rep.hard_cases.push(HardCase {
+            solver: "adhesive theory".into(),
+            case,
+            outcome: match &r {
+                Ok(s) if s.unloading_a_r.is_some() => format!("converged ({}), unloading branch too", s.branch),
+                Ok(s) => format!("converged ({}, {} it)", s.branch, s.iterations),
+                Err(e) => e.to_string(),
+            },
+            a_r: r.as_ref().ok().map(|s| s.a_r),
+            residual: r.as_ref().ok().map(|s| s.residual),
+            time_s: t0.elapsed().as_secs_f64(),
+        });
+    }
+    Ok(rep)
+}
+
+/// Ladder of the load sweep (a_r(p*), ū(p*)): a 64-point sweep of system 1 from p* = 1e-3 to 1
+/// at the default and the chart accuracy against a 4× finer sweep at the shared loads.
+pub fn sweeps(quick: bool) -> Result<Report> {
+    use crate::engine::Options;
+    use crate::sweep::{self, SweepSpec};
+    use crate::tolerances::SWEEP_REFINEMENT_REL;
+    let runs = if quick { 1 } else { 5 };
+    let mut rep = Report::default();
+    let base = Preset::resolve("system-1")?.scene()?;
+    let spec = SweepSpec {
+        from: 1e-3,
+        to: 1.0,
+        points: 64,
+    };
+    let fine = SweepSpec {
+        points: 4 * 63 + 1,
+        ..spec
+    };
+    let mut cases = vec![("adhesionless", 0.0, "default", Options::default(), true)];
+    cases.push(("adhesive", base.gamma, "default", Options::default(), true));
+    cases.push(("adhesive", base.gamma, "chart (explorer)", Options::chart(), false));
+    for (label, gamma, setting, opts, is_default) in cases {
+        let mut scene = base.clone();
+        scene.gamma = gamma;
+        let reference = sweep::sweep(&scene, &fine, &Options::default(), None)?;
+        let sw = sweep::sweep(&scene, &spec, &opts, None)?;
+        let time = median_time(runs, || sweep::sweep(&scene, &spec, &opts, None).map(|s| s.rows.len()));
+        let (mut ea, mut eg) = (0.0f64, 0.0f64);
+        for (k, r) in sw.rows.iter().enumerate() {
+            let f = &reference.rows[4 * k];
+            ea = ea.max(rel(r.a_r, f.a_r));
+            if f.mean_gap_rel > 1e-3 {
+                eg = eg.max(rel(r.mean_gap_rel, f.mean_gap_rel));
+            }
+        }
+        rep.rungs.push(Rung {
+            solver: "load sweep".into(),
+            case: format!("system-1 model 3 {label}, 64 loads p*=1e-3..1"),
+            setting: format!("{setting} ({} evaluations)", sw.evaluations),
+            default: is_default,
+            median_s: time,
+            runs,
+            errors: vec![("a_r".into(), ea), ("mean_gap".into(), eg)],
+            bound: is_default.then_some(SWEEP_REFINEMENT_REL),
+            memory_bytes: Some(sw.evaluations as u64 * 9 * 8),
+        });
+    }
+    Ok(rep)
+}
+
 /// Renders the ladders as markdown tables (one per solver) and the hard cases.
 pub fn markdown(rep: &Report) -> String {
     let mut out = String::new();

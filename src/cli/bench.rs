@@ -25,6 +25,10 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     };
     eprintln!("asperity bench: adhesionless theory ...");
     add(benchmark::adhesionless(args.quick)?);
+    eprintln!("asperity bench: adhesive theory ...");
+    add(benchmark::adhesive(args.quick)?);
+    eprintln!("asperity bench: load sweeps ...");
+    add(benchmark::sweeps(args.quick)?);
     let tables = benchmark::markdown(&rep);
     super::emit(&tables);
     if !args.quick {
