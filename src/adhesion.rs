@@ -923,9 +923,9 @@ pub fn solve(
         return Err(Error::NotConverged {
             solver: "adhesive fixed point".into(),
             reason: format!(
-                "residual {:.2e} > tol {:.0e} after {iterations} iterations (Anderson, damped \
-                 restart and continuation in gamma): the loading branch may not exist at this \
-                 load, or it oscillates between states; try a nearby p*, t or gamma",
+                "residual {:.2e} > tol {:.0e} after {iterations} map evaluations (Anderson, \
+                 damped restart and continuation in gamma): the loading branch may not \
+                 exist at this load, or it oscillates between states; try a nearby p*, t or gamma",
                 att.residual, acc.tol
             ),
         });
