@@ -238,6 +238,9 @@ pub struct AdhesiveSolution {
     pub elastic_energy: f64,
     /// Global adhesion measure γ̃_glo.
     pub gamma_glo: f64,
+    /// The (steps per ln q, points per width) actually used when the requested resolution
+    /// stagnated and a nearby one converged; None when the requested one did.
+    pub resolution_used: Option<(f64, f64)>,
 }
 
 /// Forward and inverse FFTs of one length.
@@ -748,6 +751,9 @@ fn solve_small(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
     x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
+/// Iterations without the residual halving after which an Anderson attempt gives up.
+const STAGNATION: usize = 40;
+
 /// Outcome of one fixed-point attempt.
 struct Attempt {
     x: Vec<f64>,
@@ -797,6 +803,7 @@ impl<'a> Marcher<'a> {
         let debug = std::env::var_os("ASPERITY_DEBUG").is_some();
         let mut restarts = 0;
         let mut used = 0;
+        let mut best_it = 0;
         for it in 1..=self.acc.max_iterations {
             used = it;
             check_cancel(cancel)?;
@@ -819,7 +826,14 @@ impl<'a> Marcher<'a> {
                 });
             }
             if res < best.0 {
+                if res < 0.5 * best.0 {
+                    best_it = it;
+                }
                 best = (res, x.clone(), gx.clone());
+            } else if best.0 < 0.05 && it > best_it + STAGNATION {
+                // close to a solution, but no halving of the residual for STAGNATION
+                // iterations (the wide search before that is left alone)
+                break;
             } else if !res.is_finite() || res > 10.0 * best.0 {
                 restarts += 1;
                 if restarts > 6 {
@@ -865,6 +879,49 @@ pub fn solve(
             return Err(Error::field(name, v, format!("{lo} <= {name} <= {hi}")));
         }
     }
+    // Near a jump into contact the discrete map can stagnate for one particular resolution
+    // (measured: system 2, t·q_r = 0.15, a few loads, residual ~1e-4) while slightly different
+    // resolutions converge to the same a_r within the discretisation error. So: Anderson at the
+    // requested resolution, then at two nearby ones, and only then the slow fallbacks (damped
+    // mixing, continuation in γ) at the requested one.
+    let variants = [(1.0, 1.0), (1.25, 1.0), (0.8, 1.2)];
+    let mut first_err = None;
+    for (i, &(fs, fp)) in variants.iter().enumerate() {
+        let a = AdhesionAccuracy {
+            steps_per_ln_q: acc.steps_per_ln_q * fs,
+            points_per_width: acc.points_per_width * fp,
+            ..*acc
+        };
+        match solve_at(scene, &a, warm, cancel, false) {
+            Ok(mut sol) => {
+                if i > 0 {
+                    sol.resolution_used = Some((a.steps_per_ln_q, a.points_per_width));
+                }
+                return Ok(sol);
+            }
+            Err(Error::NotConverged { solver, reason }) => {
+                first_err.get_or_insert(Error::NotConverged { solver, reason });
+            }
+            Err(e) => return Err(e),
+        }
+    }
+    match solve_at(scene, acc, warm, cancel, true) {
+        Ok(sol) => Ok(sol),
+        Err(Error::NotConverged { .. }) => Err(first_err.unwrap_or(Error::NotConverged {
+            solver: "adhesive fixed point".into(),
+            reason: "no attempt converged".into(),
+        })),
+        Err(e) => Err(e),
+    }
+}
+
+fn solve_at(
+    scene: &Scene,
+    acc: &AdhesionAccuracy,
+    warm: Option<&AdhesiveSolution>,
+    cancel: Option<&AtomicBool>,
+    fallbacks: bool,
+) -> Result<AdhesiveSolution> {
     let grid = build_grid(scene, acc.steps_per_ln_q);
     let k = grid.steps.len();
     let mut m = Marcher {
@@ -887,7 +944,7 @@ pub fn solve(
     let mut branch = "loading".to_string();
     let mut att = m.fixed_point(scene, start, 1.0, cancel)?;
     iterations += att.iterations;
-    if !att.converged {
+    if !att.converged && fallbacks {
         // damped restart from the adhesionless start
         let a2 = m.fixed_point(scene, adhesionless.clone(), 0.3, cancel)?;
         iterations += a2.iterations;
@@ -895,7 +952,7 @@ pub fn solve(
             att = a2;
         }
     }
-    if !att.converged {
+    if !att.converged && fallbacks {
         // continuation in γ_s from 0, each stage warm-started
         let mut x = adhesionless.clone();
         let mut s = scene.clone();
@@ -923,8 +980,8 @@ pub fn solve(
         return Err(Error::NotConverged {
             solver: "adhesive fixed point".into(),
             reason: format!(
-                "residual {:.2e} > tol {:.0e} after {iterations} map evaluations (Anderson, \
-                 damped restart and continuation in gamma): the loading branch may not \
+                "residual {:.2e} > tol {:.0e} after {iterations} map evaluations (Anderson at three \
+                 nearby resolutions, damped restart and continuation in gamma): the loading branch may not \
                  exist at this load, or it oscillates between states; try a nearby p*, t or gamma",
                 att.residual, acc.tol
             ),
@@ -1015,6 +1072,7 @@ pub fn solve(
         unloading_a_r,
         elastic_energy: energy,
         gamma_glo: if u_f > 0.0 { scene.gamma / u_f } else { 0.0 },
+        resolution_used: None,
     })
 }
 
