@@ -276,3 +276,22 @@ fn run_json_has_the_adhesion_fields() {
     assert_eq!(v["branch"], "adhesionless");
     assert_eq!(v["iterations"], 0);
 }
+
+#[test]
+fn sweep_across_the_thin_slab_transition() {
+    // system 2 at t·q_r = 0.15: contact jumps from ~1 % (adhesionless) to ~40 % at small load;
+    // the loading branch is followed load by load with no NaN, a_r rising and ū falling
+    let mut s = system(2, 4);
+    s.thickness_qr = 0.15;
+    let spec = asperity::sweep::SweepSpec {
+        from: 1e-4,
+        to: 0.3,
+        points: 12,
+    };
+    let sw = asperity::sweep::sweep(&s, &spec, &Options::chart(), None).unwrap();
+    for r in &sw.rows {
+        assert!(r.converged && r.a_r.is_finite() && r.mean_gap_rel.is_finite(), "{r:?}");
+    }
+    assert!(sw.rows[0].a_r > 0.3, "{:?}", sw.rows[0]);
+    assert!(sw.monotone);
+}
