@@ -257,6 +257,7 @@ pub fn process(
             }
         }
     };
+    let from_sweep = sw.as_ref().ok().and_then(|sd| interpolate_gap(sd, req.scene.pressure));
     send(Reply::Sweep {
         gen,
         key: skey,
@@ -267,6 +268,7 @@ pub fn process(
     }
     let gap = match caches.gaps.get(&pkey) {
         Some(g) => g,
+        None if from_sweep.is_some() => Ok(from_sweep.unwrap_or_default()),
         None => {
             let p = req.scene.pressure;
             let spec = SweepSpec {
@@ -291,6 +293,31 @@ pub fn process(
         result: gap,
     });
     send(Reply::Done { gen });
+}
+
+/// ū/h_rms at p* from the chart sweep's rows (cubic Lagrange in ln p* on the four nearest
+/// loads; the rows are ≤ 0.15 apart in ln p*, so the interpolation error is far below the
+/// chart accuracy), when p* lies inside the swept range: it saves a separate gap computation
+/// (a sweep from p* to full contact) on every step of p*.
+pub fn interpolate_gap(sd: &SweepData, p: f64) -> Option<f64> {
+    let n = sd.p.len();
+    if n < 4 || !(p >= sd.p[0] && p <= sd.p[n - 1]) {
+        return None;
+    }
+    let x = p.ln();
+    let i = sd.p.partition_point(|&q| q < p).clamp(2, n - 2);
+    let idx = [i - 2, i - 1, i, i + 1];
+    let mut sum = 0.0;
+    for &a in &idx {
+        let mut w = 1.0;
+        for &b in &idx {
+            if a != b {
+                w *= (x - sd.p[b].ln()) / (sd.p[a].ln() - sd.p[b].ln());
+            }
+        }
+        sum += w * sd.gap_rel[a];
+    }
+    sum.is_finite().then_some(sum)
 }
 
 /// Serves every pending request of `app` on the calling thread, feeding the replies back
