@@ -385,6 +385,24 @@ mod tests {
     use super::*;
 
     #[test]
+    fn gap_interpolation_is_exact_for_cubics_in_ln_p() {
+        let p: Vec<f64> = (0..20).map(|i| 1e-3 * 1.4f64.powi(i)).collect();
+        let f = |x: f64| 0.3 - 0.2 * x + 0.01 * x * x * x;
+        let sd = SweepData {
+            gap_rel: p.iter().map(|q| f(q.ln())).collect(),
+            a_r: vec![0.0; 20],
+            mean_contact_stress: vec![0.0; 20],
+            p: p.clone(),
+        };
+        for x in [1.1e-3, 5e-3, 0.02, p[19]] {
+            let got = interpolate_gap(&sd, x).unwrap();
+            assert!((got - f(x.ln())).abs() < 1e-12, "{x}: {got}");
+        }
+        assert_eq!(interpolate_gap(&sd, 1e-4), None);
+        assert_eq!(interpolate_gap(&sd, 1.0), None);
+    }
+
+    #[test]
     fn lru_evicts_least_recent() {
         let mut c: Lru<i32> = Lru::new(2);
         let k = |s: &str| (s.to_string(), vec![]);
