@@ -39,6 +39,8 @@ pub enum Error {
     Unsupported(String),
     /// I/O failure (file not found, cannot write), with the path.
     Io(String),
+    /// The computation was cancelled by the caller.
+    Cancelled,
 }
 
 impl Error {
@@ -65,6 +67,7 @@ impl fmt::Display for Error {
             Error::NotConverged { solver, reason } => write!(f, "{solver} did not converge: {reason}"),
             Error::Unsupported(what) => write!(f, "not supported: {what}"),
             Error::Io(what) => write!(f, "i/o error: {what}"),
+            Error::Cancelled => write!(f, "cancelled"),
         }
     }
 }

@@ -12,6 +12,7 @@
 //! - [`energy`]: elastic energy U [S-11, S-14].
 //! - [`scene`], [`preset`]: inputs and preset systems.
 //! - [`engine`]: one evaluation of a scene, whatever it needs (the front ends call this).
+//! - [`surface`], [`gfmd`]: seeded random height maps; the GFMD brute-force reference solver.
 //! - [`benchmark`]: speed-against-error ladders (`asperity bench`).
 //! - [`cli`]: the headless commands.
 
@@ -21,6 +22,7 @@ pub mod energy;
 pub mod engine;
 pub mod error;
 pub mod fft2;
+pub mod gfmd;
 pub mod mirror;
 pub mod model;
 pub mod ode;
@@ -29,6 +31,7 @@ pub mod preset;
 pub mod scene;
 pub mod slab;
 pub mod spectrum;
+pub mod surface;
 pub mod tolerances;
 
 pub use error::{Error, Result};

@@ -5,6 +5,7 @@
 
 use crate::engine;
 pub mod bench;
+pub mod gfmd;
 
 use crate::error::{Error, Result};
 use crate::model::Model;
@@ -40,6 +41,8 @@ pub enum Command {
     Presets,
     /// Speed against error for every solver; the full run writes BENCHMARKS.md.
     Bench(bench::BenchArgs),
+    /// Brute-force GFMD run on a reduced grid, compared with the theory on the same surface.
+    Gfmd(gfmd::GfmdArgs),
 }
 
 /// Output format of `run`.
@@ -354,6 +357,7 @@ pub fn main() -> i32 {
             Ok(())
         }
         Some(Command::Bench(args)) => bench::run(&args),
+        Some(Command::Gfmd(args)) => gfmd::run(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let out = evaluate(&preset.name, &scene, &args)?;
             match args.format {
