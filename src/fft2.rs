@@ -119,7 +119,7 @@ impl RealFft2 {
     /// Weight of stored mode kx in a sum over the full spectrum (1 for kx = 0 and, for even
     /// nx, kx = nx/2; 2 otherwise: the conjugate mode is not stored).
     pub fn weight(&self, kx: usize) -> f64 {
-        if kx == 0 || (self.nx % 2 == 0 && kx == self.nx / 2) {
+        if kx == 0 || (self.nx.is_multiple_of(2) && kx == self.nx / 2) {
             1.0
         } else {
             2.0
@@ -130,7 +130,10 @@ impl RealFft2 {
     /// (half spectrum, transposed layout).
     pub fn forward(&mut self, input: &[f64], spec: &mut [Complex64]) {
         let (nx, ny, nh) = (self.nx, self.ny, self.nh);
-        assert!(input.len() == nx * ny && spec.len() == nh * ny, "RealFft2::forward: sizes");
+        assert!(
+            input.len() == nx * ny && spec.len() == nh * ny,
+            "RealFft2::forward: sizes"
+        );
         self.real_buf.copy_from_slice(input);
         let r2c = &self.r2c;
         let rows = |(rin, rout): (&mut [f64], &mut [Complex64])| {
@@ -148,7 +151,10 @@ impl RealFft2 {
     /// `spec` is used as scratch (its contents are destroyed).
     pub fn inverse(&mut self, spec: &mut [Complex64], out: &mut [f64]) {
         let (nx, ny, nh) = (self.nx, self.ny, self.nh);
-        assert!(out.len() == nx * ny && spec.len() == nh * ny, "RealFft2::inverse: sizes");
+        assert!(
+            out.len() == nx * ny && spec.len() == nh * ny,
+            "RealFft2::inverse: sizes"
+        );
         process_rows(self.parallel, &*self.col_inv, spec, ny);
         transpose_into(spec, &mut self.row_buf, nh, ny, self.parallel);
         let c2r = &self.c2r;

@@ -153,7 +153,13 @@ impl Surface {
     /// Parses the text format; `source` names the file in errors; `size` is the side L (m)
     /// of the (square) map.
     pub fn parse(text: &str, source: &str, size: f64) -> Result<Surface> {
-        let bad = |line: usize, what: String| Error::field(format!("--surface {source}:{line}"), what, "a square matrix of finite heights (m), one row per line");
+        let bad = |line: usize, what: String| {
+            Error::field(
+                format!("--surface {source}:{line}"),
+                what,
+                "a square matrix of finite heights (m), one row per line",
+            )
+        };
         let mut rows: Vec<Vec<f64>> = Vec::new();
         let mut first_line = 0;
         for (i, line) in text.lines().enumerate() {
@@ -163,9 +169,7 @@ impl Surface {
             }
             let mut row = Vec::new();
             for tok in t.split_whitespace() {
-                let v: f64 = tok
-                    .parse()
-                    .map_err(|_| bad(i + 1, format!("'{tok}' (not a number)")))?;
+                let v: f64 = tok.parse().map_err(|_| bad(i + 1, format!("'{tok}' (not a number)")))?;
                 if !v.is_finite() {
                     return Err(bad(i + 1, format!("'{tok}' (not finite)")));
                 }
@@ -195,7 +199,11 @@ impl Surface {
             ));
         }
         if nx < 4 {
-            return Err(Error::field(format!("--surface {source}"), format!("{nx} x {nx}"), "N >= 4"));
+            return Err(Error::field(
+                format!("--surface {source}"),
+                format!("{nx} x {nx}"),
+                "N >= 4",
+            ));
         }
         if !(size.is_finite() && size > 0.0) {
             return Err(Error::field("--size", size, "a finite length > 0 (m)"));
@@ -300,7 +308,11 @@ pub fn generate(spec: &SelfAffine, n: usize, seed: u64) -> Result<Surface> {
         }
     }
     if g2 == 0.0 {
-        return Err(Error::field("--grid", n, "a grid resolving at least one mode below q_s"));
+        return Err(Error::field(
+            "--grid",
+            n,
+            "a grid resolving at least one mode below q_s",
+        ));
     }
     let target = spec.moment(2).sqrt();
     let scale = target / g2.sqrt();

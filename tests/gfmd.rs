@@ -51,7 +51,11 @@ fn full_contact_case(thickness_times_q: f64) -> (f64, f64) {
     let (n, da, k, amp) = (32, 1e-8, 2, 1e-9);
     let s = sinusoid(n, n, da, k, amp);
     let q = 2.0 * PI * k as f64 / (n as f64 * da);
-    let t = if thickness_times_q.is_infinite() { f64::INFINITY } else { thickness_times_q / q };
+    let t = if thickness_times_q.is_infinite() {
+        f64::INFINITY
+    } else {
+        thickness_times_q / q
+    };
     let phi = 0.5 * q * E * slab_factor(q * t);
     let p0 = 3.0 * phi * amp;
     let pr = problem(&s, t, p0);
@@ -101,8 +105,15 @@ fn johnson_sinusoid_partial_contact_width() {
         let width = sol.on_wall[..nx].iter().filter(|&&c| c).count() as f64 * da;
         let c_exact = lambda / PI * ratio.sqrt().asin();
         let rel = width / (2.0 * c_exact) - 1.0;
-        eprintln!("Johnson p/p_full = {ratio}: 2c = {width:e} vs {:e}, error {rel:+.2e}, {} steps", 2.0 * c_exact, sol.iterations);
-        assert!(rel.abs() < GFMD_JOHNSON_REL, "p/p_full = {ratio}: relative width error {rel:e}");
+        eprintln!(
+            "Johnson p/p_full = {ratio}: 2c = {width:e} vs {:e}, error {rel:+.2e}, {} steps",
+            2.0 * c_exact,
+            sol.iterations
+        );
+        assert!(
+            rel.abs() < GFMD_JOHNSON_REL,
+            "p/p_full = {ratio}: relative width error {rel:e}"
+        );
         // contact is one contiguous patch around the crest x = 0
         assert!(sol.on_wall[0]);
         assert!(!sol.on_wall[nx / 2]);
@@ -165,11 +176,12 @@ fn adhesionless_self_affine_contact_at_small_load() {
 fn converged_state_satisfies_the_stated_residual_independently() {
     // recompute the force balance from the returned fields: ⟨σ⟩ = p₀, and nodes off the wall
     // carry (almost) no stress
-    let spec = SMALL.spectrum(&match Preset::resolve("system-1").unwrap().spectrum().unwrap() {
-        Spectrum::SelfAffine(s) => s,
-        _ => unreachable!(),
-    })
-    .unwrap();
+    let spec = SMALL
+        .spectrum(&match Preset::resolve("system-1").unwrap().spectrum().unwrap() {
+            Spectrum::SelfAffine(s) => s,
+            _ => unreachable!(),
+        })
+        .unwrap();
     let s = surface::generate(&spec, 64, 3).unwrap();
     let p0 = 0.02 * E * s.rms_gradient();
     let pr = problem(&s, f64::INFINITY, p0);
@@ -209,7 +221,13 @@ fn seeded_runs_are_bit_for_bit_reproducible() {
 }
 
 fn assert_finite(r: &gfmd::GfmdResult) {
-    for x in [r.a_r, r.mean_contact_stress, r.contact_stress_variance, r.mean_gap, r.residual] {
+    for x in [
+        r.a_r,
+        r.mean_contact_stress,
+        r.contact_stress_variance,
+        r.mean_gap,
+        r.residual,
+    ] {
         assert!(x.is_finite(), "{r:?}");
     }
     assert!(r.pr.density.iter().all(|x| x.is_finite()));
@@ -228,7 +246,11 @@ fn hard_case_tiny_load_gives_a_handful_of_contacts() {
     let setup = system1_setup(tiny(), 1e-4);
     let r = gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap();
     assert_finite(&r);
-    assert!(r.contact_nodes >= 1 && r.contact_nodes < 20, "{} contact nodes", r.contact_nodes);
+    assert!(
+        r.contact_nodes >= 1 && r.contact_nodes < 20,
+        "{} contact nodes",
+        r.contact_nodes
+    );
     assert!((r.mean_contact_stress * r.a_r / 1e-4 - 1.0).abs() < GFMD_FORCE_BALANCE_REL);
 }
 
@@ -321,10 +343,15 @@ fn cancellation_and_iteration_limit_are_reported() {
     assert!(e.to_string().contains("max iterations"), "{e}");
     // progress is reported
     let mut calls = 0;
-    gfmd::run(&setup, &GfmdOptions::default(), &mut |p| {
-        calls += 1;
-        assert!(p.residual.is_finite());
-    }, &no_cancel())
+    gfmd::run(
+        &setup,
+        &GfmdOptions::default(),
+        &mut |p| {
+            calls += 1;
+            assert!(p.residual.is_finite());
+        },
+        &no_cancel(),
+    )
     .unwrap();
     assert!(calls >= 2);
 }
@@ -345,8 +372,13 @@ fn bad_inputs_name_the_field() {
     let e = SMALL.with_grid(8).unwrap_err();
     assert!(e.to_string().contains("--grid"), "{e}");
     let flat = Surface::new(8, 8, 1e-8, vec![0.0; 64]).unwrap();
-    let e = gfmd::solve(&problem(&flat, f64::INFINITY, 1.0), &GfmdOptions::default(), &mut |_| {}, &no_cancel())
-        .unwrap_err();
+    let e = gfmd::solve(
+        &problem(&flat, f64::INFINITY, 1.0),
+        &GfmdOptions::default(),
+        &mut |_| {},
+        &no_cancel(),
+    )
+    .unwrap_err();
     assert!(e.to_string().contains("surface"), "{e}");
 }
 
@@ -396,7 +428,10 @@ fn generated_surface_is_real_and_has_the_spectrum_shape() {
             let ratio = m * area / (2.0 * PI).powi(2) / sp.psd(q);
             match scale {
                 None => scale = Some(ratio),
-                Some(s0) => assert!((ratio / s0 - 1.0).abs() < SURFACE_SHAPE_REL, "({i},{j}): {ratio} vs {s0}"),
+                Some(s0) => assert!(
+                    (ratio / s0 - 1.0).abs() < SURFACE_SHAPE_REL,
+                    "({i},{j}): {ratio} vs {s0}"
+                ),
             }
         }
     }
@@ -419,9 +454,13 @@ fn generator_is_seeded_and_checks_resolution() {
 
 #[test]
 fn height_map_files_are_validated() {
-    let e = Surface::parse("1 2 3\n4 5\n7 8 9\n", "m.txt", 1e-6).unwrap_err().to_string();
+    let e = Surface::parse("1 2 3\n4 5\n7 8 9\n", "m.txt", 1e-6)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("m.txt:2"), "{e}");
-    let e = Surface::parse("1 2 3 4\n4 5 6 7\n", "m.txt", 1e-6).unwrap_err().to_string();
+    let e = Surface::parse("1 2 3 4\n4 5 6 7\n", "m.txt", 1e-6)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("square"), "{e}");
     let e = Surface::parse("1 2 3 4\n4 NaN 6 7\n1 2 3 4\n1 2 3 4\n", "m.txt", 1e-6)
         .unwrap_err()
@@ -429,7 +468,9 @@ fn height_map_files_are_validated() {
     assert!(e.contains("m.txt:2") && e.contains("NaN"), "{e}");
     let e = Surface::parse("1 2 x 4\n", "m.txt", 1e-6).unwrap_err().to_string();
     assert!(e.contains("m.txt:1"), "{e}");
-    let e = Surface::parse("# only a comment\n", "m.txt", 1e-6).unwrap_err().to_string();
+    let e = Surface::parse("# only a comment\n", "m.txt", 1e-6)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("empty"), "{e}");
     let ok = "# c\n1 2 3 4\n\n4 5 6 7\n1 2 3 4\n1 2 3 4\n";
     let s = Surface::parse(ok, "m.txt", 4e-6).unwrap();
@@ -437,7 +478,9 @@ fn height_map_files_are_validated() {
     assert!((s.spacing - 1e-6).abs() < 1e-20);
     let e = Surface::parse(ok, "m.txt", -1.0).unwrap_err().to_string();
     assert!(e.contains("--size"), "{e}");
-    let e = Surface::load(std::path::Path::new("/nonexistent/map.txt"), 1e-6).unwrap_err().to_string();
+    let e = Surface::load(std::path::Path::new("/nonexistent/map.txt"), 1e-6)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("/nonexistent/map.txt"), "{e}");
 }
 
@@ -463,7 +506,15 @@ fn cli_gfmd_json_table_surface_files_and_errors() {
     let map = dir.join("map.txt");
     let map_s = map.to_str().unwrap();
     let (code, out, err) = asperity(&[
-        "gfmd", "--preset", "system-1", "--grid", "64", "--seed", "3", "--save-surface", map_s,
+        "gfmd",
+        "--preset",
+        "system-1",
+        "--grid",
+        "64",
+        "--seed",
+        "3",
+        "--save-surface",
+        map_s,
     ]);
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
@@ -510,7 +561,10 @@ fn cli_gfmd_json_table_surface_files_and_errors() {
         (vec!["gfmd", "--grid", "10"], "--grid"),
         (vec!["gfmd", "--grid", "32", "--tolerance", "0"], "--tolerance"),
         (vec!["gfmd", "--grid", "32", "--pressure", "-0.1"], "--pressure"),
-        (vec!["gfmd", "--surface", "/nonexistent/x.txt", "--size", "1e-6"], "/nonexistent/x.txt"),
+        (
+            vec!["gfmd", "--surface", "/nonexistent/x.txt", "--size", "1e-6"],
+            "/nonexistent/x.txt",
+        ),
     ] {
         let (code, _, err) = asperity(&args);
         assert_eq!(code, 2, "{args:?}: {err}");

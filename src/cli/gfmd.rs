@@ -137,7 +137,13 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
 fn table(o: &GfmdResult) -> String {
     let mut t = String::new();
     let mut line = |k: &str, v: String| t.push_str(&format!("{k:<28}{v}\n"));
-    line("grid", format!("{0} x {0} (spacing {1:.4e} m, L = {2:.4e} m)", o.grid, o.spacing_m, o.system_size_m));
+    line(
+        "grid",
+        format!(
+            "{0} x {0} (spacing {1:.4e} m, L = {2:.4e} m)",
+            o.grid, o.spacing_m, o.system_size_m
+        ),
+    );
     line("seed", o.seed.map_or("(loaded map)".into(), |s| s.to_string()));
     line("p*", format!("{:.6e}  ({:.4e} Pa)", o.pressure, o.pressure_pa));
     line(
@@ -159,12 +165,18 @@ fn table(o: &GfmdResult) -> String {
         "contact_stress_variance*",
         both(o.contact_stress_variance, th.map(|t| t.contact_stress_variance)),
     );
-    line("mean_gap", format!("{:.6e} m (u/h_rms = {:.6})", o.mean_gap, o.mean_gap_rel));
+    line(
+        "mean_gap",
+        format!("{:.6e} m (u/h_rms = {:.6})", o.mean_gap, o.mean_gap_rel),
+    );
     if let Some(e) = &o.theory_error {
         line("theory", format!("unavailable: {e}"));
     }
     line("iterations", o.iterations.to_string());
-    line("residual", format!("{:.2e} (tolerance {:.0e})", o.residual, o.tolerance));
+    line(
+        "residual",
+        format!("{:.2e} (tolerance {:.0e})", o.residual, o.tolerance),
+    );
     line("elapsed_s", format!("{:.3}", o.elapsed_s));
     t.trim_end().to_string()
 }
