@@ -711,8 +711,8 @@ pub struct GfmdResult {
     pub system_size_m: f64,
     /// Δa (m).
     pub spacing_m: f64,
-    /// Reduced grid geometry.
-    pub grid_spec: GridSpec,
+    /// Reduced grid geometry of a generated map (null for a loaded map).
+    pub grid_spec: Option<GridSpec>,
     /// ḡ of the map.
     pub rms_gradient: f64,
     /// h_rms of the map (m).
@@ -804,7 +804,7 @@ pub fn run(
         ),
         Err(e) => (None, Some(e.to_string())),
     };
-    let grid_spec = setup.grid;
+    let grid_spec = setup.surface.is_none().then_some(setup.grid);
     let theory_elapsed_s = t_theory.elapsed().as_secs_f64();
     Ok(GfmdResult {
         a_r: m.a_r,
@@ -842,4 +842,57 @@ pub fn run(
         theory_error,
         surface: Some(surf),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::preset::Preset;
+
+    #[test]
+    fn preset_grid_and_its_reduced_spectrum() {
+        let p = Preset::resolve("system-1").unwrap();
+        let g = GridSpec::from_preset(p.gfmd.as_ref().unwrap());
+        assert_eq!(g.n(), 512);
+        assert_eq!(p.gfmd_grid(), Some(512));
+        let full = match p.spectrum().unwrap() {
+            Spectrum::SelfAffine(s) => s,
+            _ => unreachable!(),
+        };
+        let r = g.spectrum(&full).unwrap();
+        assert_eq!(r.lambda_s, full.lambda_s);
+        assert!((r.lambda_r / r.lambda_s - 32.0).abs() < 1e-12);
+        assert!((r.system_size / r.lambda_r - 2.0).abs() < 1e-12);
+        assert!((Spectrum::SelfAffine(r).rms_gradient() - 1.0).abs() < 1e-12);
+        // --grid keeps L/λ_r and λ_s/Δa
+        let h = g.with_grid(256).unwrap();
+        assert_eq!(h.n(), 256);
+        assert!((h.bandwidth - 16.0).abs() < 1e-12);
+        assert!(g.with_grid(16).is_err());
+    }
+
+    #[test]
+    fn options_are_validated() {
+        assert!(GfmdOptions::default().validate().is_ok());
+        for o in [
+            GfmdOptions {
+                tolerance: 0.0,
+                ..GfmdOptions::default()
+            },
+            GfmdOptions {
+                max_iterations: 0,
+                ..GfmdOptions::default()
+            },
+            GfmdOptions {
+                pr_bins: 0,
+                ..GfmdOptions::default()
+            },
+            GfmdOptions {
+                contact_gap: f64::NAN,
+                ..GfmdOptions::default()
+            },
+        ] {
+            assert!(matches!(o.validate(), Err(Error::InvalidField { .. })));
+        }
+    }
 }

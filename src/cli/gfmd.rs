@@ -34,7 +34,7 @@ pub struct GfmdArgs {
     #[arg(long, allow_negative_numbers = true)]
     pub pressure: Option<f64>,
     /// Grid side N (default: the preset's [gfmd] grid); keeps L/lambda_r and lambda_s/da.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, conflicts_with = "surface")]
     pub grid: Option<i64>,
     /// Seed of the random surface.
     #[arg(long, default_value_t = 1)]
