@@ -124,6 +124,48 @@ fn johnson_sinusoid_partial_contact_width() {
     assert!(sol.on_wall.iter().all(|&c| c));
 }
 
+/// Johnson's pressure profile p(x) = (2p̄/S²) cos(πx/λ) √(S² − sin²(πx/λ)), S² = p̄/p_full:
+/// (p/cos)² is linear in sin²(πx/λ). A least-squares fit over the inner contact nodes gives
+/// the half-width c (intercept/slope) and the amplitude below the grid resolution.
+#[test]
+fn johnson_sinusoid_pressure_profile_at_128_points_per_wavelength() {
+    let (nx, ny, da, amp) = (128, 2, 1e-8, 1e-8);
+    let s = sinusoid(nx, ny, da, 1, amp);
+    let lambda = nx as f64 * da;
+    let p_full = PI * E * amp / lambda;
+    for ratio in [0.1, 0.3, 0.6, 0.9] {
+        let pr = problem(&s, f64::INFINITY, ratio * p_full);
+        let sol = gfmd::solve(&pr, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap();
+        let (mut sx, mut sy, mut sxx, mut sxy, mut m) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        for i in 0..nx {
+            let x = if i <= nx / 2 { i as f64 } else { i as f64 - nx as f64 } * da;
+            let s2 = (PI * x / lambda).sin().powi(2);
+            // inner nodes only: the two nodes at each edge carry the O(Δa) edge error
+            if sol.on_wall[i] && s2 < 0.8 * ratio {
+                let y = (sol.stress[i] / (PI * x / lambda).cos()).powi(2);
+                sx += s2;
+                sy += y;
+                sxx += s2 * s2;
+                sxy += s2 * y;
+                m += 1.0;
+            }
+        }
+        let slope = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+        let intercept = (sy - slope * sx) / m;
+        let c_fit = lambda / PI * (-intercept / slope).sqrt().asin();
+        let c_exact = lambda / PI * ratio.sqrt().asin();
+        let amp_fit = (-slope).sqrt();
+        let amp_exact = 2.0 * p_full; // 2p̄/S² with S² = p̄/p_full
+        eprintln!(
+            "Johnson λ/Δa = 128, p/p_full = {ratio}: c error {:+.2e}, amplitude error {:+.2e}",
+            c_fit / c_exact - 1.0,
+            amp_fit / amp_exact - 1.0
+        );
+        assert!((c_fit / c_exact - 1.0).abs() < GFMD_JOHNSON_REL);
+        assert!((amp_fit / amp_exact - 1.0).abs() < GFMD_JOHNSON_REL);
+    }
+}
+
 fn system1_setup(n_spec: GridSpec, pressure: f64) -> GfmdSetup {
     let preset = Preset::resolve("system-1").unwrap();
     let mut scene = preset.scene().unwrap();

@@ -124,6 +124,13 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
         eprintln!();
     }
     let out = result?;
+    if out.adhesion_resolution > 0.25 {
+        eprintln!(
+            "asperity gfmd: note: (gamma/E*)*da/rho^2 = {:.3} > 0.25: the attraction is under-resolved on this grid \
+             (physics.md §6); raise points_per_short_wavelength in the preset [gfmd] table",
+            out.adhesion_resolution
+        );
+    }
     if let (Some(path), Some(s)) = (&args.save_surface, &out.surface) {
         s.save(path)?;
     }
