@@ -391,7 +391,7 @@ pub fn solve(
         for ky in 0..ny {
             let q = wave_number_sq(kx, ky, nx, ny, da).sqrt();
             let p = 0.5 * q * da * slab_factor_at(q, problem.thickness);
-            phi[kx * ny + ky] = p;
+            phi[ky * nh + kx] = p;
             phi_max = phi_max.max(p);
         }
     }

@@ -133,7 +133,7 @@ impl Surface {
         for kx in 0..plan.nh() {
             for ky in 0..self.ny {
                 let q2 = wave_number_sq(kx, ky, self.nx, self.ny, self.spacing);
-                s += plan.weight(kx) * q2 * (spec[kx * self.ny + ky] * norm).norm_sqr();
+                s += plan.weight(kx) * q2 * (spec[ky * plan.nh() + kx] * norm).norm_sqr();
             }
         }
         s.sqrt()
