@@ -49,7 +49,7 @@ pub struct GfmdArgs {
     #[arg(long)]
     pub save_surface: Option<PathBuf>,
     /// Relative force residual to reach.
-    #[arg(long, default_value_t = GfmdOptions::default().tolerance)]
+    #[arg(long, default_value = "1e-8")]
     pub tolerance: f64,
     /// Largest number of FIRE steps.
     #[arg(long, default_value_t = GfmdOptions::default().max_iterations)]
