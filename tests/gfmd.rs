@@ -578,6 +578,8 @@ fn cli_gfmd_json_table_surface_files_and_errors() {
     }
     assert_eq!(v["grid"], 64);
     assert_eq!(v["converged"], true);
+    assert_eq!(v["tolerance"].as_f64(), Some(GfmdOptions::default().tolerance));
+    assert!(v["residual"].as_f64().unwrap() <= 1e-8);
     assert!(v["pr"]["sigma"].as_array().unwrap().len() == v["pr"]["density"].as_array().unwrap().len());
     assert!(v["theory"]["a_r"].as_f64().unwrap() > 0.0);
     // the saved map, loaded back, gives the same run
