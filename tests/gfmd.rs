@@ -262,6 +262,30 @@ fn seeded_runs_are_bit_for_bit_reproducible() {
     assert_ne!(a.surface, c.surface);
 }
 
+#[test]
+fn results_do_not_depend_on_the_thread_count() {
+    // 256² runs its FFTs and node loops on rayon; partial sums are added in a fixed order
+    let grid = GridSpec {
+        system_size_ratio: 2.0,
+        bandwidth: 16.0,
+        points_per_short_wavelength: 8.0,
+    };
+    let setup = system1_setup(grid, 0.01);
+    let on = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap())
+    };
+    let (a, b) = (on(1), on(3));
+    assert_eq!(a.grid, 256);
+    assert_eq!(a.iterations, b.iterations);
+    assert_eq!(a.a_r.to_bits(), b.a_r.to_bits());
+    assert_eq!(a.mean_gap.to_bits(), b.mean_gap.to_bits());
+    assert_eq!(a.contact_stress_variance.to_bits(), b.contact_stress_variance.to_bits());
+}
+
 fn assert_finite(r: &gfmd::GfmdResult) {
     for x in [
         r.a_r,
