@@ -247,7 +247,8 @@ impl Sums {
 struct State {
     n: usize,
     plan: RealFft2,
-    phi: Vec<f64>,
+    /// φ(q)/n (half spectrum), the convolution kernel.
+    kernel: Vec<f64>,
     h: Vec<f64>,
     w: Vec<f64>,
     v: Vec<f64>,
@@ -264,12 +265,9 @@ struct State {
 impl State {
     /// Computes forces and the projected force; returns the sums over nodes.
     fn forces(&mut self) -> Sums {
-        self.plan.forward(&self.w, &mut self.spec);
-        let norm = 1.0 / self.n as f64;
-        for (c, &p) in self.spec.iter_mut().zip(&self.phi) {
-            *c *= p * norm;
-        }
-        self.plan.inverse(&mut self.spec, &mut self.conv);
+        // φ⋆w = IFFT[φ · FFT(w)/n]; `kernel` holds φ/n
+        self.plan
+            .convolve(&self.w, &self.kernel, &mut self.spec, &mut self.conv);
         let (p0, a, ir) = (self.p0, self.adh_stress, self.inv_range);
         let body = |f: &mut [f64], c: &[f64], w: &[f64], h: &[f64], v: &[f64]| -> Sums {
             let mut s = Sums::default();
@@ -408,7 +406,7 @@ pub fn solve(
     let mut st = State {
         n,
         plan,
-        phi,
+        kernel: phi.iter().map(|p| p * (1.0 / n as f64)).collect(),
         w: vec![hmax; n],
         h,
         v: vec![0.0; n],
