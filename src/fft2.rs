@@ -68,7 +68,6 @@ pub struct RealFft2 {
     c2r: std::sync::Arc<dyn realfft::ComplexToReal<f64>>,
     col_fwd: std::sync::Arc<dyn rustfft::Fft<f64>>,
     col_inv: std::sync::Arc<dyn rustfft::Fft<f64>>,
-    real_buf: Vec<f64>,
     parallel: bool,
 }
 
@@ -98,7 +97,6 @@ impl RealFft2 {
             c2r: rp.plan_fft_inverse(nx),
             col_fwd: cp.plan_fft_forward(ny),
             col_inv: cp.plan_fft_inverse(ny),
-            real_buf: vec![0.0; nx * ny],
             parallel: nx * ny >= PARALLEL_MIN_POINTS,
         }
     }
@@ -137,15 +135,7 @@ impl RealFft2 {
             input.len() == nx * ny && spec.len() == nh * ny,
             "RealFft2::forward: sizes"
         );
-        self.real_buf.copy_from_slice(input);
-        let r2c = &self.r2c;
-        let rows = |(rin, rout): (&mut [f64], &mut [Complex64])| {
-            let mut scratch = r2c.make_scratch_vec();
-            for (a, b) in rin.chunks_exact_mut(nx).zip(rout.chunks_exact_mut(nh)) {
-                r2c.process_with_scratch(a, b, &mut scratch).expect("planned sizes");
-            }
-        };
-        run_chunks(self.parallel, &mut self.real_buf, nx, spec, nh, ny, rows);
+        self.rows_forward(input, spec);
         columns(self.parallel, &*self.col_fwd, spec, nh, ny);
     }
 
@@ -172,6 +162,32 @@ impl RealFft2 {
 }
 
 impl RealFft2 {
+    /// Real-to-complex transforms of every row of `input` into `spec` (each row is copied into a
+    /// small buffer first: realfft uses its input as scratch).
+    fn rows_forward(&self, input: &[f64], spec: &mut [Complex64]) {
+        let (nx, ny, nh) = (self.nx, self.ny, self.nh);
+        let r2c = &self.r2c;
+        let rows = |(rin, rout): (&[f64], &mut [Complex64])| {
+            let mut scratch = r2c.make_scratch_vec();
+            let mut row = vec![0.0; nx];
+            for (a, b) in rin.chunks_exact(nx).zip(rout.chunks_exact_mut(nh)) {
+                row.copy_from_slice(a);
+                r2c.process_with_scratch(&mut row, b, &mut scratch)
+                    .expect("planned sizes");
+            }
+        };
+        if self.parallel {
+            use rayon::prelude::*;
+            let per = ny.div_ceil(rayon::current_num_threads().max(1) * 4).max(1);
+            input
+                .par_chunks(per * nx)
+                .zip(spec.par_chunks_mut(per * nh))
+                .for_each(rows);
+        } else {
+            rows((input, spec));
+        }
+    }
+
     /// Periodic convolution with a real, even-in-k kernel given in Fourier space:
     /// `out = inverse(kernel · forward(input))` (unnormalised: include 1/(nx·ny) in the
     /// kernel). `kernel` has the half-spectrum layout, `spec` is scratch of
@@ -183,15 +199,7 @@ impl RealFft2 {
             input.len() == nx * ny && out.len() == nx * ny && spec.len() == nh * ny && kernel.len() == nh * ny,
             "RealFft2::convolve: sizes"
         );
-        self.real_buf.copy_from_slice(input);
-        let r2c = &self.r2c;
-        let rows = |(rin, rout): (&mut [f64], &mut [Complex64])| {
-            let mut scratch = r2c.make_scratch_vec();
-            for (a, b) in rin.chunks_exact_mut(nx).zip(rout.chunks_exact_mut(nh)) {
-                r2c.process_with_scratch(a, b, &mut scratch).expect("planned sizes");
-            }
-        };
-        run_chunks(self.parallel, &mut self.real_buf, nx, spec, nh, ny, rows);
+        self.rows_forward(input, spec);
         columns_with(
             self.parallel,
             &*self.col_fwd,
