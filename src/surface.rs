@@ -27,8 +27,9 @@ use rustfft::num_complex::Complex64;
 use std::f64::consts::PI;
 use std::path::Path;
 
-/// Largest grid side accepted (memory: a 16384² run needs several GiB).
-pub const MAX_GRID: usize = 16384;
+/// Largest grid side accepted. A GFMD run holds about 100 bytes per node (1024²: 100 MB), so
+/// 8192² needs about 7 GB.
+pub const MAX_GRID: usize = 8192;
 
 /// SplitMix64 (Steele, Lea & Flood 2014): a tiny, fast, well-mixed 64-bit generator; enough
 /// for random phases and fully reproducible.
