@@ -16,6 +16,7 @@
 //! - [`sweep`]: a_r, ū, σ̄_c, U over a log-spaced load range (parallel; shared U table).
 //! - [`scene`], [`preset`]: inputs and preset systems.
 //! - [`engine`]: one evaluation of a scene, whatever it needs (the front ends call this).
+//! - [`surface`], [`gfmd`]: seeded random height maps; the GFMD brute-force reference solver.
 //! - [`benchmark`]: speed-against-error ladders (`asperity bench`).
 //! - [`cli`]: the headless commands.
 //! - [`tui`]: the terminal explorer (the only module that uses ratatui).
@@ -28,6 +29,7 @@ pub mod engine;
 pub mod error;
 pub mod fft2;
 pub mod gap;
+pub mod gfmd;
 pub mod mirror;
 pub mod model;
 pub mod ode;
@@ -36,6 +38,7 @@ pub mod preset;
 pub mod scene;
 pub mod slab;
 pub mod spectrum;
+pub mod surface;
 pub mod sweep;
 pub mod tolerances;
 pub mod tui;

@@ -5,6 +5,7 @@
 
 use crate::engine;
 pub mod bench;
+pub mod gfmd;
 
 use crate::error::{Error, Result};
 use crate::model::Model;
@@ -44,6 +45,8 @@ pub enum Command {
     Bench(bench::BenchArgs),
     /// Sweep the load: one row per p* with a_r, mean gap, mean contact stress, elastic energy.
     Sweep(sweep::SweepArgs),
+    /// Brute-force GFMD run on a reduced grid, compared with the theory on the same surface.
+    Gfmd(gfmd::GfmdArgs),
 }
 
 /// Output format of `run`.
@@ -424,6 +427,7 @@ pub fn main() -> i32 {
         }
         Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::Sweep(args)) => sweep::run(&args).map(|text| emit(&text)),
+        Some(Command::Gfmd(args)) => gfmd::run(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let out = evaluate(&preset.name, &scene, &args)?;
             match args.format {
