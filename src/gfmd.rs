@@ -38,6 +38,11 @@
 //! (A mass-weighted variant, m(q) ∝ φ(q) with the same projection, stalled at a residual of
 //! order 1 on these problems, as physics.md §6 warns; it is not offered.)
 //!
+//! Start: w = max h everywhere (the flat body touches the highest summit), v = 0. Without
+//! adhesion the minimum is unique. With adhesion the energy has many local minima (contact
+//! hysteresis); the one reached is that of loading from first touch at the given p₀, and it
+//! can differ noticeably between realisations at small p*.
+//!
 //! Convergence criterion: the relative force residual
 //!
 //! ```text
