@@ -141,3 +141,43 @@ fn adhesive_view_with_a_synthetic_point() {
     let s = render(&a, 80, 24);
     assert!(!s.contains("γ_s=0"));
 }
+
+#[test]
+fn gfmd_overlay_with_a_synthetic_run() {
+    use asperity::tui::data::GfmdView;
+    use asperity::tui::worker::Reply;
+    let mut a = app("system-1");
+    key(&mut a, KeyCode::Char('g'));
+    let (id, _, _) = a.take_gfmd_request().expect("g starts a run");
+    a.on_reply(Reply::GfmdProgress {
+        id,
+        iteration: 250,
+        residual: 3e-4,
+    });
+    insta::assert_snapshot!("gfmd_running_80x24", render(&a, 80, 24));
+    // a histogram shaped like the theory, a little wider
+    let pr: Vec<(f64, f64)> = (0..60)
+        .map(|i| {
+            let s = -0.5 + 2.2 * (i as f64 + 0.5) / 60.0;
+            (s, 0.04 * (-(s - 0.3) * (s - 0.3) / 0.3).exp())
+        })
+        .collect();
+    a.on_reply(Reply::GfmdDone {
+        id,
+        result: Ok(GfmdView {
+            pressure: a.scene.pressure,
+            a_r: 0.0418,
+            mean_contact_stress: 0.2434,
+            gap_rel: 1.4,
+            pr,
+            grid: 512,
+            iterations: 475,
+            elapsed_s: 1.0,
+            theory_a_r: Some(0.0299),
+        }),
+    });
+    let screen = render(&a, 80, 24);
+    assert!(screen.contains("GFMD a_r 0.04180"), "{screen}");
+    assert!(screen.contains("▀ GFMD"), "{screen}");
+    insta::assert_snapshot!("gfmd_done_80x24", screen);
+}

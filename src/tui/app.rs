@@ -2,7 +2,7 @@
 //! unit-tested. The event loop ([`super::run`]) feeds it key events and worker replies and
 //! forwards the [`Request`] it asks for ([`App::take_request`]) to the worker.
 
-use super::data::{PointData, SweepData, ADHESION_BY_DEFAULT};
+use super::data::{GfmdView, PointData, SweepData, ADHESION_BY_DEFAULT};
 use super::keys::{self, Action};
 use super::worker::{point_key, sweep_key, Reply, Request};
 use crate::error::{Error, Result};
@@ -11,6 +11,8 @@ use crate::preset::{self, Preset};
 use crate::scene::Scene;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 
 /// An adjustable parameter (a row of the parameter panel).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -164,7 +166,49 @@ pub struct App {
     pub color: bool,
     /// Where `e` writes.
     pub export_dir: PathBuf,
+    /// The background GFMD run (started with `g`).
+    pub gfmd: GfmdState,
+    /// A GFMD run to start (taken by the event loop).
+    gfmd_request: Option<(u64, crate::gfmd::GfmdSetup, Arc<AtomicBool>)>,
+    gfmd_cancel: Option<Arc<AtomicBool>>,
+    gfmd_next: u64,
     pending: bool,
+}
+
+/// The state of the background GFMD run.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum GfmdState {
+    /// None started (or the last was cancelled).
+    #[default]
+    Idle,
+    /// Running: id, the scene it runs, FIRE steps and residual so far.
+    Running {
+        /// Run id.
+        id: u64,
+        /// The scene it runs.
+        scene: Scene,
+        /// FIRE steps so far.
+        iteration: usize,
+        /// Residual so far.
+        residual: f64,
+    },
+    /// Finished: the scene it ran and its outcome.
+    Done {
+        /// The scene it ran.
+        scene: Scene,
+        /// The result, or the error.
+        result: std::result::Result<GfmdView, String>,
+    },
+}
+
+/// Whether two scenes describe the same physical system (GFMD does not depend on the model).
+fn same_system(a: &Scene, b: &Scene) -> bool {
+    a.spectrum == b.spectrum
+        && a.modulus == b.modulus
+        && a.pressure == b.pressure
+        && a.thickness_qr.to_bits() == b.thickness_qr.to_bits()
+        && a.gamma == b.gamma
+        && a.range == b.range
 }
 
 /// The p* range of the load charts for a current p*: at least 1e-3..1, widened to whole
@@ -260,6 +304,10 @@ impl App {
             show_timing: true,
             color: true,
             export_dir: PathBuf::from("."),
+            gfmd: GfmdState::Idle,
+            gfmd_request: None,
+            gfmd_cancel: None,
+            gfmd_next: 0,
             pending: true,
         })
     }
@@ -329,12 +377,104 @@ impl App {
                     self.gap = Some(result);
                 }
             }
+            Reply::GfmdProgress {
+                id,
+                iteration,
+                residual,
+            } => {
+                if let GfmdState::Running {
+                    id: cur,
+                    iteration: it,
+                    residual: res,
+                    ..
+                } = &mut self.gfmd
+                {
+                    if *cur == id {
+                        *it = iteration;
+                        *res = residual;
+                        self.spinner = self.spinner.wrapping_add(1);
+                    }
+                }
+            }
+            Reply::GfmdDone { id, result } => {
+                if let GfmdState::Running { id: cur, scene, .. } = &self.gfmd {
+                    if *cur == id {
+                        let scene = scene.clone();
+                        self.gfmd_cancel = None;
+                        match result {
+                            Err(Error::Cancelled) => self.gfmd = GfmdState::Idle,
+                            r => {
+                                self.gfmd = GfmdState::Done {
+                                    scene,
+                                    result: r.map_err(|e| e.to_string()),
+                                }
+                            }
+                        }
+                    }
+                }
+            }
             Reply::Done { gen } => {
                 if gen == self.gen {
                     self.busy = false;
                     self.busy_since = None;
                 }
             }
+        }
+    }
+
+    /// `g`: starts a GFMD run of the current scene on the preset's reduced grid, or cancels
+    /// the running one.
+    pub fn toggle_gfmd(&mut self) {
+        if let GfmdState::Running { .. } = self.gfmd {
+            if let Some(c) = self.gfmd_cancel.take() {
+                c.store(true, Ordering::Relaxed);
+            }
+            self.gfmd = GfmdState::Idle;
+            self.gfmd_request = None;
+            self.info("GFMD cancelled");
+            return;
+        }
+        let grid = self
+            .preset
+            .gfmd
+            .as_ref()
+            .map(crate::gfmd::GridSpec::from_preset)
+            .unwrap_or(crate::gfmd::GridSpec {
+                system_size_ratio: 2.0,
+                bandwidth: 32.0,
+                points_per_short_wavelength: 8.0,
+            });
+        let setup = crate::gfmd::GfmdSetup {
+            scene: self.scene.clone(),
+            grid,
+            seed: 1,
+            surface: None,
+        };
+        self.gfmd_next += 1;
+        let id = self.gfmd_next;
+        let cancel = Arc::new(AtomicBool::new(false));
+        self.gfmd_cancel = Some(cancel.clone());
+        self.gfmd_request = Some((id, setup, cancel));
+        self.gfmd = GfmdState::Running {
+            id,
+            scene: self.scene.clone(),
+            iteration: 0,
+            residual: f64::NAN,
+        };
+        self.info(format!("GFMD started on a {0}x{0} grid (g cancels)", grid.n()));
+    }
+
+    /// The GFMD run to start, if `g` asked for one.
+    pub fn take_gfmd_request(&mut self) -> Option<(u64, crate::gfmd::GfmdSetup, Arc<AtomicBool>)> {
+        self.gfmd_request.take()
+    }
+
+    /// The finished GFMD result, when it was run on the scene shown now (the model only
+    /// matters for the theory, so it is not compared).
+    pub fn gfmd_for_scene(&self) -> Option<&GfmdView> {
+        match &self.gfmd {
+            GfmdState::Done { scene, result: Ok(v) } if same_system(scene, &self.scene) => Some(v),
+            _ => None,
         }
     }
 
@@ -440,6 +580,7 @@ impl App {
                 }
             }
             Action::Compare => self.compare = !self.compare,
+            Action::Gfmd => self.toggle_gfmd(),
             Action::Help => self.overlay = Overlay::Help,
             Action::Quit => self.quit = true,
         }
@@ -688,6 +829,55 @@ pub fn initial_scene(p: &Preset) -> Result<Scene> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn g_starts_and_cancels_a_gfmd_run() {
+        let mut a = app();
+        key(&mut a, KeyCode::Char('g'));
+        assert!(matches!(a.gfmd, GfmdState::Running { .. }));
+        let (id, setup, cancel) = a.take_gfmd_request().expect("a run to start");
+        assert_eq!(setup.scene, a.scene);
+        assert_eq!(setup.grid.n(), 512);
+        // progress of this run is shown; a stale run's is not
+        a.on_reply(Reply::GfmdProgress {
+            id,
+            iteration: 120,
+            residual: 1e-3,
+        });
+        assert!(matches!(a.gfmd, GfmdState::Running { iteration: 120, .. }));
+        a.on_reply(Reply::GfmdProgress {
+            id: id + 7,
+            iteration: 999,
+            residual: 1.0,
+        });
+        assert!(matches!(a.gfmd, GfmdState::Running { iteration: 120, .. }));
+        // g again cancels
+        key(&mut a, KeyCode::Char('g'));
+        assert!(cancel.load(Ordering::Relaxed));
+        assert_eq!(a.gfmd, GfmdState::Idle);
+        assert!(a.take_gfmd_request().is_none());
+        // a finished run is shown for its own scene only
+        key(&mut a, KeyCode::Char('g'));
+        let (id, _, _) = a.take_gfmd_request().unwrap();
+        let view = GfmdView {
+            pressure: a.scene.pressure,
+            a_r: 0.02,
+            mean_contact_stress: 0.5,
+            gap_rel: 1.5,
+            pr: vec![(0.1, 0.01), (0.2, 0.02)],
+            grid: 512,
+            iterations: 400,
+            elapsed_s: 0.5,
+            theory_a_r: Some(0.021),
+        };
+        a.on_reply(Reply::GfmdDone {
+            id,
+            result: Ok(view.clone()),
+        });
+        assert_eq!(a.gfmd_for_scene(), Some(&view));
+        key(&mut a, KeyCode::Right); // p* changes: the result belongs to another scene
+        assert_eq!(a.gfmd_for_scene(), None);
+    }
     use ratatui::crossterm::event::KeyModifiers as M;
 
     fn app() -> App {

@@ -124,6 +124,46 @@ pub fn gap_of_sweep(s: &Sweep) -> Option<f64> {
     s.rows.first().map(|r| r.mean_gap_rel)
 }
 
+/// What the explorer shows of a finished GFMD run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GfmdView {
+    /// p* of the run.
+    pub pressure: f64,
+    /// Fraction of nodes in contact.
+    pub a_r: f64,
+    /// σ̄_c*.
+    pub mean_contact_stress: f64,
+    /// ū/h_rms.
+    pub gap_rel: f64,
+    /// Pr(σ*) histogram (bin centres, density), ∫ = a_r.
+    pub pr: Vec<(f64, f64)>,
+    /// Grid side N.
+    pub grid: usize,
+    /// FIRE steps.
+    pub iterations: usize,
+    /// Wall time (s).
+    pub elapsed_s: f64,
+    /// The theory's a_r on the same map (its discrete spectrum), if it could be evaluated.
+    pub theory_a_r: Option<f64>,
+}
+
+impl GfmdView {
+    /// Copies what the views need.
+    pub fn from_result(r: &crate::gfmd::GfmdResult) -> GfmdView {
+        GfmdView {
+            pressure: r.pressure,
+            a_r: r.a_r,
+            mean_contact_stress: r.mean_contact_stress,
+            gap_rel: r.mean_gap_rel,
+            pr: r.pr.sigma.iter().copied().zip(r.pr.density.iter().copied()).collect(),
+            grid: r.grid,
+            iterations: r.iterations,
+            elapsed_s: r.elapsed_s,
+            theory_a_r: r.theory.as_ref().map(|t| t.a_r),
+        }
+    }
+}
+
 /// Whether the explorer opens a preset with the preset's γ_s (true, like the CLI) or with
 /// adhesion off (false).
 pub const ADHESION_BY_DEFAULT: bool = true;

@@ -32,6 +32,8 @@ pub enum Action {
     AreaMode,
     /// Show or hide the adhesionless comparison curve in the Pr chart.
     Compare,
+    /// Start a GFMD run of the current scene in the background, or cancel the running one.
+    Gfmd,
     /// Open or close this help.
     Help,
     /// Quit.
@@ -150,6 +152,12 @@ pub const TABLE: &[Binding] = &[
         label: "c",
         action: Action::Compare,
         help: "Pr chart: adhesionless comparison on/off",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('g'), NONE)],
+        label: "g",
+        action: Action::Gfmd,
+        help: "GFMD of this scene (background; g again cancels)",
     },
     Binding {
         keys: &[Key(KeyCode::Char('?'), NONE), Key(KeyCode::F(1), NONE)],

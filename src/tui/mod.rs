@@ -101,6 +101,7 @@ pub fn run(source: &str, preset: Preset) -> Result<()> {
     app.color = use_color();
     let (tx, rx) = channel::<Msg>();
     let reply_tx = tx.clone();
+    let reply_tx_for_gfmd = tx.clone();
     let worker = Worker::spawn(move |r| {
         let _ = reply_tx.send(Msg::Reply(r));
     })
@@ -125,6 +126,7 @@ pub fn run(source: &str, preset: Preset) -> Result<()> {
         })
         .map_err(|e| Error::Io(format!("cannot start the input thread: {e}")))?;
 
+    let gfmd_tx = reply_tx_for_gfmd;
     let mut trace = Trace::new();
     let panic_key = std::env::var("ASPERITY_PANIC_KEY").ok().and_then(|k| k.chars().next());
     loop {
@@ -135,6 +137,13 @@ pub fn run(source: &str, preset: Preset) -> Result<()> {
             }
             // a point already current stays on screen until replaced
             worker.submit(req);
+        }
+        if let Some((id, setup, cancel)) = app.take_gfmd_request() {
+            let tx = gfmd_tx.clone();
+            worker::spawn_gfmd(id, setup, cancel, move |r| {
+                let _ = tx.send(Msg::Reply(r));
+            })
+            .map_err(|e| Error::Io(format!("cannot start the GFMD thread: {e}")))?;
         }
         terminal
             .draw(|f| view::draw(f, &app))

@@ -2,7 +2,7 @@
 //! ū(p*)) and a status bar; the help and preset overlays; a "terminal too small" screen.
 //! Pure function of the [`App`]; every chart goes through [`super::plot`].
 
-use super::app::{App, AreaMode, Overlay, Param};
+use super::app::{App, AreaMode, GfmdState, Overlay, Param};
 use super::keys;
 use super::plot::{self, Scale};
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -58,6 +58,10 @@ impl Palette {
     /// Guide lines (sky blue).
     pub fn guide(&self) -> Style {
         self.fg(86, 180, 233)
+    }
+    /// GFMD results (yellow; also told apart by the ▀ marker).
+    pub fn gfmd(&self) -> Style {
+        self.fg(240, 228, 66)
     }
     /// Errors.
     pub fn error(&self) -> Style {
@@ -254,6 +258,33 @@ fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         }
     }
     row("err a_r", pt.map_or_else(dash, |p| format!("{:.1e}", p.error_estimate)));
+    match &app.gfmd {
+        GfmdState::Idle => {}
+        GfmdState::Running {
+            iteration, residual, ..
+        } => {
+            let res = if residual.is_finite() {
+                format!(", res {residual:.0e}")
+            } else {
+                String::new()
+            };
+            row(
+                "GFMD",
+                format!("{} {iteration} it{res}", SPINNER[app.spinner % SPINNER.len()]),
+            );
+        }
+        GfmdState::Done { result: Err(e), .. } => row("GFMD", format!("failed: {e}")),
+        GfmdState::Done { result: Ok(v), .. } => {
+            if app.gfmd_for_scene().is_some() {
+                row("GFMD a_r", sig(v.a_r, 4));
+                row("GFMD σ̄c", sig(v.mean_contact_stress, 4));
+                let th = v.theory_a_r.map_or("–".into(), |t| sig(t, 4));
+                row("map th.", format!("{th} (N={})", v.grid));
+            } else {
+                row("GFMD", "other scene (g reruns)".into());
+            }
+        }
+    }
     row(
         "time",
         match pt {
@@ -421,9 +452,13 @@ fn draw_pr(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     if let Some(p) = pt {
         let (xs, ys) = (Scale::Linear, Scale::Linear);
         let compare = p.adhesionless.as_ref().filter(|_| app.compare);
+        let gfmd = app.gfmd_for_scene();
         let mut runs: Vec<&[(f64, f64)]> = vec![&p.pr];
         if let Some(c) = compare {
             runs.push(c);
+        }
+        if let Some(g) = gfmd {
+            runs.push(&g.pr);
         }
         let xb = plot::bounds(&runs, true, 0.0).unwrap_or([0.0, 1.0]);
         let xb = match p.wall {
@@ -459,6 +494,16 @@ fn draw_pr(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
                 graph: GraphType::Line,
             });
             key.extend(legend("▄", "−σ_a*", pal.wall()));
+        }
+        if let Some(g) = gfmd {
+            let pts: Vec<(f64, f64)> = g.pr.iter().copied().filter(|(_, d)| *d > 0.0).collect();
+            curves.push(Curve {
+                points: plot::decimate(&pts, max_points),
+                style: pal.gfmd(),
+                marker: Marker::HalfBlock,
+                graph: GraphType::Scatter,
+            });
+            key.extend(legend("▀", "GFMD", pal.gfmd()));
         }
         add_runs(
             &mut curves,
@@ -586,6 +631,17 @@ fn draw_area(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     let mut key = legend("⣿", "theory", pal.theory());
     if !reference.is_empty() {
         key.extend(legend("•", "eq.18", pal.reference()));
+    }
+    if let Some(g) = app.gfmd_for_scene() {
+        if let (Some(x), Some(y)) = (xs.forward(g.pressure), ys.forward(y_of(g.pressure, g.a_r))) {
+            curves.push(Curve {
+                points: vec![(x, y)],
+                style: pal.gfmd(),
+                marker: Marker::HalfBlock,
+                graph: GraphType::Scatter,
+            });
+            key.extend(legend("▀", "GFMD", pal.gfmd()));
+        }
     }
     key.extend(legend("█", "p*", pal.current()));
     render_chart(f, area, title, key, &curves, xb, yb, xs, ys, None);

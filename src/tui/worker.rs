@@ -111,6 +111,22 @@ pub enum Reply {
         /// ū/h_rms, or the error.
         result: Result<f64>,
     },
+    /// Progress of the background GFMD run `id`.
+    GfmdProgress {
+        /// Run id.
+        id: u64,
+        /// FIRE steps so far.
+        iteration: usize,
+        /// Current relative force residual.
+        residual: f64,
+    },
+    /// The background GFMD run `id` finished (or failed, or was cancelled).
+    GfmdDone {
+        /// Run id.
+        id: u64,
+        /// The run, or its error.
+        result: Result<data::GfmdView>,
+    },
     /// Everything of this generation has been sent.
     Done {
         /// Generation.
@@ -320,6 +336,49 @@ pub fn interpolate_gap(sd: &SweepData, p: f64) -> Option<f64> {
     sum.is_finite().then_some(sum)
 }
 
+/// Bins of the GFMD Pr(σ*) histogram drawn in the explorer.
+pub const GFMD_CHART_BINS: usize = 80;
+
+/// Runs GFMD on its own thread (the theory worker stays responsive), reporting progress at
+/// most every 100 ms and the result at the end; `cancel` stops it between FIRE steps.
+pub fn spawn_gfmd(
+    id: u64,
+    setup: crate::gfmd::GfmdSetup,
+    cancel: Arc<AtomicBool>,
+    send: impl Fn(Reply) + Send + 'static,
+) -> std::io::Result<()> {
+    std::thread::Builder::new()
+        .name("asperity-gfmd".into())
+        .spawn(move || {
+            let mut last = std::time::Instant::now();
+            // a chart-sized histogram: ~10⁴ contact nodes on 512² give ~100 per bin
+            let opts = crate::gfmd::GfmdOptions {
+                pr_bins: GFMD_CHART_BINS,
+                ..crate::gfmd::GfmdOptions::default()
+            };
+            let result = crate::gfmd::run(
+                &setup,
+                &opts,
+                &mut |p: crate::gfmd::Progress| {
+                    if last.elapsed() >= std::time::Duration::from_millis(100) {
+                        last = std::time::Instant::now();
+                        send(Reply::GfmdProgress {
+                            id,
+                            iteration: p.iteration,
+                            residual: p.residual,
+                        });
+                    }
+                },
+                &cancel,
+            );
+            send(Reply::GfmdDone {
+                id,
+                result: result.map(|r| data::GfmdView::from_result(&r)),
+            });
+        })?;
+    Ok(())
+}
+
 /// Serves every pending request of `app` on the calling thread, feeding the replies back
 /// (no thread, no cancellation): for tests and deterministic rendering.
 pub fn compute_now(app: &mut super::app::App, caches: &mut Caches) {
@@ -450,6 +509,7 @@ mod tests {
                 Reply::Sweep { .. } => "sweep",
                 Reply::Gap { .. } => "gap",
                 Reply::Done { .. } => "done",
+                Reply::GfmdProgress { .. } | Reply::GfmdDone { .. } => "gfmd",
             })
             .collect()
     }
@@ -508,6 +568,7 @@ mod tests {
             let gen = match &r {
                 Reply::Point { gen, .. } | Reply::Sweep { gen, .. } | Reply::Gap { gen, .. } => *gen,
                 Reply::Done { gen } => *gen,
+                Reply::GfmdProgress { .. } | Reply::GfmdDone { .. } => unreachable!("the theory worker runs no GFMD"),
             };
             assert!(gen >= last_gen, "replies never go back in generation");
             last_gen = gen;
