@@ -29,6 +29,8 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     add(benchmark::adhesive(args.quick)?);
     eprintln!("asperity bench: load sweeps ...");
     add(benchmark::sweeps(args.quick)?);
+    eprintln!("asperity bench: GFMD ...");
+    add(benchmark::gfmd(args.quick)?);
     let tables = benchmark::markdown(&rep);
     super::emit(&tables);
     if !args.quick {
