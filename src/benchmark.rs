@@ -591,6 +591,27 @@ pub fn machine() -> String {
     format!("{cpu}, {cores} cores available to the process")
 }
 
+/// Why each default is what it is (the knee of each speed–error curve below).
+pub const DEFAULTS: &str = "## Defaults and why\n\n\
+- **Adhesionless theory: rtol = 1e-7.** Errors fall ~100× per 100× rtol while the time grows \
+~1.7×; at 1e-7 a_r is good to ~1e-8 in 12–30 µs, two orders below the 1e-6 target, and a tighter \
+rtol buys nothing a user can see. (The mean gap's energy route evaluates U at rtol 1e-11: it \
+differentiates U in p*.)\n\
+- **Adhesive theory: 24 steps per ln q, 10 grid points per width.** The knee: halving both \
+(12, 5) is 4× faster but its error is 2–10× larger on system 1; doubling (48, 20) costs 4× and \
+is not reliably better, because the two resolutions pull the error in opposite directions \
+(convergence is first order and not monotone). The error estimate of `run` therefore halves each \
+resolution separately. The explorer's load curves use (12, 5) (`Options::chart()`), ~2e-3 in \
+a_r and ū, well below a pixel.\n\
+- **Load sweep: grid step ≤ 0.15 in ln p\\*** (each requested point on the grid, U table shared), \
+4th-order energy route: ū to ~1e-4 against a 4× finer sweep.\n\
+- **GFMD: residual 1e-8, λ_s/Δa = 8 (presets' 512² grid).** The solver converges to 1e-8 in a few \
+hundred FIRE steps almost independently of N; the discretisation error of a_r is first order in \
+Δa (8 % at λ_s/Δa = 8 against the extrapolated limit, 4 % at 16), so a finer residual is wasted; \
+λ_s/Δa = 8 is the usual compromise of the field ([S]; physics.md §6) and runs in under a second.\n\n\
+Hard cases (end of the tables): each either converges (residual stated) or fails with a message \
+saying what did not converge; none gives NaN.\n";
+
 /// The BENCHMARKS.md document around the tables.
 pub fn document(tables: &str) -> String {
     format!(
@@ -599,8 +620,9 @@ pub fn document(tables: &str) -> String {
          fails if a default setting exceeds its error bound).\n\n\
          Machine: {}.\n\n\
          Times are medians of repeated runs; errors are relative, against a much finer solution of the \
-         same solver (and closed forms where they exist). The default of each solver is marked.\n\n{}",
+         same solver (and closed forms where they exist). The default of each solver is marked.\n\n{}\n{}",
         machine(),
+        DEFAULTS,
         tables
     )
 }
