@@ -73,14 +73,7 @@ fn sweeps(c: &mut Criterion) {
         };
         let reference = sweep::sweep(&scene, &fine, &Options::default(), None).unwrap();
         let sw = sweep::sweep(&scene, &spec, &opts, None).unwrap();
-        let (mut ea, mut eg) = (0.0f64, 0.0f64);
-        for (k, r) in sw.rows.iter().enumerate() {
-            let f = &reference.rows[4 * k];
-            ea = ea.max((r.a_r / f.a_r - 1.0).abs());
-            if f.mean_gap_rel > 1e-3 {
-                eg = eg.max((r.mean_gap_rel / f.mean_gap_rel - 1.0).abs());
-            }
-        }
+        let (ea, eg) = asperity::benchmark::sweep_errors(&sw, &reference, 4);
         eprintln!(
             "{name}: {} evaluations, max rel. error a_r {ea:.2e}, mean gap {eg:.2e} (vs 4x finer)",
             sw.evaluations

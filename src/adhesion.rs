@@ -67,7 +67,7 @@
 use crate::error::{Error, Result};
 use crate::scene::Scene;
 use crate::slab::slab_factor_at;
-use crate::spectrum::Spectrum;
+use crate::spectrum::{Spectrum, GL4};
 use rustfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 use serde::Serialize;
@@ -122,13 +122,6 @@ struct Grid {
     q: Vec<f64>,
     steps: Vec<Step>,
 }
-
-const GL4: [(f64, f64); 4] = [
-    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
-    (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-    (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-    (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
-];
 
 fn build_grid(scene: &Scene, steps_per_ln_q: f64) -> Grid {
     let t = scene.thickness_m();
@@ -355,6 +348,23 @@ struct March {
     state: State,
 }
 
+/// The variance increment of one march step: RK4 in the variance measure B for
+/// du/dB = `rate(u)` from u = 0 over the step's `b`, with [`substeps`]. The analytic and the
+/// grid stage both use it, so switching between them is continuous.
+fn variance_step(rate: &dyn Fn(f64) -> f64, b_before: f64, b: f64) -> f64 {
+    let nsub = substeps(b_before, b);
+    let hb = b / nsub as f64;
+    let mut u = 0.0;
+    for _ in 0..nsub {
+        let k1 = rate(u);
+        let k2 = rate(u + 0.5 * hb * k1);
+        let k3 = rate(u + 0.5 * hb * k2);
+        let k4 = rate(u + hb * k3);
+        u += hb * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
+    }
+    u
+}
+
 /// RK4 substeps of a march step: 8 while the accumulated variance measure is still small
 /// against the step's (a_r falls fast there), else 1. A function of the grid only, never of
 /// the iterate, so that the fixed-point map stays continuous.
@@ -512,16 +522,8 @@ impl<'a> Marcher<'a> {
                 State::Analytic => {
                     // RK4 in B for dv/dB = W^{2α}(a(v)), a(v) = erf((p + σ_a)/√(2v))
                     let d = p0 + wall;
-                    let rate = |vv: f64| model.broadening(mirror_area(d, vv));
-                    let nsub = substeps(b_cum, st.b);
-                    let hb = st.b / nsub as f64;
-                    for _ in 0..nsub {
-                        let k1 = rate(v);
-                        let k2 = rate(v + 0.5 * hb * k1);
-                        let k3 = rate(v + 0.5 * hb * k2);
-                        let k4 = rate(v + hb * k3);
-                        v += hb * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
-                    }
+                    let rate_at = |v0: f64| move |u: f64| model.broadening(mirror_area(d, v0 + u));
+                    v += variance_step(&rate_at(v), b_cum, st.b);
                     a_nodes.push(mirror_area(d, v));
                     v_nodes.push(v);
                 }
@@ -542,16 +544,7 @@ impl<'a> Marcher<'a> {
                     self.heat.load(p, *h);
                     let heat = &self.heat;
                     let rate = |u: f64| model.broadening(heat.mass(u).clamp(0.0, 1.0));
-                    let nsub = substeps(b_cum, st.b);
-                    let hb = st.b / nsub as f64;
-                    let mut dv = 0.0;
-                    for _ in 0..nsub {
-                        let k1 = rate(dv);
-                        let k2 = rate(dv + 0.5 * hb * k1);
-                        let k3 = rate(dv + 0.5 * hb * k2);
-                        let k4 = rate(dv + hb * k3);
-                        dv += hb * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
-                    }
+                    let dv = variance_step(&rate, b_cum, st.b);
                     let a = heat.mass(dv).clamp(0.0, 1.0);
                     self.heat.finish(p, dv);
                     v += dv;

@@ -330,6 +330,20 @@ pub fn adhesive(quick: bool) -> Result<Report> {
     Ok(rep)
 }
 
+/// Largest relative errors of a_r and ū (where ū > 1e-3 h_rms) of a sweep against a sweep of
+/// the same range `ratio` times finer (row k of `coarse` is row ratio·k of `fine`).
+pub fn sweep_errors(coarse: &crate::sweep::Sweep, fine: &crate::sweep::Sweep, ratio: usize) -> (f64, f64) {
+    let (mut ea, mut eg) = (0.0f64, 0.0f64);
+    for (k, r) in coarse.rows.iter().enumerate() {
+        let f = &fine.rows[ratio * k];
+        ea = ea.max(rel(r.a_r, f.a_r));
+        if f.mean_gap_rel > 1e-3 {
+            eg = eg.max(rel(r.mean_gap_rel, f.mean_gap_rel));
+        }
+    }
+    (ea, eg)
+}
+
 /// Ladder of the load sweep (a_r(p*), ū(p*)): a 64-point sweep of system 1 from p* = 1e-3 to 1
 /// at the default and the chart accuracy against a 4× finer sweep at the shared loads.
 pub fn sweeps(quick: bool) -> Result<Report> {
@@ -357,14 +371,7 @@ pub fn sweeps(quick: bool) -> Result<Report> {
         let reference = sweep::sweep(&scene, &fine, &Options::default(), None)?;
         let sw = sweep::sweep(&scene, &spec, &opts, None)?;
         let time = median_time(runs, || sweep::sweep(&scene, &spec, &opts, None).map(|s| s.rows.len()));
-        let (mut ea, mut eg) = (0.0f64, 0.0f64);
-        for (k, r) in sw.rows.iter().enumerate() {
-            let f = &reference.rows[4 * k];
-            ea = ea.max(rel(r.a_r, f.a_r));
-            if f.mean_gap_rel > 1e-3 {
-                eg = eg.max(rel(r.mean_gap_rel, f.mean_gap_rel));
-            }
-        }
+        let (ea, eg) = sweep_errors(&sw, &reference, 4);
         rep.rungs.push(Rung {
             solver: "load sweep".into(),
             case: format!("system-1 model 3 {label}, 64 loads p*=1e-3..1"),

@@ -17,15 +17,7 @@
 //! the spectrum's panels ([`crate::spectrum::Spectrum::nodes`]).
 
 use crate::scene::Scene;
-use crate::spectrum::{Mode, Spectrum, PANEL_WIDTH_LN};
-
-/// 8-point Gauss–Legendre nodes (positive half) and weights on [−1, 1].
-const GL8: [(f64, f64); 4] = [
-    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
-    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
-    (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
-    (0.960_289_856_497_536_3, 0.101_228_536_290_376_3),
-];
+use crate::spectrum::{Mode, Spectrum, GL8, PANEL_WIDTH_LN};
 
 /// Quadrature nodes (q, dm) for the energy integral (see the module docs).
 pub fn energy_nodes(spectrum: &Spectrum) -> Vec<Mode> {

@@ -55,7 +55,7 @@
 use crate::error::{Error, Result};
 use crate::scene::Scene;
 use crate::slab::slab_factor_at;
-use crate::spectrum::Spectrum;
+use crate::spectrum::{Spectrum, GL4, GL8};
 use statrs::function::erf::erf;
 use std::f64::consts::PI;
 
@@ -75,22 +75,6 @@ pub const FULL_CONTACT_ERF_ARG: f64 = 6.0;
 
 /// Minimum number of grid nodes of the energy route.
 const MIN_NODES: usize = 9;
-
-/// 4-point Gauss–Legendre nodes and weights on [−1, 1].
-const GL4: [(f64, f64); 4] = [
-    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
-    (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-    (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-    (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
-];
-
-/// 8-point Gauss–Legendre nodes (positive half) and weights on [−1, 1].
-const GL8: [(f64, f64); 4] = [
-    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
-    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
-    (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
-    (0.960_289_856_497_536_3, 0.101_228_536_290_376_3),
-];
 
 /// The reduced pressure above which a_r = 1 to within 1e-16 for every model: with W(1) = 1 the
 /// full-contact variance is v_full = ∫f²q²dm/(4ḡ²), and p*_full = 6√(2v_full). Adhesion only

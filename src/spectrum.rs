@@ -24,8 +24,16 @@ use std::f64::consts::PI;
 /// Largest width of one Gauss–Legendre panel in ln q.
 pub const PANEL_WIDTH_LN: f64 = 0.25;
 
-/// 8-point Gauss–Legendre nodes (positive half) and weights on [−1, 1].
-const GL8: [(f64, f64); 4] = [
+/// 4-point Gauss–Legendre nodes and weights on [−1, 1] (the one copy in the crate).
+pub const GL4: [(f64, f64); 4] = [
+    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+    (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+];
+
+/// 8-point Gauss–Legendre nodes (positive half) and weights on [−1, 1] (the one copy).
+pub const GL8: [(f64, f64); 4] = [
     (0.183_434_642_495_649_8, 0.362_683_783_378_362),
     (0.525_532_409_916_329, 0.313_706_645_877_887_3),
     (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
