@@ -1029,7 +1029,7 @@ fn solve_at(
             (sig, p, s_end)
         }
     };
-    let (a_r, mean, var, tensile) = match fin.state_moments(&sigma, &density, p0, fin_v, wall_end) {
+    let (_, mean, var, tensile) = match fin.state_moments(&sigma, &density, p0, fin_v, wall_end) {
         Some(t) => t,
         None => {
             return Err(Error::NotConverged {
@@ -1038,8 +1038,7 @@ fn solve_at(
             })
         }
     };
-    // a_r from the march (spectral mass); the sampled moments carry the O(h²) trapezoid error
-    let _ = a_r;
+    // a_r from the march (spectral mass); the sampled moments carry the trapezoid error
     let a_final = *fin.a_nodes.last().unwrap_or(&0.0);
     let energy = w.energy - a_final * scene.gamma;
     let u_f = scene.full_contact_energy();
