@@ -51,7 +51,7 @@
 //! # Self-consistency
 //!
 //! γ(q) needs a_r at all finer scales and a_r needs σ_a at all coarser ones: the unknown is
-//! the function a_r(q) at the step nodes, x ↦ G(x) = march(σ_a[γ[x]]). The fixed point is
+//! the function a_r(q) at the step nodes, x ↦ G(x) = march(σ_a(γ(x))). The fixed point is
 //! found with Anderson mixing (depth 6, Walker–Ni type II), started from the adhesionless
 //! solution (the loading branch), until max|G(x) − x| ≤ `tol`·a_r(q_s). If Anderson stalls,
 //! the solver restarts with damped mixing; if that fails, continuation in γ_s (from γ = 0 in

@@ -214,7 +214,7 @@ fn lagrange_deriv(i: usize, tau: f64) -> f64 {
 }
 
 /// A uniform ln p* grid from `p_lo` reaching full contact, with step ≤ [`GAP_STEP_LN`] and at
-/// least [`MIN_NODES`] nodes: (ln p0, step, nodes).
+/// least `MIN_NODES` (9) nodes: (ln p0, step, nodes).
 pub fn grid_from(scene: &Scene, p_lo: f64, max_step: f64) -> (f64, f64, usize) {
     let x0 = p_lo.ln();
     let top = full_contact_pressure(scene).ln().max(x0 + 1.0);

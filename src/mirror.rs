@@ -11,7 +11,7 @@
 //! ```
 //!
 //! The mean stress inside the contact is σ̄_c = p/a_r and its variance ⟨δσ_c²⟩ = M₂/a_r − σ̄_c²
-//! (Table 1 of [S]). The density is evaluated as 2e^{−(a²+b²)/2} sinh(ab)/(√(2π)Δ) with
+//! (Table 1 of \[S\]). The density is evaluated as 2e^{−(a²+b²)/2} sinh(ab)/(√(2π)Δ) with
 //! a = σ/Δ, b = p/Δ, which has no cancellation when p ≪ Δ.
 
 use statrs::function::erf::erf;

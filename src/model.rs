@@ -1,10 +1,10 @@
-//! The four model variants of [S] and a fully custom one.
+//! The four model variants of \[S\] and a fully custom one.
 //!
 //! Weight function [S-17]:  W(a) = 1 − c₁(1 − a²) − c₂(1 − a⁴).
 //! It weights the elastic energy of a mode, u_ela ∝ a_r·W [S-14], and the stress broadening,
-//! Δp ∝ W^α [S-15] (α = ½ in [S]'s models 1–3, ¼ in model 4). The Griffith criterion is
+//! Δp ∝ W^α [S-15] (α = ½ in \[S\]'s models 1–3, ¼ in model 4). The Griffith criterion is
 //! σ_a = k_G √(q E* f γ(q)) [S-8] with k_G = 2 for models 3, 4 ("twice the given value",
-//! [S] §2.3), optionally capped at the theoretical adhesive stress γ_s/ρ.
+//! \[S\] §2.3), optionally capped at the theoretical adhesive stress γ_s/ρ.
 //!
 //! | model | c₁ | c₂ | α | k_G | cap |
 //! |---|---|---|---|---|---|
@@ -13,7 +13,7 @@
 //! | 3 | −2/9 | 2/3 | ½ | 2 | yes |
 //! | 4 | 0.65 | 0 | ¼ | 2 | yes |
 //!
-//! Model 4 is printed in [S] as W = 0.35 + 0.65(1 − a²), contradicting "W(a_r → 0) = 0.35"
+//! Model 4 is printed in \[S\] as W = 0.35 + 0.65(1 − a²), contradicting "W(a_r → 0) = 0.35"
 //! in the next sentence; physics.md §7 erratum 2 fixes it to W = 0.35 + 0.65a² (c₁ = 0.65).
 
 use crate::error::{Error, Result};
@@ -53,7 +53,7 @@ pub struct Model {
 }
 
 impl Model {
-    /// Model 1–4 of [S] (model 4 with erratum 2 applied).
+    /// Model 1–4 of \[S\] (model 4 with erratum 2 applied).
     pub fn named(n: u8) -> Result<Model> {
         let m = match n {
             1 => (ModelKind::One, 0.0, 0.0, 0.5, 1.0, false),

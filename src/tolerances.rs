@@ -16,7 +16,7 @@ pub const QUADRATURE_REL: f64 = 1e-12;
 /// quadrature path (v = ∫f²q²dm/4ḡ², Gauss–Legendre to ~1e-14), so 1e-9 has margin.
 pub const MODEL1_ERF_REL: f64 = 1e-9;
 
-/// Table 1 of [S] (σ̄_c*, variance): the paper prints 4 decimals and its own discretisation
+/// Table 1 of \[S\] (σ̄_c*, variance): the paper prints 4 decimals and its own discretisation
 /// differs slightly; reference-values.md gives ±0.0005 as the target.
 pub const TABLE1_ABS: f64 = 5e-4;
 
@@ -121,7 +121,7 @@ pub const GFMD_JOHNSON_REL: f64 = 1e-2;
 /// 1e-3 the relative error is < 1e-6.
 pub const GFMD_FORCE_BALANCE_REL: f64 = 1e-6;
 
-/// a_r/p* at p* = 0.01 on small grids (H = 0.8): [S] and reference-values.md give ≈ 2 for
+/// a_r/p* at p* = 0.01 on small grids (H = 0.8): \[S\] and reference-values.md give ≈ 2 for
 /// large, well-resolved systems and 2.2–2.5 for small grids and narrow bandwidths; one
 /// realisation of a 128² map fluctuates by ~10 %, hence the wide bracket.
 pub const GFMD_AR_OVER_P: (f64, f64) = (1.7, 2.7);
