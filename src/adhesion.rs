@@ -60,6 +60,9 @@
 //! point is also sought from full contact (a_r ≡ 1, the unloading branch); if it converges to
 //! a different state, both are reported (hysteresis: the loading branch is the answer, the
 //! other is `unloading_a_r`).
+//!
+//! Diagnostics: with `ASPERITY_DEBUG` set, every fixed-point iteration prints its residual and
+//! a_r(q_s) to stderr.
 
 // index loops mirror the formulas (nodes j, steps k) in this numerical module
 #![allow(clippy::needless_range_loop)]
