@@ -243,6 +243,17 @@ pub fn mean_gap(scene: &Scene, opts: &crate::engine::Options) -> Result<Option<M
         return Ok(None);
     }
     scene.validate()?;
+    if scene.pressure >= full_contact_pressure(scene) {
+        // full contact: U' = 0 from here on, so ū = 0 (no grid above p*_full is needed, and
+        // none may leave the allowed pressure range)
+        let u = crate::sweep::energies(scene, &[scene.pressure], opts, None)?[0];
+        return Ok(Some(MeanGap {
+            relative: 0.0,
+            metres: 0.0,
+            error: 0.0,
+            energy_reduced: u,
+        }));
+    }
     let (x0, h, n) = grid_from(scene, scene.pressure, GAP_STEP_LN);
     let ps: Vec<f64> = (0..n).map(|i| (x0 + i as f64 * h).exp()).collect();
     let energy = crate::sweep::energies(scene, &ps, opts, None)?;

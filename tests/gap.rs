@@ -222,3 +222,18 @@ fn no_gap_for_non_positive_load() {
     s.pressure = -0.1;
     assert_eq!(gap::mean_gap(&s, &Options::default()).unwrap(), None);
 }
+
+#[test]
+fn gap_at_the_top_of_the_pressure_range_is_zero() {
+    // p* above full contact (up to the allowed maximum 1e3): ū = 0, no grid beyond the range
+    for gamma in [0.0, 0.157] {
+        let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+        s.gamma = gamma;
+        for p in [gap::full_contact_pressure(&s) * 1.01, 1e3] {
+            s.pressure = p;
+            let g = gap::mean_gap(&s, &Options::default()).unwrap().unwrap();
+            assert_eq!(g.relative, 0.0, "gamma {gamma}, p* {p}");
+            assert!(g.energy_reduced.is_finite());
+        }
+    }
+}
