@@ -867,12 +867,12 @@ pub fn solve(
 ) -> Result<AdhesiveSolution> {
     scene.validate()?;
     for (name, v, lo, hi) in [
-        ("steps_per_ln_q", acc.steps_per_ln_q, 1.0, 1e4),
-        ("points_per_width", acc.points_per_width, 2.0, 1e3),
-        ("tol", acc.tol, 1e-15, 1e-1),
+        ("--adhesion-steps", acc.steps_per_ln_q, 2.0, 1e4),
+        ("--adhesion-points", acc.points_per_width, 2.0, 1e3),
+        ("--adhesion-tol", acc.tol, 1e-15, 1e-1),
     ] {
         if !(v >= lo && v <= hi) {
-            return Err(Error::field(name, v, format!("{lo} <= {name} <= {hi}")));
+            return Err(Error::field(name, v, format!("{lo} <= value <= {hi}")));
         }
     }
     // Near a jump into contact the discrete map can stagnate for one particular resolution

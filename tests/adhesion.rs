@@ -267,6 +267,34 @@ fn run_json_has_the_adhesion_fields() {
     let sigma = v["pr"]["sigma"].as_array().unwrap();
     assert!(sigma[0].as_f64().unwrap() < 0.0, "the tensile part is included");
     assert!(v["mean_gap_rel"].as_f64().unwrap() > 0.0);
+    // the accuracy knobs: a finer run agrees within the default's error estimate
+    let est = v["error_estimate"].as_f64().unwrap();
+    let a = v["a_r"].as_f64().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args([
+            "run",
+            "--preset",
+            "system-1",
+            "--adhesion-steps",
+            "48",
+            "--adhesion-points",
+            "20",
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let fine: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(
+        (fine["a_r"].as_f64().unwrap() - a).abs() < 3.0 * est,
+        "{} vs {a} (estimate {est})",
+        fine["a_r"]
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(["run", "--preset", "system-1", "--adhesion-steps", "0.5"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--adhesion-steps"));
     // --gamma 0 takes the adhesionless path
     let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
         .args(["run", "--preset", "system-1", "--gamma", "0", "--format", "json"])

@@ -111,6 +111,15 @@ pub struct RunArgs {
     /// Relative tolerance of the variance ODE (accuracy knob).
     #[arg(long, default_value_t = Accuracy::default().rtol)]
     pub rtol: f64,
+    /// Adhesive solver: march steps per unit of ln q (accuracy knob; see BENCHMARKS.md).
+    #[arg(long, default_value_t = crate::adhesion::AdhesionAccuracy::default().steps_per_ln_q)]
+    pub adhesion_steps: f64,
+    /// Adhesive solver: grid points per standard deviation of Pr (accuracy knob).
+    #[arg(long, default_value_t = crate::adhesion::AdhesionAccuracy::default().points_per_width)]
+    pub adhesion_points: f64,
+    /// Adhesive solver: fixed-point tolerance max|G(a) - a|/a_r.
+    #[arg(long, default_value_t = crate::adhesion::AdhesionAccuracy::default().tol)]
+    pub adhesion_tol: f64,
 }
 
 /// Parses a thickness: a positive number or `inf`/`infinity`.
@@ -299,6 +308,15 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
             "2 <= sigma-points <= 1000000",
         ));
     }
+    for (name, v) in [
+        ("--adhesion-steps", args.adhesion_steps),
+        ("--adhesion-points", args.adhesion_points),
+    ] {
+        // the error estimate halves each: keep the halves valid
+        if !(4.0..=1e4).contains(&v) {
+            return Err(Error::field(name, v, "4 <= value <= 10000"));
+        }
+    }
     if let Some(s) = args.sigma_max {
         if !(s.is_finite() && s > 0.0) {
             return Err(Error::field("--sigma-max", s, "sigma* > 0"));
@@ -311,6 +329,12 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         },
         sigma_points: args.sigma_points,
         sigma_max: args.sigma_max,
+        adhesion: crate::adhesion::AdhesionAccuracy {
+            steps_per_ln_q: args.adhesion_steps,
+            points_per_width: args.adhesion_points,
+            tol: args.adhesion_tol,
+            ..crate::adhesion::AdhesionAccuracy::default()
+        },
         ..engine::Options::default()
     };
     let ev = engine::evaluate(scene, &opts)?;
