@@ -170,7 +170,15 @@ pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&At
                 let mut out: Vec<Evaluation> = Vec::with_capacity(part.len());
                 for &p in part {
                     check_cancel(cancel)?;
-                    let ev = evaluate_node(scene, p, &opts, out.last(), cancel).map_err(|e| match e {
+                    // a warm start from the wrong side of a jump can stall: retry cold (from
+                    // the adhesionless start, the loading branch) before giving up
+                    let ev = match evaluate_node(scene, p, &opts, out.last(), cancel) {
+                        Err(Error::NotConverged { .. }) if !out.is_empty() => {
+                            evaluate_node(scene, p, &opts, None, cancel)
+                        }
+                        r => r,
+                    }
+                    .map_err(|e| match e {
                         Error::NotConverged { solver, reason } => Error::NotConverged {
                             solver: format!("{solver} at p* = {p:.6e}"),
                             reason,
