@@ -941,6 +941,17 @@ fn solve_at(
     let mut att = m.fixed_point(scene, start, 1.0, cancel)?;
     iterations += att.iterations;
     if !att.converged && fallbacks {
+        // from full contact: where the adhesionless-connected state has no fixed point the
+        // iteration from below wanders (the contact jumps in); the state above is found from
+        // a ≡ 1 and reported as the upper branch
+        let up = m.fixed_point(scene, vec![1.0; k + 1], 1.0, cancel)?;
+        iterations += up.iterations;
+        if up.converged {
+            att = up;
+            branch = "upper (from full contact)".into();
+        }
+    }
+    if !att.converged && fallbacks {
         // damped restart from the adhesionless start
         let a2 = m.fixed_point(scene, adhesionless.clone(), 0.3, cancel)?;
         iterations += a2.iterations;

@@ -173,7 +173,7 @@ fn evaluate_adhesive(
     let error_estimate = if opts.adhesion_error_estimate {
         // halve each resolution in turn (their errors need not have the same sign, so one
         // combined halving can hide both): |a − a(steps/2)| + |a − a(points/2)|
-        let mut est = sol.residual * sol.a_r;
+        let mut diffs = Vec::new();
         for which in 0..2 {
             let mut coarse = opts.adhesion;
             coarse.explore_branches = false;
@@ -183,19 +183,31 @@ fn evaluate_adhesive(
                 coarse.points_per_width *= 0.5;
             }
             match adhesion::solve(scene, &coarse, Some(&sol), cancel) {
-                Ok(c) => est += (c.a_r - sol.a_r).abs(),
+                Ok(c) => diffs.push((c.a_r - sol.a_r).abs()),
                 Err(Error::Cancelled) => return Err(Error::Cancelled),
-                Err(_) => est = f64::NAN,
+                // near a jump a coarse grid may not converge although the fine one did: the
+                // estimate then rests on the other halving (doubled), or is unavailable
+                Err(_) => {}
             }
         }
-        est
+        match diffs.len() {
+            2 => sol.residual * sol.a_r + diffs[0] + diffs[1],
+            1 => sol.residual * sol.a_r + 2.0 * diffs[0],
+            _ => f64::NAN,
+        }
     } else {
         sol.residual * sol.a_r
     };
     if !error_estimate.is_finite() {
         return Err(Error::NotConverged {
             solver: "adhesive theory".into(),
-            reason: "the half-resolution check did not converge; the error cannot be estimated".into(),
+            reason: format!(
+                "the fixed point converged (a_r = {:.6}, {} branch) but neither half-resolution \
+                 check did, so its discretisation error cannot be estimated: the state sits on the \
+                 edge of a jump into contact, where the result depends on the grid; try a nearby \
+                 p*, t or gamma",
+                sol.a_r, sol.branch
+            ),
         });
     }
     let npts = opts.accuracy.resolution_points.max(2);
