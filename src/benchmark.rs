@@ -304,6 +304,8 @@ pub fn adhesive(quick: bool) -> Result<Report> {
         (0.005, 0.1),
         (0.005, 0.01),
         (1e-5, f64::INFINITY),
+        (1e-5, 0.2),
+        (1e-5, 0.15),
         (1.0, f64::INFINITY),
     ] {
         hard.push((
