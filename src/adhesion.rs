@@ -54,8 +54,10 @@
 //! the function a_r(q) at the step nodes, x ↦ G(x) = march(σ_a(γ(x))). The fixed point is
 //! found with Anderson mixing (depth 6, Walker–Ni type II), started from the adhesionless
 //! solution (the loading branch), until max|G(x) − x| ≤ `tol`·a_r(q_s). If Anderson stalls,
-//! the solver restarts with damped mixing; if that fails, continuation in γ_s (from γ = 0 in
-//! growing steps, each warm-started) is tried. A scene where none of these converges is an
+//! it is retried at two nearby resolutions; then, where plain iteration falls into a two-state
+//! cycle (near a jump into contact), from a start bisected between the cycle's states; then
+//! from full contact (reported as the upper branch); then with damped mixing; then with
+//! continuation in γ_s (from γ = 0 in growing steps, each warm-started). A scene where none of these converges is an
 //! error ([`Error::NotConverged`]) that names the residual. With `explore_branches`, the fixed
 //! point is also sought from full contact (a_r ≡ 1, the unloading branch); if it converges to
 //! a different state, both are reported (hysteresis: the loading branch is the answer, the
@@ -856,6 +858,57 @@ impl<'a> Marcher<'a> {
     }
 }
 
+impl<'a> Marcher<'a> {
+    /// A start for the fixed point where plain iteration falls into a two-state cycle (the map
+    /// overshoots: more contact at fine scales means more elastic energy, less γ, less
+    /// contact). A few plain iterations from `start` give the two states A and B of the cycle;
+    /// on the path x(λ) = A^{1−λ}B^λ the end-node residual ln G(x)_K − ln x_K changes sign, and
+    /// bisection finds where it vanishes: close to the fixed point in the unstable direction.
+    /// None when no sign change brackets it.
+    fn cycle_bisection(
+        &mut self,
+        scene: &Scene,
+        start: &[f64],
+        cancel: Option<&AtomicBool>,
+    ) -> Result<Option<Vec<f64>>> {
+        let k = start.len() - 1;
+        let mut x = start.to_vec();
+        for _ in 0..6 {
+            check_cancel(cancel)?;
+            x = self.map(scene, &x);
+        }
+        let a = x;
+        let b = self.map(scene, &a);
+        let mix = |l: f64| -> Vec<f64> {
+            a.iter()
+                .zip(&b)
+                .map(|(u, v)| ((1.0 - l) * u.max(1e-300).ln() + l * v.max(1e-300).ln()).exp())
+                .collect()
+        };
+        let side = |m: &mut Self, l: f64| -> f64 {
+            let x = mix(l);
+            let g = m.map(scene, &x);
+            g[k].max(1e-300).ln() - x[k].max(1e-300).ln()
+        };
+        let (mut lo, mut hi) = (0.0, 1.0);
+        let s_lo = side(self, lo);
+        let s_hi = side(self, hi);
+        if !(s_lo.is_finite() && s_hi.is_finite()) || (s_lo > 0.0) == (s_hi > 0.0) {
+            return Ok(None);
+        }
+        for _ in 0..40 {
+            check_cancel(cancel)?;
+            let mid = 0.5 * (lo + hi);
+            if (side(self, mid) > 0.0) == (s_lo > 0.0) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Ok(Some(mix(0.5 * (lo + hi))))
+    }
+}
+
 /// Solves the adhesive theory for a scene with γ_s > 0 (see the module docs). `warm` is a
 /// previous solution of a nearby scene (a_r at the nodes), used as the start when its grid
 /// matches. `cancel` aborts between iterations.
@@ -940,6 +993,20 @@ fn solve_at(
     let mut branch = "loading".to_string();
     let mut att = m.fixed_point(scene, start, 1.0, cancel)?;
     iterations += att.iterations;
+    if !att.converged && fallbacks {
+        // a two-state cycle: bisect between its states for a start near the fixed point
+        if let Some(x0) = m.cycle_bisection(scene, &adhesionless, cancel)? {
+            iterations += 48;
+            for beta in [0.2, 0.1, 1.0] {
+                let c = m.fixed_point(scene, x0.clone(), beta, cancel)?;
+                iterations += c.iterations;
+                if c.converged {
+                    att = c;
+                    break;
+                }
+            }
+        }
+    }
     if !att.converged && fallbacks {
         // from full contact: where the adhesionless-connected state has no fixed point the
         // iteration from below wanders (the contact jumps in); the state above is found from
