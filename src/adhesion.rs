@@ -228,7 +228,8 @@ pub struct AdhesiveSolution {
     pub iterations: usize,
     /// Final fixed-point residual max|G(a) − a| / a_r(q_s).
     pub residual: f64,
-    /// "loading" (from the adhesionless start) or "loading (continuation in gamma)".
+    /// "loading" (from the adhesionless start), "loading (continuation in gamma)", or "upper
+    /// (from full contact)" where the loading iteration could not lock on.
     pub branch: String,
     /// a_r of a distinct unloading branch (from full contact), if one was found.
     pub unloading_a_r: Option<f64>,

@@ -97,7 +97,8 @@ pub struct Evaluation {
     pub iterations: usize,
     /// Fixed-point residual max|G(a) − a|/a_r (0 without adhesion).
     pub residual: f64,
-    /// "adhesionless", "loading", or "loading (continuation in gamma)".
+    /// "adhesionless", "loading", "loading (continuation in gamma)", or "upper (from full
+    /// contact)" where the loading iteration could not lock on (a jump into contact).
     pub branch: String,
     /// a_r of a distinct unloading branch (started from full contact), if one exists.
     pub unloading_a_r: Option<f64>,

@@ -278,7 +278,7 @@ pub struct RunOutput {
     pub iterations: usize,
     /// Fixed-point residual max|G(a) − a|/a_r (0 without adhesion).
     pub residual: f64,
-    /// "adhesionless", "loading" or "loading (continuation in gamma)".
+    /// "adhesionless", "loading", "loading (continuation in gamma)" or "upper (from full contact)".
     pub branch: String,
     /// a_r of a distinct unloading branch (from full contact), null if none was found.
     pub unloading_a_r: Option<f64>,
