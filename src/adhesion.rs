@@ -94,6 +94,10 @@ pub struct AdhesionAccuracy {
     pub max_iterations: usize,
     /// Also look for an unloading branch (started from full contact).
     pub explore_branches: bool,
+    /// Use every fallback when a fixed point stalls (two nearby resolutions, damped mixing,
+    /// continuation in γ: up to seconds on a hard case). Off in sweeps, where a load that
+    /// stalls is reported as such after the cheap fallbacks (cycle bisection, full contact).
+    pub thorough: bool,
 }
 
 impl Default for AdhesionAccuracy {
@@ -106,6 +110,7 @@ impl Default for AdhesionAccuracy {
             tol: 1e-8,
             max_iterations: 200,
             explore_branches: true,
+            thorough: true,
         }
     }
 }
@@ -829,6 +834,9 @@ impl<'a> Marcher<'a> {
                     best_it = it;
                 }
                 best = (res, x.clone(), gx.clone());
+            } else if !self.acc.thorough && it >= 60 && best.0 > 0.05 {
+                // a sweep's quick attempt: 60 iterations without getting near a solution
+                break;
             } else if best.0 < 0.05 && it > best_it + STAGNATION {
                 // close to a solution, but no halving of the residual for STAGNATION
                 // iterations (the wide search before that is left alone)
@@ -934,7 +942,11 @@ pub fn solve(
     // resolutions converge to the same a_r within the discretisation error. So: Anderson at the
     // requested resolution, then at two nearby ones, and only then the slow fallbacks (damped
     // mixing, continuation in γ) at the requested one.
-    let variants = [(1.0, 1.0), (1.25, 1.0), (0.8, 1.2)];
+    let variants: &[(f64, f64)] = if acc.thorough {
+        &[(1.0, 1.0), (1.25, 1.0), (0.8, 1.2)]
+    } else {
+        &[(1.0, 1.0)]
+    };
     let mut first_err = None;
     for (i, &(fs, fp)) in variants.iter().enumerate() {
         let a = AdhesionAccuracy {
@@ -998,7 +1010,8 @@ fn solve_at(
         // a two-state cycle: bisect between its states for a start near the fixed point
         if let Some(x0) = m.cycle_bisection(scene, &adhesionless, cancel)? {
             iterations += 48;
-            for beta in [0.2, 0.1, 1.0] {
+            let betas: &[f64] = if acc.thorough { &[0.2, 0.1, 1.0] } else { &[0.2] };
+            for &beta in betas {
                 let c = m.fixed_point(scene, x0.clone(), beta, cancel)?;
                 iterations += c.iterations;
                 if c.converged {
@@ -1019,7 +1032,7 @@ fn solve_at(
             branch = "upper (from full contact)".into();
         }
     }
-    if !att.converged && fallbacks {
+    if !att.converged && fallbacks && acc.thorough {
         // damped restart from the adhesionless start
         let a2 = m.fixed_point(scene, adhesionless.clone(), 0.3, cancel)?;
         iterations += a2.iterations;
@@ -1027,7 +1040,7 @@ fn solve_at(
             att = a2;
         }
     }
-    if !att.converged && fallbacks {
+    if !att.converged && fallbacks && acc.thorough {
         // continuation in γ_s from 0, each stage warm-started
         let mut x = adhesionless.clone();
         let mut s = scene.clone();

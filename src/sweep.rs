@@ -107,9 +107,14 @@ pub struct Sweep {
     pub evaluations: usize,
     /// p* at which the contact is full (the top of the gap grid).
     pub full_contact_pressure: f64,
-    /// Whether every monotonicity the physics implies held (a_r increasing, ū decreasing);
-    /// false flags a branch change (e.g. an adhesive jump) inside the range.
+    /// Whether every monotonicity the physics implies held (a_r increasing, ū decreasing)
+    /// over the rows with numbers; false flags a branch change (e.g. an adhesive jump).
     pub monotone: bool,
+    /// Requested loads whose solver did not converge (their rows are null).
+    pub failed_loads: Vec<f64>,
+    /// What failed and what it means for the other rows; absent when every load converged.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
 }
 
 /// Options that make per-load evaluations cheap (no Pr table, no resolution record) and
@@ -121,6 +126,7 @@ fn lean(opts: &Options) -> Options {
     o.accuracy.rtol = o.accuracy.rtol.min(gap::ENERGY_RTOL);
     o.adhesion_error_estimate = false;
     o.adhesion.explore_branches = false;
+    o.adhesion.thorough = false;
     o
 }
 
@@ -146,56 +152,69 @@ fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
     }
 }
 
-/// Evaluates the scene at every p* of `ps` (ascending): in parallel without adhesion; with it
-/// in order of increasing load with continuation, one chunk of the range per thread.
-pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<Evaluation>> {
+/// One load's outcome: the evaluation, or why its solver did not converge.
+type NodeResult = std::result::Result<Evaluation, Error>;
+
+/// Evaluates the scene at every p* of `ps` (ascending), keeping a load whose solver did not
+/// converge as an `Err` and going on (cancellation and invalid input end the whole call): in
+/// parallel without adhesion; with it in order of increasing load with continuation, one chunk
+/// of the range per thread.
+pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<NodeResult>> {
     let opts = lean(opts);
+    let keep = |r: Result<Evaluation>, p: f64| -> Result<NodeResult> {
+        match r {
+            Ok(ev) => Ok(Ok(ev)),
+            Err(Error::NotConverged { solver, reason }) => Ok(Err(Error::NotConverged {
+                solver: format!("{solver} at p* = {p:.6e}"),
+                reason,
+            })),
+            Err(e) => Err(e),
+        }
+    };
     if scene.gamma == 0.0 {
-        ps.par_iter()
+        return ps
+            .par_iter()
             .map(|&p| {
                 check_cancel(cancel)?;
-                evaluate_node(scene, p, &opts, None, cancel)
-            })
-            .collect()
-    } else {
-        // continuation runs in order of increasing load; the range is cut into one chunk per
-        // worker thread (each ≥ MIN_CHUNK loads), each chunk starting cold, i.e. from the
-        // adhesionless solution: the loading branch, like the continuation itself
-        let threads = rayon::current_num_threads().clamp(1, 8);
-        let chunks = (ps.len() / MIN_CHUNK).clamp(1, threads);
-        let size = ps.len().div_ceil(chunks);
-        let parts: Vec<Result<Vec<Evaluation>>> = ps
-            .par_chunks(size.max(1))
-            .map(|part| {
-                let mut out: Vec<Evaluation> = Vec::with_capacity(part.len());
-                for &p in part {
-                    check_cancel(cancel)?;
-                    // a warm start from the wrong side of a jump can stall: retry cold (from
-                    // the adhesionless start, the loading branch) before giving up
-                    let ev = match evaluate_node(scene, p, &opts, out.last(), cancel) {
-                        Err(Error::NotConverged { .. }) if !out.is_empty() => {
-                            evaluate_node(scene, p, &opts, None, cancel)
-                        }
-                        r => r,
-                    }
-                    .map_err(|e| match e {
-                        Error::NotConverged { solver, reason } => Error::NotConverged {
-                            solver: format!("{solver} at p* = {p:.6e}"),
-                            reason,
-                        },
-                        e => e,
-                    })?;
-                    out.push(ev);
-                }
-                Ok(out)
+                keep(evaluate_node(scene, p, &opts, None, cancel), p)
             })
             .collect();
-        let mut out = Vec::with_capacity(ps.len());
-        for part in parts {
-            out.extend(part?);
-        }
-        Ok(out)
     }
+    // continuation runs in order of increasing load; the range is cut into one chunk per
+    // worker thread (each ≥ MIN_CHUNK loads), each chunk starting cold, i.e. from the
+    // adhesionless solution: the loading branch, like the continuation itself
+    let threads = rayon::current_num_threads().clamp(1, 8);
+    let chunks = (ps.len() / MIN_CHUNK).clamp(1, threads);
+    let size = ps.len().div_ceil(chunks);
+    let parts: Vec<Result<Vec<NodeResult>>> = ps
+        .par_chunks(size.max(1))
+        .map(|part| {
+            let mut out: Vec<NodeResult> = Vec::with_capacity(part.len());
+            for &p in part {
+                check_cancel(cancel)?;
+                let warm = out.iter().rev().find_map(|r| r.as_ref().ok());
+                // a warm start from the wrong side of a jump can stall: retry cold (from the
+                // adhesionless start, the loading branch) before giving up on this load
+                let r = match evaluate_node(scene, p, &opts, warm, cancel) {
+                    Err(Error::NotConverged { .. }) if warm.is_some() => evaluate_node(scene, p, &opts, None, cancel),
+                    r => r,
+                };
+                out.push(keep(r, p)?);
+            }
+            Ok(out)
+        })
+        .collect();
+    let mut out = Vec::with_capacity(ps.len());
+    for part in parts {
+        out.extend(part?);
+    }
+    Ok(out)
+}
+
+/// Evaluates the scene at every p* of `ps` (see [`node_results`]); the first load whose
+/// solver did not converge makes the whole call an error naming that p*.
+pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<Evaluation>> {
+    node_results(scene, ps, opts, cancel)?.into_iter().collect()
 }
 
 /// Fewest loads per continuation chunk of an adhesive sweep.
@@ -244,35 +263,89 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         })
         .map(|p: f64| p.min(PRESSURE_RANGE.1))
         .collect();
-    let evs = evaluations(scene, &ps, opts, cancel)?;
+    let evs = node_results(scene, &ps, opts, cancel)?;
     let unit = crate::energy::energy_unit(scene);
-    let energy: Vec<f64> = evs.iter().map(|e| e.elastic_energy / unit).collect();
-    let table = GapTable::from_energy(x0, step, energy)?;
+    // ū(p) integrates U over every load above p: below the highest failed load it is unknown
+    let last_fail = evs.iter().rposition(|e| e.is_err());
+    let first_ok = last_fail.map_or(0, |f| f + 1);
+    let table = if n - first_ok >= 4 {
+        let energy: Vec<f64> = evs[first_ok..]
+            .iter()
+            .map(|e| e.as_ref().map_or(f64::NAN, |e| e.elastic_energy / unit))
+            .collect();
+        Some(GapTable::from_energy(x0 + first_ok as f64 * step, step, energy)?)
+    } else {
+        None
+    };
     let h_rms = scene.spectrum.rms_height();
+    let gap_at = |i: usize| -> (f64, f64) {
+        match &table {
+            Some(t) if i >= first_ok => (t.gap[i - first_ok], t.error[i - first_ok]),
+            _ => (f64::NAN, f64::NAN),
+        }
+    };
+    let mut failed_loads = Vec::new();
     let rows: Vec<SweepRow> = (0..spec.points)
         .map(|k| {
             let i = k * m;
-            let e = &evs[i];
-            SweepRow {
-                p: ps[i],
-                a_r: e.a_r,
-                mean_gap_rel: table.gap[i],
-                mean_gap: table.gap[i] * h_rms,
-                mean_contact_stress: e.mean_contact_stress,
-                elastic_energy: e.elastic_energy,
-                converged: e.converged,
-                elastic_energy_reduced: table.energy[i],
-                mean_gap_error: table.error[i],
+            let (g, g_err) = gap_at(i);
+            match &evs[i] {
+                Ok(e) => SweepRow {
+                    p: ps[i],
+                    a_r: e.a_r,
+                    mean_gap_rel: g,
+                    mean_gap: g * h_rms,
+                    mean_contact_stress: e.mean_contact_stress,
+                    elastic_energy: e.elastic_energy,
+                    converged: e.converged,
+                    elastic_energy_reduced: e.elastic_energy / unit,
+                    mean_gap_error: g_err,
+                },
+                Err(_) => {
+                    failed_loads.push(ps[i]);
+                    SweepRow {
+                        p: ps[i],
+                        a_r: f64::NAN,
+                        mean_gap_rel: f64::NAN,
+                        mean_gap: f64::NAN,
+                        mean_contact_stress: f64::NAN,
+                        elastic_energy: f64::NAN,
+                        converged: false,
+                        elastic_energy_reduced: f64::NAN,
+                        mean_gap_error: f64::NAN,
+                    }
+                }
             }
         })
         .collect();
-    let monotone = rows
-        .windows(2)
-        .all(|w| w[1].a_r >= w[0].a_r && w[1].mean_gap_rel <= w[0].mean_gap_rel);
+    let note = last_fail.map(|f| {
+        let first_err = evs
+            .iter()
+            .find_map(|e| e.as_ref().err())
+            .map(|e| e.to_string())
+            .unwrap_or_default();
+        format!(
+            "{} of {} loads did not converge (the first: {first_err}); their rows are empty (null), \
+             and the mean gap is unknown at and below p* = {:.6e}, the highest of them",
+            evs.iter().filter(|e| e.is_err()).count(),
+            n,
+            ps[f]
+        )
+    });
+    // monotone over the rows with numbers
+    let finite: Vec<&SweepRow> = rows.iter().filter(|r| r.a_r.is_finite()).collect();
+    let monotone = finite.windows(2).all(|w| {
+        w[1].a_r >= w[0].a_r
+            && (!w[0].mean_gap_rel.is_finite()
+                || !w[1].mean_gap_rel.is_finite()
+                || w[1].mean_gap_rel <= w[0].mean_gap_rel)
+    });
     Ok(Sweep {
         rows,
         evaluations: n,
         full_contact_pressure: p_full,
         monotone,
+        failed_loads,
+        note,
     })
 }

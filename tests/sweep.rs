@@ -205,3 +205,37 @@ fn run_json_has_gap_and_energy() {
     assert!((m - rel * h).abs() < 1e-15);
     assert!(v["elastic_energy"].as_f64().unwrap() > 0.0);
 }
+
+#[test]
+fn a_sweep_keeps_going_past_loads_that_do_not_converge() {
+    // system 2, model 3, t·q_r = 0.1: at p* ~ 1e-4 the contact sits on the edge of a jump and
+    // the fixed point may not converge; the sweep still returns every other load, with empty
+    // (null) rows where it failed and no mean gap at or below the highest failure
+    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+    s.model = Model::named(3).unwrap();
+    s.thickness_qr = 0.1;
+    let spec = SweepSpec {
+        from: 1e-4,
+        to: 1.0,
+        points: 5,
+    };
+    let sw = sweep::sweep(&s, &spec, &Options::chart(), None).unwrap();
+    let lowest_gap = sw.rows.iter().position(|r| r.mean_gap_rel.is_finite());
+    for (k, r) in sw.rows.iter().enumerate() {
+        if r.converged {
+            assert!(r.a_r.is_finite() && (0.0..=1.0).contains(&r.a_r), "{r:?}");
+        } else {
+            assert!(r.a_r.is_nan() && sw.failed_loads.contains(&r.p), "{r:?}");
+            assert!(lowest_gap.is_none_or(|g| k < g));
+        }
+    }
+    if !sw.failed_loads.is_empty() {
+        assert!(sw.note.as_deref().is_some_and(|n| n.contains("did not converge")));
+    }
+    assert!(sw.rows.last().unwrap().converged);
+    // printed: empty CSV fields and JSON nulls, never NaN
+    let csv = asperity::cli::sweep::csv(&sw);
+    assert!(!csv.to_lowercase().contains("nan"), "{csv}");
+    let json = serde_json::to_string(&sw).unwrap();
+    assert!(!json.to_lowercase().contains("nan"), "{json}");
+}

@@ -56,18 +56,20 @@ pub struct SweepOutput {
 /// Formats a sweep as CSV.
 pub fn csv(sw: &Sweep) -> String {
     let mut out = String::from(CSV_HEADER);
+    // an unavailable value (a load that did not converge, or a gap below one) is left empty
+    let f = |x: f64| if x.is_finite() { format!("{x:e}") } else { String::new() };
     for r in &sw.rows {
         out.push_str(&format!(
-            "\n{:e},{:e},{:e},{:e},{:e},{:e},{},{:e},{:e}",
+            "\n{:e},{},{},{},{},{},{},{},{}",
             r.p,
-            r.a_r,
-            r.mean_gap_rel,
-            r.mean_gap,
-            r.mean_contact_stress,
-            r.elastic_energy,
+            f(r.a_r),
+            f(r.mean_gap_rel),
+            f(r.mean_gap),
+            f(r.mean_contact_stress),
+            f(r.elastic_energy),
             r.converged,
-            r.elastic_energy_reduced,
-            r.mean_gap_error
+            f(r.elastic_energy_reduced),
+            f(r.mean_gap_error)
         ));
     }
     out
@@ -83,6 +85,9 @@ pub fn run(args: &SweepArgs) -> Result<String> {
     spec.validate()?;
     let (preset, scene) = args.scene.resolve(Some(args.from))?;
     let sw = sweep::sweep(&scene, &spec, &Options::default(), None)?;
+    if let Some(note) = &sw.note {
+        eprintln!("asperity sweep: {note}");
+    }
     Ok(match args.format {
         SweepFormat::Csv => csv(&sw),
         SweepFormat::Json => serde_json::to_string_pretty(&SweepOutput {

@@ -119,9 +119,16 @@ impl SweepData {
     }
 }
 
-/// ū/h_rms at the current p* from a one-point sweep.
-pub fn gap_of_sweep(s: &Sweep) -> Option<f64> {
-    s.rows.first().map(|r| r.mean_gap_rel)
+/// ū/h_rms at the current p* from a one-point sweep, or why it is unavailable (a load on
+/// the way to full contact did not converge).
+pub fn gap_of_sweep(s: &Sweep) -> crate::Result<f64> {
+    match s.rows.first() {
+        Some(r) if r.mean_gap_rel.is_finite() => Ok(r.mean_gap_rel),
+        _ => Err(crate::Error::NotConverged {
+            solver: "mean gap".into(),
+            reason: s.note.clone().unwrap_or_else(|| "no load converged".into()),
+        }),
+    }
 }
 
 /// What the explorer shows of a finished GFMD run.

@@ -295,8 +295,7 @@ pub fn process(
             match sweep::sweep(&req.scene, &spec, &Options::chart(), Some(cancel)) {
                 Err(Error::Cancelled) => return,
                 r => {
-                    let g =
-                        r.and_then(|s| data::gap_of_sweep(&s).ok_or_else(|| Error::Unsupported("empty sweep".into())));
+                    let g = r.and_then(|s| data::gap_of_sweep(&s));
                     caches.gaps.put(pkey.clone(), g.clone());
                     g
                 }
