@@ -211,11 +211,7 @@ fn evaluate_adhesive(
             ),
         });
     }
-    let npts = opts.accuracy.resolution_points.max(2);
-    let (q_l, q_s) = (scene.spectrum.q_l(), scene.spectrum.q_s());
-    let out_q: Vec<f64> = (0..npts)
-        .map(|i| (q_l.ln() + (q_s / q_l).ln() * i as f64 / (npts - 1) as f64).exp())
-        .collect();
+    let out_q = persson::resolution_grid(scene, opts.accuracy.resolution_points);
     let resolution = out_q
         .iter()
         .map(|&q| ResolutionPoint {

@@ -122,6 +122,16 @@ impl Solution {
     }
 }
 
+/// The resolutions at which a_r(q) is reported: `points` (at least 2) log-spaced from q_L to
+/// q_s.
+pub fn resolution_grid(scene: &Scene, points: usize) -> Vec<f64> {
+    let (q_l, q_s) = (scene.spectrum.q_l(), scene.spectrum.q_s());
+    let n = points.max(2);
+    (0..n)
+        .map(|i| (q_l.ln() + (q_s / q_l).ln() * i as f64 / (n - 1) as f64).exp())
+        .collect()
+}
+
 /// a_r for a reduced variance v at reduced pressure p.
 #[inline]
 pub fn area_of_variance(p: f64, v: f64) -> f64 {
@@ -142,10 +152,7 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
     let model = scene.model;
     let q_l = scene.spectrum.q_l();
     let q_s = scene.spectrum.q_s();
-    let npts = acc.resolution_points.max(2);
-    let out_q: Vec<f64> = (0..npts)
-        .map(|i| (q_l.ln() + (q_s / q_l).ln() * i as f64 / (npts - 1) as f64).exp())
-        .collect();
+    let out_q = resolution_grid(scene, acc.resolution_points);
 
     let (v_end, err_v, evaluations, resolution, trajectory) = match &scene.spectrum {
         Spectrum::SelfAffine(sa) => {
