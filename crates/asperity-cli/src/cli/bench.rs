@@ -1,0 +1,68 @@
+//! `asperity bench [--quick]`: speed against error for every solver (see
+//! [`crate::benchmark`]). The full run writes BENCHMARKS.md in the working directory.
+
+use crate::benchmark::{self, Report};
+use asperity::error::{Error, Result};
+use clap::Args;
+
+/// Arguments of `bench`.
+#[derive(Debug, Clone, Args)]
+pub struct BenchArgs {
+    /// Short ladders that fit in CI; fails if a default setting exceeds its error bound.
+    #[arg(long)]
+    pub quick: bool,
+    /// Where the full run writes its report.
+    #[arg(long, default_value = "BENCHMARKS.md")]
+    pub output: String,
+}
+
+/// Runs the benchmark ladders.
+pub fn run(args: &BenchArgs) -> Result<()> {
+    let mut rep = Report::default();
+    let mut add = |r: Report| {
+        rep.rungs.extend(r.rungs);
+        rep.hard_cases.extend(r.hard_cases);
+    };
+    eprintln!("asperity bench: adhesionless theory ...");
+    add(benchmark::adhesionless(args.quick)?);
+    eprintln!("asperity bench: adhesive theory ...");
+    add(benchmark::adhesive(args.quick)?);
+    eprintln!("asperity bench: load sweeps ...");
+    add(benchmark::sweeps(args.quick)?);
+    eprintln!("asperity bench: GFMD ...");
+    add(benchmark::gfmd(args.quick)?);
+    let tables = benchmark::markdown(&rep);
+    super::emit(&tables);
+    if !args.quick {
+        let doc = crate::benchmark::document(&tables);
+        std::fs::write(&args.output, doc).map_err(|e| Error::Io(format!("cannot write {}: {e}", args.output)))?;
+        eprintln!("asperity bench: wrote {}", args.output);
+    }
+    let failed: Vec<String> = rep
+        .rungs
+        .iter()
+        .filter(|r| r.violates())
+        .map(|r| {
+            format!(
+                "{} / {} / {}: error {:.2e} > bound {:.0e}",
+                r.solver,
+                r.case,
+                r.setting,
+                r.max_error(),
+                r.bound.unwrap_or(0.0)
+            )
+        })
+        .collect();
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::NotConverged {
+            solver: "bench".into(),
+            reason: format!(
+                "{} default setting(s) exceed their error bound: {}",
+                failed.len(),
+                failed.join("; ")
+            ),
+        })
+    }
+}

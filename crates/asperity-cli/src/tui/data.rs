@@ -1,0 +1,198 @@
+//! The only place the explorer reads [`Evaluation`] and [`Sweep`] fields: everything the
+//! views show is copied into the small structs below. When the engine grows fields (the
+//! adhesive solver's σ_a*, branch, iterations, residual, detached fraction), wire them in
+//! [`wall_marker`], [`branch_label`] and [`PointData::from_evaluation`]; nothing else in
+//! `tui` needs to change.
+
+use asperity::theory::engine::Evaluation;
+use asperity::theory::sweep::Sweep;
+
+/// Position of the tensile wall in the Pr(σ*) chart, σ* = −σ_a* (reduced). `None` when there
+/// is no wall to draw (adhesionless, or the engine does not report it).
+pub fn wall_marker(ev: &Evaluation) -> Option<f64> {
+    (ev.sigma_a > 0.0).then_some(-ev.sigma_a)
+}
+
+/// One-word state of the solution for the read-out: "converged", "NOT converged", or (with
+/// adhesion) the branch and iteration count.
+pub fn branch_label(ev: &Evaluation) -> String {
+    if !ev.converged {
+        return "NOT converged".into();
+    }
+    if ev.branch == "adhesionless" {
+        return "converged".into();
+    }
+    let mut s = format!("{} ({} it)", ev.branch, ev.iterations);
+    if ev.unloading_a_r.is_some() {
+        s.push_str(", 2 branches");
+    }
+    s
+}
+
+/// Extra read-outs (label, value) shown under "state" in the panel, in this order.
+pub fn extra_readouts(ev: &Evaluation) -> Vec<(String, String)> {
+    if ev.branch == "adhesionless" {
+        return Vec::new();
+    }
+    let mut v = vec![
+        ("σ_a*".into(), format!("{:.4}", ev.sigma_a)),
+        ("tensile".into(), format!("{:.3e}", ev.tensile_area)),
+        ("residual".into(), format!("{:.1e}", ev.residual)),
+    ];
+    if let Some(u) = ev.unloading_a_r {
+        v.push(("unload a_r".into(), format!("{u:.5}")));
+    }
+    v
+}
+
+/// What the explorer shows of one evaluation at the current p*.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointData {
+    /// a_r.
+    pub a_r: f64,
+    /// σ̄_c*.
+    pub mean_contact_stress: f64,
+    /// Whether the solver met its tolerance.
+    pub converged: bool,
+    /// See [`branch_label`].
+    pub branch: String,
+    /// Estimated absolute error of a_r.
+    pub error_estimate: f64,
+    /// Wall time of the evaluation (s).
+    pub elapsed_s: f64,
+    /// Pr(σ*) as (σ*, density) over whatever σ* range the engine sampled (negative σ* with
+    /// adhesion).
+    pub pr: Vec<(f64, f64)>,
+    /// −σ_a*, see [`wall_marker`].
+    pub wall: Option<f64>,
+    /// Pr(σ*) of the same scene without adhesion (only computed when γ_s > 0).
+    pub adhesionless: Option<Vec<(f64, f64)>>,
+    /// See [`extra_readouts`].
+    pub extra: Vec<(String, String)>,
+}
+
+impl PointData {
+    /// Copies what the views need.
+    pub fn from_evaluation(ev: &Evaluation) -> PointData {
+        PointData {
+            a_r: ev.a_r,
+            mean_contact_stress: ev.mean_contact_stress,
+            converged: ev.converged,
+            branch: branch_label(ev),
+            error_estimate: ev.error_estimate,
+            elapsed_s: ev.elapsed_s,
+            pr: pr_points(ev),
+            wall: wall_marker(ev),
+            adhesionless: None,
+            extra: extra_readouts(ev),
+        }
+    }
+}
+
+/// Pr(σ*) of an evaluation as chart points.
+pub fn pr_points(ev: &Evaluation) -> Vec<(f64, f64)> {
+    ev.pr.sigma.iter().copied().zip(ev.pr.density.iter().copied()).collect()
+}
+
+/// The load curves the explorer draws.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SweepData {
+    /// p*.
+    pub p: Vec<f64>,
+    /// a_r(p*).
+    pub a_r: Vec<f64>,
+    /// ū/h_rms.
+    pub gap_rel: Vec<f64>,
+    /// σ̄_c*(p*).
+    pub mean_contact_stress: Vec<f64>,
+}
+
+impl SweepData {
+    /// Copies the rows of a sweep.
+    pub fn from_sweep(s: &Sweep) -> SweepData {
+        SweepData {
+            p: s.rows.iter().map(|r| r.p).collect(),
+            a_r: s.rows.iter().map(|r| r.a_r).collect(),
+            gap_rel: s.rows.iter().map(|r| r.mean_gap_rel).collect(),
+            mean_contact_stress: s.rows.iter().map(|r| r.mean_contact_stress).collect(),
+        }
+    }
+}
+
+/// ū/h_rms at the current p* from a one-point sweep, or why it is unavailable (a load on
+/// the way to full contact did not converge).
+pub fn gap_of_sweep(s: &Sweep) -> asperity::Result<f64> {
+    match s.rows.first() {
+        Some(r) if r.mean_gap_rel.is_finite() => Ok(r.mean_gap_rel),
+        _ => Err(asperity::Error::NotConverged {
+            solver: "mean gap".into(),
+            reason: s.note.clone().unwrap_or_else(|| "no load converged".into()),
+        }),
+    }
+}
+
+/// What the explorer shows of a finished GFMD run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GfmdView {
+    /// p* of the run.
+    pub pressure: f64,
+    /// Fraction of nodes in contact.
+    pub a_r: f64,
+    /// σ̄_c*.
+    pub mean_contact_stress: f64,
+    /// ū/h_rms.
+    pub gap_rel: f64,
+    /// Pr(σ*) histogram (bin centres, density), ∫ = a_r.
+    pub pr: Vec<(f64, f64)>,
+    /// Grid side N.
+    pub grid: usize,
+    /// FIRE steps.
+    pub iterations: usize,
+    /// Wall time (s).
+    pub elapsed_s: f64,
+    /// The theory's a_r on the same map (its discrete spectrum), if it could be evaluated.
+    pub theory_a_r: Option<f64>,
+}
+
+impl GfmdView {
+    /// Copies what the views need.
+    pub fn from_result(r: &asperity::gfmd::GfmdResult) -> GfmdView {
+        GfmdView {
+            pressure: r.pressure,
+            a_r: r.a_r,
+            mean_contact_stress: r.mean_contact_stress,
+            gap_rel: r.mean_gap_rel,
+            pr: r.pr.sigma.iter().copied().zip(r.pr.density.iter().copied()).collect(),
+            grid: r.grid,
+            iterations: r.iterations,
+            elapsed_s: r.elapsed_s,
+            theory_a_r: r.theory.as_ref().map(|t| t.a_r),
+        }
+    }
+}
+
+/// Whether the explorer opens a preset with the preset's γ_s (true, like the CLI) or with
+/// adhesion off (false).
+pub const ADHESION_BY_DEFAULT: bool = true;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn point_data_copies_the_evaluation() {
+        let mut scene = asperity::input::preset::Preset::resolve("system-1")
+            .unwrap()
+            .scene()
+            .unwrap();
+        scene.gamma = 0.0;
+        let ev = asperity::theory::engine::evaluate(&scene, &asperity::theory::engine::Options::default()).unwrap();
+        let pd = PointData::from_evaluation(&ev);
+        assert_eq!(pd.a_r, ev.a_r);
+        assert_eq!(pd.pr.len(), ev.pr.sigma.len());
+        assert_eq!(pd.pr[3], (ev.pr.sigma[3], ev.pr.density[3]));
+        assert_eq!(pd.branch, "converged");
+        // adhesionless: no wall
+        assert_eq!(pd.wall, None);
+    }
+}

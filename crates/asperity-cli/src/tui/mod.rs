@@ -1,0 +1,197 @@
+//! The terminal explorer (`asperity`, `asperity tui --preset P`).
+//!
+//! - [`app`]: state and key handling (pure, unit-tested without a terminal).
+//! - [`keys`]: the key table, used both for dispatch and for the `?` help.
+//! - [`worker`]: the compute thread (generations, cancellation, caches).
+//! - [`data`]: the only code that reads engine results (the adhesion merge point).
+//! - [`view`]: rendering; [`plot`]: the chart workarounds (log axes, NaN, labels, bounds).
+//! - [`export`]: `e` writes CSV + TOML.
+//!
+//! The event loop blocks on one channel that carries key/resize events (from an input
+//! thread) and worker replies; it redraws after each batch of messages, and ticks (for the
+//! spinner) only while the worker is busy, so an idle explorer uses no CPU. The terminal is
+//! restored on every exit path: a drop guard on return, ratatui's panic hook on panic.
+//!
+//! `ASPERITY_PANIC_KEY=C` makes the key C panic (for the test that the terminal is restored
+//! after a panic).
+//!
+//! `ASPERITY_TRACE=FILE` appends one line per generation with the time from the key press to
+//! the first frame showing the current point and to the frame showing every chart.
+
+pub mod app;
+pub mod data;
+pub mod export;
+pub mod keys;
+pub mod plot;
+pub mod view;
+pub mod worker;
+
+use app::App;
+use asperity::error::{Error, Result};
+use asperity::input::preset::Preset;
+use ratatui::crossterm::event::{self, Event, KeyEventKind};
+use std::io::Write;
+use std::sync::mpsc::{channel, RecvTimeoutError};
+use std::time::{Duration, Instant};
+use worker::{Reply, Worker};
+
+/// Spinner period while busy.
+const TICK: Duration = Duration::from_millis(100);
+
+enum Msg {
+    Input(Event),
+    Reply(Reply),
+    InputClosed,
+}
+
+/// Restores the terminal when dropped (every return path of [`run`]).
+struct TerminalGuard;
+
+impl Drop for TerminalGuard {
+    fn drop(&mut self) {
+        ratatui::restore();
+    }
+}
+
+/// Whether colour is wanted: not when `NO_COLOR` is set to anything non-empty.
+pub fn use_color() -> bool {
+    std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+}
+
+/// Latency trace (see the module docs).
+struct Trace {
+    file: Option<std::fs::File>,
+    started: Option<(u64, Instant)>,
+    point_logged: bool,
+}
+
+impl Trace {
+    fn new() -> Trace {
+        let file = std::env::var_os("ASPERITY_TRACE")
+            .and_then(|p| std::fs::OpenOptions::new().create(true).append(true).open(p).ok());
+        Trace {
+            file,
+            started: None,
+            point_logged: false,
+        }
+    }
+
+    fn after_draw(&mut self, app: &App) {
+        let (Some(f), Some((gen, t0))) = (self.file.as_mut(), self.started) else {
+            return;
+        };
+        if gen != app.gen {
+            return;
+        }
+        let ms = t0.elapsed().as_secs_f64() * 1e3;
+        if !self.point_logged && app.point.is_some() && app.point_gen >= gen {
+            let _ = writeln!(f, "gen {gen} point_drawn_ms {ms:.2}");
+            self.point_logged = true;
+        }
+        if !app.busy {
+            let _ = writeln!(f, "gen {gen} all_drawn_ms {ms:.2}");
+            self.started = None;
+        }
+    }
+}
+
+/// Opens the explorer on `preset` (resolved from `source`) and runs until the user quits.
+pub fn run(source: &str, preset: Preset) -> Result<()> {
+    let mut app = App::new(source, preset)?;
+    app.color = use_color();
+    let (tx, rx) = channel::<Msg>();
+    let reply_tx = tx.clone();
+    let reply_tx_for_gfmd = tx.clone();
+    let worker = Worker::spawn(move |r| {
+        let _ = reply_tx.send(Msg::Reply(r));
+    })
+    .map_err(|e| Error::Io(format!("cannot start the worker thread: {e}")))?;
+
+    let _guard = TerminalGuard;
+    let mut terminal = ratatui::try_init().map_err(|e| Error::Io(format!("cannot open the terminal: {e}")))?;
+    std::thread::Builder::new()
+        .name("asperity-input".into())
+        .spawn(move || loop {
+            match event::read() {
+                Ok(ev) => {
+                    if tx.send(Msg::Input(ev)).is_err() {
+                        return;
+                    }
+                }
+                Err(_) => {
+                    let _ = tx.send(Msg::InputClosed);
+                    return;
+                }
+            }
+        })
+        .map_err(|e| Error::Io(format!("cannot start the input thread: {e}")))?;
+
+    let gfmd_tx = reply_tx_for_gfmd;
+    let mut trace = Trace::new();
+    let panic_key = std::env::var("ASPERITY_PANIC_KEY").ok().and_then(|k| k.chars().next());
+    loop {
+        if let Some(req) = app.take_request() {
+            if trace.started.is_none_or(|(g, _)| g != req.gen) && trace.file.is_some() {
+                trace.started = Some((req.gen, Instant::now()));
+                trace.point_logged = false;
+            }
+            // a point already current stays on screen until replaced
+            worker.submit(req);
+        }
+        if let Some((id, setup, cancel)) = app.take_gfmd_request() {
+            let tx = gfmd_tx.clone();
+            worker::spawn_gfmd(id, setup, cancel, move |r| {
+                let _ = tx.send(Msg::Reply(r));
+            })
+            .map_err(|e| Error::Io(format!("cannot start the GFMD thread: {e}")))?;
+        }
+        terminal
+            .draw(|f| view::draw(f, &app))
+            .map_err(|e| Error::Io(format!("cannot draw: {e}")))?;
+        trace.after_draw(&app);
+        if app.quit {
+            return Ok(());
+        }
+        // block until something happens (tick only while busy)
+        let first = if app.busy {
+            match rx.recv_timeout(TICK) {
+                Ok(m) => Some(m),
+                Err(RecvTimeoutError::Timeout) => None,
+                Err(RecvTimeoutError::Disconnected) => return Ok(()),
+            }
+        } else {
+            match rx.recv() {
+                Ok(m) => Some(m),
+                Err(_) => return Ok(()),
+            }
+        };
+        let Some(first) = first else {
+            app.tick();
+            continue;
+        };
+        // handle everything already queued before the next frame
+        let mut next = Some(first);
+        while let Some(msg) = next {
+            match msg {
+                Msg::Input(Event::Key(k)) if k.kind != KeyEventKind::Release => {
+                    let t0 = Instant::now();
+                    if panic_key.is_some_and(|c| k.code == event::KeyCode::Char(c)) {
+                        panic!("ASPERITY_PANIC_KEY pressed");
+                    }
+                    app.on_key(k);
+                    if app.has_pending() {
+                        trace.started = Some((app.gen + 1, t0));
+                        trace.point_logged = false;
+                    }
+                }
+                Msg::Input(_) => {}
+                Msg::Reply(r) => app.on_reply(r),
+                Msg::InputClosed => return Ok(()),
+            }
+            if app.quit {
+                break;
+            }
+            next = rx.try_recv().ok();
+        }
+    }
+}

@@ -1,0 +1,109 @@
+//! `asperity sweep` and the gap/energy fields of `run`, through the binary.
+
+use asperity::input::model::Model;
+use asperity::input::preset::Preset;
+use asperity::theory::engine::Options;
+use asperity::theory::sweep::{self, SweepSpec};
+use asperity::tolerances::*;
+use std::process::Command;
+
+fn asperity(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn sweep_command_csv_and_json() {
+    let (code, out, err) = asperity(&[
+        "sweep", "--preset", "system-1", "--model", "1", "--gamma", "0", "--from", "0.01", "--to", "0.1", "--points",
+        "3",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<&str> = out.lines().collect();
+    assert!(lines[0].starts_with("p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged"));
+    assert_eq!(lines.len(), 4);
+    let first: Vec<&str> = lines[1].split(',').collect();
+    let p: f64 = first[0].parse().unwrap();
+    let a: f64 = first[1].parse().unwrap();
+    let g: f64 = first[2].parse().unwrap();
+    assert!((p - 0.01).abs() < 1e-15);
+    assert!((a / statrs::function::erf::erf(2f64.sqrt() * 0.01) - 1.0).abs() < MODEL1_ERF_REL);
+    assert!((g - 1.8466).abs() < 1e-3, "{g}");
+    assert_eq!(first[6], "true");
+
+    let (code, out, err) = asperity(&[
+        "sweep", "--preset", "system-1", "--from", "0.01", "--to", "0.1", "--points", "2", "--format", "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["rows"].as_array().unwrap().len(), 2);
+    assert!(v["rows"][0]["mean_gap"].as_f64().unwrap() > 0.0);
+
+    let (code, _, err) = asperity(&["sweep", "--preset", "system-1", "--from", "0.1", "--to", "0.01"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--to"), "{err}");
+}
+
+#[test]
+fn run_json_has_gap_and_energy() {
+    let (code, out, err) = asperity(&[
+        "run",
+        "--preset",
+        "system-1",
+        "--model",
+        "1",
+        "--gamma",
+        "0",
+        "--pressure",
+        "0.1",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let rel = v["mean_gap_rel"].as_f64().unwrap();
+    let m = v["mean_gap"].as_f64().unwrap();
+    let h = v["scene"]["rms_height_m"].as_f64().unwrap();
+    assert!((rel - 0.234688).abs() < 1e-5, "{rel}");
+    assert!((m - rel * h).abs() < 1e-15);
+    assert!(v["elastic_energy"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn a_sweep_keeps_going_past_loads_that_do_not_converge() {
+    // system 2, model 3, t·q_r = 0.1: at p* ~ 1e-4 the contact sits on the edge of a jump and
+    // the fixed point may not converge; the sweep still returns every other load, with empty
+    // (null) rows where it failed and no mean gap at or below the highest failure
+    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+    s.model = Model::named(3).unwrap();
+    s.thickness_qr = 0.1;
+    let spec = SweepSpec {
+        from: 1e-4,
+        to: 1.0,
+        points: 5,
+    };
+    let sw = sweep::sweep(&s, &spec, &Options::chart(), None).unwrap();
+    let lowest_gap = sw.rows.iter().position(|r| r.mean_gap_rel.is_finite());
+    for (k, r) in sw.rows.iter().enumerate() {
+        if r.converged {
+            assert!(r.a_r.is_finite() && (0.0..=1.0).contains(&r.a_r), "{r:?}");
+        } else {
+            assert!(r.a_r.is_nan() && sw.failed_loads.contains(&r.p), "{r:?}");
+            assert!(lowest_gap.is_none_or(|g| k < g));
+        }
+    }
+    if !sw.failed_loads.is_empty() {
+        assert!(sw.note.as_deref().is_some_and(|n| n.contains("did not converge")));
+    }
+    assert!(sw.rows.last().unwrap().converged);
+    // printed: empty CSV fields and JSON nulls, never NaN
+    let csv = asperity_cli::cli::sweep::csv(&sw);
+    assert!(!csv.to_lowercase().contains("nan"), "{csv}");
+    let json = serde_json::to_string(&sw).unwrap();
+    assert!(!json.to_lowercase().contains("nan"), "{json}");
+}

@@ -1,0 +1,5 @@
+//! Inputs: the validated scene, the model variants [S-17] and the preset systems.
+
+pub mod model;
+pub mod preset;
+pub mod scene;

@@ -1,0 +1,382 @@
+//! Preset systems: TOML files in physical units, validated field by field.
+//!
+//! A preset resolves by name (`presets/NAME.toml` under the working directory, then the
+//! presets built into the binary) or by path. Unknown keys are rejected; a wrong value gives
+//! one line naming the field, its value and the allowed range. See `presets/system-1.toml` for
+//! the documented format (units are in the key names: `_m`, `_pa`, `_j_m2`).
+
+use crate::error::{Error, Result};
+use crate::input::model::Model;
+use crate::input::scene::Scene;
+use crate::surface::spectrum::{Normalisation, SelfAffine, Spectrum};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// Presets compiled into the binary (name, TOML text).
+pub const BUILTIN: [(&str, &str); 2] = [
+    ("system-1", include_str!("../../../../presets/system-1.toml")),
+    ("system-2", include_str!("../../../../presets/system-2.toml")),
+];
+
+/// The default preset (system I, the contact-mechanics challenge).
+pub const DEFAULT_PRESET: &str = "system-1";
+
+/// `[surface]`: the self-affine spectrum.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceSpec {
+    /// L (m).
+    pub system_size_m: f64,
+    /// λ_r (m).
+    pub rolloff_wavelength_m: f64,
+    /// λ_s (m).
+    pub short_wavelength_m: f64,
+    /// H.
+    pub hurst: f64,
+    /// ḡ (give this or `rms_height_m`).
+    pub rms_gradient: Option<f64>,
+    /// h_rms (m).
+    pub rms_height_m: Option<f64>,
+}
+
+/// `[material]`.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSpec {
+    /// E* (Pa).
+    pub contact_modulus_pa: f64,
+}
+
+/// `[adhesion]`.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct AdhesionSpec {
+    /// γ_s (J/m²).
+    pub surface_energy_j_m2: f64,
+    /// ρ (m).
+    pub range_m: f64,
+}
+
+/// `[load]`: the reference scene.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct LoadSpec {
+    /// Reference p*.
+    pub pressure: f64,
+    /// t·q_r (`inf` = semi-infinite).
+    pub thickness_qr: f64,
+}
+
+/// Model number or "custom".
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(untagged)]
+pub enum Variant {
+    /// 1–4.
+    Number(i64),
+    /// "1".."4" or "custom".
+    Name(String),
+}
+
+/// `[model]`.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelSpec {
+    /// 1, 2, 3, 4 or "custom".
+    pub variant: Variant,
+    /// Custom c₁.
+    pub c1: Option<f64>,
+    /// Custom c₂.
+    pub c2: Option<f64>,
+    /// Custom α.
+    pub alpha: Option<f64>,
+    /// Custom k_G.
+    pub k_griffith: Option<f64>,
+    /// Custom σ_a cap.
+    pub cap: Option<bool>,
+}
+
+impl Default for ModelSpec {
+    fn default() -> Self {
+        ModelSpec {
+            variant: Variant::Number(3),
+            c1: None,
+            c2: None,
+            alpha: None,
+            k_griffith: None,
+            cap: None,
+        }
+    }
+}
+
+/// `[gfmd]`: the default reduced grid for brute-force runs (`asperity gfmd`). The reduced
+/// system keeps λ_s, H and ḡ of `[surface]` and shrinks λ_r and L to these ratios, so
+/// N = system_size_ratio · bandwidth · points_per_short_wavelength (see
+/// [`crate::gfmd::GridSpec`]); the built-in presets use 2 · 32 · 8 = 512, about a second.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct GfmdSpec {
+    /// L/λ_r.
+    pub system_size_ratio: u32,
+    /// λ_r/λ_s.
+    pub bandwidth: u32,
+    /// λ_s/Δa.
+    pub points_per_short_wavelength: u32,
+}
+
+/// One `[[reference]]` data point for overlays and checks.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ReferencePoint {
+    /// Where the number comes from.
+    pub source: String,
+    /// `a_r`, `mean_contact_stress`, `contact_stress_variance` or `mean_gap_rel`.
+    pub quantity: String,
+    /// p*.
+    pub pressure: f64,
+    /// t·q_r (default ∞).
+    pub thickness_qr: Option<f64>,
+    /// γ_s (J/m²) of the data (default the preset's).
+    pub gamma: Option<f64>,
+    /// Model the value belongs to (for theory values); absent for simulations.
+    pub model: Option<u8>,
+    /// The value (reduced units).
+    pub value: f64,
+}
+
+/// A parsed, validated preset.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Preset {
+    /// Short name (used by `--preset NAME`).
+    pub name: String,
+    /// One-line description.
+    pub description: String,
+    /// Spectrum.
+    pub surface: SurfaceSpec,
+    /// Elastic constants.
+    pub material: MaterialSpec,
+    /// Adhesion.
+    pub adhesion: AdhesionSpec,
+    /// Reference load and thickness.
+    pub load: LoadSpec,
+    /// Default model.
+    #[serde(default)]
+    pub model: ModelSpec,
+    /// Default GFMD grid.
+    pub gfmd: Option<GfmdSpec>,
+    /// Reference data points.
+    #[serde(default)]
+    pub reference: Vec<ReferencePoint>,
+}
+
+const QUANTITIES: [&str; 4] = ["a_r", "mean_contact_stress", "contact_stress_variance", "mean_gap_rel"];
+
+impl Preset {
+    /// Parses TOML text; `source` names the file in errors.
+    pub fn parse(text: &str, source: &str) -> Result<Preset> {
+        let preset: Preset = toml::from_str(text).map_err(|e| {
+            let line = e.span().map(|s| text[..s.start.min(text.len())].lines().count().max(1));
+            let msg = e.message().split_whitespace().collect::<Vec<_>>().join(" ");
+            Error::Preset {
+                source: source.to_string(),
+                message: match line {
+                    Some(l) => format!("line {l}: {msg}"),
+                    None => msg,
+                },
+            }
+        })?;
+        preset.validate().map_err(|e| Error::Preset {
+            source: source.to_string(),
+            message: e.to_string(),
+        })?;
+        Ok(preset)
+    }
+
+    /// Reads a preset from a file.
+    pub fn load(path: &Path) -> Result<Preset> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::Io(format!("cannot read preset {}: {e}", path.display())))?;
+        Preset::parse(&text, &path.display().to_string())
+    }
+
+    /// Resolves `name_or_path`: an existing file path, else `presets/NAME.toml` under the
+    /// working directory, else a built-in preset.
+    pub fn resolve(name_or_path: &str) -> Result<Preset> {
+        let p = Path::new(name_or_path);
+        if p.is_file() {
+            return Preset::load(p);
+        }
+        let local = PathBuf::from("presets").join(format!("{name_or_path}.toml"));
+        if !name_or_path.contains('/') && local.is_file() {
+            return Preset::load(&local);
+        }
+        if let Some((_, text)) = BUILTIN.iter().find(|(n, _)| *n == name_or_path) {
+            return Preset::parse(text, name_or_path);
+        }
+        let known: Vec<String> = list_available().into_iter().map(|(n, _)| n).collect();
+        Err(Error::Preset {
+            source: name_or_path.to_string(),
+            message: format!("no such preset file or name; known presets: {}", known.join(", ")),
+        })
+    }
+
+    /// Every field checked; errors name the field (`surface.hurst`, ...).
+    pub fn validate(&self) -> Result<()> {
+        self.spectrum()?;
+        self.scene()?.validate()?;
+        if let Some(g) = &self.gfmd {
+            for (k, v) in [
+                ("gfmd.system_size_ratio", g.system_size_ratio),
+                ("gfmd.bandwidth", g.bandwidth),
+                ("gfmd.points_per_short_wavelength", g.points_per_short_wavelength),
+            ] {
+                if !(1..=4096).contains(&v) {
+                    return Err(Error::field(k, v, "an integer in 1..=4096"));
+                }
+            }
+        }
+        for (i, r) in self.reference.iter().enumerate() {
+            if !QUANTITIES.contains(&r.quantity.as_str()) {
+                return Err(Error::field(
+                    format!("reference[{i}].quantity"),
+                    &r.quantity,
+                    QUANTITIES.join(", "),
+                ));
+            }
+            if !(r.pressure.is_finite() && r.pressure > 0.0) {
+                return Err(Error::field(format!("reference[{i}].pressure"), r.pressure, "p* > 0"));
+            }
+            if !r.value.is_finite() {
+                return Err(Error::field(
+                    format!("reference[{i}].value"),
+                    r.value,
+                    "a finite number",
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The spectrum of the preset.
+    pub fn spectrum(&self) -> Result<Spectrum> {
+        let s = &self.surface;
+        let norm = match (s.rms_gradient, s.rms_height_m) {
+            (Some(g), None) => Normalisation::RmsGradient(g),
+            (None, Some(h)) => Normalisation::RmsHeight(h),
+            _ => {
+                return Err(Error::field(
+                    "surface.rms_gradient/rms_height_m",
+                    "both or neither",
+                    "exactly one of rms_gradient and rms_height_m",
+                ))
+            }
+        };
+        Ok(Spectrum::SelfAffine(SelfAffine::new(
+            s.system_size_m,
+            s.rolloff_wavelength_m,
+            s.short_wavelength_m,
+            s.hurst,
+            norm,
+        )?))
+    }
+
+    /// The preset's default model.
+    pub fn model(&self) -> Result<Model> {
+        let m = &self.model;
+        let n = match &m.variant {
+            Variant::Number(n) => Some(*n),
+            Variant::Name(s) if s == "custom" => None,
+            Variant::Name(s) => Some(
+                s.parse::<i64>()
+                    .map_err(|_| Error::field("model.variant", s, "1, 2, 3, 4 or \"custom\""))?,
+            ),
+        };
+        match n {
+            Some(n) => {
+                if !(1..=4).contains(&n) {
+                    return Err(Error::field("model.variant", n, "1, 2, 3, 4 or \"custom\""));
+                }
+                if m.c1.is_some() || m.c2.is_some() || m.alpha.is_some() || m.k_griffith.is_some() || m.cap.is_some() {
+                    return Err(Error::field(
+                        "model.variant",
+                        n,
+                        "\"custom\" when c1, c2, alpha, k_griffith or cap are given",
+                    ));
+                }
+                Model::named(n as u8)
+            }
+            None => Model::custom(
+                m.c1.unwrap_or(0.0),
+                m.c2.unwrap_or(0.0),
+                m.alpha.unwrap_or(0.5),
+                m.k_griffith.unwrap_or(1.0),
+                m.cap.unwrap_or(false),
+            ),
+        }
+    }
+
+    /// The reference scene: the preset's load, thickness, model and adhesion.
+    pub fn scene(&self) -> Result<Scene> {
+        let a = &self.adhesion;
+        if !(a.surface_energy_j_m2.is_finite() && a.surface_energy_j_m2 >= 0.0) {
+            return Err(Error::field(
+                "adhesion.surface_energy_j_m2",
+                a.surface_energy_j_m2,
+                "0 <= surface_energy_j_m2 (J/m^2)",
+            ));
+        }
+        let scene = Scene {
+            spectrum: self.spectrum()?,
+            modulus: self.material.contact_modulus_pa,
+            thickness_qr: self.load.thickness_qr,
+            model: self.model()?,
+            pressure: self.load.pressure,
+            gamma: a.surface_energy_j_m2,
+            range: a.range_m,
+        };
+        scene.validate().map_err(|e| match e {
+            Error::InvalidField { field, value, allowed } => Error::InvalidField {
+                field: match field.as_str() {
+                    "pressure" => "load.pressure".into(),
+                    "thickness" => "load.thickness_qr".into(),
+                    "gamma" => "adhesion.surface_energy_j_m2".into(),
+                    _ => field,
+                },
+                value,
+                allowed,
+            },
+            e => e,
+        })?;
+        Ok(scene)
+    }
+
+    /// Number of grid points per side of the default GFMD grid.
+    pub fn gfmd_grid(&self) -> Option<u32> {
+        self.gfmd
+            .as_ref()
+            .map(|g| g.system_size_ratio * g.bandwidth * g.points_per_short_wavelength)
+    }
+}
+
+/// Available presets: (name, where) from `presets/` under the working directory and the
+/// built-in ones.
+pub fn list_available() -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = Vec::new();
+    if let Ok(rd) = std::fs::read_dir("presets") {
+        let mut files: Vec<PathBuf> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
+        files.sort();
+        for f in files {
+            if f.extension().is_some_and(|e| e == "toml") {
+                if let Some(stem) = f.file_stem().and_then(|s| s.to_str()) {
+                    out.push((stem.to_string(), f.display().to_string()));
+                }
+            }
+        }
+    }
+    for (n, _) in BUILTIN {
+        if !out.iter().any(|(m, _)| m == n) {
+            out.push((n.to_string(), "built-in".to_string()));
+        }
+    }
+    out
+}

@@ -1,0 +1,4 @@
+//! The rough surface: its height spectrum C(q) and random height maps drawn from it.
+
+pub mod heightmap;
+pub mod spectrum;

@@ -1,0 +1,282 @@
+//! The engine facade: one call evaluates a scene with whatever the scene needs (the
+//! adhesionless mirror-Gaussian path when γ_s = 0, the adhesive solver otherwise) and returns
+//! the quantities every front end shows. The CLI and the TUI call only this (and the sweep).
+
+use crate::error::{Error, Result};
+use crate::input::scene::Scene;
+use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution};
+use crate::theory::persson::{self, Accuracy, ResolutionPoint};
+use serde::Serialize;
+use std::time::Instant;
+
+/// Options of one evaluation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Accuracy of the adhesionless variance ODE.
+    pub accuracy: Accuracy,
+    /// Number of σ* points of the sampled Pr(σ*).
+    pub sigma_points: usize,
+    /// Largest σ* of the sample (None: p* + 5Δ*).
+    pub sigma_max: Option<f64>,
+    /// Accuracy of the adhesive solver (used when γ_s > 0).
+    pub adhesion: AdhesionAccuracy,
+    /// Estimate the adhesive solver's discretisation error with two more solves, each at half
+    /// of one resolution (about +60 % time); without it `error_estimate` is the fixed-point
+    /// residual.
+    pub adhesion_error_estimate: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            accuracy: Accuracy::default(),
+            sigma_points: 201,
+            sigma_max: None,
+            adhesion: AdhesionAccuracy::default(),
+            adhesion_error_estimate: true,
+        }
+    }
+}
+
+impl Options {
+    /// The accuracy a chart needs (a pixel is ~1 % of an axis): the adhesive solver at half
+    /// the default resolution in both directions (relative error of a_r ~1e-3, 3–4× faster),
+    /// no error estimate and no search for a second branch. The explorer's sweeps use this.
+    pub fn chart() -> Options {
+        let mut o = Options::default();
+        o.adhesion.steps_per_ln_q *= 0.5;
+        o.adhesion.points_per_width *= 0.5;
+        o.adhesion.explore_branches = false;
+        o.adhesion_error_estimate = false;
+        o
+    }
+}
+
+/// Pr(σ*) sampled on a grid (reduced units; ∫density dσ* = a_r).
+#[derive(Debug, Clone, Serialize, PartialEq, Default)]
+pub struct PrCurve {
+    /// σ* grid (ascending; starts at −σ_a* when adhesion is on).
+    pub sigma: Vec<f64>,
+    /// Pr(σ*).
+    pub density: Vec<f64>,
+}
+
+/// The result of one evaluation.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Evaluation {
+    /// Relative contact area a_r(q_s).
+    pub a_r: f64,
+    /// σ̄_c* (reduced by E*ḡ).
+    pub mean_contact_stress: f64,
+    /// ⟨δσ_c²⟩* (reduced by (E*ḡ)²).
+    pub contact_stress_variance: f64,
+    /// Width of the final stress distribution Δ* (adhesionless: √v(q_s)).
+    pub width: f64,
+    /// Pr(σ*).
+    pub pr: PrCurve,
+    /// a_r(q) along the resolution.
+    pub resolution: Vec<ResolutionPoint>,
+    /// Whether the solver met its tolerance (an unconverged result is never returned as Ok
+    /// with `converged = true`).
+    pub converged: bool,
+    /// Estimated absolute error of a_r.
+    pub error_estimate: f64,
+    /// Elastic energy U per nominal area (J/m²) [S-11]; see [`crate::theory::energy`].
+    pub elastic_energy: f64,
+    /// σ_a*(q_s): the adhesive wall sits at σ* = −σ_a* (0 without adhesion).
+    pub sigma_a: f64,
+    /// Contact under tension ∫_{−σ_a}^0 Pr dσ* (0 without adhesion).
+    pub tensile_area: f64,
+    /// Fraction of the nominal area that left the contact through the wall, 1 − a_r.
+    pub detached_fraction: f64,
+    /// γ(q)/γ_s at the `resolution` points (empty without adhesion).
+    pub gamma_q: Vec<f64>,
+    /// σ_a*(q) at the `resolution` points (empty without adhesion).
+    pub sigma_a_q: Vec<f64>,
+    /// Fixed-point iterations (0 without adhesion: the closed form needs none).
+    pub iterations: usize,
+    /// Fixed-point residual max|G(a) − a|/a_r (0 without adhesion).
+    pub residual: f64,
+    /// "adhesionless", "loading", "loading (continuation in gamma)", or "upper (from full
+    /// contact)" where the loading iteration could not lock on (a jump into contact).
+    pub branch: String,
+    /// a_r of a distinct unloading branch (started from full contact), if one exists.
+    pub unloading_a_r: Option<f64>,
+    /// γ̃_glo = γ_s/u_ela^(f) [S-24].
+    pub gamma_glo: f64,
+    /// Wall time (s).
+    pub elapsed_s: f64,
+    /// The adhesive solution (warm start for a neighbouring scene).
+    #[serde(skip)]
+    pub adhesive: Option<Box<AdhesiveSolution>>,
+}
+
+/// Evaluates a scene.
+pub fn evaluate(scene: &Scene, opts: &Options) -> Result<Evaluation> {
+    evaluate_warm(scene, opts, None, None)
+}
+
+/// Evaluates a scene, warm-starting the adhesive solver from a neighbouring evaluation and
+/// checking `cancel` between fixed-point iterations.
+pub fn evaluate_warm(
+    scene: &Scene,
+    opts: &Options,
+    warm: Option<&Evaluation>,
+    cancel: Option<&std::sync::atomic::AtomicBool>,
+) -> Result<Evaluation> {
+    scene.validate()?;
+    let t0 = Instant::now();
+    if scene.gamma > 0.0 {
+        return evaluate_adhesive(scene, opts, warm, cancel, t0);
+    }
+    let sol = persson::solve(scene, &opts.accuracy)?;
+    let sigma_max = match opts.sigma_max {
+        Some(s) if s.is_finite() && s > 0.0 => s,
+        Some(s) => return Err(Error::field("sigma_max", s, "sigma* > 0")),
+        None => sol.default_sigma_max(),
+    };
+    let (sigma, density) = sol.sample(sigma_max, opts.sigma_points);
+    let elastic_energy = crate::theory::energy::elastic_energy(scene, |q| sol.area_at(q));
+    Ok(Evaluation {
+        a_r: sol.a_r,
+        mean_contact_stress: sol.mean_contact_stress,
+        contact_stress_variance: sol.contact_stress_variance,
+        width: sol.width,
+        pr: PrCurve { sigma, density },
+        resolution: sol.resolution,
+        converged: true,
+        error_estimate: sol.error_estimate,
+        elastic_energy,
+        sigma_a: 0.0,
+        tensile_area: 0.0,
+        detached_fraction: 1.0 - sol.a_r,
+        gamma_q: Vec::new(),
+        sigma_a_q: Vec::new(),
+        iterations: 0,
+        residual: 0.0,
+        branch: "adhesionless".into(),
+        unloading_a_r: None,
+        gamma_glo: 0.0,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+        adhesive: None,
+    })
+}
+
+fn evaluate_adhesive(
+    scene: &Scene,
+    opts: &Options,
+    warm: Option<&Evaluation>,
+    cancel: Option<&std::sync::atomic::AtomicBool>,
+    t0: Instant,
+) -> Result<Evaluation> {
+    let warm_sol = warm.and_then(|w| w.adhesive.as_deref());
+    let sol = adhesion::solve(scene, &opts.adhesion, warm_sol, cancel)?;
+    let error_estimate = if opts.adhesion_error_estimate {
+        // halve each resolution in turn (their errors need not have the same sign, so one
+        // combined halving can hide both): |a − a(steps/2)| + |a − a(points/2)|
+        let mut diffs = Vec::new();
+        for which in 0..2 {
+            let mut coarse = opts.adhesion;
+            coarse.explore_branches = false;
+            if which == 0 {
+                coarse.steps_per_ln_q *= 0.5;
+            } else {
+                coarse.points_per_width *= 0.5;
+            }
+            match adhesion::solve(scene, &coarse, Some(&sol), cancel) {
+                Ok(c) => diffs.push((c.a_r - sol.a_r).abs()),
+                Err(Error::Cancelled) => return Err(Error::Cancelled),
+                // near a jump a coarse grid may not converge although the fine one did: the
+                // estimate then rests on the other halving (doubled), or is unavailable
+                Err(_) => {}
+            }
+        }
+        match diffs.len() {
+            2 => sol.residual * sol.a_r + diffs[0] + diffs[1],
+            1 => sol.residual * sol.a_r + 2.0 * diffs[0],
+            _ => f64::NAN,
+        }
+    } else {
+        sol.residual * sol.a_r
+    };
+    if !error_estimate.is_finite() {
+        return Err(Error::NotConverged {
+            solver: "adhesive theory".into(),
+            reason: format!(
+                "the fixed point converged (a_r = {:.6}, {} branch) but neither half-resolution \
+                 check did, so its discretisation error cannot be estimated: the state sits on the \
+                 edge of a jump into contact, where the result depends on the grid; try a nearby \
+                 p*, t or gamma",
+                sol.a_r, sol.branch
+            ),
+        });
+    }
+    let out_q = persson::resolution_grid(scene, opts.accuracy.resolution_points);
+    let resolution = out_q
+        .iter()
+        .map(|&q| ResolutionPoint {
+            q,
+            a_r: adhesion::interpolate(&sol, q, &sol.a_q),
+            variance: adhesion::interpolate(&sol, q, &sol.v_q),
+        })
+        .collect();
+    let gamma_q = out_q
+        .iter()
+        .map(|&q| adhesion::interpolate(&sol, q, &sol.gamma_q))
+        .collect();
+    let sigma_a_q = out_q
+        .iter()
+        .map(|&q| adhesion::interpolate(&sol, q, &sol.sigma_a_q))
+        .collect();
+    let (sigma, density) = resample(&sol, opts);
+    Ok(Evaluation {
+        a_r: sol.a_r,
+        mean_contact_stress: sol.mean_contact_stress,
+        contact_stress_variance: sol.contact_stress_variance,
+        width: sol.width,
+        pr: PrCurve { sigma, density },
+        resolution,
+        converged: true,
+        error_estimate,
+        elastic_energy: sol.elastic_energy,
+        sigma_a: sol.sigma_a,
+        tensile_area: sol.tensile_area,
+        detached_fraction: sol.detached_fraction,
+        gamma_q,
+        sigma_a_q,
+        iterations: sol.iterations,
+        residual: sol.residual,
+        branch: sol.branch.clone(),
+        unloading_a_r: sol.unloading_a_r,
+        gamma_glo: sol.gamma_glo,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+        adhesive: Some(Box::new(sol)),
+    })
+}
+
+/// Pr(σ*) of an adhesive solution on `sigma_points` points from −σ_a* to σ_max (linear
+/// interpolation of the solver's grid; 0 beyond it).
+fn resample(sol: &AdhesiveSolution, opts: &Options) -> (Vec<f64>, Vec<f64>) {
+    let n = opts.sigma_points.max(2);
+    let lo = -sol.sigma_a;
+    let hi = match opts.sigma_max {
+        Some(s) if s > lo => s,
+        _ => sol.pressure + 5.0 * sol.width,
+    };
+    let src_s = &sol.sigma;
+    let src_d = &sol.density;
+    let sigma: Vec<f64> = (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect();
+    let density = sigma
+        .iter()
+        .map(|&s| {
+            let i = src_s.partition_point(|&x| x < s);
+            if i == 0 || i >= src_s.len() {
+                return 0.0;
+            }
+            let (s0, s1) = (src_s[i - 1], src_s[i]);
+            let t = if s1 > s0 { (s - s0) / (s1 - s0) } else { 0.0 };
+            (src_d[i - 1] + t * (src_d[i] - src_d[i - 1])).max(0.0)
+        })
+        .collect();
+    (sigma, density)
+}

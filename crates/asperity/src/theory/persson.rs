@@ -1,0 +1,299 @@
+//! Persson theory without adhesion: the W-coupled variance ODE and its mirror-Gaussian
+//! solution (physics.md §3).
+//!
+//! Resolution q acts as time. Without adhesion the absorbing wall sits at σ = 0 and mirror
+//! kernels compose exactly [S-5, S-7], so at every resolution
+//!
+//! ```text
+//! Pr(σ, q) = K(σ, p₀, √V(q)),     a_r(q) = erf(p₀ / √(2V(q)))                   [S-22]
+//! dV = W(a_r(q))^{2α} · f(qt)² · (qE*/2)² · dm(q),   dm = 2πqC(q)dq             [S-2, S-15]
+//! ```
+//!
+//! (f² in the variance: physics.md §7 erratum 3). In reduced units v = V/(E*ḡ)² and with
+//! s = ln q this is the scalar ODE
+//!
+//! ```text
+//! dv/ds = W(a(v))^{2α} · f(e^s t)² · q² · (dm/d ln q) / (4ḡ²),   v(ln q_L) = 0,
+//! ```
+//!
+//! so that v(q_s) = 1/4 for W = f = 1 and a_r = erf(√2 p*) (original Persson theory). It is
+//! integrated with adaptive Dormand–Prince 5(4) ([`crate::numerics::ode`]) segment by segment between
+//! the PSD's breakpoints (q_L, q_r, q_s). For a discrete spectrum (the modes of a height map)
+//! the integral is the paper's sum over modes: one midpoint step per |q| shell.
+//!
+//! Error estimate: the sum of the local error estimates in v, mapped to a_r with |da/dv|.
+
+use crate::error::Result;
+use crate::input::scene::Scene;
+use crate::numerics::ode::{Control, Trajectory};
+use crate::surface::spectrum::Spectrum;
+use crate::theory::mirror;
+use serde::Serialize;
+use statrs::function::erf::erf;
+use std::f64::consts::{FRAC_1_SQRT_2, PI};
+
+/// Accuracy of the adhesionless solver.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Accuracy {
+    /// Relative tolerance of each ODE step in v.
+    pub rtol: f64,
+    /// Number of points at which a_r(q) is reported along the resolution.
+    pub resolution_points: usize,
+}
+
+impl Default for Accuracy {
+    /// rtol = 1e-7: measured relative error of a_r ~1e-9 (system 1 and 2, half-space and
+    /// slabs; `cargo bench --bench engine`), two orders below the 1e-6 target, checked on a
+    /// grid of scenes in `tests/persson.rs`.
+    fn default() -> Self {
+        Accuracy {
+            rtol: 1e-7,
+            resolution_points: 64,
+        }
+    }
+}
+
+/// a_r and v at one resolution q.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ResolutionPoint {
+    /// Resolution q (1/m).
+    pub q: f64,
+    /// Contact fraction a_r(q).
+    pub a_r: f64,
+    /// Reduced stress variance v(q) = V/(E*ḡ)².
+    pub variance: f64,
+}
+
+/// The adhesionless solution of one scene.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Solution {
+    /// p*.
+    pub pressure: f64,
+    /// Relative contact area a_r(q_s).
+    pub a_r: f64,
+    /// Mean contact stress σ̄_c* = p*/a_r.
+    pub mean_contact_stress: f64,
+    /// Variance of the stress inside the contact ⟨δσ_c²⟩* (reduced by (E*ḡ)²).
+    pub contact_stress_variance: f64,
+    /// Width Δ* = √v(q_s) of the mirror Gaussian.
+    pub width: f64,
+    /// a_r(q) along the resolution (log-spaced in q from q_L to q_s).
+    pub resolution: Vec<ResolutionPoint>,
+    /// Estimated absolute error of a_r.
+    pub error_estimate: f64,
+    /// Right-hand-side evaluations (work measure).
+    pub evaluations: usize,
+    /// Dense record of v(q): (ln q, v, dv/d ln q) at the solver's points, for interpolation.
+    #[serde(skip)]
+    pub trajectory: Trajectory,
+}
+
+impl Solution {
+    /// Pr(σ*) at the given reduced stresses (∫Pr dσ* = a_r).
+    pub fn density(&self, sigma: f64) -> f64 {
+        mirror::density(sigma, self.pressure, self.width)
+    }
+
+    /// A σ* grid from 0 to `sigma_max` with `n` points and Pr on it.
+    pub fn sample(&self, sigma_max: f64, n: usize) -> (Vec<f64>, Vec<f64>) {
+        let n = n.max(2);
+        let sigma: Vec<f64> = (0..n).map(|i| sigma_max * i as f64 / (n - 1) as f64).collect();
+        let density = sigma.iter().map(|&s| self.density(s)).collect();
+        (sigma, density)
+    }
+
+    /// Reduced variance v(q) at resolution q (cubic Hermite on the solver's points; for a
+    /// discrete spectrum, the value after the last shell with |q'| ≤ q).
+    pub fn variance_at(&self, q: f64) -> f64 {
+        if q <= 0.0 {
+            return 0.0;
+        }
+        self.trajectory.eval(q.ln())
+    }
+
+    /// a_r(q) at resolution q.
+    pub fn area_at(&self, q: f64) -> f64 {
+        area_of_variance(self.pressure, self.variance_at(q))
+    }
+
+    /// A σ* range that shows the whole distribution: up to p* + 5Δ*.
+    pub fn default_sigma_max(&self) -> f64 {
+        self.pressure + 5.0 * self.width
+    }
+}
+
+/// The resolutions at which a_r(q) is reported: `points` (at least 2) log-spaced from q_L to
+/// q_s.
+pub fn resolution_grid(scene: &Scene, points: usize) -> Vec<f64> {
+    let (q_l, q_s) = (scene.spectrum.q_l(), scene.spectrum.q_s());
+    let n = points.max(2);
+    (0..n)
+        .map(|i| (q_l.ln() + (q_s / q_l).ln() * i as f64 / (n - 1) as f64).exp())
+        .collect()
+}
+
+/// a_r for a reduced variance v at reduced pressure p.
+#[inline]
+pub fn area_of_variance(p: f64, v: f64) -> f64 {
+    if v <= 0.0 {
+        1.0
+    } else {
+        erf(p / v.sqrt() * FRAC_1_SQRT_2)
+    }
+}
+
+/// Solves the adhesionless theory for a scene (γ is ignored: callers route adhesive scenes
+/// to the adhesion solver).
+pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
+    scene.validate()?;
+    let p = scene.pressure;
+    let g2 = scene.spectrum.moment(2);
+    let t = scene.thickness_m();
+    let model = scene.model;
+    let q_l = scene.spectrum.q_l();
+    let q_s = scene.spectrum.q_s();
+    let out_q = resolution_grid(scene, acc.resolution_points);
+
+    let (v_end, err_v, evaluations, resolution, trajectory) = match &scene.spectrum {
+        Spectrum::SelfAffine(sa) => {
+            let sa = *sa;
+            let mut rhs = |s: f64, v: f64| -> f64 {
+                let q = s.exp();
+                let a = area_of_variance(p, v);
+                let f = crate::theory::slab::slab_factor_at(q, t);
+                model.broadening(a) * f * f * q * q * sa.dm_dlnq(q) / (4.0 * g2)
+            };
+            // Absolute tolerance, scaled by the size of the answer: v(q_s) lies between
+            // W_min^{2α}·v₁ and v₁ with v₁ = ∫f²q²dm/(4ḡ²) (the W = 1 variance). Errors below
+            // rtol·1e-3·v₁ cannot move a_r by more than ~rtol. (Scaling by p*² instead would
+            // ask to resolve the a_r drop at v ≈ p*², which for p* = 1e-8 lies within 1e-13
+            // of ln q_L: below the spacing of doubles, and irrelevant for v(q_s).)
+            let v1 = if t.is_infinite() {
+                0.25
+            } else {
+                // only its order of magnitude matters: coarse panels (1 in ln q) suffice
+                scene
+                    .spectrum
+                    .nodes(1.0)
+                    .iter()
+                    .map(|m| {
+                        let f = crate::theory::slab::slab_factor_at(m.q, t);
+                        f * f * m.q * m.q * m.dm
+                    })
+                    .sum::<f64>()
+                    / (4.0 * g2)
+            };
+            let ctl = Control {
+                rtol: acc.rtol,
+                atol: acc.rtol * 1e-3 * v1,
+                max_steps: 200_000,
+            };
+            let bp = scene.spectrum.breakpoints();
+            let mut traj = Trajectory::start(bp[0].ln(), 0.0, &mut rhs);
+            for w in bp.windows(2) {
+                // the plateau's right end and the tail's left end differ: restart the
+                // derivative record at the kink so the dense output does not smear it
+                let (s0, s1) = (w[0].ln(), w[1].ln());
+                let h0 = traj.last_step((s1 - s0) / 16.0).min((s1 - s0) / 4.0);
+                if traj.s.len() > 1 {
+                    let (s, v) = traj.last();
+                    let d = rhs(s, v);
+                    *traj.dy.last_mut().unwrap() = d;
+                }
+                traj.advance(s1, h0, &ctl, &mut rhs)?;
+            }
+            let (_, mut v_end) = traj.last();
+            let mut err_sum = traj.err_sum;
+            if model.constant_broadening() {
+                // W^{2α} ≡ 1: v(q_s) = ∫f²q²dm/(4ḡ²) exactly (Gauss–Legendre, ~1e-14); the ODE
+                // above only provides a_r(q) along the resolution.
+                v_end = if t.is_infinite() {
+                    0.25
+                } else {
+                    scene.spectrum.integrate(|q| {
+                        let f = crate::theory::slab::slab_factor_at(q, t);
+                        f * f * q * q
+                    }) / (4.0 * g2)
+                };
+                err_sum = v_end * 1e-14;
+            }
+            let resolution = out_q
+                .iter()
+                .map(|&q| {
+                    let v = traj.eval(q.ln().clamp(bp[0].ln(), q_s.ln()));
+                    ResolutionPoint {
+                        q,
+                        a_r: area_of_variance(p, v),
+                        variance: v,
+                    }
+                })
+                .collect();
+            (v_end, err_sum, traj.evaluations, resolution, traj)
+        }
+        Spectrum::Discrete(d) => {
+            let mut v = 0.0;
+            let mut shells = Vec::with_capacity(d.modes.len());
+            for m in &d.modes {
+                let f = crate::theory::slab::slab_factor_at(m.q, t);
+                let base = f * f * m.q * m.q * m.dm / (4.0 * g2);
+                // midpoint in the shell: predict with W at the start, correct at the middle
+                let pred = v + 0.5 * model.broadening(area_of_variance(p, v)) * base;
+                v += model.broadening(area_of_variance(p, pred)) * base;
+                shells.push((m.q, v));
+            }
+            let resolution = out_q
+                .iter()
+                .map(|&q| {
+                    let i = shells.partition_point(|&(qq, _)| qq <= q * (1.0 + 1e-12));
+                    let v = if i == 0 { 0.0 } else { shells[i - 1].1 };
+                    ResolutionPoint {
+                        q,
+                        a_r: area_of_variance(p, v),
+                        variance: v,
+                    }
+                })
+                .collect();
+            // step-function record: v is constant between shells (zero slope)
+            let mut traj = Trajectory::default();
+            let mut prev = 0.0;
+            for &(q, vv) in &shells {
+                let s = q.ln();
+                traj.s.push(s - 1e-12);
+                traj.y.push(prev);
+                traj.dy.push(0.0);
+                traj.s.push(s);
+                traj.y.push(vv);
+                traj.dy.push(0.0);
+                prev = vv;
+            }
+            if traj.s.is_empty() {
+                traj.s.push(q_l.ln());
+                traj.y.push(0.0);
+                traj.dy.push(0.0);
+            }
+            (v, 0.0, 2 * d.modes.len(), resolution, traj)
+        }
+    };
+
+    let width = v_end.max(0.0).sqrt();
+    let a_r = mirror::area(p, width);
+    let (mean, var) = mirror::contact_moments(p, width);
+    // |da/dv| = (2/√π) e^{−x²} x / (2v), x = p/√(2v)
+    let error_estimate = if v_end > 0.0 {
+        let x = p / (2.0 * v_end).sqrt();
+        2.0 / PI.sqrt() * (-x * x).exp() * x / (2.0 * v_end) * err_v
+    } else {
+        0.0
+    };
+    Ok(Solution {
+        pressure: p,
+        a_r,
+        mean_contact_stress: mean,
+        contact_stress_variance: var,
+        width,
+        resolution,
+        error_estimate,
+        evaluations,
+        trajectory,
+    })
+}

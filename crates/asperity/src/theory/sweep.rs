@@ -1,0 +1,368 @@
+//! Load sweeps: a_r(p*), ū(p*)/h_rms, σ̄_c*(p*) and U(p*) on a log-spaced p* range.
+//!
+//! One sweep evaluates the scene ([`crate::theory::engine::evaluate`]) on a single uniform grid in
+//! ln p*: the requested points (from `from` to `to`, log-spaced), refined by an integer factor
+//! when their spacing exceeds [`SWEEP_STEP_LN`], and extended with the same step up
+//! to full contact. The mean gap at every requested point then comes from one cumulative pass
+//! over that U table ([`crate::theory::gap::GapTable`]); nothing is evaluated twice. A 64-point chart
+//! sweep of system 1 from p* = 1e-3 to 1 costs 64 + 13 engine evaluations.
+//!
+//! Adhesionless loads are independent and run in parallel (rayon). Adhesive loads are run in
+//! order of increasing p* (the loading branch, continuation from the neighbouring load): the
+//! warm start is [`evaluate_node`]: each load starts the fixed point from the previous load's
+//! a_r(q), which cuts the iterations and keeps the sweep on the loading branch (an adhesive
+//! jump shows as a non-monotone stretch, flagged by [`Sweep::monotone`]).
+//!
+//! Cancellation: the caller may pass an `AtomicBool`; when it is set the sweep stops between
+//! evaluations and returns [`Error::Cancelled`].
+
+use crate::error::{Error, Result};
+use crate::input::scene::{Scene, PRESSURE_RANGE};
+use crate::theory::engine::{self, Evaluation, Options};
+use crate::theory::gap::{self, GapTable};
+use rayon::prelude::*;
+use serde::Serialize;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Largest grid step in ln p* of a sweep's U table: coarser requested spacings are refined by
+/// an integer factor. 0.15 keeps the estimated gap error below ~1e-3 relative where
+/// ū > 1e-3 h_rms (each row reports its own estimate), so a 64-point chart over three decades
+/// (spacing 0.11) needs no extra loads below `to`.
+pub const SWEEP_STEP_LN: f64 = 0.15;
+
+/// The load range of a sweep (reduced pressures, log-spaced).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SweepSpec {
+    /// First p*.
+    pub from: f64,
+    /// Last p* (≥ from; equal only with one point).
+    pub to: f64,
+    /// Number of points (≥ 1).
+    pub points: usize,
+}
+
+impl SweepSpec {
+    /// Checks the range against the engine's pressure range.
+    pub fn validate(&self) -> Result<()> {
+        let allowed = format!("{:e} <= p* <= {:e}", PRESSURE_RANGE.0, PRESSURE_RANGE.1);
+        for (name, v) in [("--from", self.from), ("--to", self.to)] {
+            if !(v >= PRESSURE_RANGE.0 && v <= PRESSURE_RANGE.1) {
+                return Err(Error::field(name, v, allowed.clone()));
+            }
+        }
+        if !(1..=100_000).contains(&self.points) {
+            return Err(Error::field("--points", self.points, "1 <= points <= 100000"));
+        }
+        if self.points > 1 && self.to <= self.from {
+            return Err(Error::field(
+                "--to",
+                self.to,
+                format!("a p* > --from = {} (or --points 1)", self.from),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The requested loads.
+    pub fn pressures(&self) -> Vec<f64> {
+        if self.points == 1 {
+            return vec![self.from];
+        }
+        let (a, b) = (self.from.ln(), self.to.ln());
+        (0..self.points)
+            .map(|i| (a + (b - a) * i as f64 / (self.points - 1) as f64).exp())
+            .collect()
+    }
+}
+
+/// One load of a sweep.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SweepRow {
+    /// p*.
+    pub p: f64,
+    /// a_r(q_s).
+    pub a_r: f64,
+    /// ū/h_rms.
+    pub mean_gap_rel: f64,
+    /// ū (m).
+    pub mean_gap: f64,
+    /// σ̄_c* (reduced by E*ḡ).
+    pub mean_contact_stress: f64,
+    /// U (J/m²) [S-11].
+    pub elastic_energy: f64,
+    /// Whether the engine converged at this load.
+    pub converged: bool,
+    /// U* = U/(E*ḡh_rms).
+    pub elastic_energy_reduced: f64,
+    /// Estimated absolute quadrature error of ū/h_rms.
+    pub mean_gap_error: f64,
+}
+
+/// The result of a sweep.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Sweep {
+    /// One row per requested load, in increasing p*.
+    pub rows: Vec<SweepRow>,
+    /// Number of engine evaluations spent (requested loads + refinement + extension).
+    pub evaluations: usize,
+    /// p* at which the contact is full (the top of the gap grid).
+    pub full_contact_pressure: f64,
+    /// Whether every monotonicity the physics implies held (a_r increasing, ū decreasing)
+    /// over the rows with numbers; false flags a branch change (e.g. an adhesive jump).
+    pub monotone: bool,
+    /// Requested loads whose solver did not converge (their rows are null).
+    pub failed_loads: Vec<f64>,
+    /// What failed and what it means for the other rows; absent when every load converged.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+impl Sweep {
+    /// Largest relative errors of a_r and ū (where ū > 1e-3 h_rms) of this sweep against a
+    /// sweep of the same range `ratio` times finer (row k here is row ratio·k of `fine`).
+    pub fn max_errors_against(&self, fine: &Sweep, ratio: usize) -> (f64, f64) {
+        let rel = |a: f64, b: f64| if b == 0.0 { a.abs() } else { (a / b - 1.0).abs() };
+        let (mut ea, mut eg) = (0.0f64, 0.0f64);
+        for (k, r) in self.rows.iter().enumerate() {
+            let f = &fine.rows[ratio * k];
+            ea = ea.max(rel(r.a_r, f.a_r));
+            if f.mean_gap_rel > 1e-3 {
+                eg = eg.max(rel(r.mean_gap_rel, f.mean_gap_rel));
+            }
+        }
+        (ea, eg)
+    }
+}
+
+/// Options that make per-load evaluations cheap (no Pr table, no resolution record) and
+/// accurate enough for the energy route ([`gap::ENERGY_RTOL`]).
+fn lean(opts: &Options) -> Options {
+    let mut o = *opts;
+    o.sigma_points = 2;
+    o.accuracy.resolution_points = 2;
+    o.accuracy.rtol = o.accuracy.rtol.min(gap::ENERGY_RTOL);
+    o.adhesion_error_estimate = false;
+    o.adhesion.explore_branches = false;
+    o.adhesion.thorough = false;
+    o
+}
+
+/// Evaluates one load, warm-started from the neighbouring load's result (continuation), and
+/// abandoning an adhesive fixed point when `cancel` is set.
+pub fn evaluate_node(
+    scene: &Scene,
+    p: f64,
+    opts: &Options,
+    previous: Option<&Evaluation>,
+    cancel: Option<&AtomicBool>,
+) -> Result<Evaluation> {
+    let mut s = scene.clone();
+    s.pressure = p;
+    engine::evaluate_warm(&s, opts, previous, cancel)
+}
+
+fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
+    if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
+        Err(Error::Cancelled)
+    } else {
+        Ok(())
+    }
+}
+
+/// One load's outcome: the evaluation, or why its solver did not converge.
+type NodeResult = std::result::Result<Evaluation, Error>;
+
+/// Evaluates the scene at every p* of `ps` (ascending), keeping a load whose solver did not
+/// converge as an `Err` and going on (cancellation and invalid input end the whole call): in
+/// parallel without adhesion; with it in order of increasing load with continuation, one chunk
+/// of the range per thread.
+pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<NodeResult>> {
+    let opts = lean(opts);
+    let keep = |r: Result<Evaluation>, p: f64| -> Result<NodeResult> {
+        match r {
+            Ok(ev) => Ok(Ok(ev)),
+            Err(Error::NotConverged { solver, reason }) => Ok(Err(Error::NotConverged {
+                solver: format!("{solver} at p* = {p:.6e}"),
+                reason,
+            })),
+            Err(e) => Err(e),
+        }
+    };
+    if scene.gamma == 0.0 {
+        return ps
+            .par_iter()
+            .map(|&p| {
+                check_cancel(cancel)?;
+                keep(evaluate_node(scene, p, &opts, None, cancel), p)
+            })
+            .collect();
+    }
+    // continuation runs in order of increasing load; the range is cut into one chunk per
+    // worker thread (each ≥ MIN_CHUNK loads), each chunk starting cold, i.e. from the
+    // adhesionless solution: the loading branch, like the continuation itself
+    let threads = rayon::current_num_threads().clamp(1, 8);
+    let chunks = (ps.len() / MIN_CHUNK).clamp(1, threads);
+    let size = ps.len().div_ceil(chunks);
+    let parts: Vec<Result<Vec<NodeResult>>> = ps
+        .par_chunks(size.max(1))
+        .map(|part| {
+            let mut out: Vec<NodeResult> = Vec::with_capacity(part.len());
+            for &p in part {
+                check_cancel(cancel)?;
+                let warm = out.iter().rev().find_map(|r| r.as_ref().ok());
+                // a warm start from the wrong side of a jump can stall: retry cold (from the
+                // adhesionless start, the loading branch) before giving up on this load
+                let r = match evaluate_node(scene, p, &opts, warm, cancel) {
+                    Err(Error::NotConverged { .. }) if warm.is_some() => evaluate_node(scene, p, &opts, None, cancel),
+                    r => r,
+                };
+                out.push(keep(r, p)?);
+            }
+            Ok(out)
+        })
+        .collect();
+    let mut out = Vec::with_capacity(ps.len());
+    for part in parts {
+        out.extend(part?);
+    }
+    Ok(out)
+}
+
+/// Evaluates the scene at every p* of `ps` (see [`node_results`]); the first load whose
+/// solver did not converge makes the whole call an error naming that p*.
+pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<Evaluation>> {
+    node_results(scene, ps, opts, cancel)?.into_iter().collect()
+}
+
+/// Fewest loads per continuation chunk of an adhesive sweep.
+const MIN_CHUNK: usize = 16;
+
+/// U* = U/(E*ḡh_rms) at every p* of `ps` (see [`evaluations`]).
+pub fn energies(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<f64>> {
+    let unit = crate::theory::energy::energy_unit(scene);
+    Ok(evaluations(scene, ps, opts, cancel)?
+        .iter()
+        .map(|e| e.elastic_energy / unit)
+        .collect())
+}
+
+/// Runs a sweep (see the module docs).
+pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&AtomicBool>) -> Result<Sweep> {
+    spec.validate()?;
+    let mut s0 = scene.clone();
+    s0.pressure = spec.from;
+    s0.validate()?;
+    // grid: requested points refined by an integer factor m, extended to full contact
+    let x0 = spec.from.ln();
+    let (step, m) = if spec.points > 1 {
+        let hs = (spec.to / spec.from).ln() / (spec.points - 1) as f64;
+        let m = (hs / SWEEP_STEP_LN).ceil().max(1.0) as usize;
+        (hs / m as f64, m)
+    } else {
+        (gap::GAP_STEP_LN, 1)
+    };
+    let p_full = gap::full_contact_pressure(scene);
+    let last_req = (spec.points - 1) * m;
+    let x_top = p_full.ln().max(spec.to.ln());
+    let mut n = last_req + 1;
+    while x0 + (n - 1) as f64 * step < x_top - 1e-12 || n < 9 {
+        n += 1;
+    }
+    let requested = spec.pressures();
+    let ps: Vec<f64> = (0..n)
+        .map(|i| {
+            if i % m == 0 && i / m < spec.points {
+                // requested points exactly as the spec computes them
+                requested[i / m]
+            } else {
+                (x0 + i as f64 * step).exp()
+            }
+        })
+        .map(|p: f64| p.min(PRESSURE_RANGE.1))
+        .collect();
+    let evs = node_results(scene, &ps, opts, cancel)?;
+    let unit = crate::theory::energy::energy_unit(scene);
+    // ū(p) integrates U over every load above p: below the highest failed load it is unknown
+    let last_fail = evs.iter().rposition(|e| e.is_err());
+    let first_ok = last_fail.map_or(0, |f| f + 1);
+    let table = if n - first_ok >= 4 {
+        let energy: Vec<f64> = evs[first_ok..]
+            .iter()
+            .map(|e| e.as_ref().map_or(f64::NAN, |e| e.elastic_energy / unit))
+            .collect();
+        Some(GapTable::from_energy(x0 + first_ok as f64 * step, step, energy)?)
+    } else {
+        None
+    };
+    let h_rms = scene.spectrum.rms_height();
+    let gap_at = |i: usize| -> (f64, f64) {
+        match &table {
+            Some(t) if i >= first_ok => (t.gap[i - first_ok], t.error[i - first_ok]),
+            _ => (f64::NAN, f64::NAN),
+        }
+    };
+    let mut failed_loads = Vec::new();
+    let rows: Vec<SweepRow> = (0..spec.points)
+        .map(|k| {
+            let i = k * m;
+            let (g, g_err) = gap_at(i);
+            match &evs[i] {
+                Ok(e) => SweepRow {
+                    p: ps[i],
+                    a_r: e.a_r,
+                    mean_gap_rel: g,
+                    mean_gap: g * h_rms,
+                    mean_contact_stress: e.mean_contact_stress,
+                    elastic_energy: e.elastic_energy,
+                    converged: e.converged,
+                    elastic_energy_reduced: e.elastic_energy / unit,
+                    mean_gap_error: g_err,
+                },
+                Err(_) => {
+                    failed_loads.push(ps[i]);
+                    SweepRow {
+                        p: ps[i],
+                        a_r: f64::NAN,
+                        mean_gap_rel: f64::NAN,
+                        mean_gap: f64::NAN,
+                        mean_contact_stress: f64::NAN,
+                        elastic_energy: f64::NAN,
+                        converged: false,
+                        elastic_energy_reduced: f64::NAN,
+                        mean_gap_error: f64::NAN,
+                    }
+                }
+            }
+        })
+        .collect();
+    let note = last_fail.map(|f| {
+        let first_err = evs
+            .iter()
+            .find_map(|e| e.as_ref().err())
+            .map(|e| e.to_string())
+            .unwrap_or_default();
+        format!(
+            "{} of {} loads did not converge (the first: {first_err}); their rows are empty (null), \
+             and the mean gap is unknown at and below p* = {:.6e}, the highest of them",
+            evs.iter().filter(|e| e.is_err()).count(),
+            n,
+            ps[f]
+        )
+    });
+    // monotone over the rows with numbers
+    let finite: Vec<&SweepRow> = rows.iter().filter(|r| r.a_r.is_finite()).collect();
+    let monotone = finite.windows(2).all(|w| {
+        w[1].a_r >= w[0].a_r
+            && (!w[0].mean_gap_rel.is_finite()
+                || !w[1].mean_gap_rel.is_finite()
+                || w[1].mean_gap_rel <= w[0].mean_gap_rel)
+    });
+    Ok(Sweep {
+        rows,
+        evaluations: n,
+        full_contact_pressure: p_full,
+        monotone,
+        failed_loads,
+        note,
+    })
+}

@@ -1,0 +1,141 @@
+//! Load sweeps (issue 4): rows, shared U table, refinement error, cancellation, adhesion hook,
+//! validation and the `sweep` / `run` command lines.
+
+use asperity::input::model::Model;
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use asperity::theory::engine::{self, Options};
+use asperity::theory::gap;
+use asperity::theory::sweep::{self, SweepSpec};
+use asperity::tolerances::*;
+use asperity::Error;
+
+use std::sync::atomic::AtomicBool;
+
+fn system1(n: u8) -> Scene {
+    let mut s = Preset::resolve("system-1").unwrap().scene().unwrap();
+    s.gamma = 0.0;
+    s.model = Model::named(n).unwrap();
+    s
+}
+
+#[test]
+fn rows_match_single_evaluations() {
+    let s = system1(3);
+    let spec = SweepSpec {
+        from: 1e-3,
+        to: 1.0,
+        points: 64,
+    };
+    let sw = sweep::sweep(&s, &spec, &Options::default(), None).unwrap();
+    assert_eq!(sw.rows.len(), 64);
+    // spacing 0.11 in ln p*: no refinement, only the extension to full contact
+    assert!(sw.evaluations < 64 + 20, "{}", sw.evaluations);
+    let h_rms = s.spectrum.rms_height();
+    for (r, p) in sw.rows.iter().zip(spec.pressures()) {
+        assert_eq!(r.p, p);
+        assert!((r.mean_gap - r.mean_gap_rel * h_rms).abs() < 1e-18);
+    }
+    for k in [0, 31, 63] {
+        let mut one = s.clone();
+        one.pressure = sw.rows[k].p;
+        // a sweep evaluates its loads at the energy route's tolerance
+        let mut tight = Options::default();
+        tight.accuracy.rtol = gap::ENERGY_RTOL;
+        let ev = engine::evaluate(&one, &tight).unwrap();
+        assert_eq!(ev.a_r, sw.rows[k].a_r);
+        assert_eq!(ev.elastic_energy, sw.rows[k].elastic_energy);
+        assert!((ev.mean_contact_stress - sw.rows[k].mean_contact_stress).abs() < 1e-14);
+        // the single-load gap (its own grid, step 0.1) agrees within the two error estimates
+        let g = gap::mean_gap(&one, &Options::default()).unwrap().unwrap();
+        let tol = 3.0 * (g.error + sw.rows[k].mean_gap_error) + 1e-12;
+        assert!(
+            (g.relative - sw.rows[k].mean_gap_rel).abs() < tol,
+            "{k}: {g:?} vs {:?}",
+            sw.rows[k]
+        );
+    }
+}
+
+#[test]
+fn sixty_four_points_against_four_times_finer() {
+    for n in [1, 3] {
+        let s = system1(n);
+        let coarse = SweepSpec {
+            from: 1e-3,
+            to: 1.0,
+            points: 64,
+        };
+        let fine = SweepSpec { points: 253, ..coarse };
+        let a = sweep::sweep(&s, &coarse, &Options::default(), None).unwrap();
+        let b = sweep::sweep(&s, &fine, &Options::default(), None).unwrap();
+        for (k, r) in a.rows.iter().enumerate() {
+            let f = &b.rows[4 * k];
+            assert!(((r.p - f.p) / r.p).abs() < 1e-12);
+            if f.mean_gap_rel > 1e-3 {
+                let rel = ((r.mean_gap_rel - f.mean_gap_rel) / f.mean_gap_rel).abs();
+                assert!(rel < SWEEP_REFINEMENT_REL, "model {n} p* = {}: rel {rel:.1e}", r.p);
+            }
+        }
+    }
+}
+
+#[test]
+fn cancellation_and_validation() {
+    let s = system1(1);
+    let spec = SweepSpec {
+        from: 1e-3,
+        to: 1.0,
+        points: 16,
+    };
+    let stop = AtomicBool::new(true);
+    assert_eq!(
+        sweep::sweep(&s, &spec, &Options::default(), Some(&stop)),
+        Err(Error::Cancelled)
+    );
+    for (bad, field) in [
+        (SweepSpec { from: 0.0, ..spec }, "--from"),
+        (SweepSpec { to: 1e-4, ..spec }, "--to"),
+        (SweepSpec { points: 0, ..spec }, "--points"),
+        (SweepSpec { to: f64::NAN, ..spec }, "--to"),
+    ] {
+        let e = sweep::sweep(&s, &bad, &Options::default(), None)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(field), "{e}");
+    }
+    // one point
+    let one = sweep::sweep(&s, &SweepSpec { points: 1, ..spec }, &Options::default(), None).unwrap();
+    assert_eq!(one.rows.len(), 1);
+    assert!(one.rows[0].mean_gap_rel > 0.0);
+}
+
+#[test]
+fn adhesive_sweep_is_clean() {
+    // An adhesive sweep (continuation from the neighbouring load) gives finite, converged rows
+    // and flags any non-monotone stretch (an adhesive jump).
+    for t in [f64::INFINITY, 0.05] {
+        let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+        s.thickness_qr = t;
+        assert!(s.gamma > 0.0);
+        let spec = SweepSpec {
+            from: 1e-4,
+            to: 1.0,
+            points: 32,
+        };
+        match sweep::sweep(&s, &spec, &Options::default(), None) {
+            Err(e) => panic!("t = {t}: {e}"),
+            Ok(sw) => {
+                for r in &sw.rows {
+                    assert!(r.a_r.is_finite() && r.mean_gap_rel.is_finite() && r.elastic_energy.is_finite());
+                    assert!(r.converged);
+                }
+                let mono = sw
+                    .rows
+                    .windows(2)
+                    .all(|w| w[1].a_r >= w[0].a_r && w[1].mean_gap_rel <= w[0].mean_gap_rel);
+                assert_eq!(mono, sw.monotone);
+            }
+        }
+    }
+}
