@@ -1,27 +1,173 @@
-//! Typed errors for the whole engine.
+//! Typed errors for the whole library.
 //!
-//! Every error names what went wrong in one line: the field, the value and the allowed range
-//! for bad input; the solver and the reason for a non-converged computation. The CLI prints
-//! the `Display` form to stderr and exits non-zero; the TUI shows it in the status line.
+//! Bad input is [`Error::Invalid`]: the [`Field`] it concerns, the value (formatted compactly,
+//! never as a 300-digit decimal) and the allowed range in words. The library names a field by
+//! its canonical key ([`Field::key`], the preset's dotted path where there is one); each front
+//! end renders the field in its own words (the CLI as its flag, a preset as its key, the
+//! explorer as its label), so no front end's vocabulary appears here. A computation that does
+//! not reach its tolerance is [`Error::NotConverged`], naming the solver and the reason.
 
 use std::fmt;
 
 /// Result alias used throughout the crate.
 pub type Result<T> = std::result::Result<T, Error>;
 
+/// A user-settable quantity, named independently of any front end.
+///
+/// [`Field::key`] gives the canonical key (the preset path for preset fields). Front ends map
+/// fields to their own names (e.g. [`Field::Thickness`] is `--thickness` on the command line,
+/// `load.thickness_qr` in a preset, `t·q_r` in the explorer).
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum Field {
+    /// L, the side of the periodic square (m).
+    SystemSize,
+    /// λ_r, the roll-off wavelength (m).
+    RolloffWavelength,
+    /// λ_s, the short-wavelength cut-off (m).
+    ShortWavelength,
+    /// H, the Hurst exponent.
+    Hurst,
+    /// ḡ, the rms gradient.
+    RmsGradient,
+    /// h_rms (m).
+    RmsHeight,
+    /// A height map (its values or its shape).
+    HeightMap,
+    /// E*, the contact modulus (Pa).
+    ContactModulus,
+    /// γ_s, the surface energy (J/m²).
+    SurfaceEnergy,
+    /// ρ, the range of the adhesive interaction (m).
+    Range,
+    /// p* = p/(E*ḡ), the reduced nominal pressure.
+    Pressure,
+    /// p, the nominal pressure in Pa (GFMD).
+    PressurePa,
+    /// t·q_r, the reduced slab thickness (∞ = semi-infinite).
+    Thickness,
+    /// The model variant (1–4 or custom).
+    Model,
+    /// c₁ of W(a) [S-17].
+    C1,
+    /// c₂ of W(a) [S-17].
+    C2,
+    /// α, the exponent of W in the stress broadening [S-15].
+    Alpha,
+    /// k_G, the Griffith prefactor [S-8].
+    KGriffith,
+    /// The pair (c₁, c₂) together (W must stay positive on [0, 1]).
+    WeightCoefficients,
+    /// Relative tolerance of the adhesionless variance ODE.
+    Rtol,
+    /// Resolution steps per decade of the adhesive solver.
+    AdhesionSteps,
+    /// Stress grid points per standard deviation of the adhesive solver.
+    AdhesionPoints,
+    /// Fixed-point tolerance of the adhesive solver.
+    AdhesionTol,
+    /// Upper end σ*_max of the tabulated Pr(σ*).
+    SigmaMax,
+    /// Lower end of a load sweep (p*).
+    SweepFrom,
+    /// Upper end of a load sweep (p*).
+    SweepTo,
+    /// Number of loads in a sweep.
+    SweepPoints,
+    /// GFMD grid side N.
+    Grid,
+    /// GFMD relative force residual.
+    GfmdTolerance,
+    /// GFMD iteration limit.
+    MaxIterations,
+    /// Number of histogram bins of a GFMD Pr(σ*).
+    Bins,
+    /// Initial contact gap of a GFMD run (m).
+    ContactGap,
+    /// L/λ_r of a reduced GFMD system.
+    GfmdSizeRatio,
+    /// λ_r/λ_s of a reduced GFMD system.
+    GfmdBandwidth,
+    /// λ_s/Δa of a reduced GFMD system.
+    GfmdPointsPerShortWavelength,
+    /// Any other field, by its canonical key (e.g. `reference[2].pressure`).
+    Other(String),
+}
+
+impl Field {
+    /// The canonical key: the preset path where the field lives in a preset (e.g.
+    /// `load.thickness_qr`), otherwise a dotted name in the same style.
+    pub fn key(&self) -> &str {
+        match self {
+            Field::SystemSize => "surface.system_size_m",
+            Field::RolloffWavelength => "surface.rolloff_wavelength_m",
+            Field::ShortWavelength => "surface.short_wavelength_m",
+            Field::Hurst => "surface.hurst",
+            Field::RmsGradient => "surface.rms_gradient",
+            Field::RmsHeight => "surface.rms_height_m",
+            Field::HeightMap => "surface.height_map",
+            Field::ContactModulus => "material.contact_modulus_pa",
+            Field::SurfaceEnergy => "adhesion.surface_energy_j_m2",
+            Field::Range => "adhesion.range_m",
+            Field::Pressure => "load.pressure",
+            Field::PressurePa => "load.pressure_pa",
+            Field::Thickness => "load.thickness_qr",
+            Field::Model => "model.variant",
+            Field::C1 => "model.c1",
+            Field::C2 => "model.c2",
+            Field::Alpha => "model.alpha",
+            Field::KGriffith => "model.k_griffith",
+            Field::WeightCoefficients => "model.c1/c2",
+            Field::Rtol => "accuracy.rtol",
+            Field::AdhesionSteps => "accuracy.adhesion_steps",
+            Field::AdhesionPoints => "accuracy.adhesion_points",
+            Field::AdhesionTol => "accuracy.adhesion_tol",
+            Field::SigmaMax => "accuracy.sigma_max",
+            Field::SweepFrom => "sweep.from",
+            Field::SweepTo => "sweep.to",
+            Field::SweepPoints => "sweep.points",
+            Field::Grid => "gfmd.grid",
+            Field::GfmdTolerance => "gfmd.tolerance",
+            Field::MaxIterations => "gfmd.max_iterations",
+            Field::Bins => "gfmd.bins",
+            Field::ContactGap => "gfmd.contact_gap_m",
+            Field::GfmdSizeRatio => "gfmd.system_size_ratio",
+            Field::GfmdBandwidth => "gfmd.bandwidth",
+            Field::GfmdPointsPerShortWavelength => "gfmd.points_per_short_wavelength",
+            Field::Other(k) => k,
+        }
+    }
+}
+
+impl fmt::Display for Field {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.key())
+    }
+}
+
 /// Everything that can go wrong in asperity.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Error {
     /// A field has a value outside its allowed range (or NaN).
+    Invalid {
+        /// Which field.
+        field: Field,
+        /// The offending value, compactly formatted (see [`fmt_value`]).
+        value: String,
+        /// The allowed range, in words, e.g. `1e-12 <= value <= 1000`.
+        allowed: String,
+    },
+    /// A field has a value outside its allowed range (or NaN), named by a free-form string.
+    ///
+    /// Kept while the code base moves to [`Error::Invalid`]; new code uses [`Error::invalid`].
     InvalidField {
-        /// Dotted path of the field, e.g. `surface.hurst` or `--pressure`.
+        /// Name of the field.
         field: String,
         /// The offending value, as the user gave it.
         value: String,
-        /// The allowed range, in words, e.g. `0 < hurst <= 1`.
+        /// The allowed range, in words.
         allowed: String,
     },
-    /// A preset file could not be read or parsed.
+    /// A preset (or tour, or other TOML input) could not be read or parsed.
     Preset {
         /// The file (or preset name).
         source: String,
@@ -39,12 +185,31 @@ pub enum Error {
     Unsupported(String),
     /// I/O failure (file not found, cannot write), with the path.
     Io(String),
-    /// The caller cancelled a long computation (e.g. a sweep the TUI no longer needs).
+    /// The caller cancelled a long computation (e.g. a sweep the explorer no longer needs).
     Cancelled,
 }
 
 impl Error {
-    /// Shorthand for [`Error::InvalidField`].
+    /// An [`Error::Invalid`] for `field`: `value` is formatted with [`fmt_value`] when it is a
+    /// number (use [`Error::invalid_text`] for non-numeric values).
+    pub fn invalid(field: Field, value: f64, allowed: impl Into<String>) -> Self {
+        Error::Invalid {
+            field,
+            value: fmt_value(value),
+            allowed: allowed.into(),
+        }
+    }
+
+    /// An [`Error::Invalid`] whose value is text (a model name, a path, a shape).
+    pub fn invalid_text(field: Field, value: impl fmt::Display, allowed: impl Into<String>) -> Self {
+        Error::Invalid {
+            field,
+            value: value.to_string(),
+            allowed: allowed.into(),
+        }
+    }
+
+    /// Shorthand for [`Error::InvalidField`] (free-form field name).
     pub fn field(field: impl Into<String>, value: impl fmt::Display, allowed: impl Into<String>) -> Self {
         Error::InvalidField {
             field: field.into(),
@@ -52,11 +217,20 @@ impl Error {
             allowed: allowed.into(),
         }
     }
+
+    /// The field this error is about, if it is an [`Error::Invalid`].
+    pub fn invalid_field(&self) -> Option<&Field> {
+        match self {
+            Error::Invalid { field, .. } => Some(field),
+            _ => None,
+        }
+    }
 }
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            Error::Invalid { field, value, allowed } => write!(f, "invalid {field} = {value}: allowed {allowed}"),
             Error::InvalidField { field, value, allowed } => {
                 write!(f, "invalid {field} = {value}: allowed {allowed}")
             }
@@ -74,10 +248,46 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+/// Formats a number for a message: plain for moderate magnitudes, scientific otherwise, so
+/// that 1e300 prints as `1e300`, not as 301 digits; `NaN`, `inf`, `-inf` as such.
+pub fn fmt_value(x: f64) -> String {
+    if !x.is_finite() {
+        return format!("{x}");
+    }
+    let a = x.abs();
+    if a == 0.0 || (1e-4..1e6).contains(&a) {
+        // shortest representation that round-trips
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// Checks that `value` is not NaN and lies in `[lo, hi]` (bounds may be infinite); the error
+/// states the range as `lo <= value <= hi`.
+pub fn check_in(field: Field, value: f64, lo: f64, hi: f64) -> Result<f64> {
+    if value.is_nan() || value < lo || value > hi {
+        return Err(Error::invalid(
+            field,
+            value,
+            format!("{} <= value <= {}", fmt_value(lo), fmt_value(hi)),
+        ));
+    }
+    Ok(value)
+}
+
+/// Checks that `value` is finite and strictly positive.
+pub fn check_finite_positive(field: Field, value: f64) -> Result<f64> {
+    if !(value.is_finite() && value > 0.0) {
+        return Err(Error::invalid(field, value, "a finite number > 0"));
+    }
+    Ok(value)
+}
+
 /// Checks that `value` is finite and lies in `[lo, hi]` (bounds may be infinite).
 pub fn check_range(field: &str, value: f64, lo: f64, hi: f64, allowed: &str) -> Result<f64> {
     if value.is_nan() || value < lo || value > hi {
-        return Err(Error::field(field, value, allowed));
+        return Err(Error::field(field, fmt_value(value), allowed));
     }
     Ok(value)
 }
@@ -85,7 +295,32 @@ pub fn check_range(field: &str, value: f64, lo: f64, hi: f64, allowed: &str) -> 
 /// Checks that `value` is finite and strictly positive.
 pub fn check_positive(field: &str, value: f64) -> Result<f64> {
     if !(value.is_finite() && value > 0.0) {
-        return Err(Error::field(field, value, "a finite number > 0"));
+        return Err(Error::field(field, fmt_value(value), "a finite number > 0"));
     }
     Ok(value)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn values_print_compactly() {
+        assert_eq!(fmt_value(1e300), "1e300");
+        assert_eq!(fmt_value(-1e-300), "-1e-300");
+        assert_eq!(fmt_value(0.005), "0.005");
+        assert_eq!(fmt_value(0.0), "0");
+        assert_eq!(fmt_value(f64::NEG_INFINITY), "-inf");
+        assert_eq!(fmt_value(f64::NAN), "NaN");
+    }
+
+    #[test]
+    fn invalid_names_the_field_by_its_key() {
+        let e = check_in(Field::Pressure, 1e300, 1e-12, 1e3).unwrap_err();
+        assert_eq!(e.invalid_field(), Some(&Field::Pressure));
+        assert_eq!(
+            e.to_string(),
+            "invalid load.pressure = 1e300: allowed 1e-12 <= value <= 1000"
+        );
+    }
 }
