@@ -67,6 +67,8 @@ pub enum Field {
     AdhesionTol,
     /// Upper end σ*_max of the tabulated Pr(σ*).
     SigmaMax,
+    /// Number of points of the tabulated Pr(σ*).
+    SigmaPoints,
     /// Lower end of a load sweep (p*).
     SweepFrom,
     /// Upper end of a load sweep (p*).
@@ -122,6 +124,7 @@ impl Field {
             Field::AdhesionPoints => "accuracy.adhesion_points",
             Field::AdhesionTol => "accuracy.adhesion_tol",
             Field::SigmaMax => "accuracy.sigma_max",
+            Field::SigmaPoints => "accuracy.sigma_points",
             Field::SweepFrom => "sweep.from",
             Field::SweepTo => "sweep.to",
             Field::SweepPoints => "sweep.points",
@@ -135,6 +138,15 @@ impl Field {
             Field::GfmdPointsPerShortWavelength => "gfmd.points_per_short_wavelength",
             Field::Other(k) => k,
         }
+    }
+}
+
+impl Field {
+    /// The short name used inside range descriptions: the last segment of the key (e.g.
+    /// `hurst`, `thickness_qr`).
+    pub fn short(&self) -> &str {
+        let k = self.key();
+        k.rsplit('.').next().unwrap_or(k)
     }
 }
 
@@ -263,15 +275,28 @@ pub fn fmt_value(x: f64) -> String {
     }
 }
 
+/// Formats user text for a message: a number as [`fmt_value`] does (so `1e300` typed as 301
+/// digits prints as `1e300`), anything else as given, cut to 60 characters.
+pub fn fmt_text(s: &str) -> String {
+    let t = s.trim();
+    if let Ok(x) = t.parse::<f64>() {
+        if t.len() > 12 {
+            return fmt_value(x);
+        }
+    }
+    if t.chars().count() > 60 {
+        let cut: String = t.chars().take(57).collect();
+        return format!("{cut}...");
+    }
+    t.to_string()
+}
+
 /// Checks that `value` is not NaN and lies in `[lo, hi]` (bounds may be infinite); the error
 /// states the range as `lo <= value <= hi`.
 pub fn check_in(field: Field, value: f64, lo: f64, hi: f64) -> Result<f64> {
     if value.is_nan() || value < lo || value > hi {
-        return Err(Error::invalid(
-            field,
-            value,
-            format!("{} <= value <= {}", fmt_value(lo), fmt_value(hi)),
-        ));
+        let allowed = format!("{} <= {} <= {}", fmt_value(lo), field.short(), fmt_value(hi));
+        return Err(Error::invalid(field, value, allowed));
     }
     Ok(value)
 }
@@ -320,7 +345,7 @@ mod tests {
         assert_eq!(e.invalid_field(), Some(&Field::Pressure));
         assert_eq!(
             e.to_string(),
-            "invalid load.pressure = 1e300: allowed 1e-12 <= value <= 1000"
+            "invalid load.pressure = 1e300: allowed 1e-12 <= pressure <= 1000"
         );
     }
 }

@@ -57,7 +57,10 @@ fn bad_presets_name_the_field_and_range() {
     let cases = [
         ("malformed.toml", &["line 2"][..]),
         ("unknown-key.toml", &["unknown field `roughness`"][..]),
-        ("negative-length.toml", &["surface.system_size_m", "-0.0001", "> 0"][..]),
+        (
+            "negative-length.toml",
+            &["surface.system_size_m", "-0.0001", "1e-12 <= system_size_m"][..],
+        ),
         (
             "short-above-rolloff.toml",
             &["surface.short_wavelength_m", "< rolloff_wavelength_m"][..],

@@ -1,6 +1,7 @@
 //! Load sweeps (issue 4): rows, shared U table, refinement error, cancellation, adhesion hook,
 //! validation and the `sweep` / `run` command lines.
 
+use asperity::error::Field;
 use asperity::input::model::Model;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
@@ -94,15 +95,14 @@ fn cancellation_and_validation() {
         Err(Error::Cancelled)
     );
     for (bad, field) in [
-        (SweepSpec { from: 0.0, ..spec }, "--from"),
-        (SweepSpec { to: 1e-4, ..spec }, "--to"),
-        (SweepSpec { points: 0, ..spec }, "--points"),
-        (SweepSpec { to: f64::NAN, ..spec }, "--to"),
+        (SweepSpec { from: 0.0, ..spec }, Field::SweepFrom),
+        (SweepSpec { to: 1e-4, ..spec }, Field::SweepTo),
+        (SweepSpec { points: 0, ..spec }, Field::SweepPoints),
+        (SweepSpec { to: f64::NAN, ..spec }, Field::SweepTo),
     ] {
-        let e = sweep::sweep(&s, &bad, &Options::default(), None)
-            .unwrap_err()
-            .to_string();
-        assert!(e.contains(field), "{e}");
+        let e = sweep::sweep(&s, &bad, &Options::default(), None).unwrap_err();
+        assert_eq!(e.invalid_field(), Some(&field), "{e}");
+        assert!(e.to_string().contains(field.key()), "{e}");
     }
     // one point
     let one = sweep::sweep(&s, &SweepSpec { points: 1, ..spec }, &Options::default(), None).unwrap();

@@ -31,31 +31,31 @@ pub struct GfmdArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Reduced pressure p* = p/(E* g), g the map's rms gradient (default: the preset's).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub pressure: Option<f64>,
     /// Grid side N (default: the preset's [gfmd] grid); keeps L/lambda_r and lambda_s/da.
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "surface")]
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "surface")]
     pub grid: Option<i64>,
     /// Seed of the random surface.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::whole_number_u64)]
     pub seed: u64,
     /// Height map to use instead of a generated one (text matrix, metres, one row per line).
     #[arg(long, requires = "size")]
     pub surface: Option<PathBuf>,
     /// Side L of the --surface map in metres.
-    #[arg(long, requires = "surface")]
+    #[arg(long, requires = "surface", allow_hyphen_values = true)]
     pub size: Option<f64>,
     /// Write the height map used to this file (text matrix).
     #[arg(long)]
     pub save_surface: Option<PathBuf>,
     /// Relative force residual to reach.
-    #[arg(long, default_value = "1e-8")]
+    #[arg(long, default_value = "1e-8", allow_hyphen_values = true)]
     pub tolerance: f64,
     /// Largest number of FIRE steps.
-    #[arg(long, default_value_t = GfmdOptions::default().max_iterations)]
+    #[arg(long, default_value_t = GfmdOptions::default().max_iterations, allow_hyphen_values = true, value_parser = super::whole_number)]
     pub max_iterations: usize,
     /// Number of bins of the Pr(sigma*) histogram.
-    #[arg(long, default_value_t = GfmdOptions::default().pr_bins)]
+    #[arg(long, default_value_t = GfmdOptions::default().pr_bins, allow_hyphen_values = true, value_parser = super::whole_number)]
     pub bins: usize,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Json)]

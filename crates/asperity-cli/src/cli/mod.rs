@@ -7,9 +7,11 @@ use asperity::theory::engine;
 pub mod bench;
 pub mod gfmd;
 
+use asperity::error::Field;
 use asperity::error::{Error, Result};
-use asperity::input::model::Model;
+use asperity::input::model::{Model, ModelKind};
 use asperity::input::preset::{self, Preset};
+use asperity::input::scene::ThicknessQr;
 use asperity::input::scene::{Scene, SceneSummary};
 use asperity::theory::persson::Accuracy;
 use clap::{Args, Parser, Subcommand, ValueEnum};
@@ -65,28 +67,28 @@ pub struct SceneArgs {
     #[arg(long, default_value = preset::DEFAULT_PRESET)]
     pub preset: String,
     /// Model variant: 1, 2, 3, 4 or custom (default: the preset's).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub model: Option<String>,
     /// Custom model: c1 of W(a) = 1 - c1(1-a^2) - c2(1-a^4) (implies --model custom).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub c1: Option<f64>,
     /// Custom model: c2 (implies --model custom).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub c2: Option<f64>,
     /// Custom model: broadening exponent alpha, dp ~ W^alpha (implies --model custom).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub alpha: Option<f64>,
     /// Custom model: Griffith prefactor k_G (implies --model custom).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub k_griffith: Option<f64>,
     /// Custom model: cap sigma_a at gamma_s/rho (true/false; implies --model custom).
     #[arg(long)]
     pub cap: Option<bool>,
     /// Thickness t*q_r, or inf for a semi-infinite body (default: the preset's).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub thickness: Option<String>,
     /// Surface energy gamma_s in J/m^2; 0 = no adhesion.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub gamma: Option<f64>,
 }
 
@@ -97,57 +99,29 @@ pub struct RunArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Reduced pressure p* = p/(E* g) (default: the preset's reference load).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub pressure: Option<f64>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Json)]
     pub format: Format,
     /// Number of sigma* points of the Pr(sigma*) table.
-    #[arg(long, default_value_t = 201)]
+    #[arg(long, default_value_t = 201, allow_hyphen_values = true, value_parser = whole_number)]
     pub sigma_points: usize,
     /// Largest sigma* of the Pr table (default p* + 5 times the distribution's width).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub sigma_max: Option<f64>,
     /// Relative tolerance of the variance ODE (accuracy knob).
-    #[arg(long, default_value_t = Accuracy::default().rtol)]
+    #[arg(long, default_value_t = Accuracy::default().rtol, allow_hyphen_values = true)]
     pub rtol: f64,
     /// Adhesive solver: march steps per unit of ln q (accuracy knob; see BENCHMARKS.md).
-    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().steps_per_ln_q)]
+    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().steps_per_ln_q, allow_hyphen_values = true)]
     pub adhesion_steps: f64,
     /// Adhesive solver: grid points per standard deviation of Pr (accuracy knob).
-    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().points_per_width)]
+    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().points_per_width, allow_hyphen_values = true)]
     pub adhesion_points: f64,
     /// Adhesive solver: fixed-point tolerance max|G(a) - a|/a_r.
-    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().tol)]
+    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().tol, allow_hyphen_values = true)]
     pub adhesion_tol: f64,
-}
-
-/// Parses a thickness: a positive number or `inf`/`infinity`.
-pub fn parse_thickness(s: &str) -> Result<f64> {
-    let t = s.trim().to_ascii_lowercase();
-    if matches!(t.as_str(), "inf" | "infinity" | "∞" | "+inf") {
-        return Ok(f64::INFINITY);
-    }
-    let v: f64 = t
-        .parse()
-        .map_err(|_| Error::field("--thickness", s, "a number t*q_r > 0, or inf"))?;
-    if !(v.is_finite() && v > 0.0) {
-        return Err(Error::field("--thickness", s, "a number t*q_r > 0, or inf"));
-    }
-    Ok(v)
-}
-
-/// Parses `--model`.
-pub fn parse_model(s: &str) -> Result<Option<Model>> {
-    match s.trim() {
-        "custom" => Ok(None),
-        n => match n.parse::<u8>() {
-            Ok(k) => Model::named(k)
-                .map(Some)
-                .map_err(|_| Error::field("--model", s, "1, 2, 3, 4 or custom")),
-            Err(_) => Err(Error::field("--model", s, "1, 2, 3, 4 or custom")),
-        },
-    }
 }
 
 impl SceneArgs {
@@ -157,10 +131,13 @@ impl SceneArgs {
         let mut scene = preset.scene()?;
         let mut model = scene.model;
         if let Some(m) = &self.model {
-            match parse_model(m)? {
-                Some(named) => model = named,
-                None => model.kind = asperity::input::model::ModelKind::Custom,
-            }
+            model = match m.parse::<ModelKind>()? {
+                ModelKind::Custom => Model {
+                    kind: ModelKind::Custom,
+                    ..model
+                },
+                kind => Model::of_kind(kind, &model)?,
+            };
         }
         let custom = self.c1.is_some()
             || self.c2.is_some()
@@ -169,8 +146,8 @@ impl SceneArgs {
             || self.cap.is_some();
         if custom {
             if self.model.as_deref().is_some_and(|m| m != "custom") {
-                return Err(Error::field(
-                    "--model",
+                return Err(Error::invalid_text(
+                    Field::Model,
                     self.model.as_deref().unwrap_or(""),
                     "custom when --c1/--c2/--alpha/--k-griffith/--cap are given",
                 ));
@@ -181,44 +158,19 @@ impl SceneArgs {
                 self.alpha.unwrap_or(model.alpha),
                 self.k_griffith.unwrap_or(model.k_griffith),
                 self.cap.unwrap_or(model.cap),
-            )
-            .map_err(|e| match e {
-                Error::InvalidField { field, value, allowed } => Error::InvalidField {
-                    field: format!("--{}", field.trim_start_matches("model.").replace('_', "-")),
-                    value,
-                    allowed,
-                },
-                e => e,
-            })?;
+            )?;
         }
         scene.model = model;
         if let Some(t) = &self.thickness {
-            scene.thickness_qr = parse_thickness(t)?;
+            scene.thickness_qr = t.parse::<ThicknessQr>()?.0;
         }
         if let Some(g) = self.gamma {
-            if !(g.is_finite() && g >= 0.0) {
-                return Err(Error::field("--gamma", g, "gamma >= 0 (J/m^2; 0 = no adhesion)"));
-            }
             scene.gamma = g;
         }
         if let Some(p) = pressure {
-            if !p.is_finite() || p <= 0.0 {
-                return Err(Error::field("--pressure", p, "a reduced pressure p* > 0"));
-            }
             scene.pressure = p;
         }
-        scene.validate().map_err(|e| match e {
-            Error::InvalidField { field, value, allowed }
-                if ["pressure", "thickness", "gamma"].contains(&field.as_str()) =>
-            {
-                Error::InvalidField {
-                    field: format!("--{field}"),
-                    value,
-                    allowed,
-                }
-            }
-            e => e,
-        })?;
+        scene.validate()?;
         Ok((preset, scene))
     }
 }
@@ -298,30 +250,6 @@ pub struct RunOutput {
 
 /// Evaluates one scene as `run` does.
 pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunOutput> {
-    if !(args.rtol > 0.0 && args.rtol < 1e-2) {
-        return Err(Error::field("--rtol", args.rtol, "0 < rtol < 1e-2"));
-    }
-    if args.sigma_points < 2 || args.sigma_points > 1_000_000 {
-        return Err(Error::field(
-            "--sigma-points",
-            args.sigma_points,
-            "2 <= sigma-points <= 1000000",
-        ));
-    }
-    for (name, v) in [
-        ("--adhesion-steps", args.adhesion_steps),
-        ("--adhesion-points", args.adhesion_points),
-    ] {
-        // the error estimate halves each: keep the halves valid
-        if !(4.0..=1e4).contains(&v) {
-            return Err(Error::field(name, v, "4 <= value <= 10000"));
-        }
-    }
-    if let Some(s) = args.sigma_max {
-        if !(s.is_finite() && s > 0.0) {
-            return Err(Error::field("--sigma-max", s, "sigma* > 0"));
-        }
-    }
     let opts = engine::Options {
         accuracy: Accuracy {
             rtol: args.rtol,
@@ -337,6 +265,7 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         },
         ..engine::Options::default()
     };
+    opts.validate()?;
     let ev = engine::evaluate(scene, &opts)?;
     // the gap needs the loading branch at every load up to full contact: report why it is
     // missing rather than failing the whole run
@@ -434,9 +363,104 @@ fn run_table(out: &RunOutput) -> String {
     t.trim_end().to_string()
 }
 
+/// The command-line name of a field: its flag where one sets it, else its canonical key.
+pub fn field_name(field: &Field) -> &str {
+    match field {
+        Field::Pressure => "--pressure",
+        Field::Thickness => "--thickness",
+        Field::SurfaceEnergy => "--gamma",
+        Field::Model => "--model",
+        Field::C1 => "--c1",
+        Field::C2 => "--c2",
+        Field::Alpha => "--alpha",
+        Field::KGriffith => "--k-griffith",
+        Field::WeightCoefficients => "--c1/--c2",
+        Field::Rtol => "--rtol",
+        Field::AdhesionSteps => "--adhesion-steps",
+        Field::AdhesionPoints => "--adhesion-points",
+        Field::AdhesionTol => "--adhesion-tol",
+        Field::SigmaMax => "--sigma-max",
+        Field::SigmaPoints => "--sigma-points",
+        Field::SweepFrom => "--from",
+        Field::SweepTo => "--to",
+        Field::SweepPoints => "--points",
+        Field::Grid => "--grid",
+        Field::GfmdTolerance => "--tolerance",
+        Field::MaxIterations => "--max-iterations",
+        Field::Bins => "--bins",
+        Field::SystemSize => "--size",
+        Field::HeightMap => "--surface",
+        other => other.key(),
+    }
+}
+
+/// An error in the command line's words: invalid fields are named by their flag.
+pub fn render_error(e: &Error) -> String {
+    match e {
+        Error::Invalid { field, value, allowed } => {
+            format!("invalid {} = {value}: allowed {allowed}", field_name(field))
+        }
+        e => e.to_string(),
+    }
+}
+
+/// Parses a count (a whole number ≥ 0); the library checks its range.
+pub fn whole_number(s: &str) -> std::result::Result<usize, String> {
+    whole_number_u64(s).and_then(|v| usize::try_from(v).map_err(|_| "a whole number".to_string()))
+}
+
+/// Parses a whole number ≥ 0 (e.g. a seed).
+pub fn whole_number_u64(s: &str) -> std::result::Result<u64, String> {
+    s.trim().parse::<u64>().map_err(|_| "a whole number >= 0".to_string())
+}
+
+/// A command-line parse error in one line, in the same shape as the other input errors:
+/// `invalid --flag = value: allowed …` where clap knows the flag and value, else clap's
+/// first line.
+pub fn clap_error_line(e: &clap::Error) -> String {
+    use clap::error::{ContextKind, ContextValue};
+    let text = |k| match e.get(k) {
+        Some(ContextValue::String(s)) => Some(s.clone()),
+        _ => None,
+    };
+    if let (Some(arg), Some(value)) = (text(ContextKind::InvalidArg), text(ContextKind::InvalidValue)) {
+        let flag = arg.split_whitespace().next().unwrap_or(&arg).to_string();
+        let allowed = match e.get(ContextKind::ValidValue) {
+            Some(ContextValue::Strings(v)) => v.join(", "),
+            _ => std::error::Error::source(e)
+                .map(|s| s.to_string())
+                .unwrap_or_else(|| "see --help".into()),
+        };
+        return format!(
+            "invalid {flag} = {}: allowed {allowed}",
+            asperity::error::fmt_text(&value)
+        );
+    }
+    let rendered = e.to_string();
+    let first = rendered.lines().next().unwrap_or("").trim();
+    first.strip_prefix("error: ").unwrap_or(first).to_string()
+}
+
 /// Runs the CLI; returns the process exit code.
 pub fn main() -> i32 {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion)
+                || e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+            {
+                let _ = e.print();
+                return if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                    2
+                } else {
+                    0
+                };
+            }
+            eprintln!("asperity: {}", clap_error_line(&e));
+            return 2;
+        }
+    };
     let result = match cli.command {
         None => tui_entry(preset::DEFAULT_PRESET),
         Some(Command::Tui { preset }) => tui_entry(&preset),
@@ -464,7 +488,7 @@ pub fn main() -> i32 {
     match result {
         Ok(()) => 0,
         Err(e) => {
-            eprintln!("asperity: {e}");
+            eprintln!("asperity: {}", render_error(&e));
             2
         }
     }

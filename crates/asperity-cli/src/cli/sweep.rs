@@ -24,13 +24,13 @@ pub struct SweepArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// First reduced pressure p*.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub from: f64,
     /// Last reduced pressure p*.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub to: f64,
     /// Number of log-spaced loads from --from to --to.
-    #[arg(long, default_value_t = 64)]
+    #[arg(long, default_value_t = 64, allow_hyphen_values = true, value_parser = super::whole_number)]
     pub points: usize,
     /// Output format.
     #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]

@@ -784,11 +784,7 @@ impl App {
                 };
             }
             Param::Model => {
-                let m = match crate::cli::parse_model(t)? {
-                    Some(named) => named,
-                    None => Model::custom(m.c1, m.c2, m.alpha, m.k_griffith, m.cap)?,
-                };
-                s.model = m;
+                s.model = Model::of_kind(t.parse::<asperity::input::model::ModelKind>()?, &m)?;
             }
             Param::Pressure => {
                 let p = parse_number("p*", t)?;
@@ -797,7 +793,7 @@ impl App {
                 }
                 s.pressure = p;
             }
-            Param::Thickness => s.thickness_qr = crate::cli::parse_thickness(t)?,
+            Param::Thickness => s.thickness_qr = t.parse::<asperity::input::scene::ThicknessQr>()?.0,
             Param::Gamma => {
                 s.gamma = if t.eq_ignore_ascii_case("off") {
                     0.0

@@ -16,7 +16,7 @@
 //! Model 4 is printed in \[S\] as W = 0.35 + 0.65(1 − a²), contradicting "W(a_r → 0) = 0.35"
 //! in the next sentence; physics.md §7 erratum 2 fixes it to W = 0.35 + 0.65a² (c₁ = 0.65).
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use serde::{Deserialize, Serialize};
 
 /// Which variant of the theory a [`Model`] is.
@@ -52,15 +52,74 @@ pub struct Model {
     pub cap: bool,
 }
 
+/// Hashes the coefficients by their bit patterns (a cache key for front ends).
+impl std::hash::Hash for Model {
+    fn hash<H: std::hash::Hasher>(&self, h: &mut H) {
+        self.number().hash(h);
+        for x in [self.c1, self.c2, self.alpha, self.k_griffith] {
+            x.to_bits().hash(h);
+        }
+        self.cap.hash(h);
+    }
+}
+
+impl std::str::FromStr for ModelKind {
+    type Err = Error;
+
+    /// `1`–`4` or `custom` (case-insensitive, surrounding blanks ignored).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::Model`] naming the allowed values.
+    fn from_str(s: &str) -> Result<ModelKind> {
+        match s.trim().to_ascii_lowercase().as_str() {
+            "1" => Ok(ModelKind::One),
+            "2" => Ok(ModelKind::Two),
+            "3" => Ok(ModelKind::Three),
+            "4" => Ok(ModelKind::Four),
+            "custom" => Ok(ModelKind::Custom),
+            _ => Err(Error::invalid_text(Field::Model, s.trim(), "1, 2, 3, 4 or custom")),
+        }
+    }
+}
+
+impl ModelKind {
+    /// The model number 1–4, or `None` for custom.
+    pub fn number(self) -> Option<u8> {
+        match self {
+            ModelKind::One => Some(1),
+            ModelKind::Two => Some(2),
+            ModelKind::Three => Some(3),
+            ModelKind::Four => Some(4),
+            ModelKind::Custom => None,
+        }
+    }
+}
+
 impl Model {
+    /// The model of kind `kind`: the named coefficients for models 1–4; for
+    /// [`ModelKind::Custom`], `current`'s coefficients marked custom (so that switching to
+    /// custom keeps what the user had and lets them edit it).
+    ///
+    /// # Errors
+    /// Those of [`Model::custom`] when `current`'s coefficients are not a valid model.
+    pub fn of_kind(kind: ModelKind, current: &Model) -> Result<Model> {
+        match kind.number() {
+            Some(n) => Model::named(n),
+            None => Model::custom(current.c1, current.c2, current.alpha, current.k_griffith, current.cap),
+        }
+    }
+
     /// Model 1–4 of \[S\] (model 4 with erratum 2 applied).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::Model`] when `n` is not 1–4.
     pub fn named(n: u8) -> Result<Model> {
         let m = match n {
             1 => (ModelKind::One, 0.0, 0.0, 0.5, 1.0, false),
             2 => (ModelKind::Two, 0.55, 0.0, 0.5, 1.0, false),
             3 => (ModelKind::Three, -2.0 / 9.0, 2.0 / 3.0, 0.5, 2.0, true),
             4 => (ModelKind::Four, 0.65, 0.0, 0.25, 2.0, true),
-            _ => return Err(Error::field("model", n, "1, 2, 3 or 4 (or custom)")),
+            _ => return Err(Error::invalid_text(Field::Model, n, "1, 2, 3, 4 or custom")),
         };
         Ok(Model {
             kind: m.0,
@@ -90,33 +149,29 @@ impl Model {
     /// Checks the coefficients (used for custom models and after user edits).
     pub fn validate(&self) -> Result<()> {
         if !self.c1.is_finite() {
-            return Err(Error::field(
-                "model.c1",
+            return Err(Error::invalid(
+                Field::C1,
                 self.c1,
                 "a finite number with W(a) >= 0 on [0, 1]",
             ));
         }
         if !self.c2.is_finite() {
-            return Err(Error::field(
-                "model.c2",
+            return Err(Error::invalid(
+                Field::C2,
                 self.c2,
                 "a finite number with W(a) >= 0 on [0, 1]",
             ));
         }
         if !(self.alpha >= 0.0 && self.alpha <= 4.0) {
-            return Err(Error::field("model.alpha", self.alpha, "0 <= alpha <= 4"));
+            return Err(Error::invalid(Field::Alpha, self.alpha, "0 <= alpha <= 4"));
         }
         if !(self.k_griffith > 0.0 && self.k_griffith <= 100.0) {
-            return Err(Error::field(
-                "model.k_griffith",
-                self.k_griffith,
-                "0 < k_griffith <= 100",
-            ));
+            return Err(Error::invalid(Field::KGriffith, self.k_griffith, "0 < k_G <= 100"));
         }
         let wmin = self.w_min();
         if wmin < 0.0 {
-            return Err(Error::field(
-                "model.c1/c2",
+            return Err(Error::invalid_text(
+                Field::WeightCoefficients,
                 format!("({}, {}) giving min W = {wmin:.4}", self.c1, self.c2),
                 "coefficients with W(a) = 1 - c1(1-a^2) - c2(1-a^4) >= 0 for all 0 <= a <= 1",
             ));
@@ -179,13 +234,7 @@ impl Model {
 
     /// The model number 1–4, or `None` for custom.
     pub fn number(&self) -> Option<u8> {
-        match self.kind {
-            ModelKind::One => Some(1),
-            ModelKind::Two => Some(2),
-            ModelKind::Three => Some(3),
-            ModelKind::Four => Some(4),
-            ModelKind::Custom => None,
-        }
+        self.kind.number()
     }
 }
 
@@ -232,6 +281,6 @@ mod tests {
         // interior minimum: c1 = -2, c2 = 2 → W(b) = 1 − 2b + 2b²... min at b = 0.5: 0.5
         let m = Model::custom(-2.0, 2.0, 0.5, 1.0, false).unwrap();
         assert!((m.w_min() - 0.5).abs() < 1e-15);
-        assert!(Model::named(5).unwrap_err().to_string().contains("model = 5"));
+        assert!(Model::named(5).unwrap_err().to_string().contains("model.variant = 5"));
     }
 }

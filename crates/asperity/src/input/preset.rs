@@ -5,7 +5,7 @@
 //! one line naming the field, its value and the allowed range. See `presets/system-1.toml` for
 //! the documented format (units are in the key names: `_m`, `_pa`, `_j_m2`).
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::input::model::Model;
 use crate::input::scene::Scene;
 use crate::surface::spectrum::{Normalisation, SelfAffine, Spectrum};
@@ -174,16 +174,9 @@ const QUANTITIES: [&str; 4] = ["a_r", "mean_contact_stress", "contact_stress_var
 impl Preset {
     /// Parses TOML text; `source` names the file in errors.
     pub fn parse(text: &str, source: &str) -> Result<Preset> {
-        let preset: Preset = toml::from_str(text).map_err(|e| {
-            let line = e.span().map(|s| text[..s.start.min(text.len())].lines().count().max(1));
-            let msg = e.message().split_whitespace().collect::<Vec<_>>().join(" ");
-            Error::Preset {
-                source: source.to_string(),
-                message: match line {
-                    Some(l) => format!("line {l}: {msg}"),
-                    None => msg,
-                },
-            }
+        let preset: Preset = toml::from_str(text).map_err(|e| Error::Preset {
+            source: source.to_string(),
+            message: toml_error_message(text, &e),
         })?;
         preset.validate().map_err(|e| Error::Preset {
             source: source.to_string(),
@@ -206,6 +199,16 @@ impl Preset {
         if p.is_file() {
             return Preset::load(p);
         }
+        if p.exists() {
+            return Err(Error::Preset {
+                source: name_or_path.to_string(),
+                message: if p.is_dir() {
+                    "is a directory, not a preset file".into()
+                } else {
+                    "is not a regular file".into()
+                },
+            });
+        }
         let local = PathBuf::from("presets").join(format!("{name_or_path}.toml"));
         if !name_or_path.contains('/') && local.is_file() {
             return Preset::load(&local);
@@ -226,29 +229,33 @@ impl Preset {
         self.scene()?.validate()?;
         if let Some(g) = &self.gfmd {
             for (k, v) in [
-                ("gfmd.system_size_ratio", g.system_size_ratio),
-                ("gfmd.bandwidth", g.bandwidth),
-                ("gfmd.points_per_short_wavelength", g.points_per_short_wavelength),
+                (Field::GfmdSizeRatio, g.system_size_ratio),
+                (Field::GfmdBandwidth, g.bandwidth),
+                (Field::GfmdPointsPerShortWavelength, g.points_per_short_wavelength),
             ] {
                 if !(1..=4096).contains(&v) {
-                    return Err(Error::field(k, v, "an integer in 1..=4096"));
+                    return Err(Error::invalid(k, f64::from(v), "an integer in 1..=4096"));
                 }
             }
         }
         for (i, r) in self.reference.iter().enumerate() {
             if !QUANTITIES.contains(&r.quantity.as_str()) {
-                return Err(Error::field(
-                    format!("reference[{i}].quantity"),
+                return Err(Error::invalid_text(
+                    Field::Other(format!("reference[{i}].quantity")),
                     &r.quantity,
                     QUANTITIES.join(", "),
                 ));
             }
             if !(r.pressure.is_finite() && r.pressure > 0.0) {
-                return Err(Error::field(format!("reference[{i}].pressure"), r.pressure, "p* > 0"));
+                return Err(Error::invalid(
+                    Field::Other(format!("reference[{i}].pressure")),
+                    r.pressure,
+                    "p* > 0",
+                ));
             }
             if !r.value.is_finite() {
-                return Err(Error::field(
-                    format!("reference[{i}].value"),
+                return Err(Error::invalid(
+                    Field::Other(format!("reference[{i}].value")),
                     r.value,
                     "a finite number",
                 ));
@@ -264,8 +271,8 @@ impl Preset {
             (Some(g), None) => Normalisation::RmsGradient(g),
             (None, Some(h)) => Normalisation::RmsHeight(h),
             _ => {
-                return Err(Error::field(
-                    "surface.rms_gradient/rms_height_m",
+                return Err(Error::invalid_text(
+                    Field::Other("surface.rms_gradient/rms_height_m".into()),
                     "both or neither",
                     "exactly one of rms_gradient and rms_height_m",
                 ))
@@ -288,17 +295,17 @@ impl Preset {
             Variant::Name(s) if s == "custom" => None,
             Variant::Name(s) => Some(
                 s.parse::<i64>()
-                    .map_err(|_| Error::field("model.variant", s, "1, 2, 3, 4 or \"custom\""))?,
+                    .map_err(|_| Error::invalid_text(Field::Model, s, "1, 2, 3, 4 or \"custom\""))?,
             ),
         };
         match n {
             Some(n) => {
                 if !(1..=4).contains(&n) {
-                    return Err(Error::field("model.variant", n, "1, 2, 3, 4 or \"custom\""));
+                    return Err(Error::invalid_text(Field::Model, n, "1, 2, 3, 4 or \"custom\""));
                 }
                 if m.c1.is_some() || m.c2.is_some() || m.alpha.is_some() || m.k_griffith.is_some() || m.cap.is_some() {
-                    return Err(Error::field(
-                        "model.variant",
+                    return Err(Error::invalid_text(
+                        Field::Model,
                         n,
                         "\"custom\" when c1, c2, alpha, k_griffith or cap are given",
                     ));
@@ -318,13 +325,6 @@ impl Preset {
     /// The reference scene: the preset's load, thickness, model and adhesion.
     pub fn scene(&self) -> Result<Scene> {
         let a = &self.adhesion;
-        if !(a.surface_energy_j_m2.is_finite() && a.surface_energy_j_m2 >= 0.0) {
-            return Err(Error::field(
-                "adhesion.surface_energy_j_m2",
-                a.surface_energy_j_m2,
-                "0 <= surface_energy_j_m2 (J/m^2)",
-            ));
-        }
         let scene = Scene {
             spectrum: self.spectrum()?,
             modulus: self.material.contact_modulus_pa,
@@ -334,19 +334,7 @@ impl Preset {
             gamma: a.surface_energy_j_m2,
             range: a.range_m,
         };
-        scene.validate().map_err(|e| match e {
-            Error::InvalidField { field, value, allowed } => Error::InvalidField {
-                field: match field.as_str() {
-                    "pressure" => "load.pressure".into(),
-                    "thickness" => "load.thickness_qr".into(),
-                    "gamma" => "adhesion.surface_energy_j_m2".into(),
-                    _ => field,
-                },
-                value,
-                allowed,
-            },
-            e => e,
-        })?;
+        scene.validate()?;
         Ok(scene)
     }
 
@@ -355,6 +343,40 @@ impl Preset {
         self.gfmd
             .as_ref()
             .map(|g| g.system_size_ratio * g.bandwidth * g.points_per_short_wavelength)
+    }
+}
+
+/// One line for a TOML error: `line N: key: what`, with the 1-based line of the error's
+/// span and the dotted key written on that line (the table's name for a table-level error).
+pub fn toml_error_message(text: &str, e: &toml::de::Error) -> String {
+    let msg = e.message().split_whitespace().collect::<Vec<_>>().join(" ");
+    let Some(span) = e.span() else { return msg };
+    let start = span.start.min(text.len());
+    let line_no = text[..start].matches('\n').count() + 1;
+    let mut table = String::new();
+    let mut key = None;
+    for (i, raw) in text.lines().enumerate() {
+        let l = raw.split('#').next().unwrap_or("").trim();
+        if i + 1 > line_no {
+            break;
+        }
+        if l.starts_with('[') {
+            table = l.trim_matches(|c| c == '[' || c == ']').trim().to_string();
+            key = (i + 1 == line_no).then(|| table.clone());
+        } else if i + 1 == line_no {
+            key = l.split_once('=').map(|(k, _)| {
+                let k = k.trim().trim_matches('"');
+                if table.is_empty() {
+                    k.to_string()
+                } else {
+                    format!("{table}.{k}")
+                }
+            });
+        }
+    }
+    match key {
+        Some(k) if !k.is_empty() => format!("line {line_no}: {k}: {msg}"),
+        _ => format!("line {line_no}: {msg}"),
     }
 }
 

@@ -4,11 +4,12 @@
 //! Reduced units (physics.md §1): stresses σ* = σ/(E*ḡ), pressure p* = p/(E*ḡ), thickness
 //! t·q_r. Surface energy γ_s in J/m², range of adhesion ρ in m.
 
-use crate::error::{check_range, Error, Result};
+use crate::error::{check_in, fmt_value, Error, Field, Result};
 use crate::input::model::Model;
 use crate::surface::spectrum::Spectrum;
 use crate::theory::slab::slab_factor_at;
 use serde::Serialize;
+use std::hash::{Hash, Hasher};
 
 /// Inputs of one evaluation.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,39 +35,128 @@ pub struct Scene {
 pub const PRESSURE_RANGE: (f64, f64) = (1e-12, 1e3);
 /// Allowed t·q_r (besides ∞).
 pub const THICKNESS_RANGE: (f64, f64) = (1e-6, 1e12);
+/// Allowed surface energy γ_s (J/m²); 0 = no adhesion.
+pub const SURFACE_ENERGY_RANGE: (f64, f64) = (0.0, 1e3);
+/// Allowed range ρ of the adhesive interaction (m).
+pub const RANGE_RANGE_M: (f64, f64) = (1e-15, 1.0);
+/// Allowed contact modulus E* (Pa).
+pub const MODULUS_RANGE_PA: (f64, f64) = (1e-3, 1e15);
+
+/// A reduced slab thickness t·q_r: a number > 0, or ∞ for a semi-infinite body.
+///
+/// Parses `inf`, `infinity`, `∞` (any case) or a number; prints ∞ as `inf`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ThicknessQr(pub f64);
+
+impl std::str::FromStr for ThicknessQr {
+    type Err = Error;
+
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::Thickness`] when the text is not `inf` or a number in
+    /// [`THICKNESS_RANGE`].
+    fn from_str(s: &str) -> Result<ThicknessQr> {
+        let t = s.trim().to_ascii_lowercase();
+        if matches!(t.as_str(), "inf" | "infinity" | "∞" | "+inf" | "+infinity") {
+            return Ok(ThicknessQr(f64::INFINITY));
+        }
+        let allowed = thickness_allowed();
+        let v: f64 = t
+            .parse()
+            .map_err(|_| Error::invalid_text(Field::Thickness, s.trim(), allowed.clone()))?;
+        if !(THICKNESS_RANGE.0..=THICKNESS_RANGE.1).contains(&v) {
+            return Err(Error::invalid(Field::Thickness, v, allowed));
+        }
+        Ok(ThicknessQr(v))
+    }
+}
+
+impl std::fmt::Display for ThicknessQr {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.0.is_infinite() {
+            f.write_str("inf")
+        } else {
+            write!(f, "{}", fmt_value(self.0))
+        }
+    }
+}
+
+fn thickness_allowed() -> String {
+    format!(
+        "{} <= t·q_r <= {}, or inf",
+        fmt_value(THICKNESS_RANGE.0),
+        fmt_value(THICKNESS_RANGE.1)
+    )
+}
+
+/// Hashes every input by bit pattern: equal scenes hash equally (the explorer's cache key).
+impl Hash for Scene {
+    fn hash<H: Hasher>(&self, h: &mut H) {
+        self.hash_without_pressure(h);
+        self.pressure.to_bits().hash(h);
+    }
+}
 
 impl Scene {
+    /// A validated scene.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first field out of its range (see [`Scene::validate`]).
+    pub fn new(
+        spectrum: Spectrum,
+        contact_modulus_pa: f64,
+        model: Model,
+        pressure: f64,
+        thickness_qr: f64,
+        gamma_j_m2: f64,
+        range_m: f64,
+    ) -> Result<Scene> {
+        let s = Scene {
+            spectrum,
+            modulus: contact_modulus_pa,
+            thickness_qr,
+            model,
+            pressure,
+            gamma: gamma_j_m2,
+            range: range_m,
+        };
+        s.validate()?;
+        Ok(s)
+    }
+
+    /// Hashes every input but the load (the key of a load curve).
+    pub fn hash_without_pressure<H: Hasher>(&self, h: &mut H) {
+        self.spectrum.hash(h);
+        self.model.hash(h);
+        for x in [self.modulus, self.thickness_qr, self.gamma, self.range] {
+            x.to_bits().hash(h);
+        }
+    }
+
     /// Validates every field, naming it in the error.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for the first of [`Field::ContactModulus`], [`Field::Pressure`],
+    /// [`Field::Thickness`], [`Field::SurfaceEnergy`], [`Field::Range`] or a model field that
+    /// is out of range.
     pub fn validate(&self) -> Result<()> {
-        if !(self.modulus.is_finite() && self.modulus > 0.0) {
-            return Err(Error::field(
-                "material.contact_modulus_pa",
-                self.modulus,
-                "a finite modulus > 0 (Pa)",
-            ));
-        }
-        check_range(
-            "pressure",
-            self.pressure,
-            PRESSURE_RANGE.0,
-            PRESSURE_RANGE.1,
-            &format!("{:e} <= p* <= {:e}", PRESSURE_RANGE.0, PRESSURE_RANGE.1),
+        check_in(
+            Field::ContactModulus,
+            self.modulus,
+            MODULUS_RANGE_PA.0,
+            MODULUS_RANGE_PA.1,
         )?;
-        if !self.thickness_qr.is_infinite() {
-            check_range(
-                "thickness",
-                self.thickness_qr,
-                THICKNESS_RANGE.0,
-                THICKNESS_RANGE.1,
-                &format!("{:e} <= t*q_r <= {:e}, or inf", THICKNESS_RANGE.0, THICKNESS_RANGE.1),
-            )?;
-        } else if self.thickness_qr < 0.0 {
-            return Err(Error::field("thickness", self.thickness_qr, "t*q_r > 0, or inf"));
+        check_in(Field::Pressure, self.pressure, PRESSURE_RANGE.0, PRESSURE_RANGE.1)?;
+        if !(self.thickness_qr == f64::INFINITY || (THICKNESS_RANGE.0..=THICKNESS_RANGE.1).contains(&self.thickness_qr))
+        {
+            return Err(Error::invalid(Field::Thickness, self.thickness_qr, thickness_allowed()));
         }
-        check_range("gamma", self.gamma, 0.0, 1e3, "0 <= gamma <= 1000 (J/m^2)")?;
-        if !(self.range.is_finite() && self.range > 0.0) {
-            return Err(Error::field("adhesion.range_m", self.range, "a finite length > 0 (m)"));
-        }
+        check_in(
+            Field::SurfaceEnergy,
+            self.gamma,
+            SURFACE_ENERGY_RANGE.0,
+            SURFACE_ENERGY_RANGE.1,
+        )?;
+        check_in(Field::Range, self.range, RANGE_RANGE_M.0, RANGE_RANGE_M.1)?;
         self.model.validate()
     }
 

@@ -18,8 +18,17 @@
 //! [`PANEL_WIDTH_LN`] wide, which is exact to ~1e-14 for the power laws involved at any
 //! bandwidth λ_r/λ_s up to 10⁶ and beyond.
 
-use crate::error::{check_range, Error, Result};
+use crate::error::{check_in, Error, Field, Result};
 use std::f64::consts::PI;
+
+/// Allowed lengths L, λ_r, λ_s (m): from a picometre to a kilometre, so that q and the
+/// moments ∫q^k dm stay far from overflow and underflow.
+pub const LENGTH_RANGE_M: (f64, f64) = (1e-12, 1e3);
+/// Allowed rms gradient ḡ: the theory is small-slope; below 1e-6 C₀ underflows for short
+/// wavelengths.
+pub const RMS_GRADIENT_RANGE: (f64, f64) = (1e-6, 100.0);
+/// Allowed rms height (m).
+pub const RMS_HEIGHT_RANGE_M: (f64, f64) = (1e-15, 1e3);
 
 /// Largest width of one Gauss–Legendre panel in ln q.
 pub const PANEL_WIDTH_LN: f64 = 0.25;
@@ -67,37 +76,41 @@ pub struct SelfAffine {
 impl SelfAffine {
     /// Builds and normalises the spectrum. Requires 0 < λ_s < λ_r ≤ L and 0 < H ≤ 1.
     pub fn new(system_size: f64, lambda_r: f64, lambda_s: f64, hurst: f64, norm: Normalisation) -> Result<Self> {
-        for (name, v) in [
-            ("surface.system_size_m", system_size),
-            ("surface.rolloff_wavelength_m", lambda_r),
-            ("surface.short_wavelength_m", lambda_s),
+        for (field, v) in [
+            (Field::SystemSize, system_size),
+            (Field::RolloffWavelength, lambda_r),
+            (Field::ShortWavelength, lambda_s),
         ] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(Error::field(name, v, "a finite length > 0"));
-            }
+            check_in(field, v, LENGTH_RANGE_M.0, LENGTH_RANGE_M.1)?;
         }
         if lambda_r > system_size {
-            return Err(Error::field(
-                "surface.rolloff_wavelength_m",
+            return Err(Error::invalid(
+                Field::RolloffWavelength,
                 lambda_r,
-                format!("0 < rolloff_wavelength_m <= system_size_m = {system_size}"),
+                format!(
+                    "0 < rolloff_wavelength_m <= system_size_m = {}",
+                    crate::error::fmt_value(system_size)
+                ),
             ));
         }
         if lambda_s >= lambda_r {
-            return Err(Error::field(
-                "surface.short_wavelength_m",
+            return Err(Error::invalid(
+                Field::ShortWavelength,
                 lambda_s,
-                format!("0 < short_wavelength_m < rolloff_wavelength_m = {lambda_r}"),
+                format!(
+                    "0 < short_wavelength_m < rolloff_wavelength_m = {}",
+                    crate::error::fmt_value(lambda_r)
+                ),
             ));
         }
         if lambda_r / lambda_s > 1e8 {
-            return Err(Error::field(
-                "surface.short_wavelength_m",
+            return Err(Error::invalid(
+                Field::ShortWavelength,
                 lambda_s,
                 "a bandwidth rolloff_wavelength_m/short_wavelength_m <= 1e8",
             ));
         }
-        check_range("surface.hurst", hurst, 1e-3, 1.0, "0.001 <= hurst <= 1")?;
+        check_in(Field::Hurst, hurst, 1e-3, 1.0)?;
         let mut s = SelfAffine {
             system_size,
             lambda_r,
@@ -107,15 +120,11 @@ impl SelfAffine {
         };
         match norm {
             Normalisation::RmsGradient(g) => {
-                if !(g.is_finite() && g > 0.0 && g <= 100.0) {
-                    return Err(Error::field("surface.rms_gradient", g, "0 < rms_gradient <= 100"));
-                }
+                check_in(Field::RmsGradient, g, RMS_GRADIENT_RANGE.0, RMS_GRADIENT_RANGE.1)?;
                 s.c0 = g * g / s.moment(2);
             }
             Normalisation::RmsHeight(h) => {
-                if !(h.is_finite() && h > 0.0) {
-                    return Err(Error::field("surface.rms_height_m", h, "a finite length > 0"));
-                }
+                check_in(Field::RmsHeight, h, RMS_HEIGHT_RANGE_M.0, RMS_HEIGHT_RANGE_M.1)?;
                 s.c0 = h * h / s.moment(0);
             }
         }
@@ -193,21 +202,21 @@ impl Discrete {
     /// thicknesses (pass q_L if the map has no roll-off).
     pub fn from_height_map(h: &[f64], n: usize, system_size: f64, q_r: f64) -> Result<Self> {
         if n < 2 || h.len() != n * n {
-            return Err(Error::field(
-                "surface",
+            return Err(Error::invalid_text(
+                Field::HeightMap,
                 format!("{} values", h.len()),
                 format!("an N x N map with N >= 2 (N = {n})"),
             ));
         }
         if let Some(bad) = h.iter().position(|x| !x.is_finite()) {
-            return Err(Error::field(
-                format!("surface[{}][{}]", bad / n, bad % n),
+            return Err(Error::invalid(
+                Field::Other(format!("surface[{}][{}]", bad / n, bad % n)),
                 h[bad],
                 "a finite height",
             ));
         }
         if !(system_size.is_finite() && system_size > 0.0) {
-            return Err(Error::field("--size", system_size, "a finite length > 0 (m)"));
+            check_in(Field::SystemSize, system_size, LENGTH_RANGE_M.0, LENGTH_RANGE_M.1)?;
         }
         let spec = crate::numerics::fft2::forward_real(h, n);
         let norm = 1.0 / (n * n) as f64;
@@ -243,8 +252,8 @@ impl Discrete {
             })
             .collect::<Vec<_>>();
         if modes.is_empty() {
-            return Err(Error::field(
-                "surface",
+            return Err(Error::invalid_text(
+                Field::HeightMap,
                 "a flat map",
                 "a height map with some roughness",
             ));
@@ -269,6 +278,31 @@ pub enum Spectrum {
     SelfAffine(SelfAffine),
     /// Modes of an actual surface.
     Discrete(Discrete),
+}
+
+/// Hashes the spectrum by the bit patterns of its parameters (or modes), so equal spectra
+/// hash equally (a cache key for front ends; −0.0 and 0.0 hash differently, which is harmless
+/// for a cache).
+impl std::hash::Hash for Spectrum {
+    fn hash<H: std::hash::Hasher>(&self, h: &mut H) {
+        match self {
+            Spectrum::SelfAffine(s) => {
+                0u8.hash(h);
+                for x in [s.system_size, s.lambda_r, s.lambda_s, s.hurst, s.c0] {
+                    x.to_bits().hash(h);
+                }
+            }
+            Spectrum::Discrete(d) => {
+                1u8.hash(h);
+                d.system_size.to_bits().hash(h);
+                d.q_r.to_bits().hash(h);
+                for m in &d.modes {
+                    m.q.to_bits().hash(h);
+                    m.dm.to_bits().hash(h);
+                }
+            }
+        }
+    }
 }
 
 impl Spectrum {

@@ -69,7 +69,7 @@
 // index loops mirror the formulas (nodes j, steps k) in this numerical module
 #![allow(clippy::needless_range_loop)]
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::input::scene::Scene;
 use crate::surface::spectrum::{Spectrum, GL4};
 use crate::theory::slab::slab_factor_at;
@@ -929,12 +929,12 @@ pub fn solve(
 ) -> Result<AdhesiveSolution> {
     scene.validate()?;
     for (name, v, lo, hi) in [
-        ("--adhesion-steps", acc.steps_per_ln_q, 2.0, 1e4),
-        ("--adhesion-points", acc.points_per_width, 2.0, 1e3),
-        ("--adhesion-tol", acc.tol, 1e-15, 1e-1),
+        (Field::AdhesionSteps, acc.steps_per_ln_q, 2.0, 1e4),
+        (Field::AdhesionPoints, acc.points_per_width, 2.0, 1e3),
+        (Field::AdhesionTol, acc.tol, 1e-15, 1e-1),
     ] {
         if !(v >= lo && v <= hi) {
-            return Err(Error::field(name, v, format!("{lo} <= value <= {hi}")));
+            return Err(Error::invalid(name, v, format!("{lo} <= value <= {hi}")));
         }
     }
     // Near a jump into contact the discrete map can stagnate for one particular resolution

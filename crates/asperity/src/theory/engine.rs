@@ -2,7 +2,7 @@
 //! adhesionless mirror-Gaussian path when γ_s = 0, the adhesive solver otherwise) and returns
 //! the quantities every front end shows. The CLI and the TUI call only this (and the sweep).
 
-use crate::error::{Error, Result};
+use crate::error::{check_in, Error, Field, Result};
 use crate::input::scene::Scene;
 use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution};
 use crate::theory::persson::{self, Accuracy, ResolutionPoint};
@@ -38,7 +38,59 @@ impl Default for Options {
     }
 }
 
+/// Allowed relative tolerance of the adhesionless ODE: below 1e-12 the step control works
+/// against round-off; above 1e-2 a_r is not worth reporting.
+pub const RTOL_RANGE: (f64, f64) = (1e-12, 1e-2);
+/// Allowed number of points of the tabulated Pr(σ*).
+pub const SIGMA_POINTS_RANGE: (usize, usize) = (2, 1_000_000);
+/// Allowed σ*_max: Pr(σ*) of any scene is negligible beyond σ* ~ p* + 10 (Δ ≤ 1 for ḡ-reduced
+/// stresses), so a larger table would sample only zeros.
+pub const SIGMA_MAX_RANGE: (f64, f64) = (1e-6, 1e3);
+/// Allowed adhesive resolution steps per ln q and grid points per width: at least 4 because
+/// the error estimate solves again at half of each.
+pub const ADHESION_STEPS_RANGE: (f64, f64) = (4.0, 1e4);
+/// See [`ADHESION_STEPS_RANGE`].
+pub const ADHESION_POINTS_RANGE: (f64, f64) = (4.0, 1e3);
+/// Allowed fixed-point tolerance of the adhesive solver.
+pub const ADHESION_TOL_RANGE: (f64, f64) = (1e-14, 1e-1);
+
 impl Options {
+    /// Checks every accuracy knob against its allowed range.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first knob out of range ([`Field::Rtol`],
+    /// [`Field::SigmaPoints`], [`Field::SigmaMax`], [`Field::AdhesionSteps`],
+    /// [`Field::AdhesionPoints`], [`Field::AdhesionTol`]).
+    pub fn validate(&self) -> Result<()> {
+        check_in(Field::Rtol, self.accuracy.rtol, RTOL_RANGE.0, RTOL_RANGE.1)?;
+        let n = self.sigma_points;
+        if !(SIGMA_POINTS_RANGE.0..=SIGMA_POINTS_RANGE.1).contains(&n) {
+            return Err(Error::invalid(
+                Field::SigmaPoints,
+                n as f64,
+                format!("{} <= points <= {}", SIGMA_POINTS_RANGE.0, SIGMA_POINTS_RANGE.1),
+            ));
+        }
+        if let Some(s) = self.sigma_max {
+            check_in(Field::SigmaMax, s, SIGMA_MAX_RANGE.0, SIGMA_MAX_RANGE.1)?;
+        }
+        let a = &self.adhesion;
+        check_in(
+            Field::AdhesionSteps,
+            a.steps_per_ln_q,
+            ADHESION_STEPS_RANGE.0,
+            ADHESION_STEPS_RANGE.1,
+        )?;
+        check_in(
+            Field::AdhesionPoints,
+            a.points_per_width,
+            ADHESION_POINTS_RANGE.0,
+            ADHESION_POINTS_RANGE.1,
+        )?;
+        check_in(Field::AdhesionTol, a.tol, ADHESION_TOL_RANGE.0, ADHESION_TOL_RANGE.1)?;
+        Ok(())
+    }
+
     /// The accuracy a chart needs (a pixel is ~1 % of an axis): the adhesive solver at half
     /// the default resolution in both directions (relative error of a_r ~1e-3, 3–4× faster),
     /// no error estimate and no search for a second branch. The explorer's sweeps use this.
@@ -125,14 +177,14 @@ pub fn evaluate_warm(
     cancel: Option<&std::sync::atomic::AtomicBool>,
 ) -> Result<Evaluation> {
     scene.validate()?;
+    opts.validate()?;
     let t0 = Instant::now();
     if scene.gamma > 0.0 {
         return evaluate_adhesive(scene, opts, warm, cancel, t0);
     }
     let sol = persson::solve(scene, &opts.accuracy)?;
     let sigma_max = match opts.sigma_max {
-        Some(s) if s.is_finite() && s > 0.0 => s,
-        Some(s) => return Err(Error::field("sigma_max", s, "sigma* > 0")),
+        Some(s) => check_in(Field::SigmaMax, s, SIGMA_MAX_RANGE.0, SIGMA_MAX_RANGE.1)?,
         None => sol.default_sigma_max(),
     };
     let (sigma, density) = sol.sample(sigma_max, opts.sigma_points);
@@ -188,7 +240,8 @@ fn evaluate_adhesive(
                 Err(Error::Cancelled) => return Err(Error::Cancelled),
                 // near a jump a coarse grid may not converge although the fine one did: the
                 // estimate then rests on the other halving (doubled), or is unavailable
-                Err(_) => {}
+                Err(Error::NotConverged { .. }) => {}
+                Err(e) => return Err(e),
             }
         }
         match diffs.len() {

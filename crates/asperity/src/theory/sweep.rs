@@ -16,7 +16,7 @@
 //! Cancellation: the caller may pass an `AtomicBool`; when it is set the sweep stops between
 //! evaluations and returns [`Error::Cancelled`].
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::input::scene::{Scene, PRESSURE_RANGE};
 use crate::theory::engine::{self, Evaluation, Options};
 use crate::theory::gap::{self, GapTable};
@@ -45,19 +45,26 @@ impl SweepSpec {
     /// Checks the range against the engine's pressure range.
     pub fn validate(&self) -> Result<()> {
         let allowed = format!("{:e} <= p* <= {:e}", PRESSURE_RANGE.0, PRESSURE_RANGE.1);
-        for (name, v) in [("--from", self.from), ("--to", self.to)] {
+        for (field, v) in [(Field::SweepFrom, self.from), (Field::SweepTo, self.to)] {
             if !(v >= PRESSURE_RANGE.0 && v <= PRESSURE_RANGE.1) {
-                return Err(Error::field(name, v, allowed.clone()));
+                return Err(Error::invalid(field, v, allowed.clone()));
             }
         }
         if !(1..=100_000).contains(&self.points) {
-            return Err(Error::field("--points", self.points, "1 <= points <= 100000"));
+            return Err(Error::invalid(
+                Field::SweepPoints,
+                self.points as f64,
+                "1 <= points <= 100000",
+            ));
         }
         if self.points > 1 && self.to <= self.from {
-            return Err(Error::field(
-                "--to",
+            return Err(Error::invalid(
+                Field::SweepTo,
                 self.to,
-                format!("a p* > --from = {} (or --points 1)", self.from),
+                format!(
+                    "a p* above the first load {} (or a single point)",
+                    crate::error::fmt_value(self.from)
+                ),
             ));
         }
         Ok(())

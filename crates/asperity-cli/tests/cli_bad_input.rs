@@ -1,0 +1,100 @@
+//! Bad input at the command line: one line on stderr naming the field (by its flag or preset
+//! key), the value and the allowed range, and exit code 2 (issue 12's list, tried as a user).
+
+use std::process::Command;
+
+fn fails(args: &[&str], needles: &[&str]) {
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert!(out.stdout.is_empty(), "{args:?}: stdout not empty");
+    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: not one line: {err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: expected {n:?} in {err:?}");
+    }
+    assert!(err.len() < 400, "{args:?}: too long: {err}");
+}
+
+#[test]
+fn negative_numbers_are_values_not_options() {
+    fails(&["run", "--thickness", "-inf"], &["--thickness = -inf", "or inf"]);
+    fails(&["run", "--thickness", "-1"], &["--thickness = -1", "1e-6 <= t·q_r"]);
+    fails(&["run", "--alpha", "-1"], &["--alpha = -1", "0 <= alpha <= 4"]);
+    fails(&["run", "--rtol", "-1"], &["--rtol = -1", "1e-12 <= rtol <= 0.01"]);
+    fails(
+        &["run", "--adhesion-tol", "-1"],
+        &["--adhesion-tol = -1", "<= adhesion_tol <="],
+    );
+    fails(
+        &["run", "--sigma-max", "-1"],
+        &["--sigma-max = -1", "<= sigma_max <= 1000"],
+    );
+    fails(
+        &["sweep", "--from", "0.01", "--to", "0.1", "--points", "-5"],
+        &["--points = -5", "whole number"],
+    );
+    fails(
+        &["sweep", "--from", "0.01", "--to", "0.1", "--points", "0"],
+        &["--points = 0", "1 <= points"],
+    );
+    fails(&["gfmd", "--grid", "32", "--tolerance", "-1"], &["--tolerance = -1"]);
+}
+
+#[test]
+fn one_range_per_knob() {
+    // the same range whichever check catches it (it was "4..10000" in one place, "2..1000" in
+    // another)
+    fails(
+        &["run", "--adhesion-points", "3"],
+        &["--adhesion-points = 3", "4 <= adhesion_points <= 1000"],
+    );
+    fails(
+        &["run", "--adhesion-points", "2000"],
+        &["--adhesion-points = 2000", "4 <= adhesion_points <= 1000"],
+    );
+    fails(
+        &["run", "--adhesion-steps", "3"],
+        &["--adhesion-steps = 3", "4 <= adhesion_steps <= 10000"],
+    );
+}
+
+#[test]
+fn values_that_would_break_a_solver_are_refused_up_front() {
+    fails(&["run", "--rtol", "1e-300"], &["--rtol = 1e-300"]);
+    fails(&["run", "--sigma-max", "1e300"], &["--sigma-max = 1e300"]);
+    fails(&["run", "--pressure", "1e300"], &["--pressure = 1e300", "<= 1000"]);
+    let dir = std::env::temp_dir().join(format!("asperity-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../presets/system-2.toml")).unwrap();
+    let bad = dir.join("flat-gradient.toml");
+    std::fs::write(&bad, text.replace("rms_gradient = 1.0", "rms_gradient = 1e-300")).unwrap();
+    fails(
+        &["run", "--preset", bad.to_str().unwrap()],
+        &["surface.rms_gradient = 1e-300", "1e-6 <= rms_gradient <= 100"],
+    );
+    // TOML type errors name the line and the key
+    let typed = dir.join("typed.toml");
+    std::fs::write(&typed, text.replace("hurst = 0.8", "hurst = \"steep\"")).unwrap();
+    let line = text.lines().position(|l| l.starts_with("hurst")).unwrap() + 1;
+    fails(
+        &["run", "--preset", typed.to_str().unwrap()],
+        &[&format!("line {line}: surface.hurst:"), "expected f64"],
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn numbers_print_compactly_and_files_are_named_for_what_they_are() {
+    let huge = format!("1{}", "0".repeat(300));
+    fails(&["run", "--pressure", &huge], &["--pressure = 1e300"]);
+    fails(&["run", "--preset", "/dev/zero"], &["/dev/zero", "not a regular file"]);
+    fails(
+        &["run", "--preset", std::env::temp_dir().to_str().unwrap()],
+        &["is a directory"],
+    );
+    fails(&["run", "--preset", "no-such-system"], &["known presets"]);
+}

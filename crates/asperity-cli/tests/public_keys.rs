@@ -1,0 +1,241 @@
+//! The public interface: the JSON keys of `run`, `sweep`, `gfmd` and the bench report's rungs,
+//! and the CSV columns of `sweep`, as they were when the workspace split (issue 12). Scripts
+//! depend on them: a change may add keys, never remove or rename one.
+
+use std::collections::BTreeSet;
+use std::process::Command;
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// Dotted paths of every key of nested objects (arrays are not entered).
+fn keys(v: &serde_json::Value, prefix: &str, out: &mut BTreeSet<String>) {
+    if let Some(o) = v.as_object() {
+        for (k, x) in o {
+            let path = format!("{prefix}{k}");
+            keys(x, &format!("{path}."), out);
+            out.insert(path);
+        }
+    }
+}
+
+fn assert_has(v: &serde_json::Value, expected: &[&str], what: &str) {
+    let mut got = BTreeSet::new();
+    keys(v, "", &mut got);
+    let missing: Vec<&&str> = expected.iter().filter(|k| !got.contains(**k)).collect();
+    assert!(
+        missing.is_empty(),
+        "{what}: keys missing from the public interface: {missing:?}"
+    );
+}
+
+const SCENE: &[&str] = &[
+    "scene",
+    "scene.alpha",
+    "scene.c1",
+    "scene.c2",
+    "scene.contact_modulus_pa",
+    "scene.gamma",
+    "scene.gamma_glo",
+    "scene.k_griffith",
+    "scene.model",
+    "scene.model_number",
+    "scene.pressure",
+    "scene.pressure_pa",
+    "scene.q_l",
+    "scene.q_r",
+    "scene.q_s",
+    "scene.range_m",
+    "scene.rms_gradient",
+    "scene.rms_height_m",
+    "scene.semi_infinite",
+    "scene.sigma_a_cap",
+    "scene.tabor",
+    "scene.thickness_m",
+    "scene.thickness_qr",
+];
+
+const RUN: &[&str] = &[
+    "a_r",
+    "branch",
+    "contact_stress_variance",
+    "converged",
+    "detached_fraction",
+    "elapsed_s",
+    "elastic_energy",
+    "error_estimate",
+    "gamma_q",
+    "iterations",
+    "mean_contact_stress",
+    "mean_gap",
+    "mean_gap_rel",
+    "pr",
+    "pr.density",
+    "pr.sigma",
+    "preset",
+    "residual",
+    "resolution",
+    "resolution.a_r",
+    "resolution.q",
+    "sigma_a",
+    "sigma_a_q",
+    "tensile_area",
+    "unloading_a_r",
+    "width",
+];
+
+#[test]
+fn run_keys() {
+    for gamma in ["0", "0.05"] {
+        let v = json(&["run", "--preset", "system-1", "--gamma", gamma]);
+        assert_has(&v, RUN, "run");
+        assert_has(&v, SCENE, "run");
+    }
+}
+
+#[test]
+fn sweep_keys_and_columns() {
+    let v = json(&[
+        "sweep", "--preset", "system-1", "--from", "0.01", "--to", "0.1", "--points", "2", "--format", "json",
+    ]);
+    assert_has(
+        &v,
+        &[
+            "evaluations",
+            "failed_loads",
+            "full_contact_pressure",
+            "monotone",
+            "preset",
+            "rows",
+        ],
+        "sweep",
+    );
+    assert_has(&v, SCENE, "sweep");
+    assert_has(
+        &v["rows"][0],
+        &[
+            "a_r",
+            "converged",
+            "elastic_energy",
+            "elastic_energy_reduced",
+            "mean_contact_stress",
+            "mean_gap",
+            "mean_gap_error",
+            "mean_gap_rel",
+            "p",
+        ],
+        "sweep rows",
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args([
+            "sweep", "--preset", "system-1", "--from", "0.01", "--to", "0.1", "--points", "2",
+        ])
+        .output()
+        .unwrap();
+    let header = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .next()
+        .unwrap_or("")
+        .to_string();
+    assert!(
+        header.starts_with(
+            "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error"
+        ),
+        "{header}"
+    );
+}
+
+#[test]
+fn gfmd_keys() {
+    let v = json(&["gfmd", "--grid", "32"]);
+    assert_has(
+        &v,
+        &[
+            "a_r",
+            "adhesion_resolution",
+            "contact_nodes",
+            "contact_stress_variance",
+            "converged",
+            "elapsed_s",
+            "gamma",
+            "grid",
+            "grid_spec",
+            "grid_spec.bandwidth",
+            "grid_spec.points_per_short_wavelength",
+            "grid_spec.system_size_ratio",
+            "iterations",
+            "mean_contact_stress",
+            "mean_gap",
+            "mean_gap_rel",
+            "pr",
+            "pr.density",
+            "pr.sigma",
+            "pressure",
+            "pressure_pa",
+            "range_m",
+            "residual",
+            "rms_gradient",
+            "rms_height_m",
+            "seed",
+            "solve_elapsed_s",
+            "spacing_m",
+            "system_size_m",
+            "theory",
+            "theory.a_r",
+            "theory.contact_stress_variance",
+            "theory.mean_contact_stress",
+            "theory.model",
+            "theory.pr",
+            "theory.pr.density",
+            "theory.pr.sigma",
+            "theory.width",
+            "theory_elapsed_s",
+            "theory_error",
+            "thickness_qr",
+            "tolerance",
+        ],
+        "gfmd",
+    );
+}
+
+#[test]
+fn bench_rung_keys() {
+    let rung = asperity_cli::benchmark::Rung {
+        solver: "s".into(),
+        case: "c".into(),
+        setting: "x".into(),
+        default: true,
+        median_s: 1.0,
+        runs: 1,
+        errors: vec![("a_r".into(), 1e-3)],
+        bound: Some(1e-2),
+        memory_bytes: None,
+    };
+    let v = serde_json::to_value(&rung).unwrap();
+    assert_has(
+        &v,
+        &[
+            "solver",
+            "case",
+            "setting",
+            "default",
+            "median_s",
+            "runs",
+            "errors",
+            "bound",
+            "memory_bytes",
+        ],
+        "bench rung",
+    );
+}
