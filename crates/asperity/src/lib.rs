@@ -21,8 +21,9 @@
 //!
 //! - [`input`]: the validated [`input::scene::Scene`], models [S-17], presets.
 //! - [`surface`]: the height spectrum C(q) and its moments; random height maps.
-//! - [`numerics`]: FFTs, the adaptive ODE integrator, quadrature.
-//! - [`theory`]: the slab factor [S-4], the mirror Gaussian [S-7, S-22], the adhesionless
+//! - [`elastic`]: the slab factor f(qt) [S-4].
+//! - [`numerics`]: FFTs, the adaptive ODE integrator.
+//! - [`theory`]: the mirror Gaussian [S-7, S-22], the adhesionless
 //!   theory, adhesion [S-5..S-9, S-14], energy and mean gap [S-11, S-12], sweeps, and the
 //!   [`theory::engine`] that evaluates one scene.
 //! - [`gfmd`]: the brute-force reference solver.
@@ -44,6 +45,7 @@
 //! assert!((eval.a_r - 0.0214).abs() < 2e-4);
 //! ```
 
+pub mod elastic;
 pub mod error;
 pub mod gfmd;
 pub mod input;
@@ -52,4 +54,4 @@ pub mod surface;
 pub mod theory;
 pub mod tolerances;
 
-pub use error::{Error, Result};
+pub use error::{Error, Field, Result};

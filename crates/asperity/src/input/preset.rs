@@ -111,7 +111,7 @@ impl Default for ModelSpec {
 /// `[gfmd]`: the default reduced grid for brute-force runs (`asperity gfmd`). The reduced
 /// system keeps λ_s, H and ḡ of `[surface]` and shrinks λ_r and L to these ratios, so
 /// N = system_size_ratio · bandwidth · points_per_short_wavelength (see
-/// [`crate::gfmd::GridSpec`]); the built-in presets use 2 · 32 · 8 = 512, about a second.
+/// `gfmd::GridSpec`); the built-in presets use 2 · 32 · 8 = 512, about a second.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct GfmdSpec {

@@ -7,7 +7,7 @@
 use crate::error::{check_in, fmt_value, Error, Field, Result};
 use crate::input::model::Model;
 use crate::surface::spectrum::Spectrum;
-use crate::theory::slab::slab_factor_at;
+use crate::elastic::slab::slab_factor_at;
 use serde::Serialize;
 use std::hash::{Hash, Hasher};
 

@@ -1,7 +1,7 @@
 //! Adaptive Dormand–Prince 5(4) integration of a scalar ODE y' = F(s, y), with a recorded
 //! trajectory for dense (cubic Hermite) output and a running sum of local error estimates.
 //!
-//! Used for the variance ODE of the adhesionless theory (see [`crate::theory::persson`]), where s = ln q
+//! Used for the variance ODE of the adhesionless theory (`theory::persson`), where s = ln q
 //! is the resolution and y = V the accumulated stress variance.
 
 use crate::error::{Error, Result};

@@ -9,7 +9,7 @@
 //! H = 0.3, 0.5, 0.8; model 3 was gauged to it. Small p*: a_r ≈ (2/√π)·1.9·p* ≈ 2.144 p*.
 //!
 //! The adhesionless stress distribution is the mirror Gaussian Pr(σ) = [G_Δ(σ − p) − G_Δ(σ + p)]
-//! [S-22] (σ, p, Δ reduced by E*ḡ; ∫Pr dσ = a_r). Its asymptotes ([S] Fig. 3):
+//! [S-22] (σ, p, Δ reduced by E*ḡ; ∫Pr dσ = a_r). Its asymptotes (\[S\] Fig. 3):
 //!
 //! ```text
 //! σ → 0:  Pr(σ) ≈ σ · 2p φ(p/Δ)/Δ³             (linear, whatever W is)

@@ -160,7 +160,7 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
             let mut rhs = |s: f64, v: f64| -> f64 {
                 let q = s.exp();
                 let a = area_of_variance(p, v);
-                let f = crate::theory::slab::slab_factor_at(q, t);
+                let f = crate::elastic::slab::slab_factor_at(q, t);
                 model.broadening(a) * f * f * q * q * sa.dm_dlnq(q) / (4.0 * g2)
             };
             // Absolute tolerance, scaled by the size of the answer: v(q_s) lies between
@@ -177,7 +177,7 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
                     .nodes(1.0)
                     .iter()
                     .map(|m| {
-                        let f = crate::theory::slab::slab_factor_at(m.q, t);
+                        let f = crate::elastic::slab::slab_factor_at(m.q, t);
                         f * f * m.q * m.q * m.dm
                     })
                     .sum::<f64>()
@@ -211,7 +211,7 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
                     0.25
                 } else {
                     scene.spectrum.integrate(|q| {
-                        let f = crate::theory::slab::slab_factor_at(q, t);
+                        let f = crate::elastic::slab::slab_factor_at(q, t);
                         f * f * q * q
                     }) / (4.0 * g2)
                 };
@@ -234,7 +234,7 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
             let mut v = 0.0;
             let mut shells = Vec::with_capacity(d.modes.len());
             for m in &d.modes {
-                let f = crate::theory::slab::slab_factor_at(m.q, t);
+                let f = crate::elastic::slab::slab_factor_at(m.q, t);
                 let base = f * f * m.q * m.q * m.dm / (4.0 * g2);
                 // midpoint in the shell: predict with W at the start, correct at the middle
                 let pred = v + 0.5 * model.broadening(area_of_variance(p, v)) * base;
