@@ -4,7 +4,7 @@
 
 use crate::error::{check_in, Error, Field, Result};
 use crate::input::scene::Scene;
-use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution};
+use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution, Branch};
 use crate::theory::persson::{self, Accuracy, ResolutionPoint};
 use serde::Serialize;
 use std::time::Instant;
@@ -149,9 +149,9 @@ pub struct Evaluation {
     pub iterations: usize,
     /// Fixed-point residual max|G(a) − a|/a_r (0 without adhesion).
     pub residual: f64,
-    /// "adhesionless", "loading", "loading (continuation in gamma)", or "upper (from full
-    /// contact)" where the loading iteration could not lock on (a jump into contact).
-    pub branch: String,
+    /// The branch and how it was reached (serialised as "adhesionless", "loading", "loading
+    /// (continuation in gamma)", or "upper (from full contact)").
+    pub branch: Branch,
     /// a_r of a distinct unloading branch (started from full contact), if one exists.
     pub unloading_a_r: Option<f64>,
     /// γ̃_glo = γ_s/u_ela^(f) [S-24].
@@ -206,7 +206,7 @@ pub fn evaluate_warm(
         sigma_a_q: Vec::new(),
         iterations: 0,
         residual: 0.0,
-        branch: "adhesionless".into(),
+        branch: Branch::Adhesionless,
         unloading_a_r: None,
         gamma_glo: 0.0,
         elapsed_s: t0.elapsed().as_secs_f64(),
@@ -299,7 +299,7 @@ fn evaluate_adhesive(
         sigma_a_q,
         iterations: sol.iterations,
         residual: sol.residual,
-        branch: sol.branch.clone(),
+        branch: sol.branch,
         unloading_a_r: sol.unloading_a_r,
         gamma_glo: sol.gamma_glo,
         elapsed_s: t0.elapsed().as_secs_f64(),
