@@ -182,7 +182,15 @@ pub fn evaluate_warm(
     if scene.gamma > 0.0 {
         return evaluate_adhesive(scene, opts, warm, cancel, t0);
     }
-    let sol = persson::solve(scene, &opts.accuracy)?;
+    // the elastic energy and a_r(q) near q_L need the ODE resolved where v passes p*²: at
+    // small p* the default rtol steps across it (one step from q_L to q_r on a thin slab at
+    // p* = 1e-7, energy 3x too high). The engine therefore integrates at rtol ≤ ENERGY_RTOL,
+    // the accuracy of the energy route, so `run` and `sweep` report the same U and a_r(q).
+    let fine = Accuracy {
+        rtol: opts.accuracy.rtol.min(crate::theory::gap::ENERGY_RTOL),
+        ..opts.accuracy
+    };
+    let sol = persson::solve(scene, &fine)?;
     let sigma_max = match opts.sigma_max {
         Some(s) => check_in(Field::SigmaMax, s, SIGMA_MAX_RANGE.0, SIGMA_MAX_RANGE.1)?,
         None => sol.default_sigma_max(),
