@@ -113,7 +113,7 @@ pub(super) struct Attempt {
     pub(super) converged: bool,
 }
 
-fn residual_of(x: &[f64], gx: &[f64]) -> f64 {
+pub(super) fn residual_of(x: &[f64], gx: &[f64]) -> f64 {
     let scale = x
         .last()
         .copied()
@@ -132,7 +132,9 @@ pub(super) fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
 }
 
 impl<'a> Marcher<'a> {
+    /// G(x): the walls of x, then one march (at the p* of `scene`).
     pub(super) fn map(&mut self, scene: &Scene, x: &[f64]) -> Vec<f64> {
+        self.pressure = scene.pressure;
         let w = walls_for(scene, self.grid, x);
         self.march(&w.mid).a_nodes
     }

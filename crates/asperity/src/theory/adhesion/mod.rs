@@ -73,8 +73,10 @@
 //! Diagnostics: with `ASPERITY_DEBUG` set, every fixed-point iteration prints its residual and
 //! a_r(q_s) to stderr.
 
+mod continuation;
 mod fixed_point;
 mod grid;
+mod newton;
 mod propagator;
 mod strategy;
 mod walls;
@@ -234,9 +236,84 @@ pub fn propagate_with_wall(
         acc: *acc,
         heat: propagator::Heat::new(),
         force_grid_from: grid_from_start.then_some(1),
+        pressure: scene.pressure,
     };
     let out = m.march(&walls);
     Ok((grid.q.clone(), out.a_nodes))
+}
+
+/// One branch met by [`trace_in_gamma`] at the scene's γ_s.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TracedBranch {
+    /// a_r(q_s) of the branch.
+    pub a_r: f64,
+    /// Whether the branch is stable (an even number of folds lies between it and the
+    /// adhesionless start).
+    pub stable: bool,
+    /// Fixed-point residual of the polished state.
+    pub residual: f64,
+    /// Whether the polished state met the solver's tolerance.
+    pub converged: bool,
+}
+
+/// The result of [`trace_in_gamma`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GammaTrace {
+    /// The branches met at γ = γ_s, in the order of the curve (the first is connected to the
+    /// adhesionless state: the loading branch).
+    pub branches: Vec<TracedBranch>,
+    /// γ/γ_s at the folds (turning points) passed.
+    pub folds: Vec<f64>,
+    /// γ/γ_s and a_r(q_s) of the last point reached.
+    pub last: (f64, f64),
+    /// Whether the trace ended because the corrector failed at the smallest step (see the
+    /// `continuation` module docs) rather than by leaving γ/γ_s ∈ (0, 2) or reaching full
+    /// contact.
+    pub stalled: bool,
+    /// Map evaluations spent.
+    pub evaluations: usize,
+}
+
+/// Follows the self-consistent solution from the adhesionless state (γ = 0) by
+/// pseudo-arclength continuation in γ up to 2γ_s (or full contact), through the folds of the
+/// curve, and reports every branch met at the scene's γ_s with its stability. A diagnostic
+/// and the start of the branch-following solver of issue 13: it is not yet used by
+/// [`solve`] (see the `continuation` module docs for where it stalls).
+///
+/// # Errors
+/// [`crate::error::Error::Invalid`] for a bad scene or accuracy, or
+/// [`crate::error::Error::Cancelled`].
+pub fn trace_in_gamma(
+    scene: &Scene,
+    acc: &AdhesionAccuracy,
+    cancel: Option<&std::sync::atomic::AtomicBool>,
+) -> Result<GammaTrace> {
+    scene.validate()?;
+    let grid = grid::build_grid(scene, acc.steps_per_ln_q);
+    let mut m = propagator::Marcher::new(scene, &grid, *acc);
+    let adhesionless = m.march(&vec![0.0; grid.steps.len()]).a_nodes;
+    let at = |mu: f64| {
+        let mut s = scene.clone();
+        s.gamma = scene.gamma * mu;
+        s
+    };
+    let tr = m.arclength(&at, newton::ln_a(&adhesionless), 0.0, 1.0, 2.0, cancel)?;
+    Ok(GammaTrace {
+        branches: tr
+            .crossings
+            .iter()
+            .map(|c| TracedBranch {
+                a_r: c.attempt.x.last().copied().unwrap_or(0.0),
+                stable: c.stable,
+                residual: c.attempt.residual,
+                converged: c.attempt.converged,
+            })
+            .collect(),
+        folds: tr.folds,
+        last: tr.last,
+        stalled: tr.stalled,
+        evaluations: tr.evaluations,
+    })
 }
 
 /// γ(q)/γ_s and σ_a*(q) interpolated at resolution q (linear in ln q between nodes).

@@ -250,6 +250,8 @@ pub(super) struct Marcher<'a> {
     pub(super) heat: Heat,
     /// Test hook: start the grid at this step even if the wall has not moved.
     pub(super) force_grid_from: Option<usize>,
+    /// p* of the march (the scene's unless a continuation varies it).
+    pub(super) pressure: f64,
 }
 
 impl<'a> Marcher<'a> {
@@ -261,13 +263,14 @@ impl<'a> Marcher<'a> {
             acc,
             heat: Heat::new(),
             force_grid_from: None,
+            pressure: scene.pressure,
         }
     }
 
     /// Marches the distribution through the steps with the given wall positions (σ_a* at each
     /// step's midpoint), returning a_r at the nodes and the final state.
     pub(super) fn march(&mut self, walls: &[f64]) -> March {
-        let p0 = self.scene.pressure;
+        let p0 = self.pressure;
         let model = self.scene.model;
         let ppw = self.acc.points_per_width;
         let k_steps = self.grid.steps.len();

@@ -254,6 +254,7 @@ fn finish(
     }
     let x = att.x;
     let w = walls_for(scene, grid, &x);
+    m.pressure = scene.pressure;
     let fin = m.march(&w.mid);
     // the final state with the wall at σ_a(q_s)
     let s_end = *w.sigma_nodes.last().unwrap_or(&0.0);
