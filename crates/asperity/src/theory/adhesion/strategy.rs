@@ -71,16 +71,20 @@ fn validate(acc: &AdhesionAccuracy) -> Result<()> {
     Ok(())
 }
 
-/// The warm start when `warm` lives on the same grid.
+/// The warm start from `warm`: its a_r at the nodes when it lives on the same grid, else
+/// interpolated onto this grid (linear in ln q) when it spans the same resolution range (a
+/// solve of the same scene at another resolution: the error estimate's half-resolution
+/// solves start on the branch the full solve found).
 fn warm_start(warm: Option<&AdhesiveSolution>, grid: &Grid) -> Option<Vec<f64>> {
-    match warm {
-        Some(w)
-            if w.a_q.len() == grid.steps.len() + 1 && w.q.first() == grid.q.first() && w.q.last() == grid.q.last() =>
-        {
-            Some(w.a_q.clone())
-        }
-        _ => None,
+    let w = warm?;
+    let (q0, q1) = (grid.q.first()?, grid.q.last()?);
+    if w.q.first() != Some(q0) || w.q.last() != Some(q1) || w.a_q.len() != w.q.len() {
+        return None;
     }
+    if w.a_q.len() == grid.steps.len() + 1 {
+        return Some(w.a_q.clone());
+    }
+    Some(grid.q.iter().map(|&q| super::interpolate(w, q, &w.a_q)).collect())
 }
 
 /// Solves the adhesive theory for a scene with γ_s > 0 (see the module docs). `warm` is a
