@@ -64,8 +64,8 @@ type NodeResult = std::result::Result<Evaluation, Error>;
 
 /// Evaluates the scene at every p* of `ps` (ascending), keeping a load whose solver did not
 /// converge as an `Err` and going on (cancellation and invalid input end the whole call): in
-/// parallel without adhesion; with it in order of increasing load with continuation, one chunk
-/// of the range per thread.
+/// parallel without adhesion; with it in order of increasing load with continuation, in
+/// chunks of a fixed length (independent of the number of threads).
 pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<NodeResult>> {
     let opts = lean(opts);
     let keep = |r: Result<Evaluation>, p: f64| -> Result<NodeResult> {
@@ -87,12 +87,11 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
             })
             .collect();
     }
-    // continuation runs in order of increasing load; the range is cut into one chunk per
-    // worker thread (each ≥ MIN_CHUNK loads), each chunk starting cold, i.e. from the
-    // adhesionless solution: the loading branch, like the continuation itself
-    let threads = rayon::current_num_threads().clamp(1, 8);
-    let chunks = (ps.len() / MIN_CHUNK).clamp(1, threads);
-    let size = ps.len().div_ceil(chunks);
+    // continuation runs in order of increasing load; the range is cut into chunks by a fixed
+    // rule (CHUNK loads each, evened out), never by the number of threads, so the result is the
+    // same on any machine; each chunk starts cold, i.e. from the adhesionless solution: the
+    // loading branch, like the continuation itself
+    let size = chunk_size(ps.len());
     let parts: Vec<Result<Vec<NodeResult>>> = ps
         .par_chunks(size.max(1))
         .map(|part| {
@@ -124,8 +123,15 @@ pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&At
     node_results(scene, ps, opts, cancel)?.into_iter().collect()
 }
 
-/// Fewest loads per continuation chunk of an adhesive sweep.
-const MIN_CHUNK: usize = 16;
+/// Loads per continuation chunk of an adhesive sweep (at most; the chunks are evened out).
+const CHUNK: usize = 16;
+
+/// The chunk length of an adhesive sweep of `n` loads: ⌈n/CHUNK⌉ chunks of equal length
+/// (the last one shorter). A function of `n` only: results do not depend on the thread count.
+fn chunk_size(n: usize) -> usize {
+    let chunks = n.div_ceil(CHUNK).max(1);
+    n.div_ceil(chunks).max(1)
+}
 
 /// U* = U/(E*ḡh_rms) at every p* of `ps` (see [`evaluations`]).
 pub fn energies(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<f64>> {

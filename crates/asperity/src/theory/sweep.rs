@@ -11,7 +11,10 @@
 //! order of increasing p* (the loading branch, continuation from the neighbouring load): the
 //! warm start is [`crate::theory::loads::evaluate_node`]: each load starts the fixed point from the previous load's
 //! a_r(q), which cuts the iterations and keeps the sweep on the loading branch (an adhesive
-//! jump shows as a non-monotone stretch, flagged by [`Sweep::monotone`]).
+//! jump shows as a non-monotone stretch, flagged by [`Sweep::monotone`]). The range is cut
+//! into chunks of at most 16 loads by a rule that depends on the number of loads only; the
+//! chunks run in parallel, so a sweep gives the same numbers, bit for bit, on any number of
+//! threads.
 //!
 //! Cancellation: the caller may pass an `AtomicBool`; when it is set the sweep stops between
 //! evaluations and returns [`Error::Cancelled`].
