@@ -102,7 +102,7 @@ impl PointData {
         let mut pd = PointData::from_evaluation(ev);
         pd.pressure = p;
         if ev.branch == "adhesionless" && ev.width > 0.0 {
-            let top = ev.pr.sigma.last().copied().unwrap_or(p + 5.0 * ev.width);
+            let top = ev.stats.pr.sigma.last().copied().unwrap_or(p + 5.0 * ev.width);
             pd.pr_log = log_grid(PR_LOG_FROM, top, PR_LOG_POINTS)
                 .into_iter()
                 .map(|s| (s, asperity::theory::mirror::density(s, p, ev.width)))

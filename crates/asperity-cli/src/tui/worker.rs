@@ -254,7 +254,7 @@ fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<P
                 ..point_options()
             };
             match engine::evaluate_warm(scene, &opts, None, Some(cancel)) {
-                Ok(ev) if ev.converged => {
+                Ok(ev) => {
                     let mut pd = PointData::at(&ev, scene.pressure);
                     pd.error_estimate = f64::NAN;
                     pd.branch.push_str(", no error bar");
@@ -478,7 +478,7 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
     for &th in t.iter().rev() {
         match at(th, scene.gamma, warm.as_ref()) {
             Ok(ev) => {
-                a_r.push(ev.a_r);
+                a_r.push(ev.stats.a_r);
                 warm = Some(ev);
             }
             Err(Error::Cancelled) => return Err(Error::Cancelled),
@@ -490,7 +490,7 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
     }
     a_r.reverse();
     let a_r_inf = match at(f64::INFINITY, scene.gamma, None) {
-        Ok(ev) => ev.a_r,
+        Ok(ev) => ev.stats.a_r,
         Err(Error::Cancelled) => return Err(Error::Cancelled),
         Err(_) => f64::NAN,
     };
@@ -498,7 +498,7 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
         let mut v = Vec::with_capacity(t.len());
         for &th in &t {
             match at(th, 0.0, None) {
-                Ok(ev) => v.push(ev.a_r),
+                Ok(ev) => v.push(ev.stats.a_r),
                 Err(Error::Cancelled) => return Err(Error::Cancelled),
                 Err(_) => v.push(f64::NAN),
             }
