@@ -519,7 +519,7 @@ fn tour_entry(args: &TourArgs) -> Result<()> {
     let n = t.steps.len();
     if args.step < 1 || args.step as usize > n {
         return Err(Error::invalid_text(
-            Field::Other("step".into()),
+            Field::Other("--step".into()),
             args.step,
             format!("1 <= step <= {n}"),
         ));
