@@ -4,10 +4,10 @@
 //! Reduced units (physics.md §1): stresses σ* = σ/(E*ḡ), pressure p* = p/(E*ḡ), thickness
 //! t·q_r. Surface energy γ_s in J/m², range of adhesion ρ in m.
 
+use crate::elastic::slab::slab_factor_at;
 use crate::error::{check_in, fmt_value, Error, Field, Result};
 use crate::input::model::Model;
 use crate::surface::spectrum::Spectrum;
-use crate::elastic::slab::slab_factor_at;
 use serde::Serialize;
 use std::hash::{Hash, Hasher};
 
