@@ -442,13 +442,13 @@ pub fn gfmd(quick: bool) -> Result<Report> {
             surface: None,
         };
         let r = g::run(&setup, &opts, &mut |_| {}, &no)?;
-        let time = median_time(runs, || g::run(&setup, &opts, &mut |_| {}, &no).map(|r| r.a_r));
+        let time = median_time(runs, || g::run(&setup, &opts, &mut |_| {}, &no).map(|r| r.stats.a_r));
         results.push((ppw, grid.n(), r, time));
     }
     let n = results.len();
     let extrap = |f: &dyn Fn(&asperity::gfmd::GfmdResult) -> f64| 2.0 * f(&results[n - 1].2) - f(&results[n - 2].2);
-    let a_inf = extrap(&|r| r.a_r);
-    let s_inf = extrap(&|r| r.mean_contact_stress);
+    let a_inf = extrap(&|r| r.stats.a_r);
+    let s_inf = extrap(&|r| r.stats.mean_contact_stress);
     let u_inf = extrap(&|r| r.mean_gap_rel);
     for (ppw, nn, r, time) in &results {
         rep.rungs.push(Rung {
@@ -459,8 +459,8 @@ pub fn gfmd(quick: bool) -> Result<Report> {
             median_s: *time,
             runs,
             errors: vec![
-                ("a_r vs extrapolated".into(), rel(r.a_r, a_inf)),
-                ("mean_contact_stress".into(), rel(r.mean_contact_stress, s_inf)),
+                ("a_r vs extrapolated".into(), rel(r.stats.a_r, a_inf)),
+                ("mean_contact_stress".into(), rel(r.stats.mean_contact_stress, s_inf)),
                 ("mean_gap".into(), rel(r.mean_gap_rel, u_inf)),
             ],
             bound: None,
@@ -489,7 +489,7 @@ pub fn gfmd(quick: bool) -> Result<Report> {
             rep.rungs.push(Rung {
                 solver: "GFMD".into(),
                 case: format!("system-1 preset grid {label} p*=0.01"),
-                setting: format!("N = {} ({} steps, a_r = {:.5})", r.grid, r.iterations, r.a_r),
+                setting: format!("N = {} ({} steps, a_r = {:.5})", r.grid, r.iterations, r.stats.a_r),
                 default: false,
                 median_s: r.solve_elapsed_s,
                 runs: 1,

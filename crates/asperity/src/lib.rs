@@ -27,6 +27,7 @@
 //!   theory, adhesion [S-5..S-9, S-14], energy and mean gap [S-11, S-12], sweeps, and the
 //!   [`theory::engine`] that evaluates one scene.
 //! - [`gfmd`]: the brute-force reference solver.
+//! - [`contact`]: [`contact::ContactStats`], the statistics every result carries.
 //! - [`error`]: typed errors ([`Error`], [`Field`]); [`tolerances`]: every numerical tolerance.
 //!
 //! ## Example
@@ -42,9 +43,10 @@
 //! scene.model = asperity::input::model::Model::named(3).unwrap();
 //! let eval = engine::evaluate(&scene, &Options::default()).unwrap();
 //! // Table 1 of [S]: a_r = p*/σ̄_c* = 0.01/0.4670 = 0.0214.
-//! assert!((eval.a_r - 0.0214).abs() < 2e-4);
+//! assert!((eval.stats.a_r - 0.0214).abs() < 2e-4);
 //! ```
 
+pub mod contact;
 pub mod elastic;
 pub mod error;
 pub mod gfmd;

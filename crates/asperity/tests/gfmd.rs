@@ -191,26 +191,26 @@ fn adhesionless_self_affine_contact_at_small_load() {
     let r = gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap();
     assert_eq!(r.grid, 128);
     assert!(r.converged && r.residual <= 1e-8);
-    let ratio = r.a_r / 0.01;
+    let ratio = r.stats.a_r / 0.01;
     eprintln!(
         "128²: a_r/p* = {ratio:.3}, σ̄_c* = {:.4}, var* = {:.4}, u/h_rms = {:.3}, {} steps; theory a_r = {:?}",
-        r.mean_contact_stress,
-        r.contact_stress_variance,
+        r.stats.mean_contact_stress,
+        r.stats.contact_stress_variance,
         r.mean_gap_rel,
         r.iterations,
-        r.theory.as_ref().map(|t| t.a_r)
+        r.theory.as_ref().map(|t| t.stats.a_r)
     );
     assert!(ratio > GFMD_AR_OVER_P.0 && ratio < GFMD_AR_OVER_P.1, "a_r/p* = {ratio}");
     // force balance σ̄_c = p*/a_r
-    assert!((r.mean_contact_stress * r.a_r / 0.01 - 1.0).abs() < GFMD_FORCE_BALANCE_REL);
+    assert!((r.stats.mean_contact_stress * r.stats.a_r / 0.01 - 1.0).abs() < GFMD_FORCE_BALANCE_REL);
     // ∫Pr dσ* = a_r
-    let w = r.pr.sigma[1] - r.pr.sigma[0];
-    let integral: f64 = r.pr.density.iter().sum::<f64>() * w;
-    assert!((integral / r.a_r - 1.0).abs() < 1e-12);
+    let w = r.stats.pr.sigma[1] - r.stats.pr.sigma[0];
+    let integral: f64 = r.stats.pr.density.iter().sum::<f64>() * w;
+    assert!((integral / r.stats.a_r - 1.0).abs() < 1e-12);
     assert!(r.mean_gap > 0.0 && r.mean_gap_rel > 0.0 && r.mean_gap_rel.is_finite());
     // the theory ran on the same realisation
     let th = r.theory.as_ref().expect("adhesionless theory");
-    assert!(th.a_r > 0.005 && th.a_r < 0.05);
+    assert!(th.stats.a_r > 0.005 && th.stats.a_r < 0.05);
     assert!(r.theory_error.is_none());
 }
 
@@ -251,11 +251,14 @@ fn seeded_runs_are_bit_for_bit_reproducible() {
     let a = gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap();
     let b = gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap();
     assert_eq!(a.surface, b.surface);
-    assert_eq!(a.a_r.to_bits(), b.a_r.to_bits());
-    assert_eq!(a.mean_contact_stress.to_bits(), b.mean_contact_stress.to_bits());
+    assert_eq!(a.stats.a_r.to_bits(), b.stats.a_r.to_bits());
+    assert_eq!(
+        a.stats.mean_contact_stress.to_bits(),
+        b.stats.mean_contact_stress.to_bits()
+    );
     assert_eq!(a.mean_gap.to_bits(), b.mean_gap.to_bits());
     assert_eq!(a.iterations, b.iterations);
-    assert_eq!(a.pr, b.pr);
+    assert_eq!(a.stats.pr, b.stats.pr);
     let mut other = setup.clone();
     other.seed = 8;
     let c = gfmd::run(&other, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap();
@@ -281,22 +284,25 @@ fn results_do_not_depend_on_the_thread_count() {
     let (a, b) = (on(1), on(3));
     assert_eq!(a.grid, 256);
     assert_eq!(a.iterations, b.iterations);
-    assert_eq!(a.a_r.to_bits(), b.a_r.to_bits());
+    assert_eq!(a.stats.a_r.to_bits(), b.stats.a_r.to_bits());
     assert_eq!(a.mean_gap.to_bits(), b.mean_gap.to_bits());
-    assert_eq!(a.contact_stress_variance.to_bits(), b.contact_stress_variance.to_bits());
+    assert_eq!(
+        a.stats.contact_stress_variance.to_bits(),
+        b.stats.contact_stress_variance.to_bits()
+    );
 }
 
 fn assert_finite(r: &gfmd::GfmdResult) {
     for x in [
-        r.a_r,
-        r.mean_contact_stress,
-        r.contact_stress_variance,
+        r.stats.a_r,
+        r.stats.mean_contact_stress,
+        r.stats.contact_stress_variance,
         r.mean_gap,
         r.residual,
     ] {
         assert!(x.is_finite(), "{r:?}");
     }
-    assert!(r.pr.density.iter().all(|x| x.is_finite()));
+    assert!(r.stats.pr.density.iter().all(|x| x.is_finite()));
 }
 
 fn tiny() -> GridSpec {
@@ -317,7 +323,7 @@ fn hard_case_tiny_load_gives_a_handful_of_contacts() {
         "{} contact nodes",
         r.contact_nodes
     );
-    assert!((r.mean_contact_stress * r.a_r / 1e-4 - 1.0).abs() < GFMD_FORCE_BALANCE_REL);
+    assert!((r.stats.mean_contact_stress * r.stats.a_r / 1e-4 - 1.0).abs() < GFMD_FORCE_BALANCE_REL);
 }
 
 #[test]
@@ -325,8 +331,8 @@ fn hard_case_full_contact_at_large_load() {
     let setup = system1_setup(tiny(), 20.0);
     let r = gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap();
     assert_finite(&r);
-    assert_eq!(r.a_r, 1.0);
-    assert!((r.mean_contact_stress / 20.0 - 1.0).abs() < 1e-9);
+    assert_eq!(r.stats.a_r, 1.0);
+    assert!((r.stats.mean_contact_stress / 20.0 - 1.0).abs() < 1e-9);
     assert_eq!(r.mean_gap, 0.0);
 }
 
@@ -345,12 +351,12 @@ fn hard_case_strong_adhesion_converges_or_reports() {
         match gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()) {
             Ok(r) => {
                 assert_finite(&r);
-                assert!(r.a_r > 0.0);
+                assert!(r.stats.a_r > 0.0);
                 // the engine cannot (yet) evaluate adhesion: theory null with the reason
                 if r.theory.is_none() {
                     assert!(r.theory_error.is_some());
                 }
-                eprintln!("gamma {gamma}: a_r = {:.4} in {} steps", r.a_r, r.iterations);
+                eprintln!("gamma {gamma}: a_r = {:.4} in {} steps", r.stats.a_r, r.iterations);
             }
             Err(Error::NotConverged { reason, .. }) => eprintln!("gamma {gamma}: {reason}"),
             Err(e) => panic!("unexpected error {e}"),
@@ -374,9 +380,14 @@ fn adhesion_increases_the_contact_area() {
     };
     let dry = run(0.0);
     let sticky = run(0.157);
-    assert!(sticky.a_r > 1.5 * dry.a_r, "{} vs {}", sticky.a_r, dry.a_r);
+    assert!(
+        sticky.stats.a_r > 1.5 * dry.stats.a_r,
+        "{} vs {}",
+        sticky.stats.a_r,
+        dry.stats.a_r
+    );
     // tensile stresses appear in contact
-    assert!(sticky.pr.sigma[0] < 0.0);
+    assert!(sticky.stats.pr.sigma[0] < 0.0);
 }
 
 #[test]
@@ -387,7 +398,7 @@ fn hard_case_very_thin_slab() {
         Ok(r) => {
             assert_finite(&r);
             // a thin slab conforms: far more contact than the semi-infinite body
-            assert!(r.a_r > 0.1, "{}", r.a_r);
+            assert!(r.stats.a_r > 0.1, "{}", r.stats.a_r);
         }
         Err(Error::NotConverged { .. }) => {}
         Err(e) => panic!("unexpected error {e}"),

@@ -163,14 +163,17 @@ fn table(o: &GfmdResult) -> String {
         Some(t) => format!("{g:<14.6}theory {t:.6}"),
         None => format!("{g:.6}"),
     };
-    line("a_r", both(o.a_r, th.map(|t| t.a_r)));
+    line("a_r", both(o.stats.a_r, th.map(|t| t.stats.a_r)));
     line(
         "mean_contact_stress*",
-        both(o.mean_contact_stress, th.map(|t| t.mean_contact_stress)),
+        both(o.stats.mean_contact_stress, th.map(|t| t.stats.mean_contact_stress)),
     );
     line(
         "contact_stress_variance*",
-        both(o.contact_stress_variance, th.map(|t| t.contact_stress_variance)),
+        both(
+            o.stats.contact_stress_variance,
+            th.map(|t| t.stats.contact_stress_variance),
+        ),
     );
     line(
         "mean_gap",

@@ -3,6 +3,7 @@
 //! The headless commands print JSON or a table to stdout; errors go to stderr as one line
 //! with a non-zero exit code. Flag names and JSON keys are a public interface.
 
+use asperity::contact::ContactStats;
 use asperity::theory::engine;
 pub mod bench;
 pub mod gfmd;
@@ -175,15 +176,6 @@ impl SceneArgs {
     }
 }
 
-/// `pr` in the JSON output.
-#[derive(Debug, Clone, Serialize, PartialEq)]
-pub struct PrTable {
-    /// σ* grid.
-    pub sigma: Vec<f64>,
-    /// Pr(σ*), ∫density dσ* = a_r.
-    pub density: Vec<f64>,
-}
-
 /// `resolution` in the JSON output.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct ResolutionTable {
@@ -198,12 +190,10 @@ pub struct ResolutionTable {
 pub struct RunOutput {
     /// Preset name.
     pub preset: String,
-    /// Relative contact area.
-    pub a_r: f64,
-    /// σ̄_c* (reduced by E*ḡ).
-    pub mean_contact_stress: f64,
-    /// ⟨δσ_c²⟩* (reduced by (E*ḡ)²).
-    pub contact_stress_variance: f64,
+    /// `a_r`, `mean_contact_stress` (reduced by E*ḡ), `contact_stress_variance` (by (E*ḡ)²)
+    /// and `pr` = {`sigma`, `density`}, ∫density dσ* = a_r.
+    #[serde(flatten)]
+    pub stats: ContactStats,
     /// Width Δ* of the stress distribution.
     pub width: f64,
     /// Whether the solver met its tolerance.
@@ -242,8 +232,6 @@ pub struct RunOutput {
     pub elapsed_s: f64,
     /// Resolved inputs.
     pub scene: SceneSummary,
-    /// Pr(σ*).
-    pub pr: PrTable,
     /// a_r(q) along the resolution.
     pub resolution: ResolutionTable,
 }
@@ -276,11 +264,10 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
     };
     Ok(RunOutput {
         preset: preset_name.to_string(),
-        a_r: ev.a_r,
-        mean_contact_stress: ev.mean_contact_stress,
-        contact_stress_variance: ev.contact_stress_variance,
+        stats: ev.stats.clone(),
         width: ev.width,
-        converged: ev.converged,
+        // a solver that misses its tolerance returns an error, never a result
+        converged: true,
         error_estimate: ev.error_estimate,
         mean_gap: gap.map(|g| g.metres),
         mean_gap_rel: gap.map(|g| g.relative),
@@ -297,10 +284,6 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         sigma_a_q: ev.sigma_a_q.clone(),
         elapsed_s: ev.elapsed_s,
         scene: scene.summary(),
-        pr: PrTable {
-            sigma: ev.pr.sigma,
-            density: ev.pr.density,
-        },
         resolution: ResolutionTable {
             q: ev.resolution.iter().map(|r| r.q).collect(),
             a_r: ev.resolution.iter().map(|r| r.a_r).collect(),
@@ -332,11 +315,11 @@ fn run_table(out: &RunOutput) -> String {
         },
     );
     line("gamma_s", format!("{} J/m^2 (gamma_glo = {:.4})", s.gamma, s.gamma_glo));
-    line("a_r", format!("{:.8}", out.a_r));
-    line("mean_contact_stress*", format!("{:.6}", out.mean_contact_stress));
+    line("a_r", format!("{:.8}", out.stats.a_r));
+    line("mean_contact_stress*", format!("{:.6}", out.stats.mean_contact_stress));
     line(
         "contact_stress_variance*",
-        format!("{:.6}", out.contact_stress_variance),
+        format!("{:.6}", out.stats.contact_stress_variance),
     );
     line("width*", format!("{:.6}", out.width));
     line("error_estimate (a_r)", format!("{:.2e}", out.error_estimate));

@@ -13,12 +13,9 @@ pub fn wall_marker(ev: &Evaluation) -> Option<f64> {
     (ev.sigma_a > 0.0).then_some(-ev.sigma_a)
 }
 
-/// One-word state of the solution for the read-out: "converged", "NOT converged", or (with
+/// One-word state of the solution for the read-out: "converged" or (with
 /// adhesion) the branch and iteration count.
 pub fn branch_label(ev: &Evaluation) -> String {
-    if !ev.converged {
-        return "NOT converged".into();
-    }
     if ev.branch == "adhesionless" {
         return "converged".into();
     }
@@ -52,8 +49,6 @@ pub struct PointData {
     pub a_r: f64,
     /// σ̄_c*.
     pub mean_contact_stress: f64,
-    /// Whether the solver met its tolerance.
-    pub converged: bool,
     /// See [`branch_label`].
     pub branch: String,
     /// Estimated absolute error of a_r.
@@ -75,9 +70,8 @@ impl PointData {
     /// Copies what the views need.
     pub fn from_evaluation(ev: &Evaluation) -> PointData {
         PointData {
-            a_r: ev.a_r,
-            mean_contact_stress: ev.mean_contact_stress,
-            converged: ev.converged,
+            a_r: ev.stats.a_r,
+            mean_contact_stress: ev.stats.mean_contact_stress,
             branch: branch_label(ev),
             error_estimate: ev.error_estimate,
             elapsed_s: ev.elapsed_s,
@@ -91,7 +85,7 @@ impl PointData {
 
 /// Pr(σ*) of an evaluation as chart points.
 pub fn pr_points(ev: &Evaluation) -> Vec<(f64, f64)> {
-    ev.pr.sigma.iter().copied().zip(ev.pr.density.iter().copied()).collect()
+    ev.stats.pr.points()
 }
 
 /// The load curves the explorer draws.
@@ -159,14 +153,14 @@ impl GfmdView {
     pub fn from_result(r: &asperity::gfmd::GfmdResult) -> GfmdView {
         GfmdView {
             pressure: r.pressure,
-            a_r: r.a_r,
-            mean_contact_stress: r.mean_contact_stress,
+            a_r: r.stats.a_r,
+            mean_contact_stress: r.stats.mean_contact_stress,
             gap_rel: r.mean_gap_rel,
-            pr: r.pr.sigma.iter().copied().zip(r.pr.density.iter().copied()).collect(),
+            pr: r.stats.pr.points(),
             grid: r.grid,
             iterations: r.iterations,
             elapsed_s: r.elapsed_s,
-            theory_a_r: r.theory.as_ref().map(|t| t.a_r),
+            theory_a_r: r.theory.as_ref().map(|t| t.stats.a_r),
         }
     }
 }
@@ -188,9 +182,9 @@ mod tests {
         scene.gamma = 0.0;
         let ev = asperity::theory::engine::evaluate(&scene, &asperity::theory::engine::Options::default()).unwrap();
         let pd = PointData::from_evaluation(&ev);
-        assert_eq!(pd.a_r, ev.a_r);
-        assert_eq!(pd.pr.len(), ev.pr.sigma.len());
-        assert_eq!(pd.pr[3], (ev.pr.sigma[3], ev.pr.density[3]));
+        assert_eq!(pd.a_r, ev.stats.a_r);
+        assert_eq!(pd.pr.len(), ev.stats.pr.sigma.len());
+        assert_eq!(pd.pr[3], (ev.stats.pr.sigma[3], ev.stats.pr.density[3]));
         assert_eq!(pd.branch, "converged");
         // adhesionless: no wall
         assert_eq!(pd.wall, None);

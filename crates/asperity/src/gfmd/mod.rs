@@ -75,12 +75,13 @@
 //! `progress` is called every [`GfmdOptions::progress_every`] steps with a [`Progress`];
 //! setting `cancel` makes the solver return [`Error::Cancelled`] within one step.
 
+use crate::contact::{ContactStats, PrCurve};
 use crate::error::{Error, Result};
 use crate::input::scene::Scene;
 use crate::numerics::fft2::RealFft2;
 use crate::surface::heightmap::{self, wave_number_sq, Surface};
 use crate::surface::spectrum::{Normalisation, SelfAffine, Spectrum};
-use crate::theory::engine::{self, PrCurve};
+use crate::theory::engine;
 use crate::theory::slab::slab_factor_at;
 use rustfft::num_complex::Complex64;
 use serde::Serialize;
@@ -507,18 +508,14 @@ pub fn solve(
 /// Measured quantities of a relaxed contact (reduced stresses by E*ḡ of the map).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Measurements {
-    /// Fraction of nodes in contact.
-    pub a_r: f64,
-    /// σ̄_c* over contact nodes.
-    pub mean_contact_stress: f64,
-    /// ⟨δσ_c²⟩* over contact nodes.
-    pub contact_stress_variance: f64,
+    /// The fraction of nodes in contact, σ̄_c* and ⟨δσ_c²⟩* over contact nodes, and the Pr(σ*)
+    /// histogram (bin centres, ∫ = a_r).
+    #[serde(flatten)]
+    pub stats: ContactStats,
     /// ū = ⟨g⟩ (m).
     pub mean_gap: f64,
     /// ū/h_rms.
     pub mean_gap_rel: f64,
-    /// Pr(σ*), ∫ density dσ* = a_r.
-    pub pr: PrCurve,
     /// Number of contact nodes.
     pub contact_nodes: usize,
     /// The stress unit E*ḡ (Pa).
@@ -573,12 +570,14 @@ pub fn measure(problem: &Problem<'_>, sol: &Solution, opts: &GfmdOptions) -> Mea
         PrCurve::default()
     };
     Measurements {
-        a_r: nc as f64 / n as f64,
-        mean_contact_stress: mean,
-        contact_stress_variance: var,
+        stats: ContactStats {
+            a_r: nc as f64 / n as f64,
+            mean_contact_stress: mean,
+            contact_stress_variance: var,
+            pr,
+        },
         mean_gap,
         mean_gap_rel: mean_gap / s.rms_height(),
-        pr,
         contact_nodes: nc,
         stress_unit: unit,
     }
@@ -657,35 +656,26 @@ pub struct GfmdSetup {
 /// The theory on the same realisation (its discrete spectrum).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TheoryComparison {
-    /// a_r.
-    pub a_r: f64,
-    /// σ̄_c*.
-    pub mean_contact_stress: f64,
-    /// ⟨δσ_c²⟩*.
-    pub contact_stress_variance: f64,
+    /// a_r, σ̄_c*, ⟨δσ_c²⟩* and Pr(σ*) of the theory.
+    #[serde(flatten)]
+    pub stats: ContactStats,
     /// Width Δ* of the stress distribution.
     pub width: f64,
     /// Model label.
     pub model: String,
-    /// Pr(σ*).
-    pub pr: PrCurve,
 }
 
 /// Everything a GFMD run reports (the JSON of `asperity gfmd`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct GfmdResult {
-    /// Fraction of nodes in contact.
-    pub a_r: f64,
-    /// σ̄_c* (reduced by E*ḡ of the map).
-    pub mean_contact_stress: f64,
-    /// ⟨δσ_c²⟩*.
-    pub contact_stress_variance: f64,
+    /// The fraction of nodes in contact, σ̄_c* and ⟨δσ_c²⟩* (reduced by E*ḡ of the map) and
+    /// the Pr(σ*) histogram (bin centres, ∫ = a_r).
+    #[serde(flatten)]
+    pub stats: ContactStats,
     /// ū (m).
     pub mean_gap: f64,
     /// ū/h_rms.
     pub mean_gap_rel: f64,
-    /// Pr(σ*) histogram (bin centres), ∫ = a_r.
-    pub pr: PrCurve,
     /// FIRE steps.
     pub iterations: usize,
     /// Final relative force residual.
@@ -801,12 +791,9 @@ pub fn run(
     }) {
         Ok(ev) => (
             Some(TheoryComparison {
-                a_r: ev.a_r,
-                mean_contact_stress: ev.mean_contact_stress,
-                contact_stress_variance: ev.contact_stress_variance,
+                stats: ev.stats,
                 width: ev.width,
                 model: scene.model.label(),
-                pr: ev.pr,
             }),
             None,
         ),
@@ -815,12 +802,9 @@ pub fn run(
     let grid_spec = setup.surface.is_none().then_some(setup.grid);
     let theory_elapsed_s = t_theory.elapsed().as_secs_f64();
     Ok(GfmdResult {
-        a_r: m.a_r,
-        mean_contact_stress: m.mean_contact_stress,
-        contact_stress_variance: m.contact_stress_variance,
+        stats: m.stats,
         mean_gap: m.mean_gap,
         mean_gap_rel: m.mean_gap_rel,
-        pr: m.pr,
         iterations: sol.iterations,
         residual: sol.residual,
         tolerance: opts.tolerance,

@@ -104,33 +104,18 @@ impl Options {
     }
 }
 
-/// Pr(σ*) sampled on a grid (reduced units; ∫density dσ* = a_r).
-#[derive(Debug, Clone, Serialize, PartialEq, Default)]
-pub struct PrCurve {
-    /// σ* grid (ascending; starts at −σ_a* when adhesion is on).
-    pub sigma: Vec<f64>,
-    /// Pr(σ*).
-    pub density: Vec<f64>,
-}
+pub use crate::contact::{ContactStats, PrCurve};
 
 /// The result of one evaluation.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct Evaluation {
-    /// Relative contact area a_r(q_s).
-    pub a_r: f64,
-    /// σ̄_c* (reduced by E*ḡ).
-    pub mean_contact_stress: f64,
-    /// ⟨δσ_c²⟩* (reduced by (E*ḡ)²).
-    pub contact_stress_variance: f64,
+    /// a_r(q_s), σ̄_c*, ⟨δσ_c²⟩* and Pr(σ*).
+    #[serde(flatten)]
+    pub stats: ContactStats,
     /// Width of the final stress distribution Δ* (adhesionless: √v(q_s)).
     pub width: f64,
-    /// Pr(σ*).
-    pub pr: PrCurve,
     /// a_r(q) along the resolution.
     pub resolution: Vec<ResolutionPoint>,
-    /// Whether the solver met its tolerance (an unconverged result is never returned as Ok
-    /// with `converged = true`).
-    pub converged: bool,
     /// Estimated absolute error of a_r.
     pub error_estimate: f64,
     /// Elastic energy U per nominal area (J/m²) [S-11]; see [`crate::theory::energy`].
@@ -190,13 +175,14 @@ pub fn evaluate_warm(
     let (sigma, density) = sol.sample(sigma_max, opts.sigma_points);
     let elastic_energy = crate::theory::energy::elastic_energy(scene, |q| sol.area_at(q));
     Ok(Evaluation {
-        a_r: sol.a_r,
-        mean_contact_stress: sol.mean_contact_stress,
-        contact_stress_variance: sol.contact_stress_variance,
+        stats: ContactStats {
+            a_r: sol.a_r,
+            mean_contact_stress: sol.mean_contact_stress,
+            contact_stress_variance: sol.contact_stress_variance,
+            pr: PrCurve { sigma, density },
+        },
         width: sol.width,
-        pr: PrCurve { sigma, density },
         resolution: sol.resolution,
-        converged: true,
         error_estimate: sol.error_estimate,
         elastic_energy,
         sigma_a: 0.0,
@@ -283,13 +269,14 @@ fn evaluate_adhesive(
         .collect();
     let (sigma, density) = resample(&sol, opts);
     Ok(Evaluation {
-        a_r: sol.a_r,
-        mean_contact_stress: sol.mean_contact_stress,
-        contact_stress_variance: sol.contact_stress_variance,
+        stats: ContactStats {
+            a_r: sol.a_r,
+            mean_contact_stress: sol.mean_contact_stress,
+            contact_stress_variance: sol.contact_stress_variance,
+            pr: PrCurve { sigma, density },
+        },
         width: sol.width,
-        pr: PrCurve { sigma, density },
         resolution,
-        converged: true,
         error_estimate,
         elastic_energy: sol.elastic_energy,
         sigma_a: sol.sigma_a,

@@ -318,12 +318,12 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
             match &evs[i] {
                 Ok(e) => SweepRow {
                     p: ps[i],
-                    a_r: e.a_r,
+                    a_r: e.stats.a_r,
                     mean_gap_rel: g,
                     mean_gap: g * h_rms,
-                    mean_contact_stress: e.mean_contact_stress,
+                    mean_contact_stress: e.stats.mean_contact_stress,
                     elastic_energy: e.elastic_energy,
-                    converged: e.converged,
+                    converged: true,
                     elastic_energy_reduced: e.elastic_energy / unit,
                     mean_gap_error: g_err,
                     contact_stress_variance: e.contact_stress_variance,
