@@ -5,4 +5,5 @@
 pub mod benchmark;
 pub mod chart;
 pub mod cli;
+pub mod figure;
 pub mod tui;

@@ -6,6 +6,7 @@
 use asperity::contact::ContactStats;
 use asperity::theory::engine;
 pub mod bench;
+pub mod figure;
 pub mod gfmd;
 
 use asperity::error::Field;
@@ -48,6 +49,8 @@ pub enum Command {
     Sweep(sweep::SweepArgs),
     /// Brute-force GFMD run on a reduced grid, compared with the theory on the same surface.
     Gfmd(gfmd::GfmdArgs),
+    /// A figure or table of [S] (1-8, table-1): data, a text chart, SVG/PNG (--list names them).
+    Figure(figure::FigureArgs),
 }
 
 /// Output format of `run`.
@@ -486,6 +489,7 @@ pub fn main() -> i32 {
         Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::Sweep(args)) => sweep::run(&args).map(|text| emit(&text)),
         Some(Command::Gfmd(args)) => gfmd::run(&args),
+        Some(Command::Figure(args)) => figure::run(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let out = evaluate(&preset.name, &scene, &args)?;
             match args.format {

@@ -225,12 +225,12 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                     };
                     match &pt.result {
                         Ok(e) => {
-                            r.a_r = e.a_r;
-                            r.mean_contact_stress = e.mean_contact_stress;
-                            r.contact_stress_variance = e.contact_stress_variance;
+                            r.a_r = e.stats.a_r;
+                            r.mean_contact_stress = e.stats.mean_contact_stress;
+                            r.contact_stress_variance = e.stats.contact_stress_variance;
                             r.elastic_energy = e.elastic_energy;
                             r.elastic_energy_reduced = e.elastic_energy / unit;
-                            r.converged = e.converged;
+                            r.converged = true;
                             match &pt.gap {
                                 Ok(Some(g)) => {
                                     r.mean_gap_rel = g.relative;

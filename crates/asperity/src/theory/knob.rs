@@ -254,10 +254,10 @@ mod tests {
             let mut direct = s.clone();
             direct.thickness_qr = p.value;
             let e = engine::evaluate(&direct, &Options::default()).unwrap();
-            assert_eq!(p.result.as_ref().unwrap().a_r, e.a_r);
+            assert_eq!(p.result.as_ref().unwrap().stats.a_r, e.stats.a_r);
         }
         // a thinner slab on a constant-stress base is softer at long wavelengths: more contact
-        let a: Vec<f64> = pts.iter().map(|p| p.result.as_ref().unwrap().a_r).collect();
+        let a: Vec<f64> = pts.iter().map(|p| p.result.as_ref().unwrap().stats.a_r).collect();
         assert!(a[0] > a[1] && a[1] > a[2], "{a:?}");
     }
 }

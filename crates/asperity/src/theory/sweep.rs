@@ -326,7 +326,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
                     converged: true,
                     elastic_energy_reduced: e.elastic_energy / unit,
                     mean_gap_error: g_err,
-                    contact_stress_variance: e.contact_stress_variance,
+                    contact_stress_variance: e.stats.contact_stress_variance,
                 },
                 Err(_) => {
                     failed_loads.push(ps[i]);
