@@ -5,7 +5,7 @@
 //!
 //! Charts (the selector cycles them in this order; names are used by tours):
 //!
-//! | name         | shows                                                         | [S]        |
+//! | name         | shows                                                         | \[S\]      |
 //! |--------------|---------------------------------------------------------------|------------|
 //! | `pr`         | Pr(σ*) at the current p*, linear axes, −σ_a* wall             | Figs. 2, 4 |
 //! | `pr-loglog`  | Pr(σ*) on log–log axes with the small- and large-stress asymptotes | Fig. 3 |
