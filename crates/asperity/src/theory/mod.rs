@@ -8,6 +8,7 @@ pub mod energy;
 pub mod engine;
 pub mod gap;
 pub mod knob;
+pub mod loads;
 pub mod mirror;
 pub mod persson;
 pub mod sweep;
