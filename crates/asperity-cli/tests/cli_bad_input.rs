@@ -98,3 +98,42 @@ fn numbers_print_compactly_and_files_are_named_for_what_they_are() {
     );
     fails(&["run", "--preset", "no-such-system"], &["known presets"]);
 }
+
+#[test]
+fn gfmd_blames_the_map_not_the_pressure() {
+    let dir = std::env::temp_dir().join(format!("asperity-bad-map-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let write = |name: &str, rows: &[&str]| {
+        let p = dir.join(name);
+        std::fs::write(&p, rows.join("\n")).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let flat = write("flat.txt", &["1e-9 1e-9 1e-9 1e-9"; 4]);
+    let huge = write("huge.txt", &["1e200 0 -1e200 0", "0 0 0 0", "0 0 0 0", "0 0 0 0"]);
+    let ok = write("ok.txt", &["1e-8 0 -1e-8 0", "0 0 0 0", "1e-8 0 -1e-8 0", "0 0 0 0"]);
+    fails(
+        &["gfmd", "--surface", &flat, "--size", "1e-6"],
+        &["--surface = a flat map"],
+    );
+    fails(
+        &["gfmd", "--surface", &huge, "--size", "1e-6"],
+        &["--surface", "rms gradient"],
+    );
+    fails(
+        &["gfmd", "--surface", &ok, "--size", "1e300"],
+        &["--size = 1e300", "<= 1000"],
+    );
+    fails(
+        &["gfmd", "--surface", &ok, "--size", "1"],
+        &["--surface", "rms gradient"],
+    );
+    for f in [&flat, &huge, &ok] {
+        let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+            .args(["gfmd", "--surface", f, "--size", "1e300"])
+            .output()
+            .unwrap();
+        assert!(!String::from_utf8_lossy(&out.stderr).contains("--pressure"));
+    }
+    fails(&["gfmd", "--size", "1e-6"], &["missing --surface"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -91,6 +91,10 @@ pub enum Field {
     GfmdBandwidth,
     /// λ_s/Δa of a reduced GFMD system.
     GfmdPointsPerShortWavelength,
+    /// Number of GFMD realisations (seeds) of an ensemble.
+    Seeds,
+    /// λ_s/Δa of the rungs of a GFMD resolution ladder.
+    Ladder,
     /// Any other field, by its canonical key (e.g. `reference[2].pressure`).
     Other(String),
 }
@@ -136,6 +140,8 @@ impl Field {
             Field::GfmdSizeRatio => "gfmd.system_size_ratio",
             Field::GfmdBandwidth => "gfmd.bandwidth",
             Field::GfmdPointsPerShortWavelength => "gfmd.points_per_short_wavelength",
+            Field::Seeds => "gfmd.seeds",
+            Field::Ladder => "gfmd.ladder",
             Field::Other(k) => k,
         }
     }

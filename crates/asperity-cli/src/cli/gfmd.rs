@@ -8,7 +8,7 @@
 //! ```
 
 use super::{emit, Format, SceneArgs};
-use asperity::error::{Error, Result};
+use asperity::error::{Error, Field, Result};
 use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec, Progress};
 use asperity::surface::heightmap::Surface;
 use clap::Args;
@@ -68,12 +68,16 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
     let mut grid = preset.gfmd.as_ref().map(GridSpec::from_preset).unwrap_or(DEFAULT_GRID);
     if let Some(n) = args.grid {
         if n < 4 {
-            return Err(Error::field("--grid", n, "an integer N >= 4"));
+            return Err(Error::invalid(Field::Grid, n as f64, "an integer N >= 4"));
         }
         grid = grid.with_grid(n as usize)?;
     }
     let surface = match (&args.surface, args.size) {
-        (Some(p), Some(l)) => Some(Surface::load(p, l)?),
+        (Some(p), Some(l)) => {
+            let s = Surface::load(p, l)?;
+            s.check_rough()?;
+            Some(s)
+        }
         _ => None,
     };
     let opts = GfmdOptions {

@@ -281,7 +281,7 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         detached_fraction: ev.detached_fraction,
         iterations: ev.iterations,
         residual: ev.residual,
-        branch: ev.branch.clone(),
+        branch: ev.branch.to_string(),
         unloading_a_r: ev.unloading_a_r,
         gamma_q: ev.gamma_q.clone(),
         sigma_a_q: ev.sigma_a_q.clone(),
@@ -376,6 +376,8 @@ pub fn field_name(field: &Field) -> &str {
         Field::Bins => "--bins",
         Field::SystemSize => "--size",
         Field::HeightMap => "--surface",
+        Field::Seeds => "--seeds",
+        Field::Ladder => "--ladder",
         other => other.key(),
     }
 }
@@ -421,6 +423,18 @@ pub fn clap_error_line(e: &clap::Error) -> String {
             "invalid {flag} = {}: allowed {allowed}",
             asperity::error::fmt_text(&value)
         );
+    }
+    if e.kind() == clap::error::ErrorKind::MissingRequiredArgument {
+        if let Some(ContextValue::Strings(missing)) = e.get(ContextKind::InvalidArg) {
+            let names: Vec<&str> = missing
+                .iter()
+                .map(|m| m.split_whitespace().next().unwrap_or(m))
+                .collect();
+            return format!(
+                "missing {}: required by the other flags given (see --help)",
+                names.join(", ")
+            );
+        }
     }
     let rendered = e.to_string();
     let first = rendered.lines().next().unwrap_or("").trim();

@@ -19,10 +19,11 @@
 //! ## Text format
 //!
 //! One row (fixed y) per line, heights in metres separated by whitespace; blank lines and
-//! lines starting with `#` are ignored. The physical size is not in the file (give `--size`).
+//! lines starting with `#` are ignored. The physical size L is not in the file (the caller gives
+//! it).
 
-use crate::error::{Error, Result};
-use crate::surface::spectrum::{Discrete, SelfAffine};
+use crate::error::{check_in, Error, Field, Result};
+use crate::surface::spectrum::{Discrete, SelfAffine, LENGTH_RANGE_M, RMS_GRADIENT_RANGE};
 use rustfft::num_complex::Complex64;
 use std::f64::consts::PI;
 use std::path::Path;
@@ -72,25 +73,29 @@ impl Surface {
     /// Builds a map, checking sizes, spacing and finiteness.
     pub fn new(nx: usize, ny: usize, spacing: f64, heights: Vec<f64>) -> Result<Self> {
         if nx < 2 || ny < 1 || nx > MAX_GRID || ny > MAX_GRID {
-            return Err(Error::field(
-                "grid",
+            return Err(Error::invalid_text(
+                Field::Grid,
                 format!("{nx} x {ny}"),
                 format!("2 <= nx <= {MAX_GRID}, 1 <= ny <= {MAX_GRID}"),
             ));
         }
         if heights.len() != nx * ny {
-            return Err(Error::field(
-                "surface",
+            return Err(Error::invalid_text(
+                Field::HeightMap,
                 format!("{} values", heights.len()),
                 format!("nx * ny = {} values", nx * ny),
             ));
         }
         if !(spacing.is_finite() && spacing > 0.0) {
-            return Err(Error::field("--size", spacing * nx as f64, "a finite length > 0 (m)"));
+            return Err(Error::invalid(
+                Field::SystemSize,
+                spacing * nx as f64,
+                "a finite length > 0 (m)",
+            ));
         }
         if let Some(bad) = heights.iter().position(|x| !x.is_finite()) {
-            return Err(Error::field(
-                format!("surface[{}][{}]", bad / nx, bad % nx),
+            return Err(Error::invalid(
+                Field::Other(format!("surface[{}][{}]", bad / nx, bad % nx)),
                 heights[bad],
                 "a finite height (m)",
             ));
@@ -151,13 +156,45 @@ impl Surface {
         Discrete::from_height_map(&self.heights, self.nx, self.size_x(), q_r)
     }
 
+    /// Checks that the map can be a contact problem: not flat, and a discrete rms gradient ḡ
+    /// (which sets the stress unit E*ḡ) that is finite and inside
+    /// [`RMS_GRADIENT_RANGE`] (heights of 1e200 m, or a side of 1e300 m, fail here rather than
+    /// as a pressure that over- or underflows).
+    pub fn check_rough(&self) -> Result<()> {
+        if self.heights.iter().all(|&h| h == self.heights[0]) {
+            return Err(Error::invalid_text(
+                Field::HeightMap,
+                "a flat map",
+                "a height map with some roughness",
+            ));
+        }
+        let g = self.rms_gradient();
+        let (lo, hi) = RMS_GRADIENT_RANGE;
+        if !(g >= lo && g <= hi && self.rms_height().is_finite()) {
+            return Err(Error::invalid_text(
+                Field::HeightMap,
+                format!(
+                    "a map of rms gradient {} (side L = {} m)",
+                    crate::error::fmt_value(g),
+                    crate::error::fmt_value(self.size_x())
+                ),
+                format!(
+                    "a map whose rms gradient lies in [{}, {}] (check the heights' unit, metres, and the side L)",
+                    crate::error::fmt_value(lo),
+                    crate::error::fmt_value(hi)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     /// Parses the text format; `source` names the file in errors; `size` is the side L (m)
     /// of the (square) map.
     pub fn parse(text: &str, source: &str, size: f64) -> Result<Surface> {
         let bad = |line: usize, what: String| {
-            Error::field(
-                format!("--surface {source}:{line}"),
-                what,
+            Error::invalid_text(
+                Field::HeightMap,
+                format!("{source}:{line}: {what}"),
                 "a square matrix of finite heights (m), one row per line",
             )
         };
@@ -193,22 +230,20 @@ impl Surface {
         }
         let (ny, nx) = (rows.len(), rows[0].len());
         if nx != ny {
-            return Err(Error::field(
-                format!("--surface {source}"),
-                format!("{ny} rows x {nx} columns"),
+            return Err(Error::invalid_text(
+                Field::HeightMap,
+                format!("{source}: {ny} rows x {nx} columns"),
                 "a square N x N matrix",
             ));
         }
         if nx < 4 {
-            return Err(Error::field(
-                format!("--surface {source}"),
-                format!("{nx} x {nx}"),
+            return Err(Error::invalid_text(
+                Field::HeightMap,
+                format!("{source}: {nx} x {nx}"),
                 "N >= 4",
             ));
         }
-        if !(size.is_finite() && size > 0.0) {
-            return Err(Error::field("--size", size, "a finite length > 0 (m)"));
-        }
+        check_in(Field::SystemSize, size, LENGTH_RANGE_M.0, LENGTH_RANGE_M.1)?;
         Surface::new(nx, ny, size / nx as f64, rows.concat())
     }
 
@@ -255,13 +290,13 @@ pub fn wave_number_sq(kx: usize, ky: usize, nx: usize, ny: usize, da: f64) -> f6
 pub fn generate(spec: &SelfAffine, n: usize, seed: u64) -> Result<Surface> {
     let l = spec.system_size;
     if !(4..=MAX_GRID).contains(&n) {
-        return Err(Error::field("--grid", n, format!("4 <= N <= {MAX_GRID}")));
+        return Err(Error::invalid(Field::Grid, n as f64, format!("4 <= N <= {MAX_GRID}")));
     }
     let da = l / n as f64;
     if spec.lambda_s < 2.0 * da * (1.0 - 1e-12) {
-        return Err(Error::field(
-            "--grid",
-            n,
+        return Err(Error::invalid(
+            Field::Grid,
+            n as f64,
             format!(
                 "N >= 2 L/lambda_s = {} (at least two points per short wavelength)",
                 (2.0 * l / spec.lambda_s).ceil()
@@ -309,9 +344,9 @@ pub fn generate(spec: &SelfAffine, n: usize, seed: u64) -> Result<Surface> {
         }
     }
     if g2 == 0.0 {
-        return Err(Error::field(
-            "--grid",
-            n,
+        return Err(Error::invalid(
+            Field::Grid,
+            n as f64,
             "a grid resolving at least one mode below q_s",
         ));
     }

@@ -1,0 +1,106 @@
+//! Reduced grids: L/λ_r, λ_r/λ_s and λ_s/Δa of a brute-force run, the reduced spectrum, and the
+//! inputs of [`super::run()`].
+
+use crate::error::{Error, Field, Result};
+use crate::input::scene::Scene;
+use crate::surface::heightmap::{self, Surface};
+use crate::surface::spectrum::{Normalisation, SelfAffine, Spectrum};
+use serde::Serialize;
+
+/// The reduced grid of a brute-force run: L/λ_r, λ_r/λ_s and λ_s/Δa, so N = their product.
+/// λ_s and the normalisation (ḡ) of the full spectrum are kept, L and λ_r shrink: the scales
+/// where adhesion acts stay as they are.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GridSpec {
+    /// L/λ_r.
+    pub system_size_ratio: f64,
+    /// λ_r/λ_s.
+    pub bandwidth: f64,
+    /// λ_s/Δa.
+    pub points_per_short_wavelength: f64,
+}
+
+impl GridSpec {
+    /// The preset's `[gfmd]` table.
+    pub fn from_preset(g: &crate::input::preset::GfmdSpec) -> Self {
+        GridSpec {
+            system_size_ratio: g.system_size_ratio as f64,
+            bandwidth: g.bandwidth as f64,
+            points_per_short_wavelength: g.points_per_short_wavelength as f64,
+        }
+    }
+
+    /// Grid side N.
+    pub fn n(&self) -> usize {
+        (self.system_size_ratio * self.bandwidth * self.points_per_short_wavelength).round() as usize
+    }
+
+    /// The same L/λ_r and λ_s/Δa on an N×N grid (the bandwidth λ_r/λ_s adapts).
+    pub fn with_grid(&self, n: usize) -> Result<Self> {
+        let bw = n as f64 / (self.system_size_ratio * self.points_per_short_wavelength);
+        if !(4..=heightmap::MAX_GRID).contains(&n) || bw <= 1.0 {
+            return Err(Error::invalid(
+                Field::Grid,
+                n as f64,
+                format!(
+                    "{} < N <= {} (L/lambda_r = {} and lambda_s/da = {} need lambda_r > lambda_s)",
+                    (self.system_size_ratio * self.points_per_short_wavelength) as usize,
+                    heightmap::MAX_GRID,
+                    self.system_size_ratio,
+                    self.points_per_short_wavelength
+                ),
+            ));
+        }
+        Ok(GridSpec { bandwidth: bw, ..*self })
+    }
+
+    /// The reduced spectrum: same H, λ_s and ḡ as `full`, λ_r = bandwidth·λ_s, L = ratio·λ_r.
+    pub fn spectrum(&self, full: &SelfAffine) -> Result<SelfAffine> {
+        let lambda_r = self.bandwidth * full.lambda_s;
+        let l = self.system_size_ratio * lambda_r;
+        let g = Spectrum::SelfAffine(*full).rms_gradient();
+        SelfAffine::new(l, lambda_r, full.lambda_s, full.hurst, Normalisation::RmsGradient(g))
+    }
+}
+
+/// Inputs of [`super::run()`].
+#[derive(Debug, Clone)]
+pub struct GfmdSetup {
+    /// The scene: E*, p*, t·q_r, γ_s, ρ, and the model used for the theory comparison. Its
+    /// spectrum must be self-affine when the map is generated.
+    pub scene: Scene,
+    /// The reduced grid (ignored, except L/λ_r for q_r, when `surface` is given).
+    pub grid: GridSpec,
+    /// Seed of the random phases.
+    pub seed: u64,
+    /// A given map (square) instead of a generated one.
+    pub surface: Option<Surface>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::preset::Preset;
+
+    #[test]
+    fn preset_grid_and_its_reduced_spectrum() {
+        let p = Preset::resolve("system-1").unwrap();
+        let g = GridSpec::from_preset(p.gfmd.as_ref().unwrap());
+        assert_eq!(g.n(), 512);
+        assert_eq!(p.gfmd_grid(), Some(512));
+        let full = match p.spectrum().unwrap() {
+            Spectrum::SelfAffine(s) => s,
+            _ => unreachable!(),
+        };
+        let r = g.spectrum(&full).unwrap();
+        assert_eq!(r.lambda_s, full.lambda_s);
+        assert!((r.lambda_r / r.lambda_s - 32.0).abs() < 1e-12);
+        assert!((r.system_size / r.lambda_r - 2.0).abs() < 1e-12);
+        assert!((Spectrum::SelfAffine(r).rms_gradient() - 1.0).abs() < 1e-12);
+        // --grid keeps L/λ_r and λ_s/Δa
+        let h = g.with_grid(256).unwrap();
+        assert_eq!(h.n(), 256);
+        assert!((h.bandwidth - 16.0).abs() < 1e-12);
+        assert!(g.with_grid(16).is_err());
+    }
+}

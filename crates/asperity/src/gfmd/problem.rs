@@ -1,0 +1,171 @@
+//! The contact problem and the solver's options, progress reports and relaxed configuration
+//! (see the [module docs](super) for the model).
+
+use crate::error::{Error, Field, Result};
+use crate::surface::heightmap::Surface;
+
+/// Solver options.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GfmdOptions {
+    /// Relative force residual to reach (see the module docs).
+    pub tolerance: f64,
+    /// Give up (with [`Error::NotConverged`]) after this many FIRE steps.
+    pub max_iterations: usize,
+    /// Number of bins of the Pr(σ*) histogram.
+    pub pr_bins: usize,
+    /// Call the progress callback every this many steps.
+    pub progress_every: usize,
+    /// Nodes with a gap at most this (m) count as contact; 0 = on the hard wall.
+    pub contact_gap: f64,
+}
+
+impl Default for GfmdOptions {
+    fn default() -> Self {
+        GfmdOptions {
+            tolerance: 1e-8,
+            max_iterations: 200_000,
+            pr_bins: 400,
+            progress_every: 50,
+            contact_gap: 0.0,
+        }
+    }
+}
+
+impl GfmdOptions {
+    /// Checks the options, naming the field.
+    pub fn validate(&self) -> Result<()> {
+        if !(self.tolerance.is_finite() && self.tolerance >= 1e-14 && self.tolerance < 1.0) {
+            return Err(Error::invalid(
+                Field::GfmdTolerance,
+                self.tolerance,
+                "1e-14 <= tolerance < 1",
+            ));
+        }
+        if self.max_iterations == 0 {
+            return Err(Error::invalid(Field::MaxIterations, 0.0, "an integer >= 1"));
+        }
+        if !(1..=1_000_000).contains(&self.pr_bins) {
+            return Err(Error::invalid(Field::Bins, self.pr_bins as f64, "1 <= bins <= 1000000"));
+        }
+        if !(self.contact_gap.is_finite() && self.contact_gap >= 0.0) {
+            return Err(Error::invalid(Field::ContactGap, self.contact_gap, "a gap >= 0 (m)"));
+        }
+        Ok(())
+    }
+}
+
+/// One contact problem in physical units.
+#[derive(Debug, Clone, Copy)]
+pub struct Problem<'a> {
+    /// The rigid rough substrate.
+    pub surface: &'a Surface,
+    /// Contact modulus E* (Pa).
+    pub modulus: f64,
+    /// Slab thickness t (m); `f64::INFINITY` = semi-infinite.
+    pub thickness: f64,
+    /// Nominal pressure p₀ (Pa), > 0.
+    pub pressure: f64,
+    /// Surface energy γ (J/m²); 0 = hard wall only.
+    pub gamma: f64,
+    /// Range ρ of the attraction (m); unused when γ = 0.
+    pub range: f64,
+}
+
+impl Problem<'_> {
+    /// Checks every field.
+    pub fn validate(&self) -> Result<()> {
+        if !(self.modulus.is_finite() && self.modulus > 0.0) {
+            return Err(Error::invalid(
+                Field::ContactModulus,
+                self.modulus,
+                "a finite modulus > 0 (Pa)",
+            ));
+        }
+        if self.thickness.is_nan() || self.thickness <= 0.0 {
+            return Err(Error::invalid(
+                Field::Thickness,
+                self.thickness,
+                "a thickness t > 0 (m), or inf",
+            ));
+        }
+        if !(self.pressure.is_finite() && self.pressure > 0.0) {
+            return Err(Error::invalid(
+                Field::PressurePa,
+                self.pressure,
+                "a finite pressure p > 0 (Pa)",
+            ));
+        }
+        if !(self.gamma.is_finite() && self.gamma >= 0.0) {
+            return Err(Error::invalid(Field::SurfaceEnergy, self.gamma, "gamma >= 0 (J/m^2)"));
+        }
+        if self.gamma > 0.0 && !(self.range.is_finite() && self.range > 0.0) {
+            return Err(Error::invalid(Field::Range, self.range, "a finite length > 0 (m)"));
+        }
+        if self.surface.heights.iter().all(|&h| h == self.surface.heights[0]) {
+            return Err(Error::invalid_text(
+                Field::HeightMap,
+                "a flat map",
+                "a height map with some roughness",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// A progress report.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Progress {
+    /// FIRE steps so far.
+    pub iteration: usize,
+    /// Current relative force residual.
+    pub residual: f64,
+    /// Current fraction of nodes on the wall.
+    pub contact_fraction: f64,
+}
+
+/// The relaxed configuration.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// Gap g(r) = w − h (m), ≥ 0.
+    pub gap: Vec<f64>,
+    /// Interfacial stress σ(r) = p₀ + (φ⋆w)(r) (Pa, compressive positive).
+    pub stress: Vec<f64>,
+    /// Nodes on the hard wall.
+    pub on_wall: Vec<bool>,
+    /// FIRE steps taken.
+    pub iterations: usize,
+    /// Final relative force residual.
+    pub residual: f64,
+    /// Wall time of the solve (s).
+    pub elapsed_s: f64,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn options_are_validated() {
+        assert!(GfmdOptions::default().validate().is_ok());
+        for o in [
+            GfmdOptions {
+                tolerance: 0.0,
+                ..GfmdOptions::default()
+            },
+            GfmdOptions {
+                max_iterations: 0,
+                ..GfmdOptions::default()
+            },
+            GfmdOptions {
+                pr_bins: 0,
+                ..GfmdOptions::default()
+            },
+            GfmdOptions {
+                contact_gap: f64::NAN,
+                ..GfmdOptions::default()
+            },
+        ] {
+            assert!(matches!(o.validate(), Err(Error::Invalid { .. })));
+        }
+    }
+}

@@ -1,0 +1,197 @@
+//! One GFMD run of a scene: generate (or take) the map, relax, measure, and evaluate the theory
+//! on the map's own discrete spectrum.
+
+use super::{measure, solve, GfmdOptions, GfmdSetup, GridSpec, Problem, Progress};
+use crate::contact::ContactStats;
+use crate::error::{Error, Field, Result};
+use crate::input::scene::Scene;
+use crate::surface::heightmap::{self, Surface};
+use crate::surface::spectrum::Spectrum;
+use crate::theory::engine;
+use serde::Serialize;
+use std::sync::atomic::AtomicBool;
+use std::time::Instant;
+
+/// The theory on the same realisation (its discrete spectrum).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TheoryComparison {
+    /// a_r, σ̄_c*, ⟨δσ_c²⟩* and Pr(σ*) of the theory.
+    #[serde(flatten)]
+    pub stats: ContactStats,
+    /// Width Δ* of the stress distribution.
+    pub width: f64,
+    /// Model label.
+    pub model: String,
+}
+
+/// Everything a GFMD run reports (the JSON of `asperity gfmd`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GfmdResult {
+    /// The fraction of nodes in contact, σ̄_c* and ⟨δσ_c²⟩* (reduced by E*ḡ of the map) and
+    /// the Pr(σ*) histogram (bin centres, ∫ = a_r).
+    #[serde(flatten)]
+    pub stats: ContactStats,
+    /// ū (m).
+    pub mean_gap: f64,
+    /// ū/h_rms.
+    pub mean_gap_rel: f64,
+    /// FIRE steps.
+    pub iterations: usize,
+    /// Final relative force residual.
+    pub residual: f64,
+    /// Requested tolerance.
+    pub tolerance: f64,
+    /// Wall time of the whole run (s).
+    pub elapsed_s: f64,
+    /// Wall time of the solver alone (s).
+    pub solve_elapsed_s: f64,
+    /// Wall time of the theory evaluation (s).
+    pub theory_elapsed_s: f64,
+    /// Grid side N.
+    pub grid: usize,
+    /// Whether the tolerance was met (always true in a returned result: a run that does not
+    /// converge is an error).
+    pub converged: bool,
+    /// Seed (null for a loaded map).
+    pub seed: Option<u64>,
+    /// p*.
+    pub pressure: f64,
+    /// p (Pa).
+    pub pressure_pa: f64,
+    /// t·q_r (null = semi-infinite).
+    pub thickness_qr: Option<f64>,
+    /// γ (J/m²).
+    pub gamma: f64,
+    /// ρ (m).
+    pub range_m: f64,
+    /// L (m).
+    pub system_size_m: f64,
+    /// Δa (m).
+    pub spacing_m: f64,
+    /// Reduced grid geometry of a generated map (null for a loaded map).
+    pub grid_spec: Option<GridSpec>,
+    /// ḡ of the map.
+    pub rms_gradient: f64,
+    /// h_rms of the map (m).
+    pub rms_height_m: f64,
+    /// Number of contact nodes.
+    pub contact_nodes: usize,
+    /// (γ/E*)·Δa/ρ², should stay below ≈ 0.25 (physics.md §6); 0 without adhesion.
+    pub adhesion_resolution: f64,
+    /// Theory on the same map (null if it could not be evaluated).
+    pub theory: Option<TheoryComparison>,
+    /// Why `theory` is null.
+    pub theory_error: Option<String>,
+    /// The map (not serialised).
+    #[serde(skip)]
+    pub surface: Option<Surface>,
+}
+
+/// Generates (or takes) the map, relaxes the contact, measures it and evaluates the theory on
+/// the map's discrete spectrum. See the module docs.
+pub fn run(
+    setup: &GfmdSetup,
+    opts: &GfmdOptions,
+    progress: &mut dyn FnMut(Progress),
+    cancel: &AtomicBool,
+) -> Result<GfmdResult> {
+    let t0 = Instant::now();
+    let scene = &setup.scene;
+    scene.validate()?;
+    let (surf, q_r) = match &setup.surface {
+        Some(s) => {
+            if !s.is_square() {
+                return Err(Error::invalid_text(
+                    Field::HeightMap,
+                    format!("{} x {}", s.nx, s.ny),
+                    "an N x N map",
+                ));
+            }
+            s.check_rough()?;
+            let q_r = 2.0 * std::f64::consts::PI * setup.grid.system_size_ratio / s.size_x();
+            (s.clone(), q_r)
+        }
+        None => {
+            let full = match &scene.spectrum {
+                Spectrum::SelfAffine(sa) => sa,
+                Spectrum::Discrete(_) => {
+                    return Err(Error::Unsupported(
+                        "generating a map needs a self-affine spectrum; give a height map".into(),
+                    ))
+                }
+            };
+            let red = setup.grid.spectrum(full)?;
+            (heightmap::generate(&red, setup.grid.n(), setup.seed)?, red.q_r())
+        }
+    };
+    let gbar = surf.rms_gradient();
+    let thickness = if scene.thickness_qr.is_infinite() {
+        f64::INFINITY
+    } else {
+        scene.thickness_qr / q_r
+    };
+    let problem = Problem {
+        surface: &surf,
+        modulus: scene.modulus,
+        thickness,
+        pressure: scene.pressure * scene.modulus * gbar,
+        gamma: scene.gamma,
+        range: scene.range,
+    };
+    let sol = solve(&problem, opts, progress, cancel)?;
+    let m = measure(&problem, &sol, opts);
+    // theory on the same realisation
+    let t_theory = Instant::now();
+    let (theory, theory_error) = match surf.discrete_spectrum(q_r).and_then(|d| {
+        let th_scene = Scene {
+            spectrum: Spectrum::Discrete(d),
+            ..scene.clone()
+        };
+        engine::evaluate(&th_scene, &engine::Options::default())
+    }) {
+        Ok(ev) => (
+            Some(TheoryComparison {
+                stats: ev.stats,
+                width: ev.width,
+                model: scene.model.label(),
+            }),
+            None,
+        ),
+        Err(e) => (None, Some(e.to_string())),
+    };
+    let grid_spec = setup.surface.is_none().then_some(setup.grid);
+    let theory_elapsed_s = t_theory.elapsed().as_secs_f64();
+    Ok(GfmdResult {
+        stats: m.stats,
+        mean_gap: m.mean_gap,
+        mean_gap_rel: m.mean_gap_rel,
+        iterations: sol.iterations,
+        residual: sol.residual,
+        tolerance: opts.tolerance,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+        solve_elapsed_s: sol.elapsed_s,
+        theory_elapsed_s,
+        grid: surf.nx,
+        converged: true,
+        seed: setup.surface.is_none().then_some(setup.seed),
+        pressure: scene.pressure,
+        pressure_pa: problem.pressure,
+        thickness_qr: scene.thickness_qr.is_finite().then_some(scene.thickness_qr),
+        gamma: scene.gamma,
+        range_m: scene.range,
+        system_size_m: surf.size_x(),
+        spacing_m: surf.spacing,
+        grid_spec,
+        rms_gradient: gbar,
+        rms_height_m: surf.rms_height(),
+        contact_nodes: m.contact_nodes,
+        adhesion_resolution: if scene.gamma > 0.0 {
+            scene.gamma / scene.modulus * surf.spacing / (scene.range * scene.range)
+        } else {
+            0.0
+        },
+        theory,
+        theory_error,
+        surface: Some(surf),
+    })
+}
