@@ -9,8 +9,7 @@
 //! the mean gap [S-12] ([`crate::theory::gap`]) and of [`crate::theory::sweep`].
 //!
 //! Both `gap` and `sweep` depend on this module; it depends on neither's tables, so the three
-//! form no cycle ([`ENERGY_RTOL`] lives in `persson`, below the engine, for that reason;
-//! `loads` and `gap` re-export it).
+//! form no cycle ([`ENERGY_RTOL`] lives in [`crate::theory::persson`], below all three).
 
 use crate::error::{Error, Result};
 use crate::input::scene::Scene;
