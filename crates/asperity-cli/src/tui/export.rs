@@ -1,8 +1,15 @@
 //! `e`: writes the current curves as CSV and the scene as a preset TOML (loadable again with
 //! `--preset PATH`) into the export directory, under names that never overwrite:
 //! `asperity-NAME-N-pr.csv`, `asperity-NAME-N-loads.csv`, `asperity-NAME-N.toml`.
+//! The CSVs start with `#` lines describing the scene; unavailable values are empty cells.
+//!
+//! `s`: writes the visible charts as SVG and PNG (`asperity-NAME-N-CHART.svg|png`) through
+//! the chart renderer ([`crate::chart`]), from the same [`ChartModel`]s the screen shows.
 
 use super::app::App;
+use super::charts::{self, ChartKind, ChartModel, Draw, Role};
+use super::plot::Scale;
+use crate::chart::{self, ChartSpec, Series, SeriesStyle};
 use asperity::error::{Error, Result};
 use asperity::input::model::ModelKind;
 use asperity::input::preset::{ModelSpec, Preset, Variant};
@@ -37,6 +44,37 @@ pub fn scene_preset(base: &Preset, scene: &Scene) -> Preset {
     p
 }
 
+/// A CSV cell: empty where the value is unavailable (as `asperity sweep` writes it).
+pub fn cell(x: f64) -> String {
+    if x.is_finite() {
+        format!("{x:e}")
+    } else {
+        String::new()
+    }
+}
+
+/// `# key: value` lines describing the scene, for the top of every exported CSV.
+pub fn scene_comment(app: &App, name: &str) -> String {
+    let s = &app.scene;
+    let t = if s.thickness_qr.is_infinite() {
+        "inf".to_string()
+    } else {
+        format!("{}", s.thickness_qr)
+    };
+    format!(
+        "# asperity explorer export {name}\n# preset: {} ({})\n# model: {}\n# pressure: {}\n# thickness_qr: {t}\n\
+         # gamma_j_m2: {}\n# range_m: {}\n# reduced units: stresses by E*g = {} Pa, gap by h_rms = {} m\n",
+        app.preset.name,
+        app.source,
+        s.model.label(),
+        s.pressure,
+        s.gamma,
+        s.range,
+        s.stress_unit(),
+        s.spectrum.rms_height()
+    )
+}
+
 fn write(path: &Path, text: &str) -> Result<()> {
     std::fs::write(path, text).map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))
 }
@@ -62,7 +100,8 @@ pub fn export(app: &App) -> Result<Vec<String>> {
     let stem = format!("asperity-{name}-{n}");
     let mut paths = Vec::new();
 
-    let preset = scene_preset(&app.preset, &app.scene);
+    let mut preset = scene_preset(&app.preset, &app.scene);
+    preset.name = stem.clone();
     let toml_text = toml::to_string(&preset).map_err(|e| Error::Io(format!("cannot serialise the scene: {e}")))?;
     let header =
         format!("# Scene exported by the asperity explorer; open it with `asperity tui --preset {stem}.toml`.\n");
@@ -71,26 +110,161 @@ pub fn export(app: &App) -> Result<Vec<String>> {
     paths.push(path.display().to_string());
 
     if let Some(Ok(pt)) = &app.point {
-        let mut t = String::from("sigma,density\n");
+        let mut t = scene_comment(app, &stem);
+        t.push_str("sigma,density\n");
         for (s, d) in &pt.pr {
-            let _ = writeln!(t, "{s:e},{d:e}");
+            let _ = writeln!(t, "{},{}", cell(*s), cell(*d));
         }
         let path = dir.join(format!("{stem}-pr.csv"));
         write(&path, &t)?;
         paths.push(path.display().to_string());
     }
     if let Some(Ok(sw)) = &app.sweep {
-        let mut t = String::from("p,a_r,mean_gap_rel,mean_contact_stress\n");
+        let mut t = scene_comment(app, &stem);
+        t.push_str("p,a_r,mean_gap_rel,mean_contact_stress,converged\n");
         for i in 0..sw.p.len() {
             let _ = writeln!(
                 t,
-                "{:e},{:e},{:e},{:e}",
-                sw.p[i], sw.a_r[i], sw.gap_rel[i], sw.mean_contact_stress[i]
+                "{},{},{},{},{}",
+                cell(sw.p[i]),
+                cell(sw.a_r[i]),
+                cell(sw.gap_rel[i]),
+                cell(sw.mean_contact_stress[i]),
+                sw.converged.get(i).copied().unwrap_or(false)
             );
         }
         let path = dir.join(format!("{stem}-loads.csv"));
         write(&path, &t)?;
         paths.push(path.display().to_string());
+    }
+    Ok(paths)
+}
+
+/// The chart of the renderer ([`crate::chart`]) for a chart model, as drawn on screen: the
+/// same series and names; the −σ_a* wall becomes a dashed vertical line, the current point a
+/// point; guide lines (σ* = 0, the p* line) are left out; on a clipped log axis the points
+/// below the chart's range are gaps, as on screen.
+pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
+    let mut series = Vec::new();
+    let ylo = m.ys.inverse(m.yb[0]);
+    let (y0, y1) = {
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for s in &m.series {
+            for &(_, y) in &s.points {
+                if y.is_finite() && (!m.clip_y || y >= ylo) {
+                    lo = lo.min(y);
+                    hi = hi.max(y);
+                }
+            }
+        }
+        (lo, hi)
+    };
+    for v in &m.vlines {
+        if v.role == Role::Wall && y0.is_finite() {
+            series.push(Series {
+                name: v.name.clone(),
+                points: vec![(v.x, y0.min(0.0)), (v.x, y1)],
+                style: SeriesStyle::Dashed,
+            });
+        }
+    }
+    for s in &m.series {
+        let points = if m.clip_y {
+            s.points
+                .iter()
+                .map(|&(x, y)| if y >= ylo { (x, y) } else { (x, f64::NAN) })
+                .collect()
+        } else {
+            s.points.clone()
+        };
+        series.push(Series {
+            name: if s.role == Role::Current {
+                "current p*".into()
+            } else {
+                s.name.clone()
+            },
+            points,
+            style: match s.draw {
+                Draw::Line => SeriesStyle::Line,
+                Draw::Points => SeriesStyle::Points,
+                Draw::Dashed => SeriesStyle::Dashed,
+            },
+        });
+    }
+    ChartSpec {
+        title: format!("{} — {scene_note}", m.title),
+        x_label: m.x_label.clone(),
+        y_label: m.y_label.clone(),
+        x_log: m.xs == Scale::Log10,
+        y_log: m.ys == Scale::Log10,
+        series,
+    }
+}
+
+fn safe_name(app: &App) -> String {
+    app.preset
+        .name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// `s`: writes the visible charts (each once) as SVG and PNG into the export directory, as
+/// `asperity-NAME-N-CHART.svg|png` (N never overwrites); returns the paths.
+pub fn export_charts(app: &App) -> Result<Vec<String>> {
+    let mut kinds: Vec<ChartKind> = Vec::new();
+    for k in app.charts {
+        if !kinds.contains(&k) {
+            kinds.push(k);
+        }
+    }
+    let models: Vec<(ChartKind, ChartModel)> = kinds
+        .into_iter()
+        .map(|k| (k, charts::build(app, k)))
+        .filter(|(_, m)| m.empty.is_none())
+        .collect();
+    if models.is_empty() {
+        return Err(Error::Unsupported("no chart to save yet (nothing computed)".into()));
+    }
+    let name = safe_name(app);
+    let dir = &app.export_dir;
+    let n = (1..10_000)
+        .find(|n| {
+            models
+                .iter()
+                .all(|(k, _)| !dir.join(format!("asperity-{name}-{n}-{}.svg", k.name())).exists())
+        })
+        .ok_or_else(|| Error::Io("too many exports in this directory".into()))?;
+    let sc = &app.scene;
+    let t = if sc.thickness_qr.is_infinite() {
+        "∞".to_string()
+    } else {
+        super::plot::format_number(sc.thickness_qr)
+    };
+    let note = format!(
+        "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
+        app.preset.name,
+        sc.model.label(),
+        super::plot::format_number(sc.gamma)
+    );
+    let mut paths = Vec::new();
+    for (k, m) in &models {
+        let spec = chart_spec(m, &note);
+        for (ext, write) in [
+            ("svg", chart::write_svg as fn(&ChartSpec, &Path) -> std::io::Result<()>),
+            ("png", chart::write_png),
+        ] {
+            let path = dir.join(format!("asperity-{name}-{n}-{}.{ext}", k.name()));
+            write(&spec, &path).map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))?;
+            paths.push(path.display().to_string());
+        }
     }
     Ok(paths)
 }
@@ -111,11 +285,54 @@ mod tests {
         let second = export(&app).unwrap();
         assert!(second[0].ends_with("asperity-system-1-2.toml"), "{second:?}");
         let csv = std::fs::read_to_string(&first[2]).unwrap();
-        assert!(csv.starts_with("p,a_r,mean_gap_rel"));
-        assert_eq!(csv.lines().count(), 1 + crate::tui::worker::SWEEP_POINTS);
+        // scene metadata as comments, then the columns of `sweep` (empty cells, converged)
+        assert!(
+            csv.starts_with("# asperity explorer export asperity-system-1-1\n# preset: system-1"),
+            "{csv}"
+        );
+        assert!(csv.contains("# pressure: 0.01\n"), "{csv}");
+        let rows: Vec<&str> = csv.lines().filter(|l| !l.starts_with('#')).collect();
+        assert_eq!(rows[0], "p,a_r,mean_gap_rel,mean_contact_stress,converged");
+        assert_eq!(rows.len(), 1 + crate::tui::worker::SWEEP_POINTS);
+        assert!(rows[1].ends_with(",true"), "{}", rows[1]);
+        assert!(!csv.contains("NaN") && !csv.contains("0.000e0"));
         let back = Preset::load(std::path::Path::new(&first[0])).unwrap();
         assert_eq!(crate::tui::app::initial_scene(&back).unwrap(), app.scene);
+        // the exported scene is named after its file, not the stock preset
+        assert_eq!(back.name, "asperity-system-1-1");
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn s_saves_the_visible_charts_as_svg_and_png() {
+        let dir = std::env::temp_dir().join(format!("asperity-svg-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let mut app = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
+        app.export_dir = dir.clone();
+        app.set_typed(crate::tui::app::Param::Gamma, "0").unwrap();
+        app.set_charts([ChartKind::PrLog, ChartKind::AreaRatio, ChartKind::PrLog]);
+        crate::tui::worker::compute_now(&mut app, &mut Default::default());
+        let paths = export_charts(&app).unwrap();
+        assert_eq!(paths.len(), 4, "{paths:?}");
+        assert!(paths[0].ends_with("asperity-system-1-1-pr-loglog.svg"), "{paths:?}");
+        let svg = std::fs::read_to_string(&paths[0]).unwrap();
+        for name in ["σ→0 asymptote", "large-σ asymptote", "theory"] {
+            assert!(svg.contains(name), "{name}");
+        }
+        let svg = std::fs::read_to_string(&paths[2]).unwrap();
+        assert!(svg.contains("eq. (18)") && svg.contains("[S] Table 1"), "{svg}");
+        assert!(std::fs::read(&paths[3]).unwrap().starts_with(b"\x89PNG"));
+        let again = export_charts(&app).unwrap();
+        assert!(again[0].ends_with("asperity-system-1-2-pr-loglog.svg"), "{again:?}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn unavailable_values_are_empty_cells() {
+        assert_eq!(cell(f64::NAN), "");
+        assert_eq!(cell(f64::INFINITY), "");
+        assert_eq!(cell(0.0), "0e0");
+        assert_eq!(cell(0.25), "2.5e-1");
     }
 
     #[test]
