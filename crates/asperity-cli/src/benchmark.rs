@@ -440,6 +440,7 @@ pub fn gfmd(quick: bool) -> Result<Report> {
             grid,
             seed: 7,
             surface: None,
+            rescale: true,
         };
         let r = g::run(&setup, &opts, &mut |_| {}, &no)?;
         let time = median_time(runs, || g::run(&setup, &opts, &mut |_| {}, &no).map(|r| r.stats.a_r));
@@ -484,6 +485,7 @@ pub fn gfmd(quick: bool) -> Result<Report> {
                 grid,
                 seed: 1,
                 surface: None,
+                rescale: true,
             };
             let r = g::run(&setup, &opts, &mut |_| {}, &no)?;
             rep.rungs.push(Rung {

@@ -449,6 +449,7 @@ impl App {
             grid,
             seed: 1,
             surface: None,
+            rescale: true,
         };
         self.gfmd_next += 1;
         let id = self.gfmd_next;
