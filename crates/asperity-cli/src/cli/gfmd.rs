@@ -66,6 +66,9 @@ pub struct GfmdArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Json)]
     pub format: Format,
+    /// Minimiser: pk (Polonsky-Keer CG for the hard wall, FIRE with adhesion) or fire (FIRE alone).
+    #[arg(long, value_enum, default_value_t = MethodArg::Pk)]
+    pub method: MethodArg,
     /// Keep gamma_s and rho as given on the reduced grid (default: rescale them so that the
     /// reduced system keeps gamma_glo and the Tabor parameter of the full one).
     #[arg(long)]
@@ -88,6 +91,15 @@ pub struct GfmdArgs {
     /// Load sweep: number of log-spaced loads.
     #[arg(long, default_value_t = 8, allow_hyphen_values = true, value_parser = super::whole_number)]
     pub points: usize,
+}
+
+/// `--method`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum MethodArg {
+    /// Polonsky-Keer CG, FIRE to check (FIRE alone with adhesion).
+    Pk,
+    /// FIRE alone.
+    Fire,
 }
 
 /// Largest K of `--seeds`.
@@ -130,6 +142,10 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
         tolerance: args.tolerance,
         max_iterations: args.max_iterations,
         pr_bins: args.bins,
+        method: match args.method {
+            MethodArg::Pk => asperity::gfmd::Method::PolonskyKeer,
+            MethodArg::Fire => asperity::gfmd::Method::Fire,
+        },
         ..GfmdOptions::default()
     };
     opts.validate()?;

@@ -866,6 +866,7 @@ mod tests {
             iterations: 400,
             elapsed_s: 0.5,
             theory_a_r: Some(0.021),
+            ..GfmdView::default()
         };
         a.on_reply(Reply::GfmdDone {
             id,

@@ -280,6 +280,9 @@ fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
                 row("GFMD σ̄c", sig(v.mean_contact_stress, 4));
                 let th = v.theory_a_r.map_or("–".into(), |t| sig(t, 4));
                 row("map th.", format!("{th} (N={})", v.grid));
+                for (k, val) in &v.invariants {
+                    row(k, val.clone());
+                }
             } else {
                 row("GFMD", "other scene (g reruns)".into());
             }
@@ -633,9 +636,29 @@ fn draw_area(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         key.extend(legend("•", "eq.18", pal.reference()));
     }
     if let Some(g) = app.gfmd_for_scene() {
-        if let (Some(x), Some(y)) = (xs.forward(g.pressure), ys.forward(y_of(g.pressure, g.a_r))) {
+        // GFMD and the theory on GFMD's own (reduced) map: a second system, drawn apart from
+        // the full scene's theory curve
+        let pts: Vec<(f64, f64)> = std::iter::once((g.pressure, g.a_r))
+            .chain(g.sweep.iter().map(|&(p, a, _)| (p, a)))
+            .filter_map(|(p, a)| Some((xs.forward(p)?, ys.forward(y_of(p, a))?)))
+            .collect();
+        let th: Vec<(f64, f64)> = g
+            .theory_sweep
+            .iter()
+            .filter_map(|&(p, a, _)| Some((xs.forward(p)?, ys.forward(y_of(p, a))?)))
+            .collect();
+        if th.len() > 1 {
             curves.push(Curve {
-                points: vec![(x, y)],
+                points: th,
+                style: pal.gfmd(),
+                marker: Marker::Dot,
+                graph: GraphType::Line,
+            });
+            key.extend(legend("•", "map th.", pal.gfmd()));
+        }
+        if !pts.is_empty() {
+            curves.push(Curve {
+                points: pts,
                 style: pal.gfmd(),
                 marker: Marker::HalfBlock,
                 graph: GraphType::Scatter,
@@ -689,6 +712,33 @@ fn draw_gap(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         current_marker(&mut curves, pal, x, y, yb);
     }
     let mut key = legend("⣿", "theory", pal.theory());
+    if let Some(g) = app.gfmd_for_scene() {
+        let pts: Vec<(f64, f64)> = std::iter::once((g.pressure, g.gap_rel))
+            .chain(g.sweep.iter().map(|&(p, _, u)| (p, u)))
+            .filter_map(|(p, u)| Some((xs.forward(p)?, ys.forward(u)?)))
+            .collect();
+        let th: Vec<(f64, f64)> = g
+            .theory_sweep
+            .iter()
+            .filter_map(|&(p, _, u)| Some((xs.forward(p)?, ys.forward(u)?)))
+            .collect();
+        if th.len() > 1 {
+            curves.push(Curve {
+                points: th,
+                style: pal.gfmd(),
+                marker: Marker::Dot,
+                graph: GraphType::Line,
+            });
+            key.extend(legend("•", "map th.", pal.gfmd()));
+        }
+        curves.push(Curve {
+            points: pts,
+            style: pal.gfmd(),
+            marker: Marker::HalfBlock,
+            graph: GraphType::Scatter,
+        });
+        key.extend(legend("▀", "GFMD", pal.gfmd()));
+    }
     key.extend(legend("█", "p*", pal.current()));
     render_chart(f, area, title, key, &curves, xb, yb, xs, ys, None);
 }

@@ -51,36 +51,46 @@ pub fn relax(
     }
     let (mut u, mut g, mut t, mut r) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let (mut g_old, mut delta) = (1.0, 0.0);
+    let par = n >= PARALLEL_MIN_NODES;
     let mut it = 0;
     loop {
         plan.convolve(&p, &comp, &mut spec, &mut u);
-        let (mut sum, mut cnt) = (0.0, 0usize);
-        for i in 0..n {
-            if p[i] > 0.0 {
-                sum += u[i] - h[i];
-                cnt += 1;
+        let a = reduce(par, n, SUMS, |k| {
+            let (mut sum, mut cnt) = (0.0, 0.0);
+            for i in k {
+                if p[i] > 0.0 {
+                    sum += u[i] - h[i];
+                    cnt += 1.0;
+                }
             }
-        }
-        let gbar = sum / cnt.max(1) as f64;
-        let (mut gg, mut gmax, mut over) = (0.0, 0.0f64, 0.0f64);
-        for i in 0..n {
-            g[i] = u[i] - h[i] - gbar;
-            if p[i] > 0.0 {
-                gg += g[i] * g[i];
-                gmax = gmax.max(g[i].abs());
-            } else {
-                over = over.max(-g[i]);
+            [sum, cnt, 0.0, 0.0]
+        });
+        let cnt = a[1];
+        let gbar = a[0] / cnt.max(1.0);
+        let b = map_reduce(par, &mut g, [false, true, true, false], |o, gc| {
+            let (mut gg, mut gmax, mut over) = (0.0, 0.0f64, 0.0f64);
+            for (j, gi) in gc.iter_mut().enumerate() {
+                let i = o + j;
+                *gi = u[i] - h[i] - gbar;
+                if p[i] > 0.0 {
+                    gg += *gi * *gi;
+                    gmax = gmax.max(gi.abs());
+                } else {
+                    over = over.max(-*gi);
+                }
             }
-        }
+            [gg, gmax, over, 0.0]
+        });
+        let gg = b[0];
         if !gg.is_finite() {
             return Err(Error::NotConverged {
                 solver: "gfmd (Polonsky-Keer)".into(),
                 reason: format!("non-finite gap after {it} iterations"),
             });
         }
-        let err = gmax.max(over);
+        let err = b[1].max(b[2]);
         if it % 10 == 0 {
-            progress(it, err, cnt as f64 / n as f64);
+            progress(it, err, cnt / n as f64);
         }
         if err <= gap_tol || it >= max_iterations {
             // nodes carrying pressure sit on the wall
@@ -90,45 +100,113 @@ pub fn relax(
         if cancel.load(Ordering::Relaxed) {
             return Err(Error::Cancelled);
         }
-        for i in 0..n {
-            t[i] = if p[i] > 0.0 {
-                g[i] + delta * (gg / g_old) * t[i]
-            } else {
-                0.0
-            };
-        }
+        let beta = delta * gg / g_old;
+        map_reduce(par, &mut t, SUMS, |o, tc| {
+            for (j, ti) in tc.iter_mut().enumerate() {
+                let i = o + j;
+                *ti = if p[i] > 0.0 { g[i] + beta * *ti } else { 0.0 };
+            }
+            [0.0; 4]
+        });
         g_old = gg;
         plan.convolve(&t, &comp, &mut spec, &mut r);
-        let (mut rs, mut gt) = (0.0, 0.0);
-        for i in 0..n {
-            if p[i] > 0.0 {
-                rs += r[i];
-                gt += g[i] * t[i];
+        // Σ_S r, Σ_S g t, Σ_S r t, Σ_S t: then Σ_S (r − r̄) t = Σ r t − r̄ Σ t
+        let c = reduce(par, n, SUMS, |k| {
+            let mut s = [0.0; 4];
+            for i in k {
+                if p[i] > 0.0 {
+                    s[0] += r[i];
+                    s[1] += g[i] * t[i];
+                    s[2] += r[i] * t[i];
+                    s[3] += t[i];
+                }
             }
-        }
-        let rbar = rs / cnt.max(1) as f64;
-        let mut rt = 0.0;
-        for i in 0..n {
-            if p[i] > 0.0 {
-                rt += (r[i] - rbar) * t[i];
+            s
+        });
+        let rbar = c[0] / cnt.max(1.0);
+        let rt = c[2] - rbar * c[3];
+        let tau = if rt > 0.0 { c[1] / rt } else { 0.0 };
+        let d = map_reduce(par, &mut p, [false, true, false, false], |o, pc| {
+            let (mut sum, mut overlap) = (0.0, 0.0);
+            for (j, pi) in pc.iter_mut().enumerate() {
+                let i = o + j;
+                if *pi > 0.0 {
+                    *pi = (*pi - tau * t[i]).max(0.0);
+                } else if g[i] < 0.0 {
+                    *pi = -tau * g[i];
+                    overlap = 1.0;
+                }
+                sum += *pi;
             }
-        }
-        let tau = if rt > 0.0 { gt / rt } else { 0.0 };
-        let mut overlap = false;
-        for i in 0..n {
-            if p[i] > 0.0 {
-                p[i] = (p[i] - tau * t[i]).max(0.0);
-            } else if g[i] < 0.0 {
-                p[i] = -tau * g[i];
-                overlap = true;
-            }
-        }
-        delta = if overlap { 0.0 } else { 1.0 };
-        let mean = p.iter().sum::<f64>() / n as f64;
+            [sum, overlap, 0.0, 0.0]
+        });
+        delta = if d[1] > 0.0 { 0.0 } else { 1.0 };
+        let mean = d[0] / n as f64;
         if mean > 0.0 {
-            let s = p0 / mean;
-            p.iter_mut().for_each(|x| *x *= s);
+            let sc = p0 / mean;
+            map_reduce(par, &mut p, SUMS, |_, pc| {
+                pc.iter_mut().for_each(|x| *x *= sc);
+                [0.0; 4]
+            });
         }
         it += 1;
+    }
+}
+
+/// Node-loop chunk: partial results are combined in chunk order, so a run is bit-for-bit the
+/// same whatever the thread count.
+const CHUNK: usize = 4096;
+/// Grids with at least this many nodes run their node loops on rayon.
+const PARALLEL_MIN_NODES: usize = 1 << 15;
+
+/// Combines per-chunk partials in chunk order: slot k is a maximum where `maxed[k]`, else a sum.
+fn combine(parts: Vec<[f64; 4]>, maxed: [bool; 4]) -> [f64; 4] {
+    parts.into_iter().fold([0.0; 4], |mut a, b| {
+        for k in 0..4 {
+            a[k] = if maxed[k] { a[k].max(b[k]) } else { a[k] + b[k] };
+        }
+        a
+    })
+}
+
+/// Slots that are all sums.
+const SUMS: [bool; 4] = [false; 4];
+
+/// Runs `f` over index chunks (in parallel when `par`) and combines the partials in order.
+fn reduce(par: bool, n: usize, maxed: [bool; 4], f: impl Fn(std::ops::Range<usize>) -> [f64; 4] + Sync) -> [f64; 4] {
+    let chunks = n.div_ceil(CHUNK);
+    let run = |c: usize| f(c * CHUNK..((c + 1) * CHUNK).min(n));
+    if par {
+        use rayon::prelude::*;
+        combine((0..chunks).into_par_iter().map(run).collect(), maxed)
+    } else {
+        combine((0..chunks).map(run).collect(), maxed)
+    }
+}
+
+/// Like [`reduce`], over mutable chunks of `x` (`f` gets the chunk's offset).
+fn map_reduce(
+    par: bool,
+    x: &mut [f64],
+    maxed: [bool; 4],
+    f: impl Fn(usize, &mut [f64]) -> [f64; 4] + Sync,
+) -> [f64; 4] {
+    if par {
+        use rayon::prelude::*;
+        combine(
+            x.par_chunks_mut(CHUNK)
+                .enumerate()
+                .map(|(c, xc)| f(c * CHUNK, xc))
+                .collect(),
+            maxed,
+        )
+    } else {
+        combine(
+            x.chunks_mut(CHUNK)
+                .enumerate()
+                .map(|(c, xc)| f(c * CHUNK, xc))
+                .collect(),
+            maxed,
+        )
     }
 }
