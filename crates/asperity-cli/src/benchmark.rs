@@ -609,6 +609,10 @@ hundred FIRE steps almost independently of N; the discretisation error of a_r is
 Hard cases (end of the tables): each either converges (residual stated) or fails with a message \
 saying what did not converge; none gives NaN.\n";
 
+/// The heading from which BENCHMARKS.md is written by hand (measurements too long for `bench`,
+/// e.g. GFMD at 2048²); `asperity bench` keeps everything from it on when it rewrites the file.
+pub const HAND_WRITTEN: &str = "## Measured by hand";
+
 /// The BENCHMARKS.md document around the tables.
 pub fn document(tables: &str) -> String {
     format!(
