@@ -262,3 +262,23 @@ fn sweep_across_the_thin_slab_transition() {
     assert!(sw.rows[0].a_r > 0.3, "{:?}", sw.rows[0]);
     assert!(sw.monotone);
 }
+
+#[test]
+fn continuation_in_gamma_meets_the_fixed_point() {
+    // pseudo-arclength continuation from the adhesionless state (γ = 0) to γ_s: on system 1
+    // (no jump) it meets exactly one stable branch, the one Anderson mixing finds
+    let mut s = system(1, 3);
+    s.pressure = 0.01;
+    let acc = AdhesionAccuracy {
+        explore_branches: false,
+        ..AdhesionAccuracy::default()
+    };
+    let direct = adhesion::solve(&s, &acc, None, None).unwrap();
+    let trace = adhesion::trace_in_gamma(&s, &acc, None).unwrap();
+    assert!(!trace.stalled, "{trace:?}");
+    assert!(trace.folds.is_empty(), "{trace:?}");
+    assert_eq!(trace.branches.len(), 1, "{trace:?}");
+    let b = &trace.branches[0];
+    assert!(b.converged && b.stable);
+    assert!((b.a_r / direct.a_r - 1.0).abs() < 1e-6, "{} vs {}", b.a_r, direct.a_r);
+}

@@ -139,3 +139,85 @@ fn adhesive_sweep_is_clean() {
         }
     }
 }
+
+#[test]
+fn adhesive_sweeps_do_not_depend_on_the_thread_count() {
+    // issue 13 item 7: 40 loads (three continuation chunks) on one and on two threads give
+    // the same numbers bit for bit
+    let s = Preset::resolve("system-1").unwrap().scene().unwrap();
+    assert!(s.gamma > 0.0);
+    let spec = SweepSpec {
+        from: 1e-3,
+        to: 0.3,
+        points: 40,
+    };
+    let opts = Options::chart();
+    let on = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| sweep::sweep(&s, &spec, &opts, None).unwrap())
+    };
+    let (one, two) = (on(1), on(2));
+    assert!(one.failed_loads.is_empty());
+    for (a, b) in one.rows.iter().zip(&two.rows) {
+        assert_eq!(a.a_r.to_bits(), b.a_r.to_bits(), "p* {}", a.p);
+        assert_eq!(a.mean_gap_rel.to_bits(), b.mean_gap_rel.to_bits(), "p* {}", a.p);
+        assert_eq!(a.elastic_energy.to_bits(), b.elastic_energy.to_bits(), "p* {}", a.p);
+    }
+}
+
+#[test]
+fn run_and_sweep_agree_at_small_loads_on_a_thin_slab() {
+    // issue 13 item 5: system 2 without adhesion, model 3, t·q_r = 0.1, p* = 1e-7 (the ODE at
+    // rtol 1e-7 stepped from q_L to q_r in one go and its cubic interpolant dipped below zero:
+    // a_r(q) = 1 over a band of q and U three times too high)
+    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+    s.gamma = 0.0;
+    s.model = Model::named(3).unwrap();
+    s.thickness_qr = 0.1;
+    for p in [1e-7, 1e-5] {
+        s.pressure = p;
+        let ev = engine::evaluate(&s, &Options::default()).unwrap();
+        let sw = sweep::sweep(
+            &s,
+            &SweepSpec {
+                from: p,
+                to: p,
+                points: 1,
+            },
+            &Options::default(),
+            None,
+        )
+        .unwrap();
+        let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+        assert!(
+            rel(ev.elastic_energy, sw.rows[0].elastic_energy) < RUN_SWEEP_REL,
+            "p* {p}: run {} vs sweep {}",
+            ev.elastic_energy,
+            sw.rows[0].elastic_energy
+        );
+        assert!(rel(ev.stats.a_r, sw.rows[0].a_r) < RUN_SWEEP_REL);
+        // a_r(q) never rises with the resolution
+        for w in ev.resolution.windows(2) {
+            assert!(w[1].a_r <= w[0].a_r, "p* {p}: a_r rises at q = {:.4e}", w[1].q);
+        }
+        // converged: U from an ODE solved at rtol 1e-13 (100x finer than the engine's)
+        let fine = asperity::theory::persson::solve(
+            &s,
+            &asperity::theory::persson::Accuracy {
+                rtol: 1e-13,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let u = asperity::theory::energy::elastic_energy(&s, |q| fine.area_at(q));
+        eprintln!("p* {p}: U {} vs {u} at rtol 1e-13", ev.elastic_energy);
+        assert!(
+            rel(ev.elastic_energy, u) < THIN_SLAB_SMALL_LOAD_ENERGY_REL,
+            "p* {p}: {} vs {u}",
+            ev.elastic_energy
+        );
+    }
+}

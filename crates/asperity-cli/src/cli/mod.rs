@@ -278,7 +278,7 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         detached_fraction: ev.detached_fraction,
         iterations: ev.iterations,
         residual: ev.residual,
-        branch: ev.branch.clone(),
+        branch: ev.branch.to_string(),
         unloading_a_r: ev.unloading_a_r,
         gamma_q: ev.gamma_q.clone(),
         sigma_a_q: ev.sigma_a_q.clone(),

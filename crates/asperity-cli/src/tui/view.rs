@@ -11,7 +11,6 @@ use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Block, Chart, Clear, Dataset, GraphType, Paragraph, Wrap};
 use ratatui::Frame;
-use statrs::function::erf::erf;
 
 /// Smallest usable terminal.
 pub const MIN_SIZE: (u16, u16) = (60, 20);
@@ -536,8 +535,7 @@ fn draw_pr(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
 /// Eq. (18) of \[S\]: a_r = erf(1.9p*)(1 − a₀²) + a₀³ with a₀ = erf(1.45p*) (adhesionless,
 /// semi-infinite).
 pub fn eq18(p: f64) -> f64 {
-    let a0 = erf(1.45 * p);
-    erf(1.9 * p) * (1.0 - a0 * a0) + a0 * a0 * a0
+    asperity::theory::closed_form::eq18_area(p)
 }
 
 /// Whether eq. (18) describes the scene.

@@ -310,29 +310,11 @@ pub fn process(
     send(Reply::Done { gen });
 }
 
-/// ū/h_rms at p* from the chart sweep's rows (cubic Lagrange in ln p* on the four nearest
-/// loads; the rows are ≤ 0.15 apart in ln p*, so the interpolation error is far below the
-/// chart accuracy), when p* lies inside the swept range: it saves a separate gap computation
-/// (a sweep from p* to full contact) on every step of p*.
+/// ū/h_rms at p* from the chart sweep's rows ([`sweep::interpolate_in_ln_p`]), when p* lies
+/// inside the swept range: it saves a separate gap computation (a sweep from p* to full
+/// contact) on every step of p*.
 pub fn interpolate_gap(sd: &SweepData, p: f64) -> Option<f64> {
-    let n = sd.p.len();
-    if n < 4 || !(p >= sd.p[0] && p <= sd.p[n - 1]) {
-        return None;
-    }
-    let x = p.ln();
-    let i = sd.p.partition_point(|&q| q < p).clamp(2, n - 2);
-    let idx = [i - 2, i - 1, i, i + 1];
-    let mut sum = 0.0;
-    for &a in &idx {
-        let mut w = 1.0;
-        for &b in &idx {
-            if a != b {
-                w *= (x - sd.p[b].ln()) / (sd.p[a].ln() - sd.p[b].ln());
-            }
-        }
-        sum += w * sd.gap_rel[a];
-    }
-    sum.is_finite().then_some(sum)
+    sweep::interpolate_in_ln_p(&sd.p, &sd.gap_rel, p)
 }
 
 /// Loads of the GFMD sweep drawn on the a_r and ū charts (p*/3 … 3p*).

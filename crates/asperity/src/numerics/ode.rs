@@ -154,6 +154,36 @@ impl Trajectory {
         }
     }
 
+    /// Monotone cubic Hermite interpolation of a non-decreasing y at s (clamped to the
+    /// trajectory's range): the end slopes of each interval are limited as Fritsch & Carlson
+    /// (1980), so the interpolant never leaves [y_i, y_{i+1}]. Where a step is well resolved
+    /// (slopes below 3Δy/h) it equals [`Trajectory::eval`].
+    pub fn eval_monotone(&self, s: f64) -> f64 {
+        let n = self.s.len();
+        if n == 1 || s <= self.s[0] {
+            return self.y[0];
+        }
+        if s >= self.s[n - 1] {
+            return self.y[n - 1];
+        }
+        let i = self.s.partition_point(|&x| x <= s) - 1;
+        let (s0, s1) = (self.s[i], self.s[i + 1]);
+        let h = s1 - s0;
+        let (y0, y1) = (self.y[i], self.y[i + 1]);
+        let dy = y1 - y0;
+        if h <= 0.0 || dy <= 0.0 {
+            return y1.min(y0.max(y1));
+        }
+        let t = (s - s0) / h;
+        let d0 = (self.dy[i] * h).clamp(0.0, 3.0 * dy);
+        let d1 = (self.dy[i + 1] * h).clamp(0.0, 3.0 * dy);
+        let t2 = t * t;
+        let t3 = t2 * t;
+        let v =
+            (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * d0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * d1;
+        v.clamp(y0, y1)
+    }
+
     /// Cubic Hermite interpolation of y at s (clamped to the trajectory's range).
     pub fn eval(&self, s: f64) -> f64 {
         let n = self.s.len();

@@ -4,7 +4,7 @@
 
 use crate::error::{check_in, Error, Field, Result};
 use crate::input::scene::Scene;
-use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution};
+use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution, Branch};
 use crate::theory::persson::{self, Accuracy, ResolutionPoint};
 use serde::Serialize;
 use std::time::Instant;
@@ -134,9 +134,9 @@ pub struct Evaluation {
     pub iterations: usize,
     /// Fixed-point residual max|G(a) − a|/a_r (0 without adhesion).
     pub residual: f64,
-    /// "adhesionless", "loading", "loading (continuation in gamma)", or "upper (from full
-    /// contact)" where the loading iteration could not lock on (a jump into contact).
-    pub branch: String,
+    /// The branch and how it was reached (serialised as "adhesionless", "loading", "loading
+    /// (continuation in gamma)", or "upper (from full contact)").
+    pub branch: Branch,
     /// a_r of a distinct unloading branch (started from full contact), if one exists.
     pub unloading_a_r: Option<f64>,
     /// γ̃_glo = γ_s/u_ela^(f) [S-24].
@@ -167,7 +167,15 @@ pub fn evaluate_warm(
     if scene.gamma > 0.0 {
         return evaluate_adhesive(scene, opts, warm, cancel, t0);
     }
-    let sol = persson::solve(scene, &opts.accuracy)?;
+    // the elastic energy and a_r(q) near q_L need the ODE resolved where v passes p*²: at
+    // small p* the default rtol steps across it (one step from q_L to q_r on a thin slab at
+    // p* = 1e-7, energy 3x too high). The engine therefore integrates at rtol ≤ ENERGY_RTOL,
+    // the accuracy of the energy route, so `run` and `sweep` report the same U and a_r(q).
+    let fine = Accuracy {
+        rtol: opts.accuracy.rtol.min(crate::theory::gap::ENERGY_RTOL),
+        ..opts.accuracy
+    };
+    let sol = persson::solve(scene, &fine)?;
     let sigma_max = match opts.sigma_max {
         Some(s) => check_in(Field::SigmaMax, s, SIGMA_MAX_RANGE.0, SIGMA_MAX_RANGE.1)?,
         None => sol.default_sigma_max(),
@@ -192,7 +200,7 @@ pub fn evaluate_warm(
         sigma_a_q: Vec::new(),
         iterations: 0,
         residual: 0.0,
-        branch: "adhesionless".into(),
+        branch: Branch::Adhesionless,
         unloading_a_r: None,
         gamma_glo: 0.0,
         elapsed_s: t0.elapsed().as_secs_f64(),
@@ -286,7 +294,7 @@ fn evaluate_adhesive(
         sigma_a_q,
         iterations: sol.iterations,
         residual: sol.residual,
-        branch: sol.branch.clone(),
+        branch: sol.branch,
         unloading_a_r: sol.unloading_a_r,
         gamma_glo: sol.gamma_glo,
         elapsed_s: t0.elapsed().as_secs_f64(),

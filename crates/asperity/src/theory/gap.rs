@@ -63,12 +63,7 @@ use std::f64::consts::PI;
 /// tested scenes; see `tests/gap.rs`).
 pub const GAP_STEP_LN: f64 = 0.1;
 
-/// ODE tolerance of the energies that enter the energy route. The route differentiates U in
-/// p, and at small loads ū ≈ ΔU/p*: U must be smooth in p* to ~p*·tol, not just accurate to
-/// the default rtol. Adaptive step sequences that change with p* make U noisy at the rtol
-/// level; on a thin slab (t·q_r = 0.01, U ≈ const at small p*) rtol = 1e-7 made ū(p*)
-/// non-monotone below p* = 1e-7, rtol = 1e-11 does not. A 64-point sweep still costs ~10 ms.
-pub const ENERGY_RTOL: f64 = 1e-11;
+pub use crate::theory::loads::ENERGY_RTOL;
 
 /// erf argument p*/√(2v_full) above which the contact is taken as full (erf(6) = 1 − 2e-17).
 pub const FULL_CONTACT_ERF_ARG: f64 = 6.0;
@@ -249,7 +244,7 @@ pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<
     if scene.pressure >= full_contact_pressure(scene) {
         // full contact: U' = 0 from here on, so ū = 0 (no grid above p*_full is needed, and
         // none may leave the allowed pressure range)
-        let u = crate::theory::sweep::energies(scene, &[scene.pressure], opts, None)?[0];
+        let u = crate::theory::loads::energies(scene, &[scene.pressure], opts, None)?[0];
         return Ok(Some(MeanGap {
             relative: 0.0,
             metres: 0.0,
@@ -259,7 +254,7 @@ pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<
     }
     let (x0, h, n) = grid_from(scene, scene.pressure, GAP_STEP_LN);
     let ps: Vec<f64> = (0..n).map(|i| (x0 + i as f64 * h).exp()).collect();
-    let energy = crate::theory::sweep::energies(scene, &ps, opts, None)?;
+    let energy = crate::theory::loads::energies(scene, &ps, opts, None)?;
     let table = GapTable::from_energy(x0, h, energy)?;
     let h_rms = scene.spectrum.rms_height();
     Ok(Some(MeanGap {

@@ -7,6 +7,7 @@ pub mod closed_form;
 pub mod energy;
 pub mod engine;
 pub mod gap;
+pub mod loads;
 pub mod mirror;
 pub mod persson;
 pub mod sweep;

@@ -102,13 +102,14 @@ impl Solution {
         (sigma, density)
     }
 
-    /// Reduced variance v(q) at resolution q (cubic Hermite on the solver's points; for a
+    /// Reduced variance v(q) at resolution q (monotone cubic Hermite on the solver's points,
+    /// [`Trajectory::eval_monotone`]: v never decreases with q, so a_r(q) never rises; for a
     /// discrete spectrum, the value after the last shell with |q'| ≤ q).
     pub fn variance_at(&self, q: f64) -> f64 {
         if q <= 0.0 {
             return 0.0;
         }
-        self.trajectory.eval(q.ln())
+        self.trajectory.eval_monotone(q.ln())
     }
 
     /// a_r(q) at resolution q.
@@ -220,7 +221,7 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
             let resolution = out_q
                 .iter()
                 .map(|&q| {
-                    let v = traj.eval(q.ln().clamp(bp[0].ln(), q_s.ln()));
+                    let v = traj.eval_monotone(q.ln().clamp(bp[0].ln(), q_s.ln()));
                     ResolutionPoint {
                         q,
                         a_r: area_of_variance(p, v),

@@ -9,20 +9,22 @@
 //!
 //! Adhesionless loads are independent and run in parallel (rayon). Adhesive loads are run in
 //! order of increasing p* (the loading branch, continuation from the neighbouring load): the
-//! warm start is [`evaluate_node`]: each load starts the fixed point from the previous load's
+//! warm start is [`crate::theory::loads::evaluate_node`]: each load starts the fixed point from the previous load's
 //! a_r(q), which cuts the iterations and keeps the sweep on the loading branch (an adhesive
-//! jump shows as a non-monotone stretch, flagged by [`Sweep::monotone`]).
+//! jump shows as a non-monotone stretch, flagged by [`Sweep::monotone`]). The range is cut
+//! into chunks of at most 16 loads by a rule that depends on the number of loads only; the
+//! chunks run in parallel, so a sweep gives the same numbers, bit for bit, on any number of
+//! threads.
 //!
 //! Cancellation: the caller may pass an `AtomicBool`; when it is set the sweep stops between
 //! evaluations and returns [`Error::Cancelled`].
 
 use crate::error::{Error, Field, Result};
 use crate::input::scene::{Scene, PRESSURE_RANGE};
-use crate::theory::engine::{self, Evaluation, Options};
+use crate::theory::engine::Options;
 use crate::theory::gap::{self, GapTable};
-use rayon::prelude::*;
 use serde::Serialize;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 
 /// Largest grid step in ln p* of a sweep's U table: coarser requested spacings are refined by
 /// an integer factor. 0.15 keeps the estimated gap error below ~1e-3 relative where
@@ -141,117 +143,7 @@ impl Sweep {
     }
 }
 
-/// Options that make per-load evaluations cheap (no Pr table, no resolution record) and
-/// accurate enough for the energy route ([`gap::ENERGY_RTOL`]).
-fn lean(opts: &Options) -> Options {
-    let mut o = *opts;
-    o.sigma_points = 2;
-    o.accuracy.resolution_points = 2;
-    o.accuracy.rtol = o.accuracy.rtol.min(gap::ENERGY_RTOL);
-    o.adhesion_error_estimate = false;
-    o.adhesion.explore_branches = false;
-    o.adhesion.thorough = false;
-    o
-}
-
-/// Evaluates one load, warm-started from the neighbouring load's result (continuation), and
-/// abandoning an adhesive fixed point when `cancel` is set.
-pub fn evaluate_node(
-    scene: &Scene,
-    p: f64,
-    opts: &Options,
-    previous: Option<&Evaluation>,
-    cancel: Option<&AtomicBool>,
-) -> Result<Evaluation> {
-    let mut s = scene.clone();
-    s.pressure = p;
-    engine::evaluate_warm(&s, opts, previous, cancel)
-}
-
-fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
-    if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
-        Err(Error::Cancelled)
-    } else {
-        Ok(())
-    }
-}
-
-/// One load's outcome: the evaluation, or why its solver did not converge.
-type NodeResult = std::result::Result<Evaluation, Error>;
-
-/// Evaluates the scene at every p* of `ps` (ascending), keeping a load whose solver did not
-/// converge as an `Err` and going on (cancellation and invalid input end the whole call): in
-/// parallel without adhesion; with it in order of increasing load with continuation, one chunk
-/// of the range per thread.
-pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<NodeResult>> {
-    let opts = lean(opts);
-    let keep = |r: Result<Evaluation>, p: f64| -> Result<NodeResult> {
-        match r {
-            Ok(ev) => Ok(Ok(ev)),
-            Err(Error::NotConverged { solver, reason }) => Ok(Err(Error::NotConverged {
-                solver: format!("{solver} at p* = {p:.6e}"),
-                reason,
-            })),
-            Err(e) => Err(e),
-        }
-    };
-    if scene.gamma == 0.0 {
-        return ps
-            .par_iter()
-            .map(|&p| {
-                check_cancel(cancel)?;
-                keep(evaluate_node(scene, p, &opts, None, cancel), p)
-            })
-            .collect();
-    }
-    // continuation runs in order of increasing load; the range is cut into one chunk per
-    // worker thread (each ≥ MIN_CHUNK loads), each chunk starting cold, i.e. from the
-    // adhesionless solution: the loading branch, like the continuation itself
-    let threads = rayon::current_num_threads().clamp(1, 8);
-    let chunks = (ps.len() / MIN_CHUNK).clamp(1, threads);
-    let size = ps.len().div_ceil(chunks);
-    let parts: Vec<Result<Vec<NodeResult>>> = ps
-        .par_chunks(size.max(1))
-        .map(|part| {
-            let mut out: Vec<NodeResult> = Vec::with_capacity(part.len());
-            for &p in part {
-                check_cancel(cancel)?;
-                let warm = out.iter().rev().find_map(|r| r.as_ref().ok());
-                // a warm start from the wrong side of a jump can stall: retry cold (from the
-                // adhesionless start, the loading branch) before giving up on this load
-                let r = match evaluate_node(scene, p, &opts, warm, cancel) {
-                    Err(Error::NotConverged { .. }) if warm.is_some() => evaluate_node(scene, p, &opts, None, cancel),
-                    r => r,
-                };
-                out.push(keep(r, p)?);
-            }
-            Ok(out)
-        })
-        .collect();
-    let mut out = Vec::with_capacity(ps.len());
-    for part in parts {
-        out.extend(part?);
-    }
-    Ok(out)
-}
-
-/// Evaluates the scene at every p* of `ps` (see [`node_results`]); the first load whose
-/// solver did not converge makes the whole call an error naming that p*.
-pub fn evaluations(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<Evaluation>> {
-    node_results(scene, ps, opts, cancel)?.into_iter().collect()
-}
-
-/// Fewest loads per continuation chunk of an adhesive sweep.
-const MIN_CHUNK: usize = 16;
-
-/// U* = U/(E*ḡh_rms) at every p* of `ps` (see [`evaluations`]).
-pub fn energies(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&AtomicBool>) -> Result<Vec<f64>> {
-    let unit = crate::theory::energy::energy_unit(scene);
-    Ok(evaluations(scene, ps, opts, cancel)?
-        .iter()
-        .map(|e| e.elastic_energy / unit)
-        .collect())
-}
+pub use crate::theory::loads::{energies, evaluate_node, evaluations, node_results};
 
 /// Runs a sweep (see the module docs).
 pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&AtomicBool>) -> Result<Sweep> {
@@ -372,4 +264,30 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         failed_loads,
         note,
     })
+}
+
+/// A sweep column `values` at p* by cubic Lagrange interpolation in ln p* on the four nearest
+/// rows of `ps` (ascending); `None` outside [ps₀, ps_last], with fewer than four rows, or where
+/// a neighbouring value is missing (NaN). A sweep's rows are ≤ [`SWEEP_STEP_LN`] apart, so for
+/// a smooth column the error is O(h⁴) ≈ 5e-4 of its fourth derivative in ln p*: far below the
+/// chart accuracy. Exact for cubics in ln p*.
+pub fn interpolate_in_ln_p(ps: &[f64], values: &[f64], p: f64) -> Option<f64> {
+    let n = ps.len().min(values.len());
+    if n < 4 || !(p >= ps[0] && p <= ps[n - 1]) {
+        return None;
+    }
+    let x = p.ln();
+    let i = ps[..n].partition_point(|&q| q < p).clamp(2, n - 2);
+    let idx = [i - 2, i - 1, i, i + 1];
+    let mut sum = 0.0;
+    for &a in &idx {
+        let mut w = 1.0;
+        for &b in &idx {
+            if a != b {
+                w *= (x - ps[b].ln()) / (ps[a].ln() - ps[b].ln());
+            }
+        }
+        sum += w * values[a];
+    }
+    sum.is_finite().then_some(sum)
 }

@@ -1,0 +1,334 @@
+//! Persson theory with adhesion: a moving absorbing wall, the scale-dependent surface energy
+//! and the self-consistent fixed point (physics.md §4; [S-5..S-9, S-14]).
+//!
+//! # Equations
+//!
+//! Reduced units: σ* = σ/(E*ḡ), variance v = V/(E*ḡ)². Resolution q acts as time; the stress
+//! distribution diffuses in the accumulated variance
+//!
+//! ```text
+//! dv = W(a_r(q))^{2α} · f(qt)² q² dm / (4ḡ²),   dm = 2πqC dq       [S-2, S-15]
+//! ∂Pr/∂v = ½ ∂²Pr/∂σ²  on σ > −σ_a(q),   Pr(−σ_a(q), q) = 0,   Pr(σ, q_L) = δ(σ − p*)  [S-5, S-7]
+//! a_r(q) = ∫_{−σ_a}^∞ Pr dσ                                         [S-6]
+//! σ_a(q) = k_G √(q E* f(qt) γ(q)),  capped at γ_s/ρ where the model says so   [S-8]
+//! a_r(q)γ(q) = a_r(q_s)γ_s − ∫_q^{q_s} a_r W(a_r) (q'E* f/4) dm(q'),  γ < 0 → 0   [S-9, S-14]
+//! ```
+//!
+//! (a_s(q) of [S-9] taken as a_r(q): physics.md §7 erratum 7.) Mass that crosses the wall
+//! detaches: 1 − a_r(q_s) is the non-contact fraction, ∫_{−σ_a}^0 Pr dσ the contact under
+//! tension. With σ_a > 0 the mirror kernel does not conserve ∫σPr (physics.md §4); the mean
+//! stress in contact is reported as computed.
+//!
+//! # Propagation (moving wall)
+//!
+//! The march runs over steps in ln q (uniform per PSD segment). In the frame x = σ + σ_a the
+//! wall sits at x = 0. Each step holds the wall at its mean over the step (with γ linear in ln q
+//! between nodes, the mean of √γ₊ in closed form: smooth where γ turns positive) and
+//!
+//! 1. shifts Pr by the change of σ_a since the previous step (8-point Lagrange interpolation;
+//!    the stencil uses the odd continuation of Pr through the wall, mass below the wall is
+//!    removed), then
+//! 2. applies the exact heat semigroup of the Dirichlet problem on [0, X] to the grid values:
+//!    sine transform (a length-2N complex FFT of the odd extension), multiply mode k by
+//!    exp(−½(kπ/X)²Δv), transform back. For a fixed wall this is the image (mirror-Gaussian)
+//!    solution, spectrally accurate in space and exact in v, so σ_a ≡ const is reproduced to
+//!    round-off (a_r is the spectral integral of the sine series; the trapezoid rule would be
+//!    O(h²) because Pr'(wall) ≠ 0). A moving wall adds the piecewise-constant wall motion and
+//!    the shift: each shift leaves an empty gap of width δ at the wall that the next heat step
+//!    fills, and this splitting is first order at the absorbing boundary (measured order ≈ 1.2,
+//!    `tests/adhesion.rs`).
+//!
+//! Δv = W^{2α}(ā)·∫_step f²q²dm/(4ḡ²) with ā the mean of a_r at both ends of the step
+//! (predictor–corrector: the step is taken twice). While the wall has not moved since the start
+//! (σ_a constant, in particular σ_a = 0 at coarse scales where γ(q) = 0), or while the wall is
+//! too far from the distribution to matter (p* + σ_a > 8.5√v, image mass < 1e-17), Pr is the
+//! mirror Gaussian about the wall and v follows the autonomous ODE dv/dB = W^{2α}(a(v)),
+//! integrated with RK4 in B (no grid). The grid starts from that mirror Gaussian with spacing
+//! h = √v/`points_per_width`, grows with the distribution and is coarsened by 2 (keeping every
+//! other node, exact) whenever √v exceeds 2·`points_per_width`·h, so its size stays bounded
+//! (~20·`points_per_width` nodes) from p* = 1e-8 to full contact.
+//!
+//! # Files
+//!
+//! `grid` (resolution steps), `propagator` (the march), `walls` (γ(q), σ_a(q)),
+//! `fixed_point` (Anderson mixing, cycle bisection), `strategy` (the fallbacks and the
+//! solution), and this module (accuracy, result types, entry points).
+//!
+//! # Self-consistency
+//!
+//! γ(q) needs a_r at all finer scales and a_r needs σ_a at all coarser ones: the unknown is
+//! the function a_r(q) at the step nodes, x ↦ G(x) = march(σ_a(γ(x))). The fixed point is
+//! found with Anderson mixing (depth 6, Walker–Ni type II), started from the adhesionless
+//! solution (the loading branch), until max|G(x) − x| ≤ `tol`·a_r(q_s). If Anderson stalls,
+//! the fallbacks of `strategy` are tried in order (a list of data, `strategy::Fallback`):
+//! two nearby resolutions; where plain iteration falls into a two-state cycle (near a jump
+//! into contact), a start bisected between the cycle's states; full contact (reported as the
+//! upper branch); damped mixing; continuation in γ_s (from γ = 0 in growing steps, each
+//! warm-started). A scene where none of these converges is an error
+//! ([`crate::error::Error::NotConverged`]) that lists the attempts made and their residuals. With `explore_branches`, the fixed
+//! point is also sought from full contact (a_r ≡ 1, the unloading branch); if it converges to
+//! a different state, both are reported (hysteresis: the loading branch is the answer, the
+//! other is `unloading_a_r`).
+//!
+//! Diagnostics: with `ASPERITY_DEBUG` set, every fixed-point iteration prints its residual and
+//! a_r(q_s) to stderr.
+
+mod continuation;
+mod fixed_point;
+mod grid;
+mod newton;
+mod propagator;
+mod strategy;
+mod walls;
+
+pub use strategy::solve;
+
+use crate::error::Result;
+use crate::input::scene::Scene;
+use serde::{Serialize, Serializer};
+use std::fmt;
+
+/// Accuracy and strategy of the adhesive solver.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AdhesionAccuracy {
+    /// March steps per unit of ln q (per PSD segment, at least 4 per segment).
+    pub steps_per_ln_q: f64,
+    /// Grid nodes per standard deviation √v of the stress distribution.
+    pub points_per_width: f64,
+    /// Fixed-point tolerance: max_q |G(a) − a| ≤ tol · a_r(q_s).
+    pub tol: f64,
+    /// Most fixed-point iterations per attempt.
+    pub max_iterations: usize,
+    /// Also look for an unloading branch (started from full contact).
+    pub explore_branches: bool,
+    /// Use every fallback when a fixed point stalls (two nearby resolutions, damped mixing,
+    /// continuation in γ: up to seconds on a hard case). Off in sweeps, where a load that
+    /// stalls is reported as such after the cheap fallbacks (cycle bisection, full contact).
+    pub thorough: bool,
+}
+
+impl Default for AdhesionAccuracy {
+    /// The interactive/`run` default: relative error of a_r ~1e-3 against a 4× finer solution
+    /// on systems 1 and 2 (`tests/adhesion.rs`); ~10 ms per solve on system 1.
+    fn default() -> Self {
+        AdhesionAccuracy {
+            steps_per_ln_q: 24.0,
+            points_per_width: 10.0,
+            tol: 1e-8,
+            max_iterations: 200,
+            explore_branches: true,
+            thorough: true,
+        }
+    }
+}
+
+/// The branch a solution lies on, and how it was reached. Serialised (and displayed) as the
+/// strings of the public JSON: "adhesionless", "loading", "loading (continuation in gamma)",
+/// "upper (from full contact)".
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Branch {
+    /// No adhesion (γ_s = 0): a single solution.
+    Adhesionless,
+    /// Connected to the adhesionless start (the loading branch).
+    Loading,
+    /// The loading branch, reached by continuation in γ_s from 0.
+    LoadingGammaContinuation,
+    /// Reached from full contact (a_r ≡ 1) where the loading iteration could not lock on.
+    UpperFromFullContact,
+}
+
+impl Branch {
+    /// The public string of the branch.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Branch::Adhesionless => "adhesionless",
+            Branch::Loading => "loading",
+            Branch::LoadingGammaContinuation => "loading (continuation in gamma)",
+            Branch::UpperFromFullContact => "upper (from full contact)",
+        }
+    }
+}
+
+impl fmt::Display for Branch {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl Serialize for Branch {
+    fn serialize<S: Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
+
+impl PartialEq<&str> for Branch {
+    fn eq(&self, other: &&str) -> bool {
+        self.as_str() == *other
+    }
+}
+
+/// The self-consistent adhesive solution of one scene.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AdhesiveSolution {
+    /// p*.
+    pub pressure: f64,
+    /// a_r(q_s), tensile part included.
+    pub a_r: f64,
+    /// σ̄_c* = ∫σPr/a_r (reduced; with detachment not equal to p*/a_r).
+    pub mean_contact_stress: f64,
+    /// ⟨δσ_c²⟩* (reduced by (E*ḡ)²).
+    pub contact_stress_variance: f64,
+    /// √v(q_s): the accumulated broadening.
+    pub width: f64,
+    /// σ_a*(q_s): the wall sits at σ* = −σ_a*.
+    pub sigma_a: f64,
+    /// Contact under tension, ∫_{−σ_a}^0 Pr dσ.
+    pub tensile_area: f64,
+    /// Fraction of the nominal area that detached (crossed the wall): 1 − a_r.
+    pub detached_fraction: f64,
+    /// Resolution nodes q (1/m).
+    pub q: Vec<f64>,
+    /// a_r at the nodes.
+    pub a_q: Vec<f64>,
+    /// v(q) = V/(E*ḡ)² at the nodes.
+    pub v_q: Vec<f64>,
+    /// γ(q)/γ_s at the nodes.
+    pub gamma_q: Vec<f64>,
+    /// σ_a*(q) at the nodes.
+    pub sigma_a_q: Vec<f64>,
+    /// Pr(σ*) at q_s: σ* grid (ascending, from −σ_a*).
+    pub sigma: Vec<f64>,
+    /// Pr(σ*) at q_s (∫ = a_r).
+    pub density: Vec<f64>,
+    /// Fixed-point iterations (all attempts).
+    pub iterations: usize,
+    /// Final fixed-point residual max|G(a) − a| / a_r(q_s).
+    pub residual: f64,
+    /// Which branch the solution is on and how it was reached.
+    pub branch: Branch,
+    /// a_r of a distinct unloading branch (from full contact), if one was found.
+    pub unloading_a_r: Option<f64>,
+    /// U = −a_r γ_s + Σ a W (qE*f/4) dm (J/m²) [S-11, S-14].
+    pub elastic_energy: f64,
+    /// Global adhesion measure γ̃_glo.
+    pub gamma_glo: f64,
+    /// The (steps per ln q, points per width) actually used when the requested resolution
+    /// stagnated and a nearby one converged; None when the requested one did.
+    pub resolution_used: Option<(f64, f64)>,
+}
+/// Propagates Pr through the scene's resolution with a prescribed wall σ_a*(q) (reduced,
+/// evaluated at each step's midpoint q) and no self-consistency: the propagator alone, for
+/// tests against the exact cases. `grid_from_start` forces the grid from the first step on
+/// (otherwise a wall that never moves is handled by the mirror Gaussian). Returns the nodes
+/// q and a_r(q).
+pub fn propagate_with_wall(
+    scene: &Scene,
+    acc: &AdhesionAccuracy,
+    wall: impl Fn(f64) -> f64,
+    grid_from_start: bool,
+) -> Result<(Vec<f64>, Vec<f64>)> {
+    scene.validate()?;
+    let grid = grid::build_grid(scene, acc.steps_per_ln_q);
+    let walls: Vec<f64> = grid.steps.iter().map(|s| wall(s.q_mid)).collect();
+    let mut m = propagator::Marcher {
+        scene,
+        grid: &grid,
+        acc: *acc,
+        heat: propagator::Heat::new(),
+        force_grid_from: grid_from_start.then_some(1),
+        pressure: scene.pressure,
+    };
+    let out = m.march(&walls);
+    Ok((grid.q.clone(), out.a_nodes))
+}
+
+/// One branch met by [`trace_in_gamma`] at the scene's γ_s.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TracedBranch {
+    /// a_r(q_s) of the branch.
+    pub a_r: f64,
+    /// Whether the branch is stable (an even number of folds lies between it and the
+    /// adhesionless start).
+    pub stable: bool,
+    /// Fixed-point residual of the polished state.
+    pub residual: f64,
+    /// Whether the polished state met the solver's tolerance.
+    pub converged: bool,
+}
+
+/// The result of [`trace_in_gamma`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GammaTrace {
+    /// The branches met at γ = γ_s, in the order of the curve (the first is connected to the
+    /// adhesionless state: the loading branch).
+    pub branches: Vec<TracedBranch>,
+    /// γ/γ_s at the folds (turning points) passed.
+    pub folds: Vec<f64>,
+    /// γ/γ_s and a_r(q_s) of the last point reached.
+    pub last: (f64, f64),
+    /// Whether the trace ended because the corrector failed at the smallest step (see the
+    /// `continuation` module docs) rather than by leaving γ/γ_s ∈ (0, 2) or reaching full
+    /// contact.
+    pub stalled: bool,
+    /// Map evaluations spent.
+    pub evaluations: usize,
+}
+
+/// Follows the self-consistent solution from the adhesionless state (γ = 0) by
+/// pseudo-arclength continuation in γ up to 2γ_s (or full contact), through the folds of the
+/// curve, and reports every branch met at the scene's γ_s with its stability. A diagnostic
+/// and the start of the branch-following solver of issue 13: it is not yet used by
+/// [`solve`] (see the `continuation` module docs for where it stalls).
+///
+/// # Errors
+/// [`crate::error::Error::Invalid`] for a bad scene or accuracy, or
+/// [`crate::error::Error::Cancelled`].
+pub fn trace_in_gamma(
+    scene: &Scene,
+    acc: &AdhesionAccuracy,
+    cancel: Option<&std::sync::atomic::AtomicBool>,
+) -> Result<GammaTrace> {
+    scene.validate()?;
+    let grid = grid::build_grid(scene, acc.steps_per_ln_q);
+    let mut m = propagator::Marcher::new(scene, &grid, *acc);
+    let adhesionless = m.march(&vec![0.0; grid.steps.len()]).a_nodes;
+    let at = |mu: f64| {
+        let mut s = scene.clone();
+        s.gamma = scene.gamma * mu;
+        s
+    };
+    let tr = m.arclength(&at, newton::ln_a(&adhesionless), 0.0, 1.0, 2.0, cancel)?;
+    Ok(GammaTrace {
+        branches: tr
+            .crossings
+            .iter()
+            .map(|c| TracedBranch {
+                a_r: c.attempt.x.last().copied().unwrap_or(0.0),
+                stable: c.stable,
+                residual: c.attempt.residual,
+                converged: c.attempt.converged,
+            })
+            .collect(),
+        folds: tr.folds,
+        last: tr.last,
+        stalled: tr.stalled,
+        evaluations: tr.evaluations,
+    })
+}
+
+/// γ(q)/γ_s and σ_a*(q) interpolated at resolution q (linear in ln q between nodes).
+pub fn interpolate(sol: &AdhesiveSolution, q: f64, values: &[f64]) -> f64 {
+    let i = sol.q.partition_point(|&x| x < q);
+    if i == 0 {
+        return values[0];
+    }
+    if i >= sol.q.len() {
+        return *values.last().unwrap_or(&0.0);
+    }
+    let (q0, q1) = (sol.q[i - 1], sol.q[i]);
+    if q1 <= q0 {
+        return values[i];
+    }
+    let t = (q.ln() - q0.ln()) / (q1.ln() - q0.ln());
+    values[i - 1] + t * (values[i] - values[i - 1])
+}

@@ -1,0 +1,189 @@
+//! The library's shape, checked: no import cycle between its modules, no front end's
+//! vocabulary in it.
+//!
+//! Modules are the files under `src/` (a folder's `mod.rs` is the folder's module). An edge
+//! A → B is any `crate::B` path written in A (in `use` or inline), B truncated to a module
+//! that exists. Re-export shims (`pub use crate::x` as the only reference) count as edges too,
+//! so a cycle cannot hide behind one.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+fn src_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
+fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let p = entry.unwrap().path();
+        if p.is_dir() {
+            rust_files(&p, out);
+        } else if p.extension().is_some_and(|e| e == "rs") {
+            out.push(p);
+        }
+    }
+}
+
+/// `src/theory/gap.rs` → "theory::gap"; `src/gfmd/mod.rs` → "gfmd"; `src/lib.rs` → "".
+fn module_of(path: &Path) -> String {
+    let rel = path.strip_prefix(src_dir()).unwrap();
+    let mut parts: Vec<String> = rel.iter().map(|c| c.to_string_lossy().into_owned()).collect();
+    let last = parts.pop().unwrap();
+    let stem = last.trim_end_matches(".rs");
+    if stem != "mod" && stem != "lib" {
+        parts.push(stem.to_string());
+    }
+    parts.join("::")
+}
+
+/// Code without comments (line and doc comments), so doc links do not count as imports.
+fn code_of(text: &str) -> String {
+    text.lines()
+        .map(|l| match l.find("//") {
+            Some(i) => &l[..i],
+            None => l,
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// Every `crate::a::b::…` path in `code`, expanded over one level of `{…}` groups.
+fn crate_paths(code: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut rest = code;
+    while let Some(i) = rest.find("crate::") {
+        rest = &rest[i + "crate::".len()..];
+        let end = rest
+            .find(|c: char| {
+                !(c.is_alphanumeric()
+                    || c == '_'
+                    || c == ':'
+                    || c == '{'
+                    || c == '}'
+                    || c == ','
+                    || c == ' '
+                    || c == '\n')
+            })
+            .unwrap_or(rest.len());
+        let path = &rest[..end];
+        match path.find('{') {
+            Some(b) => {
+                let head = &path[..b];
+                let inner = path[b + 1..].split('}').next().unwrap_or("");
+                for item in inner.split(',') {
+                    out.push(format!("{head}{}", item.trim()));
+                }
+            }
+            None => out.push(path.split([' ', '\n', ',', '}']).next().unwrap_or("").to_string()),
+        }
+    }
+    out
+}
+
+fn graph() -> BTreeMap<String, BTreeSet<String>> {
+    let mut files = Vec::new();
+    rust_files(&src_dir(), &mut files);
+    let modules: BTreeSet<String> = files.iter().map(|f| module_of(f)).collect();
+    let mut g: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for f in &files {
+        let from = module_of(f);
+        let code = code_of(&std::fs::read_to_string(f).unwrap());
+        // tests inside a module may reach anywhere; they are not part of the layering
+        let code = code.split("#[cfg(test)]").next().unwrap_or("").to_string();
+        for path in crate_paths(&code) {
+            // the longest prefix that is a module
+            let segs: Vec<&str> = path.split("::").filter(|s| !s.is_empty()).collect();
+            let target = (1..=segs.len())
+                .rev()
+                .map(|k| segs[..k].join("::"))
+                .find(|m| modules.contains(m));
+            if let Some(to) = target {
+                if to != from && !from.starts_with(&format!("{to}::")) && !to.starts_with(&format!("{from}::")) {
+                    g.entry(from.clone()).or_default().insert(to);
+                }
+            }
+        }
+    }
+    g
+}
+
+fn find_cycle(g: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
+    // depth-first search with colours
+    fn visit(
+        n: &str,
+        g: &BTreeMap<String, BTreeSet<String>>,
+        state: &mut BTreeMap<String, u8>,
+        stack: &mut Vec<String>,
+    ) -> Option<Vec<String>> {
+        state.insert(n.to_string(), 1);
+        stack.push(n.to_string());
+        for m in g.get(n).into_iter().flatten() {
+            match state.get(m.as_str()).copied().unwrap_or(0) {
+                1 => {
+                    let i = stack.iter().position(|s| s == m).unwrap();
+                    let mut c = stack[i..].to_vec();
+                    c.push(m.clone());
+                    return Some(c);
+                }
+                0 => {
+                    if let Some(c) = visit(m, g, state, stack) {
+                        return Some(c);
+                    }
+                }
+                _ => {}
+            }
+        }
+        stack.pop();
+        state.insert(n.to_string(), 2);
+        None
+    }
+    let mut state = BTreeMap::new();
+    for n in g.keys() {
+        if state.get(n.as_str()).copied().unwrap_or(0) == 0 {
+            let mut stack = Vec::new();
+            if let Some(c) = visit(n, g, &mut state, &mut stack) {
+                return Some(c);
+            }
+        }
+    }
+    None
+}
+
+#[test]
+fn the_cycle_finder_finds_a_planted_cycle() {
+    let mut g: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    g.entry("a".into()).or_default().insert("b".into());
+    g.entry("b".into()).or_default().insert("c".into());
+    assert_eq!(find_cycle(&g), None);
+    g.entry("c".into()).or_default().insert("a".into());
+    assert_eq!(find_cycle(&g).map(|c| c.len()), Some(4));
+    assert_eq!(
+        crate_paths("use crate::theory::{gap::X, loads};\nlet y = crate::error::Field::Hurst;"),
+        vec!["theory::gap::X", "theory::loads", "error::Field::Hurst"]
+    );
+}
+
+#[test]
+fn library_modules_form_no_import_cycle() {
+    let g = graph();
+    assert!(g.contains_key("theory::sweep"), "the scanner found no edges: {g:?}");
+    assert!(g["theory::sweep"].contains("theory::gap"));
+    if let Some(c) = find_cycle(&g) {
+        panic!("import cycle between library modules: {}", c.join(" → "));
+    }
+}
+
+#[test]
+fn library_has_no_front_end_vocabulary() {
+    let mut files = Vec::new();
+    rust_files(&src_dir(), &mut files);
+    for f in files {
+        let text = std::fs::read_to_string(&f).unwrap();
+        for (n, line) in text.lines().enumerate() {
+            let code = line.split("//").next().unwrap_or("");
+            for word in ["clap::", "ratatui", "crossterm"] {
+                assert!(!code.contains(word), "{}:{}: {word} in the library", f.display(), n + 1);
+            }
+        }
+    }
+}
