@@ -3,5 +3,7 @@
 //! typed results and errors in their own words; the physics lives in the `asperity` crate.
 
 pub mod benchmark;
+pub mod chart;
 pub mod cli;
+pub mod figure;
 pub mod tui;

@@ -102,8 +102,130 @@ fn a_sweep_keeps_going_past_loads_that_do_not_converge() {
     }
     assert!(sw.rows.last().unwrap().converged);
     // printed: empty CSV fields and JSON nulls, never NaN
-    let csv = asperity_cli::cli::sweep::csv(&sw);
+    use asperity_cli::cli::sweep::{csv, Row};
+    let rows: Vec<Row> = sw.rows.iter().map(|r| Row::new(*r, s.thickness_qr, s.gamma)).collect();
+    let csv = csv(&rows);
     assert!(!csv.to_lowercase().contains("nan"), "{csv}");
     let json = serde_json::to_string(&sw).unwrap();
     assert!(!json.to_lowercase().contains("nan"), "{json}");
+}
+
+fn asperity_out(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap()
+}
+
+fn run_json(args: &[&str]) -> serde_json::Value {
+    let out = asperity_out(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// `sweep --over thickness|gamma`: every row is `run` at that scene (same engine, same
+/// options: equal to 1e-12), the new columns are what they say, and [S-18] appears only where
+/// it applies.
+#[test]
+fn sweeps_over_thickness_and_gamma_match_run() {
+    for (over, from, to, flag, extra) in [
+        ("thickness", "0.1", "10", "--thickness", vec!["--gamma", "0"]),
+        ("gamma", "0", "0.05", "--gamma", vec!["--thickness", "1"]),
+    ] {
+        let mut args = vec![
+            "sweep",
+            "--preset",
+            "system-2",
+            "--over",
+            over,
+            "--from",
+            from,
+            "--to",
+            to,
+            "--points",
+            "3",
+            "--pressure",
+            "0.01",
+            "--format",
+            "json",
+        ];
+        args.extend(extra.iter().copied());
+        let sw = run_json(&args);
+        let rows = sw["rows"].as_array().unwrap();
+        assert_eq!(rows.len(), 3);
+        for r in rows {
+            let value = if over == "thickness" {
+                r["thickness_qr"].as_f64().unwrap()
+            } else {
+                r["gamma"].as_f64().unwrap()
+            };
+            let v = format!("{value:e}");
+            let mut rargs = vec!["run", "--preset", "system-2", "--pressure", "0.01", flag, &v];
+            rargs.extend(extra.iter().copied());
+            let run = run_json(&rargs);
+            for k in ["a_r", "mean_contact_stress", "contact_stress_variance", "mean_gap_rel"] {
+                let (a, b) = (r[k].as_f64().unwrap(), run[k].as_f64().unwrap());
+                assert!((a - b).abs() <= 1e-12 * b.abs(), "{over} {v} {k}: sweep {a} run {b}");
+            }
+            let ratio = r["a_r_over_p"].as_f64().unwrap();
+            assert!((ratio - r["a_r"].as_f64().unwrap() / 0.01).abs() < 1e-12);
+            // a finite slab or adhesion: eq. (18) does not apply
+            assert!(r["a_r_eq18"].is_null(), "{r}");
+        }
+    }
+}
+
+#[test]
+fn load_sweep_columns_carry_eq18_and_the_variance() {
+    let out = asperity_out(&[
+        "sweep", "--preset", "system-1", "--gamma", "0", "--from", "0.01", "--to", "0.1", "--points", "2",
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    for line in lines {
+        let c: Vec<&str> = line.split(',').collect();
+        let p: f64 = c[col("p")].parse().unwrap();
+        let eq18: f64 = c[col("a_r_eq18")].parse().unwrap();
+        // independent reference: docs/reference-values.md, eq. (18) column
+        let want = if (p - 0.01).abs() < 1e-9 { 0.02144 } else { 0.21054 };
+        assert!((eq18 - want).abs() < 1e-5, "{line}");
+        let var: f64 = c[col("contact_stress_variance")].parse().unwrap();
+        if (p - 0.01).abs() < 1e-9 {
+            // Table 1 of [S], model 3 at p* = 0.01: 0.0595 (docs: ±3e-4)
+            assert!((var - 0.0595).abs() < 3e-4, "{line}");
+        }
+        assert_eq!(c[col("thickness_qr")], "inf");
+    }
+}
+
+#[test]
+fn bad_sweep_knobs_are_one_line_errors() {
+    for (args, needle) in [
+        (
+            vec!["sweep", "--over", "thickness", "--from", "0", "--to", "1"],
+            "--from",
+        ),
+        (
+            vec!["sweep", "--over", "gamma", "--from", "0.1", "--to", "0.01"],
+            "--to",
+        ),
+        (vec!["sweep", "--over", "speed", "--from", "0.1", "--to", "1"], "--over"),
+        (
+            vec!["sweep", "--from", "0.1", "--to", "1", "--pressure", "0.1"],
+            "--pressure",
+        ),
+    ] {
+        let out = asperity_out(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
 }

@@ -134,9 +134,16 @@ fn sweep_keys_and_columns() {
             "mean_gap_error",
             "mean_gap_rel",
             "p",
+            // issue 14: sweeps over any knob
+            "contact_stress_variance",
+            "a_r_over_p",
+            "a_r_eq18",
+            "thickness_qr",
+            "gamma",
         ],
         "sweep rows",
     );
+    assert_has(&v, &["over", "failed_values"], "sweep");
     let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
         .args([
             "sweep", "--preset", "system-1", "--from", "0.01", "--to", "0.1", "--points", "2",
@@ -150,7 +157,8 @@ fn sweep_keys_and_columns() {
         .to_string();
     assert!(
         header.starts_with(
-            "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error"
+            "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error,\
+             contact_stress_variance,a_r_over_p,a_r_eq18,thickness_qr,gamma"
         ),
         "{header}"
     );

@@ -16,13 +16,17 @@ impl Tmux {
     /// A detached 120×40 session on its own socket running the explorer (with `env` before
     /// the command) in `dir`, then printing its exit status.
     fn start(name: &str, dir: &std::path::Path, env: &str) -> Tmux {
+        Tmux::start_with(name, dir, env, "tui --preset system-1")
+    }
+
+    /// Like [`Tmux::start`] with other arguments of the binary.
+    fn start_with(name: &str, dir: &std::path::Path, env: &str, args: &str) -> Tmux {
         let t = Tmux {
             socket: format!("asperity-e2e-{name}-{}", std::process::id()),
         };
         // after the explorer: its exit status and whether the tty is back in canonical mode
-        let command = format!(
-            "{env} {BIN} tui --preset system-1; echo EXIT=$?; stty -a | grep -o -- '-*icanon' | sed 's/^/TTY=/'; sleep 60"
-        );
+        let command =
+            format!("{env} {BIN} {args}; echo EXIT=$?; stty -a | grep -o -- '-*icanon' | sed 's/^/TTY=/'; sleep 60");
         let out = t.cmd(&[
             "new-session",
             "-d",
@@ -207,4 +211,113 @@ fn bad_preset_is_the_cli_error() {
         .unwrap();
     assert_eq!(tui_err, String::from_utf8_lossy(&run.stderr));
     assert!(tui_err.contains("no-such-preset"), "{tui_err}");
+}
+
+/// `asperity tour`: walks the shipped tour (→ ←, a knob turned inside a step, Esc leaves).
+#[test]
+fn tour_in_tmux() {
+    if !have_tmux() {
+        eprintln!("SKIPPED tour_in_tmux: tmux is not installed");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("asperity-e2e-tour-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let t = Tmux::start_with("tour", &dir, "", "tour");
+    let s = t.wait("the first step", |s| s.contains("tour 1/10") && solved(s));
+    assert!(s.contains("Roughness, scale by scale") && s.contains("[S-1]"), "{s}");
+    for (i, title) in [
+        (2, "How much area?"),
+        (3, "The stress distribution"),
+        (4, "What no W(a_r) can fix"),
+    ] {
+        t.keys(&["Right"]);
+        let s = t.wait(title, |s| s.contains(&format!("tour {i}/10")) && solved(s));
+        assert!(s.contains(title), "{s}");
+    }
+    let s = t.screen();
+    assert!(s.contains("Pr(σ*) log–log") && s.contains("σ→0 asymptote"), "{s}");
+    // a knob still turns inside a step (p* is selected: l steps it up)
+    t.keys(&["l"]);
+    t.wait("p* = 0.01122", |s| s.contains("0.01122") && s.contains("tour 4/10"));
+    t.keys(&["Left"]);
+    t.wait("step 3", |s| s.contains("tour 3/10") && s.contains("0.01000"));
+    // through the adhesive steps to the last
+    for i in 4..=10 {
+        t.keys(&["Right"]);
+        t.wait("the next step", |s| s.contains(&format!("tour {i}/10")));
+    }
+    let s = t.wait("the last step solved", |s| s.contains("Jump into contact") && solved(s));
+    assert!(s.contains("system-2") && s.contains("a_r(t·q_r)"), "{s}");
+    t.keys(&["Escape"]);
+    t.wait("the tour to end", |s| {
+        s.contains("left the tour") && !s.contains("tour 10/10")
+    });
+    t.keys(&["q"]);
+    let s = t.wait("a clean exit", |s| s.contains("TTY="));
+    assert!(s.contains("EXIT=0") && s.contains("TTY=icanon"), "{s}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `asperity tui` takes the scene flags of `run`.
+#[test]
+fn tui_takes_the_scene_flags_in_tmux() {
+    if !have_tmux() {
+        eprintln!("SKIPPED tui_takes_the_scene_flags_in_tmux: tmux is not installed");
+        return;
+    }
+    let t = Tmux::start_with(
+        "flags",
+        &std::env::temp_dir(),
+        "",
+        "tui --preset system-2 --model 3 --pressure 0.02 --thickness 1 --gamma 0",
+    );
+    let s = t.wait("the scene of the flags", solved);
+    assert!(
+        s.contains("system-2") && s.contains("model 3") && s.contains("0.02000"),
+        "{s}"
+    );
+    assert!(s.contains("0 (off)"), "{s}");
+    t.keys(&["q"]);
+    t.wait("a clean exit", |s| s.contains("EXIT=0"));
+}
+
+#[test]
+fn tui_and_tour_flags_are_validated_like_run() {
+    let out = Command::new(BIN).args(["tui", "--pressure", "-1"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(
+        err.trim(),
+        "asperity: invalid --pressure = -1: allowed 1e-12 <= pressure <= 1000"
+    );
+    let out = Command::new(BIN).args(["tui", "--model", "9"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--model"));
+    let out = Command::new(BIN).args(["tour", "--step", "99"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr).trim(),
+        "asperity: invalid --step = 99: allowed 1 <= step <= 10"
+    );
+    let out = Command::new(BIN).args(["tour", "no-such-tour"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("known tours: wang-muser"));
+    let out = Command::new(BIN).args(["tour", "--list"]).output().unwrap();
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).contains("wang-muser"));
+    // a bad tour file: one line with the line number and the key
+    let dir = std::env::temp_dir().join(format!("asperity-bad-tour-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("bad.toml");
+    std::fs::write(
+        &f,
+        "name = \"x\"\ntitle = \"y\"\n\n[[step]]\ntitle = \"a\"\ncharts = [\"pr\", \"nope\"]\ncaption = \"a\\nb\"\n",
+    )
+    .unwrap();
+    let out = Command::new(BIN).args(["tour", f.to_str().unwrap()]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("line 6: step[0].charts: unknown chart \"nope\""), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -4,6 +4,7 @@
 
 use asperity::input::preset::Preset;
 use asperity_cli::tui::app::App;
+use asperity_cli::tui::charts::ChartKind;
 use asperity_cli::tui::data::SweepData;
 use asperity_cli::tui::view;
 use asperity_cli::tui::worker::{compute_now, Caches};
@@ -102,6 +103,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         a_r: vec![1.0, f64::NAN, 0.0, -1.0, 0.5, 0.5],
         gap_rel: vec![f64::NAN; 6],
         mean_contact_stress: vec![0.0; 6],
+        converged: vec![false; 6],
     }));
     if let Some(Ok(p)) = a.point.as_mut() {
         p.pr = vec![(0.0, 0.0), (f64::NAN, 1.0), (1.0, f64::INFINITY)];
@@ -113,6 +115,17 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
     }
     key(&mut a, KeyCode::Char('a'));
     render(&a, 80, 24);
+    // every chart of the selector, with the bad data, everywhere, with all models
+    key(&mut a, KeyCode::Char('M'));
+    for _ in 0..ChartKind::ALL.len() {
+        for _ in 0..3 {
+            key(&mut a, KeyCode::Char('v'));
+            key(&mut a, KeyCode::Char('f'));
+        }
+        for (w, h) in [(80, 24), (60, 20), (200, 60)] {
+            render(&a, w, h);
+        }
+    }
     a.sweep = Some(Ok(SweepData::default()));
     a.point = None;
     render(&a, 80, 24);
@@ -183,4 +196,139 @@ fn gfmd_overlay_with_a_synthetic_run() {
     assert!(screen.contains("GFMD a_r 0.04180"), "{screen}");
     assert!(screen.contains("▀ GFMD"), "{screen}");
     insta::assert_snapshot!("gfmd_done_80x24", screen);
+}
+
+/// Sets the three panels and computes what they need.
+fn show(a: &mut App, charts: [ChartKind; 3]) {
+    a.set_charts(charts);
+    a.all_models = false;
+    compute_now(a, &mut Caches::default());
+}
+
+fn adhesionless(preset: &str) -> App {
+    let mut a = app(preset);
+    a.set_typed(asperity_cli::tui::app::Param::Gamma, "0").unwrap();
+    compute_now(&mut a, &mut Caches::default());
+    a
+}
+
+/// The new charts of the selector, each at 80×24 and 160×48: Pr(σ*) log–log with the
+/// asymptotes ([S] Fig. 3), a_r/p* with eq. (18) (Fig. 1), σ̄_c*(p*) (Fig. 5), ū(p*) (Fig. 6),
+/// a_r(t·q_r) (Fig. 7) and the reference points of Table 1.
+#[test]
+fn new_charts() {
+    let mut a = adhesionless("system-1");
+    show(&mut a, [ChartKind::PrLog, ChartKind::AreaRatio, ChartKind::Stress]);
+    let s = render(&a, 80, 24);
+    assert!(s.contains("σ→0 asymptote") || s.contains("•"), "{s}");
+    insta::assert_snapshot!("charts_prlog_ratio_stress_80x24", s);
+    let s = render(&a, 160, 48);
+    for needle in [
+        "log–log",
+        "σ→0 asymptote",
+        "large-σ asymptote",
+        "eq. (18)",
+        "a_r/p*",
+        "σ̄_c*(p*)",
+        "[S] Table 1",
+    ] {
+        assert!(s.contains(needle), "{needle}: {s}");
+    }
+    insta::assert_snapshot!("charts_prlog_ratio_stress_160x48", s);
+
+    let mut b = app("system-2");
+    show(&mut b, [ChartKind::Thickness, ChartKind::Gap, ChartKind::Area]);
+    assert!(b.thickness.as_ref().is_some_and(|t| t.is_ok()));
+    let s = render(&b, 160, 48);
+    for needle in ["a_r(t·q_r) at p* = 0.00500", "t·q_r", "γ_s=0", "t=∞", "ū/h_rms(p*)"] {
+        assert!(s.contains(needle), "{needle}: {s}");
+    }
+    insta::assert_snapshot!("charts_thickness_gap_area_160x48", s);
+    insta::assert_snapshot!("charts_thickness_gap_area_80x24", render(&b, 80, 24));
+}
+
+/// `M`: every model on the current chart, each named in the key with its own marker.
+#[test]
+fn all_models_overlay() {
+    let mut a = adhesionless("system-1");
+    a.set_charts([ChartKind::AreaRatio, ChartKind::Pr, ChartKind::Stress]);
+    key(&mut a, KeyCode::Char('M'));
+    assert!(a.all_models);
+    compute_now(&mut a, &mut Caches::default());
+    let s = render(&a, 160, 48);
+    for needle in ["• model 1", "▄ model 2", "⣿ model 3", "█ model 4"] {
+        assert!(s.contains(needle), "{needle}: {s}");
+    }
+    insta::assert_snapshot!("all_models_160x48", s);
+    insta::assert_snapshot!("all_models_80x24", render(&a, 80, 24));
+    // with the custom model selected, it joins as the fifth
+    key(&mut a, KeyCode::Char('m'));
+    key(&mut a, KeyCode::Char('m'));
+    compute_now(&mut a, &mut Caches::default());
+    assert!(render(&a, 160, 48).contains("▀ custom"));
+}
+
+/// A tour step: the preset state, its charts and the caption box.
+#[test]
+fn tour_step() {
+    use asperity_cli::tui::tour::Tour;
+    let mut a = app("system-1");
+    a.start_tour(Tour::resolve("wang-muser").unwrap(), 1);
+    compute_now(&mut a, &mut Caches::default());
+    assert_eq!(a.charts[0], ChartKind::AreaRatio);
+    assert!(a.all_models && a.scene.gamma == 0.0);
+    let s = render(&a, 80, 24);
+    assert!(s.contains("tour 2/10") && s.contains("How much area?"), "{s}");
+    insta::assert_snapshot!("tour_step2_80x24", s);
+    insta::assert_snapshot!("tour_step2_160x48", render(&a, 160, 48));
+    // → moves on, ← back, a knob still turns (h), Esc leaves with the scene kept
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.tour.as_ref().unwrap().step, 2);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.tour.as_ref().unwrap().step, 1);
+    let p = a.scene.pressure;
+    key(&mut a, KeyCode::Char('l'));
+    assert!(a.scene.pressure > p);
+    key(&mut a, KeyCode::Esc);
+    assert!(a.tour.is_none() && !a.quit);
+    assert!(!render(&a, 80, 24).contains("tour 2/10"));
+}
+
+/// Defects of issue 14: a negative gap is drawn (the ū axis does not start at 0), values of
+/// an earlier scene are marked while the new one computes, long messages wrap instead of being
+/// cut, and the hint bar names g and c.
+#[test]
+fn defects_gap_axis_stale_values_long_messages_hints() {
+    let mut a = adhesionless("system-1");
+    a.set_charts([ChartKind::Gap, ChartKind::Area, ChartKind::Stress]);
+    if let Some(Ok(sw)) = a.sweep.as_mut() {
+        for g in sw.gap_rel.iter_mut() {
+            *g -= 2.0;
+        }
+    }
+    let s = render(&a, 160, 48);
+    assert!(s.contains("│-"), "the ū axis shows negative values: {s}");
+    // stale: one step of p*, nothing computed yet
+    let hint = render(&a, 160, 48);
+    assert!(hint.contains("g GFMD") && hint.contains("c compare"), "{hint}");
+    key(&mut a, KeyCode::Right);
+    assert!(a.point_is_stale() && a.gap_is_stale());
+    let s = render(&a, 80, 24);
+    assert!(s.contains("⋯") && s.contains("computing…"), "{s}");
+    compute_now(&mut a, &mut Caches::default());
+    assert!(!a.point_is_stale());
+    assert!(!render(&a, 80, 24).contains("⋯"));
+    // a long message wraps over up to four rows
+    a.on_key(KeyEvent::new(KeyCode::Enter, KeyModifiers::NONE));
+    for c in "x".repeat(10).chars() {
+        key(&mut a, KeyCode::Char(c));
+    }
+    let long = format!("{} END", "word ".repeat(50));
+    a.edit = None;
+    a.message = Some(asperity_cli::tui::app::Message {
+        text: long,
+        error: true,
+    });
+    let s = render(&a, 80, 24);
+    assert!(s.contains("END"), "{s}");
 }

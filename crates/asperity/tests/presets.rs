@@ -55,17 +55,28 @@ fn fixture_error(name: &str) -> String {
 #[test]
 fn bad_presets_name_the_field_and_range() {
     let cases = [
-        ("malformed.toml", &["line 2"][..]),
-        ("unknown-key.toml", &["unknown field `roughness`"][..]),
+        // lines are 1-based and point at the offending line (they were one too low)
+        ("malformed.toml", &["line 2: surface: unclosed table"][..]),
+        (
+            "unknown-key.toml",
+            &["line 11: surface.roughness: unknown field `roughness`"][..],
+        ),
         (
             "negative-length.toml",
-            &["surface.system_size_m", "-0.0001", "1e-12 <= system_size_m"][..],
+            &[
+                "line 7: invalid surface.system_size_m",
+                "-0.0001",
+                "1e-12 <= system_size_m",
+            ][..],
         ),
         (
             "short-above-rolloff.toml",
             &["surface.short_wavelength_m", "< rolloff_wavelength_m"][..],
         ),
-        ("nan-hurst.toml", &["surface.hurst = NaN", "0.001 <= hurst <= 1"][..]),
+        (
+            "nan-hurst.toml",
+            &["line 10: invalid surface.hurst = NaN", "0.001 <= hurst <= 1"][..],
+        ),
         ("negative-thickness.toml", &["load.thickness_qr = -2", "or inf"][..]),
         ("zero-modulus.toml", &["material.contact_modulus_pa = 0"][..]),
         ("bad-model.toml", &["model.variant = 7", "1, 2, 3, 4"][..]),

@@ -6,6 +6,7 @@
 use asperity::contact::ContactStats;
 use asperity::theory::engine;
 pub mod bench;
+pub mod figure;
 pub mod gfmd;
 
 use asperity::error::Field;
@@ -34,12 +35,10 @@ pub struct Cli {
 /// Subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Open the terminal explorer (the default).
-    Tui {
-        /// Preset name (from presets/) or path to a preset TOML file.
-        #[arg(long, default_value = preset::DEFAULT_PRESET)]
-        preset: String,
-    },
+    /// Open the terminal explorer (the default), on a preset or on the scene the flags give.
+    Tui(TuiArgs),
+    /// Open the explorer in a teaching tour (tours/NAME.toml or built in).
+    Tour(TourArgs),
     /// Evaluate the theory for one scene and print the result.
     Run(RunArgs),
     /// List the available presets.
@@ -50,6 +49,8 @@ pub enum Command {
     Sweep(sweep::SweepArgs),
     /// Brute-force GFMD run on a reduced grid, compared with the theory on the same surface.
     Gfmd(gfmd::GfmdArgs),
+    /// A figure or table of [S] (1-8, table-1): data, a text chart, SVG/PNG (--list names them).
+    Figure(figure::FigureArgs),
 }
 
 /// Output format of `run`.
@@ -91,6 +92,31 @@ pub struct SceneArgs {
     /// Surface energy gamma_s in J/m^2; 0 = no adhesion.
     #[arg(long, allow_hyphen_values = true)]
     pub gamma: Option<f64>,
+}
+
+/// Arguments of `tui`: the scene flags of `run`.
+#[derive(Debug, Clone, Args)]
+pub struct TuiArgs {
+    /// Scene.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Reduced pressure p* = p/(E* g) (default: the preset's reference load).
+    #[arg(long, allow_hyphen_values = true)]
+    pub pressure: Option<f64>,
+}
+
+/// Arguments of `tour`.
+#[derive(Debug, Clone, Args)]
+pub struct TourArgs {
+    /// Tour name (from tours/ or built in) or path to a tour TOML file.
+    #[arg(default_value = crate::tui::tour::DEFAULT_TOUR)]
+    pub tour: String,
+    /// Step to start at (1 = the first).
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
+    pub step: i64,
+    /// List the available tours and exit.
+    #[arg(long)]
+    pub list: bool,
 }
 
 /// Arguments of `run`.
@@ -459,8 +485,12 @@ pub fn main() -> i32 {
         }
     };
     let result = match cli.command {
-        None => tui_entry(preset::DEFAULT_PRESET),
-        Some(Command::Tui { preset }) => tui_entry(&preset),
+        None => tui_entry(preset::DEFAULT_PRESET, None, None),
+        Some(Command::Tui(args)) => args
+            .scene
+            .resolve(args.pressure)
+            .and_then(|(_, scene)| tui_entry(&args.scene.preset, Some(scene), None)),
+        Some(Command::Tour(args)) => tour_entry(&args),
         Some(Command::Presets) => {
             for (name, place) in preset::list_available() {
                 let desc = Preset::resolve(&name)
@@ -473,6 +503,7 @@ pub fn main() -> i32 {
         Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::Sweep(args)) => sweep::run(&args).map(|text| emit(&text)),
         Some(Command::Gfmd(args)) => gfmd::run(&args),
+        Some(Command::Figure(args)) => figure::run(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let out = evaluate(&preset.name, &scene, &args)?;
             match args.format {
@@ -491,7 +522,36 @@ pub fn main() -> i32 {
     }
 }
 
-fn tui_entry(preset_name: &str) -> Result<()> {
+fn tour_entry(args: &TourArgs) -> Result<()> {
+    use crate::tui::tour::{self, Tour};
+    if args.list {
+        for (name, place) in tour::list_available() {
+            let desc = Tour::resolve(&name)
+                .map(|t| format!("{} ({} steps)", t.title, t.steps.len()))
+                .unwrap_or_else(|e| format!("(invalid: {e})"));
+            emit(&format!("{name:<12} {place:<28} {desc}"));
+        }
+        return Ok(());
+    }
+    let t = Tour::resolve(&args.tour)?;
+    let n = t.steps.len();
+    if args.step < 1 || args.step as usize > n {
+        return Err(Error::invalid_text(
+            Field::Other("--step".into()),
+            args.step,
+            format!("1 <= step <= {n}"),
+        ));
+    }
+    let first = &t.steps[0];
+    let source = first.source.clone();
+    tui_entry(&source, None, Some((t, args.step as usize - 1)))
+}
+
+fn tui_entry(
+    preset_name: &str,
+    scene: Option<asperity::input::scene::Scene>,
+    tour: Option<(crate::tui::tour::Tour, usize)>,
+) -> Result<()> {
     // Validate the preset first so a bad one gives the same error as the CLI.
     let preset = Preset::resolve(preset_name)?;
     if !std::io::stdout().is_terminal() {
@@ -504,5 +564,13 @@ fn tui_entry(preset_name: &str) -> Result<()> {
         );
         return Err(Error::Unsupported("the terminal explorer needs a terminal".into()));
     }
-    crate::tui::run(preset_name, preset)
+    let mut app = crate::tui::app::App::new(preset_name, preset)?;
+    if let Some(s) = scene {
+        app.base = s.clone();
+        app.scene = s;
+    }
+    if let Some((t, step)) = tour {
+        app.start_tour(t, step);
+    }
+    crate::tui::run_app(app)
 }

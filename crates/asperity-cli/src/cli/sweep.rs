@@ -1,10 +1,17 @@
-//! `asperity sweep`: one row per load with a_r, ū/h_rms, ū, σ̄_c*, U and convergence
-//! ([`asperity::theory::sweep`]).
+//! `asperity sweep`: one row per value of the swept knob with a_r, ū/h_rms, ū, σ̄_c*,
+//! ⟨δσ_c²⟩*, a_r/p*, the [S-18] reference, U and convergence.
+//!
+//! `--over pressure` (the default) sweeps p* ([`asperity::theory::sweep`]: continuation, one
+//! shared gap table); `--over thickness` (t·q_r, log-spaced) and `--over gamma` (γ_s, linear)
+//! evaluate each value as its own scene at `--pressure` ([`asperity::theory::knob`]), each
+//! point exactly what `run` gives for it.
 
 use super::SceneArgs;
-use asperity::error::Result;
+use asperity::error::{Error, Field, Result};
+use asperity::theory::closed_form::eq18_area;
 use asperity::theory::engine::Options;
-use asperity::theory::sweep::{self, Sweep, SweepSpec};
+use asperity::theory::knob::{self, Knob, KnobSpec};
+use asperity::theory::sweep::{self, Sweep, SweepRow, SweepSpec};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 
@@ -17,50 +24,115 @@ pub enum SweepFormat {
     Json,
 }
 
+/// The knob a sweep turns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Over {
+    /// p* (log-spaced).
+    Pressure,
+    /// t·q_r (log-spaced), at --pressure.
+    Thickness,
+    /// γ_s in J/m² (linearly spaced), at --pressure.
+    Gamma,
+}
+
 /// Arguments of `sweep`.
 #[derive(Debug, Clone, Args)]
 pub struct SweepArgs {
     /// Scene.
     #[command(flatten)]
     pub scene: SceneArgs,
-    /// First reduced pressure p*.
+    /// The knob to sweep: pressure (p*), thickness (t*q_r) or gamma (gamma_s, J/m^2).
+    #[arg(long, value_enum, default_value_t = Over::Pressure)]
+    pub over: Over,
+    /// First value of the swept knob.
     #[arg(long, allow_hyphen_values = true)]
     pub from: f64,
-    /// Last reduced pressure p*.
+    /// Last value of the swept knob.
     #[arg(long, allow_hyphen_values = true)]
     pub to: f64,
-    /// Number of log-spaced loads from --from to --to.
+    /// Number of values from --from to --to (log-spaced; linear for gamma).
     #[arg(long, default_value_t = 64, allow_hyphen_values = true, value_parser = super::whole_number)]
     pub points: usize,
+    /// Reduced pressure p* of a thickness or gamma sweep (default: the preset's).
+    #[arg(long, allow_hyphen_values = true)]
+    pub pressure: Option<f64>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]
     pub format: SweepFormat,
 }
 
-/// The CSV header (the first seven columns are the public interface).
-pub const CSV_HEADER: &str =
-    "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error";
+/// The CSV header (the first nine columns are the public interface of the load sweep; the
+/// rest were added with `--over`).
+pub const CSV_HEADER: &str = "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
+elastic_energy_reduced,mean_gap_error,contact_stress_variance,a_r_over_p,a_r_eq18,thickness_qr,gamma";
+
+/// One row of `sweep` (CSV columns and JSON keys). Unavailable numbers are null (empty cells).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Row {
+    /// The engine's row (p*, a_r, ū, σ̄_c*, U, converged, …, ⟨δσ_c²⟩*).
+    #[serde(flatten)]
+    pub row: SweepRow,
+    /// a_r/p*.
+    pub a_r_over_p: f64,
+    /// a_r of [S-18] at this p*, where it applies (γ_s = 0, semi-infinite); else null.
+    pub a_r_eq18: Option<f64>,
+    /// t·q_r; null for a semi-infinite body.
+    pub thickness_qr: Option<f64>,
+    /// γ_s (J/m²).
+    pub gamma: f64,
+}
+
+impl Row {
+    /// The row of `row` for a scene with this t·q_r and γ_s (adds a_r/p* and [S-18]).
+    pub fn new(row: SweepRow, thickness_qr: f64, gamma: f64) -> Row {
+        let eq18 = (gamma == 0.0 && thickness_qr.is_infinite()).then(|| eq18_area(row.p));
+        Row {
+            row,
+            a_r_over_p: row.a_r / row.p,
+            a_r_eq18: eq18,
+            thickness_qr: thickness_qr.is_finite().then_some(thickness_qr),
+            gamma,
+        }
+    }
+}
 
 /// The JSON object printed by `sweep --format json`.
 #[derive(Debug, Clone, Serialize)]
 pub struct SweepOutput {
     /// Preset name.
     pub preset: String,
-    /// Resolved inputs (pressure = --from).
+    /// The swept knob.
+    pub over: Over,
+    /// Resolved inputs (at --from).
     pub scene: asperity::input::scene::SceneSummary,
-    /// The sweep.
-    #[serde(flatten)]
-    pub sweep: Sweep,
+    /// One row per value.
+    pub rows: Vec<Row>,
+    /// Engine evaluations spent.
+    pub evaluations: usize,
+    /// p* at which the contact is full (of the scene at --from).
+    pub full_contact_pressure: f64,
+    /// Whether a_r rose and ū fell with the load (load sweeps; true for other knobs).
+    pub monotone: bool,
+    /// Loads (p*) of the rows that did not converge.
+    pub failed_loads: Vec<f64>,
+    /// Values of the swept knob whose rows did not converge.
+    pub failed_values: Vec<f64>,
+    /// What failed; absent when every value converged.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
 }
 
-/// Formats a sweep as CSV.
-pub fn csv(sw: &Sweep) -> String {
+/// Formats rows as CSV.
+pub fn csv(rows: &[Row]) -> String {
     let mut out = String::from(CSV_HEADER);
     // an unavailable value (a load that did not converge, or a gap below one) is left empty
     let f = |x: f64| if x.is_finite() { format!("{x:e}") } else { String::new() };
-    for r in &sw.rows {
+    let o = |x: Option<f64>| x.map_or(String::new(), f);
+    for row in rows {
+        let r = &row.row;
         out.push_str(&format!(
-            "\n{:e},{},{},{},{},{},{},{},{}",
+            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.p,
             f(r.a_r),
             f(r.mean_gap_rel),
@@ -69,32 +141,146 @@ pub fn csv(sw: &Sweep) -> String {
             f(r.elastic_energy),
             r.converged,
             f(r.elastic_energy_reduced),
-            f(r.mean_gap_error)
+            f(r.mean_gap_error),
+            f(r.contact_stress_variance),
+            f(row.a_r_over_p),
+            o(row.a_r_eq18),
+            row.thickness_qr.map_or("inf".to_string(), f),
+            f(row.gamma),
         ));
     }
     out
 }
 
+/// Runs the sweep `args` asks for; returns the JSON object (rows included).
+pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
+    match args.over {
+        Over::Pressure => {
+            if let Some(p) = args.pressure {
+                return Err(Error::invalid(
+                    Field::Pressure,
+                    p,
+                    "only with --over thickness or --over gamma (a load sweep runs from --from to --to)",
+                ));
+            }
+            let spec = SweepSpec {
+                from: args.from,
+                to: args.to,
+                points: args.points,
+            };
+            spec.validate()?;
+            let (preset, scene) = args.scene.resolve(Some(args.from))?;
+            let sw: Sweep = sweep::sweep(&scene, &spec, &Options::default(), None)?;
+            let rows = sw
+                .rows
+                .iter()
+                .map(|r| Row::new(*r, scene.thickness_qr, scene.gamma))
+                .collect();
+            Ok(SweepOutput {
+                preset: preset.name.clone(),
+                over: Over::Pressure,
+                scene: scene.summary(),
+                rows,
+                evaluations: sw.evaluations,
+                full_contact_pressure: sw.full_contact_pressure,
+                monotone: sw.monotone,
+                failed_values: sw.failed_loads.clone(),
+                failed_loads: sw.failed_loads,
+                note: sw.note,
+            })
+        }
+        Over::Thickness | Over::Gamma => {
+            let knob = if args.over == Over::Thickness {
+                Knob::Thickness
+            } else {
+                Knob::Gamma
+            };
+            let spec = KnobSpec {
+                knob,
+                from: args.from,
+                to: args.to,
+                points: args.points,
+            };
+            spec.validate()?;
+            let (preset, scene) = args.scene.resolve(args.pressure)?;
+            let first = knob.apply(&scene, args.from);
+            let points = knob::knob_sweep(&scene, &spec, &Options::default(), true, None)?;
+            let unit = asperity::theory::energy::energy_unit(&scene);
+            let mut notes = Vec::new();
+            let mut failed = Vec::new();
+            let rows: Vec<Row> = points
+                .iter()
+                .map(|pt| {
+                    let mut r = SweepRow {
+                        p: scene.pressure,
+                        a_r: f64::NAN,
+                        mean_gap_rel: f64::NAN,
+                        mean_gap: f64::NAN,
+                        mean_contact_stress: f64::NAN,
+                        elastic_energy: f64::NAN,
+                        converged: false,
+                        elastic_energy_reduced: f64::NAN,
+                        mean_gap_error: f64::NAN,
+                        contact_stress_variance: f64::NAN,
+                    };
+                    match &pt.result {
+                        Ok(e) => {
+                            r.a_r = e.stats.a_r;
+                            r.mean_contact_stress = e.stats.mean_contact_stress;
+                            r.contact_stress_variance = e.stats.contact_stress_variance;
+                            r.elastic_energy = e.elastic_energy;
+                            r.elastic_energy_reduced = e.elastic_energy / unit;
+                            r.converged = true;
+                            match &pt.gap {
+                                Ok(Some(g)) => {
+                                    r.mean_gap_rel = g.relative;
+                                    r.mean_gap = g.metres;
+                                    r.mean_gap_error = g.error;
+                                }
+                                Ok(None) => {}
+                                Err(e) => notes.push(format!("value {:e}: mean gap unavailable: {e}", pt.value)),
+                            }
+                        }
+                        Err(e) => {
+                            failed.push(pt.value);
+                            notes.push(format!("value {:e}: {e}", pt.value));
+                        }
+                    }
+                    Row::new(r, pt.scene.thickness_qr, pt.scene.gamma)
+                })
+                .collect();
+            let note = (!notes.is_empty()).then(|| {
+                format!(
+                    "{} of {} values did not converge or lack the gap; their cells are empty (null): {}",
+                    notes.len(),
+                    points.len(),
+                    notes.join("; ")
+                )
+            });
+            Ok(SweepOutput {
+                preset: preset.name.clone(),
+                over: args.over,
+                scene: first.summary(),
+                rows,
+                evaluations: points.len(),
+                full_contact_pressure: asperity::theory::gap::full_contact_pressure(&first),
+                monotone: true,
+                failed_loads: failed.iter().map(|_| scene.pressure).collect(),
+                failed_values: failed,
+                note,
+            })
+        }
+    }
+}
+
 /// Runs `asperity sweep`; returns the text to print.
 pub fn run(args: &SweepArgs) -> Result<String> {
-    let spec = SweepSpec {
-        from: args.from,
-        to: args.to,
-        points: args.points,
-    };
-    spec.validate()?;
-    let (preset, scene) = args.scene.resolve(Some(args.from))?;
-    let sw = sweep::sweep(&scene, &spec, &Options::default(), None)?;
-    if let Some(note) = &sw.note {
+    let out = compute(args)?;
+    if let Some(note) = &out.note {
         eprintln!("asperity sweep: {note}");
     }
     Ok(match args.format {
-        SweepFormat::Csv => csv(&sw),
-        SweepFormat::Json => serde_json::to_string_pretty(&SweepOutput {
-            preset: preset.name.clone(),
-            scene: scene.summary(),
-            sweep: sw,
-        })
-        .expect("serialisable"),
+        SweepFormat::Csv => csv(&out.rows),
+        SweepFormat::Json => serde_json::to_string_pretty(&out).expect("serialisable"),
     })
 }

@@ -2,14 +2,17 @@
 //! unit-tested. The event loop ([`super::run`]) feeds it key events and worker replies and
 //! forwards the [`Request`] it asks for ([`App::take_request`]) to the worker.
 
-use super::data::{GfmdView, PointData, SweepData, ADHESION_BY_DEFAULT};
+use super::charts::{self, ChartKind, Needs};
+use super::data::{GfmdView, PointData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
 use super::keys::{self, Action};
-use super::worker::{point_key, sweep_key, Reply, Request};
+use super::tour::Tour;
+use super::worker::{point_key, sweep_key, thickness_key, CacheKey, Reply, Request};
 use asperity::error::{Error, Result};
 use asperity::input::model::{Model, ModelKind};
 use asperity::input::preset::{self, Preset};
 use asperity::input::scene::Scene;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -90,14 +93,17 @@ pub enum Overlay {
     Presets(usize),
 }
 
-/// How the area chart is drawn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum AreaMode {
-    /// log a_r against log p*.
-    Log,
-    /// a_r/p* against log p* (\[S\] Fig. 1).
-    Ratio,
+/// The tour being walked (`t`, `asperity tour`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TourState {
+    /// The tour.
+    pub tour: Tour,
+    /// The current step.
+    pub step: usize,
 }
+
+/// The charts the explorer opens with: Pr(σ*) big, a_r(p*) and ū(p*) small.
+pub const DEFAULT_CHARTS: [ChartKind; 3] = [ChartKind::Pr, ChartKind::Area, ChartKind::Gap];
 
 /// One entry of the preset picker.
 #[derive(Debug, Clone, PartialEq)]
@@ -136,8 +142,30 @@ pub struct App {
     pub edit: Option<String>,
     /// Overlay.
     pub overlay: Overlay,
-    /// Area chart mode.
-    pub area_mode: AreaMode,
+    /// The charts of the big panel, the lower-left and the lower-right panel.
+    pub charts: [ChartKind; 3],
+    /// The panel the chart selector (`v`) changes.
+    pub focus: usize,
+    /// Overlay every model on the charts (`M`).
+    pub all_models: bool,
+    /// Results of the other models (`M`), by cache key.
+    pub overlay_points: HashMap<CacheKey, Result<PointData>>,
+    /// Load sweeps of the other models, by cache key.
+    pub overlay_sweeps: HashMap<CacheKey, Result<SweepData>>,
+    /// Thickness sweeps of the other models, by cache key.
+    pub overlay_thickness: HashMap<CacheKey, Result<ThicknessData>>,
+    /// a_r(t·q_r) at the current p*.
+    pub thickness: Option<Result<ThicknessData>>,
+    /// The key of the shown point (None: set directly, e.g. in tests).
+    pub point_shown: Option<CacheKey>,
+    /// The key of the shown load sweep.
+    pub sweep_shown: Option<CacheKey>,
+    /// The key of the shown gap.
+    pub gap_shown: Option<CacheKey>,
+    /// The key of the shown thickness sweep.
+    pub thickness_shown: Option<CacheKey>,
+    /// The tour, when one is being walked.
+    pub tour: Option<TourState>,
     /// Show the adhesionless comparison in the Pr chart.
     pub compare: bool,
     /// Status-bar message (cleared by the next key).
@@ -224,13 +252,28 @@ pub fn chart_range(p: f64) -> (f64, f64) {
 /// Next grid value of a log-stepped parameter: `steps` grid points up (or down) from `x` on
 /// the grid of `per_decade` points per decade. Off-grid values go to the neighbouring point.
 pub fn log_step(x: f64, per_decade: f64, steps: i32) -> f64 {
-    let u = x.log10() * per_decade;
+    log_step_from(x, 1.0, per_decade, steps)
+}
+
+/// [`log_step`] on the grid anchor·10^(k/per_decade), which contains `anchor` (the preset's
+/// value), so stepping away and back returns to it exactly.
+pub fn log_step_from(x: f64, anchor: f64, per_decade: f64, steps: i32) -> f64 {
+    let anchor = if anchor.is_finite() && anchor > 0.0 {
+        anchor
+    } else {
+        1.0
+    };
+    let u = (x / anchor).log10() * per_decade;
     let k = if steps > 0 {
         (u + 1e-9).floor() + steps as f64
     } else {
         (u - 1e-9).ceil() + steps as f64
     };
-    10f64.powf(k / per_decade)
+    if k == 0.0 {
+        anchor
+    } else {
+        anchor * 10f64.powf(k / per_decade)
+    }
 }
 
 /// An additive step on a grid of `step` (values snap to the grid, so toggling back is exact).
@@ -289,7 +332,18 @@ impl App {
             selected: 2,
             edit: None,
             overlay: Overlay::None,
-            area_mode: AreaMode::Log,
+            charts: DEFAULT_CHARTS,
+            focus: 0,
+            all_models: false,
+            overlay_points: HashMap::new(),
+            overlay_sweeps: HashMap::new(),
+            overlay_thickness: HashMap::new(),
+            thickness: None,
+            point_shown: None,
+            sweep_shown: None,
+            gap_shown: None,
+            thickness_shown: None,
+            tour: None,
             compare: true,
             message: None,
             gen: 0,
@@ -336,12 +390,130 @@ impl App {
         self.gen += 1;
         self.busy = true;
         self.busy_since = Some(std::time::Instant::now());
+        let models = if self.all_models {
+            charts::overlay_models(&self.scene.model)
+                .into_iter()
+                .filter(|m| charts::slot(m) != charts::slot(&self.scene.model))
+                .collect()
+        } else {
+            Vec::new()
+        };
         Some(Request {
             gen: self.gen,
             source: self.source.clone(),
             scene: self.scene.clone(),
             range: chart_range(self.scene.pressure),
+            needs: self.needs(),
+            models,
         })
+    }
+
+    /// What the visible charts need computed.
+    pub fn needs(&self) -> Needs {
+        self.charts.iter().fold(Needs::default(), |n, c| n.or(c.needs()))
+    }
+
+    /// The scene with another model.
+    fn with_model(&self, m: &Model) -> Scene {
+        let mut s = self.scene.clone();
+        s.model = *m;
+        s
+    }
+
+    /// The point of model `m` at the current scene (the current point for the current model).
+    pub fn model_point(&self, m: &Model) -> Option<&PointData> {
+        if charts::slot(m) == charts::slot(&self.scene.model) {
+            return self.point.as_ref().and_then(|r| r.as_ref().ok());
+        }
+        let key = point_key(&self.source, &self.with_model(m));
+        self.overlay_points.get(&key).and_then(|r| r.as_ref().ok())
+    }
+
+    /// The load sweep of model `m`.
+    pub fn model_sweep(&self, m: &Model) -> Option<&SweepData> {
+        if charts::slot(m) == charts::slot(&self.scene.model) {
+            return self.sweep.as_ref().and_then(|r| r.as_ref().ok());
+        }
+        let key = sweep_key(&self.source, &self.with_model(m), self.range());
+        self.overlay_sweeps.get(&key).and_then(|r| r.as_ref().ok())
+    }
+
+    /// The thickness sweep of model `m`.
+    pub fn model_thickness(&self, m: &Model) -> Option<&ThicknessData> {
+        if charts::slot(m) == charts::slot(&self.scene.model) {
+            return self.thickness.as_ref().and_then(|r| r.as_ref().ok());
+        }
+        let key = thickness_key(&self.source, &self.with_model(m));
+        self.overlay_thickness.get(&key).and_then(|r| r.as_ref().ok())
+    }
+
+    /// Whether the shown point belongs to an earlier scene.
+    pub fn point_is_stale(&self) -> bool {
+        self.point_shown
+            .as_ref()
+            .is_some_and(|k| *k != point_key(&self.source, &self.scene))
+    }
+
+    /// Whether the shown load sweep belongs to an earlier scene.
+    pub fn sweep_is_stale(&self) -> bool {
+        self.sweep_shown
+            .as_ref()
+            .is_some_and(|k| *k != sweep_key(&self.source, &self.scene, self.range()))
+    }
+
+    /// Whether the shown gap belongs to an earlier scene.
+    pub fn gap_is_stale(&self) -> bool {
+        self.gap_shown
+            .as_ref()
+            .is_some_and(|k| *k != point_key(&self.source, &self.scene))
+    }
+
+    /// Whether the shown thickness sweep belongs to an earlier scene.
+    pub fn thickness_is_stale(&self) -> bool {
+        self.thickness_shown
+            .as_ref()
+            .is_some_and(|k| *k != thickness_key(&self.source, &self.scene))
+    }
+
+    /// ū/h_rms at the current point, if computed.
+    pub fn gap_value(&self) -> Option<f64> {
+        match &self.gap {
+            Some(Ok(g)) => Some(*g),
+            _ => None,
+        }
+    }
+
+    /// Whether eq. (18) describes the scene (adhesionless, semi-infinite).
+    pub fn eq18_applies(&self) -> bool {
+        self.scene.gamma == 0.0 && self.scene.thickness_qr.is_infinite()
+    }
+
+    /// Shows `charts` in the big, lower-left and lower-right panels.
+    pub fn set_charts(&mut self, charts: [ChartKind; 3]) {
+        self.charts = charts;
+        self.refresh();
+    }
+
+    /// Asks for the charts' data again (after the charts or `M` changed; cached parts are
+    /// instant).
+    fn refresh(&mut self) {
+        self.pending = true;
+    }
+
+    /// Keys of the other models' results for the current scene (for keeping replies).
+    fn overlay_keys(&self) -> (Vec<CacheKey>, Vec<CacheKey>, Vec<CacheKey>) {
+        let mut p = Vec::new();
+        let mut sw = Vec::new();
+        let mut t = Vec::new();
+        if self.all_models {
+            for m in charts::overlay_models(&self.scene.model) {
+                let s = self.with_model(&m);
+                p.push(point_key(&self.source, &s));
+                sw.push(sweep_key(&self.source, &s, self.range()));
+                t.push(thickness_key(&self.source, &s));
+            }
+        }
+        (p, sw, t)
     }
 
     /// Whether the scene changed since the last request.
@@ -360,21 +532,32 @@ impl App {
             Reply::Point { gen, key, result } => {
                 if key == point_key(&self.source, &self.scene) {
                     self.point_gen = self.point_gen.max(gen);
-                    if result.is_err() {
-                        self.sweep = None;
-                        self.gap = None;
-                    }
                     self.point = Some(result);
+                    self.point_shown = Some(key);
+                } else if self.overlay_keys().0.contains(&key) {
+                    bounded_insert(&mut self.overlay_points, key, result);
                 }
             }
             Reply::Sweep { key, result, .. } => {
                 if key == sweep_key(&self.source, &self.scene, self.range()) {
                     self.sweep = Some(result);
+                    self.sweep_shown = Some(key);
+                } else if self.overlay_keys().1.contains(&key) {
+                    bounded_insert(&mut self.overlay_sweeps, key, result);
                 }
             }
             Reply::Gap { key, result, .. } => {
                 if key == point_key(&self.source, &self.scene) {
                     self.gap = Some(result);
+                    self.gap_shown = Some(key);
+                }
+            }
+            Reply::Thickness { key, result, .. } => {
+                if key == thickness_key(&self.source, &self.scene) {
+                    self.thickness = Some(result);
+                    self.thickness_shown = Some(key);
+                } else if self.overlay_keys().2.contains(&key) {
+                    bounded_insert(&mut self.overlay_thickness, key, result);
                 }
             }
             Reply::GfmdProgress {
@@ -401,6 +584,13 @@ impl App {
                     if *cur == id {
                         let scene = scene.clone();
                         self.gfmd_cancel = None;
+                        if self
+                            .message
+                            .as_ref()
+                            .is_some_and(|m| m.text.starts_with("GFMD started"))
+                        {
+                            self.message = None;
+                        }
                         match result {
                             Err(Error::Cancelled) => self.gfmd = GfmdState::Idle,
                             r => {
@@ -495,7 +685,20 @@ impl App {
         if let Some(Err(e)) = &self.gap {
             return Some(format!("mean gap: {e}"));
         }
+        if self.charts.contains(&ChartKind::Thickness) {
+            if let Some(Err(e)) = &self.thickness {
+                return Some(format!("thickness chart: {e}"));
+            }
+        }
         None
+    }
+
+    /// Why the current point has no error bar, if so (shown in the status line).
+    pub fn compute_warning(&self) -> Option<String> {
+        match &self.point {
+            Some(Ok(p)) => p.warning.as_ref().map(|w| format!("a_r without error bar: {w}")),
+            _ => None,
+        }
     }
 
     fn info(&mut self, text: impl Into<String>) {
@@ -538,6 +741,19 @@ impl App {
             }
             Overlay::None => {}
         }
+        if self.tour.is_some()
+            && ev
+                .modifiers
+                .intersection(KeyModifiers::SHIFT | KeyModifiers::CONTROL)
+                .is_empty()
+        {
+            match ev.code {
+                KeyCode::Left => return self.tour_go(-1),
+                KeyCode::Right => return self.tour_go(1),
+                KeyCode::Esc => return self.leave_tour(),
+                _ => {}
+            }
+        }
         if let KeyCode::Char(c) = ev.code {
             if (c.is_ascii_digit() || c == '.' || c == '-') && !ev.modifiers.contains(KeyModifiers::CONTROL) {
                 self.edit = Some(c.to_string());
@@ -575,11 +791,43 @@ impl App {
                 Err(e) => self.fail(e),
             },
             Action::AreaMode => {
-                self.area_mode = match self.area_mode {
-                    AreaMode::Log => AreaMode::Ratio,
-                    AreaMode::Ratio => AreaMode::Log,
+                let mut any = false;
+                for c in &mut self.charts {
+                    *c = match *c {
+                        ChartKind::Area => ChartKind::AreaRatio,
+                        ChartKind::AreaRatio => ChartKind::Area,
+                        other => other,
+                    };
+                    any |= matches!(*c, ChartKind::Area | ChartKind::AreaRatio);
+                }
+                if !any {
+                    self.info("no area chart shown: v picks the charts");
                 }
             }
+            Action::Chart => {
+                let f = self.focus.min(2);
+                self.charts[f] = self.charts[f].cycle(1);
+                self.refresh();
+            }
+            Action::Focus => self.focus = (self.focus + 1) % 3,
+            Action::Models => {
+                self.all_models = !self.all_models;
+                self.refresh();
+            }
+            Action::Tour => {
+                if self.tour.is_some() {
+                    self.leave_tour();
+                } else {
+                    match Tour::resolve(super::tour::DEFAULT_TOUR) {
+                        Ok(t) => self.start_tour(t, 0),
+                        Err(e) => self.fail(e),
+                    }
+                }
+            }
+            Action::Save => match super::export::export_charts(self) {
+                Ok(paths) => self.info(format!("saved {}", paths.join(", "))),
+                Err(e) => self.fail(e),
+            },
             Action::Compare => self.compare = !self.compare,
             Action::Gfmd => self.toggle_gfmd(),
             Action::Help => self.overlay = Overlay::Help,
@@ -624,6 +872,63 @@ impl App {
             KeyCode::Char('q') => self.quit = true,
             _ => self.overlay = Overlay::None,
         }
+    }
+
+    /// Starts walking `tour` at step `step`.
+    pub fn start_tour(&mut self, tour: Tour, step: usize) {
+        let step = step.min(tour.steps.len().saturating_sub(1));
+        self.tour = Some(TourState { tour, step });
+        self.apply_step();
+    }
+
+    /// Moves `dir` steps along the tour (stops at the ends).
+    pub fn tour_go(&mut self, dir: i32) {
+        let Some(t) = self.tour.as_mut() else { return };
+        let n = t.tour.steps.len() as i32;
+        let next = (t.step as i32 + dir).clamp(0, n - 1) as usize;
+        if next == t.step {
+            self.info(if dir > 0 {
+                "last step of the tour: Esc leaves"
+            } else {
+                "first step of the tour"
+            });
+            return;
+        }
+        t.step = next;
+        self.apply_step();
+    }
+
+    /// Leaves the tour; the scene and the charts stay as they are.
+    pub fn leave_tour(&mut self) {
+        if self.tour.take().is_some() {
+            if let Ok(s) = initial_scene(&self.preset) {
+                self.base = s;
+            }
+            self.info("left the tour (t starts it again)");
+        }
+    }
+
+    fn apply_step(&mut self) {
+        let Some(t) = &self.tour else { return };
+        let st = t.tour.steps[t.step].clone();
+        if st.source != self.source || st.preset != self.preset {
+            self.source = st.source.clone();
+            self.preset = st.preset.clone();
+            if !self.presets.iter().any(|e| e.source == st.source) {
+                self.presets.push(PresetEntry {
+                    source: st.source.clone(),
+                    place: "tour".into(),
+                });
+            }
+        }
+        // `r` goes back to the step's scene
+        self.base = st.scene.clone();
+        self.set_scene(st.scene);
+        self.charts = st.charts;
+        self.all_models = st.models;
+        self.focus = 0;
+        self.edit = None;
+        self.refresh();
     }
 
     /// Loads a preset by name or path; on error the current one stays and the error shows.
@@ -697,7 +1002,7 @@ impl App {
                 return;
             }
             Param::Pressure => {
-                let p = log_step(s.pressure, pick(PRESSURE_STEPS), dir);
+                let p = log_step_from(s.pressure, self.base.pressure, pick(PRESSURE_STEPS), dir);
                 s.pressure = p.clamp(PRESSURE_KEYS.0, PRESSURE_KEYS.1);
             }
             Param::Thickness => {
@@ -709,7 +1014,7 @@ impl App {
                         THICKNESS_KEYS.1
                     }
                 } else {
-                    let v = log_step(t, pick(THICKNESS_STEPS), dir);
+                    let v = log_step_from(t, self.base.thickness_qr, pick(THICKNESS_STEPS), dir);
                     if v > THICKNESS_KEYS.1 * (1.0 + 1e-9) {
                         f64::INFINITY
                     } else {
@@ -731,7 +1036,7 @@ impl App {
                         0.0
                     }
                 } else {
-                    let v = log_step(g, pick(GAMMA_STEPS), dir);
+                    let v = log_step_from(g, self.preset.adhesion.surface_energy_j_m2, pick(GAMMA_STEPS), dir);
                     if v < GAMMA_KEYS.0 * (1.0 - 1e-9) {
                         0.0
                     } else {
@@ -812,6 +1117,14 @@ impl App {
         self.set_scene(s);
         Ok(())
     }
+}
+
+/// Inserts into a reply map, forgetting everything when it grows past a few hundred entries.
+fn bounded_insert<V>(map: &mut HashMap<CacheKey, V>, key: CacheKey, v: V) {
+    if map.len() >= 256 {
+        map.clear();
+    }
+    map.insert(key, v);
 }
 
 /// The scene the explorer opens a preset with (γ_s per [`ADHESION_BY_DEFAULT`]).
@@ -925,6 +1238,93 @@ mod tests {
         assert!((a.scene.pressure / p0 - 10f64.powf(0.25)).abs() < 1e-12);
         key(&mut a, KeyCode::PageDown);
         assert_eq!(a.scene.pressure, p0);
+    }
+
+    #[test]
+    fn pressure_steps_return_to_the_presets_value() {
+        // system-2's p* = 0.005 is not on the 10^(k/20) grid: → → ← gave 0.004467
+        let p = Preset::resolve("system-2").unwrap();
+        let mut a = App::new("system-2", p).unwrap();
+        assert_eq!(a.scene.pressure, 0.005);
+        key(&mut a, KeyCode::Right);
+        key(&mut a, KeyCode::Right);
+        key(&mut a, KeyCode::Left);
+        key(&mut a, KeyCode::Left);
+        assert_eq!(a.scene.pressure, 0.005);
+        key(&mut a, KeyCode::Right);
+        assert!((a.scene.pressure / 0.005 - 10f64.powf(0.05)).abs() < 1e-12);
+        // the coarse grid contains the preset's value too
+        a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
+        assert_eq!(a.scene.pressure, 0.005);
+        a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
+        a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
+        assert_eq!(a.scene.pressure, 0.005);
+    }
+
+    #[test]
+    fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
+        let mut a = app();
+        super::super::worker::compute_now(&mut a, &mut Default::default());
+        assert!(a.sweep.as_ref().is_some_and(|s| s.is_ok()));
+        let key_now = point_key(&a.source, &a.scene);
+        a.on_reply(Reply::Point {
+            gen: a.gen,
+            key: key_now,
+            result: Err(Error::NotConverged {
+                solver: "adhesive fixed point".into(),
+                reason: "test".into(),
+            }),
+        });
+        assert!(a.sweep.as_ref().is_some_and(|s| s.is_ok()), "the load charts stay");
+        assert!(a.gap.is_some());
+        assert!(a.compute_error().unwrap().contains("did not converge"));
+    }
+
+    #[test]
+    fn the_gfmd_start_message_goes_when_the_run_ends() {
+        let mut a = app();
+        key(&mut a, KeyCode::Char('g'));
+        assert!(a.message.as_ref().unwrap().text.starts_with("GFMD started"));
+        let (id, _, _) = a.take_gfmd_request().unwrap();
+        a.on_reply(Reply::GfmdDone {
+            id,
+            result: Err(Error::Io("test".into())),
+        });
+        assert!(a.message.is_none());
+    }
+
+    #[test]
+    fn chart_selector_focus_and_models_ask_for_data() {
+        let mut a = app();
+        let _ = a.take_request();
+        key(&mut a, KeyCode::Char('v'));
+        assert_eq!(a.charts[0], ChartKind::PrLog);
+        key(&mut a, KeyCode::Char('f'));
+        key(&mut a, KeyCode::Char('v'));
+        assert_eq!(a.charts[1], ChartKind::AreaRatio);
+        for _ in 0..2 {
+            key(&mut a, KeyCode::Char('v'));
+        }
+        assert_eq!(a.charts[1], ChartKind::Stress);
+        key(&mut a, KeyCode::Char('f'));
+        key(&mut a, KeyCode::Char('v'));
+        key(&mut a, KeyCode::Char('v'));
+        key(&mut a, KeyCode::Char('v'));
+        key(&mut a, KeyCode::Char('v'));
+        key(&mut a, KeyCode::Char('v'));
+        assert_eq!(a.charts[2], ChartKind::Thickness);
+        let r = a.take_request().expect("a new chart asks for its data");
+        assert!(r.needs.thickness && r.needs.loads && r.needs.point);
+        assert!(r.models.is_empty());
+        key(&mut a, KeyCode::Char('M'));
+        let r = a.take_request().unwrap();
+        // models 1, 2, 4 besides the current model 3
+        let n: Vec<u8> = r.models.iter().filter_map(|m| m.number()).collect();
+        assert_eq!(n, [1, 2, 4]);
+        // only what is visible is asked for
+        a.set_charts([ChartKind::Pr, ChartKind::PrLog, ChartKind::Pr]);
+        let r = a.take_request().unwrap();
+        assert!(r.needs.point && !r.needs.loads && !r.needs.thickness);
     }
 
     #[test]
@@ -1044,7 +1444,7 @@ mod tests {
         assert_eq!(a.preset.name, "system-2");
         assert_eq!(a.overlay, Overlay::None);
         key(&mut a, KeyCode::Char('a'));
-        assert_eq!(a.area_mode, AreaMode::Ratio);
+        assert_eq!(a.charts[1], ChartKind::AreaRatio);
         assert!(!a.quit);
         key(&mut a, KeyCode::Esc);
         assert!(a.quit);

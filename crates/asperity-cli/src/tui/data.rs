@@ -33,7 +33,7 @@ pub fn extra_readouts(ev: &Evaluation) -> Vec<(String, String)> {
     }
     let mut v = vec![
         ("σ_a*".into(), format!("{:.4}", ev.sigma_a)),
-        ("tensile".into(), format!("{:.3e}", ev.tensile_area)),
+        ("tensile".into(), super::view::sig(ev.tensile_area, 3)),
         ("residual".into(), format!("{:.1e}", ev.residual)),
     ];
     if let Some(u) = ev.unloading_a_r {
@@ -64,6 +64,16 @@ pub struct PointData {
     pub adhesionless: Option<Vec<(f64, f64)>>,
     /// See [`extra_readouts`].
     pub extra: Vec<(String, String)>,
+    /// Width Δ* of the stress distribution (adhesionless: the mirror Gaussian's).
+    pub width: f64,
+    /// p* of the evaluation.
+    pub pressure: f64,
+    /// Adhesionless only: Pr(σ*) of the mirror Gaussian [S-22] on a log-spaced σ* grid (for
+    /// the log–log chart, whose small-stress end a linear grid does not reach).
+    pub pr_log: Vec<(f64, f64)>,
+    /// Why this value carries no error bar, when the engine's full check failed but the fixed
+    /// point itself converged (shown in the status line, not as an error).
+    pub warning: Option<String>,
 }
 
 impl PointData {
@@ -79,8 +89,54 @@ impl PointData {
             wall: wall_marker(ev),
             adhesionless: None,
             extra: extra_readouts(ev),
+            width: ev.width,
+            pressure: f64::NAN,
+            pr_log: Vec::new(),
+            warning: None,
         }
     }
+
+    /// Like [`PointData::from_evaluation`] at load `p` (fills the log-grid Pr of the
+    /// adhesionless case).
+    pub fn at(ev: &Evaluation, p: f64) -> PointData {
+        let mut pd = PointData::from_evaluation(ev);
+        pd.pressure = p;
+        if ev.branch == "adhesionless" && ev.width > 0.0 {
+            let top = ev.stats.pr.sigma.last().copied().unwrap_or(p + 5.0 * ev.width);
+            pd.pr_log = log_grid(PR_LOG_FROM, top, PR_LOG_POINTS)
+                .into_iter()
+                .map(|s| (s, asperity::theory::mirror::density(s, p, ev.width)))
+                .collect();
+        }
+        pd
+    }
+}
+
+/// Smallest σ* of the log–log Pr chart (\[S\] Fig. 3 reaches 10⁻³).
+pub const PR_LOG_FROM: f64 = 1e-4;
+/// Points of the log-spaced Pr(σ*).
+pub const PR_LOG_POINTS: usize = 161;
+
+/// `n` log-spaced values from `a` to `b` (both > 0).
+pub fn log_grid(a: f64, b: f64, n: usize) -> Vec<f64> {
+    let n = n.max(2);
+    let (la, lb) = (a.ln(), b.max(a * 1.0001).ln());
+    (0..n)
+        .map(|i| (la + (lb - la) * i as f64 / (n - 1) as f64).exp())
+        .collect()
+}
+
+/// a_r against t·q_r at one p* (\[S\] Fig. 7): the thickness chart.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ThicknessData {
+    /// t·q_r (log-spaced).
+    pub t: Vec<f64>,
+    /// a_r(t) of the scene (NaN where the solver failed).
+    pub a_r: Vec<f64>,
+    /// a_r of the semi-infinite body (t = ∞).
+    pub a_r_inf: f64,
+    /// a_r(t) without adhesion (the reference curve of Fig. 7), when γ_s > 0.
+    pub adhesionless: Option<Vec<f64>>,
 }
 
 /// Pr(σ*) of an evaluation as chart points.
@@ -99,6 +155,8 @@ pub struct SweepData {
     pub gap_rel: Vec<f64>,
     /// σ̄_c*(p*).
     pub mean_contact_stress: Vec<f64>,
+    /// Whether each load converged.
+    pub converged: Vec<bool>,
 }
 
 impl SweepData {
@@ -109,6 +167,7 @@ impl SweepData {
             a_r: s.rows.iter().map(|r| r.a_r).collect(),
             gap_rel: s.rows.iter().map(|r| r.mean_gap_rel).collect(),
             mean_contact_stress: s.rows.iter().map(|r| r.mean_contact_stress).collect(),
+            converged: s.rows.iter().map(|r| r.converged).collect(),
         }
     }
 }

@@ -37,6 +37,37 @@ pub fn scene_preset(base: &Preset, scene: &Scene) -> Preset {
     p
 }
 
+/// A CSV cell: empty where the value is unavailable (as `asperity sweep` writes it).
+pub fn cell(x: f64) -> String {
+    if x.is_finite() {
+        format!("{x:e}")
+    } else {
+        String::new()
+    }
+}
+
+/// `# key: value` lines describing the scene, for the top of every exported CSV.
+pub fn scene_comment(app: &App, name: &str) -> String {
+    let s = &app.scene;
+    let t = if s.thickness_qr.is_infinite() {
+        "inf".to_string()
+    } else {
+        format!("{}", s.thickness_qr)
+    };
+    format!(
+        "# asperity explorer export {name}\n# preset: {} ({})\n# model: {}\n# pressure: {}\n# thickness_qr: {t}\n\
+         # gamma_j_m2: {}\n# range_m: {}\n# reduced units: stresses by E*g = {} Pa, gap by h_rms = {} m\n",
+        app.preset.name,
+        app.source,
+        s.model.label(),
+        s.pressure,
+        s.gamma,
+        s.range,
+        s.stress_unit(),
+        s.spectrum.rms_height()
+    )
+}
+
 fn write(path: &Path, text: &str) -> Result<()> {
     std::fs::write(path, text).map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))
 }
@@ -62,7 +93,8 @@ pub fn export(app: &App) -> Result<Vec<String>> {
     let stem = format!("asperity-{name}-{n}");
     let mut paths = Vec::new();
 
-    let preset = scene_preset(&app.preset, &app.scene);
+    let mut preset = scene_preset(&app.preset, &app.scene);
+    preset.name = stem.clone();
     let toml_text = toml::to_string(&preset).map_err(|e| Error::Io(format!("cannot serialise the scene: {e}")))?;
     let header =
         format!("# Scene exported by the asperity explorer; open it with `asperity tui --preset {stem}.toml`.\n");
@@ -71,21 +103,27 @@ pub fn export(app: &App) -> Result<Vec<String>> {
     paths.push(path.display().to_string());
 
     if let Some(Ok(pt)) = &app.point {
-        let mut t = String::from("sigma,density\n");
+        let mut t = scene_comment(app, &stem);
+        t.push_str("sigma,density\n");
         for (s, d) in &pt.pr {
-            let _ = writeln!(t, "{s:e},{d:e}");
+            let _ = writeln!(t, "{},{}", cell(*s), cell(*d));
         }
         let path = dir.join(format!("{stem}-pr.csv"));
         write(&path, &t)?;
         paths.push(path.display().to_string());
     }
     if let Some(Ok(sw)) = &app.sweep {
-        let mut t = String::from("p,a_r,mean_gap_rel,mean_contact_stress\n");
+        let mut t = scene_comment(app, &stem);
+        t.push_str("p,a_r,mean_gap_rel,mean_contact_stress,converged\n");
         for i in 0..sw.p.len() {
             let _ = writeln!(
                 t,
-                "{:e},{:e},{:e},{:e}",
-                sw.p[i], sw.a_r[i], sw.gap_rel[i], sw.mean_contact_stress[i]
+                "{},{},{},{},{}",
+                cell(sw.p[i]),
+                cell(sw.a_r[i]),
+                cell(sw.gap_rel[i]),
+                cell(sw.mean_contact_stress[i]),
+                sw.converged.get(i).copied().unwrap_or(false)
             );
         }
         let path = dir.join(format!("{stem}-loads.csv"));
@@ -93,6 +131,11 @@ pub fn export(app: &App) -> Result<Vec<String>> {
         paths.push(path.display().to_string());
     }
     Ok(paths)
+}
+
+/// `s`: writes the visible charts as SVG and PNG next to the CSV export; returns the paths.
+pub fn export_charts(_app: &App) -> Result<Vec<String>> {
+    Err(Error::Unsupported("chart export needs the chart renderer".into()))
 }
 
 #[cfg(test)]
@@ -111,11 +154,30 @@ mod tests {
         let second = export(&app).unwrap();
         assert!(second[0].ends_with("asperity-system-1-2.toml"), "{second:?}");
         let csv = std::fs::read_to_string(&first[2]).unwrap();
-        assert!(csv.starts_with("p,a_r,mean_gap_rel"));
-        assert_eq!(csv.lines().count(), 1 + crate::tui::worker::SWEEP_POINTS);
+        // scene metadata as comments, then the columns of `sweep` (empty cells, converged)
+        assert!(
+            csv.starts_with("# asperity explorer export asperity-system-1-1\n# preset: system-1"),
+            "{csv}"
+        );
+        assert!(csv.contains("# pressure: 0.01\n"), "{csv}");
+        let rows: Vec<&str> = csv.lines().filter(|l| !l.starts_with('#')).collect();
+        assert_eq!(rows[0], "p,a_r,mean_gap_rel,mean_contact_stress,converged");
+        assert_eq!(rows.len(), 1 + crate::tui::worker::SWEEP_POINTS);
+        assert!(rows[1].ends_with(",true"), "{}", rows[1]);
+        assert!(!csv.contains("NaN") && !csv.contains("0.000e0"));
         let back = Preset::load(std::path::Path::new(&first[0])).unwrap();
         assert_eq!(crate::tui::app::initial_scene(&back).unwrap(), app.scene);
+        // the exported scene is named after its file, not the stock preset
+        assert_eq!(back.name, "asperity-system-1-1");
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn unavailable_values_are_empty_cells() {
+        assert_eq!(cell(f64::NAN), "");
+        assert_eq!(cell(f64::INFINITY), "");
+        assert_eq!(cell(0.0), "0e0");
+        assert_eq!(cell(0.25), "2.5e-1");
     }
 
     #[test]

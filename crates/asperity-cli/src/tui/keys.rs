@@ -34,6 +34,16 @@ pub enum Action {
     Compare,
     /// Start a GFMD run of the current scene in the background, or cancel the running one.
     Gfmd,
+    /// Cycle the chart of the focused panel.
+    Chart,
+    /// Move the focus to the next chart panel.
+    Focus,
+    /// Overlay all models on the charts.
+    Models,
+    /// Start (or leave) the teaching tour.
+    Tour,
+    /// Save the visible charts as SVG and PNG.
+    Save,
     /// Open or close this help.
     Help,
     /// Quit.
@@ -145,7 +155,7 @@ pub const TABLE: &[Binding] = &[
         keys: &[Key(KeyCode::Char('a'), NONE)],
         label: "a",
         action: Action::AreaMode,
-        help: "area chart: log a_r / a_r/p*",
+        help: "area charts: log a_r / a_r/p*",
     },
     Binding {
         keys: &[Key(KeyCode::Char('c'), NONE)],
@@ -158,6 +168,36 @@ pub const TABLE: &[Binding] = &[
         label: "g",
         action: Action::Gfmd,
         help: "GFMD of this scene (background; g again cancels)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('v'), NONE)],
+        label: "v",
+        action: Action::Chart,
+        help: "next chart in the focused panel (f moves the focus)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('f'), NONE)],
+        label: "f",
+        action: Action::Focus,
+        help: "focus the next chart panel",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('M'), NONE)],
+        label: "M",
+        action: Action::Models,
+        help: "overlay all models (1-4, custom) on the charts",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('t'), NONE)],
+        label: "t",
+        action: Action::Tour,
+        help: "teaching tour: ←→ steps, h l knobs, Esc leaves",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('s'), NONE)],
+        label: "s",
+        action: Action::Save,
+        help: "save the visible charts as SVG and PNG here",
     },
     Binding {
         keys: &[Key(KeyCode::Char('?'), NONE), Key(KeyCode::F(1), NONE)],

@@ -4,8 +4,10 @@
 //! - [`keys`]: the key table, used both for dispatch and for the `?` help.
 //! - [`worker`]: the compute thread (generations, cancellation, caches).
 //! - [`data`]: the only code that reads engine results (the adhesion merge point).
+//! - [`charts`]: the charts of the selector as plain data (drawn by [`view`], saved by `s`).
 //! - [`view`]: rendering; [`plot`]: the chart workarounds (log axes, NaN, labels, bounds).
-//! - [`export`]: `e` writes CSV + TOML.
+//! - [`tour`]: teaching tours (TOML files in `tours/`), walked with `t` or `asperity tour`.
+//! - [`export`]: `e` writes CSV + TOML, `s` the visible charts as SVG + PNG.
 //!
 //! The event loop blocks on one channel that carries key/resize events (from an input
 //! thread) and worker replies; it redraws after each batch of messages, and ticks (for the
@@ -19,10 +21,12 @@
 //! the first frame showing the current point and to the frame showing every chart.
 
 pub mod app;
+pub mod charts;
 pub mod data;
 pub mod export;
 pub mod keys;
 pub mod plot;
+pub mod tour;
 pub mod view;
 pub mod worker;
 
@@ -40,7 +44,7 @@ const TICK: Duration = Duration::from_millis(100);
 
 enum Msg {
     Input(Event),
-    Reply(Reply),
+    Reply(Box<Reply>),
     InputClosed,
 }
 
@@ -97,13 +101,17 @@ impl Trace {
 
 /// Opens the explorer on `preset` (resolved from `source`) and runs until the user quits.
 pub fn run(source: &str, preset: Preset) -> Result<()> {
-    let mut app = App::new(source, preset)?;
+    run_app(App::new(source, preset)?)
+}
+
+/// Runs the explorer on a prepared [`App`] (a scene from flags, a tour) until the user quits.
+pub fn run_app(mut app: App) -> Result<()> {
     app.color = use_color();
     let (tx, rx) = channel::<Msg>();
     let reply_tx = tx.clone();
     let reply_tx_for_gfmd = tx.clone();
     let worker = Worker::spawn(move |r| {
-        let _ = reply_tx.send(Msg::Reply(r));
+        let _ = reply_tx.send(Msg::Reply(Box::new(r)));
     })
     .map_err(|e| Error::Io(format!("cannot start the worker thread: {e}")))?;
 
@@ -141,7 +149,7 @@ pub fn run(source: &str, preset: Preset) -> Result<()> {
         if let Some((id, setup, cancel)) = app.take_gfmd_request() {
             let tx = gfmd_tx.clone();
             worker::spawn_gfmd(id, setup, cancel, move |r| {
-                let _ = tx.send(Msg::Reply(r));
+                let _ = tx.send(Msg::Reply(Box::new(r)));
             })
             .map_err(|e| Error::Io(format!("cannot start the GFMD thread: {e}")))?;
         }
@@ -185,7 +193,7 @@ pub fn run(source: &str, preset: Preset) -> Result<()> {
                     }
                 }
                 Msg::Input(_) => {}
-                Msg::Reply(r) => app.on_reply(r),
+                Msg::Reply(r) => app.on_reply(*r),
                 Msg::InputClosed => return Ok(()),
             }
             if app.quit {

@@ -182,6 +182,71 @@ pub fn axis_labels(b: [f64; 2], scale: Scale, three: bool) -> Vec<String> {
     pts.into_iter().map(|v| format_number(scale.inverse(v))).collect()
 }
 
+/// A 1–2–2.5–5 × 10^k step not smaller than `x` (> 0).
+pub fn nice_step(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let e = 10f64.powf(x.log10().floor());
+    for m in [1.0, 2.0, 2.5, 5.0, 10.0] {
+        if m * e >= x * (1.0 - 1e-12) {
+            return m * e;
+        }
+    }
+    10.0 * e
+}
+
+/// Round axis bounds and their labels (in data units) for plane bounds `b`:
+///
+/// - linear: multiples of a [`nice_step`]; with `three`, exactly two steps apart so the middle
+///   label is round too;
+/// - log10: whole decades; with `three`, an even number of decades (else two labels), so
+///   every label is a power of ten.
+///
+/// The returned bounds always contain `b`.
+pub fn ticks(b: [f64; 2], scale: Scale, three: bool) -> ([f64; 2], Vec<String>) {
+    let [lo, hi] = guard(b[0], b[1]);
+    match scale {
+        Scale::Log10 => {
+            let l = (lo + 1e-9).floor();
+            let mut h = (hi - 1e-9).ceil();
+            if h <= l {
+                h = l + 1.0;
+            }
+            let n = (h - l).round() as i64;
+            let labels = if three && n % 2 == 0 {
+                vec![l, 0.5 * (l + h), h]
+            } else {
+                vec![l, h]
+            };
+            (
+                [l, h],
+                labels.into_iter().map(|v| format_number(10f64.powf(v))).collect(),
+            )
+        }
+        Scale::Linear => {
+            // two labels: a finer step, so the bounds stay close to the data
+            let parts = if three { 2.0 } else { 5.0 };
+            let mut step = nice_step((hi - lo) / parts);
+            loop {
+                let l = (lo / step + 1e-9).floor() * step;
+                let h = if three {
+                    l + 2.0 * step
+                } else {
+                    (hi / step - 1e-9).ceil() * step
+                };
+                if h >= hi - 1e-9 * step || !step.is_finite() {
+                    let clean = |v: f64| if v.abs() < 1e-9 * step { 0.0 } else { v };
+                    let (l, h) = (clean(l), clean(h));
+                    let labels = if three { vec![l, l + step, h] } else { vec![l, h] };
+                    return ([l, h], labels.into_iter().map(|v| format_number(clean(v))).collect());
+                }
+                step = nice_step(step * 1.0001);
+            }
+        }
+    }
+}
+
 /// A vertical line at plane x = `x` across plane bounds `y`, as a two-point run.
 pub fn vertical(x: f64, y: [f64; 2]) -> Vec<(f64, f64)> {
     if x.is_finite() && y[0].is_finite() && y[1].is_finite() {
@@ -281,5 +346,31 @@ mod tests {
     fn vertical_marker() {
         assert_eq!(vertical(1.0, [0.0, 2.0]), vec![(1.0, 0.0), (1.0, 2.0)]);
         assert!(vertical(f64::NAN, [0.0, 2.0]).is_empty());
+    }
+
+    #[test]
+    fn ticks_are_round() {
+        let (b, l) = ticks([0.0, 0.87], Scale::Linear, true);
+        assert_eq!(b, [0.0, 1.0]);
+        assert_eq!(l, vec!["0", "0.5", "1"]);
+        let (b, l) = ticks([-0.13, 0.61], Scale::Linear, true);
+        assert!(b[0] <= -0.13 && b[1] >= 0.61, "{b:?}");
+        assert_eq!(l, vec!["-1", "0", "1"]);
+        let (b, l) = ticks([0.012, 0.0337], Scale::Linear, false);
+        assert!(b[0] <= 0.012 && b[1] >= 0.0337, "{b:?} {l:?}");
+        assert!(l.iter().all(|s| s.len() <= 5), "{l:?}");
+        // log: whole decades, three labels only on an even count
+        let (b, l) = ticks([-2.7, -0.2], Scale::Log10, true);
+        assert_eq!(b, [-3.0, 0.0]);
+        assert_eq!(l, vec!["1e-3", "1"]);
+        let (b, l) = ticks([-3.5, -0.2], Scale::Log10, true);
+        assert_eq!(b, [-4.0, 0.0]);
+        assert_eq!(l, vec!["1e-4", "0.01", "1"]);
+        assert_eq!(nice_step(0.3), 0.5);
+        assert_eq!(nice_step(0.02), 0.02);
+        assert_eq!(nice_step(0.021), 0.025);
+        // degenerate input stays drawable
+        let (b, _) = ticks([1.0, 1.0], Scale::Linear, true);
+        assert!(b[1] > b[0]);
     }
 }

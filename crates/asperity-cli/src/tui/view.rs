@@ -2,9 +2,10 @@
 //! ū(p*)) and a status bar; the help and preset overlays; a "terminal too small" screen.
 //! Pure function of the [`App`]; every chart goes through [`super::plot`].
 
-use super::app::{App, AreaMode, GfmdState, Overlay, Param};
+use super::app::{App, GfmdState, Overlay, Param};
+use super::charts::{self, ChartModel, Draw, Role, Series};
 use super::keys;
-use super::plot::{self, Scale};
+use super::plot;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
@@ -66,6 +67,10 @@ impl Palette {
     pub fn error(&self) -> Style {
         self.fg(213, 94, 0).add_modifier(Modifier::BOLD)
     }
+    /// Plain text (the reference points).
+    pub fn text(&self) -> Style {
+        Style::default()
+    }
     /// Dim text.
     pub fn dim(&self) -> Style {
         if self.color {
@@ -85,21 +90,43 @@ pub fn draw(f: &mut Frame, app: &App) {
         return;
     }
     let status_line = status_line(app, pal);
-    // messages may take two rows; the key hint is cut instead
-    let is_hint = app.edit.is_none() && app.message.is_none() && app.compute_error().is_none();
-    let status_rows = if !is_hint && status_line.width() > area.width as usize {
-        2
-    } else {
+    // messages wrap onto up to STATUS_ROWS rows; the key hint is cut instead
+    let is_hint =
+        app.edit.is_none() && app.message.is_none() && app.compute_error().is_none() && app.compute_warning().is_none();
+    let status_rows = if is_hint {
         1
+    } else {
+        wrapped_rows(status_line.width(), area.width).clamp(1, STATUS_ROWS)
     };
-    let [title, body, status] = Layout::vertical([
+    let caption = caption_lines(app, pal);
+    let caption_rows = if caption.is_empty() {
+        0
+    } else {
+        let w = area.width.saturating_sub(2);
+        let rows: u16 = caption.iter().map(|l| wrapped_rows(l.width(), w)).sum();
+        (rows + 2).min(area.height / 3)
+    };
+    let [title, body, cap, status] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Fill(1),
+        Constraint::Length(caption_rows),
         Constraint::Length(status_rows),
     ])
     .areas(area);
     draw_title(f, title, app, pal);
     f.render_widget(Paragraph::new(status_line).wrap(Wrap { trim: false }), status);
+    if caption_rows > 0 {
+        let t = app
+            .tour
+            .as_ref()
+            .map(|t| format!(" tour {}/{} ", t.step + 1, t.tour.steps.len()));
+        f.render_widget(
+            Paragraph::new(caption)
+                .wrap(Wrap { trim: true })
+                .block(Block::bordered().title(t.unwrap_or_default())),
+            cap,
+        );
+    }
     let panel_w = match area.width {
         120.. => 34,
         80.. => 28,
@@ -109,14 +136,36 @@ pub fn draw(f: &mut Frame, app: &App) {
     draw_panel(f, panel, app, pal);
     let [top, bottom] = Layout::vertical([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(charts);
     let [left, right] = Layout::horizontal([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(bottom);
-    draw_pr(f, top, app, pal);
-    draw_area(f, left, app, pal);
-    draw_gap(f, right, app, pal);
+    for (i, r) in [top, left, right].into_iter().enumerate() {
+        let m = charts::build(app, app.charts[i]);
+        render_model(f, r, &m, pal, i == app.focus);
+    }
     match app.overlay {
         Overlay::Help => draw_help(f, area, pal),
         Overlay::Presets(cursor) => draw_picker(f, area, app, cursor, pal),
         Overlay::None => {}
     }
+}
+
+/// Most rows a status message may take (long engine messages wrap instead of being cut).
+pub const STATUS_ROWS: u16 = 4;
+
+/// Rows a text of `width` columns takes when wrapped at `cols`.
+fn wrapped_rows(width: usize, cols: u16) -> u16 {
+    let cols = usize::from(cols.max(1));
+    width.div_ceil(cols).max(1) as u16
+}
+
+/// The tour's caption box: the step's title, then its caption.
+fn caption_lines(app: &App, pal: Palette) -> Vec<Line<'static>> {
+    let Some(t) = &app.tour else { return Vec::new() };
+    let st = &t.tour.steps[t.step];
+    let mut v = vec![Line::from(vec![
+        Span::styled(st.title.clone(), Style::default().add_modifier(Modifier::BOLD)),
+        Span::styled("  ←→ steps · h l knobs · Esc leaves", pal.dim()),
+    ])];
+    v.extend(st.caption.iter().map(|c| Line::from(c.clone())));
+    v
 }
 
 fn too_small(f: &mut Frame, area: Rect) {
@@ -164,9 +213,17 @@ fn status_line(app: &App, pal: Palette) -> Line<'static> {
         ))
     } else if let Some(e) = app.compute_error() {
         Line::from(Span::styled(format!(" {e}"), pal.error()))
+    } else if let Some(w) = app.compute_warning() {
+        Line::from(Span::raw(format!(" {w}")))
+    } else if app.tour.is_some() {
+        Line::from(Span::styled(
+            " ←→ step  h l change  ↑↓ pick  v chart  f focus  M models  s save  Esc leaves tour",
+            pal.dim(),
+        ))
     } else {
         Line::from(Span::styled(
-            " ↑↓ pick  ←→ change  0-9 type  m model  p preset  a area  e export  r reset",
+            " ↑↓ pick  ←→ change  m model  v chart  f focus  M models  t tour  g GFMD  c compare  a area  \
+             e export  s save  p preset  r reset",
             pal.dim(),
         ))
     }
@@ -238,25 +295,51 @@ fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     lines.push(Line::from(Span::styled("─ results ─", pal.dim())));
     let pt = app.point.as_ref().and_then(|r| r.as_ref().ok());
     let dash = || "–".to_string();
-    let mut row = |k: &str, v: String| lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
-    row("a_r", pt.map_or_else(dash, |p| sig(p.a_r, 4)));
-    row("σ̄_c*", pt.map_or_else(dash, |p| sig(p.mean_contact_stress, 4)));
+    // values of an earlier scene stay while the new one computes: dimmed and marked ⋯
+    let stale_point = app.point_is_stale() && pt.is_some();
+    let stale_gap = app.gap_is_stale();
+    let mut row_styled = |k: &str, v: String, stale: bool| {
+        if stale {
+            lines.push(Line::from(Span::styled(format!(" {}{v} ⋯", pad(k, 9)), pal.dim())));
+        } else {
+            lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
+        }
+    };
+    row_styled("a_r", pt.map_or_else(dash, |p| sig(p.a_r, 4)), stale_point);
+    row_styled(
+        "σ̄_c*",
+        pt.map_or_else(dash, |p| sig(p.mean_contact_stress, 4)),
+        stale_point,
+    );
     let gap = match &app.gap {
-        Some(Ok(g)) if pt.is_some() => sig(*g, 4),
+        Some(Ok(g)) => sig(*g, 4),
         _ => dash(),
     };
-    row("ū/h_rms", gap);
-    row("γ̃_glo", sig(app.scene.gamma_glo(), 3));
-    row(
-        "state",
-        pt.map_or_else(|| if app.busy { "…".into() } else { dash() }, |p| p.branch.clone()),
-    );
+    row_styled("ū/h_rms", gap, stale_gap && app.gap.is_some());
+    row_styled("γ̃_glo", sig(app.scene.gamma_glo(), 3), false);
+    let state = match &app.point {
+        _ if stale_point || (app.busy && app.point.is_none()) => "computing…".to_string(),
+        Some(Ok(p)) => p.branch.clone(),
+        Some(Err(_)) => "failed (see below)".into(),
+        None => dash(),
+    };
+    row_styled("state", state, false);
     if let Some(p) = pt {
         for (k, v) in &p.extra {
-            row(k, v.clone());
+            row_styled(k, v.clone(), stale_point);
         }
     }
-    row("err a_r", pt.map_or_else(dash, |p| format!("{:.1e}", p.error_estimate)));
+    let mut row = |k: &str, v: String| lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
+    row(
+        "err a_r",
+        pt.map_or_else(dash, |p| {
+            if p.error_estimate.is_finite() {
+                format!("{:.1e}", p.error_estimate)
+            } else {
+                dash()
+            }
+        }),
+    );
     match &app.gfmd {
         GfmdState::Idle => {}
         GfmdState::Running {
@@ -328,8 +411,29 @@ pub fn si(x: f64, unit: &str) -> String {
         (1e-12, "p"),
     ];
     let a = x.abs();
-    let (f, p) = PREFIXES.iter().find(|(f, _)| a >= *f).copied().unwrap_or((1e-12, "p"));
-    format!("{} {p}{unit}", sig(x / f, 4))
+    // a pressure below 1 Pa is written without prefix: "mPa" beside "MPa" misleads
+    let smallest = if unit == "Pa" { 1.0 } else { 1e-12 };
+    let (f, p) = PREFIXES
+        .iter()
+        .find(|(f, _)| a >= *f && *f >= smallest)
+        .copied()
+        .unwrap_or((smallest, if unit == "Pa" { "" } else { "p" }));
+    let v = x / f;
+    let text = if (1e-3..1e4).contains(&v.abs()) {
+        trim_zeros(&sig(v, 4))
+    } else {
+        sig(v, 3)
+    };
+    format!("{text} {p}{unit}")
+}
+
+/// "250.0" → "250", "0.7770" → "0.777" (numbers without an exponent only).
+fn trim_zeros(s: &str) -> String {
+    if s.contains('.') && !s.contains('e') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s.to_string()
+    }
 }
 
 /// `s` padded with spaces to `w` display columns (combining accents take none).
@@ -348,29 +452,60 @@ fn format_time(s: f64) -> String {
     }
 }
 
-/// A drawable curve (owned points in plane coordinates).
-struct Curve {
-    points: Vec<(f64, f64)>,
-    style: Style,
-    marker: Marker,
-    graph: GraphType,
+/// Colour of model slot `i` (Okabe–Ito: orange, bluish green, blue, vermillion, reddish
+/// purple for models 1–4 and custom).
+fn model_style(pal: Palette, i: usize) -> Style {
+    match i {
+        0 => pal.reference(),
+        1 => pal.compare(),
+        2 => pal.theory(),
+        3 => pal.current(),
+        _ => pal.wall(),
+    }
 }
 
-/// Adds `data` (data coordinates) as one curve per drawable run.
-fn add_runs(
-    out: &mut Vec<Curve>,
-    data: &[(f64, f64)],
-    (xs, ys): (Scale, Scale),
-    max_points: usize,
-    (style, marker, graph): (Style, Marker, GraphType),
-) {
-    for run in plot::segments(data, xs, ys) {
-        out.push(Curve {
-            points: plot::decimate(&run, max_points),
-            style,
-            marker,
-            graph,
-        });
+/// Marker of model slot `i`: told apart without colour too.
+const MODEL_MARKERS: [Marker; 5] = [
+    Marker::Dot,
+    Marker::Bar,
+    Marker::Braille,
+    Marker::Block,
+    Marker::HalfBlock,
+];
+
+/// The legend symbol of a marker.
+fn marker_symbol(m: Marker) -> &'static str {
+    match m {
+        Marker::Dot => "•",
+        Marker::Bar => "▄",
+        Marker::Block => "█",
+        Marker::HalfBlock => "▀",
+        _ => "⣿",
+    }
+}
+
+/// Style, marker and graph type of a series role.
+fn look(pal: Palette, role: Role, draw: Draw) -> (Style, Marker, GraphType) {
+    let graph = if draw == Draw::Points {
+        GraphType::Scatter
+    } else {
+        GraphType::Line
+    };
+    match role {
+        Role::Theory => (pal.theory(), Marker::Braille, graph),
+        Role::Model(i) => (model_style(pal, i), MODEL_MARKERS[i.min(4)], graph),
+        Role::Compare => (pal.compare(), Marker::Dot, graph),
+        Role::Closed => (pal.reference(), Marker::Dot, graph),
+        Role::Closed2 => (pal.guide(), Marker::Dot, graph),
+        Role::Reference => (
+            pal.text().add_modifier(Modifier::BOLD),
+            Marker::Block,
+            GraphType::Scatter,
+        ),
+        Role::Gfmd => (pal.gfmd(), Marker::HalfBlock, GraphType::Scatter),
+        Role::Current => (pal.current(), Marker::Block, GraphType::Scatter),
+        Role::Guide => (pal.guide(), Marker::Braille, GraphType::Line),
+        Role::Wall => (pal.wall(), Marker::Bar, GraphType::Line),
     }
 }
 
@@ -379,366 +514,113 @@ fn legend(sym: &str, name: &str, style: Style) -> Vec<Span<'static>> {
     vec![Span::styled(sym.to_string(), style), Span::raw(format!(" {name} "))]
 }
 
-#[allow(clippy::too_many_arguments)]
-fn render_chart(
-    f: &mut Frame,
-    area: Rect,
-    title: Vec<Span<'static>>,
-    key: Vec<Span<'static>>,
-    curves: &[Curve],
-    xb: [f64; 2],
-    yb: [f64; 2],
-    xs: Scale,
-    ys: Scale,
-    empty: Option<String>,
-) {
-    let mut block = Block::bordered().title(Line::from(title));
-    if !key.is_empty() {
-        block = block.title_bottom(Line::from(key));
+/// Plane points of a series, split at gaps, y outside `yb` dropped when clipping, decimated.
+fn runs_of(m: &ChartModel, s: &Series, yb: [f64; 2], max_points: usize) -> Vec<Vec<(f64, f64)>> {
+    let pts: Vec<(f64, f64)> = if m.clip_y {
+        s.points
+            .iter()
+            .map(|&(x, y)| match m.ys.forward(y) {
+                Some(v) if v >= yb[0] && v <= yb[1] => (x, y),
+                _ => (x, f64::NAN),
+            })
+            .collect()
+    } else {
+        s.points.clone()
+    };
+    plot::segments(&pts, m.xs, m.ys)
+        .into_iter()
+        .map(|r| plot::decimate(&r, max_points))
+        .collect()
+}
+
+/// One drawable run: plane points, style, marker, graph type.
+type Drawn = (Vec<(f64, f64)>, Style, Marker, GraphType);
+
+/// Draws one chart model into `area`; `focused` highlights the panel the selector changes.
+pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, focused: bool) {
+    let mark = if focused { "▸" } else { "" };
+    let mut title = vec![Span::raw(format!(" {mark}{} ", m.title))];
+    if m.stale {
+        title.push(Span::styled("⋯ updating ", pal.dim()));
     }
-    if let Some(msg) = empty {
+    let mut block = Block::bordered().title(Line::from(title));
+    if focused {
+        block = block.border_style(Style::default().add_modifier(Modifier::BOLD));
+    }
+    if let Some(msg) = &m.empty {
         let inner = block.inner(area);
         f.render_widget(block, area);
         if inner.height > 0 {
             let y = inner.y + inner.height / 2;
-            let msg = if msg.chars().count() > inner.width as usize {
-                "no data".to_string()
-            } else {
-                msg
-            };
-            f.render_widget(Paragraph::new(msg).centered(), Rect::new(inner.x, y, inner.width, 1));
+            let h = (inner.y + inner.height - y).min(3);
+            f.render_widget(
+                Paragraph::new(msg.clone()).centered().wrap(Wrap { trim: true }),
+                Rect::new(inner.x, y.saturating_sub(h / 2), inner.width, h),
+            );
         }
         return;
     }
-    let datasets: Vec<Dataset> = curves
+    let three_x = area.width >= 36;
+    let three_y = area.height >= 12;
+    let (xb, xl) = plot::ticks(m.xb, m.xs, three_x);
+    let (yb, yl) = plot::ticks(m.yb, m.ys, three_y);
+    let max_points = 4 * area.width as usize;
+    let mut drawn: Vec<Drawn> = Vec::new();
+    let mut key: Vec<Span<'static>> = Vec::new();
+    for v in &m.vlines {
+        let (style, marker, graph) = look(pal, v.role, Draw::Line);
+        if let Some(x) = m.xs.forward(v.x) {
+            drawn.push((plot::vertical(x, yb), style, marker, graph));
+            if !v.name.is_empty() {
+                key.extend(legend(marker_symbol(marker), &v.name, style));
+            }
+        }
+    }
+    for s in &m.series {
+        let (style, marker, graph) = look(pal, s.role, s.draw);
+        let runs = runs_of(m, s, yb, max_points);
+        if runs.is_empty() {
+            continue;
+        }
+        for r in runs {
+            drawn.push((r, style, marker, graph));
+        }
+        key.extend(legend(marker_symbol(marker), &s.name, style));
+    }
+    if !key.is_empty() {
+        block = block.title_bottom(Line::from(key));
+    }
+    let datasets: Vec<Dataset> = drawn
         .iter()
-        .map(|c| {
+        .map(|(pts, style, marker, graph)| {
             Dataset::default()
-                .data(&c.points)
-                .style(c.style)
-                .marker(c.marker)
-                .graph_type(c.graph)
+                .data(pts)
+                .style(*style)
+                .marker(*marker)
+                .graph_type(*graph)
         })
         .collect();
-    let three_x = area.width >= 36;
     let chart = Chart::new(datasets)
         .block(block)
-        .x_axis(Axis::default().bounds(xb).labels(plot::axis_labels(xb, xs, three_x)))
+        .x_axis(
+            Axis::default()
+                .title(Span::styled(m.x_label.clone(), pal.dim()))
+                .bounds(xb)
+                .labels(xl),
+        )
         .y_axis(
             Axis::default()
+                .title(Span::styled(m.y_label.clone(), pal.dim()))
                 .bounds(yb)
-                .labels(plot::axis_labels(yb, ys, area.height >= 12)),
+                .labels(yl),
         )
         .legend_position(None);
     f.render_widget(chart, area);
 }
 
-fn empty_message(app: &App, have_data: bool) -> Option<String> {
-    if have_data {
-        None
-    } else if app.busy {
-        Some("computing…".into())
-    } else if app.compute_error().is_some() {
-        Some("no data: see the status line".into())
-    } else {
-        Some("no data".into())
-    }
-}
-
-fn draw_pr(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
-    let max_points = 4 * area.width as usize;
-    let pt = app.point.as_ref().and_then(|r| r.as_ref().ok());
-    let mut curves = Vec::new();
-    let title = vec![Span::raw(format!(" Pr(σ*) at p* = {} ", sig(app.scene.pressure, 3)))];
-    let mut key = Vec::new();
-    if let Some(p) = pt {
-        let (xs, ys) = (Scale::Linear, Scale::Linear);
-        let compare = p.adhesionless.as_ref().filter(|_| app.compare);
-        let gfmd = app.gfmd_for_scene();
-        let mut runs: Vec<&[(f64, f64)]> = vec![&p.pr];
-        if let Some(c) = compare {
-            runs.push(c);
-        }
-        if let Some(g) = gfmd {
-            runs.push(&g.pr);
-        }
-        let xb = plot::bounds(&runs, true, 0.0).unwrap_or([0.0, 1.0]);
-        let xb = match p.wall {
-            Some(w) if w.is_finite() => plot::guard(xb[0].min(w), xb[1].max(w)),
-            _ => xb,
-        };
-        let ytop = plot::bounds(&runs, false, 0.0).map_or(1.0, |b| b[1]).max(0.0);
-        let yb = plot::guard(0.0, ytop * 1.05);
-        if let Some(c) = compare {
-            add_runs(
-                &mut curves,
-                c,
-                (xs, ys),
-                max_points,
-                (pal.compare(), Marker::Dot, GraphType::Line),
-            );
-            key.extend(legend("•", "γ_s=0", pal.compare()));
-        }
-        if xb[0] < 0.0 && xb[1] > 0.0 {
-            // σ* = 0 separates tension from compression
-            curves.push(Curve {
-                points: plot::vertical(0.0, yb),
-                style: pal.guide(),
-                marker: Marker::Braille,
-                graph: GraphType::Line,
-            });
-        }
-        if let Some(w) = p.wall {
-            curves.push(Curve {
-                points: plot::vertical(w, yb),
-                style: pal.wall(),
-                marker: Marker::Bar,
-                graph: GraphType::Line,
-            });
-            key.extend(legend("▄", "−σ_a*", pal.wall()));
-        }
-        if let Some(g) = gfmd {
-            let pts: Vec<(f64, f64)> = g.pr.iter().copied().filter(|(_, d)| *d > 0.0).collect();
-            curves.push(Curve {
-                points: plot::decimate(&pts, max_points),
-                style: pal.gfmd(),
-                marker: Marker::HalfBlock,
-                graph: GraphType::Scatter,
-            });
-            key.extend(legend("▀", "GFMD", pal.gfmd()));
-        }
-        add_runs(
-            &mut curves,
-            &p.pr,
-            (xs, ys),
-            max_points,
-            (pal.theory(), Marker::Braille, GraphType::Line),
-        );
-        key.extend(legend("⣿", "theory", pal.theory()));
-        render_chart(f, area, title, key, &curves, xb, yb, xs, ys, None);
-    } else {
-        render_chart(
-            f,
-            area,
-            title,
-            vec![],
-            &[],
-            [0.0, 1.0],
-            [0.0, 1.0],
-            Scale::Linear,
-            Scale::Linear,
-            empty_message(app, false),
-        );
-    }
-}
-
-/// Eq. (18) of \[S\]: a_r = erf(1.9p*)(1 − a₀²) + a₀³ with a₀ = erf(1.45p*) (adhesionless,
-/// semi-infinite).
+/// Eq. (18) of \[S\] (see [`asperity::theory::closed_form::eq18_area`]).
 pub fn eq18(p: f64) -> f64 {
     asperity::theory::closed_form::eq18_area(p)
-}
-
-/// Whether eq. (18) describes the scene.
-pub fn eq18_applies(app: &App) -> bool {
-    app.scene.gamma == 0.0 && app.scene.thickness_qr.is_infinite()
-}
-
-fn current_marker(curves: &mut Vec<Curve>, pal: Palette, x: f64, y: Option<f64>, yb: [f64; 2]) {
-    curves.insert(
-        0,
-        Curve {
-            points: plot::vertical(x, yb),
-            style: pal.guide(),
-            marker: Marker::Braille,
-            graph: GraphType::Line,
-        },
-    );
-    if let Some(y) = y.filter(|y| y.is_finite()) {
-        curves.push(Curve {
-            points: vec![(x, y)],
-            style: pal.current(),
-            marker: Marker::Block,
-            graph: GraphType::Scatter,
-        });
-    }
-}
-
-fn draw_area(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
-    let max_points = 4 * area.width as usize;
-    let (xs, ys) = match app.area_mode {
-        AreaMode::Log => (Scale::Log10, Scale::Log10),
-        AreaMode::Ratio => (Scale::Log10, Scale::Linear),
-    };
-    let y_of = |p: f64, a: f64| match app.area_mode {
-        AreaMode::Log => a,
-        AreaMode::Ratio => a / p,
-    };
-    let title = vec![Span::raw(match app.area_mode {
-        AreaMode::Log => " a_r(p*) ".to_string(),
-        AreaMode::Ratio => " a_r/p* ".to_string(),
-    })];
-    let sw = app.sweep.as_ref().and_then(|r| r.as_ref().ok());
-    let Some(sw) = sw else {
-        render_chart(
-            f,
-            area,
-            title,
-            vec![],
-            &[],
-            [0.0, 1.0],
-            [0.0, 1.0],
-            xs,
-            ys,
-            empty_message(app, false),
-        );
-        return;
-    };
-    let theory: Vec<(f64, f64)> = sw.p.iter().zip(&sw.a_r).map(|(&p, &a)| (p, y_of(p, a))).collect();
-    let reference: Vec<(f64, f64)> = if eq18_applies(app) {
-        sw.p.iter().map(|&p| (p, y_of(p, eq18(p)))).collect()
-    } else {
-        Vec::new()
-    };
-    let mut curves = Vec::new();
-    add_runs(
-        &mut curves,
-        &reference,
-        (xs, ys),
-        max_points,
-        (pal.reference(), Marker::Dot, GraphType::Line),
-    );
-    add_runs(
-        &mut curves,
-        &theory,
-        (xs, ys),
-        max_points,
-        (pal.theory(), Marker::Braille, GraphType::Line),
-    );
-    let all: Vec<&[(f64, f64)]> = curves.iter().map(|c| c.points.as_slice()).collect();
-    let xb = plot::bounds(&all, true, 0.0).unwrap_or([0.0, 1.0]);
-    let mut yb = plot::bounds(&all, false, 0.05).unwrap_or([0.0, 1.0]);
-    match app.area_mode {
-        AreaMode::Ratio => yb = plot::guard(0.0, yb[1]),
-        // a_r <= 1: no padding above log10(1) = 0
-        AreaMode::Log if yb[1] > 0.0 && yb[0] < 0.0 => yb = plot::guard(yb[0], 0.0),
-        AreaMode::Log => {}
-    }
-    let p = app.scene.pressure;
-    let pt = app.point.as_ref().and_then(|r| r.as_ref().ok());
-    if let Some(x) = xs.forward(p) {
-        let y = pt.and_then(|pt| ys.forward(y_of(p, pt.a_r)));
-        current_marker(&mut curves, pal, x, y, yb);
-    }
-    let mut key = legend("⣿", "theory", pal.theory());
-    if !reference.is_empty() {
-        key.extend(legend("•", "eq.18", pal.reference()));
-    }
-    if let Some(g) = app.gfmd_for_scene() {
-        // GFMD and the theory on GFMD's own (reduced) map: a second system, drawn apart from
-        // the full scene's theory curve
-        let pts: Vec<(f64, f64)> = std::iter::once((g.pressure, g.a_r))
-            .chain(g.sweep.iter().map(|&(p, a, _)| (p, a)))
-            .filter_map(|(p, a)| Some((xs.forward(p)?, ys.forward(y_of(p, a))?)))
-            .collect();
-        let th: Vec<(f64, f64)> = g
-            .theory_sweep
-            .iter()
-            .filter_map(|&(p, a, _)| Some((xs.forward(p)?, ys.forward(y_of(p, a))?)))
-            .collect();
-        if th.len() > 1 {
-            curves.push(Curve {
-                points: th,
-                style: pal.gfmd(),
-                marker: Marker::Dot,
-                graph: GraphType::Line,
-            });
-            key.extend(legend("•", "map th.", pal.gfmd()));
-        }
-        if !pts.is_empty() {
-            curves.push(Curve {
-                points: pts,
-                style: pal.gfmd(),
-                marker: Marker::HalfBlock,
-                graph: GraphType::Scatter,
-            });
-            key.extend(legend("▀", "GFMD", pal.gfmd()));
-        }
-    }
-    key.extend(legend("█", "p*", pal.current()));
-    render_chart(f, area, title, key, &curves, xb, yb, xs, ys, None);
-}
-
-fn draw_gap(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
-    let max_points = 4 * area.width as usize;
-    let (xs, ys) = (Scale::Log10, Scale::Linear);
-    let title = vec![Span::raw(" ū/h_rms(p*) ")];
-    let sw = app.sweep.as_ref().and_then(|r| r.as_ref().ok());
-    let Some(sw) = sw else {
-        render_chart(
-            f,
-            area,
-            title,
-            vec![],
-            &[],
-            [0.0, 1.0],
-            [0.0, 1.0],
-            xs,
-            ys,
-            empty_message(app, false),
-        );
-        return;
-    };
-    let theory: Vec<(f64, f64)> = sw.p.iter().copied().zip(sw.gap_rel.iter().copied()).collect();
-    let mut curves = Vec::new();
-    add_runs(
-        &mut curves,
-        &theory,
-        (xs, ys),
-        max_points,
-        (pal.theory(), Marker::Braille, GraphType::Line),
-    );
-    let all: Vec<&[(f64, f64)]> = curves.iter().map(|c| c.points.as_slice()).collect();
-    let xb = plot::bounds(&all, true, 0.0).unwrap_or([0.0, 1.0]);
-    let ytop = plot::bounds(&all, false, 0.05).map_or(1.0, |b| b[1]);
-    let yb = plot::guard(0.0, ytop);
-    let p = app.scene.pressure;
-    if let Some(x) = xs.forward(p) {
-        let y = match &app.gap {
-            Some(Ok(g)) => Some(*g),
-            _ => None,
-        };
-        current_marker(&mut curves, pal, x, y, yb);
-    }
-    let mut key = legend("⣿", "theory", pal.theory());
-    if let Some(g) = app.gfmd_for_scene() {
-        let pts: Vec<(f64, f64)> = std::iter::once((g.pressure, g.gap_rel))
-            .chain(g.sweep.iter().map(|&(p, _, u)| (p, u)))
-            .filter_map(|(p, u)| Some((xs.forward(p)?, ys.forward(u)?)))
-            .collect();
-        let th: Vec<(f64, f64)> = g
-            .theory_sweep
-            .iter()
-            .filter_map(|&(p, _, u)| Some((xs.forward(p)?, ys.forward(u)?)))
-            .collect();
-        if th.len() > 1 {
-            curves.push(Curve {
-                points: th,
-                style: pal.gfmd(),
-                marker: Marker::Dot,
-                graph: GraphType::Line,
-            });
-            key.extend(legend("•", "map th.", pal.gfmd()));
-        }
-        curves.push(Curve {
-            points: pts,
-            style: pal.gfmd(),
-            marker: Marker::HalfBlock,
-            graph: GraphType::Scatter,
-        });
-        key.extend(legend("▀", "GFMD", pal.gfmd()));
-    }
-    key.extend(legend("█", "p*", pal.current()));
-    render_chart(f, area, title, key, &curves, xb, yb, xs, ys, None);
 }
 
 fn popup(area: Rect, w: u16, h: u16) -> Rect {

@@ -15,8 +15,10 @@
 //! - Every reply carries its generation and its key; the UI keeps a reply only if the key is
 //!   the one its current scene needs (so stale replies are dropped).
 
-use super::data::{self, PointData, SweepData};
+use super::charts::Needs;
+use super::data::{self, PointData, SweepData, ThicknessData};
 use asperity::error::{Error, Result};
+use asperity::input::model::Model;
 use asperity::input::scene::Scene;
 use asperity::theory::engine::{self, Options};
 use asperity::theory::sweep::{self, SweepSpec};
@@ -31,6 +33,10 @@ use std::sync::Arc;
 pub const SWEEP_POINTS: usize = 64;
 /// Points of the sampled Pr(σ*).
 pub const SIGMA_POINTS: usize = 241;
+/// t·q_r range of the thickness chart (\[S\] Fig. 7 spans about this).
+pub const THICKNESS_RANGE: (f64, f64) = (1e-2, 1e2);
+/// Points of the thickness chart (4 per decade).
+pub const THICKNESS_POINTS: usize = 17;
 
 /// What the UI asks for.
 #[derive(Debug, Clone, PartialEq)]
@@ -43,6 +49,19 @@ pub struct Request {
     pub scene: Scene,
     /// p* range of the load charts (log-spaced, [`SWEEP_POINTS`] points).
     pub range: (f64, f64),
+    /// What the visible charts need.
+    pub needs: Needs,
+    /// Further models to compute what the charts need for (`M`), the current one excluded.
+    pub models: Vec<Model>,
+}
+
+impl Request {
+    /// The scene with another model.
+    pub fn with_model(&self, m: &Model) -> Scene {
+        let mut s = self.scene.clone();
+        s.model = *m;
+        s
+    }
 }
 
 /// A cache key: the preset's identity and the scene's parameters as bits.
@@ -59,6 +78,15 @@ pub fn point_key(source: &str, scene: &Scene) -> CacheKey {
 pub fn sweep_key(source: &str, scene: &Scene, range: (f64, f64)) -> CacheKey {
     let mut bits = scene_bits(scene);
     bits.extend([range.0.to_bits(), range.1.to_bits(), SWEEP_POINTS as u64]);
+    (source.to_string(), bits)
+}
+
+/// The key of a thickness sweep: the scene without t·q_r, with p*.
+pub fn thickness_key(source: &str, scene: &Scene) -> CacheKey {
+    let mut s = scene.clone();
+    s.thickness_qr = f64::NAN;
+    let mut bits = scene_bits(&s);
+    bits.extend([scene.pressure.to_bits(), THICKNESS_POINTS as u64, u64::MAX]);
     (source.to_string(), bits)
 }
 
@@ -110,6 +138,15 @@ pub enum Reply {
         key: CacheKey,
         /// ū/h_rms, or the error.
         result: Result<f64>,
+    },
+    /// a_r against t·q_r at the current p*.
+    Thickness {
+        /// Generation.
+        gen: u64,
+        /// [`thickness_key`].
+        key: CacheKey,
+        /// Curves, or the error.
+        result: Result<ThicknessData>,
     },
     /// Progress of the background GFMD run `id`.
     GfmdProgress {
@@ -185,6 +222,7 @@ pub struct Caches {
     points: Lru<Result<PointData>>,
     sweeps: Lru<Result<SweepData>>,
     gaps: Lru<Result<f64>>,
+    thick: Lru<Result<ThicknessData>>,
 }
 
 impl Default for Caches {
@@ -193,6 +231,7 @@ impl Default for Caches {
             points: Lru::new(64),
             sweeps: Lru::new(12),
             gaps: Lru::new(64),
+            thick: Lru::new(24),
         }
     }
 }
@@ -204,10 +243,31 @@ fn point_options() -> Options {
     }
 }
 
-fn evaluate_point(scene: &Scene, cancel: &AtomicBool) -> Result<PointData> {
-    let ev = engine::evaluate_warm(scene, &point_options(), None, Some(cancel))?;
-    let mut pd = PointData::from_evaluation(&ev);
-    if scene.gamma > 0.0 {
+fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<PointData> {
+    let mut pd = match engine::evaluate_warm(scene, &point_options(), None, Some(cancel)) {
+        Ok(ev) => PointData::at(&ev, scene.pressure),
+        Err(e @ Error::NotConverged { .. }) if scene.gamma > 0.0 => {
+            // the fixed point may have converged while its error check did not (the edge
+            // of a jump into contact): show it, without an error bar, and say why
+            let opts = Options {
+                adhesion_error_estimate: false,
+                ..point_options()
+            };
+            match engine::evaluate_warm(scene, &opts, None, Some(cancel)) {
+                Ok(ev) => {
+                    let mut pd = PointData::at(&ev, scene.pressure);
+                    pd.error_estimate = f64::NAN;
+                    pd.branch.push_str(", no error bar");
+                    pd.warning = Some(e.to_string());
+                    pd
+                }
+                Err(Error::Cancelled) => return Err(Error::Cancelled),
+                _ => return Err(e),
+            }
+        }
+        Err(e) => return Err(e),
+    };
+    if compare && scene.gamma > 0.0 {
         let mut s0 = scene.clone();
         s0.gamma = 0.0;
         // the comparison curve is optional: an error only hides it
@@ -218,9 +278,11 @@ fn evaluate_point(scene: &Scene, cancel: &AtomicBool) -> Result<PointData> {
     Ok(pd)
 }
 
-/// Serves one request: sends the point, the sweep and the gap (each from the cache when
-/// there), then `Done`. Returns early, sending nothing more, as soon as `stale()` is true or a
-/// sweep reports [`Error::Cancelled`].
+/// Serves one request: sends the point, the load sweep (if a visible chart needs it), the
+/// gap, the thickness sweep (if needed), then the same for every further model (`M`), each
+/// from the cache when there, then `Done`. Returns early, sending nothing more, as soon as
+/// `stale()` is true or a computation reports [`Error::Cancelled`]. A failed point does not
+/// stop the load charts: they do not depend on it.
 pub fn process(
     req: &Request,
     caches: &mut Caches,
@@ -229,59 +291,28 @@ pub fn process(
     send: &dyn Fn(Reply),
 ) {
     let gen = req.gen;
+    let Some(_) = serve_point(req, &req.scene, true, caches, cancel, send) else {
+        return;
+    };
+    if stale() {
+        return;
+    }
+    let sw = if req.needs.loads {
+        let Some(sw) = serve_sweep(req, &req.scene, caches, cancel, send) else {
+            return;
+        };
+        Some(sw)
+    } else {
+        None
+    };
+    if stale() {
+        return;
+    }
+    let from_sweep = sw
+        .as_ref()
+        .and_then(|r| r.as_ref().ok())
+        .and_then(|sd| interpolate_gap(sd, req.scene.pressure));
     let pkey = point_key(&req.source, &req.scene);
-    let point = match caches.points.get(&pkey) {
-        Some(p) => p,
-        None => {
-            let p = evaluate_point(&req.scene, cancel);
-            if matches!(p, Err(Error::Cancelled)) {
-                return;
-            }
-            caches.points.put(pkey.clone(), p.clone());
-            p
-        }
-    };
-    let failed = point.is_err();
-    send(Reply::Point {
-        gen,
-        key: pkey.clone(),
-        result: point,
-    });
-    if failed {
-        send(Reply::Done { gen });
-        return;
-    }
-    if stale() {
-        return;
-    }
-    let skey = sweep_key(&req.source, &req.scene, req.range);
-    let sw = match caches.sweeps.get(&skey) {
-        Some(s) => s,
-        None => {
-            let spec = SweepSpec {
-                from: req.range.0,
-                to: req.range.1,
-                points: SWEEP_POINTS,
-            };
-            match sweep::sweep(&req.scene, &spec, &Options::chart(), Some(cancel)) {
-                Err(Error::Cancelled) => return,
-                r => {
-                    let r = r.map(|s| SweepData::from_sweep(&s));
-                    caches.sweeps.put(skey.clone(), r.clone());
-                    r
-                }
-            }
-        }
-    };
-    let from_sweep = sw.as_ref().ok().and_then(|sd| interpolate_gap(sd, req.scene.pressure));
-    send(Reply::Sweep {
-        gen,
-        key: skey,
-        result: sw,
-    });
-    if stale() {
-        return;
-    }
     let gap = match caches.gaps.get(&pkey) {
         Some(g) => g,
         None if from_sweep.is_some() => Ok(from_sweep.unwrap_or_default()),
@@ -307,7 +338,187 @@ pub fn process(
         key: pkey,
         result: gap,
     });
+    if req.needs.thickness {
+        if stale() {
+            return;
+        }
+        if serve_thickness(req, &req.scene, caches, cancel, send).is_none() {
+            return;
+        }
+    }
+    for m in &req.models {
+        let scene = req.with_model(m);
+        for part in 0..3 {
+            if stale() {
+                return;
+            }
+            let done = match part {
+                0 if req.needs.point => serve_point(req, &scene, false, caches, cancel, send).map(|_| ()),
+                1 if req.needs.loads => serve_sweep(req, &scene, caches, cancel, send).map(|_| ()),
+                2 if req.needs.thickness => serve_thickness(req, &scene, caches, cancel, send).map(|_| ()),
+                _ => Some(()),
+            };
+            if done.is_none() {
+                return;
+            }
+        }
+    }
     send(Reply::Done { gen });
+}
+
+/// The point of `scene` (cached); `None` when cancelled.
+fn serve_point(
+    req: &Request,
+    scene: &Scene,
+    compare: bool,
+    caches: &mut Caches,
+    cancel: &AtomicBool,
+    send: &dyn Fn(Reply),
+) -> Option<Result<PointData>> {
+    let key = point_key(&req.source, scene);
+    let point = match caches.points.get(&key) {
+        Some(p) => p,
+        None => {
+            let p = evaluate_point(scene, cancel, compare);
+            if matches!(p, Err(Error::Cancelled)) {
+                return None;
+            }
+            caches.points.put(key.clone(), p.clone());
+            p
+        }
+    };
+    send(Reply::Point {
+        gen: req.gen,
+        key,
+        result: point.clone(),
+    });
+    Some(point)
+}
+
+/// The load sweep of `scene` (cached); `None` when cancelled.
+fn serve_sweep(
+    req: &Request,
+    scene: &Scene,
+    caches: &mut Caches,
+    cancel: &AtomicBool,
+    send: &dyn Fn(Reply),
+) -> Option<Result<SweepData>> {
+    let key = sweep_key(&req.source, scene, req.range);
+    let sw = match caches.sweeps.get(&key) {
+        Some(s) => s,
+        None => {
+            let spec = SweepSpec {
+                from: req.range.0,
+                to: req.range.1,
+                points: SWEEP_POINTS,
+            };
+            match sweep::sweep(scene, &spec, &Options::chart(), Some(cancel)) {
+                Err(Error::Cancelled) => return None,
+                r => {
+                    let r = r.map(|s| SweepData::from_sweep(&s));
+                    caches.sweeps.put(key.clone(), r.clone());
+                    r
+                }
+            }
+        }
+    };
+    send(Reply::Sweep {
+        gen: req.gen,
+        key,
+        result: sw.clone(),
+    });
+    Some(sw)
+}
+
+/// The thickness sweep of `scene` (cached); `None` when cancelled.
+fn serve_thickness(
+    req: &Request,
+    scene: &Scene,
+    caches: &mut Caches,
+    cancel: &AtomicBool,
+    send: &dyn Fn(Reply),
+) -> Option<()> {
+    let key = thickness_key(&req.source, scene);
+    let td = match caches.thick.get(&key) {
+        Some(t) => t,
+        None => match thickness_sweep(scene, cancel) {
+            Err(Error::Cancelled) => return None,
+            r => {
+                caches.thick.put(key.clone(), r.clone());
+                r
+            }
+        },
+    };
+    send(Reply::Thickness {
+        gen: req.gen,
+        key,
+        result: td,
+    });
+    Some(())
+}
+
+/// a_r at [`THICKNESS_POINTS`] log-spaced t·q_r in [`THICKNESS_RANGE`] and at t = ∞ (chart
+/// accuracy, each solve warm-started from the neighbouring thickness); a thickness where the
+/// solver fails is a gap (NaN), not an error. With adhesion also the adhesionless curve.
+pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessData> {
+    let t = data::log_grid(THICKNESS_RANGE.0, THICKNESS_RANGE.1, THICKNESS_POINTS);
+    let opts = Options {
+        sigma_points: 2,
+        ..Options::chart()
+    };
+    let at = |th: f64, gamma: f64, warm: Option<&engine::Evaluation>| {
+        let mut s = scene.clone();
+        s.thickness_qr = th;
+        s.gamma = gamma;
+        engine::evaluate_warm(&s, &opts, warm, Some(cancel))
+    };
+    let mut a_r = Vec::with_capacity(t.len());
+    // from thick to thin: the thick slab is the easier start
+    let mut warm: Option<engine::Evaluation> = None;
+    for &th in t.iter().rev() {
+        match at(th, scene.gamma, warm.as_ref()) {
+            Ok(ev) => {
+                a_r.push(ev.stats.a_r);
+                warm = Some(ev);
+            }
+            Err(Error::Cancelled) => return Err(Error::Cancelled),
+            Err(_) => {
+                a_r.push(f64::NAN);
+                warm = None;
+            }
+        }
+    }
+    a_r.reverse();
+    let a_r_inf = match at(f64::INFINITY, scene.gamma, None) {
+        Ok(ev) => ev.stats.a_r,
+        Err(Error::Cancelled) => return Err(Error::Cancelled),
+        Err(_) => f64::NAN,
+    };
+    let adhesionless = if scene.gamma > 0.0 {
+        let mut v = Vec::with_capacity(t.len());
+        for &th in &t {
+            match at(th, 0.0, None) {
+                Ok(ev) => v.push(ev.stats.a_r),
+                Err(Error::Cancelled) => return Err(Error::Cancelled),
+                Err(_) => v.push(f64::NAN),
+            }
+        }
+        Some(v)
+    } else {
+        None
+    };
+    if a_r.iter().all(|a| !a.is_finite()) {
+        return Err(Error::NotConverged {
+            solver: "thickness sweep".into(),
+            reason: "no thickness converged".into(),
+        });
+    }
+    Ok(ThicknessData {
+        t,
+        a_r,
+        a_r_inf,
+        adhesionless,
+    })
 }
 
 /// ū/h_rms at p* from the chart sweep's rows ([`sweep::interpolate_in_ln_p`]), when p* lies
@@ -447,6 +658,7 @@ mod tests {
             gap_rel: p.iter().map(|q| f(q.ln())).collect(),
             a_r: vec![0.0; 20],
             mean_contact_stress: vec![0.0; 20],
+            converged: vec![true; 20],
             p: p.clone(),
         };
         for x in [1.1e-3, 5e-3, 0.02, p[19]] {
@@ -455,6 +667,44 @@ mod tests {
         }
         assert_eq!(interpolate_gap(&sd, 1e-4), None);
         assert_eq!(interpolate_gap(&sd, 1.0), None);
+    }
+
+    #[test]
+    fn thickness_sweep_tends_to_the_semi_infinite_body() {
+        let mut scene = asperity::input::preset::Preset::resolve("system-2")
+            .unwrap()
+            .scene()
+            .unwrap();
+        let t0 = std::time::Instant::now();
+        let td = thickness_sweep(&scene, &AtomicBool::new(false)).unwrap();
+        eprintln!("system-2 thickness sweep: {:.2} s", t0.elapsed().as_secs_f64());
+        assert_eq!(td.t.len(), THICKNESS_POINTS);
+        assert!((td.t[0] / THICKNESS_RANGE.0 - 1.0).abs() < 1e-12);
+        // the thickest slab (t·q_r = 100) is the semi-infinite body to chart accuracy
+        let last = *td.a_r.last().unwrap();
+        assert!((last / td.a_r_inf - 1.0).abs() < 1e-2, "{last} vs {}", td.a_r_inf);
+        // without adhesion a thinner slab is more compliant: a_r grows as t shrinks
+        let a0 = td.adhesionless.as_ref().unwrap();
+        assert!(a0.windows(2).all(|w| w[0] >= w[1] * (1.0 - 1e-6)), "{a0:?}");
+        // adhesion adds contact
+        assert!(
+            td.a_r
+                .iter()
+                .zip(a0)
+                .filter(|(a, _)| a.is_finite())
+                .all(|(a, b)| a >= b),
+            "{td:?}"
+        );
+        // cancelled: nothing
+        assert!(matches!(
+            thickness_sweep(&scene, &AtomicBool::new(true)),
+            Err(Error::Cancelled)
+        ));
+        scene.gamma = 0.0;
+        assert!(thickness_sweep(&scene, &AtomicBool::new(false))
+            .unwrap()
+            .adhesionless
+            .is_none());
     }
 
     #[test]
@@ -483,6 +733,12 @@ mod tests {
             source: "system-1".into(),
             scene,
             range: (1e-3, 1.0),
+            needs: Needs {
+                point: true,
+                loads: true,
+                thickness: false,
+            },
+            models: Vec::new(),
         }
     }
 
@@ -507,6 +763,7 @@ mod tests {
                 }
                 Reply::Sweep { .. } => "sweep",
                 Reply::Gap { .. } => "gap",
+                Reply::Thickness { .. } => "thickness",
                 Reply::Done { .. } => "done",
                 Reply::GfmdProgress { .. } | Reply::GfmdDone { .. } => "gfmd",
             })
@@ -565,7 +822,10 @@ mod tests {
                 .recv_timeout(std::time::Duration::from_secs(60))
                 .expect("worker reply");
             let gen = match &r {
-                Reply::Point { gen, .. } | Reply::Sweep { gen, .. } | Reply::Gap { gen, .. } => *gen,
+                Reply::Point { gen, .. }
+                | Reply::Sweep { gen, .. }
+                | Reply::Gap { gen, .. }
+                | Reply::Thickness { gen, .. } => *gen,
                 Reply::Done { gen } => *gen,
                 Reply::GfmdProgress { .. } | Reply::GfmdDone { .. } => unreachable!("the theory worker runs no GFMD"),
             };

@@ -178,9 +178,15 @@ impl Preset {
             source: source.to_string(),
             message: toml_error_message(text, &e),
         })?;
-        preset.validate().map_err(|e| Error::Preset {
-            source: source.to_string(),
-            message: e.to_string(),
+        preset.validate().map_err(|e| {
+            let line = e.invalid_field().and_then(|f| key_line(text, &f.to_string()));
+            Error::Preset {
+                source: source.to_string(),
+                message: match line {
+                    Some(n) => format!("line {n}: {e}"),
+                    None => e.to_string(),
+                },
+            }
         })?;
         Ok(preset)
     }
@@ -378,6 +384,24 @@ pub fn toml_error_message(text: &str, e: &toml::de::Error) -> String {
         Some(k) if !k.is_empty() => format!("line {line_no}: {k}: {msg}"),
         _ => format!("line {line_no}: {msg}"),
     }
+}
+
+/// The 1-based line where the dotted key `table.key` (or a top-level `key`) is written in
+/// `text`, if it is.
+pub fn key_line(text: &str, dotted: &str) -> Option<usize> {
+    let (want_table, want_key) = dotted.rsplit_once('.').unwrap_or(("", dotted));
+    let mut table = String::new();
+    for (i, raw) in text.lines().enumerate() {
+        let l = raw.split('#').next().unwrap_or("").trim();
+        if l.starts_with('[') {
+            table = l.trim_matches(|c| c == '[' || c == ']').trim().to_string();
+        } else if let Some((k, _)) = l.split_once('=') {
+            if table == want_table && k.trim().trim_matches('"') == want_key {
+                return Some(i + 1);
+            }
+        }
+    }
+    None
 }
 
 /// Available presets: (name, where) from `presets/` under the working directory and the

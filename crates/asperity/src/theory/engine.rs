@@ -172,7 +172,7 @@ pub fn evaluate_warm(
     // p* = 1e-7, energy 3x too high). The engine therefore integrates at rtol ≤ ENERGY_RTOL,
     // the accuracy of the energy route, so `run` and `sweep` report the same U and a_r(q).
     let fine = Accuracy {
-        rtol: opts.accuracy.rtol.min(crate::theory::gap::ENERGY_RTOL),
+        rtol: opts.accuracy.rtol.min(persson::ENERGY_RTOL),
         ..opts.accuracy
     };
     let sol = persson::solve(scene, &fine)?;

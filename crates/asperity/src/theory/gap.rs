@@ -63,7 +63,7 @@ use std::f64::consts::PI;
 /// tested scenes; see `tests/gap.rs`).
 pub const GAP_STEP_LN: f64 = 0.1;
 
-pub use crate::theory::loads::ENERGY_RTOL;
+pub use crate::theory::persson::ENERGY_RTOL;
 
 /// erf argument p*/√(2v_full) above which the contact is taken as full (erf(6) = 1 − 2e-17).
 pub const FULL_CONTACT_ERF_ARG: f64 = 6.0;

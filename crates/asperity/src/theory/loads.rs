@@ -9,7 +9,7 @@
 //! the mean gap [S-12] ([`crate::theory::gap`]) and of [`crate::theory::sweep`].
 //!
 //! Both `gap` and `sweep` depend on this module; it depends on neither's tables, so the three
-//! form no cycle ([`ENERGY_RTOL`] lives here for that reason; `gap` re-exports it).
+//! form no cycle ([`ENERGY_RTOL`] lives in [`crate::theory::persson`], below all three).
 
 use crate::error::{Error, Result};
 use crate::input::scene::Scene;
@@ -17,12 +17,7 @@ use crate::theory::engine::{self, Evaluation, Options};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-/// ODE tolerance of the energies that enter the energy route. The route differentiates U in
-/// p, and at small loads ū ≈ ΔU/p*: U must be smooth in p* to ~p*·tol, not just accurate to
-/// the default rtol. Adaptive step sequences that change with p* make U noisy at the rtol
-/// level; on a thin slab (t·q_r = 0.01, U ≈ const at small p*) rtol = 1e-7 made ū(p*)
-/// non-monotone below p* = 1e-7, rtol = 1e-11 does not. A 64-point sweep still costs ~10 ms.
-pub const ENERGY_RTOL: f64 = 1e-11;
+pub use crate::theory::persson::ENERGY_RTOL;
 
 /// Options that make per-load evaluations cheap (no Pr table, no resolution record) and
 /// accurate enough for the energy route ([`ENERGY_RTOL`]).

@@ -32,6 +32,13 @@ use serde::Serialize;
 use statrs::function::erf::erf;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
+/// ODE tolerance of the energies that enter the energy route. The route differentiates U in
+/// p, and at small loads ū ≈ ΔU/p*: U must be smooth in p* to ~p*·tol, not just accurate to
+/// the default rtol. Adaptive step sequences that change with p* make U noisy at the rtol
+/// level; on a thin slab (t·q_r = 0.01, U ≈ const at small p*) rtol = 1e-7 made ū(p*)
+/// non-monotone below p* = 1e-7, rtol = 1e-11 does not. A 64-point sweep still costs ~10 ms.
+pub const ENERGY_RTOL: f64 = 1e-11;
+
 /// Accuracy of the adhesionless solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Accuracy {

@@ -105,6 +105,8 @@ pub struct SweepRow {
     pub elastic_energy_reduced: f64,
     /// Estimated absolute quadrature error of ū/h_rms.
     pub mean_gap_error: f64,
+    /// ⟨δσ_c²⟩* (reduced by (E*ḡ)²).
+    pub contact_stress_variance: f64,
 }
 
 /// The result of a sweep.
@@ -216,6 +218,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
                     converged: true,
                     elastic_energy_reduced: e.elastic_energy / unit,
                     mean_gap_error: g_err,
+                    contact_stress_variance: e.stats.contact_stress_variance,
                 },
                 Err(_) => {
                     failed_loads.push(ps[i]);
@@ -229,6 +232,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
                         converged: false,
                         elastic_energy_reduced: f64::NAN,
                         mean_gap_error: f64::NAN,
+                        contact_stress_variance: f64::NAN,
                     }
                 }
             }

@@ -1,0 +1,177 @@
+//! Charts for files and terminals: one [`ChartSpec`] (title, axis titles, linear or log axes,
+//! named series drawn as lines, dashed lines or points) rendered three ways:
+//!
+//! - [`write_svg`]: an SVG file (plotters' SVG backend; text stays text, no font needed by
+//!   the reader);
+//! - [`write_png`]: a PNG file (plotters' bitmap backend; the text is rasterised with the
+//!   DejaVu Sans subset shipped in `assets/fonts/`, registered on first use, so it works on
+//!   a machine with no fonts installed);
+//! - [`render_text`]: a plain-text character chart (no escape codes; it works when stdout
+//!   is not a terminal).
+//!
+//! Points with a non-finite coordinate (a load that did not converge), and on a log axis
+//! points ≤ 0, are left out; a line is broken where they were. Series are told apart by
+//! colour and, for points, by marker shape; every series gets a legend entry with its name.
+
+mod draw;
+mod font;
+mod text;
+
+pub use text::render_text;
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SeriesStyle {
+    /// A solid line through the points (a model curve).
+    Line,
+    /// Markers only (simulation points, reference values).
+    Points,
+    /// A dashed line (a closed form, an asymptote, a reference curve).
+    Dashed,
+}
+
+/// One named series.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend entry (also the SVG's text for this series).
+    pub name: String,
+    /// (x, y) in data units; non-finite points are gaps.
+    pub points: Vec<(f64, f64)>,
+    /// Line, points or dashed line.
+    pub style: SeriesStyle,
+}
+
+/// What to draw.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChartSpec {
+    /// Title above the plot.
+    pub title: String,
+    /// x-axis title, with units.
+    pub x_label: String,
+    /// y-axis title, with units.
+    pub y_label: String,
+    /// Logarithmic x axis.
+    pub x_log: bool,
+    /// Logarithmic y axis.
+    pub y_log: bool,
+    /// The series, drawn in order (the legend lists them in the same order).
+    pub series: Vec<Series>,
+}
+
+/// Size of the SVG drawing in pixels (the viewBox).
+pub const SVG_SIZE: (u32, u32) = (800, 560);
+/// Size of the PNG image in pixels (twice the SVG's, for slides).
+pub const PNG_SIZE: (u32, u32) = (1600, 1120);
+
+/// Writes `spec` as an SVG file.
+pub fn write_svg(spec: &ChartSpec, path: &std::path::Path) -> std::io::Result<()> {
+    font::register();
+    let root = plotters::prelude::SVGBackend::new(path, SVG_SIZE);
+    draw::draw(root, spec, 1.0)
+}
+
+/// Writes `spec` as a PNG file.
+pub fn write_png(spec: &ChartSpec, path: &std::path::Path) -> std::io::Result<()> {
+    font::register();
+    let root = plotters::prelude::BitMapBackend::new(path, PNG_SIZE);
+    draw::draw(root, spec, PNG_SIZE.0 as f64 / SVG_SIZE.0 as f64)
+}
+
+/// The points of a series that can be drawn on the given axes: finite, and > 0 on a log axis.
+pub(crate) fn drawable(p: (f64, f64), x_log: bool, y_log: bool) -> bool {
+    p.0.is_finite() && p.1.is_finite() && (!x_log || p.0 > 0.0) && (!y_log || p.1 > 0.0)
+}
+
+/// The data range of the drawable points of all series on one axis, padded (5 % of the
+/// span, or a factor on a log axis); `(0, 1)` (or `(0.1, 1)`) when there are none.
+pub(crate) fn axis_range(spec: &ChartSpec, x_axis: bool) -> (f64, f64) {
+    let log = if x_axis { spec.x_log } else { spec.y_log };
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for s in &spec.series {
+        for &p in &s.points {
+            if drawable(p, spec.x_log, spec.y_log) {
+                let v = if x_axis { p.0 } else { p.1 };
+                lo = lo.min(v);
+                hi = hi.max(v);
+            }
+        }
+    }
+    if !lo.is_finite() {
+        return if log { (0.1, 1.0) } else { (0.0, 1.0) };
+    }
+    if log {
+        if hi <= lo * 1.0001 {
+            return (lo / 2.0, hi * 2.0);
+        }
+        let pad = (hi / lo).powf(0.03);
+        (lo / pad, hi * pad)
+    } else {
+        let span = hi - lo;
+        if span <= 1e-12 * hi.abs().max(lo.abs()).max(1e-300) {
+            let d = if lo == 0.0 { 1.0 } else { 0.1 * lo.abs() };
+            return (lo - d, hi + d);
+        }
+        (lo - 0.05 * span, hi + 0.05 * span)
+    }
+}
+
+/// Tick-label text: short, round numbers (`0.001`, `0.5`, `2`, `1e-5`).
+pub(crate) fn tick_label(v: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    if !(1e-3..1e4).contains(&a) {
+        let e = a.log10().floor() as i32;
+        let m = v / 10f64.powi(e);
+        if (m.abs() - 1.0).abs() < 1e-9 {
+            return format!("{}1e{e}", if v < 0.0 { "-" } else { "" });
+        }
+        return format!("{}e{e}", trim(format!("{m:.2}")));
+    }
+    trim(format!("{v:.4}"))
+}
+
+fn trim(s: String) -> String {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tick_labels_are_short() {
+        assert_eq!(tick_label(0.0), "0");
+        assert_eq!(tick_label(0.001), "0.001");
+        assert_eq!(tick_label(0.5), "0.5");
+        assert_eq!(tick_label(2.0), "2");
+        assert_eq!(tick_label(1e-5), "1e-5");
+        assert_eq!(tick_label(2.5e-5), "2.5e-5");
+        assert_eq!(tick_label(-0.25), "-0.25");
+    }
+
+    #[test]
+    fn ranges_skip_gaps_and_non_positive_values_on_log_axes() {
+        let spec = ChartSpec {
+            title: String::new(),
+            x_label: String::new(),
+            y_label: String::new(),
+            x_log: true,
+            y_log: false,
+            series: vec![Series {
+                name: "a".into(),
+                points: vec![(0.0, 5.0), (1e-3, f64::NAN), (1e-2, 1.0), (1.0, 3.0)],
+                style: SeriesStyle::Line,
+            }],
+        };
+        let (x0, x1) = axis_range(&spec, true);
+        assert!(x0 < 1e-2 && x0 > 5e-3 && x1 > 1.0 && x1 < 1.3, "{x0} {x1}");
+        let (y0, y1) = axis_range(&spec, false);
+        assert!((y0 - 0.9).abs() < 1e-12 && (y1 - 3.1).abs() < 1e-12, "{y0} {y1}");
+    }
+}

@@ -1,0 +1,208 @@
+//! Plain-text charts: a character grid with one glyph per series, tick labels on both axes,
+//! the axis titles and a legend. No colours or escape codes, so the output can be piped,
+//! pasted into a README or compared in a test.
+
+use super::{axis_range, drawable, tick_label, ChartSpec, SeriesStyle};
+
+/// Glyphs of the series, in order (then repeated).
+pub const GLYPHS: [char; 10] = ['*', 'o', '+', 'x', '#', '@', '%', '&', '=', '~'];
+
+/// Renders `spec` as text, `width` × `height` characters overall (at least 40 × 12).
+pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
+    let (width, height) = (width.max(40), height.max(12));
+    let (x0, x1) = axis_range(spec, true);
+    let (y0, y1) = axis_range(spec, false);
+    let tx = |v: f64, lo: f64, hi: f64, log: bool| {
+        if log {
+            (v / lo).ln() / (hi / lo).ln()
+        } else {
+            (v - lo) / (hi - lo)
+        }
+    };
+    let inv = |t: f64, lo: f64, hi: f64, log: bool| {
+        if log {
+            lo * (hi / lo).powf(t)
+        } else {
+            lo + t * (hi - lo)
+        }
+    };
+    let label = |v: f64| tick_label(round_sig(v, 3));
+    // legend lines
+    let mut legend: Vec<String> = vec![String::new()];
+    for (i, s) in spec.series.iter().enumerate() {
+        let kind = match s.style {
+            SeriesStyle::Line => "line",
+            SeriesStyle::Dashed => "dashed",
+            SeriesStyle::Points => "points",
+        };
+        let entry = format!("{} {} ({kind})", GLYPHS[i % GLYPHS.len()], s.name);
+        let last = legend.last_mut().expect("non-empty");
+        if !last.is_empty() && last.chars().count() + 3 + entry.chars().count() > width {
+            legend.push(entry);
+        } else {
+            if !last.is_empty() {
+                last.push_str("   ");
+            }
+            last.push_str(&entry);
+        }
+    }
+    // rows: title, y title, plot, x axis line, x ticks, x title, legend
+    let plot_h = height.saturating_sub(5 + legend.len()).max(4);
+    let ylabels: Vec<String> = (0..plot_h)
+        .map(|r| {
+            if r == 0 || r == plot_h - 1 || r == (plot_h - 1) / 2 {
+                label(inv(1.0 - r as f64 / (plot_h - 1) as f64, y0, y1, spec.y_log))
+            } else {
+                String::new()
+            }
+        })
+        .collect();
+    let margin = ylabels.iter().map(|l| l.chars().count()).max().unwrap_or(1) + 1;
+    let plot_w = width.saturating_sub(margin + 1).max(10);
+    let mut grid = vec![vec![' '; plot_w]; plot_h];
+    let cell = |p: (f64, f64)| -> (f64, f64) {
+        (
+            tx(p.0, x0, x1, spec.x_log) * (plot_w - 1) as f64,
+            (1.0 - tx(p.1, y0, y1, spec.y_log)) * (plot_h - 1) as f64,
+        )
+    };
+    let put = |grid: &mut Vec<Vec<char>>, c: (f64, f64), g: char| {
+        let (cx, cy) = (c.0.round(), c.1.round());
+        if cx >= 0.0 && cy >= 0.0 && (cx as usize) < plot_w && (cy as usize) < plot_h {
+            grid[cy as usize][cx as usize] = g;
+        }
+    };
+    // lines first, points on top
+    for pass in [false, true] {
+        for (i, s) in spec.series.iter().enumerate() {
+            let g = GLYPHS[i % GLYPHS.len()];
+            let points = s.style == SeriesStyle::Points;
+            if points != pass {
+                continue;
+            }
+            let mut prev: Option<(f64, f64)> = None;
+            for &p in &s.points {
+                if !drawable(p, spec.x_log, spec.y_log) {
+                    prev = None;
+                    continue;
+                }
+                let c = cell(p);
+                if points {
+                    put(&mut grid, c, g);
+                    continue;
+                }
+                match prev {
+                    None => put(&mut grid, c, g),
+                    Some(a) => {
+                        let steps = ((c.0 - a.0).abs().max((c.1 - a.1).abs()) * 2.0).ceil().max(1.0) as usize;
+                        for k in 1..=steps {
+                            // a dashed line leaves every other stretch of two cells empty
+                            let t = k as f64 / steps as f64;
+                            let q = (a.0 + t * (c.0 - a.0), a.1 + t * (c.1 - a.1));
+                            if s.style == SeriesStyle::Dashed && (q.0.round() as i64 / 2) % 2 == 1 {
+                                continue;
+                            }
+                            put(&mut grid, q, g);
+                        }
+                    }
+                }
+                prev = Some(c);
+            }
+        }
+    }
+    let mut out = String::new();
+    out.push_str(&spec.title);
+    out.push('\n');
+    out.push_str(&format!("{:>margin$} {}\n", "", spec.y_label, margin = margin));
+    for (r, row) in grid.iter().enumerate() {
+        let line: String = row.iter().collect();
+        out.push_str(&format!("{:>m$}|{}\n", ylabels[r], line.trim_end(), m = margin));
+    }
+    out.push_str(&format!("{:>m$}+{}\n", "", "-".repeat(plot_w), m = margin));
+    // x tick labels at 0, 1/4, 1/2, 3/4, 1 of the axis
+    let mut ticks = vec![' '; plot_w + margin + 12];
+    for k in 0..=4 {
+        let t = k as f64 / 4.0;
+        let text = label(inv(t, x0, x1, spec.x_log));
+        let pos = margin + 1 + (t * (plot_w - 1) as f64).round() as usize;
+        let n = text.chars().count();
+        let start = if k == 4 {
+            (pos + 1).saturating_sub(n)
+        } else {
+            pos.saturating_sub(n / 2)
+        };
+        for (j, ch) in text.chars().enumerate() {
+            if let Some(slot) = ticks.get_mut(start + j) {
+                *slot = ch;
+            }
+        }
+    }
+    out.push_str(ticks.iter().collect::<String>().trim_end());
+    out.push('\n');
+    let axis = format!("{}{}", spec.x_label, if spec.x_log { "  (log)" } else { "" });
+    let pad = (margin + 1 + plot_w / 2).saturating_sub(axis.chars().count() / 2);
+    out.push_str(&format!("{:pad$}{axis}\n", "", pad = pad));
+    for l in legend {
+        out.push_str(&l);
+        out.push('\n');
+    }
+    out
+}
+
+fn round_sig(v: f64, digits: i32) -> f64 {
+    if v == 0.0 || !v.is_finite() {
+        return v;
+    }
+    let e = v.abs().log10().floor() as i32;
+    let f = 10f64.powi(digits - 1 - e);
+    (v * f).round() / f
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::chart::Series;
+
+    #[test]
+    fn a_rising_line_runs_from_lower_left_to_upper_right() {
+        let spec = ChartSpec {
+            title: "t".into(),
+            x_label: "x (1)".into(),
+            y_label: "y (1)".into(),
+            x_log: false,
+            y_log: false,
+            series: vec![
+                Series {
+                    name: "up".into(),
+                    points: vec![(0.0, 0.0), (1.0, 1.0)],
+                    style: SeriesStyle::Line,
+                },
+                Series {
+                    name: "dots".into(),
+                    points: vec![(0.5, f64::NAN), (1.0, 0.0)],
+                    style: SeriesStyle::Points,
+                },
+            ],
+        };
+        let text = render_text(&spec, 60, 20);
+        let rows: Vec<&str> = text.lines().filter(|l| l.contains('|')).collect();
+        let col = |l: &str, c: char| l.split_once('|').and_then(|(_, r)| r.find(c));
+        let starred: Vec<&&str> = rows.iter().filter(|l| col(l, '*').is_some()).collect();
+        let (top, bottom) = (starred.first().unwrap(), starred.last().unwrap());
+        // the highest '*' is right of the lowest: the line rises
+        assert!(col(top, '*').unwrap() > col(bottom, '*').unwrap() + 30, "{text}");
+        // the point (1, 0) sits on the lowest starred row, at its right end
+        assert!(bottom.trim_end().ends_with('o'), "{text}");
+        // the gap (NaN) is not drawn: one 'o' only
+        assert_eq!(
+            text.matches('o').count() - "o dots (points)".matches('o').count() - "up (line)".matches('o').count(),
+            1,
+            "{text}"
+        );
+        assert!(
+            text.contains("* up (line)") && text.contains("o dots (points)"),
+            "{text}"
+        );
+        assert!(text.lines().all(|l| l.chars().count() <= 60), "{text}");
+    }
+}

@@ -1,0 +1,152 @@
+//! `asperity figure ID`: a figure or table of [S] as data, a text chart and SVG/PNG files
+//! ([`crate::figure`]).
+//!
+//! ```text
+//! asperity figure --list
+//! asperity figure 1|2|...|8|table-1|FILE.toml [--format chart|table|csv|json]
+//!                 [--svg FILE] [--png FILE] [--gfmd [--grid N] [--seed S]] [--points N]
+//! ```
+
+use super::emit;
+use crate::chart;
+use crate::figure::compute::{self, GfmdChoice};
+use crate::figure::{self, spec, table1};
+use asperity::error::{Error, Result};
+use clap::{Args, ValueEnum};
+use std::path::PathBuf;
+
+/// Output format of `figure`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FigureFormat {
+    /// A text chart and the notes (plain text; works in pipes).
+    Chart,
+    /// The numbers, one block per series.
+    Table,
+    /// `series,x,y,note` (table-1: one row per column).
+    Csv,
+    /// One JSON object.
+    Json,
+}
+
+/// Arguments of `figure`.
+#[derive(Debug, Clone, Args)]
+pub struct FigureArgs {
+    /// 1 … 8, table-1, or a figure TOML file.
+    pub id: Option<String>,
+    /// Name every figure with one line.
+    #[arg(long)]
+    pub list: bool,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = FigureFormat::Chart)]
+    pub format: FigureFormat,
+    /// Write the chart as SVG.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Write the chart as PNG.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+    /// Add the brute-force GFMD points where the figure has them.
+    #[arg(long)]
+    pub gfmd: bool,
+    /// GFMD grid side N (default: the preset's reduced grid, 512 for both systems).
+    #[arg(long, requires = "gfmd", allow_hyphen_values = true)]
+    pub grid: Option<i64>,
+    /// GFMD seed.
+    #[arg(long, default_value_t = 1, requires = "gfmd", value_parser = super::whole_number_u64)]
+    pub seed: u64,
+    /// Number of x values (or σ* samples) instead of the figure file's.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::whole_number)]
+    pub points: Option<usize>,
+    /// Width of the text chart in characters.
+    #[arg(long, default_value_t = 100, value_parser = super::whole_number)]
+    pub width: usize,
+    /// Height of the text chart in lines.
+    #[arg(long, default_value_t = 32, value_parser = super::whole_number)]
+    pub height: usize,
+}
+
+/// Runs `asperity figure`.
+pub fn run(args: &FigureArgs) -> Result<()> {
+    if args.list {
+        for (id, d) in figure::list() {
+            emit(&format!("{id:<8} {d}"));
+        }
+        return Ok(());
+    }
+    let Some(id) = args.id.as_deref() else {
+        return Err(Error::field(
+            "figure",
+            "(none)",
+            "1, 2, 3, 4, 5, 6, 7, 8, table-1 or a figure TOML file (--list names them)",
+        ));
+    };
+    let gfmd = if args.gfmd {
+        let grid = match args.grid {
+            Some(n) if n < 4 => return Err(Error::field("--grid", n, "an integer N >= 4")),
+            Some(n) => Some(n as usize),
+            None => None,
+        };
+        Some(GfmdChoice { grid, seed: args.seed })
+    } else {
+        None
+    };
+    if !(20..=1000).contains(&args.width) {
+        return Err(Error::field("--width", args.width, "20 <= width <= 1000"));
+    }
+    if !(10..=1000).contains(&args.height) {
+        return Err(Error::field("--height", args.height, "10 <= height <= 1000"));
+    }
+    let data = if id == "table-1" {
+        if args.points.is_some() {
+            return Err(Error::field("--points", args.points.unwrap_or(0), "none for table-1"));
+        }
+        let t = table1::compute(gfmd)?;
+        match args.format {
+            FigureFormat::Table => emit(&t.table()),
+            FigureFormat::Csv => emit(&t.csv()),
+            FigureFormat::Json => emit(&serde_json::to_string_pretty(&t).expect("serialisable")),
+            FigureFormat::Chart => {}
+        }
+        let fig = t.figure();
+        if args.format == FigureFormat::Chart {
+            emit(&t.table());
+            emit("");
+            emit(chart::render_text(&fig.chart(), args.width, args.height).trim_end());
+        }
+        fig
+    } else {
+        let mut s = spec::resolve(id)?;
+        if let Some(n) = args.points {
+            if !(2..=100_000).contains(&n) {
+                return Err(Error::field("--points", n, "2 <= points <= 100000"));
+            }
+            s.points = n;
+        }
+        let data = compute::compute(&s, gfmd)?;
+        match args.format {
+            FigureFormat::Chart => {
+                emit(chart::render_text(&data.chart(), args.width, args.height).trim_end());
+                for n in &data.notes {
+                    emit(&format!("note: {n}"));
+                }
+            }
+            FigureFormat::Table => emit(&data.table()),
+            FigureFormat::Csv => emit(&data.csv()),
+            FigureFormat::Json => emit(&serde_json::to_string_pretty(&data).expect("serialisable")),
+        }
+        data
+    };
+    let spec = data.chart();
+    for (path, png) in [(&args.svg, false), (&args.png, true)] {
+        if let Some(p) = path {
+            let r = if png {
+                chart::write_png(&spec, p)
+            } else {
+                chart::write_svg(&spec, p)
+            };
+            r.map_err(|e| Error::Io(format!("cannot write {}: {e}", p.display())))?;
+            eprintln!("asperity figure: wrote {}", p.display());
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,464 @@
+//! Computing a figure's data: the theory curves (the engine, each point as `run` computes
+//! it), the closed forms, the values [S] states, and with `--gfmd` the brute-force points.
+
+use super::spec::{ClosedFormKind, FigureSpec, Overrides, XAxis, YAxis};
+use super::{DataPoint, DataSeries, FigureData};
+use crate::chart::SeriesStyle;
+use asperity::error::{Error, Result};
+use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec};
+use asperity::input::model::Model;
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use asperity::theory::closed_form;
+use asperity::theory::engine::{self, Evaluation, Options};
+use asperity::theory::knob::{self, Knob, KnobSpec};
+use asperity::theory::sweep::{self, SweepSpec};
+use rayon::prelude::*;
+use std::sync::atomic::AtomicBool;
+
+/// The scene of a curve: the preset's, then the figure's overrides, then the curve's.
+pub fn curve_scene(preset: &Preset, fig: &Overrides, curve: &Overrides) -> Result<Scene> {
+    let mut s = preset.scene()?;
+    for o in [fig, curve] {
+        if let Some(m) = o.model {
+            s.model = Model::named(m)?;
+        }
+        if let Some(p) = o.pressure {
+            s.pressure = p;
+        }
+        if let Some(t) = o.thickness_qr {
+            s.thickness_qr = t;
+        }
+        if let Some(g) = o.gamma {
+            s.gamma = g;
+        }
+    }
+    s.validate()?;
+    Ok(s)
+}
+
+/// Brute-force runs: grid side and seed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GfmdChoice {
+    /// Grid side N (None: the preset's `[gfmd]` grid).
+    pub grid: Option<usize>,
+    /// Seed of the random phases.
+    pub seed: u64,
+}
+
+fn x_label(x: XAxis) -> &'static str {
+    match x {
+        XAxis::Pressure => "p* = p/(E*ḡ)",
+        XAxis::Thickness => "t·q_r (slab thickness × roll-off wavenumber)",
+        XAxis::Gamma => "γ_s (J/m²)",
+        XAxis::Stress => "σ* = σ/(E*ḡ)",
+    }
+}
+
+fn y_label(y: YAxis) -> &'static str {
+    match y {
+        YAxis::AR => "a_r (relative contact area)",
+        YAxis::AROverP => "a_r/p*",
+        YAxis::MeanContactStress => "σ̄_c* (mean contact stress / E*ḡ)",
+        YAxis::ContactStressVariance => "⟨δσ_c²⟩* (variance / (E*ḡ)²)",
+        YAxis::MeanGapRel => "ū/h_rms (mean gap)",
+        YAxis::Pr => "Pr(σ*) (per unit σ*, ∫ = a_r)",
+    }
+}
+
+/// The x values of a sweep figure.
+pub fn x_values(spec: &FigureSpec) -> Vec<f64> {
+    let from = spec.from.unwrap_or(spec.to);
+    match spec.x {
+        XAxis::Pressure => SweepSpec {
+            from,
+            to: spec.to,
+            points: spec.points,
+        }
+        .pressures(),
+        XAxis::Thickness | XAxis::Gamma => KnobSpec {
+            knob: if spec.x == XAxis::Thickness {
+                Knob::Thickness
+            } else {
+                Knob::Gamma
+            },
+            from,
+            to: spec.to,
+            points: spec.points,
+        }
+        .values(),
+        XAxis::Stress => Vec::new(),
+    }
+}
+
+/// (a_r, σ̄_c*, ⟨δσ_c²⟩*) of an evaluation.
+fn y_of(y: YAxis, p: f64, a_r: f64, mean: f64, var: f64, gap: Option<f64>) -> Option<f64> {
+    let v = match y {
+        YAxis::AR => a_r,
+        YAxis::AROverP => a_r / p,
+        YAxis::MeanContactStress => mean,
+        YAxis::ContactStressVariance => var,
+        YAxis::MeanGapRel => gap?,
+        YAxis::Pr => return None,
+    };
+    v.is_finite().then_some(v)
+}
+
+fn point(x: f64, y: Option<f64>, note: Option<String>) -> DataPoint {
+    DataPoint { x, y, note }
+}
+
+/// One theory curve of a sweep figure.
+fn sweep_curve(spec: &FigureSpec, scene: &Scene) -> Result<Vec<DataPoint>> {
+    let opts = Options::default();
+    let xs = x_values(spec);
+    match spec.x {
+        XAxis::Pressure if spec.y == YAxis::MeanGapRel => {
+            // the gap needs the load sweep's shared table
+            let sw = sweep::sweep(
+                scene,
+                &SweepSpec {
+                    from: xs[0],
+                    to: *xs.last().expect("points >= 2"),
+                    points: xs.len(),
+                },
+                &opts,
+                None,
+            )?;
+            Ok(sw
+                .rows
+                .iter()
+                .map(|r| {
+                    let y = r.mean_gap_rel.is_finite().then_some(r.mean_gap_rel);
+                    point(r.p, y, (!r.converged).then(|| "did not converge".to_string()))
+                })
+                .collect())
+        }
+        XAxis::Pressure => {
+            // each load on its own, as `run --pressure P` computes it
+            let results: Vec<Result<Evaluation>> = xs
+                .par_iter()
+                .map(|&p| {
+                    let mut s = scene.clone();
+                    s.pressure = p;
+                    engine::evaluate(&s, &opts)
+                })
+                .collect();
+            collect_points(spec, &xs, results)
+        }
+        XAxis::Thickness | XAxis::Gamma => {
+            let knob = if spec.x == XAxis::Thickness {
+                Knob::Thickness
+            } else {
+                Knob::Gamma
+            };
+            let ks = KnobSpec {
+                knob,
+                from: xs[0],
+                to: *xs.last().expect("points >= 2"),
+                points: xs.len(),
+            };
+            let with_gap = spec.y == YAxis::MeanGapRel;
+            let pts = knob::knob_sweep(scene, &ks, &opts, with_gap, None)?;
+            Ok(pts
+                .into_iter()
+                .map(|pt| match pt.result {
+                    Ok(e) => {
+                        let gap = pt.gap.ok().flatten().map(|g| g.relative);
+                        let s = &e.stats;
+                        point(
+                            pt.value,
+                            y_of(
+                                spec.y,
+                                scene.pressure,
+                                s.a_r,
+                                s.mean_contact_stress,
+                                s.contact_stress_variance,
+                                gap,
+                            ),
+                            None,
+                        )
+                    }
+                    Err(e) => point(pt.value, None, Some(e.to_string())),
+                })
+                .collect())
+        }
+        XAxis::Stress => unreachable!("stress figures are not sweeps"),
+    }
+}
+
+fn collect_points(spec: &FigureSpec, xs: &[f64], results: Vec<Result<Evaluation>>) -> Result<Vec<DataPoint>> {
+    let mut out = Vec::with_capacity(xs.len());
+    for (&x, r) in xs.iter().zip(results) {
+        match r {
+            Ok(e) => {
+                let s = &e.stats;
+                out.push(point(
+                    x,
+                    y_of(spec.y, x, s.a_r, s.mean_contact_stress, s.contact_stress_variance, None),
+                    None,
+                ))
+            }
+            Err(e @ Error::NotConverged { .. }) => out.push(point(x, None, Some(e.to_string()))),
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(out)
+}
+
+/// Pr(σ*) of one curve: the engine's sample on [0 or −σ_a*, `to`] with `points` values.
+fn stress_curve(spec: &FigureSpec, scene: &Scene) -> Result<(Vec<DataPoint>, Evaluation)> {
+    let opts = Options {
+        sigma_points: spec.points,
+        sigma_max: Some(spec.to),
+        ..Options::default()
+    };
+    let e = engine::evaluate(scene, &opts)?;
+    let pts = e
+        .stats
+        .pr
+        .points()
+        .into_iter()
+        .map(|(x, y)| point(x, Some(y), None))
+        .collect();
+    Ok((pts, e))
+}
+
+/// Computes the figure's data (theory, closed forms, [S] values; GFMD when `gfmd` is given).
+pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData> {
+    let preset = Preset::resolve(&spec.preset)?;
+    let mut data = FigureData {
+        id: spec.id.clone(),
+        title: spec.title.clone(),
+        preset: preset.name.clone(),
+        x_label: x_label(spec.x).to_string(),
+        y_label: y_label(spec.y).to_string(),
+        x_log: spec.x_log,
+        y_log: spec.y_log,
+        series: Vec::new(),
+        notes: Vec::new(),
+    };
+    let scenes: Vec<Scene> = spec
+        .curve
+        .iter()
+        .map(|c| curve_scene(&preset, &spec.overrides(), &c.overrides()))
+        .collect::<Result<_>>()?;
+    let mut widths: Vec<(u8, f64, f64)> = Vec::new(); // (model, p*, Δ*) for the asymptotes
+    for (c, scene) in spec.curve.iter().zip(&scenes) {
+        let points = if spec.x == XAxis::Stress {
+            match stress_curve(spec, scene) {
+                Ok((pts, e)) => {
+                    data.notes.push(format!(
+                        "{}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}, Δ* = {:.4}",
+                        c.label, e.stats.a_r, e.stats.mean_contact_stress, e.stats.contact_stress_variance, e.width
+                    ));
+                    if let Some(n) = scene.model.number() {
+                        widths.push((n, scene.pressure, e.width));
+                    }
+                    pts
+                }
+                Err(e @ Error::NotConverged { .. }) => {
+                    data.notes.push(format!("{}: {e}", c.label));
+                    Vec::new()
+                }
+                Err(e) => return Err(e),
+            }
+        } else {
+            sweep_curve(spec, scene)?
+        };
+        for p in points.iter().filter(|p| p.y.is_none()) {
+            data.notes.push(format!(
+                "{} at x = {:e}: no value ({})",
+                c.label,
+                p.x,
+                p.note.as_deref().unwrap_or("unavailable")
+            ));
+        }
+        data.series.push(DataSeries {
+            name: c.label.clone(),
+            style: SeriesStyle::Line,
+            points,
+        });
+    }
+    for cf in &spec.closed_form {
+        let points: Vec<DataPoint> = match cf.kind {
+            ClosedFormKind::Eq18 => x_values(spec)
+                .into_iter()
+                .map(|p| {
+                    let a = closed_form::eq18_area(p);
+                    point(p, Some(if spec.y == YAxis::AROverP { a / p } else { a }), None)
+                })
+                .collect(),
+            ClosedFormKind::PrSmallStress | ClosedFormKind::PrLargeStress => {
+                let m = cf.model.expect("validated");
+                let Some(&(_, p, d)) = widths.iter().find(|w| w.0 == m) else {
+                    data.notes
+                        .push(format!("{}: no curve of model {m} to take Δ* from", cf.label));
+                    continue;
+                };
+                // log-spaced σ* over the figure's range
+                let n = 200;
+                let lo = spec.to * 1e-4;
+                (0..n)
+                    .map(|i| lo * (spec.to / lo).powf(i as f64 / (n - 1) as f64))
+                    .map(|s| {
+                        let y = if cf.kind == ClosedFormKind::PrSmallStress {
+                            closed_form::pr_small_stress(s, p, d)
+                        } else {
+                            closed_form::pr_large_stress(s, p, d)
+                        };
+                        point(s, Some(y), None)
+                    })
+                    .collect()
+            }
+        };
+        data.series.push(DataSeries {
+            name: cf.label.clone(),
+            style: SeriesStyle::Dashed,
+            points,
+        });
+    }
+    let mut labels: Vec<&str> = Vec::new();
+    for pp in &spec.paper {
+        if !labels.contains(&pp.label.as_str()) {
+            labels.push(&pp.label);
+        }
+    }
+    for l in labels {
+        data.series.push(DataSeries {
+            name: l.to_string(),
+            style: SeriesStyle::Points,
+            points: spec
+                .paper
+                .iter()
+                .filter(|p| p.label == l)
+                .map(|p| point(p.x, Some(p.y), None))
+                .collect(),
+        });
+    }
+    if let Some(choice) = gfmd {
+        gfmd_series(spec, &preset, &scenes, choice, &mut data)?;
+    }
+    Ok(data)
+}
+
+/// One GFMD run of `scene` on the chosen grid.
+pub fn gfmd_run(preset: &Preset, scene: &Scene, choice: GfmdChoice) -> Result<GfmdResult> {
+    let mut grid = preset
+        .gfmd
+        .as_ref()
+        .map(GridSpec::from_preset)
+        .unwrap_or(crate::cli::gfmd::DEFAULT_GRID);
+    if let Some(n) = choice.grid {
+        grid = grid.with_grid(n)?;
+    }
+    let setup = GfmdSetup {
+        scene: scene.clone(),
+        grid,
+        seed: choice.seed,
+        surface: None,
+        // the reduced grid keeps the full system's gamma_glo and Tabor parameter
+        rescale: true,
+    };
+    let opts = GfmdOptions {
+        tolerance: 1e-8,
+        ..GfmdOptions::default()
+    };
+    gfmd::run(&setup, &opts, &mut |_| {}, &AtomicBool::new(false))
+}
+
+fn gfmd_series(
+    spec: &FigureSpec,
+    preset: &Preset,
+    scenes: &[Scene],
+    choice: GfmdChoice,
+    data: &mut FigureData,
+) -> Result<()> {
+    // GFMD does not depend on the model: the figure's scene without the curves' models
+    let base = curve_scene(preset, &spec.overrides(), &Overrides::default())?;
+    if spec.x == XAxis::Stress {
+        let mut done: Vec<(f64, f64, f64)> = Vec::new();
+        for (c, s) in spec.curve.iter().zip(scenes) {
+            let key = (s.pressure, s.thickness_qr, s.gamma);
+            if !spec.gfmd || done.contains(&key) {
+                continue;
+            }
+            done.push(key);
+            let name = if spec.curve.iter().all(|c| c.thickness_qr.is_none()) {
+                "GFMD".to_string()
+            } else {
+                format!("GFMD, {}", c.label)
+            };
+            match gfmd_run(preset, s, choice) {
+                Ok(r) => {
+                    data.notes.push(format!(
+                        "{name}: {}² grid, seed {}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}",
+                        r.grid, choice.seed, r.stats.a_r, r.stats.mean_contact_stress, r.stats.contact_stress_variance
+                    ));
+                    data.series.push(DataSeries {
+                        name: format!("{name} ({}²)", r.grid),
+                        style: SeriesStyle::Points,
+                        points: r
+                            .stats
+                            .pr
+                            .points()
+                            .into_iter()
+                            .map(|(x, y)| point(x, Some(y), None))
+                            .collect(),
+                    });
+                }
+                Err(e) => data.notes.push(format!("{name}: {e}")),
+            }
+        }
+        return Ok(());
+    }
+    let mut points = Vec::new();
+    let mut grid = 0;
+    for &x in &spec.gfmd_at {
+        let mut s = base.clone();
+        match spec.x {
+            XAxis::Pressure => s.pressure = x,
+            XAxis::Thickness => s.thickness_qr = x,
+            XAxis::Gamma => s.gamma = x,
+            XAxis::Stress => {}
+        }
+        match gfmd_run(preset, &s, choice) {
+            Ok(r) => {
+                grid = r.grid;
+                let st = &r.stats;
+                points.push(point(
+                    x,
+                    y_of(
+                        spec.y,
+                        s.pressure,
+                        st.a_r,
+                        st.mean_contact_stress,
+                        st.contact_stress_variance,
+                        Some(r.mean_gap_rel),
+                    ),
+                    None,
+                ));
+            }
+            Err(e) => {
+                data.notes.push(format!("GFMD at x = {x:e}: {e}"));
+                points.push(point(x, None, Some(e.to_string())));
+            }
+        }
+    }
+    if grid > 0 {
+        data.notes.push(format!(
+            "GFMD: {grid}² grid (the preset's reduced grid unless --grid), seed {}",
+            choice.seed
+        ));
+    }
+    data.series.push(DataSeries {
+        name: if grid > 0 {
+            format!("GFMD ({grid}²)")
+        } else {
+            "GFMD".into()
+        },
+        style: SeriesStyle::Points,
+        points,
+    });
+    Ok(())
+}

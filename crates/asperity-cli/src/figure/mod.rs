@@ -1,0 +1,148 @@
+//! `asperity figure`: the figures and Table 1 of [S], computed on the paper's systems with
+//! the paper's models, as data (table, CSV, JSON), a text chart, and SVG/PNG files.
+//!
+//! Figures 1–8 are described by TOML files ([`spec`], `figures/` in the repository, built
+//! into the binary); Table 1 is [`table1`]. [`compute`] evaluates the curves, [`FigureData`]
+//! holds the result and turns into a [`crate::chart::ChartSpec`].
+
+pub mod compute;
+pub mod spec;
+pub mod table1;
+
+use crate::chart::{ChartSpec, Series, SeriesStyle};
+use serde::Serialize;
+
+/// One point of a series; `y` is None where the solver did not converge (with the reason).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DataPoint {
+    /// x.
+    pub x: f64,
+    /// y (null: no value).
+    pub y: Option<f64>,
+    /// Why there is no value.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+/// One series of a figure.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DataSeries {
+    /// Legend label.
+    pub name: String,
+    /// How it is drawn.
+    #[serde(serialize_with = "style_name")]
+    pub style: SeriesStyle,
+    /// The points.
+    pub points: Vec<DataPoint>,
+}
+
+fn style_name<S: serde::Serializer>(s: &SeriesStyle, ser: S) -> Result<S::Ok, S::Error> {
+    ser.serialize_str(match s {
+        SeriesStyle::Line => "line",
+        SeriesStyle::Points => "points",
+        SeriesStyle::Dashed => "dashed",
+    })
+}
+
+/// A computed figure (the JSON of `asperity figure ID --format json`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FigureData {
+    /// Figure id.
+    pub id: String,
+    /// Title.
+    pub title: String,
+    /// Preset (system) name.
+    pub preset: String,
+    /// x-axis title with units.
+    pub x_label: String,
+    /// y-axis title with units.
+    pub y_label: String,
+    /// Log x axis.
+    pub x_log: bool,
+    /// Log y axis.
+    pub y_log: bool,
+    /// Theory curves, closed forms, [S] values, GFMD points.
+    pub series: Vec<DataSeries>,
+    /// Scalars, grids and anything that did not converge.
+    pub notes: Vec<String>,
+}
+
+impl FigureData {
+    /// The chart of this figure.
+    pub fn chart(&self) -> ChartSpec {
+        ChartSpec {
+            title: self.title.clone(),
+            x_label: self.x_label.clone(),
+            y_label: self.y_label.clone(),
+            x_log: self.x_log,
+            y_log: self.y_log,
+            series: self
+                .series
+                .iter()
+                .map(|s| Series {
+                    name: s.name.clone(),
+                    points: s.points.iter().map(|p| (p.x, p.y.unwrap_or(f64::NAN))).collect(),
+                    style: s.style,
+                })
+                .collect(),
+        }
+    }
+
+    /// CSV: `series,x,y,note`, one row per point; no value is an empty cell.
+    pub fn csv(&self) -> String {
+        let mut out = String::from("series,x,y,note");
+        let q = |s: &str| {
+            if s.contains([',', '"', '\n']) {
+                format!("\"{}\"", s.replace('"', "\"\""))
+            } else {
+                s.to_string()
+            }
+        };
+        for s in &self.series {
+            for p in &s.points {
+                out.push_str(&format!(
+                    "\n{},{:e},{},{}",
+                    q(&s.name),
+                    p.x,
+                    p.y.map_or(String::new(), |y| format!("{y:e}")),
+                    q(p.note.as_deref().unwrap_or(""))
+                ));
+            }
+        }
+        out
+    }
+
+    /// A table for reading: one block per series.
+    pub fn table(&self) -> String {
+        let mut out = format!("{}\n(system: {})\n", self.title, self.preset);
+        for s in &self.series {
+            out.push_str(&format!("\n{}\n  {:>14}  {:>14}\n", s.name, "x", "y"));
+            for p in &s.points {
+                let y = p.y.map_or("–".to_string(), |y| format!("{y:.6e}"));
+                out.push_str(&format!("  {:>14.6e}  {:>14}\n", p.x, y));
+            }
+        }
+        if !self.notes.is_empty() {
+            out.push_str("\nnotes:\n");
+            for n in &self.notes {
+                out.push_str(&format!("  {n}\n"));
+            }
+        }
+        out.trim_end().to_string()
+    }
+}
+
+/// The figures `asperity figure --list` names: (id, one line).
+pub fn list() -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = spec::BUILTIN
+        .iter()
+        .map(|(id, text)| {
+            let d = spec::FigureSpec::parse(text, id)
+                .map(|s| s.description)
+                .unwrap_or_else(|e| format!("(invalid: {e})"));
+            (id.to_string(), d)
+        })
+        .collect();
+    out.push(("table-1".into(), table1::DESCRIPTION.into()));
+    out
+}

@@ -1,0 +1,341 @@
+//! Figure files: what a figure of [S] plots, as TOML (`figures/fig-N.toml`, built into the
+//! binary; any other file can be given by path). Parsed and validated like presets: unknown
+//! or mistyped fields give one line naming the file, the line and the key.
+//!
+//! ```toml
+//! id = "7"                      # what `asperity figure ID` calls it
+//! title = "..."                 # chart title
+//! description = "..."           # one line for `asperity figure --list`
+//! preset = "system-2"           # the system
+//! x = "thickness"               # pressure | thickness | gamma | stress
+//! y = "a_r"                     # a_r | a_r_over_p | mean_contact_stress |
+//!                               # contact_stress_variance | mean_gap_rel | pr
+//! x_log = true                  # log axes (default false)
+//! y_log = false
+//! from = 0.01                   # x range (stress figures: only `to`, the largest σ*)
+//! to = 10.0
+//! points = 13                   # values of x (stress figures: σ* samples)
+//! pressure = 0.005              # scene overrides for every curve (optional):
+//! thickness_qr = inf            #   p*, t·q_r, γ_s (J/m²), model
+//! gamma = 0.157
+//! model = 4
+//! gfmd_at = [0.1, 0.3]          # x values of the brute-force points (`--gfmd`)
+//! gfmd = true                   # stress figures: a GFMD histogram per curve scene
+//!
+//! [[curve]]                     # one theory curve; the same overrides, per curve
+//! label = "model 3"
+//! model = 3
+//!
+//! [[closed_form]]               # a reference curve: eq18 | pr_small_stress | pr_large_stress
+//! kind = "eq18"
+//! label = "eq. (18)"
+//! model = 1                     # (asymptotes: the curve whose width Δ they use)
+//!
+//! [[paper]]                     # a value [S] states in its text or tables, drawn as a point
+//! label = "[S] Table 1: GFMD"
+//! x = 0.01
+//! y = 0.4963
+//! ```
+
+use asperity::error::{Error, Result};
+use asperity::input::preset::{toml_error_message, Preset};
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// The figures of [S] shipped with the binary: (id, file text).
+pub const BUILTIN: [(&str, &str); 8] = [
+    ("1", include_str!("../../../../figures/fig-1.toml")),
+    ("2", include_str!("../../../../figures/fig-2.toml")),
+    ("3", include_str!("../../../../figures/fig-3.toml")),
+    ("4", include_str!("../../../../figures/fig-4.toml")),
+    ("5", include_str!("../../../../figures/fig-5.toml")),
+    ("6", include_str!("../../../../figures/fig-6.toml")),
+    ("7", include_str!("../../../../figures/fig-7.toml")),
+    ("8", include_str!("../../../../figures/fig-8.toml")),
+];
+
+/// The x axis of a figure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum XAxis {
+    /// p* (a load sweep).
+    Pressure,
+    /// t·q_r (a thickness sweep at the figure's p*).
+    Thickness,
+    /// γ_s in J/m² (at the figure's p*).
+    Gamma,
+    /// σ* (the stress distribution at the figure's p*).
+    Stress,
+}
+
+/// The y axis of a figure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum YAxis {
+    /// a_r.
+    AR,
+    /// a_r/p*.
+    AROverP,
+    /// σ̄_c*.
+    MeanContactStress,
+    /// ⟨δσ_c²⟩*.
+    ContactStressVariance,
+    /// ū/h_rms.
+    MeanGapRel,
+    /// Pr(σ*) (with x = stress).
+    Pr,
+}
+
+/// A closed-form reference curve.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ClosedFormKind {
+    /// a_r(p*) of [S-18] (or a_r/p* when y is a_r_over_p).
+    Eq18,
+    /// Pr(σ) ≈ σ·2pφ(p/Δ)/Δ³, the linear small-stress asymptote.
+    PrSmallStress,
+    /// Pr(σ) ≈ σ·2pφ(σ/Δ)/Δ³, the Gaussian large-stress asymptote.
+    PrLargeStress,
+}
+
+/// Scene overrides of a figure or a curve (absent: the preset's or the figure's).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Overrides {
+    /// p*.
+    pub pressure: Option<f64>,
+    /// t·q_r (`inf`: semi-infinite).
+    pub thickness_qr: Option<f64>,
+    /// γ_s (J/m²).
+    pub gamma: Option<f64>,
+    /// Model 1–4.
+    pub model: Option<u8>,
+}
+
+/// One theory curve.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct CurveSpec {
+    /// Legend label.
+    pub label: String,
+    /// p*.
+    pub pressure: Option<f64>,
+    /// t·q_r.
+    pub thickness_qr: Option<f64>,
+    /// γ_s (J/m²).
+    pub gamma: Option<f64>,
+    /// Model 1–4.
+    pub model: Option<u8>,
+}
+
+impl CurveSpec {
+    /// The curve's overrides.
+    pub fn overrides(&self) -> Overrides {
+        Overrides {
+            pressure: self.pressure,
+            thickness_qr: self.thickness_qr,
+            gamma: self.gamma,
+            model: self.model,
+        }
+    }
+}
+
+/// One closed-form reference curve.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClosedFormSpec {
+    /// Which formula.
+    pub kind: ClosedFormKind,
+    /// Legend label.
+    pub label: String,
+    /// For the asymptotes: the model whose width Δ (at the figure's scene) they use.
+    pub model: Option<u8>,
+}
+
+/// A value stated in [S]'s text or tables.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct PaperPoint {
+    /// Legend label (points with the same label form one series).
+    pub label: String,
+    /// x.
+    pub x: f64,
+    /// y.
+    pub y: f64,
+}
+
+/// A parsed, validated figure file.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FigureSpec {
+    /// Identifier (`asperity figure ID`).
+    pub id: String,
+    /// Chart title.
+    pub title: String,
+    /// One line for `--list`.
+    pub description: String,
+    /// Preset name or path.
+    pub preset: String,
+    /// x axis.
+    pub x: XAxis,
+    /// y axis.
+    pub y: YAxis,
+    /// Logarithmic x axis.
+    #[serde(default)]
+    pub x_log: bool,
+    /// Logarithmic y axis.
+    #[serde(default)]
+    pub y_log: bool,
+    /// First x (sweeps; stress figures ignore it).
+    pub from: Option<f64>,
+    /// Last x (sweeps) or largest σ* (stress figures).
+    pub to: f64,
+    /// Number of x values.
+    pub points: usize,
+    /// p* of every curve (default the preset's).
+    pub pressure: Option<f64>,
+    /// t·q_r of every curve.
+    pub thickness_qr: Option<f64>,
+    /// γ_s of every curve.
+    pub gamma: Option<f64>,
+    /// Model of every curve.
+    pub model: Option<u8>,
+    /// x values of the GFMD points (sweeps).
+    #[serde(default)]
+    pub gfmd_at: Vec<f64>,
+    /// Stress figures: one GFMD histogram per curve scene.
+    #[serde(default)]
+    pub gfmd: bool,
+    /// Theory curves.
+    #[serde(default)]
+    pub curve: Vec<CurveSpec>,
+    /// Closed-form reference curves.
+    #[serde(default)]
+    pub closed_form: Vec<ClosedFormSpec>,
+    /// Values stated in [S].
+    #[serde(default)]
+    pub paper: Vec<PaperPoint>,
+}
+
+fn bad(source: &str, message: String) -> Error {
+    Error::Preset {
+        source: source.to_string(),
+        message,
+    }
+}
+
+impl FigureSpec {
+    /// The figure-wide overrides.
+    pub fn overrides(&self) -> Overrides {
+        Overrides {
+            pressure: self.pressure,
+            thickness_qr: self.thickness_qr,
+            gamma: self.gamma,
+            model: self.model,
+        }
+    }
+
+    /// Parses TOML text; `source` names the file in errors (the same one-line errors as
+    /// presets: `preset SOURCE: line N: key: what`).
+    pub fn parse(text: &str, source: &str) -> Result<FigureSpec> {
+        let spec: FigureSpec = toml::from_str(text).map_err(|e| bad(source, toml_error_message(text, &e)))?;
+        spec.validate().map_err(|m| bad(source, m))?;
+        Ok(spec)
+    }
+
+    /// Reads a figure file.
+    pub fn load(path: &Path) -> Result<FigureSpec> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::Io(format!("cannot read figure {}: {e}", path.display())))?;
+        FigureSpec::parse(&text, &path.display().to_string())
+    }
+
+    /// Every field checked; the message names the key.
+    fn validate(&self) -> std::result::Result<(), String> {
+        let key = |k: &str, v: String, allowed: &str| format!("{k} = {v}: allowed {allowed}");
+        Preset::resolve(&self.preset).map_err(|e| format!("preset: {e}"))?;
+        let stress = self.x == XAxis::Stress;
+        if stress != (self.y == YAxis::Pr) {
+            return Err(key(
+                "y",
+                format!("{:?}", self.y).to_lowercase(),
+                "pr exactly when x = \"stress\"",
+            ));
+        }
+        if !(self.to.is_finite() && self.to > 0.0) {
+            return Err(key("to", self.to.to_string(), "a number > 0"));
+        }
+        if !(2..=100_000).contains(&self.points) {
+            return Err(key("points", self.points.to_string(), "2 <= points <= 100000"));
+        }
+        if !stress {
+            match self.from {
+                Some(f) if f.is_finite() && f >= 0.0 && f < self.to => {
+                    if f == 0.0 && (self.x_log || self.x != XAxis::Gamma) {
+                        return Err(key("from", "0".into(), "a number > 0 (log-spaced axis)"));
+                    }
+                }
+                Some(f) => return Err(key("from", f.to_string(), "0 <= from < to")),
+                None => return Err("from: missing (the first x of a sweep)".into()),
+            }
+        }
+        let check_model = |k: &str, m: Option<u8>| match m {
+            Some(n) if !(1..=4).contains(&n) => Err(key(k, n.to_string(), "1, 2, 3 or 4")),
+            _ => Ok(()),
+        };
+        check_model("model", self.model)?;
+        for (i, c) in self.curve.iter().enumerate() {
+            check_model(&format!("curve[{}].model", i + 1), c.model)?;
+        }
+        for (i, c) in self.closed_form.iter().enumerate() {
+            check_model(&format!("closed_form[{}].model", i + 1), c.model)?;
+            let ok = match c.kind {
+                ClosedFormKind::Eq18 => self.x == XAxis::Pressure && matches!(self.y, YAxis::AR | YAxis::AROverP),
+                _ => stress && c.model.is_some(),
+            };
+            if !ok {
+                return Err(key(
+                    &format!("closed_form[{}].kind", i + 1),
+                    format!("{:?}", c.kind).to_lowercase(),
+                    "eq18 on an a_r or a_r_over_p sweep over pressure; the Pr asymptotes on a stress figure, with a model",
+                ));
+            }
+        }
+        if self.curve.is_empty() {
+            return Err("curve: at least one [[curve]] is needed".into());
+        }
+        if stress && !self.gfmd_at.is_empty() {
+            return Err(key(
+                "gfmd_at",
+                format!("{:?}", self.gfmd_at),
+                "none on a stress figure (use gfmd = true)",
+            ));
+        }
+        if !stress && self.gfmd {
+            return Err(key("gfmd", "true".into(), "false on a sweep (use gfmd_at = [x, ...])"));
+        }
+        // every scene must be valid: the preset's scene with the overrides
+        let preset = Preset::resolve(&self.preset).map_err(|e| format!("preset: {e}"))?;
+        for (i, c) in self.curve.iter().enumerate() {
+            super::compute::curve_scene(&preset, &self.overrides(), &c.overrides())
+                .map_err(|e| format!("curve[{}]: {e}", i + 1))?;
+        }
+        Ok(())
+    }
+}
+
+/// Resolves `id_or_path`: an existing file, else a built-in figure id.
+pub fn resolve(id_or_path: &str) -> Result<FigureSpec> {
+    let p = Path::new(id_or_path);
+    if p.is_file() {
+        return FigureSpec::load(p);
+    }
+    if let Some((_, text)) = BUILTIN.iter().find(|(n, _)| *n == id_or_path) {
+        return FigureSpec::parse(text, &format!("figures/fig-{id_or_path}.toml"));
+    }
+    Err(Error::field(
+        "figure",
+        asperity::error::fmt_text(id_or_path),
+        "1, 2, 3, 4, 5, 6, 7, 8, table-1 or a figure TOML file",
+    ))
+}

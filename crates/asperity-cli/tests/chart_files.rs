@@ -1,0 +1,93 @@
+//! The chart renderer's files: SVG parses as XML and names every series; PNG is a PNG of the
+//! promised size; empty and gappy series do not break either.
+
+use asperity_cli::chart::{write_png, write_svg, ChartSpec, Series, SeriesStyle, PNG_SIZE};
+
+fn spec(x_log: bool, y_log: bool) -> ChartSpec {
+    let curve: Vec<(f64, f64)> = (0..50)
+        .map(|i| {
+            let p = 10f64.powf(-3.0 + 3.0 * i as f64 / 49.0);
+            (p, 2.0 - p)
+        })
+        .collect();
+    ChartSpec {
+        title: "a_r/p* against p*".into(),
+        x_label: "p* = p/(E*ḡ)".into(),
+        y_label: "a_r/p*".into(),
+        x_log,
+        y_log,
+        series: vec![
+            Series {
+                name: "model 3".into(),
+                points: curve.clone(),
+                style: SeriesStyle::Line,
+            },
+            Series {
+                name: "eq. (18)".into(),
+                points: curve.iter().map(|&(x, y)| (x, 0.9 * y)).collect(),
+                style: SeriesStyle::Dashed,
+            },
+            Series {
+                name: "GFMD (512²)".into(),
+                points: vec![(1e-2, 1.9), (f64::NAN, 1.0), (1e-1, -1.0), (0.5, 1.5)],
+                style: SeriesStyle::Points,
+            },
+            Series {
+                name: "failed series".into(),
+                points: vec![],
+                style: SeriesStyle::Line,
+            },
+        ],
+    }
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("asperity-chart-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+#[test]
+fn svg_is_xml_and_names_every_series() {
+    for (xl, yl) in [(false, false), (true, false), (false, true), (true, true)] {
+        let path = tmp(&format!("c-{xl}-{yl}.svg"));
+        write_svg(&spec(xl, yl), &path).unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let doc = roxmltree::Document::parse(&text).expect("SVG parses as XML");
+        assert_eq!(doc.root_element().tag_name().name(), "svg");
+        let texts: Vec<String> = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .filter_map(|n| n.text().map(|t| t.trim().to_string()))
+            .collect();
+        for name in [
+            "model 3",
+            "eq. (18)",
+            "GFMD (512²)",
+            "failed series",
+            "a_r/p* against p*",
+            "p* = p/(E*ḡ)",
+        ] {
+            assert!(texts.iter().any(|t| t == name), "{name} missing from {texts:?}");
+        }
+    }
+}
+
+#[test]
+fn png_has_the_promised_size() {
+    let path = tmp("c.png");
+    write_png(&spec(true, false), &path).unwrap();
+    let bytes = std::fs::read(&path).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    // IHDR: width and height, big-endian, at bytes 16..24
+    let w = u32::from_be_bytes(bytes[16..20].try_into().unwrap());
+    let h = u32::from_be_bytes(bytes[20..24].try_into().unwrap());
+    assert_eq!((w, h), PNG_SIZE);
+}
+
+#[test]
+fn an_unwritable_path_is_an_io_error_not_a_panic() {
+    let bad = std::path::Path::new("/nonexistent-dir/x/y.svg");
+    assert!(write_svg(&spec(false, false), bad).is_err());
+    assert!(write_png(&spec(false, false), std::path::Path::new("/nonexistent-dir/x/y.png")).is_err());
+}

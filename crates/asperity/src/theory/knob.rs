@@ -1,0 +1,263 @@
+//! Sweeps over one knob of a scene other than the load: the slab thickness t·q_r or the
+//! surface energy γ_s, at the scene's p*.
+//!
+//! Each value is an independent scene, evaluated cold by [`engine::evaluate`] with the
+//! caller's options (with [`engine::Options::default`] a point is bit for bit what
+//! `asperity run` gives for the same scene), in parallel: the results do not depend on the
+//! number of threads. A value whose solver does not converge is kept as an error and the
+//! sweep goes on; invalid input ends it. The mean gap [S-12], optional because it needs a
+//! load sweep up to full contact per value, comes from [`gap::mean_gap`].
+//!
+//! Spacing: t·q_r is log-spaced (it spans decades, [S] Fig. 7 runs from 0.01 to ∞); γ_s is
+//! spaced linearly (so that a sweep may start at γ_s = 0, the adhesionless limit).
+
+use crate::error::{Error, Field, Result};
+use crate::input::scene::{Scene, SURFACE_ENERGY_RANGE, THICKNESS_RANGE};
+use crate::theory::engine::{self, Evaluation, Options};
+use crate::theory::gap::{self, MeanGap};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// The knob a sweep turns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Knob {
+    /// t·q_r (log-spaced).
+    Thickness,
+    /// γ_s in J/m² (linearly spaced).
+    Gamma,
+}
+
+impl Knob {
+    /// The field the knob sets (for error messages).
+    pub fn field(self) -> Field {
+        match self {
+            Knob::Thickness => Field::Thickness,
+            Knob::Gamma => Field::SurfaceEnergy,
+        }
+    }
+
+    /// The scene with the knob set to `v`.
+    pub fn apply(self, scene: &Scene, v: f64) -> Scene {
+        let mut s = scene.clone();
+        match self {
+            Knob::Thickness => s.thickness_qr = v,
+            Knob::Gamma => s.gamma = v,
+        }
+        s
+    }
+}
+
+/// The values of a knob sweep.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KnobSpec {
+    /// Which knob.
+    pub knob: Knob,
+    /// First value.
+    pub from: f64,
+    /// Last value (above `from`, or equal with one point).
+    pub to: f64,
+    /// Number of values (1 ..= 10000).
+    pub points: usize,
+}
+
+impl KnobSpec {
+    /// Checks the range against the knob's allowed range.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming [`Field::SweepFrom`], [`Field::SweepTo`] or
+    /// [`Field::SweepPoints`].
+    pub fn validate(&self) -> Result<()> {
+        let (lo, hi, what) = match self.knob {
+            Knob::Thickness => (THICKNESS_RANGE.0, THICKNESS_RANGE.1, "t*q_r"),
+            Knob::Gamma => (SURFACE_ENERGY_RANGE.0, SURFACE_ENERGY_RANGE.1, "gamma_s"),
+        };
+        let allowed = format!("{lo:e} <= {what} <= {hi:e}");
+        for (field, v) in [(Field::SweepFrom, self.from), (Field::SweepTo, self.to)] {
+            if !(v >= lo && v <= hi) {
+                return Err(Error::invalid(field, v, allowed.clone()));
+            }
+        }
+        if !(1..=10_000).contains(&self.points) {
+            return Err(Error::invalid(
+                Field::SweepPoints,
+                self.points as f64,
+                "1 <= points <= 10000",
+            ));
+        }
+        if self.points > 1 && self.to <= self.from {
+            return Err(Error::invalid(
+                Field::SweepTo,
+                self.to,
+                format!(
+                    "a value above the first {} (or a single point)",
+                    crate::error::fmt_value(self.from)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The values, ascending: log-spaced for t·q_r, linear for γ_s.
+    pub fn values(&self) -> Vec<f64> {
+        if self.points == 1 {
+            return vec![self.from];
+        }
+        let n = (self.points - 1) as f64;
+        (0..self.points)
+            .map(|i| {
+                let t = i as f64 / n;
+                // the ends exactly as given
+                if i == 0 {
+                    return self.from;
+                }
+                if i + 1 == self.points {
+                    return self.to;
+                }
+                match self.knob {
+                    Knob::Thickness => (self.from.ln() + t * (self.to / self.from).ln()).exp(),
+                    Knob::Gamma => self.from + t * (self.to - self.from),
+                }
+            })
+            .collect()
+    }
+}
+
+/// One value of a knob sweep.
+#[derive(Debug)]
+pub struct KnobPoint {
+    /// The knob's value.
+    pub value: f64,
+    /// The scene at that value.
+    pub scene: Scene,
+    /// The evaluation, or why the solver did not converge.
+    pub result: std::result::Result<Evaluation, Error>,
+    /// The mean gap (`None` when not asked for, or p* ≤ 0), or why it is unavailable.
+    pub gap: std::result::Result<Option<MeanGap>, Error>,
+}
+
+/// Evaluates the scene at every value of `spec` (see the module docs); with `with_gap` the
+/// mean gap too. Cancellation (`cancel` set) ends the call with [`Error::Cancelled`].
+pub fn knob_sweep(
+    scene: &Scene,
+    spec: &KnobSpec,
+    opts: &Options,
+    with_gap: bool,
+    cancel: Option<&AtomicBool>,
+) -> Result<Vec<KnobPoint>> {
+    spec.validate()?;
+    opts.validate()?;
+    let values = spec.values();
+    // invalid input ends the call before any work
+    for &v in &values {
+        spec.knob.apply(scene, v).validate()?;
+    }
+    values
+        .par_iter()
+        .map(|&v| {
+            if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
+                return Err(Error::Cancelled);
+            }
+            let s = spec.knob.apply(scene, v);
+            let result = match engine::evaluate_warm(&s, opts, None, cancel) {
+                Err(Error::Cancelled) => return Err(Error::Cancelled),
+                Err(e @ Error::NotConverged { .. }) => Err(e),
+                Err(e) => return Err(e),
+                Ok(ev) => Ok(ev),
+            };
+            let gap = if with_gap && result.is_ok() {
+                gap::mean_gap(&s, opts)
+            } else {
+                Ok(None)
+            };
+            Ok(KnobPoint {
+                value: v,
+                scene: s,
+                result,
+                gap,
+            })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::preset::Preset;
+
+    fn scene() -> Scene {
+        let mut s = Preset::resolve("system-1").unwrap().scene().unwrap();
+        s.gamma = 0.0;
+        s
+    }
+
+    #[test]
+    fn thickness_values_are_log_spaced_and_gamma_values_linear() {
+        let t = KnobSpec {
+            knob: Knob::Thickness,
+            from: 0.01,
+            to: 1.0,
+            points: 3,
+        };
+        let v = t.values();
+        assert!((v[1] / 0.1 - 1.0).abs() < 1e-14 && v[0] == 0.01 && v[2] == 1.0, "{v:?}");
+        let g = KnobSpec {
+            knob: Knob::Gamma,
+            from: 0.0,
+            to: 0.1,
+            points: 3,
+        };
+        assert_eq!(g.values(), vec![0.0, 0.05, 0.1]);
+    }
+
+    #[test]
+    fn bad_ranges_name_the_field() {
+        let bad = KnobSpec {
+            knob: Knob::Thickness,
+            from: 0.0,
+            to: 1.0,
+            points: 3,
+        };
+        assert!(matches!(
+            bad.validate(),
+            Err(Error::Invalid {
+                field: Field::SweepFrom,
+                ..
+            })
+        ));
+        let bad = KnobSpec {
+            knob: Knob::Gamma,
+            from: 0.1,
+            to: 0.05,
+            points: 3,
+        };
+        assert!(matches!(
+            bad.validate(),
+            Err(Error::Invalid {
+                field: Field::SweepTo,
+                ..
+            })
+        ));
+    }
+
+    #[test]
+    fn each_point_is_the_engine_on_that_scene() {
+        // independent reference: the engine called directly on the scene with the knob set
+        let s = scene();
+        let spec = KnobSpec {
+            knob: Knob::Thickness,
+            from: 0.05,
+            to: 5.0,
+            points: 3,
+        };
+        let pts = knob_sweep(&s, &spec, &Options::default(), false, None).unwrap();
+        for p in &pts {
+            let mut direct = s.clone();
+            direct.thickness_qr = p.value;
+            let e = engine::evaluate(&direct, &Options::default()).unwrap();
+            assert_eq!(p.result.as_ref().unwrap().stats.a_r, e.stats.a_r);
+        }
+        // a thinner slab on a constant-stress base is softer at long wavelengths: more contact
+        let a: Vec<f64> = pts.iter().map(|p| p.result.as_ref().unwrap().stats.a_r).collect();
+        assert!(a[0] > a[1] && a[1] > a[2], "{a:?}");
+    }
+}
