@@ -40,7 +40,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             .and_then(|old| old.find(crate::benchmark::HAND_WRITTEN).map(|i| old[i..].to_string()));
         let mut doc = crate::benchmark::document(&tables);
         if let Some(k) = kept {
-            doc.push_str("\n");
+            doc.push('\n');
             doc.push_str(&k);
         }
         std::fs::write(&args.output, doc).map_err(|e| Error::Io(format!("cannot write {}: {e}", args.output)))?;
