@@ -356,3 +356,52 @@ fn bench_rung_keys() {
         "bench rung",
     );
 }
+
+/// The explorer's names that files and fingers depend on: chart names (used by tour files),
+/// the keys of the key table, the tour TOML keys (a tour using every key parses) and the
+/// columns of the explorer's load CSV.
+#[test]
+fn explorer_names() {
+    use asperity_cli::tui::charts::ChartKind;
+    use asperity_cli::tui::keys::TABLE;
+    use asperity_cli::tui::tour::Tour;
+    let names: Vec<&str> = ChartKind::ALL.iter().map(|k| k.name()).collect();
+    for n in ["pr", "pr-loglog", "area", "area-ratio", "thickness", "stress", "gap"] {
+        assert!(names.contains(&n), "chart {n} missing");
+    }
+    let labels: Vec<&str> = TABLE.iter().map(|b| b.label).collect();
+    for l in ["m", "p", "r", "e", "a", "c", "g", "v", "f", "M", "t", "s"] {
+        assert!(labels.contains(&l), "key {l} missing");
+    }
+    let every_key = r#"name = "n"
+title = "t"
+preset = "system-1"
+[[step]]
+title = "s"
+preset = "system-2"
+model = 4
+pressure = 0.005
+thickness_qr = 1.0
+gamma = 0.0
+charts = ["pr", "thickness", "gap"]
+models = true
+caption = "a\nb"
+"#;
+    Tour::parse(every_key, "every-key").unwrap();
+    let dir = std::env::temp_dir().join(format!("asperity-keys-export-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut app = asperity_cli::tui::app::App::new(
+        "system-1",
+        asperity::input::preset::Preset::resolve("system-1").unwrap(),
+    )
+    .unwrap();
+    app.export_dir = dir.clone();
+    asperity_cli::tui::worker::compute_now(&mut app, &mut Default::default());
+    let paths = asperity_cli::tui::export::export(&app).unwrap();
+    let csv = std::fs::read_to_string(paths.iter().find(|p| p.ends_with("-loads.csv")).unwrap()).unwrap();
+    let header = csv.lines().find(|l| !l.starts_with('#')).unwrap();
+    for col in ["p", "a_r", "mean_gap_rel", "mean_contact_stress", "converged"] {
+        assert!(header.split(',').any(|c| c == col), "column {col} missing: {header}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -213,7 +213,8 @@ fn bad_preset_is_the_cli_error() {
     assert!(tui_err.contains("no-such-preset"), "{tui_err}");
 }
 
-/// `asperity tour`: walks the shipped tour (→ ←, a knob turned inside a step, Esc leaves).
+/// `asperity tour`: walks the shipped tour (→ ←, a knob turned inside a step), saves the
+/// charts of the last step with `s` (SVG that parses and names the series, PNG), Esc leaves.
 #[test]
 fn tour_in_tmux() {
     if !have_tmux() {
@@ -248,6 +249,28 @@ fn tour_in_tmux() {
     }
     let s = t.wait("the last step solved", |s| s.contains("Jump into contact") && solved(s));
     assert!(s.contains("system-2") && s.contains("a_r(t·q_r)"), "{s}");
+    // s: the visible charts as SVG (and PNG) next to the CSV export, paths in the status line
+    t.wait("every chart of the step", |s| s.contains("t=∞") && s.contains("█ p*"));
+    t.keys(&["s"]);
+    let s = t.wait("the saved charts", |s| s.contains("saved"));
+    assert!(s.contains("asperity-system-2-1-pr.svg"), "{s}");
+    for (chart, names) in [
+        ("pr", &["theory", "γ_s=0", "−σ_a*"][..]),
+        ("thickness", &["theory", "γ_s=0", "t=∞"][..]),
+        ("area", &["theory", "current p*"][..]),
+    ] {
+        let svg = dir.join(format!("asperity-system-2-1-{chart}.svg"));
+        let text = std::fs::read_to_string(&svg).unwrap_or_else(|e| panic!("{}: {e}", svg.display()));
+        let doc = roxmltree::Document::parse(&text).expect("the SVG parses as XML");
+        let texts: Vec<&str> = doc.descendants().filter_map(|n| n.text()).collect();
+        for name in names {
+            assert!(
+                texts.iter().any(|t| t.contains(name)),
+                "{chart}: no series {name:?} in {texts:?}"
+            );
+        }
+        assert!(dir.join(format!("asperity-system-2-1-{chart}.png")).is_file());
+    }
     t.keys(&["Escape"]);
     t.wait("the tour to end", |s| {
         s.contains("left the tour") && !s.contains("tour 10/10")

@@ -281,6 +281,10 @@ fn tour_step() {
     assert!(s.contains("tour 2/10") && s.contains("How much area?"), "{s}");
     insta::assert_snapshot!("tour_step2_80x24", s);
     insta::assert_snapshot!("tour_step2_160x48", render(&a, 160, 48));
+    // every size, tiny ones included, draws without a panic
+    for (w, h) in [(60, 20), (61, 21), (200, 60), (80, 10), (20, 5), (1, 1)] {
+        draw_only(&a, w, h);
+    }
     // → moves on, ← back, a knob still turns (h), Esc leaves with the scene kept
     key(&mut a, KeyCode::Right);
     assert_eq!(a.tour.as_ref().unwrap().step, 2);

@@ -19,13 +19,6 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
             (v - lo) / (hi - lo)
         }
     };
-    let inv = |t: f64, lo: f64, hi: f64, log: bool| {
-        if log {
-            lo * (hi / lo).powf(t)
-        } else {
-            lo + t * (hi - lo)
-        }
-    };
     let label = |v: f64| tick_label(round_sig(v, 3));
     // legend lines
     let mut legend: Vec<String> = vec![String::new()];
@@ -48,15 +41,13 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
     }
     // rows: title, y title, plot, x axis line, x ticks, x title, legend
     let plot_h = height.saturating_sub(5 + legend.len()).max(4);
-    let ylabels: Vec<String> = (0..plot_h)
-        .map(|r| {
-            if r == 0 || r == plot_h - 1 || r == (plot_h - 1) / 2 {
-                label(inv(1.0 - r as f64 / (plot_h - 1) as f64, y0, y1, spec.y_log))
-            } else {
-                String::new()
-            }
-        })
-        .collect();
+    let mut ylabels: Vec<String> = vec![String::new(); plot_h];
+    for v in nice_ticks(y0, y1, spec.y_log, (plot_h / 4).max(2)) {
+        let r = ((1.0 - tx(v, y0, y1, spec.y_log)) * (plot_h - 1) as f64).round();
+        if r >= 0.0 && (r as usize) < plot_h {
+            ylabels[r as usize] = label(v);
+        }
+    }
     let margin = ylabels.iter().map(|l| l.chars().count()).max().unwrap_or(1) + 1;
     let plot_w = width.saturating_sub(margin + 1).max(10);
     let mut grid = vec![vec![' '; plot_w]; plot_h];
@@ -119,23 +110,23 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
         out.push_str(&format!("{:>m$}|{}\n", ylabels[r], line.trim_end(), m = margin));
     }
     out.push_str(&format!("{:>m$}+{}\n", "", "-".repeat(plot_w), m = margin));
-    // x tick labels at 0, 1/4, 1/2, 3/4, 1 of the axis
+    // x tick labels at round values, left out where they would overlap
     let mut ticks = vec![' '; plot_w + margin + 12];
-    for k in 0..=4 {
-        let t = k as f64 / 4.0;
-        let text = label(inv(t, x0, x1, spec.x_log));
+    let mut free_from = 0usize;
+    for v in nice_ticks(x0, x1, spec.x_log, (plot_w / 12).max(2)) {
+        let t = tx(v, x0, x1, spec.x_log);
+        let text = label(v);
         let pos = margin + 1 + (t * (plot_w - 1) as f64).round() as usize;
         let n = text.chars().count();
-        let start = if k == 4 {
-            (pos + 1).saturating_sub(n)
-        } else {
-            pos.saturating_sub(n / 2)
-        };
-        for (j, ch) in text.chars().enumerate() {
-            if let Some(slot) = ticks.get_mut(start + j) {
-                *slot = ch;
-            }
+        let start = pos.saturating_sub(n / 2);
+        if start < free_from || start + n > ticks.len() {
+            continue;
         }
+        ticks[pos] = '|';
+        for (j, ch) in text.chars().enumerate() {
+            ticks[start + j] = ch;
+        }
+        free_from = start + n + 2;
     }
     out.push_str(ticks.iter().collect::<String>().trim_end());
     out.push('\n');
@@ -146,7 +137,64 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
         out.push_str(&l);
         out.push('\n');
     }
-    out
+    // nothing wider than asked for
+    out.lines()
+        .map(|l| {
+            if l.chars().count() > width {
+                let mut t: String = l.chars().take(width - 1).collect();
+                t.push('…');
+                t
+            } else {
+                l.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+        + "\n"
+}
+
+/// Round tick values in [lo, hi]: decades (and 2, 5 times them when there are few) on a log
+/// axis, 1/2/5 × 10^k steps on a linear one; about `n` of them.
+pub(crate) fn nice_ticks(lo: f64, hi: f64, log: bool, n: usize) -> Vec<f64> {
+    if !(lo.is_finite() && hi.is_finite() && hi > lo) {
+        return vec![lo];
+    }
+    if log {
+        let (a, b) = (lo.log10().ceil() as i32, hi.log10().floor() as i32);
+        let decades = b - a + 1;
+        let step = ((decades as f64 / n as f64).ceil() as i32).max(1);
+        let mut out: Vec<f64> = (a..=b).filter(|k| (k - a) % step == 0).map(|k| 10f64.powi(k)).collect();
+        if out.len() < 3 {
+            out.clear();
+            for k in (lo.log10().floor() as i32)..=(hi.log10().ceil() as i32) {
+                for m in [1.0, 2.0, 5.0] {
+                    let v = m * 10f64.powi(k);
+                    if v >= lo && v <= hi {
+                        out.push(v);
+                    }
+                }
+            }
+        }
+        return out;
+    }
+    let raw = (hi - lo) / n.max(1) as f64;
+    let e = raw.log10().floor() as i32;
+    let m = [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .find(|m| m * 10f64.powi(e) >= raw)
+        .unwrap_or(10.0);
+    // v = k·m·10^e, divided rather than multiplied by a negative power so that 0.6 is 0.6
+    let value = |k: i64| {
+        if e < 0 {
+            k as f64 * m / 10f64.powi(-e)
+        } else {
+            k as f64 * m * 10f64.powi(e)
+        }
+    };
+    let step = value(1);
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last).map(value).collect()
 }
 
 fn round_sig(v: f64, digits: i32) -> f64 {
@@ -162,6 +210,13 @@ fn round_sig(v: f64, digits: i32) -> f64 {
 mod tests {
     use super::*;
     use crate::chart::Series;
+
+    #[test]
+    fn ticks_are_round() {
+        assert_eq!(nice_ticks(-0.05, 1.05, false, 6), vec![0.0, 0.2, 0.4, 0.6, 0.8, 1.0]);
+        assert_eq!(nice_ticks(8e-4, 1.2, true, 8), vec![1e-3, 1e-2, 1e-1, 1.0]);
+        assert_eq!(nice_ticks(0.3, 4.0, true, 8), vec![0.5, 1.0, 2.0]);
+    }
 
     #[test]
     fn a_rising_line_runs_from_lower_left_to_upper_right() {

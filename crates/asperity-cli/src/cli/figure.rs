@@ -1,4 +1,4 @@
-//! `asperity figure ID`: a figure or table of [S] as data, a text chart and SVG/PNG files
+//! `asperity figure ID`: a figure or table of \[S\] as data, a text chart and SVG/PNG files
 //! ([`crate::figure`]).
 //!
 //! ```text

@@ -49,7 +49,7 @@ pub enum Command {
     Sweep(sweep::SweepArgs),
     /// Brute-force GFMD run on a reduced grid, compared with the theory on the same surface.
     Gfmd(gfmd::GfmdArgs),
-    /// A figure or table of [S] (1-8, table-1): data, a text chart, SVG/PNG (--list names them).
+    /// A figure or table of the paper (1-8, table-1): data, a text chart, SVG/PNG (--list names them).
     Figure(figure::FigureArgs),
 }
 

@@ -1,5 +1,5 @@
 //! Computing a figure's data: the theory curves (the engine, each point as `run` computes
-//! it), the closed forms, the values [S] states, and with `--gfmd` the brute-force points.
+//! it), the closed forms, the values \[S\] states, and with `--gfmd` the brute-force points.
 
 use super::spec::{ClosedFormKind, FigureSpec, Overrides, XAxis, YAxis};
 use super::{DataPoint, DataSeries, FigureData};
@@ -224,7 +224,7 @@ fn stress_curve(spec: &FigureSpec, scene: &Scene) -> Result<(Vec<DataPoint>, Eva
     Ok((pts, e))
 }
 
-/// Computes the figure's data (theory, closed forms, [S] values; GFMD when `gfmd` is given).
+/// Computes the figure's data (theory, closed forms, \[S\] values; GFMD when `gfmd` is given).
 pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData> {
     let preset = Preset::resolve(&spec.preset)?;
     let mut data = FigureData {

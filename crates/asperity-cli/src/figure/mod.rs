@@ -1,4 +1,4 @@
-//! `asperity figure`: the figures and Table 1 of [S], computed on the paper's systems with
+//! `asperity figure`: the figures and Table 1 of \[S\], computed on the paper's systems with
 //! the paper's models, as data (table, CSV, JSON), a text chart, and SVG/PNG files.
 //!
 //! Figures 1–8 are described by TOML files ([`spec`], `figures/` in the repository, built
@@ -61,7 +61,7 @@ pub struct FigureData {
     pub x_log: bool,
     /// Log y axis.
     pub y_log: bool,
-    /// Theory curves, closed forms, [S] values, GFMD points.
+    /// Theory curves, closed forms, \[S\] values, GFMD points.
     pub series: Vec<DataSeries>,
     /// Scalars, grids and anything that did not converge.
     pub notes: Vec<String>,

@@ -1,4 +1,4 @@
-//! Figure files: what a figure of [S] plots, as TOML (`figures/fig-N.toml`, built into the
+//! Figure files: what a figure of \[S\] plots, as TOML (`figures/fig-N.toml`, built into the
 //! binary; any other file can be given by path). Parsed and validated like presets: unknown
 //! or mistyped fields give one line naming the file, the line and the key.
 //!
@@ -42,7 +42,7 @@ use asperity::input::preset::{toml_error_message, Preset};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
-/// The figures of [S] shipped with the binary: (id, file text).
+/// The figures of \[S\] shipped with the binary: (id, file text).
 pub const BUILTIN: [(&str, &str); 8] = [
     ("1", include_str!("../../../../figures/fig-1.toml")),
     ("2", include_str!("../../../../figures/fig-2.toml")),
@@ -152,7 +152,7 @@ pub struct ClosedFormSpec {
     pub model: Option<u8>,
 }
 
-/// A value stated in [S]'s text or tables.
+/// A value stated in \[S\]'s text or tables.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct PaperPoint {
@@ -212,7 +212,7 @@ pub struct FigureSpec {
     /// Closed-form reference curves.
     #[serde(default)]
     pub closed_form: Vec<ClosedFormSpec>,
-    /// Values stated in [S].
+    /// Values stated in \[S\].
     #[serde(default)]
     pub paper: Vec<PaperPoint>,
 }

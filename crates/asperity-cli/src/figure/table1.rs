@@ -1,5 +1,5 @@
-//! Table 1 of [S]: the first and second moment of the contact stress, system I without
-//! adhesion at p* = 0.01, semi-infinite: GFMD (65536² in [S]) and models 1–3.
+//! Table 1 of \[S\]: the first and second moment of the contact stress, system I without
+//! adhesion at p* = 0.01, semi-infinite: GFMD (65536² in \[S\]) and models 1–3.
 
 use super::compute::{curve_scene, gfmd_run, GfmdChoice};
 use super::spec::Overrides;
@@ -14,7 +14,7 @@ use serde::Serialize;
 pub const DESCRIPTION: &str =
     "Table 1: σ̄_c* and ⟨δσ_c²⟩* at p* = 0.01, models 1-3 against [S]'s values (system I, no adhesion)";
 
-/// [S] Table 1: (column, σ̄_c*, ⟨δσ_c²⟩*); docs/reference-values.md.
+/// \[S\] Table 1: (column, σ̄_c*, ⟨δσ_c²⟩*); docs/reference-values.md.
 pub const PAPER: [(&str, f64, f64); 4] = [
     ("GFMD", 0.4963, 0.0908),
     ("model 1", 0.6264, 0.1071),
@@ -36,9 +36,9 @@ pub struct Column {
     pub contact_stress_variance: Option<f64>,
     /// Computed a_r.
     pub a_r: Option<f64>,
-    /// [S]'s σ̄_c*.
+    /// \[S\]'s σ̄_c*.
     pub paper_mean_contact_stress: f64,
-    /// [S]'s ⟨δσ_c²⟩*.
+    /// \[S\]'s ⟨δσ_c²⟩*.
     pub paper_contact_stress_variance: f64,
 }
 
@@ -117,7 +117,7 @@ pub fn compute(gfmd: Option<GfmdChoice>) -> Result<Table1> {
 }
 
 impl Table1 {
-    /// The table as [S] prints it, computed values above [S]'s.
+    /// The table as \[S\] prints it, computed values above \[S\]'s.
     pub fn table(&self) -> String {
         let f = |x: Option<f64>| x.map_or("–".to_string(), |v| format!("{v:.4}"));
         let mut out = format!(
@@ -170,7 +170,7 @@ impl Table1 {
     }
 
     /// As a figure: the moments against the column (0 = GFMD, 1–3 = models), computed as
-    /// lines-less points beside [S]'s.
+    /// lines-less points beside \[S\]'s.
     pub fn figure(&self) -> FigureData {
         let pts = |get: &dyn Fn(&Column) -> Option<f64>| -> Vec<DataPoint> {
             self.columns

@@ -5,7 +5,7 @@
 //!
 //! Charts (the selector cycles them in this order; names are used by tours):
 //!
-//! | name         | shows                                                         | [S]        |
+//! | name         | shows                                                         | \[S\]      |
 //! |--------------|---------------------------------------------------------------|------------|
 //! | `pr`         | Pr(σ*) at the current p*, linear axes, −σ_a* wall             | Figs. 2, 4 |
 //! | `pr-loglog`  | Pr(σ*) on log–log axes with the small- and large-stress asymptotes | Fig. 3 |
@@ -381,6 +381,19 @@ fn pr_linear(app: &App) -> ChartModel {
     }
     let (xb, yb) = data_bounds(&m);
     m.xb = xb.unwrap_or([0.0, 1.0]);
+    // the sampled tails are flat zeros: end the axis where every curve is below 10⁻³ of the
+    // peak
+    let peak = yb.map_or(0.0, |b| b[1]);
+    let last = m
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter())
+        .filter(|(s, d)| s.is_finite() && *d > 1e-3 * peak)
+        .map(|(s, _)| *s)
+        .fold(f64::NEG_INFINITY, f64::max);
+    if last.is_finite() && last > m.xb[0] {
+        m.xb[1] = m.xb[1].min(last);
+    }
     if m.xb[0] < 0.0 && m.xb[1] > 0.0 {
         // σ* = 0 separates tension from compression
         m.vlines.insert(

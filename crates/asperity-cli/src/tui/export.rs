@@ -1,8 +1,15 @@
 //! `e`: writes the current curves as CSV and the scene as a preset TOML (loadable again with
 //! `--preset PATH`) into the export directory, under names that never overwrite:
 //! `asperity-NAME-N-pr.csv`, `asperity-NAME-N-loads.csv`, `asperity-NAME-N.toml`.
+//! The CSVs start with `#` lines describing the scene; unavailable values are empty cells.
+//!
+//! `s`: writes the visible charts as SVG and PNG (`asperity-NAME-N-CHART.svg|png`) through
+//! the chart renderer ([`crate::chart`]), from the same [`ChartModel`]s the screen shows.
 
 use super::app::App;
+use super::charts::{self, ChartKind, ChartModel, Draw, Role};
+use super::plot::Scale;
+use crate::chart::{self, ChartSpec, Series, SeriesStyle};
 use asperity::error::{Error, Result};
 use asperity::input::model::ModelKind;
 use asperity::input::preset::{ModelSpec, Preset, Variant};
@@ -133,9 +140,133 @@ pub fn export(app: &App) -> Result<Vec<String>> {
     Ok(paths)
 }
 
-/// `s`: writes the visible charts as SVG and PNG next to the CSV export; returns the paths.
-pub fn export_charts(_app: &App) -> Result<Vec<String>> {
-    Err(Error::Unsupported("chart export needs the chart renderer".into()))
+/// The chart of the renderer ([`crate::chart`]) for a chart model, as drawn on screen: the
+/// same series and names; the −σ_a* wall becomes a dashed vertical line, the current point a
+/// point; guide lines (σ* = 0, the p* line) are left out; on a clipped log axis the points
+/// below the chart's range are gaps, as on screen.
+pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
+    let mut series = Vec::new();
+    let ylo = m.ys.inverse(m.yb[0]);
+    let (y0, y1) = {
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for s in &m.series {
+            for &(_, y) in &s.points {
+                if y.is_finite() && (!m.clip_y || y >= ylo) {
+                    lo = lo.min(y);
+                    hi = hi.max(y);
+                }
+            }
+        }
+        (lo, hi)
+    };
+    for v in &m.vlines {
+        if v.role == Role::Wall && y0.is_finite() {
+            series.push(Series {
+                name: v.name.clone(),
+                points: vec![(v.x, y0.min(0.0)), (v.x, y1)],
+                style: SeriesStyle::Dashed,
+            });
+        }
+    }
+    for s in &m.series {
+        let points = if m.clip_y {
+            s.points
+                .iter()
+                .map(|&(x, y)| if y >= ylo { (x, y) } else { (x, f64::NAN) })
+                .collect()
+        } else {
+            s.points.clone()
+        };
+        series.push(Series {
+            name: if s.role == Role::Current {
+                "current p*".into()
+            } else {
+                s.name.clone()
+            },
+            points,
+            style: match s.draw {
+                Draw::Line => SeriesStyle::Line,
+                Draw::Points => SeriesStyle::Points,
+                Draw::Dashed => SeriesStyle::Dashed,
+            },
+        });
+    }
+    ChartSpec {
+        title: format!("{} — {scene_note}", m.title),
+        x_label: m.x_label.clone(),
+        y_label: m.y_label.clone(),
+        x_log: m.xs == Scale::Log10,
+        y_log: m.ys == Scale::Log10,
+        series,
+    }
+}
+
+fn safe_name(app: &App) -> String {
+    app.preset
+        .name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// `s`: writes the visible charts (each once) as SVG and PNG into the export directory, as
+/// `asperity-NAME-N-CHART.svg|png` (N never overwrites); returns the paths.
+pub fn export_charts(app: &App) -> Result<Vec<String>> {
+    let mut kinds: Vec<ChartKind> = Vec::new();
+    for k in app.charts {
+        if !kinds.contains(&k) {
+            kinds.push(k);
+        }
+    }
+    let models: Vec<(ChartKind, ChartModel)> = kinds
+        .into_iter()
+        .map(|k| (k, charts::build(app, k)))
+        .filter(|(_, m)| m.empty.is_none())
+        .collect();
+    if models.is_empty() {
+        return Err(Error::Unsupported("no chart to save yet (nothing computed)".into()));
+    }
+    let name = safe_name(app);
+    let dir = &app.export_dir;
+    let n = (1..10_000)
+        .find(|n| {
+            models
+                .iter()
+                .all(|(k, _)| !dir.join(format!("asperity-{name}-{n}-{}.svg", k.name())).exists())
+        })
+        .ok_or_else(|| Error::Io("too many exports in this directory".into()))?;
+    let sc = &app.scene;
+    let t = if sc.thickness_qr.is_infinite() {
+        "∞".to_string()
+    } else {
+        super::plot::format_number(sc.thickness_qr)
+    };
+    let note = format!(
+        "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
+        app.preset.name,
+        sc.model.label(),
+        super::plot::format_number(sc.gamma)
+    );
+    let mut paths = Vec::new();
+    for (k, m) in &models {
+        let spec = chart_spec(m, &note);
+        for (ext, write) in [
+            ("svg", chart::write_svg as fn(&ChartSpec, &Path) -> std::io::Result<()>),
+            ("png", chart::write_png),
+        ] {
+            let path = dir.join(format!("asperity-{name}-{n}-{}.{ext}", k.name()));
+            write(&spec, &path).map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))?;
+            paths.push(path.display().to_string());
+        }
+    }
+    Ok(paths)
 }
 
 #[cfg(test)]
@@ -169,6 +300,30 @@ mod tests {
         assert_eq!(crate::tui::app::initial_scene(&back).unwrap(), app.scene);
         // the exported scene is named after its file, not the stock preset
         assert_eq!(back.name, "asperity-system-1-1");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn s_saves_the_visible_charts_as_svg_and_png() {
+        let dir = std::env::temp_dir().join(format!("asperity-svg-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let mut app = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
+        app.export_dir = dir.clone();
+        app.set_typed(crate::tui::app::Param::Gamma, "0").unwrap();
+        app.set_charts([ChartKind::PrLog, ChartKind::AreaRatio, ChartKind::PrLog]);
+        crate::tui::worker::compute_now(&mut app, &mut Default::default());
+        let paths = export_charts(&app).unwrap();
+        assert_eq!(paths.len(), 4, "{paths:?}");
+        assert!(paths[0].ends_with("asperity-system-1-1-pr-loglog.svg"), "{paths:?}");
+        let svg = std::fs::read_to_string(&paths[0]).unwrap();
+        for name in ["σ→0 asymptote", "large-σ asymptote", "theory"] {
+            assert!(svg.contains(name), "{name}");
+        }
+        let svg = std::fs::read_to_string(&paths[2]).unwrap();
+        assert!(svg.contains("eq. (18)") && svg.contains("[S] Table 1"), "{svg}");
+        assert!(std::fs::read(&paths[3]).unwrap().starts_with(b"\x89PNG"));
+        let again = export_charts(&app).unwrap();
+        assert!(again[0].ends_with("asperity-system-1-2-pr-loglog.svg"), "{again:?}");
         let _ = std::fs::remove_dir_all(&dir);
     }
 

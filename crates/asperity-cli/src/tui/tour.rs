@@ -45,7 +45,7 @@ pub const DEFAULT_TOUR: &str = "wang-muser";
 /// Lines a caption may have.
 pub const CAPTION_LINES: (usize, usize) = (2, 4);
 /// Longest caption line (characters).
-pub const CAPTION_WIDTH: usize = 160;
+pub const CAPTION_WIDTH: usize = 100;
 /// Steps a tour may have.
 pub const STEPS: (usize, usize) = (1, 50);
 

@@ -98,7 +98,7 @@ pub fn draw(f: &mut Frame, app: &App) {
     } else {
         wrapped_rows(status_line.width(), area.width).clamp(1, STATUS_ROWS)
     };
-    let caption = caption_lines(app, pal);
+    let caption = caption_lines(app);
     let caption_rows = if caption.is_empty() {
         0
     } else {
@@ -116,16 +116,22 @@ pub fn draw(f: &mut Frame, app: &App) {
     draw_title(f, title, app, pal);
     f.render_widget(Paragraph::new(status_line).wrap(Wrap { trim: false }), status);
     if caption_rows > 0 {
-        let t = app
-            .tour
-            .as_ref()
-            .map(|t| format!(" tour {}/{} ", t.step + 1, t.tour.steps.len()));
-        f.render_widget(
-            Paragraph::new(caption)
-                .wrap(Wrap { trim: true })
-                .block(Block::bordered().title(t.unwrap_or_default())),
-            cap,
-        );
+        let mut block = Block::bordered();
+        if let Some(t) = &app.tour {
+            block = block
+                .title(Line::from(vec![
+                    Span::raw(format!(" tour {}/{} · ", t.step + 1, t.tour.steps.len())),
+                    Span::styled(
+                        t.tour.steps[t.step].title.clone(),
+                        Style::default().add_modifier(Modifier::BOLD),
+                    ),
+                    Span::raw(" "),
+                ]))
+                .title_bottom(
+                    Line::from(Span::styled(" ←→ steps · h l knobs · Esc leaves ", pal.dim())).right_aligned(),
+                );
+        }
+        f.render_widget(Paragraph::new(caption).wrap(Wrap { trim: true }).block(block), cap);
     }
     let panel_w = match area.width {
         120.. => 34,
@@ -156,16 +162,14 @@ fn wrapped_rows(width: usize, cols: u16) -> u16 {
     width.div_ceil(cols).max(1) as u16
 }
 
-/// The tour's caption box: the step's title, then its caption.
-fn caption_lines(app: &App, pal: Palette) -> Vec<Line<'static>> {
+/// The tour's caption lines (the step's title and the keys are in the box's border).
+fn caption_lines(app: &App) -> Vec<Line<'static>> {
     let Some(t) = &app.tour else { return Vec::new() };
-    let st = &t.tour.steps[t.step];
-    let mut v = vec![Line::from(vec![
-        Span::styled(st.title.clone(), Style::default().add_modifier(Modifier::BOLD)),
-        Span::styled("  ←→ steps · h l knobs · Esc leaves", pal.dim()),
-    ])];
-    v.extend(st.caption.iter().map(|c| Line::from(c.clone())));
-    v
+    t.tour.steps[t.step]
+        .caption
+        .iter()
+        .map(|c| Line::from(c.clone()))
+        .collect()
 }
 
 fn too_small(f: &mut Frame, area: Rect) {

@@ -8,7 +8,7 @@
 //! sweep goes on; invalid input ends it. The mean gap [S-12], optional because it needs a
 //! load sweep up to full contact per value, comes from [`gap::mean_gap`].
 //!
-//! Spacing: t·q_r is log-spaced (it spans decades, [S] Fig. 7 runs from 0.01 to ∞); γ_s is
+//! Spacing: t·q_r is log-spaced (it spans decades, \[S\] Fig. 7 runs from 0.01 to ∞); γ_s is
 //! spaced linearly (so that a sweep may start at γ_s = 0, the adhesionless limit).
 
 use crate::error::{Error, Field, Result};

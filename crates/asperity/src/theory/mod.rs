@@ -1,6 +1,7 @@
 //! Persson theory as amended in \[S\]: the mirror Gaussian [S-7, S-22],
 //! the adhesionless variance ODE [S-2, S-15], adhesion [S-5..S-9, S-14], the elastic energy
-//! [S-11] and mean gap [S-12], load sweeps, sweeps over the thickness or the surface energy, and the engine that evaluates one scene.
+//! [S-11] and mean gap [S-12], load sweeps,
+//! sweeps over the thickness or the surface energy, and the engine that evaluates one scene.
 
 pub mod adhesion;
 pub mod closed_form;
