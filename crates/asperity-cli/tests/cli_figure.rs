@@ -274,3 +274,42 @@ fn bad_figure_files_give_the_preset_errors() {
     std::fs::write(&path, good).unwrap();
     ok(&["figure", path.to_str().unwrap(), "--format", "csv", "--points", "3"]);
 }
+
+/// On a sweep figure the GFMD points come with the theory on the same map, and both are what
+/// `asperity gfmd` gives for that scene and grid.
+#[test]
+fn gfmd_points_of_a_sweep_match_the_gfmd_command() {
+    let v: serde_json::Value =
+        serde_json::from_str(&ok(&["figure", "5", "--gfmd", "--grid", "32", "--format", "json"])).unwrap();
+    let series = v["series"].as_array().unwrap();
+    let find = |name: &str| {
+        series
+            .iter()
+            .find(|s| s["name"] == name)
+            .unwrap_or_else(|| panic!("{name}"))["points"]
+            .as_array()
+            .unwrap()
+            .clone()
+    };
+    let g = find("GFMD (32²)");
+    let t = find("theory on the GFMD map (model 3)");
+    assert_eq!(g.len(), 4);
+    let p = g[1]["x"].as_f64().unwrap();
+    let pp = format!("{p:e}");
+    let run: serde_json::Value = serde_json::from_str(&ok(&[
+        "gfmd",
+        "--preset",
+        "system-1",
+        "--gamma",
+        "0",
+        "--grid",
+        "32",
+        "--pressure",
+        &pp,
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(g[1]["y"].as_f64(), run["mean_contact_stress"].as_f64());
+    assert_eq!(t[1]["y"].as_f64(), run["theory"]["mean_contact_stress"].as_f64());
+}

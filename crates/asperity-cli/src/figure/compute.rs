@@ -392,8 +392,17 @@ fn gfmd_series(
             match gfmd_run(preset, s, choice) {
                 Ok(r) => {
                     data.notes.push(format!(
-                        "{name}: {}² grid, seed {}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}",
-                        r.grid, choice.seed, r.stats.a_r, r.stats.mean_contact_stress, r.stats.contact_stress_variance
+                        "{name}: {}² grid, {}, seed {}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}{}",
+                        r.grid,
+                        map_description(&r),
+                        choice.seed,
+                        r.stats.a_r,
+                        r.stats.mean_contact_stress,
+                        r.stats.contact_stress_variance,
+                        r.theory.as_ref().map_or(String::new(), |t| format!(
+                            "; theory on the same map ({}): a_r = {:.4}",
+                            t.model, t.stats.a_r
+                        ))
                     ));
                     data.series.push(DataSeries {
                         name: format!("{name} ({}²)", r.grid),
@@ -413,7 +422,9 @@ fn gfmd_series(
         return Ok(());
     }
     let mut points = Vec::new();
+    let mut on_map: Vec<DataPoint> = Vec::new();
     let mut grid = 0;
+    let mut map_note = String::new();
     for &x in &spec.gfmd_at {
         let mut s = base.clone();
         match spec.x {
@@ -425,29 +436,44 @@ fn gfmd_series(
         match gfmd_run(preset, &s, choice) {
             Ok(r) => {
                 grid = r.grid;
+                map_note = map_description(&r);
                 let st = &r.stats;
-                points.push(point(
-                    x,
+                let gap = Some(r.mean_gap_rel);
+                let y = y_of(
+                    spec.y,
+                    s.pressure,
+                    st.a_r,
+                    st.mean_contact_stress,
+                    st.contact_stress_variance,
+                    gap,
+                );
+                points.push(point(x, y, None));
+                // the theory on the same map (its discrete, reduced spectrum): the like-for-like
+                // comparison (no mean gap on the map)
+                let th = r.theory.as_ref().and_then(|t| {
+                    let st = &t.stats;
                     y_of(
                         spec.y,
                         s.pressure,
                         st.a_r,
                         st.mean_contact_stress,
                         st.contact_stress_variance,
-                        Some(r.mean_gap_rel),
-                    ),
-                    None,
-                ));
+                        None,
+                    )
+                });
+                on_map.push(point(x, th, r.theory_error.clone()));
             }
             Err(e) => {
                 data.notes.push(format!("GFMD at x = {x:e}: {e}"));
                 points.push(point(x, None, Some(e.to_string())));
+                on_map.push(point(x, None, Some(e.to_string())));
             }
         }
     }
     if grid > 0 {
         data.notes.push(format!(
-            "GFMD: {grid}² grid (the preset's reduced grid unless --grid), seed {}",
+            "GFMD: {grid}² grid, {map_note} (the preset's reduced grid unless --grid), seed {}; the theory \
+             curves are of the full spectrum, the \"theory on the GFMD map\" points of the map's own",
             choice.seed
         ));
     }
@@ -460,5 +486,23 @@ fn gfmd_series(
         style: SeriesStyle::Points,
         points,
     });
+    if spec.y != YAxis::MeanGapRel {
+        data.series.push(DataSeries {
+            name: format!("theory on the GFMD map ({})", base.model.label()),
+            style: SeriesStyle::Points,
+            points: on_map,
+        });
+    }
     Ok(())
+}
+
+/// The map's reduced geometry in words (L/λ_r, λ_r/λ_s, λ_s/Δa).
+fn map_description(r: &GfmdResult) -> String {
+    match &r.grid_spec {
+        Some(g) => format!(
+            "L/λ_r = {}, λ_r/λ_s = {}, λ_s/Δa = {}",
+            g.system_size_ratio, g.bandwidth, g.points_per_short_wavelength
+        ),
+        None => "a given map".into(),
+    }
 }

@@ -146,3 +146,50 @@ pub fn list() -> Vec<(String, String)> {
     out.push(("table-1".into(), table1::DESCRIPTION.into()));
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_point_without_a_value_is_an_empty_cell_with_its_note() {
+        let data = FigureData {
+            id: "x".into(),
+            title: "t".into(),
+            preset: "system-2".into(),
+            x_label: "x".into(),
+            y_label: "y".into(),
+            x_log: true,
+            y_log: false,
+            series: vec![DataSeries {
+                name: "model 4".into(),
+                style: SeriesStyle::Line,
+                points: vec![
+                    DataPoint {
+                        x: 0.01,
+                        y: None,
+                        note: Some("adhesive solver did not converge: stalled, residual 1e-2".into()),
+                    },
+                    DataPoint {
+                        x: 0.1,
+                        y: Some(0.5),
+                        note: None,
+                    },
+                ],
+            }],
+            notes: vec![],
+        };
+        let csv = data.csv();
+        assert_eq!(
+            csv.lines().nth(1),
+            Some("model 4,1e-2,,\"adhesive solver did not converge: stalled, residual 1e-2\"")
+        );
+        assert_eq!(csv.lines().nth(2), Some("model 4,1e-1,5e-1,"));
+        let json = serde_json::to_value(&data).unwrap();
+        assert!(json["series"][0]["points"][0]["y"].is_null());
+        assert!(!serde_json::to_string(&data).unwrap().contains("NaN"));
+        // the chart gets a gap (NaN), which the renderers leave out
+        assert!(data.chart().series[0].points[0].1.is_nan());
+        assert!(data.table().contains('–'));
+    }
+}
