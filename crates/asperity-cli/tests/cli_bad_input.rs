@@ -135,5 +135,21 @@ fn gfmd_blames_the_map_not_the_pressure() {
         assert!(!String::from_utf8_lossy(&out.stderr).contains("--pressure"));
     }
     fails(&["gfmd", "--size", "1e-6"], &["missing --surface"]);
+    fails(
+        &["gfmd", "--grid", "32", "--seeds", "0"],
+        &["--seeds = 0", "1 <= seeds"],
+    );
+    fails(
+        &["gfmd", "--grid", "32", "--extrapolate", "--ladder", "8"],
+        &["--ladder", "two or more"],
+    );
+    fails(
+        &["gfmd", "--grid", "32", "--extrapolate", "--ladder", "1,8"],
+        &["--ladder = 1", "<= lambda_s/da"],
+    );
+    fails(
+        &["gfmd", "--grid", "32", "--from", "0.1", "--to", "0.01", "--points", "3"],
+        &["--to = 0.01"],
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

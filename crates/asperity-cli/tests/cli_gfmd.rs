@@ -32,6 +32,8 @@ fn cli_gfmd_json_table_surface_files_and_errors() {
         "64",
         "--seed",
         "3",
+        // a loaded map runs gamma_s and rho as given (no full system to reduce from)
+        "--raw-adhesion",
         "--save-surface",
         map_s,
     ]);

@@ -212,8 +212,117 @@ fn gfmd_keys() {
             "theory_error",
             "thickness_qr",
             "tolerance",
+            // issue 15
+            "pk_iterations",
+            "theory.mean_gap",
+            "theory.mean_gap_rel",
+            "reduction",
+            "reduction.full",
+            "reduction.full.pressure",
+            "reduction.full.gamma_glo",
+            "reduction.full.tabor",
+            "reduction.full.thickness_qr",
+            "reduction.full.system_size_ratio",
+            "reduction.full.bandwidth",
+            "reduction.full.tensile_stress",
+            "reduction.full.gamma",
+            "reduction.full.range_m",
+            "reduction.reduced",
+            "reduction.reduced.gamma_glo",
+            "reduction.reduced.tabor",
+            "reduction.rescaled",
+            "reduction.gamma_scale",
+            "reduction.range_scale",
+            "reduction.adhesion_resolution",
+            "reduction.kept",
+            "reduction.not_kept",
         ],
         "gfmd",
+    );
+}
+
+#[test]
+fn gfmd_study_and_sweep_keys() {
+    let v = json(&["gfmd", "--grid", "32", "--extrapolate", "--seeds", "2"]);
+    assert_has(
+        &v,
+        &[
+            "a_r",
+            "reduction",
+            "extrapolation",
+            "extrapolation.seed",
+            "extrapolation.rungs",
+            "extrapolation.a_r",
+            "extrapolation.a_r.limit",
+            "extrapolation.a_r.error",
+            "extrapolation.a_r.finest",
+            "extrapolation.mean_contact_stress",
+            "extrapolation.contact_stress_variance",
+            "extrapolation.mean_gap_rel",
+            "ensemble",
+            "ensemble.seeds",
+            "ensemble.extrapolated",
+            "ensemble.a_r",
+            "ensemble.a_r.mean",
+            "ensemble.a_r.standard_error",
+            "ensemble.a_r.values",
+            "ensemble.mean_contact_stress",
+            "ensemble.contact_stress_variance",
+            "ensemble.mean_gap_rel",
+            "ensemble.a_r_extrapolation_error",
+            "ensemble.ladders",
+        ],
+        "gfmd --extrapolate --seeds",
+    );
+    let rung = &v["extrapolation"]["rungs"][0];
+    assert_has(
+        rung,
+        &[
+            "points_per_short_wavelength",
+            "grid",
+            "spacing_m",
+            "a_r",
+            "mean_contact_stress",
+            "contact_stress_variance",
+            "mean_gap_rel",
+            "iterations",
+            "solve_elapsed_s",
+        ],
+        "ladder rung",
+    );
+    let sw = json(&[
+        "gfmd", "--grid", "32", "--gamma", "0", "--from", "0.01", "--to", "0.1", "--points", "2",
+    ]);
+    assert_has(
+        &sw,
+        &[
+            "rows",
+            "grid",
+            "seed",
+            "reduction",
+            "theory",
+            "theory.rows",
+            "theory_error",
+            "iterations",
+            "elapsed_s",
+        ],
+        "gfmd sweep",
+    );
+    assert_has(
+        &sw["rows"][0],
+        &[
+            "p",
+            "a_r",
+            "mean_gap_rel",
+            "mean_gap",
+            "mean_contact_stress",
+            "elastic_energy",
+            "converged",
+            "contact_stress_variance",
+            "iterations",
+            "residual",
+        ],
+        "gfmd sweep row",
     );
 }
 

@@ -187,6 +187,9 @@ fn gfmd_overlay_with_a_synthetic_run() {
             iterations: 475,
             elapsed_s: 1.0,
             theory_a_r: Some(0.0299),
+            sweep: vec![(0.0033, 0.015, 2.0), (0.03, 0.11, 0.9)],
+            theory_sweep: vec![(0.0033, 0.011, 2.1), (0.01, 0.03, 1.5), (0.03, 0.09, 0.95)],
+            invariants: vec![("GFMD γ̃".into(), "0.024 (full 0.024)".into())],
         }),
     });
     let screen = render(&a, 80, 24);

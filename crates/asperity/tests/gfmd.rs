@@ -176,6 +176,7 @@ fn system1_setup(n_spec: GridSpec, pressure: f64) -> GfmdSetup {
         grid: n_spec,
         seed: 7,
         surface: None,
+        rescale: true,
     }
 }
 
@@ -347,6 +348,7 @@ fn hard_case_strong_adhesion_converges_or_reports() {
             grid: tiny(),
             seed: 1,
             surface: None,
+            rescale: true,
         };
         match gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()) {
             Ok(r) => {
@@ -375,6 +377,7 @@ fn adhesion_increases_the_contact_area() {
             grid: tiny(),
             seed: 2,
             surface: None,
+            rescale: true,
         };
         gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap()
     };

@@ -34,7 +34,15 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     let tables = benchmark::markdown(&rep);
     super::emit(&tables);
     if !args.quick {
-        let doc = crate::benchmark::document(&tables);
+        // hand-written sections (from HAND_WRITTEN on) survive a regeneration
+        let kept = std::fs::read_to_string(&args.output)
+            .ok()
+            .and_then(|old| old.find(crate::benchmark::HAND_WRITTEN).map(|i| old[i..].to_string()));
+        let mut doc = crate::benchmark::document(&tables);
+        if let Some(k) = kept {
+            doc.push('\n');
+            doc.push_str(&k);
+        }
         std::fs::write(&args.output, doc).map_err(|e| Error::Io(format!("cannot write {}: {e}", args.output)))?;
         eprintln!("asperity bench: wrote {}", args.output);
     }

@@ -4,14 +4,20 @@
 //! ```text
 //! asperity gfmd --preset NAME|PATH [--grid N] [--seed S] [--surface FILE --size L_m]
 //!               [--pressure P] [--thickness T] [--gamma G] [--tolerance TOL]
-//!               [--format json|table] [--save-surface FILE]
+//!               [--format json|table] [--save-surface FILE] [--raw-adhesion]
+//!               [--extrapolate [--ladder 4,8,16]] [--seeds K] [--from P --to P --points N]
 //! ```
 
 use super::{emit, Format, SceneArgs};
 use asperity::error::{Error, Field, Result};
+use asperity::gfmd::ladder::{Ensemble, Extrapolated, Ladder, MeanSe};
+use asperity::gfmd::reduction::Reduction;
+use asperity::gfmd::sweep::GfmdSweep;
 use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec, Progress};
 use asperity::surface::heightmap::Surface;
+use asperity::theory::sweep::SweepSpec;
 use clap::Args;
+use serde::Serialize;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
@@ -60,6 +66,58 @@ pub struct GfmdArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Json)]
     pub format: Format,
+    /// Minimiser: pk (Polonsky-Keer CG for the hard wall, FIRE with adhesion) or fire (FIRE alone).
+    #[arg(long, value_enum, default_value_t = MethodArg::Pk)]
+    pub method: MethodArg,
+    /// Keep gamma_s and rho as given on the reduced grid (default: rescale them so that the
+    /// reduced system keeps gamma_glo and the Tabor parameter of the full one).
+    #[arg(long)]
+    pub raw_adhesion: bool,
+    /// Run a ladder of resolutions (--ladder) on the same map and extrapolate to da -> 0.
+    #[arg(long, conflicts_with = "surface")]
+    pub extrapolate: bool,
+    /// Points per short wavelength lambda_s/da of the --extrapolate ladder.
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true)]
+    pub ladder: Vec<f64>,
+    /// Repeat over K realisations (seeds S..S+K-1) and report mean +- standard error.
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::whole_number, conflicts_with = "surface")]
+    pub seeds: usize,
+    /// Load sweep: first p* (warm-started loads from --from to --to).
+    #[arg(long, allow_hyphen_values = true, requires = "to", conflicts_with_all = ["extrapolate", "pressure"])]
+    pub from: Option<f64>,
+    /// Load sweep: last p*.
+    #[arg(long, allow_hyphen_values = true, requires = "from")]
+    pub to: Option<f64>,
+    /// Load sweep: number of log-spaced loads.
+    #[arg(long, default_value_t = 8, allow_hyphen_values = true, value_parser = super::whole_number)]
+    pub points: usize,
+}
+
+/// `--method`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum MethodArg {
+    /// Polonsky-Keer CG, FIRE to check (FIRE alone with adhesion).
+    Pk,
+    /// FIRE alone.
+    Fire,
+}
+
+/// Largest K of `--seeds`.
+pub const MAX_SEEDS: usize = 1000;
+/// Allowed λ_s/Δa of a `--ladder` rung.
+pub const LADDER_RANGE: (f64, f64) = (2.0, 256.0);
+
+/// The JSON of `gfmd --extrapolate` / `--seeds K`: the single run at the preset's grid, its
+/// resolution ladder and the ensemble over seeds.
+#[derive(Debug, Serialize)]
+pub struct StudyOutput {
+    /// The run at the preset's grid (seed S).
+    #[serde(flatten)]
+    pub base: GfmdResult,
+    /// The ladder of seed S (null without --extrapolate).
+    pub extrapolation: Option<Ladder>,
+    /// Mean +- standard error over the seeds (null for K = 1).
+    pub ensemble: Option<Ensemble>,
 }
 
 /// Builds the setup and options from the arguments.
@@ -84,15 +142,53 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
         tolerance: args.tolerance,
         max_iterations: args.max_iterations,
         pr_bins: args.bins,
+        method: match args.method {
+            MethodArg::Pk => asperity::gfmd::Method::PolonskyKeer,
+            MethodArg::Fire => asperity::gfmd::Method::Fire,
+        },
         ..GfmdOptions::default()
     };
     opts.validate()?;
+    if !(1..=MAX_SEEDS).contains(&args.seeds) {
+        return Err(Error::invalid(
+            Field::Seeds,
+            args.seeds as f64,
+            format!("1 <= seeds <= {MAX_SEEDS}"),
+        ));
+    }
+    if args.extrapolate {
+        let distinct = {
+            let mut l = args.ladder.clone();
+            l.sort_by(f64::total_cmp);
+            l.dedup();
+            l.len()
+        };
+        if let Some(&bad) = args
+            .ladder
+            .iter()
+            .find(|&&x| !(x >= LADDER_RANGE.0 && x <= LADDER_RANGE.1))
+        {
+            return Err(Error::invalid(
+                Field::Ladder,
+                bad,
+                format!("{} <= lambda_s/da <= {} at every rung", LADDER_RANGE.0, LADDER_RANGE.1),
+            ));
+        }
+        if distinct < 2 {
+            return Err(Error::invalid_text(
+                Field::Ladder,
+                format!("{} distinct rung(s)", distinct),
+                "two or more distinct lambda_s/da",
+            ));
+        }
+    }
     Ok((
         GfmdSetup {
             scene,
             grid,
             seed: args.seed,
             surface,
+            rescale: !args.raw_adhesion,
         },
         opts,
     ))
@@ -123,11 +219,57 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
             let _ = e.flush();
         }
     };
+    if let (Some(from), Some(to)) = (args.from, args.to) {
+        let spec = SweepSpec {
+            from,
+            to,
+            points: args.points,
+        };
+        let result = gfmd::sweep::run_sweep(&setup, &spec, &opts, &mut |_, p| bar(p), &cancel);
+        if shown {
+            eprintln!();
+        }
+        let sw = result?;
+        match args.format {
+            Format::Json => emit(&serde_json::to_string_pretty(&sw).expect("serialisable")),
+            Format::Table => emit(&sweep_csv(&sw)),
+        }
+        return Ok(());
+    }
     let result = gfmd::run(&setup, &opts, &mut bar, &cancel);
+    let study = result.and_then(|base| {
+        if !args.extrapolate && args.seeds == 1 {
+            return Ok((base, None, None));
+        }
+        let ladder = args.extrapolate.then_some(args.ladder.as_slice());
+        let ex = match ladder {
+            Some(l) => Some(gfmd::ladder::run_ladder(&setup, l, &opts, &mut |_, p| bar(p), &cancel)?),
+            None => None,
+        };
+        let ens = if args.seeds > 1 {
+            Some(gfmd::ladder::run_seeds(
+                &setup,
+                args.seeds,
+                ladder,
+                &opts,
+                &mut |_, p| bar(p),
+                &cancel,
+            )?)
+        } else {
+            None
+        };
+        Ok((base, ex, ens))
+    });
     if shown {
         eprintln!();
     }
-    let out = result?;
+    let (out, extrapolation, ensemble) = study?;
+    if let Some(r) = out.reduction.as_ref().filter(|r| !r.rescaled && r.full.gamma > 0.0) {
+        eprintln!(
+            "asperity gfmd: note: --raw-adhesion: gamma_glo {:.3} on this grid against {:.3} in the full system",
+            r.reduced.gamma_glo, r.full.gamma_glo
+        );
+    }
     if out.adhesion_resolution > 0.25 {
         eprintln!(
             "asperity gfmd: note: (gamma/E*)*da/rho^2 = {:.3} > 0.25: the attraction is under-resolved on this grid \
@@ -138,11 +280,165 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
     if let (Some(path), Some(s)) = (&args.save_surface, &out.surface) {
         s.save(path)?;
     }
-    match args.format {
-        Format::Json => emit(&serde_json::to_string_pretty(&out).expect("serialisable")),
-        Format::Table => emit(&table(&out)),
+    let mut text = match args.format {
+        Format::Json => String::new(),
+        Format::Table => table(&out),
+    };
+    if args.format == Format::Table {
+        if let Some(l) = &extrapolation {
+            text.push_str(&ladder_table(l));
+        }
+        if let Some(e) = &ensemble {
+            text.push_str(&ensemble_table(e));
+        }
+        emit(&text);
+    } else if extrapolation.is_some() || ensemble.is_some() {
+        let study = StudyOutput {
+            base: out,
+            extrapolation,
+            ensemble,
+        };
+        emit(&serde_json::to_string_pretty(&study).expect("serialisable"));
+    } else {
+        emit(&serde_json::to_string_pretty(&out).expect("serialisable"));
     }
     Ok(())
+}
+
+/// A GFMD sweep as CSV: the theory sweep's columns, GFMD's extras, then the theory's a_r, ū/h_rms
+/// and σ̄_c* on the same map.
+pub fn sweep_csv(sw: &GfmdSweep) -> String {
+    let mut out = String::from(
+        "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
+         contact_stress_variance,iterations,residual,theory_a_r,theory_mean_gap_rel,theory_mean_contact_stress",
+    );
+    let f = |x: Option<f64>| match x {
+        Some(x) if x.is_finite() => format!("{x:e}"),
+        _ => String::new(),
+    };
+    for (k, r) in sw.rows.iter().enumerate() {
+        let th = sw.theory.as_ref().and_then(|t| t.rows.get(k));
+        out.push_str(&format!(
+            "\n{:e},{:e},{:e},{:e},{:e},{:e},{},{:e},{},{:e},{},{},{}",
+            r.p,
+            r.a_r,
+            r.mean_gap_rel,
+            r.mean_gap,
+            r.mean_contact_stress,
+            r.elastic_energy,
+            r.converged,
+            r.contact_stress_variance,
+            r.iterations,
+            r.residual,
+            f(th.map(|t| t.a_r)),
+            f(th.map(|t| t.mean_gap_rel)),
+            f(th.map(|t| t.mean_contact_stress)),
+        ));
+    }
+    out
+}
+
+fn pm(x: &Extrapolated) -> String {
+    format!("{:.6} +- {:.1e} (finest {:.6})", x.limit, x.error, x.finest)
+}
+
+fn ladder_table(l: &Ladder) -> String {
+    let mut t = String::from("\ncontinuum limit (da -> 0)\n");
+    for r in &l.rungs {
+        t.push_str(&format!(
+            "  lambda_s/da = {:<6} N = {:<6} a_r {:.6}  sigma_c* {:.6}  u/h_rms {:.6}  ({} steps)\n",
+            r.points_per_short_wavelength, r.grid, r.a_r, r.mean_contact_stress, r.mean_gap_rel, r.iterations
+        ));
+    }
+    let mut line = |k: &str, v: String| t.push_str(&format!("{k:<28}{v}\n"));
+    line("a_r (limit)", pm(&l.a_r));
+    line("mean_contact_stress* (limit)", pm(&l.mean_contact_stress));
+    line("contact_stress_variance*", pm(&l.contact_stress_variance));
+    line("mean_gap_rel (limit)", pm(&l.mean_gap_rel));
+    t
+}
+
+fn ensemble_table(e: &Ensemble) -> String {
+    let mut t = format!(
+        "\n{} seeds ({}), mean +- standard error\n",
+        e.seeds.len(),
+        if e.extrapolated {
+            "continuum limits"
+        } else {
+            "this grid"
+        }
+    );
+    let mut line = |k: &str, m: &MeanSe| {
+        t.push_str(&format!(
+            "{k:<28}{:.6} +- {:.1e}\n",
+            m.mean,
+            m.standard_error.unwrap_or(f64::NAN)
+        ))
+    };
+    line("a_r", &e.a_r);
+    line("mean_contact_stress*", &e.mean_contact_stress);
+    line("contact_stress_variance*", &e.contact_stress_variance);
+    line("mean_gap_rel", &e.mean_gap_rel);
+    if let Some(x) = e.a_r_extrapolation_error {
+        t.push_str(&format!("{:<28}{x:.1e}\n", "a_r extrapolation error"));
+    }
+    t
+}
+
+/// The full and reduced systems' invariants side by side, and what was kept.
+pub fn reduction_table(r: &Reduction) -> String {
+    let mut t = format!("{:<28}{:<14}{:<14}\n", "invariant", "full", "reduced (run)");
+    let thick = |x: Option<f64>| x.map_or("inf".to_string(), |v| format!("{v:.4}"));
+    for (k, a, b) in [
+        (
+            "p*",
+            format!("{:.4e}", r.full.pressure),
+            format!("{:.4e}", r.reduced.pressure),
+        ),
+        (
+            "gamma_glo",
+            format!("{:.4}", r.full.gamma_glo),
+            format!("{:.4}", r.reduced.gamma_glo),
+        ),
+        (
+            "Tabor mu_T",
+            format!("{:.4}", r.full.tabor),
+            format!("{:.4}", r.reduced.tabor),
+        ),
+        ("t*q_r", thick(r.full.thickness_qr), thick(r.reduced.thickness_qr)),
+        (
+            "L/lambda_r",
+            format!("{}", r.full.system_size_ratio),
+            format!("{}", r.reduced.system_size_ratio),
+        ),
+        (
+            "lambda_r/lambda_s",
+            format!("{}", r.full.bandwidth),
+            format!("{}", r.reduced.bandwidth),
+        ),
+        (
+            "gamma/(rho E* g)",
+            format!("{:.4}", r.full.tensile_stress),
+            format!("{:.4}", r.reduced.tensile_stress),
+        ),
+        (
+            "gamma_s (J/m^2)",
+            format!("{:.4e}", r.full.gamma),
+            format!("{:.4e}", r.reduced.gamma),
+        ),
+        (
+            "rho (m)",
+            format!("{:.4e}", r.full.range_m),
+            format!("{:.4e}", r.reduced.range_m),
+        ),
+    ] {
+        t.push_str(&format!("  {k:<26}{a:<14}{b:<14}\n"));
+    }
+    t.push_str(&format!("{:<28}{}\n", "kept", r.kept.join(", ")));
+    for n in &r.not_kept {
+        t.push_str(&format!("{:<28}{n}\n", "not kept"));
+    }
+    t
 }
 
 fn table(o: &GfmdResult) -> String {
@@ -181,8 +477,15 @@ fn table(o: &GfmdResult) -> String {
     );
     line(
         "mean_gap",
-        format!("{:.6e} m (u/h_rms = {:.6})", o.mean_gap, o.mean_gap_rel),
+        format!(
+            "{:.6e} m (u/h_rms = {:.6}{})",
+            o.mean_gap,
+            o.mean_gap_rel,
+            th.and_then(|t| t.mean_gap_rel)
+                .map_or(String::new(), |g| format!(", theory {g:.6}"))
+        ),
     );
+
     if let Some(e) = &o.theory_error {
         line("theory", format!("unavailable: {e}"));
     }
@@ -192,5 +495,8 @@ fn table(o: &GfmdResult) -> String {
         format!("{:.2e} (tolerance {:.0e})", o.residual, o.tolerance),
     );
     line("elapsed_s", format!("{:.3}", o.elapsed_s));
+    if let Some(r) = &o.reduction {
+        t.push_str(&reduction_table(r));
+    }
     t.trim_end().to_string()
 }

@@ -357,6 +357,8 @@ pub fn gfmd_run(preset: &Preset, scene: &Scene, choice: GfmdChoice) -> Result<Gf
         grid,
         seed: choice.seed,
         surface: None,
+        // the reduced grid keeps the full system's gamma_glo and Tabor parameter
+        rescale: true,
     };
     let opts = GfmdOptions {
         tolerance: 1e-8,

@@ -639,6 +639,7 @@ impl App {
             grid,
             seed: 1,
             surface: None,
+            rescale: true,
         };
         self.gfmd_next += 1;
         let id = self.gfmd_next;
@@ -1178,6 +1179,7 @@ mod tests {
             iterations: 400,
             elapsed_s: 0.5,
             theory_a_r: Some(0.021),
+            ..GfmdView::default()
         };
         a.on_reply(Reply::GfmdDone {
             id,

@@ -612,9 +612,21 @@ fn area(app: &App, ratio: bool) -> ChartModel {
     });
     m.series.extend(reference_series(app, "a_r", y_of));
     if let Some(g) = app.gfmd_for_scene() {
+        // the theory on GFMD's own (reduced) map: a second system, apart from the scene's curve
+        if g.theory_sweep.len() > 1 {
+            m.series.push(Series {
+                name: "theory on the GFMD map".into(),
+                points: g.theory_sweep.iter().map(|&(p, a, _)| (p, y_of(p, a))).collect(),
+                role: Role::Gfmd,
+                draw: Draw::Dashed,
+            });
+        }
         m.series.push(Series {
             name: "GFMD".into(),
-            points: vec![(g.pressure, y_of(g.pressure, g.a_r))],
+            points: std::iter::once((g.pressure, g.a_r))
+                .chain(g.sweep.iter().map(|&(p, a, _)| (p, a)))
+                .map(|(p, a)| (p, y_of(p, a)))
+                .collect(),
             role: Role::Gfmd,
             draw: Draw::Points,
         });
@@ -667,9 +679,21 @@ fn loads(app: &App, kind: ChartKind) -> ChartModel {
     m.series.extend(reference_series(app, quantity, |_, v| v));
     if let Some(g) = app.gfmd_for_scene() {
         let y = if gap { g.gap_rel } else { g.mean_contact_stress };
+        let mut points = vec![(g.pressure, y)];
+        if gap {
+            if g.theory_sweep.len() > 1 {
+                m.series.push(Series {
+                    name: "theory on the GFMD map".into(),
+                    points: g.theory_sweep.iter().map(|&(p, _, u)| (p, u)).collect(),
+                    role: Role::Gfmd,
+                    draw: Draw::Dashed,
+                });
+            }
+            points.extend(g.sweep.iter().map(|&(p, _, u)| (p, u)));
+        }
         m.series.push(Series {
             name: "GFMD".into(),
-            points: vec![(g.pressure, y)],
+            points,
             role: Role::Gfmd,
             draw: Draw::Points,
         });

@@ -185,7 +185,7 @@ pub fn gap_of_sweep(s: &Sweep) -> asperity::Result<f64> {
 }
 
 /// What the explorer shows of a finished GFMD run.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct GfmdView {
     /// p* of the run.
     pub pressure: f64,
@@ -205,6 +205,14 @@ pub struct GfmdView {
     pub elapsed_s: f64,
     /// The theory's a_r on the same map (its discrete spectrum), if it could be evaluated.
     pub theory_a_r: Option<f64>,
+    /// GFMD load sweep on the same map (p*, a_r, ū/h_rms), warm-started; empty until run.
+    pub sweep: Vec<(f64, f64, f64)>,
+    /// The theory on the same map's spectrum at the sweep's loads (p*, a_r, ū/h_rms): the
+    /// reduced system GFMD ran, not the full scene of the other curves.
+    pub theory_sweep: Vec<(f64, f64, f64)>,
+    /// Reduced against full invariants for the panel: (label, "full → run") and what could not
+    /// be kept.
+    pub invariants: Vec<(String, String)>,
 }
 
 impl GfmdView {
@@ -220,8 +228,48 @@ impl GfmdView {
             iterations: r.iterations,
             elapsed_s: r.elapsed_s,
             theory_a_r: r.theory.as_ref().map(|t| t.stats.a_r),
+            sweep: Vec::new(),
+            theory_sweep: Vec::new(),
+            invariants: r.reduction.as_ref().map_or_else(Vec::new, invariant_rows),
         }
     }
+
+    /// Adds a GFMD sweep and the theory's sweep on the same map.
+    pub fn with_sweep(mut self, sw: &asperity::gfmd::sweep::GfmdSweep) -> GfmdView {
+        self.sweep = sw.rows.iter().map(|r| (r.p, r.a_r, r.mean_gap_rel)).collect();
+        if let Some(t) = &sw.theory {
+            self.theory_sweep = t.rows.iter().map(|r| (r.p, r.a_r, r.mean_gap_rel)).collect();
+        }
+        self
+    }
+}
+
+/// Panel rows: γ̃_glo and μ_T of the run (and of the full system), λ_r/λ_s likewise, and a count of what was not kept.
+fn invariant_rows(r: &asperity::gfmd::reduction::Reduction) -> Vec<(String, String)> {
+    let mut v = vec![(
+        "λr/λs".to_string(),
+        format!("{} (full {})", r.reduced.bandwidth, r.full.bandwidth),
+    )];
+    if r.full.gamma > 0.0 {
+        v.push((
+            "GFMD γ̃".to_string(),
+            format!("{:.3} (full {:.3})", r.reduced.gamma_glo, r.full.gamma_glo),
+        ));
+        v.push((
+            "GFMD μT".to_string(),
+            format!("{:.3} (full {:.3})", r.reduced.tabor, r.full.tabor),
+        ));
+    }
+    let lost: Vec<&str> = r
+        .not_kept
+        .iter()
+        .filter(|k| !k.starts_with("bandwidth"))
+        .map(|k| k.split(':').next().unwrap_or(k))
+        .collect();
+    if !lost.is_empty() {
+        v.push(("not kept".to_string(), lost.join(", ")));
+    }
+    v
 }
 
 /// Whether the explorer opens a preset with the preset's γ_s (true, like the CLI) or with

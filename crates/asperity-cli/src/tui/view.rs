@@ -366,6 +366,9 @@ fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
                 row("GFMD σ̄c", sig(v.mean_contact_stress, 4));
                 let th = v.theory_a_r.map_or("–".into(), |t| sig(t, 4));
                 row("map th.", format!("{th} (N={})", v.grid));
+                for (k, val) in &v.invariants {
+                    row(k, val.clone());
+                }
             } else {
                 row("GFMD", "other scene (g reruns)".into());
             }

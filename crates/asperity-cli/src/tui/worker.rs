@@ -528,6 +528,9 @@ pub fn interpolate_gap(sd: &SweepData, p: f64) -> Option<f64> {
     sweep::interpolate_in_ln_p(&sd.p, &sd.gap_rel, p)
 }
 
+/// Loads of the GFMD sweep drawn on the a_r and ū charts (p*/3 … 3p*).
+pub const GFMD_SWEEP_POINTS: usize = 5;
+
 /// Bins of the GFMD Pr(σ*) histogram drawn in the explorer.
 pub const GFMD_CHART_BINS: usize = 80;
 
@@ -563,10 +566,22 @@ pub fn spawn_gfmd(
                 },
                 &cancel,
             );
-            send(Reply::GfmdDone {
-                id,
-                result: result.map(|r| data::GfmdView::from_result(&r)),
+            // then the same map over a decade of loads around p* (warm-started), with the
+            // theory on the map's spectrum, for the a_r and ū charts
+            let result = result.map(|r| {
+                let view = data::GfmdView::from_result(&r);
+                let p = setup.scene.pressure;
+                let spec = asperity::theory::sweep::SweepSpec {
+                    from: (p / 3.0).max(1e-6),
+                    to: (3.0 * p).min(1.0).max(p / 3.0 * 1.01),
+                    points: GFMD_SWEEP_POINTS,
+                };
+                match asperity::gfmd::sweep::run_sweep(&setup, &spec, &opts, &mut |_, _| {}, &cancel) {
+                    Ok(sw) => view.with_sweep(&sw),
+                    Err(_) => view,
+                }
             });
+            send(Reply::GfmdDone { id, result });
         })?;
     Ok(())
 }

@@ -9,8 +9,11 @@
 //! into one convolution ([`crate::numerics::fft2::RealFft2::convolve`]); node loops run on rayon for
 //! large grids, with partial sums in a fixed order so that a seeded run is bit-for-bit
 //! reproducible whatever the thread count. Internally lengths are in units of Δa and stresses
-//! in units of E* (inputs and outputs are SI). Typical cost at p* = 0.01, tolerance 1e-8:
-//! ~300 steps on 128², ~475 on 512² (≈ 1 s), ~585 on 1024²; adhesion adds ~10–100 %.
+//! in units of E* (inputs and outputs are SI). Typical cost of FIRE alone at p* = 0.01,
+//! tolerance 1e-8: ~300 steps on 128², ~475 on 512² (≈ 1 s), ~585 on 1024²; adhesion adds
+//! ~10–100 %. Without adhesion the default [`Method::PolonskyKeer`] relaxes the contact in
+//! 57–153 CG iterations (256²–1024², two convolutions each) and FIRE then finds the force
+//! residual already met (BENCHMARKS.md).
 //! (A mass-weighted variant, m(q) ∝ φ(q) with the same projection, stalled at a residual of
 //! order 1 on these problems, as physics.md §6 warns; it is not offered.)
 //!
@@ -29,7 +32,7 @@
 //! bounds the relative error of the load balance and of every non-contact node's stress.
 //!
 
-use super::{GfmdOptions, Problem, Progress, Solution};
+use super::{GfmdOptions, Method, Problem, Progress, Solution};
 use crate::error::{Error, Result};
 use crate::numerics::fft2::RealFft2;
 use crate::surface::heightmap::wave_number_sq;
@@ -57,6 +60,9 @@ const EXP_CUTOFF: f64 = 40.0;
 const CHUNK: usize = 4096;
 /// Grids with at least this many nodes run their node loops on rayon.
 const PARALLEL_MIN_NODES: usize = 1 << 15;
+/// Polonsky–Keer stops when the gap on the contact set and the overlap elsewhere are below
+/// this × tolerance × h_rms; FIRE then checks the force residual.
+pub const PK_GAP_TOL: f64 = 0.1;
 
 /// Per-chunk partial sums of the node loop.
 #[derive(Debug, Clone, Copy, Default)]
@@ -210,6 +216,21 @@ pub fn solve(
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
 ) -> Result<Solution> {
+    solve_from(problem, opts, None, progress, cancel)
+}
+
+/// [`solve`] from a given start: `start_gap` (m, one per node, e.g. the relaxed gap of a
+/// neighbouring load) instead of the flat body touching the highest summit. Without adhesion
+/// and with [`Method::PolonskyKeer`] (the default) the contact is first relaxed by
+/// Polonsky–Keer CG ([`super::pk`]) and FIRE then checks, and if needed finishes, the same
+/// force residual; with adhesion FIRE does all the work.
+pub fn solve_from(
+    problem: &Problem<'_>,
+    opts: &GfmdOptions,
+    start_gap: Option<&[f64]>,
+    progress: &mut dyn FnMut(Progress),
+    cancel: &AtomicBool,
+) -> Result<Solution> {
     problem.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
@@ -237,6 +258,68 @@ pub fn solve(
     } else {
         (0.0, 0.0)
     };
+    let mut w0 = vec![hmax; n];
+    if let Some(g) = start_gap {
+        if g.len() != n || g.iter().any(|x| !x.is_finite()) {
+            return Err(Error::Unsupported(format!(
+                "a start gap needs {n} finite values (got {})",
+                g.len()
+            )));
+        }
+        for i in 0..n {
+            w0[i] = h[i] + (g[i] / da).max(0.0);
+        }
+    }
+    let mut pk_steps = 0;
+    let mut plan = plan;
+    if problem.gamma == 0.0 && opts.method == Method::PolonskyKeer {
+        // pressure start: the contact stress of the start (or p₀ everywhere)
+        let p_start = match start_gap {
+            Some(_) => {
+                let mut p0s = vec![0.0; n];
+                let mut spec = vec![Complex64::new(0.0, 0.0); nh * ny];
+                let kern: Vec<f64> = phi.iter().map(|f| f / n as f64).collect();
+                plan.convolve(&w0, &kern, &mut spec, &mut p0s);
+                w0.iter()
+                    .zip(&h)
+                    .zip(&p0s)
+                    .map(|((w, h), c)| {
+                        if w <= h {
+                            (problem.pressure / e + c).max(0.0)
+                        } else {
+                            0.0
+                        }
+                    })
+                    .collect()
+            }
+            None => vec![0.0; n],
+        };
+        let h_rms = {
+            let m = h.iter().sum::<f64>() / n as f64;
+            (h.iter().map(|x| (x - m).powi(2)).sum::<f64>() / n as f64).sqrt()
+        };
+        let (w, its) = super::pk::relax(
+            &mut plan,
+            &phi,
+            &h,
+            p_start,
+            problem.pressure / e,
+            PK_GAP_TOL * opts.tolerance * h_rms,
+            opts.max_iterations,
+            &mut |it, err, frac| {
+                if it % opts.progress_every.max(1) == 0 {
+                    progress(Progress {
+                        iteration: it,
+                        residual: err / h_rms,
+                        contact_fraction: frac,
+                    })
+                }
+            },
+            cancel,
+        )?;
+        pk_steps = its;
+        w0 = w.iter().zip(&h).map(|(w, h)| w.max(*h)).collect();
+    }
     let omega = (phi_max + adh_stress * inv_range).sqrt();
     let dt_max = DT_MAX / omega;
     let dt_min = 0.02 * dt_max;
@@ -244,7 +327,7 @@ pub fn solve(
         n,
         plan,
         kernel: phi.iter().map(|p| p * (1.0 / n as f64)).collect(),
-        w: vec![hmax; n],
+        w: w0,
         h,
         v: vec![0.0; n],
         f: vec![0.0; n],
@@ -258,7 +341,7 @@ pub fn solve(
     let mut dt = 0.5 * dt_max;
     let mut alpha = ALPHA_START;
     let mut n_pos = 0usize;
-    let mut it = 0usize;
+    let mut it = pk_steps;
     let residual;
     loop {
         let sums = st.forces();
@@ -326,6 +409,7 @@ pub fn solve(
         stress,
         on_wall,
         iterations: it,
+        pk_iterations: pk_steps,
         residual,
         elapsed_s: t0.elapsed().as_secs_f64(),
     })

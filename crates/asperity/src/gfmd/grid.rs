@@ -75,6 +75,9 @@ pub struct GfmdSetup {
     pub seed: u64,
     /// A given map (square) instead of a generated one.
     pub surface: Option<Surface>,
+    /// Rescale γ_s and ρ on the reduced grid to keep γ̃_glo and the Tabor parameter of the
+    /// full system ([`super::reduction`]); false keeps them as given.
+    pub rescale: bool,
 }
 
 #[cfg(test)]

@@ -22,8 +22,17 @@
 //! interfacial stress (compressive positive) is σ(r) = p₀ + (φ⋆w)(r); its mean is p₀ at
 //! equilibrium.
 //!
+//! ## Files
 //!
-//! The minimiser is in [`fire`], the measurements in [`mod@measure`].
+//! - [`problem`]: the problem, options, progress and relaxed configuration;
+//! - [`fire`]: the FIRE minimiser ([`solve`], [`solve_from`] with a warm start), which hands
+//!   the hard wall to [`pk`] (Polonsky–Keer constrained CG) first when there is no adhesion;
+//! - [`mod@measure`]: a_r, σ̄_c*, ⟨δσ_c²⟩*, Pr(σ*), ū;
+//! - [`grid`] and [`reduction`]: the reduced grid, and γ_s, ρ rescaled so that the reduced
+//!   system keeps γ̃_glo and the Tabor parameter of the full one (the invariants side by side);
+//! - [`result`]: one run of a scene with the theory on the same map;
+//! - [`ladder`]: the Δa → 0 limit with an error bar, and ensembles over seeds;
+//! - [`sweep`]: warm-started load sweeps beside the theory's sweep on the same map.
 //!
 //! ## Library API (what the TUI calls from a worker thread)
 //!
@@ -35,16 +44,21 @@
 //!   reason when the engine cannot evaluate the scene).
 //!
 //! `progress` is called every [`GfmdOptions::progress_every`] steps with a [`Progress`];
-//! setting `cancel` makes the solver return [`Error::Cancelled`](crate::error::Error::Cancelled) within one step.
+//! setting `cancel` makes the solver return
+//! [`Error::Cancelled`](crate::error::Error::Cancelled) within one step.
 
 pub mod fire;
 pub mod grid;
+pub mod ladder;
 pub mod measure;
+pub mod pk;
 pub mod problem;
+pub mod reduction;
 pub mod result;
+pub mod sweep;
 
-pub use fire::{solve, DT_MAX};
+pub use fire::{solve, solve_from, DT_MAX};
 pub use grid::{GfmdSetup, GridSpec};
 pub use measure::{measure, Measurements};
-pub use problem::{GfmdOptions, Problem, Progress, Solution};
-pub use result::{run, GfmdResult, TheoryComparison};
+pub use problem::{GfmdOptions, Method, Problem, Progress, Solution};
+pub use result::{prepare, run, GfmdResult, Prepared, TheoryComparison};

@@ -4,6 +4,17 @@
 use crate::error::{Error, Field, Result};
 use crate::surface::heightmap::Surface;
 
+/// The minimiser.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Method {
+    /// Polonsky–Keer constrained CG for the hard wall, FIRE to check and finish (FIRE alone
+    /// with adhesion). 2–5× fewer FFTs than FIRE alone (BENCHMARKS.md).
+    #[default]
+    PolonskyKeer,
+    /// FIRE alone.
+    Fire,
+}
+
 /// Solver options.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GfmdOptions {
@@ -17,6 +28,8 @@ pub struct GfmdOptions {
     pub progress_every: usize,
     /// Nodes with a gap at most this (m) count as contact; 0 = on the hard wall.
     pub contact_gap: f64,
+    /// The minimiser.
+    pub method: Method,
 }
 
 impl Default for GfmdOptions {
@@ -27,6 +40,7 @@ impl Default for GfmdOptions {
             pr_bins: 400,
             progress_every: 50,
             contact_gap: 0.0,
+            method: Method::default(),
         }
     }
 }
@@ -117,7 +131,8 @@ impl Problem<'_> {
 pub struct Progress {
     /// FIRE steps so far.
     pub iteration: usize,
-    /// Current relative force residual.
+    /// Current relative force residual (while Polonsky–Keer runs: its largest gap error on the
+    /// contact set or overlap elsewhere, relative to h_rms).
     pub residual: f64,
     /// Current fraction of nodes on the wall.
     pub contact_fraction: f64,
@@ -132,8 +147,10 @@ pub struct Solution {
     pub stress: Vec<f64>,
     /// Nodes on the hard wall.
     pub on_wall: Vec<bool>,
-    /// FIRE steps taken.
+    /// Steps taken: Polonsky–Keer iterations plus FIRE steps.
     pub iterations: usize,
+    /// Of which Polonsky–Keer iterations (two convolutions each; a FIRE step costs one).
+    pub pk_iterations: usize,
     /// Final relative force residual.
     pub residual: f64,
     /// Wall time of the solve (s).

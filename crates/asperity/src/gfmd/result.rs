@@ -1,13 +1,15 @@
 //! One GFMD run of a scene: generate (or take) the map, relax, measure, and evaluate the theory
 //! on the map's own discrete spectrum.
 
-use super::{measure, solve, GfmdOptions, GfmdSetup, GridSpec, Problem, Progress};
+use super::reduction::{reduce, Reduction};
+use super::{measure, solve_from, GfmdOptions, GfmdSetup, GridSpec, Problem, Progress};
 use crate::contact::ContactStats;
 use crate::error::{Error, Field, Result};
 use crate::input::scene::Scene;
 use crate::surface::heightmap::{self, Surface};
 use crate::surface::spectrum::Spectrum;
 use crate::theory::engine;
+use crate::theory::gap;
 use serde::Serialize;
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
@@ -22,6 +24,10 @@ pub struct TheoryComparison {
     pub width: f64,
     /// Model label.
     pub model: String,
+    /// ū (m) by the energy route [S-12] on the map's spectrum (null where unavailable).
+    pub mean_gap: Option<f64>,
+    /// ū/h_rms (null where unavailable).
+    pub mean_gap_rel: Option<f64>,
 }
 
 /// Everything a GFMD run reports (the JSON of `asperity gfmd`).
@@ -35,8 +41,10 @@ pub struct GfmdResult {
     pub mean_gap: f64,
     /// ū/h_rms.
     pub mean_gap_rel: f64,
-    /// FIRE steps.
+    /// Solver steps: Polonsky–Keer iterations plus FIRE steps.
     pub iterations: usize,
+    /// Of which Polonsky–Keer iterations (0 with adhesion or `Method::Fire`).
+    pub pk_iterations: usize,
     /// Final relative force residual.
     pub residual: f64,
     /// Requested tolerance.
@@ -78,6 +86,9 @@ pub struct GfmdResult {
     pub contact_nodes: usize,
     /// (γ/E*)·Δa/ρ², should stay below ≈ 0.25 (physics.md §6); 0 without adhesion.
     pub adhesion_resolution: f64,
+    /// The full system's invariants beside the reduced system's, and which were kept (null for
+    /// a loaded map). `gamma` and `range_m` above are the values GFMD ran with.
+    pub reduction: Option<Reduction>,
     /// Theory on the same map (null if it could not be evaluated).
     pub theory: Option<TheoryComparison>,
     /// Why `theory` is null.
@@ -96,64 +107,26 @@ pub fn run(
     cancel: &AtomicBool,
 ) -> Result<GfmdResult> {
     let t0 = Instant::now();
-    let scene = &setup.scene;
-    scene.validate()?;
-    let (surf, q_r) = match &setup.surface {
-        Some(s) => {
-            if !s.is_square() {
-                return Err(Error::invalid_text(
-                    Field::HeightMap,
-                    format!("{} x {}", s.nx, s.ny),
-                    "an N x N map",
-                ));
-            }
-            s.check_rough()?;
-            let q_r = 2.0 * std::f64::consts::PI * setup.grid.system_size_ratio / s.size_x();
-            (s.clone(), q_r)
-        }
-        None => {
-            let full = match &scene.spectrum {
-                Spectrum::SelfAffine(sa) => sa,
-                Spectrum::Discrete(_) => {
-                    return Err(Error::Unsupported(
-                        "generating a map needs a self-affine spectrum; give a height map".into(),
-                    ))
-                }
-            };
-            let red = setup.grid.spectrum(full)?;
-            (heightmap::generate(&red, setup.grid.n(), setup.seed)?, red.q_r())
-        }
-    };
-    let gbar = surf.rms_gradient();
-    let thickness = if scene.thickness_qr.is_infinite() {
-        f64::INFINITY
-    } else {
-        scene.thickness_qr / q_r
-    };
-    let problem = Problem {
-        surface: &surf,
-        modulus: scene.modulus,
-        thickness,
-        pressure: scene.pressure * scene.modulus * gbar,
-        gamma: scene.gamma,
-        range: scene.range,
-    };
-    let sol = solve(&problem, opts, progress, cancel)?;
+    let prep = prepare(setup)?;
+    let scene = &prep.scene;
+    let surf = &prep.surface;
+    let gbar = prep.rms_gradient;
+    let problem = prep.problem(scene.pressure);
+    let sol = solve_from(&problem, opts, None, progress, cancel)?;
     let m = measure(&problem, &sol, opts);
     // theory on the same realisation
     let t_theory = Instant::now();
-    let (theory, theory_error) = match surf.discrete_spectrum(q_r).and_then(|d| {
-        let th_scene = Scene {
-            spectrum: Spectrum::Discrete(d),
-            ..scene.clone()
-        };
-        engine::evaluate(&th_scene, &engine::Options::default())
+    let (theory, theory_error) = match prep.theory_scene(scene.pressure).and_then(|th| {
+        let ev = engine::evaluate(&th, &engine::Options::default())?;
+        Ok((ev, gap::mean_gap(&th, &engine::Options::default())))
     }) {
-        Ok(ev) => (
+        Ok((ev, g)) => (
             Some(TheoryComparison {
                 stats: ev.stats,
                 width: ev.width,
                 model: scene.model.label(),
+                mean_gap: g.as_ref().ok().and_then(|g| g.map(|g| g.metres)),
+                mean_gap_rel: g.as_ref().ok().and_then(|g| g.map(|g| g.relative)),
             }),
             None,
         ),
@@ -166,6 +139,7 @@ pub fn run(
         mean_gap: m.mean_gap,
         mean_gap_rel: m.mean_gap_rel,
         iterations: sol.iterations,
+        pk_iterations: sol.pk_iterations,
         residual: sol.residual,
         tolerance: opts.tolerance,
         elapsed_s: t0.elapsed().as_secs_f64(),
@@ -192,6 +166,94 @@ pub fn run(
         },
         theory,
         theory_error,
-        surface: Some(surf),
+        reduction: prep.reduction.clone(),
+        surface: Some(prep.surface),
     })
+}
+
+/// A map ready to solve: the (reduced) scene, the map, and what the reduction kept.
+#[derive(Debug, Clone)]
+pub struct Prepared {
+    /// The scene GFMD runs: the reduced one (γ_s, ρ rescaled when asked), or the given one
+    /// for a loaded map.
+    pub scene: Scene,
+    /// The map.
+    pub surface: Surface,
+    /// q_r of the map (for t·q_r and the theory's discrete spectrum).
+    pub q_r: f64,
+    /// ḡ of the map.
+    pub rms_gradient: f64,
+    /// The full and reduced invariants (None for a loaded map).
+    pub reduction: Option<Reduction>,
+}
+
+impl Prepared {
+    /// The problem at reduced pressure `pressure` (p* by the map's ḡ).
+    pub fn problem(&self, pressure: f64) -> Problem<'_> {
+        let sc = &self.scene;
+        Problem {
+            surface: &self.surface,
+            modulus: sc.modulus,
+            thickness: if sc.thickness_qr.is_infinite() {
+                f64::INFINITY
+            } else {
+                sc.thickness_qr / self.q_r
+            },
+            pressure: pressure * sc.modulus * self.rms_gradient,
+            gamma: sc.gamma,
+            range: sc.range,
+        }
+    }
+
+    /// The scene on the map's own discrete spectrum at p* = `pressure` (for the theory).
+    pub fn theory_scene(&self, pressure: f64) -> Result<Scene> {
+        let d = self.surface.discrete_spectrum(self.q_r)?;
+        Ok(Scene {
+            spectrum: Spectrum::Discrete(d),
+            pressure,
+            ..self.scene.clone()
+        })
+    }
+}
+
+/// Generates (or takes and checks) the map of `setup`, reducing the scene to its grid (see
+/// [`super::reduction`]).
+pub fn prepare(setup: &GfmdSetup) -> Result<Prepared> {
+    let scene = &setup.scene;
+    scene.validate()?;
+    match &setup.surface {
+        Some(s) => {
+            if !s.is_square() {
+                return Err(Error::invalid_text(
+                    Field::HeightMap,
+                    format!("{} x {}", s.nx, s.ny),
+                    "an N x N map",
+                ));
+            }
+            s.check_rough()?;
+            let q_r = 2.0 * std::f64::consts::PI * setup.grid.system_size_ratio / s.size_x();
+            Ok(Prepared {
+                scene: scene.clone(),
+                surface: s.clone(),
+                q_r,
+                rms_gradient: s.rms_gradient(),
+                reduction: None,
+            })
+        }
+        None => {
+            let (red, reduction) = reduce(scene, &setup.grid, setup.rescale)?;
+            let spec = match &red.spectrum {
+                Spectrum::SelfAffine(sa) => *sa,
+                Spectrum::Discrete(_) => unreachable!("reduce gives a self-affine spectrum"),
+            };
+            let surface = heightmap::generate(&spec, setup.grid.n(), setup.seed)?;
+            Ok(Prepared {
+                rms_gradient: surface.rms_gradient(),
+                q_r: spec.q_r(),
+                scene: red,
+                surface,
+                reduction: Some(reduction),
+            })
+        }
+    }
 }
