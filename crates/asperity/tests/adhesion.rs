@@ -257,8 +257,21 @@ fn sweep_across_the_thin_slab_transition() {
     };
     let sw = asperity::theory::sweep::sweep(&s, &spec, &Options::chart(), None).unwrap();
     for r in &sw.rows {
-        assert!(r.converged && r.a_r.is_finite() && r.mean_gap_rel.is_finite(), "{r:?}");
+        assert!(r.converged && r.a_r.is_finite(), "{r:?}");
+        // a gap is either admissible (≥ 0) or withheld, and then the note says so
+        // (near full contact the energy route with adhesion dips below 0: docs/physics.md §5)
+        if r.mean_gap_rel.is_finite() {
+            assert!(r.mean_gap_rel >= 0.0, "{r:?}");
+        } else {
+            assert!(
+                sw.note.as_deref().unwrap_or("").contains("withheld"),
+                "{r:?} {:?}",
+                sw.note
+            );
+        }
     }
+    // the gap is known over the small-load part of the jump, where it matters
+    assert!(sw.rows[..6].iter().all(|r| r.mean_gap_rel.is_finite()), "{:?}", sw.rows);
     assert!(sw.rows[0].a_r > 0.3, "{:?}", sw.rows[0]);
     assert!(sw.monotone);
 }

@@ -676,18 +676,19 @@ impl App {
 
     /// The first error of the current results, for the status bar.
     pub fn compute_error(&self) -> Option<String> {
+        use super::words::describe;
         if let Some(Err(e)) = &self.point {
-            return Some(e.to_string());
+            return Some(describe(e));
         }
         if let Some(Err(e)) = &self.sweep {
-            return Some(format!("load sweep: {e}"));
+            return Some(format!("load sweep: {}", describe(e)));
         }
         if let Some(Err(e)) = &self.gap {
-            return Some(format!("mean gap: {e}"));
+            return Some(format!("mean gap: {}", describe(e)));
         }
         if self.charts.contains(&ChartKind::Thickness) {
             if let Some(Err(e)) = &self.thickness {
-                return Some(format!("thickness chart: {e}"));
+                return Some(format!("thickness chart: {}", describe(e)));
             }
         }
         None

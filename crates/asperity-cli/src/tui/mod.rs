@@ -28,6 +28,7 @@ pub mod keys;
 pub mod plot;
 pub mod tour;
 pub mod view;
+pub mod words;
 pub mod worker;
 
 use app::App;

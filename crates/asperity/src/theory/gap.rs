@@ -256,6 +256,9 @@ pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<
     let ps: Vec<f64> = (0..n).map(|i| (x0 + i as f64 * h).exp()).collect();
     let energy = crate::theory::loads::energies(scene, &ps, opts, None)?;
     let table = GapTable::from_energy(x0, h, energy)?;
+    if !admissible(scene, table.gap[0]) {
+        return Err(inadmissible(table.gap[0], scene.pressure));
+    }
     let h_rms = scene.spectrum.rms_height();
     Ok(Some(MeanGap {
         relative: table.gap[0],
@@ -263,6 +266,25 @@ pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<
         error: table.error[0],
         energy_reduced: table.energy[0],
     }))
+}
+
+/// Whether a mean gap from the energy route can be reported: ū ≥ 0. Surfaces cannot
+/// interpenetrate, so a negative ū is not an approximation of anything. Without adhesion the
+/// route gives ū ≥ 0 by construction (U is non-increasing in p*); with adhesion the
+/// loading-branch energy U(p*), which contains −a_r·γ_s [S-11, S-14], need not be monotone, and
+/// where the route then gives ū < 0 it is not admissible: the gap is withheld with
+/// [`inadmissible`] rather than reported.
+pub fn admissible(scene: &Scene, gap_rel: f64) -> bool {
+    scene.gamma == 0.0 || gap_rel >= 0.0
+}
+
+/// The error for a mean gap that [`admissible`] refuses.
+pub fn inadmissible(gap_rel: f64, p: f64) -> Error {
+    Error::Unsupported(format!(
+        "the energy route gives a negative mean gap with adhesion at p* = {p:.4e} (u/h_rms = {gap_rel:.3e}): \
+         the loading-branch energy including -a_r*gamma_s is not monotone there, so the route does not \
+         apply; the gap is withheld (docs/physics.md, mean gap with adhesion)"
+    ))
 }
 
 /// Which closed form applies: γ_P = 1 − c₁ when c₂ = 0 and the broadening is unweighted

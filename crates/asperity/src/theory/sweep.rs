@@ -196,9 +196,18 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         None
     };
     let h_rms = scene.spectrum.rms_height();
-    let gap_at = |i: usize| -> (f64, f64) {
+    let mut withheld = 0usize;
+    let mut gap_at = |i: usize| -> (f64, f64) {
         match &table {
-            Some(t) if i >= first_ok => (t.gap[i - first_ok], t.error[i - first_ok]),
+            Some(t) if i >= first_ok => {
+                let (g, e) = (t.gap[i - first_ok], t.error[i - first_ok]);
+                if gap::admissible(scene, g) {
+                    (g, e)
+                } else {
+                    withheld += 1;
+                    (f64::NAN, f64::NAN)
+                }
+            }
             _ => (f64::NAN, f64::NAN),
         }
     };
@@ -252,6 +261,19 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
             ps[f]
         )
     });
+    let note = match (note, withheld) {
+        (n, 0) => n,
+        (n, k) => {
+            let w = format!(
+                "the mean gap of {k} row(s) is withheld (empty): with adhesion the energy route gave \
+                 u < 0 there, which is not admissible (docs/physics.md, mean gap with adhesion)"
+            );
+            Some(match n {
+                Some(n) => format!("{n}; {w}"),
+                None => w,
+            })
+        }
+    };
     // monotone over the rows with numbers
     let finite: Vec<&SweepRow> = rows.iter().filter(|r| r.a_r.is_finite()).collect();
     let monotone = finite.windows(2).all(|w| {

@@ -1,0 +1,51 @@
+//! The explorer's words for the library's fields and errors: a bad value is named by the
+//! label the panel shows (`t·q_r`, `p*`, `γ_s`), not by a CLI flag or a preset key. The CLI
+//! has its own rendering (`cli::field_name`); the library names neither.
+
+use asperity::error::{Error, Field};
+
+/// The panel's label for a field, or the library's canonical key where the panel has none.
+pub fn field_label(field: &Field) -> String {
+    match field {
+        Field::Pressure => "p*".into(),
+        Field::Thickness => "t·q_r".into(),
+        Field::SurfaceEnergy => "γ_s (J/m²)".into(),
+        Field::Model => "model".into(),
+        Field::C1 => "c1".into(),
+        Field::C2 => "c2".into(),
+        Field::WeightCoefficients => "(c1, c2)".into(),
+        Field::Alpha => "alpha".into(),
+        Field::KGriffith => "k_G".into(),
+        other => format!("preset {}", other.key()),
+    }
+}
+
+/// One line for the status bar: invalid input in the explorer's words, anything else as the
+/// library says it.
+pub fn describe(e: &Error) -> String {
+    match e {
+        Error::Invalid { field, value, allowed } => {
+            format!("invalid {} = {value}: allowed {allowed}", field_label(field))
+        }
+        other => other.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn invalid_values_are_named_by_the_panel_label() {
+        let e = Error::Invalid {
+            field: Field::Thickness,
+            value: "-1".into(),
+            allowed: "t·q_r > 0".into(),
+        };
+        let s = describe(&e);
+        assert!(s.starts_with("invalid t·q_r = -1"), "{s}");
+        assert!(!s.contains("--") && !s.contains("load.thickness_qr"), "{s}");
+        assert_eq!(describe(&Error::Cancelled), "cancelled");
+        assert_eq!(field_label(&Field::Hurst), "preset surface.hurst");
+    }
+}
