@@ -219,3 +219,15 @@ fn methods_agree_and_threads_do_not_matter() {
     assert!((results[0].stats.a_r - results[2].stats.a_r).abs() <= 3.0 / n2);
     assert!((results[0].mean_gap / results[2].mean_gap - 1.0).abs() < 1e-6);
 }
+
+/// The default minimiser: Polonsky–Keer up to 2048² nodes, FIRE above (measured crossover,
+/// BENCHMARKS.md), and the explicit choices do what they say.
+#[test]
+fn auto_method_switches_to_fire_above_2048_squared() {
+    use asperity::gfmd::Method;
+    assert_eq!(Method::default(), Method::Auto);
+    assert!(Method::Auto.uses_pk(2048 * 2048));
+    assert!(!Method::Auto.uses_pk(4096 * 4096));
+    assert!(Method::PolonskyKeer.uses_pk(4096 * 4096));
+    assert!(!Method::Fire.uses_pk(64 * 64));
+}

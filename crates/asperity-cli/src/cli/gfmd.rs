@@ -66,8 +66,9 @@ pub struct GfmdArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Json)]
     pub format: Format,
-    /// Minimiser: pk (Polonsky-Keer CG for the hard wall, FIRE with adhesion) or fire (FIRE alone).
-    #[arg(long, value_enum, default_value_t = MethodArg::Pk)]
+    /// Minimiser: auto (pk up to 2048^2 nodes, fire above), pk (Polonsky-Keer CG for the hard
+    /// wall, FIRE with adhesion) or fire (FIRE alone).
+    #[arg(long, value_enum, default_value_t = MethodArg::Auto)]
     pub method: MethodArg,
     /// Keep gamma_s and rho as given on the reduced grid (default: rescale them so that the
     /// reduced system keeps gamma_glo and the Tabor parameter of the full one).
@@ -96,6 +97,8 @@ pub struct GfmdArgs {
 /// `--method`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum MethodArg {
+    /// Polonsky-Keer up to 2048^2 nodes, FIRE above (and with adhesion).
+    Auto,
     /// Polonsky-Keer CG, FIRE to check (FIRE alone with adhesion).
     Pk,
     /// FIRE alone.
@@ -143,6 +146,7 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
         max_iterations: args.max_iterations,
         pr_bins: args.bins,
         method: match args.method {
+            MethodArg::Auto => asperity::gfmd::Method::Auto,
             MethodArg::Pk => asperity::gfmd::Method::PolonskyKeer,
             MethodArg::Fire => asperity::gfmd::Method::Fire,
         },

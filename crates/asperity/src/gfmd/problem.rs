@@ -7,12 +7,31 @@ use crate::surface::heightmap::Surface;
 /// The minimiser.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Method {
-    /// Polonsky–Keer constrained CG for the hard wall, FIRE to check and finish (FIRE alone
-    /// with adhesion). 2–5× fewer FFTs than FIRE alone (BENCHMARKS.md).
+    /// Polonsky–Keer where it is cheaper, FIRE elsewhere: PK for the hard wall on grids of at
+    /// most [`PK_MAX_NODES`] nodes, FIRE alone above (PK's iterations grow ∝ N^0.9, FIRE's
+    /// ∝ N^0.3: at 4096² FIRE took 107 s where PK took ≈ 150–220 s, BENCHMARKS.md) and with
+    /// adhesion.
     #[default]
+    Auto,
+    /// Polonsky–Keer constrained CG for the hard wall, FIRE to check and finish (FIRE alone
+    /// with adhesion). 2–5× fewer FFTs than FIRE alone up to 1024² (BENCHMARKS.md).
     PolonskyKeer,
     /// FIRE alone.
     Fire,
+}
+
+/// Largest grid (nodes) on which [`Method::Auto`] uses Polonsky–Keer: 2048².
+pub const PK_MAX_NODES: usize = 2048 * 2048;
+
+impl Method {
+    /// Whether a hard-wall run (no adhesion) on `nodes` grid nodes relaxes with Polonsky–Keer.
+    pub fn uses_pk(self, nodes: usize) -> bool {
+        match self {
+            Method::Auto => nodes <= PK_MAX_NODES,
+            Method::PolonskyKeer => true,
+            Method::Fire => false,
+        }
+    }
 }
 
 /// Solver options.
