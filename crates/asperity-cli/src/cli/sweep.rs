@@ -211,18 +211,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
             let rows: Vec<Row> = points
                 .iter()
                 .map(|pt| {
-                    let mut r = SweepRow {
-                        p: scene.pressure,
-                        a_r: f64::NAN,
-                        mean_gap_rel: f64::NAN,
-                        mean_gap: f64::NAN,
-                        mean_contact_stress: f64::NAN,
-                        elastic_energy: f64::NAN,
-                        converged: false,
-                        elastic_energy_reduced: f64::NAN,
-                        mean_gap_error: f64::NAN,
-                        contact_stress_variance: f64::NAN,
-                    };
+                    let mut r = SweepRow::empty(scene.pressure);
                     match &pt.result {
                         Ok(e) => {
                             r.a_r = e.stats.a_r;

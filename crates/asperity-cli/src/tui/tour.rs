@@ -298,24 +298,7 @@ impl Tour {
 
 /// Available tours: (name, where), from `tours/` under the working directory and built in.
 pub fn list_available() -> Vec<(String, String)> {
-    let mut out: Vec<(String, String)> = Vec::new();
-    if let Ok(rd) = std::fs::read_dir("tours") {
-        let mut files: Vec<PathBuf> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
-        files.sort();
-        for f in files {
-            if f.extension().is_some_and(|e| e == "toml") {
-                if let Some(stem) = f.file_stem().and_then(|s| s.to_str()) {
-                    out.push((stem.to_string(), f.display().to_string()));
-                }
-            }
-        }
-    }
-    for (n, _) in BUILTIN {
-        if !out.iter().any(|(m, _)| m == n) {
-            out.push((n.to_string(), "built-in".to_string()));
-        }
-    }
-    out
+    asperity::input::preset::list_toml_files("tours", &BUILTIN.map(|(n, _)| n))
 }
 
 #[cfg(test)]

@@ -407,8 +407,15 @@ pub fn key_line(text: &str, dotted: &str) -> Option<usize> {
 /// Available presets: (name, where) from `presets/` under the working directory and the
 /// built-in ones.
 pub fn list_available() -> Vec<(String, String)> {
+    list_toml_files("presets", &BUILTIN.map(|(n, _)| n))
+}
+
+/// The TOML files of `dir` (under the working directory) as (stem, path), sorted, followed by
+/// the `builtin` names that no file shadows, as (name, "built-in"). Presets and the front
+/// ends' other TOML inputs (tours) are listed alike.
+pub fn list_toml_files(dir: &str, builtin: &[&str]) -> Vec<(String, String)> {
     let mut out: Vec<(String, String)> = Vec::new();
-    if let Ok(rd) = std::fs::read_dir("presets") {
+    if let Ok(rd) = std::fs::read_dir(dir) {
         let mut files: Vec<PathBuf> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
         files.sort();
         for f in files {
@@ -419,7 +426,7 @@ pub fn list_available() -> Vec<(String, String)> {
             }
         }
     }
-    for (n, _) in BUILTIN {
+    for n in builtin {
         if !out.iter().any(|(m, _)| m == n) {
             out.push((n.to_string(), "built-in".to_string()));
         }

@@ -109,6 +109,25 @@ pub struct SweepRow {
     pub contact_stress_variance: f64,
 }
 
+impl SweepRow {
+    /// The row of a load whose solver did not converge: every number empty (NaN, `null` in
+    /// JSON), `converged` false.
+    pub fn empty(p: f64) -> SweepRow {
+        SweepRow {
+            p,
+            a_r: f64::NAN,
+            mean_gap_rel: f64::NAN,
+            mean_gap: f64::NAN,
+            mean_contact_stress: f64::NAN,
+            elastic_energy: f64::NAN,
+            converged: false,
+            elastic_energy_reduced: f64::NAN,
+            mean_gap_error: f64::NAN,
+            contact_stress_variance: f64::NAN,
+        }
+    }
+}
+
 /// The result of a sweep.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Sweep {
@@ -231,18 +250,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
                 },
                 Err(_) => {
                     failed_loads.push(ps[i]);
-                    SweepRow {
-                        p: ps[i],
-                        a_r: f64::NAN,
-                        mean_gap_rel: f64::NAN,
-                        mean_gap: f64::NAN,
-                        mean_contact_stress: f64::NAN,
-                        elastic_energy: f64::NAN,
-                        converged: false,
-                        elastic_energy_reduced: f64::NAN,
-                        mean_gap_error: f64::NAN,
-                        contact_stress_variance: f64::NAN,
-                    }
+                    SweepRow::empty(ps[i])
                 }
             }
         })
