@@ -149,16 +149,9 @@ pub enum Role {
     Wall,
 }
 
-/// How a series is drawn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Draw {
-    /// Joined points.
-    Line,
-    /// Separate points.
-    Points,
-    /// A closed-form or reference line.
-    Dashed,
-}
+/// How a series is drawn: the file renderer's style, so the screen and the `s` export agree
+/// by construction.
+pub use crate::chart::SeriesStyle as Draw;
 
 /// One series, in data units (NaN marks a gap).
 #[derive(Debug, Clone, PartialEq)]

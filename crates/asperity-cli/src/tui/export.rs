@@ -7,7 +7,7 @@
 //! the chart renderer ([`crate::chart`]), from the same [`ChartModel`]s the screen shows.
 
 use super::app::App;
-use super::charts::{self, ChartKind, ChartModel, Draw, Role};
+use super::charts::{self, ChartKind, ChartModel, Role};
 use super::plot::Scale;
 use crate::chart::{self, ChartSpec, Series, SeriesStyle};
 use asperity::error::{Error, Result};
@@ -185,11 +185,7 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
                 s.name.clone()
             },
             points,
-            style: match s.draw {
-                Draw::Line => SeriesStyle::Line,
-                Draw::Points => SeriesStyle::Points,
-                Draw::Dashed => SeriesStyle::Dashed,
-            },
+            style: s.draw,
         });
     }
     ChartSpec {
