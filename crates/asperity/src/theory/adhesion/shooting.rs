@@ -44,6 +44,8 @@ pub(super) struct Shot {
     pub(super) h: f64,
     /// a_r(q_s).
     pub(super) a_s: f64,
+    /// The rising part of H: F = C + I (J/m²); H = F − γ_s a_r(q_s).
+    pub(super) f: f64,
     /// The march in full (only when recorded).
     pub(super) record: Option<Record>,
 }
@@ -149,6 +151,7 @@ impl Marcher<'_> {
             c,
             h: c + energy - self.scene.gamma * a,
             a_s: a,
+            f: c + energy,
             record: record.then_some(Record {
                 a_nodes,
                 v_nodes,
