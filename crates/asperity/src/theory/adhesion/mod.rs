@@ -255,10 +255,10 @@ pub struct BranchState {
     pub elastic_energy: f64,
 }
 /// Propagates Pr through the scene's resolution with a prescribed wall σ_a*(q) (reduced,
-/// evaluated at each step's midpoint q) and no self-consistency: the propagator alone, for
-/// tests against the exact cases. `grid_from_start` forces the grid from the first step on
-/// (otherwise a wall that never moves is handled by the mirror Gaussian). Returns the nodes
-/// q and a_r(q).
+/// evaluated at the nodes q_k; the wall moves linearly in v between them) and no
+/// self-consistency: the propagator alone, for tests against the exact cases.
+/// `grid_from_start` forces the grid from the first step on (otherwise a wall that never
+/// moves is handled by the mirror Gaussian). Returns the nodes q and a_r(q).
 pub fn propagate_with_wall(
     scene: &Scene,
     acc: &AdhesionAccuracy,
@@ -267,7 +267,7 @@ pub fn propagate_with_wall(
 ) -> Result<(Vec<f64>, Vec<f64>)> {
     scene.validate()?;
     let grid = grid::build_grid(scene, acc.steps_per_ln_q);
-    let walls: Vec<f64> = grid.steps.iter().map(|s| wall(s.q_mid)).collect();
+    let walls: Vec<f64> = grid.q.iter().map(|&q| wall(q)).collect();
     let mut m = propagator::Marcher {
         scene,
         grid: &grid,

@@ -24,16 +24,28 @@ use std::sync::Arc;
 /// Forward and inverse FFTs of one length.
 type Plan = (usize, Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>);
 
-/// Sine-transform heat propagator on [0, X] with Dirichlet ends, for a grid of N intervals.
+/// The exact step of drift–diffusion on [0, X] with an absorbing (Dirichlet) end at 0 and a
+/// constant drift c, for a grid of N intervals (c = 0: the Dirichlet heat semigroup).
+///
+/// ∂p/∂v = ½∂²p/∂x² − c ∂p/∂x, p(0) = 0, has the Green's function
+/// G(x − y − cv) − e^{−2cy} G(x + y − cv) (images weighted by e^{−2cy}), so
+/// p(x, v) = [G_v * p̃](x − cv) with the weighted odd extension p̃(−y) = −e^{−2cy} p(y): one
+/// FFT of length 2N of p̃, heat factor exp(−½κ²v) and shift phase exp(−iκcv) per mode, one
+/// inverse FFT. With `ext_rate` = 0 the extension is the plain odd one (c = 0, or a grid
+/// whose lower end is not the wall and carries no density).
 pub(super) struct Heat {
     planner: FftPlanner<f64>,
     plan: Option<Plan>,
     buf: Vec<Complex64>,
     scratch: Vec<Complex64>,
-    /// Coefficient of the mass integral per odd sine mode k = 1, 3, 5, …
-    terms: Vec<f64>,
+    /// −(4/κ_k)·ĉ_k per odd mode k = 1, 3, 5, … (the mass integral, see [`Heat::mass`]).
+    terms: Vec<Complex64>,
+    /// ĉ₀·X: the mean mode's share of the mass.
+    mean_mass: f64,
     /// Decay rate of mode 1, ½(π/X)²: mode k decays at k² times it.
     rate1: f64,
+    /// The drift c (shift per unit variance).
+    drift: f64,
     n: usize,
     x: f64,
 }
@@ -46,16 +58,19 @@ impl Heat {
             buf: Vec::new(),
             scratch: Vec::new(),
             terms: Vec::new(),
+            mean_mass: 0.0,
             rate1: 0.0,
+            drift: 0.0,
             n: 0,
             x: 0.0,
         }
     }
 
-    /// Loads grid values p at x_j = j·h, j = 0..=N (p[0] = p[N] = 0): one forward transform
-    /// of the odd extension. Afterwards [`Heat::mass`] gives ∫_0^X p dx after any extra
-    /// variance dv in O(N), and [`Heat::finish`] writes the evolved values back.
-    pub(super) fn load(&mut self, p: &[f64], h: f64) {
+    /// Loads grid values p at x_j = j·h, j = 0..=N (p[0] = p[N] = 0) with the drift c and the
+    /// extension weight exp(−`ext_rate`·y) (2c for the true wall at x = 0, 0 otherwise): one
+    /// forward transform. Afterwards [`Heat::mass`] gives ∫_0^X p dx after any variance u in
+    /// O(N), and [`Heat::finish`] writes the evolved values back.
+    pub(super) fn load(&mut self, p: &[f64], h: f64, ext_rate: f64, drift: f64) {
         let n = p.len() - 1;
         let m = 2 * n;
         if self.plan.as_ref().map(|pl| pl.0) != Some(m) {
@@ -68,35 +83,59 @@ impl Heat {
         let (_, fwd, _) = self.plan.as_ref().expect("planned");
         self.buf.clear();
         self.buf.resize(m, Complex64::new(0.0, 0.0));
+        // exp(−ext_rate·j h) by recurrence
+        let r = (-ext_rate * h).exp();
+        let mut w = 1.0;
         for j in 1..n {
+            w *= r;
             self.buf[j] = Complex64::new(p[j], 0.0);
-            self.buf[m - j] = Complex64::new(-p[j], 0.0);
+            self.buf[m - j] = Complex64::new(-w * p[j], 0.0);
         }
         fwd.process_with_scratch(&mut self.buf, &mut self.scratch);
         let x = n as f64 * h;
         self.n = n;
         self.x = x;
-        // ∫_0^X p dx = Σ_{k odd} b_k·2X/(kπ) for p = Σ b_k sin(kπx/X), b_k = −2 Im(c_k),
-        // c = FFT/M: spectral, where the trapezoid rule is O(h²) because p'(0) ≠ 0
+        self.drift = drift;
+        // ∫_{−a}^{X−a} e^{iκz} dz = 2i e^{−iκa}/κ for odd k, 0 for even k ≠ 0, X for k = 0;
+        // the pair ±k gives −(4/κ) Im(ĉ_k e^{−iκa}): spectral, where the trapezoid rule is
+        // O(h²) because p'(0) ≠ 0
+        let inv_m = 1.0 / m as f64;
+        self.mean_mass = self.buf[0].re * inv_m * x;
         self.terms.clear();
         for k in (1..n).step_by(2) {
-            let b = -2.0 * self.buf[k].im / m as f64;
-            self.terms.push(b * 2.0 * x / (k as f64 * PI));
+            let kappa = k as f64 * PI / x;
+            self.terms.push(self.buf[k] * (-4.0 * inv_m / kappa));
         }
         self.rate1 = 0.5 * (PI / x) * (PI / x);
     }
 
-    /// ∫_0^X p dx after a further variance dv (exact for the loaded trigonometric interpolant).
-    /// exp(−r₁k²dv) by recurrence: with E = exp(−r₁dv), E^{(k+2)²} = E^{k²}·E^{4k+4} and
-    /// E^{4k+4} grows by E⁸ per mode — one exp per call instead of one per mode.
-    pub(super) fn mass(&self, dv: f64) -> f64 {
-        let e = (-self.rate1 * dv).exp();
+    /// ∫_0^X p dx after a further variance u (exact for the loaded trigonometric interpolant).
+    /// exp(−r₁k²u) by recurrence: with E = exp(−r₁u), E^{(k+2)²} = E^{k²}·E^{4k+4} and
+    /// E^{4k+4} grows by E⁸ per mode — one exp per call instead of one per mode; the shift
+    /// phase exp(−ikθ) likewise.
+    pub(super) fn mass(&self, u: f64) -> f64 {
+        let e = (-self.rate1 * u).exp();
         let e2 = e * e;
         let e4 = e2 * e2;
         let e8 = e4 * e4;
-        let (mut pow, mut ratio, mut sum) = (e, e8, 0.0);
+        let (mut pow, mut ratio, mut sum) = (e, e8, self.mean_mass);
+        if self.drift == 0.0 {
+            for &c in &self.terms {
+                sum += c.im * pow;
+                pow *= ratio;
+                ratio *= e8;
+                if pow < 1e-300 {
+                    break;
+                }
+            }
+            return sum;
+        }
+        let theta = PI * self.drift * u / self.x;
+        let mut phase = Complex64::from_polar(1.0, -theta);
+        let rot = Complex64::from_polar(1.0, -2.0 * theta);
         for &c in &self.terms {
-            sum += c * pow;
+            sum += (c * phase).im * pow;
+            phase *= rot;
             pow *= ratio;
             ratio *= e8;
             if pow < 1e-300 {
@@ -111,22 +150,32 @@ impl Heat {
         let (n, x) = (self.n, self.x);
         let m = 2 * n;
         let (_, _, inv) = self.plan.as_ref().expect("loaded");
-        // exp(−c k²)/m by the same recurrence as `mass`, applied to modes k and m − k
+        // exp(−c k²)/m by the same recurrence as `mass`, applied to modes k and m − k (the
+        // shift phase exp(∓ikθ) with them)
         let e = (-0.5 * dv * (PI / x) * (PI / x)).exp();
         let e2 = e * e;
+        let theta = PI * self.drift * dv / x;
+        let rot = Complex64::from_polar(1.0, -theta);
+        let mut phase = Complex64::new(1.0, 0.0);
         let (mut pow, mut ratio) = (1.0 / m as f64, e);
         for k in 0..=n {
             if pow < 1e-300 {
                 pow = 0.0; // and stays 0: no denormal arithmetic
             }
-            self.buf[k] *= pow;
-            if k > 0 && k < n {
-                self.buf[m - k] *= pow;
+            if k == n {
+                // the Nyquist mode: the real part of its shift
+                self.buf[k] *= pow * phase.re;
+            } else {
+                self.buf[k] *= phase * pow;
+                if k > 0 {
+                    self.buf[m - k] *= phase.conj() * pow;
+                }
             }
             if pow > 0.0 {
                 pow *= ratio;
                 ratio *= e2;
             }
+            phase *= rot;
         }
         inv.process_with_scratch(&mut self.buf, &mut self.scratch);
         p[0] = 0.0;
@@ -136,10 +185,10 @@ impl Heat {
         }
     }
 
-    /// Evolves p by dv and returns its integral.
+    /// Evolves p by dv (no drift) and returns its integral.
     #[cfg(test)]
     pub(super) fn apply(&mut self, p: &mut [f64], h: f64, dv: f64) -> f64 {
-        self.load(p, h);
+        self.load(p, h, 0.0, 0.0);
         let mass = self.mass(dv);
         self.finish(p, dv);
         mass
@@ -151,8 +200,11 @@ impl Heat {
 pub(super) enum State {
     /// Mirror Gaussian about the wall (x = σ + wall ≥ 0), variance v.
     Analytic,
-    /// Grid values at x_j = j h.
-    Grid { h: f64, p: Vec<f64> },
+    /// Grid values at x_j = (m + j) h: the grid's lower end x₀ = m·h is the wall (m = 0) or,
+    /// while the wall runs ahead of the distribution, a point below which the density is
+    /// negligible (< 1e-16 of its peak 3√v further up), so that the grid does not fill the
+    /// empty space between the wall and the distribution.
+    Grid { h: f64, m: usize, p: Vec<f64> },
 }
 
 /// The variance increment of one march step: RK4 in the variance measure B for
@@ -310,14 +362,14 @@ impl<'a> Marcher<'a> {
         }
     }
 
-    /// Marches the distribution through the steps with the given wall positions (σ_a* at each
-    /// step's midpoint), returning a_r at the nodes.
+    /// Marches the distribution through the steps with the given wall positions (σ_a* at the
+    /// nodes, `walls[0]` at the start), returning a_r at the nodes.
     pub(super) fn march(&mut self, walls: &[f64]) -> Vec<f64> {
         let k_steps = self.grid.steps.len();
         let mut a_nodes = Vec::with_capacity(k_steps + 1);
         a_nodes.push(1.0);
         let mut cur = self.start(walls.first().copied().unwrap_or(0.0));
-        for &s_k in walls.iter().take(k_steps) {
+        for &s_k in walls.iter().skip(1).take(k_steps) {
             a_nodes.push(self.step(&mut cur, s_k, true));
         }
         a_nodes
@@ -331,6 +383,7 @@ impl<'a> Marcher<'a> {
             wall: first_wall,
             state: State::Analytic,
             b_cum: 0.0,
+            a: 1.0,
         }
     }
 
@@ -384,7 +437,7 @@ impl<'a> Marcher<'a> {
                             }
                         })
                         .collect();
-                    cur.state = State::Grid { h, p };
+                    cur.state = State::Grid { h, m: 0, p };
                 }
             }
         }
@@ -394,45 +447,114 @@ impl<'a> Marcher<'a> {
                 let d = p0 + cur.wall;
                 let rate_at = |v0: f64| move |u: f64| model.broadening(mirror_area(d, v0 + u));
                 cur.v += variance_step(&rate_at(v), b_cum, st.b);
-                mirror_area(d, cur.v)
+                cur.a = mirror_area(d, cur.v);
+                cur.a
             }
-            State::Grid { h, p } => {
-                let delta = s_k - cur.wall;
-                if delta != 0.0 {
-                    shift(p, *h, delta);
+            State::Grid { h: h_ref, m, p } => {
+                let h = *h_ref;
+                let w0 = cur.wall;
+                let delta = s_k - w0;
+                // the wall moves linearly in v from w0 to s_k: drift c = δ/Δv, Δv from the
+                // rate at the step's start, corrected until c·Δv hits δ (to 1e-3 of δ; the
+                // next step starts from where the wall ended)
+                let mut dv_guess = model.broadening(cur.a) * st.b;
+                reoffset(p, m, h, 3.0 * (v + st.b).sqrt() + (-delta).max(0.0) + 2.0 * h);
+                let mut drift = 0.0;
+                if delta != 0.0 && *m > 0 {
+                    // the distribution is far from the wall: move it by whole cells through
+                    // the grid's offset, by the remaining fraction of a cell spectrally
+                    let cells = (delta / h).floor();
+                    let new_m = *m as f64 + cells;
+                    if new_m < 0.0 {
+                        p.splice(0..0, std::iter::repeat_n(0.0, (-new_m) as usize));
+                        *m = 0;
+                    } else {
+                        *m = new_m as usize;
+                    }
+                    cur.wall += cells * h;
+                } else if delta != 0.0 && (delta < 0.0 || dv_guess <= 0.0) {
+                    // a wall moving into the distribution: the weighted extension would grow
+                    // as exp(2|c|y); shift first (8-point Lagrange, mass below the wall
+                    // removed), then the heat step with the wall held (first order)
+                    shift(p, h, delta);
                     cur.wall = s_k;
                 }
+                let rest = s_k - cur.wall;
                 // the grid reaches p + σ_a + 10√v after this step (beyond it the density is
                 // below e⁻⁵⁰ of its peak): extended with zeros or cut there, to an FFT-friendly
-                // size 2^a·3^b·5^c (the sine transform has length 2N, and a prime factor would
+                // size 2^a·3^b·5^c (the transform has length 2N, and a prime factor would
                 // cost a Rader transform)
-                let need = p0 + cur.wall + 10.0 * (v + st.b).sqrt();
-                let n = smooth_size((need / *h).ceil() as usize + 1);
+                let need = p0 + cur.wall.max(s_k) + 10.0 * (v + st.b).sqrt() + 0.01 * rest.abs() + 2.0 * h;
+                let top = ((need / h).ceil() as usize + 1).saturating_sub(*m).max(8);
+                let n = smooth_size(top);
                 p.resize(n + 1, 0.0);
                 p[n] = 0.0;
-                // the same RK4 rule in B as the analytic stage, with a(v) from the loaded
-                // sine coefficients: the switch between the stages is continuous
-                self.heat.load(p, *h);
-                let heat = &self.heat;
-                let rate = |u: f64| model.broadening(heat.mass(u).clamp(0.0, 1.0));
-                let dv = variance_step(&rate, b_cum, st.b);
-                let a = heat.mass(dv).clamp(0.0, 1.0);
+                let mut dv = 0.0;
+                for attempt in 0..4 {
+                    if rest != 0.0 && dv_guess > 0.0 {
+                        drift = rest / dv_guess;
+                    }
+                    // the same RK4 rule in B as the analytic stage, with a(v) from the loaded
+                    // coefficients: the switch between the stages is continuous
+                    let ext = if *m == 0 { 2.0 * drift } else { 0.0 };
+                    self.heat.load(p, h, ext, drift);
+                    let heat = &self.heat;
+                    let rate = |u: f64| model.broadening(heat.mass(u).clamp(0.0, 1.0));
+                    dv = variance_step(&rate, b_cum, st.b);
+                    if drift == 0.0 || (drift * dv - rest).abs() <= 1e-3 * rest.abs() || attempt == 3 {
+                        break;
+                    }
+                    dv_guess = dv;
+                }
+                let a = self.heat.mass(dv).clamp(0.0, 1.0);
+                if commit && std::env::var("PROP_TRACE").is_ok() {
+                    eprintln!("k {k} m {} n {} h {h:.3e} v {v:.3e} w0 {w0:.4e} s_k {s_k:.4e} drift {drift:.3e} dv {dv:.3e} a {a:.5e} a0 {:.5e}", *m, p.len() - 1, cur.a);
+                }
                 cur.v += dv;
+                cur.wall += drift * dv;
+                cur.a = a;
                 if commit {
                     self.heat.finish(p, dv);
-                    // coarsen: keep every other node
-                    if cur.v.sqrt() > 2.0 * ppw * *h {
+                    // coarsen: keep every other node (of the lattice x = j h through the wall)
+                    if cur.v.sqrt() > 2.0 * ppw * h {
+                        if *m % 2 == 1 {
+                            p.insert(0, 0.0);
+                            *m -= 1;
+                        }
                         if (p.len() - 1) % 2 == 1 {
                             p.push(0.0);
                         }
                         let coarse: Vec<f64> = p.iter().step_by(2).copied().collect();
                         *p = coarse;
-                        *h *= 2.0;
+                        *m /= 2;
+                        *h_ref *= 2.0;
                     }
                 }
                 a
             }
         }
+    }
+}
+
+/// Moves the grid's lower end x₀ = m·h: up to `margin` below the lowest node whose density
+/// exceeds 1e-16 of the peak (in steps of at least 8 nodes, dropping negligible values), or
+/// down (zeros prepended) when the distribution comes nearer; never below the wall.
+fn reoffset(p: &mut Vec<f64>, m: &mut usize, h: f64, margin: f64) {
+    let peak = p.iter().fold(0.0f64, |a, &b| a.max(b.abs()));
+    if !(peak > 0.0) {
+        return;
+    }
+    let lo = p.iter().position(|&x| x.abs() > 1e-16 * peak).unwrap_or(0);
+    let x_lo = (*m + lo) as f64 * h;
+    let want = ((x_lo - margin) / h).floor().max(0.0) as usize;
+    if want >= *m + 8 {
+        p.drain(0..want - *m);
+        p[0] = 0.0;
+        *m = want;
+    } else if want < *m {
+        let add = *m - want;
+        p.splice(0..0, std::iter::repeat_n(0.0, add));
+        *m = want;
     }
 }
 
@@ -448,6 +570,8 @@ pub(super) struct Cursor {
     pub(super) state: State,
     /// Σ b of the steps before the previous one (the RK4 substep rule).
     b_cum: f64,
+    /// a_r at the cursor's node.
+    pub(super) a: f64,
 }
 
 /// (a_r, σ̄_c*, variance, tensile area) of a march's final distribution `state`, sampled

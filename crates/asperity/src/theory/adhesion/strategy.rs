@@ -142,8 +142,10 @@ fn finish(scene: &Scene, grid: &Grid, root: &Root, iterations: usize) -> Result<
                 .collect();
             (sig, dens, wall)
         }
-        State::Grid { h, p } => {
-            let (h, mut p) = (*h, p.clone());
+        State::Grid { h, m, p } => {
+            // from the wall up (zeros below the grid's lower end)
+            let h = *h;
+            let mut p: Vec<f64> = std::iter::repeat_n(0.0, *m).chain(p.iter().copied()).collect();
             shift(&mut p, h, s_end - fin.wall);
             let sig = (0..p.len()).map(|j| j as f64 * h - s_end).collect();
             (sig, p, s_end)
