@@ -316,7 +316,7 @@ fn issue_grid() {
                     times.push(dt);
                     match r {
                         Ok(sol) => println!(
-                            "sys {sys} m {model} t {t} p {p:e}: a_r {:.5} shots {} res {:.1e} {:.1} ms branches {:?}",
+                            "sys {sys} m {model} t {t} p {p:e}: a_r {:.8e} shots {} res {:.1e} {:.1} ms branches {:?}",
                             sol.a_r,
                             sol.iterations,
                             sol.residual,
