@@ -507,9 +507,6 @@ impl<'a> Marcher<'a> {
                     dv_guess = dv;
                 }
                 let a = self.heat.mass(dv).clamp(0.0, 1.0);
-                if commit && std::env::var("PROP_TRACE").is_ok() {
-                    eprintln!("k {k} m {} n {} h {h:.3e} v {v:.3e} w0 {w0:.4e} s_k {s_k:.4e} drift {drift:.3e} dv {dv:.3e} a {a:.5e} a0 {:.5e}", *m, p.len() - 1, cur.a);
-                }
                 cur.v += dv;
                 cur.wall += drift * dv;
                 cur.a = a;

@@ -21,20 +21,16 @@
 //! a_r ≤ 1), with I_full the full-contact value of I, so a root always exists in
 //! [−I_full, γ_s]; several roots are several branches of the same scene (hysteresis).
 //!
-//! Each step moves the wall to σ_a at its end node (linearly in v, see `propagator`), exactly
-//! as `walls` computes it for a given a_r(q); the end node's γ needs the step's own a_r, which
-//! a trial of the step predicts (from the geometric extrapolation of a_r) and a second trial
-//! corrects before the step is taken with the corrected wall. At the root the march agrees
-//! with the fixed-point map of the prescribed-wall propagator to the correction's error
-//! (measured through `AdhesiveSolution::residual`).
+//! Each step moves the wall to σ_a at its end node (linearly in v, see `propagator`; `walls`);
+//! the end node's γ needs the step's own a_r: a trial of the step with the wall of the
+//! geometrically extrapolated a_r predicts it, and the step is taken with the wall of the
+//! predicted end (predictor–corrector: second order in the step, and a fixed number of trials
+//! keeps H(C) a smooth function of C for the root finder). Iterating the trial to convergence
+//! instead changed a_r by at most 1.2e-5 relative (median 1e-7) on the issue-13 grid at 1.6× the
+//! cost (measured with the walls at the steps' means).
 
 use super::propagator::{Cursor, Marcher};
 use super::walls::WallCoefficients;
-
-/// Most trials of a step whose wall depends on its own end.
-const MAX_TRIALS: usize = 6;
-/// A trial is accepted when a_r at the step's end moved by less than this (relative).
-const TRIAL_TOL: f64 = 1e-10;
 
 /// One shooting march.
 pub(super) struct Shot {
@@ -112,29 +108,13 @@ impl Marcher<'_> {
             let wall = if g0 <= 0.0 && c + energy + e <= 0.0 {
                 0.0
             } else {
-                // a = T(a), T(a) = the step's end with the wall of end value a: secant
-                // iteration on T(a) − a from the extrapolated guess (T is smooth and nearly
-                // flat: two or three trials)
-                let mut x0 = if a_prev > 0.0 { (a * a / a_prev).min(1.0) } else { a };
-                let mut r0 = self.trial(&cur, wall_for(x0)) - x0;
-                let mut guess = x0 + r0;
+                // predictor–corrector: a trial with the wall of the extrapolated end value
+                // gives the step's end, and the step is taken with the wall of that end (a
+                // fixed number of trials keeps H(C) smooth; second order in the step)
+                let guess = if a_prev > 0.0 { (a * a / a_prev).min(1.0) } else { a };
+                let end = self.trial(&cur, wall_for(guess));
                 self.trials += 1;
-                for _ in 1..MAX_TRIALS {
-                    if r0.abs() <= TRIAL_TOL * guess {
-                        break;
-                    }
-                    let x1 = guess;
-                    let r1 = self.trial(&cur, wall_for(x1)) - x1;
-                    self.trials += 1;
-                    let next = if r1 != r0 {
-                        x1 - r1 * (x1 - x0) / (r1 - r0)
-                    } else {
-                        x1 + r1
-                    };
-                    (x0, r0) = (x1, r1);
-                    guess = next.clamp(0.0, 1.0);
-                }
-                wall_for(guess)
+                wall_for(end)
             };
             let a_next = self.step(&mut cur, wall, true);
             let am = 0.5 * (a + a_next);
@@ -218,47 +198,4 @@ mod tests {
         }
     }
 
-    #[test]
-    #[ignore]
-    fn tmp_jumps() {
-        let mut scene = Preset::resolve("system-1").unwrap().scene().unwrap();
-        scene.model = Model::named(3).unwrap();
-        scene.pressure = 1e-5;
-        let acc = AdhesionAccuracy::default();
-        let grid = build_grid(&scene, acc.steps_per_ln_q);
-        let mut m = Marcher::new(&scene, &grid, acc);
-        let coef = WallCoefficients::new(&scene, &grid);
-        let g = scene.gamma;
-        let mut prev: Option<(f64, f64, f64)> = None;
-        if let Ok(x) = std::env::var("BISECT") {
-            let v: Vec<f64> = x.split(',').map(|t| t.parse().unwrap()).collect();
-            let (mut lo, mut hi) = (v[0] * g, v[1] * g);
-            let alo = m.shoot(&coef, lo, false).a_s;
-            for _ in 0..70 {
-                let mid = 0.5 * (lo + hi);
-                let am = m.shoot(&coef, mid, false).a_s;
-                if (am > 0.01) == (alo > 0.01) { lo = mid } else { hi = mid }
-            }
-            let (a, b) = (m.shoot(&coef, lo, false), m.shoot(&coef, hi, false));
-            println!("lo {:.17e} a {:.6e} h {:.3e} | hi {:.17e} a {:.6e} h {:.3e}", lo / g, a.a_s, a.h, hi / g, b.a_s, b.h);
-            return;
-        }
-        if let Ok(x) = std::env::var("ONE_C") {
-            let c: f64 = x.parse().unwrap();
-            let s = m.shoot(&coef, c * g, false);
-            println!("a_s {}", s.a_s);
-            return;
-        }
-        for i in 0..=4000 {
-            let u = -1.0 + 2.0 * i as f64 / 4000.0;
-            let c = g * u.signum() * 10f64.powf(-7.0 * (1.0 - u.abs()));
-            let s = m.shoot(&coef, c, false);
-            if let Some((pc, ph, pa)) = prev {
-                if (s.a_s / pa - 1.0).abs() > 0.05 || (ph < 0.0) != (s.h < 0.0) {
-                    println!("C/g {:+.6e}..{:+.6e} a_s {pa:.5e}..{:.5e} h {ph:.3e}..{:.3e}", pc / g, c / g, s.a_s, s.h);
-                }
-            }
-            prev = Some((c, s.h, s.a_s));
-        }
-    }
 }
