@@ -69,7 +69,7 @@ fn zero_wall_reproduces_the_adhesionless_ode() {
 #[test]
 fn moving_wall_converges_with_resolution() {
     // a wall that opens linearly in ln q from 0 to 0.6, model 3 on system 1 at p* = 0.01:
-    // errors against a 32x finer solution fall with the resolution (first order, see the tolerance)
+    // errors against a 32x finer solution fall with the resolution (second order, see the tolerance)
     let s = system(1, 3);
     let (lq, ls) = (s.spectrum.q_l().ln(), s.spectrum.q_s().ln());
     let wall = |q: f64| 0.6 * (q.ln() - lq) / (ls - lq);

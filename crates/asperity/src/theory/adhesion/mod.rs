@@ -22,32 +22,29 @@
 //! # Propagation (moving wall)
 //!
 //! The march runs over steps in ln q (uniform per PSD segment). In the frame x = σ + σ_a the
-//! wall sits at x = 0. Each step holds the wall at its mean over the step (with γ linear in ln q
-//! between nodes, the mean of √γ₊ in closed form: smooth where γ turns positive) and
+//! wall sits at x = 0; its motion between the nodes (linear in v, σ_a at the nodes from γ
+//! there) is a drift c = dσ_a/dv, and each step applies the exact solution operator of
+//! ∂p/∂v = ½p'' − cp' with p(0) = 0 for constant c: the image solution with weights e^{−2cy}
+//! (`propagator`), a sine-type transform (a length-2N complex FFT of the weighted odd
+//! extension), a heat factor exp(−½κ²Δv) and a shift phase per mode, and back. For a fixed
+//! wall this is the mirror-Gaussian solution, spectrally accurate in space and exact in v, so
+//! σ_a ≡ const is reproduced to round-off (a_r is the spectral integral of the series; the
+//! trapezoid rule would be O(h²) because Pr'(wall) ≠ 0); a moving wall is second order in the
+//! step (measured order 2.0, `tests/adhesion.rs`). A wall receding into the distribution
+//! (c < 0) is shifted first and then held (first order; the growing weights e^{2|c|y} are
+//! avoided).
 //!
-//! 1. shifts Pr by the change of σ_a since the previous step (8-point Lagrange interpolation;
-//!    the stencil uses the odd continuation of Pr through the wall, mass below the wall is
-//!    removed), then
-//! 2. applies the exact heat semigroup of the Dirichlet problem on [0, X] to the grid values:
-//!    sine transform (a length-2N complex FFT of the odd extension), multiply mode k by
-//!    exp(−½(kπ/X)²Δv), transform back. For a fixed wall this is the image (mirror-Gaussian)
-//!    solution, spectrally accurate in space and exact in v, so σ_a ≡ const is reproduced to
-//!    round-off (a_r is the spectral integral of the sine series; the trapezoid rule would be
-//!    O(h²) because Pr'(wall) ≠ 0). A moving wall adds the piecewise-constant wall motion and
-//!    the shift: each shift leaves an empty gap of width δ at the wall that the next heat step
-//!    fills, and this splitting is first order at the absorbing boundary (measured order ≈ 1.2,
-//!    `tests/adhesion.rs`).
-//!
-//! Δv = W^{2α}(ā)·∫_step f²q²dm/(4ḡ²) with ā the mean of a_r at both ends of the step
-//! (predictor–corrector: the step is taken twice). While the wall has not moved since the start
-//! (σ_a constant, in particular σ_a = 0 at coarse scales where γ(q) = 0), or while the wall is
-//! too far from the distribution to matter (p* + σ_a > 8.5√v, image mass < 1e-17), Pr is the
-//! mirror Gaussian about the wall and v follows the autonomous ODE dv/dB = W^{2α}(a(v)),
-//! integrated with RK4 in B (no grid). The grid starts from that mirror Gaussian with spacing
+//! Δv = W^{2α}(a)·∫_step f²q²dm/(4ḡ²) by RK4 in the variance measure B with a(v) from the
+//! loaded coefficients. While the wall has not moved since the start (σ_a constant, in
+//! particular σ_a = 0 at coarse scales where γ(q) = 0), or while the wall is too far from the
+//! distribution to matter (p* + σ_a > 8.5√v, image mass < 1e-17), Pr is the mirror Gaussian
+//! about the wall and v follows the autonomous ODE dv/dB = W^{2α}(a(v)), integrated with RK4
+//! in B (no grid). The grid starts from that mirror Gaussian with spacing
 //! h = √v/`points_per_width`, reaches p* + σ_a + 10√v (rounded up to an FFT-friendly size
-//! 2^a·3^b·5^c) and is coarsened by 2 (keeping every other node, exact) whenever √v exceeds
-//! 2·`points_per_width`·h, so its size stays bounded (~20·`points_per_width` nodes) from
-//! p* = 1e-8 to full contact.
+//! 2^a·3^b·5^c), is coarsened by 2 (keeping every other node, exact) whenever √v exceeds
+//! 2·`points_per_width`·h, and starts at x₀ > 0 (3√v below where the density falls under 1e-16
+//! of its peak) while the wall runs ahead of the distribution, so its size stays bounded
+//! (~25·`points_per_width` nodes) from p* = 1e-8 to full contact.
 //!
 //! # Self-consistency: one scalar equation, every branch
 //!
@@ -73,12 +70,14 @@
 //!
 //! # Files
 //!
-//! `grid` (resolution steps), `propagator` (the march for given walls, one step at a time),
+//! `grid` (resolution steps), `heat` (the exact drift–diffusion step with an absorbing wall),
+//! `propagator` (the march for given walls, one step at a time),
 //! `walls` (σ_a(q) for γ(q)), `shooting` (the forward march for given C), `roots` (all roots
 //! of H), `strategy` (the branch chosen and the solution assembled), and this module
 //! (accuracy, result types, entry points).
 
 mod grid;
+mod heat;
 mod propagator;
 mod roots;
 mod shooting;
@@ -268,6 +267,27 @@ pub fn propagate_with_wall(
     scene.validate()?;
     let grid = grid::build_grid(scene, acc.steps_per_ln_q);
     let walls: Vec<f64> = grid.q.iter().map(|&q| wall(q)).collect();
+    // a wall that leaves zero inside a step: where (bisection in ln q)
+    let onsets: Vec<Option<f64>> = grid
+        .q
+        .windows(2)
+        .zip(walls.windows(2))
+        .map(|(q, w)| {
+            (w[0] == 0.0 && w[1] > 0.0).then(|| {
+                let (l0, l1) = (q[0].ln(), q[1].ln());
+                let (mut lo, mut hi) = (0.0, 1.0);
+                for _ in 0..40 {
+                    let mid = 0.5 * (lo + hi);
+                    if wall((l0 + mid * (l1 - l0)).exp()) > 0.0 {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                lo
+            })
+        })
+        .collect();
     let mut m = propagator::Marcher {
         scene,
         grid: &grid,
@@ -277,7 +297,7 @@ pub fn propagate_with_wall(
         pressure: scene.pressure,
         trials: 0,
     };
-    let a = m.march(&walls);
+    let a = m.march(&walls, &onsets);
     Ok((grid.q.clone(), a))
 }
 

@@ -1,199 +1,47 @@
 //! The moving-wall propagator: one march of Pr(σ, q) through the resolution steps for given
-//! wall positions σ_a*(q) [S-5, S-7], returning a_r at the nodes [S-6].
+//! wall positions σ_a*(q_k) at the nodes [S-5, S-7], returning a_r at the nodes [S-6].
 //!
-//! In the wall's frame x = σ + σ_a each step (1) shifts Pr by the wall's move (8-point
-//! Lagrange, odd continuation through the wall, mass below it removed) and (2) applies the
-//! exact Dirichlet heat semigroup over the step's variance Δv (sine series by a length-2N FFT
-//! of the odd extension; a_r is the spectral integral of the series). Δv = W^{2α}(a)·b by RK4
-//! in the variance measure B. While the wall has not moved (or is > 8.5√v away) the state is
-//! the mirror Gaussian about the wall and no grid is used. See the parent module for the
-//! order of the splitting.
+//! In the wall's frame x = σ + σ_a the wall sits at x = 0 and a wall moving at speed
+//! c = dσ_a/dv (v the accumulated variance, the march's "time") adds a drift:
+//!
+//! ```text
+//! ∂p/∂v = ½ ∂²p/∂x² − c ∂p/∂x   on x > 0,   p(0, v) = 0
+//! ```
+//!
+//! Each step moves the wall linearly in v from where it stands to the step's end node
+//! (c constant over the step) and applies the exact solution operator of this problem
+//! ([`Heat`]): p = e^{cx − c²v/2}u turns it into the heat equation for u with the same
+//! Dirichlet end, whose image solution gives p(x, v) = [G_v * p̃](x − cv) with the weighted odd
+//! extension p̃(−y) = −e^{−2cy}p(y) (weights ≤ 1 for c ≥ 0): a length-2N FFT, a heat factor and
+//! a shift phase per mode, an inverse FFT. The only errors are the wall's path (linear in v
+//! between the nodes: second order in the step), the spectral representation of p on the grid,
+//! and Δv = W^{2α}(a)·b by RK4 in the variance measure B (c = δ/Δv is iterated until the wall
+//! ends within 1e-3·δ of its node). A constant wall (c = 0) is the exact image solution, so
+//! σ_a ≡ const is reproduced to round-off. Measured order in the step ≈ 2.0
+//! (`tests/adhesion.rs`; the old shift-then-heat splitting gave ≈ 1.3).
+//!
+//! A wall moving into the distribution (c < 0) would need weights e^{2|c|y} that grow: such a
+//! step shifts the grid first (8-point Lagrange, odd continuation through the wall, mass below
+//! it removed) and then applies the heat step with the wall held: first order, used only
+//! while the wall recedes (σ_a falling with q) and the distribution touches it.
+//!
+//! While the wall has not moved (or is > 8.5√v away) the state is the mirror Gaussian about
+//! the wall and no grid is used. On the grid, spacing h ~ √v/`points_per_width` (coarsened by
+//! 2 as √v grows), the lower end x₀ = m·h follows the distribution when the wall runs ahead
+//! of it (x₀ = 3√v below the point where the density falls under 1e-16 of its peak; the wall
+//! then moves the grid by whole cells and the spectral shift does the rest), so the grid
+//! holds ~25·`points_per_width` nodes however far σ_a is from p*: before, it reached from the
+//! wall and held σ_a·`points_per_width`/√v nodes at tiny p* (~10× the cost of a march).
 
 // index loops mirror the formulas (nodes j, steps k) in this numerical module
 #![allow(clippy::needless_range_loop)]
 
-use super::grid::Grid;
+use super::grid::{Grid, Step};
+pub(super) use super::heat::Heat;
 use super::AdhesionAccuracy;
 use crate::input::scene::Scene;
-use rustfft::num_complex::Complex64;
-use rustfft::{Fft, FftPlanner};
 use statrs::function::erf::erf;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
-use std::sync::Arc;
-
-/// Forward and inverse FFTs of one length.
-type Plan = (usize, Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>);
-
-/// The exact step of drift–diffusion on [0, X] with an absorbing (Dirichlet) end at 0 and a
-/// constant drift c, for a grid of N intervals (c = 0: the Dirichlet heat semigroup).
-///
-/// ∂p/∂v = ½∂²p/∂x² − c ∂p/∂x, p(0) = 0, has the Green's function
-/// G(x − y − cv) − e^{−2cy} G(x + y − cv) (images weighted by e^{−2cy}), so
-/// p(x, v) = [G_v * p̃](x − cv) with the weighted odd extension p̃(−y) = −e^{−2cy} p(y): one
-/// FFT of length 2N of p̃, heat factor exp(−½κ²v) and shift phase exp(−iκcv) per mode, one
-/// inverse FFT. With `ext_rate` = 0 the extension is the plain odd one (c = 0, or a grid
-/// whose lower end is not the wall and carries no density).
-pub(super) struct Heat {
-    planner: FftPlanner<f64>,
-    plan: Option<Plan>,
-    buf: Vec<Complex64>,
-    scratch: Vec<Complex64>,
-    /// −(4/κ_k)·ĉ_k per odd mode k = 1, 3, 5, … (the mass integral, see [`Heat::mass`]).
-    terms: Vec<Complex64>,
-    /// ĉ₀·X: the mean mode's share of the mass.
-    mean_mass: f64,
-    /// Decay rate of mode 1, ½(π/X)²: mode k decays at k² times it.
-    rate1: f64,
-    /// The drift c (shift per unit variance).
-    drift: f64,
-    n: usize,
-    x: f64,
-}
-
-impl Heat {
-    pub(super) fn new() -> Self {
-        Heat {
-            planner: FftPlanner::new(),
-            plan: None,
-            buf: Vec::new(),
-            scratch: Vec::new(),
-            terms: Vec::new(),
-            mean_mass: 0.0,
-            rate1: 0.0,
-            drift: 0.0,
-            n: 0,
-            x: 0.0,
-        }
-    }
-
-    /// Loads grid values p at x_j = j·h, j = 0..=N (p[0] = p[N] = 0) with the drift c and the
-    /// extension weight exp(−`ext_rate`·y) (2c for the true wall at x = 0, 0 otherwise): one
-    /// forward transform. Afterwards [`Heat::mass`] gives ∫_0^X p dx after any variance u in
-    /// O(N), and [`Heat::finish`] writes the evolved values back.
-    pub(super) fn load(&mut self, p: &[f64], h: f64, ext_rate: f64, drift: f64) {
-        let n = p.len() - 1;
-        let m = 2 * n;
-        if self.plan.as_ref().map(|pl| pl.0) != Some(m) {
-            let fwd = self.planner.plan_fft_forward(m);
-            let inv = self.planner.plan_fft_inverse(m);
-            let len = fwd.get_inplace_scratch_len().max(inv.get_inplace_scratch_len());
-            self.scratch = vec![Complex64::new(0.0, 0.0); len];
-            self.plan = Some((m, fwd, inv));
-        }
-        let (_, fwd, _) = self.plan.as_ref().expect("planned");
-        self.buf.clear();
-        self.buf.resize(m, Complex64::new(0.0, 0.0));
-        // exp(−ext_rate·j h) by recurrence
-        let r = (-ext_rate * h).exp();
-        let mut w = 1.0;
-        for j in 1..n {
-            w *= r;
-            self.buf[j] = Complex64::new(p[j], 0.0);
-            self.buf[m - j] = Complex64::new(-w * p[j], 0.0);
-        }
-        fwd.process_with_scratch(&mut self.buf, &mut self.scratch);
-        let x = n as f64 * h;
-        self.n = n;
-        self.x = x;
-        self.drift = drift;
-        // ∫_{−a}^{X−a} e^{iκz} dz = 2i e^{−iκa}/κ for odd k, 0 for even k ≠ 0, X for k = 0;
-        // the pair ±k gives −(4/κ) Im(ĉ_k e^{−iκa}): spectral, where the trapezoid rule is
-        // O(h²) because p'(0) ≠ 0
-        let inv_m = 1.0 / m as f64;
-        self.mean_mass = self.buf[0].re * inv_m * x;
-        self.terms.clear();
-        for k in (1..n).step_by(2) {
-            let kappa = k as f64 * PI / x;
-            self.terms.push(self.buf[k] * (-4.0 * inv_m / kappa));
-        }
-        self.rate1 = 0.5 * (PI / x) * (PI / x);
-    }
-
-    /// ∫_0^X p dx after a further variance u (exact for the loaded trigonometric interpolant).
-    /// exp(−r₁k²u) by recurrence: with E = exp(−r₁u), E^{(k+2)²} = E^{k²}·E^{4k+4} and
-    /// E^{4k+4} grows by E⁸ per mode — one exp per call instead of one per mode; the shift
-    /// phase exp(−ikθ) likewise.
-    pub(super) fn mass(&self, u: f64) -> f64 {
-        let e = (-self.rate1 * u).exp();
-        let e2 = e * e;
-        let e4 = e2 * e2;
-        let e8 = e4 * e4;
-        let (mut pow, mut ratio, mut sum) = (e, e8, self.mean_mass);
-        if self.drift == 0.0 {
-            for &c in &self.terms {
-                sum += c.im * pow;
-                pow *= ratio;
-                ratio *= e8;
-                if pow < 1e-300 {
-                    break;
-                }
-            }
-            return sum;
-        }
-        let theta = PI * self.drift * u / self.x;
-        let mut phase = Complex64::from_polar(1.0, -theta);
-        let rot = Complex64::from_polar(1.0, -2.0 * theta);
-        for &c in &self.terms {
-            sum += (c * phase).im * pow;
-            phase *= rot;
-            pow *= ratio;
-            ratio *= e8;
-            if pow < 1e-300 {
-                break;
-            }
-        }
-        sum
-    }
-
-    /// Writes the loaded values evolved by dv back into p.
-    pub(super) fn finish(&mut self, p: &mut [f64], dv: f64) {
-        let (n, x) = (self.n, self.x);
-        let m = 2 * n;
-        let (_, _, inv) = self.plan.as_ref().expect("loaded");
-        // exp(−c k²)/m by the same recurrence as `mass`, applied to modes k and m − k (the
-        // shift phase exp(∓ikθ) with them)
-        let e = (-0.5 * dv * (PI / x) * (PI / x)).exp();
-        let e2 = e * e;
-        let theta = PI * self.drift * dv / x;
-        let rot = Complex64::from_polar(1.0, -theta);
-        let mut phase = Complex64::new(1.0, 0.0);
-        let (mut pow, mut ratio) = (1.0 / m as f64, e);
-        for k in 0..=n {
-            if pow < 1e-300 {
-                pow = 0.0; // and stays 0: no denormal arithmetic
-            }
-            if k == n {
-                // the Nyquist mode: the real part of its shift
-                self.buf[k] *= pow * phase.re;
-            } else {
-                self.buf[k] *= phase * pow;
-                if k > 0 {
-                    self.buf[m - k] *= phase.conj() * pow;
-                }
-            }
-            if pow > 0.0 {
-                pow *= ratio;
-                ratio *= e2;
-            }
-            phase *= rot;
-        }
-        inv.process_with_scratch(&mut self.buf, &mut self.scratch);
-        p[0] = 0.0;
-        p[n] = 0.0;
-        for j in 1..n {
-            p[j] = self.buf[j].re;
-        }
-    }
-
-    /// Evolves p by dv (no drift) and returns its integral.
-    #[cfg(test)]
-    pub(super) fn apply(&mut self, p: &mut [f64], h: f64, dv: f64) -> f64 {
-        self.load(p, h, 0.0, 0.0);
-        let mass = self.mass(dv);
-        self.finish(p, dv);
-        mass
-    }
-}
 
 /// The state of the march.
 #[derive(Clone)]
@@ -267,6 +115,9 @@ pub(super) fn mirror_area(d: f64, v: f64) -> f64 {
 pub(super) fn gauss(x: f64, v: f64) -> f64 {
     (-x * x / (2.0 * v)).exp() / (2.0 * PI * v).sqrt()
 }
+
+/// Pieces of a step after the onset of its wall (see [`Marcher::step_onset`]).
+pub(super) const ONSET_PIECES: usize = 4;
 
 /// Points of the shift's Lagrange interpolation: the error per shift is O(h⁸ ∂⁸Pr), ~1e-9 of
 /// Pr at 10 points per width (4 points gave ~1e-5 per shift, ~1e-3 after a march).
@@ -363,14 +214,16 @@ impl<'a> Marcher<'a> {
     }
 
     /// Marches the distribution through the steps with the given wall positions (σ_a* at the
-    /// nodes, `walls[0]` at the start), returning a_r at the nodes.
-    pub(super) fn march(&mut self, walls: &[f64]) -> Vec<f64> {
+    /// nodes, `walls[0]` at the start; `onsets[k]`: where the wall of step k leaves zero, see
+    /// [`Marcher::step_onset`]), returning a_r at the nodes.
+    pub(super) fn march(&mut self, walls: &[f64], onsets: &[Option<f64>]) -> Vec<f64> {
         let k_steps = self.grid.steps.len();
         let mut a_nodes = Vec::with_capacity(k_steps + 1);
         a_nodes.push(1.0);
         let mut cur = self.start(walls.first().copied().unwrap_or(0.0));
-        for &s_k in walls.iter().skip(1).take(k_steps) {
-            a_nodes.push(self.step(&mut cur, s_k, true));
+        for (k, &s_k) in walls.iter().skip(1).take(k_steps).enumerate() {
+            let onset = onsets.get(k).copied().flatten();
+            a_nodes.push(self.step_onset(&mut cur, s_k, onset, true));
         }
         a_nodes
     }
@@ -387,21 +240,24 @@ impl<'a> Marcher<'a> {
         }
     }
 
-    /// a_r after step `cur.k` with the wall at `s_k` (σ_a* over the step) — without changing
-    /// `cur`: one trial of the step, for a wall that depends on the step's own end (the
-    /// shooting march). Costs a shift and a forward transform (no inverse).
-    pub(super) fn trial(&mut self, cur: &Cursor, s_k: f64) -> f64 {
+    /// a_r after step `cur.k` with the wall moving to `s_k` (σ_a* at the step's end; `onset`
+    /// as in [`Marcher::step_onset`]) — without changing `cur`: one trial of the step, for a
+    /// wall that depends on the step's own end (the shooting march). Costs a forward
+    /// transform (no inverse) unless the step is split at an onset.
+    pub(super) fn trial(&mut self, cur: &Cursor, s_k: f64, onset: Option<f64>) -> f64 {
         let mut c = cur.clone();
-        self.step(&mut c, s_k, false)
+        self.step_onset(&mut c, s_k, onset, false)
     }
 
-    /// Advances `cur` by one step with the wall at `s_k`, returns a_r at the step's end.
-    /// `commit` = false skips writing the evolved grid back (only a_r is wanted; `cur` is then
-    /// a throw-away copy).
-    pub(super) fn step(&mut self, cur: &mut Cursor, s_k: f64, commit: bool) -> f64 {
-        let p0 = self.pressure;
-        let model = self.scene.model;
-        let ppw = self.acc.points_per_width;
+    /// Advances `cur` by one step with the wall moving to `s_k` at its end, returns a_r at the
+    /// step's end. `commit` = false skips writing the evolved grid back (only a_r is wanted;
+    /// `cur` is then a throw-away copy). `onset`: for a wall that leaves zero inside the step,
+    /// the fraction of the step (in the variance measure) where γ turns positive, after which σ_a ∝ √γ grows
+    /// like the square root of the distance from it. The step is split at the onset and in
+    /// [`ONSET_PIECES`] pieces graded as i² after it, the wall following the square root
+    /// through their ends (linear in v within each): the wall's path then carries no O(√Δ)
+    /// error at the onset.
+    pub(super) fn step_onset(&mut self, cur: &mut Cursor, s_k: f64, onset: Option<f64>, commit: bool) -> f64 {
         let k = cur.k;
         let st = self.grid.steps[k];
         if k > 0 {
@@ -409,6 +265,35 @@ impl<'a> Marcher<'a> {
         }
         cur.k += 1;
         let b_cum = cur.b_cum;
+        match onset {
+            Some(s0) if s0 > 0.0 && s0 < 1.0 && cur.wall == 0.0 && s_k > 0.0 => {
+                let mut pieces = vec![(s0, 0.0)];
+                for i in 1..=ONSET_PIECES {
+                    let t = i as f64 / ONSET_PIECES as f64;
+                    pieces.push((s0 + (1.0 - s0) * t * t, s_k * t));
+                }
+                let (mut from, mut a) = (0.0, cur.a);
+                let last = pieces.len() - 1;
+                for (i, &(to, wall)) in pieces.iter().enumerate() {
+                    let b = st.b * (to - from);
+                    a = self.advance(cur, wall, k, b, b_cum + st.b * from, commit || i < last);
+                    from = to;
+                }
+                a
+            }
+            _ => self.advance(cur, s_k, k, st.b, b_cum, commit),
+        }
+    }
+
+    /// One piece of a step: variance measure `b`, the wall moving to `s_k`.
+    fn advance(&mut self, cur: &mut Cursor, s_k: f64, k: usize, b: f64, b_cum: f64, commit: bool) -> f64 {
+        let p0 = self.pressure;
+        let model = self.scene.model;
+        let ppw = self.acc.points_per_width;
+        let st = Step {
+            b,
+            ..self.grid.steps[k]
+        };
         let v = cur.v;
         let forced = self.force_grid_from == Some(k) && v > 0.0;
         if let State::Analytic = cur.state {
@@ -538,7 +423,7 @@ impl<'a> Marcher<'a> {
 /// down (zeros prepended) when the distribution comes nearer; never below the wall.
 fn reoffset(p: &mut Vec<f64>, m: &mut usize, h: f64, margin: f64) {
     let peak = p.iter().fold(0.0f64, |a, &b| a.max(b.abs()));
-    if !(peak > 0.0) {
+    if peak.is_nan() || peak <= 0.0 {
         return;
     }
     let lo = p.iter().position(|&x| x.abs() > 1e-16 * peak).unwrap_or(0);

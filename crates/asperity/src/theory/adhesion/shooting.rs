@@ -105,18 +105,24 @@ impl Marcher<'_> {
                 coef.node(k + 1, gamma_raw(c, energy + am * model.w(am) * e, a_end))
             };
             // γ at the step's end cannot turn positive (ā W(ā) ≤ 1): no wall, no trial
+            // where γ (linear in ln q over the step) turns positive, if it does in this step
+            let onset_for = |a_end: f64| -> Option<f64> {
+                let am = 0.5 * (a + a_end);
+                let g1 = gamma_raw(c, energy + am * model.w(am) * e, a_end);
+                (g0 <= 0.0 && g1 > 0.0).then(|| g0 / (g0 - g1))
+            };
             let wall = if g0 <= 0.0 && c + energy + e <= 0.0 {
-                0.0
+                (0.0, None)
             } else {
                 // predictor–corrector: a trial with the wall of the extrapolated end value
                 // gives the step's end, and the step is taken with the wall of that end (a
                 // fixed number of trials keeps H(C) smooth; second order in the step)
                 let guess = if a_prev > 0.0 { (a * a / a_prev).min(1.0) } else { a };
-                let end = self.trial(&cur, wall_for(guess));
+                let end = self.trial(&cur, wall_for(guess), onset_for(guess));
                 self.trials += 1;
-                wall_for(end)
+                (wall_for(end), onset_for(end))
             };
-            let a_next = self.step(&mut cur, wall, true);
+            let a_next = self.step_onset(&mut cur, wall.0, wall.1, true);
             let am = 0.5 * (a + a_next);
             energy += am * model.w(am) * e;
             a_prev = a;
@@ -197,5 +203,4 @@ mod tests {
             let _ = n;
         }
     }
-
 }
