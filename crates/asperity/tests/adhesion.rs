@@ -432,3 +432,47 @@ fn the_thin_slab_grid_converges_everywhere() {
         }
     }
 }
+
+/// The accuracy ladder behind the default `AdhesionAccuracy` (BENCHMARKS.md, issue 13): the
+/// relative a_r error of one adhesive solve against (192, 40) and its time, for rungs (steps
+/// per ln q, points per width) on system I (model 3, p* = 0.01) and system II (model 4,
+/// p* = 0.005, t·q_r = ∞ and 0.25). `cargo test -p asperity --test adhesion -- --ignored
+/// --nocapture ladder`.
+#[test]
+#[ignore]
+fn ladder() {
+    let acc = |s: f64, p: f64| AdhesionAccuracy {
+        steps_per_ln_q: s,
+        points_per_width: p,
+        explore_branches: false,
+        ..AdhesionAccuracy::default()
+    };
+    for (n, model, t) in [(1u8, 3u8, f64::INFINITY), (2, 4, f64::INFINITY), (2, 4, 0.25)] {
+        let mut s = system(n, model);
+        s.thickness_qr = t;
+        let reference = adhesion::solve(&s, &acc(192.0, 40.0), None, None).unwrap().a_r;
+        for (st, pp) in [
+            (8.0, 5.0),
+            (12.0, 5.0),
+            (16.0, 6.0),
+            (24.0, 8.0),
+            (24.0, 10.0),
+            (32.0, 10.0),
+            (48.0, 12.0),
+        ] {
+            let a = acc(st, pp);
+            let t0 = std::time::Instant::now();
+            let mut reps = 0;
+            let mut a_r = 0.0;
+            while reps < 3 || t0.elapsed().as_secs_f64() < 0.3 {
+                a_r = adhesion::solve(&s, &a, None, None).unwrap().a_r;
+                reps += 1;
+            }
+            println!(
+                "system {n} model {model} t {t} ({st}, {pp}): a_r {a_r:.8} rel. error {:.2e} {:.1} ms",
+                (a_r / reference - 1.0).abs(),
+                t0.elapsed().as_secs_f64() / reps as f64 * 1e3
+            );
+        }
+    }
+}
