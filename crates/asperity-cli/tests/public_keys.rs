@@ -79,6 +79,7 @@ const RUN: &[&str] = &[
     "iterations",
     "mean_contact_stress",
     "mean_gap",
+    "mean_gap_lower_rel",
     "mean_gap_rel",
     "pr",
     "pr.density",
