@@ -141,6 +141,8 @@ fn sweep_keys_and_columns() {
             "a_r_eq18",
             "thickness_qr",
             "gamma",
+            // issue 13: the mean gap's lower bound
+            "mean_gap_lower_rel",
         ],
         "sweep rows",
     );

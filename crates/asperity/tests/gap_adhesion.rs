@@ -103,8 +103,8 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 12, rng_seed: proptest::test_runner::RngSeed::Fixed(13), ..ProptestConfig::default() })]
 
     /// On random adhesive scenes (system II spectrum, thickness, surface energy, model, load
-    /// range): every gap a sweep reports is ≥ 0 and non-increasing in p*, and a missing one is
-    /// explained in the note.
+    /// range): every gap a sweep reports is ≥ 0, non-increasing in p* and above its lower
+    /// bound, and a missing one is explained in the note.
     #[test]
     fn adhesive_gaps_are_admissible(
         log_t in -1.3f64..0.5,
@@ -120,6 +120,11 @@ proptest! {
         let with_gap: Vec<_> = sw.rows.iter().filter(|r| r.mean_gap_rel.is_finite()).collect();
         for r in &with_gap {
             prop_assert!(r.mean_gap_rel >= 0.0, "{r:?}");
+            // the reversible lower bound stays below the gap (to the quadrature error)
+            prop_assert!(
+                r.mean_gap_lower_rel >= 0.0 && r.mean_gap_lower_rel <= r.mean_gap_rel + 10.0 * r.mean_gap_error + 1e-12,
+                "{r:?}"
+            );
         }
         for w in with_gap.windows(2) {
             prop_assert!(w[1].mean_gap_rel <= w[0].mean_gap_rel, "{:?}", w);
@@ -237,5 +242,53 @@ fn gfmd_mean_gap_on_system_ii_with_adhesion() {
     // thinner slabs conform more: the gap at the smallest load falls with t, in both
     for w in at_small_load.windows(2) {
         assert!(w[1].0 < w[0].0 && w[1].1 < w[0].1, "{at_small_load:?}");
+    }
+}
+
+/// By hand (BENCHMARKS.md, issue 13): the comparison above on a resolved map, printed as a
+/// markdown table. `ASPERITY_GAP_PRESET` names the preset (a path; its `[gfmd]` grid is used),
+/// `ASPERITY_GAP_THICKNESS` the t·q_r values (comma-separated, `inf` allowed).
+/// `cargo test --release -p asperity --test gap_adhesion -- --ignored --nocapture`
+#[test]
+#[ignore]
+fn resolved_gfmd_comparison_by_hand() {
+    let path = std::env::var("ASPERITY_GAP_PRESET").unwrap_or_else(|_| "system-2".into());
+    let ts = std::env::var("ASPERITY_GAP_THICKNESS").unwrap_or_else(|_| "inf,0.3,0.15".into());
+    let pre = Preset::resolve(&path).unwrap();
+    let grid = GridSpec::from_preset(pre.gfmd.as_ref().unwrap());
+    let ps: Vec<f64> = (0..17).map(|i| 10f64.powf(-4.0 + 0.25 * i as f64)).collect();
+    println!("| t·q_r | p* | GFMD a_r | GFMD ū/h_rms | GFMD ∫dU/p | GFMD ∫dU_el/p | theory a_r | theory ū/h_rms | theory lower |");
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for t in ts.split(',') {
+        let mut scene = pre.scene().unwrap();
+        scene.thickness_qr = if t == "inf" { f64::INFINITY } else { t.parse().unwrap() };
+        let setup = GfmdSetup {
+            scene,
+            grid,
+            seed: 1,
+            surface: None,
+            rescale: true,
+        };
+        let t0 = std::time::Instant::now();
+        let rows = gfmd_loading(&setup, &ps);
+        eprintln!("t = {t}: GFMD sweep {:.1} s", t0.elapsed().as_secs_f64());
+        let (rev, stored) = (table_route(&rows, 3), table_route(&rows, 4));
+        let prep = gfmd::prepare(&setup).unwrap();
+        for (i, r) in rows.iter().enumerate() {
+            let th = prep.theory_scene(r[0]).unwrap();
+            let a = asperity::theory::engine::evaluate(&th, &Options::chart()).map(|e| e.stats.a_r);
+            let g = gap::mean_gap(&th, &Options::chart());
+            let (a, (u, lo)) = match (a, g) {
+                (Ok(a), Ok(Some(g))) => (
+                    format!("{a:.4}"),
+                    (format!("{:.4}", g.relative), format!("{:.4}", g.lower)),
+                ),
+                (a, g) => (format!("{a:?}"), (format!("{g:?}"), String::new())),
+            };
+            println!(
+                "| {t} | {:.2e} | {:.4} | {:.4} | {:+.4} | {:.4} | {a} | {u} | {lo} |",
+                r[0], r[1], r[2], rev[i], stored[i]
+            );
+        }
     }
 }

@@ -108,6 +108,9 @@ pub struct SweepRow {
     pub mean_gap_error: f64,
     /// ⟨δσ_c²⟩* (reduced by (E*ḡ)²).
     pub contact_stress_variance: f64,
+    /// Lower bound of ū/h_rms on loading (the reversible route made admissible; physics.md
+    /// §5.1); equal to `mean_gap_rel` without adhesion up to quadrature error.
+    pub mean_gap_lower_rel: f64,
 }
 
 impl SweepRow {
@@ -125,6 +128,7 @@ impl SweepRow {
             elastic_energy_reduced: f64::NAN,
             mean_gap_error: f64::NAN,
             contact_stress_variance: f64::NAN,
+            mean_gap_lower_rel: f64::NAN,
         }
     }
 }
@@ -238,17 +242,17 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         None
     };
     let h_rms = scene.spectrum.rms_height();
-    let gap_at = |i: usize| -> (f64, f64) {
+    let gap_at = |i: usize| -> (f64, f64, f64) {
         match &table {
-            Some(t) if i >= first_ok => (t.gap[i - first_ok], t.error[i - first_ok]),
-            _ => (f64::NAN, f64::NAN),
+            Some(t) if i >= first_ok => (t.gap[i - first_ok], t.error[i - first_ok], t.lower[i - first_ok]),
+            _ => (f64::NAN, f64::NAN, f64::NAN),
         }
     };
     let mut failed_loads = Vec::new();
     let rows: Vec<SweepRow> = (0..spec.points)
         .map(|k| {
             let i = k * m;
-            let (g, g_err) = gap_at(i);
+            let (g, g_err, g_lo) = gap_at(i);
             match &evs[i] {
                 Ok(e) => SweepRow {
                     p: ps[i],
@@ -261,6 +265,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
                     elastic_energy_reduced: e.elastic_energy / unit,
                     mean_gap_error: g_err,
                     contact_stress_variance: e.stats.contact_stress_variance,
+                    mean_gap_lower_rel: g_lo,
                 },
                 Err(_) => {
                     failed_loads.push(ps[i]);
