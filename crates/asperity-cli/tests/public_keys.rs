@@ -69,6 +69,7 @@ const SCENE: &[&str] = &[
 const RUN: &[&str] = &[
     "a_r",
     "branch",
+    "branches",
     "contact_stress_variance",
     "converged",
     "detached_fraction",
@@ -77,6 +78,7 @@ const RUN: &[&str] = &[
     "error_estimate",
     "gamma_q",
     "iterations",
+    "jump_in_pressure",
     "mean_contact_stress",
     "mean_gap",
     "mean_gap_lower_rel",
@@ -85,6 +87,7 @@ const RUN: &[&str] = &[
     "pr.density",
     "pr.sigma",
     "preset",
+    "pull_off_pressure",
     "residual",
     "resolution",
     "resolution.a_r",
@@ -102,6 +105,13 @@ fn run_keys() {
         let v = json(&["run", "--preset", "system-1", "--gamma", gamma]);
         assert_has(&v, RUN, "run");
         assert_has(&v, SCENE, "run");
+        if gamma != "0" {
+            assert_has(
+                &v["branches"][0],
+                &["a_r", "branch", "elastic_energy", "gamma_coarse", "sigma_a", "stable"],
+                "run branches",
+            );
+        }
     }
 }
 
@@ -119,6 +129,9 @@ fn sweep_keys_and_columns() {
             "monotone",
             "preset",
             "rows",
+            // issue 13: the hysteresis window's edges
+            "jump_in_pressure",
+            "pull_off_pressure",
         ],
         "sweep",
     );
@@ -141,6 +154,9 @@ fn sweep_keys_and_columns() {
             "a_r_eq18",
             "thickness_qr",
             "gamma",
+            // issue 13: both branches
+            "a_r_unloading",
+            "branches",
             // issue 13: the mean gap's lower bound
             "mean_gap_lower_rel",
         ],
@@ -158,6 +174,8 @@ fn sweep_keys_and_columns() {
         .next()
         .unwrap_or("")
         .to_string();
+    assert!(header.contains(",a_r_unloading,branches"), "{header}");
+    assert!(header.ends_with(",mean_gap_lower_rel"), "{header}");
     assert!(
         header.starts_with(
             "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error,\

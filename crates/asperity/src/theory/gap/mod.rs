@@ -34,7 +34,7 @@ pub mod closed_form;
 pub mod route;
 
 pub use closed_form::{asymptotic_slope, closed_form, closed_form_gamma_p, expint_e1};
-pub use route::{stored_energy, GapTable, DECREASE_NOISE_REL};
+pub use route::{stored_energy, stored_from, GapTable, DECREASE_NOISE_REL};
 
 use crate::error::Result;
 use crate::input::scene::Scene;

@@ -147,7 +147,13 @@ impl GapTable {
 /// The stored elastic energy U_el = U + a_r(q_s)γ_s = Σ a_r W u_ela^(f) (J/m²) of an
 /// evaluation [S-11, S-14]; U without adhesion.
 pub fn stored_energy(scene: &Scene, ev: &Evaluation) -> f64 {
-    ev.elastic_energy + ev.stats.a_r * scene.gamma
+    stored_from(scene, ev.elastic_energy, ev.stats.a_r)
+}
+
+/// U_el = U + a_r(q_s)γ_s (J/m²) from a branch's total energy U and contact area a_r(q_s),
+/// for tables built from branch states rather than evaluations.
+pub fn stored_from(scene: &Scene, elastic_energy: f64, a_r: f64) -> f64 {
+    elastic_energy + a_r * scene.gamma
 }
 
 /// The largest decrease of `stored` between neighbouring nodes that is still noise.
