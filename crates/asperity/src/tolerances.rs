@@ -144,3 +144,47 @@ pub const RUN_SWEEP_REL: f64 = 1e-6;
 /// steep fall of a_r there is resolved only to that level); the wrong interpolant this guards
 /// against was off by a factor of 3.
 pub const THIN_SLAB_SMALL_LOAD_ENERGY_REL: f64 = 1e-2;
+
+// The adhesive oracle (issue 13 items 3 and 6; `tests/adhesion_oracle.rs`, `tests/oracle/`)
+
+/// The oracle's march with a prescribed wall against closed forms (fixed wall: the mirror
+/// Gaussian; linearly moving wall: Bachelier–Lévy), model 1 on a half-space, two levels
+/// extrapolated, relative to a_r. Measured ≤ 4.6e-5 (fixed) and ≤ 8.3e-5 (moving, p* = 1e-4);
+/// its error is first order in the step because the wall of each implicit solve sits at the
+/// step's end.
+pub const ORACLE_WALL_REL: f64 = 1.5e-4;
+
+/// The oracle at γ_s = 0 (σ_a ≡ 0, W-coupled broadening, slabs) against erf(√2p*) and the
+/// adaptive adhesionless ODE of `theory::persson`. Measured ≤ 6.2e-5.
+pub const ORACLE_ADHESIONLESS_REL: f64 = 1.5e-4;
+
+/// The fast adhesive solver at its default accuracy (24 steps per ln q, 10 points per width)
+/// against the oracle, relative to a_r, on top of the oracle's own error bar. Measured on 44
+/// scenes (systems I and II, models 1–4, t·q_r = ∞ to 0.25, p* = 1e-4 to 0.1; the ignored
+/// set): ≤ 1e-3 on most, 4e-3…9e-3 on five thin-slab scenes and 2.1e-2 on system II, model 4,
+/// t·q_r = 0.25, p* = 1e-4, where the first-order march converges slowly and not
+/// monotonically (2.1e-2, 5.0e-3, 3.4e-3, 9e-4 at 1×, 2×, 4×, 8× the resolution). On every
+/// scene the error stayed within `error_estimate` plus the oracle's bar, which the tests
+/// also assert.
+pub const ADHESION_ORACLE_REL: f64 = 3e-2;
+
+/// The fast adhesive solver at 4× the default resolution against the oracle (the ignored
+/// set of 44 scenes). Measured ≤ 1.1e-3, and 3.4e-3 on the scene named above.
+pub const ADHESION_ORACLE_FINE_REL: f64 = 5e-3;
+
+/// Honest error bars (issue 13 item 6): the share of random adhesive scenes on which
+/// `error_estimate` must be ≥ the true error of a_r (against the oracle, and against a 4×
+/// finer run of the fast solver).
+pub const ERROR_BAR_COVERAGE: f64 = 0.95;
+
+/// … and the smallest estimate/true-error ratio allowed on any scene (never more than 2×
+/// below).
+pub const ERROR_BAR_WORST_RATIO: f64 = 0.5;
+
+/// The safety factor of the adhesive `error_estimate` (engine.rs): S·(|a − a(steps/2)| +
+/// |a − a(points/2)|) + residual·a. Without it (S = 1) the estimate fell below the true error
+/// on 4 of 59 seeded random scenes against 4× finer runs (worst ratio 0.74) and down to 0.57×
+/// against the oracle (system II, model 4, t·q_r = 0.3, p* = 1e-4): the halvings measure a
+/// first-order error only once the march is asymptotic. S = 2 lifts the worst measured ratio
+/// above 1 (BENCHMARKS.md, "Honest error bars").
+pub const ADHESION_ERROR_SAFETY: f64 = 2.0;
