@@ -182,9 +182,18 @@ pub const ERROR_BAR_COVERAGE: f64 = 0.95;
 pub const ERROR_BAR_WORST_RATIO: f64 = 0.5;
 
 /// The safety factor of the adhesive `error_estimate` (engine.rs): S·(|a − a(steps/2)| +
-/// |a − a(points/2)|) + residual·a. Without it (S = 1) the estimate fell below the true error
-/// on 4 of 59 seeded random scenes against 4× finer runs (worst ratio 0.74) and down to 0.57×
-/// against the oracle (system II, model 4, t·q_r = 0.3, p* = 1e-4): the halvings measure a
-/// first-order error only once the march is asymptotic. S = 2 lifts the worst measured ratio
-/// above 1 (BENCHMARKS.md, "Honest error bars").
-pub const ADHESION_ERROR_SAFETY: f64 = 2.0;
+/// |a − a(points/2)|) + residual·a. The halvings measure a first-order error only once the
+/// march is asymptotic; on thin slabs it converges slowly and not monotonically (a(steps/2),
+/// a(points/2) and a can agree while all are off). Measured against the oracle (errors larger
+/// than the oracle's bar only) and 4× finer runs:
+///
+/// | set | S = 1 | S = 2 | S = 3 |
+/// |---|---|---|---|
+/// | 59 seeded random scenes: misses, worst ratio | 6, 0.62 | 0, 1.24 | 0, 1.86 |
+/// | issue grid (system II, t·q_r ≤ 0.5), 97 converged points | 13, 0.24 | 5, 0.48 | 2, 0.72 |
+///
+/// S = 3 meets both criteria (≥ 95 % covered, never 2× below) on both sets, at a median
+/// over-estimate of ~5× on the issue grid and ~12× on the random set (BENCHMARKS.md, "The
+/// slow oracle and honest error bars"). Re-measure it with the ignored tests of
+/// `adhesion_oracle` and `adhesion_error_bars` whenever the propagator changes.
+pub const ADHESION_ERROR_SAFETY: f64 = 3.0;

@@ -5,8 +5,11 @@
 //! FFT). First the oracle's own accuracy (the paper's numbers, closed forms of a fixed and a
 //! linearly moving wall, the adhesionless limit), then the fast solver against it.
 //!
-//! The default tests take a few seconds; the larger sets are ignored:
-//! `cargo test -p asperity --test adhesion_oracle -- --ignored --nocapture`.
+//! The default tests take a few seconds (ten scenes); the larger sets are ignored (each a
+//! few minutes in the test profile): `cargo test -p asperity --test adhesion_oracle --
+//! --ignored --nocapture` runs the five-level refinement study of the oracle, a 44-scene
+//! comparison (default and 4× finer fast solver), and the issue's 112-point grid of system II
+//! (the error estimate's coverage there, and where the fast solver does not converge).
 
 mod oracle;
 
@@ -313,4 +316,72 @@ fn oracle_refinement_study() {
             }
         }
     }
+}
+
+/// The issue's grid (system II, models 3 and 4, t·q_r = 0.05…0.5, p* = 1e-6…0.1): the oracle's
+/// roots of H at every point, and the fast solver's `error_estimate` against its error from the
+/// oracle wherever it converges. A point counts as a miss when the error exceeds the estimate
+/// by more than the oracle's bar; misses must stay ≤ 5 % and no estimate more than 2× below
+/// the error (less the bar). Prints one row per point and the count of points where the fast
+/// solver did not converge (issue 13 item 1, not asserted here).
+#[test]
+#[ignore]
+fn fast_solver_on_the_issue_grid() {
+    let mut not_converged = 0;
+    let mut points = 0;
+    let mut ratios = Vec::new();
+    for m in [3, 4] {
+        for t in [0.05, 0.08, 0.1, 0.12, 0.15, 0.2, 0.3, 0.5] {
+            for p in [1e-6, 1e-5, 1e-4, 1e-3, 5e-3, 0.02, 0.1] {
+                let s = scene(2, m, t, p);
+                let o = loading(&Physics::from_scene(&s), &default_resolution(), 8);
+                points += 1;
+                let t0 = std::time::Instant::now();
+                let fast = engine::evaluate(&s, &Options::default());
+                let tf = t0.elapsed().as_secs_f64();
+                match fast {
+                    Ok(ev) => {
+                        let err = (ev.stats.a_r - o.a_r).abs();
+                        eprintln!(
+                            "| {m} | {t} | {p:e} | {:.6} ± {:.0e} | {} | {:.6} | {:.1e} | {:.1e} | {tf:.2} s |",
+                            o.a_r,
+                            o.error,
+                            o.all.len(),
+                            ev.stats.a_r,
+                            err / o.a_r,
+                            ev.error_estimate / o.a_r
+                        );
+                        // resolved errors only: below the oracle's bar the ratio means nothing
+                        if err > o.error {
+                            ratios.push((ev.error_estimate / (err - o.error), format!("model {m}, t {t}, p* {p}")));
+                        }
+                    }
+                    Err(e) => {
+                        not_converged += 1;
+                        let e = e.to_string();
+                        eprintln!(
+                            "| {m} | {t} | {p:e} | {:.6} ± {:.0e} | {} | failed: {} | | | {tf:.2} s |",
+                            o.a_r,
+                            o.error,
+                            o.all.len(),
+                            &e[..e.len().min(60)]
+                        );
+                    }
+                }
+            }
+        }
+    }
+    let converged = points - not_converged;
+    ratios.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let misses = ratios.iter().filter(|r| r.0 < 1.0).count();
+    eprintln!(
+        "{points} points, the fast solver did not converge on {not_converged}; of {converged} converged, {} resolved by the oracle, {misses} missed by the estimate; lowest ratios {:?}",
+        ratios.len(),
+        &ratios[..ratios.len().min(5)]
+    );
+    assert!(
+        misses as f64 <= (1.0 - ERROR_BAR_COVERAGE) * converged as f64,
+        "{ratios:?}"
+    );
+    assert!(ratios.iter().all(|r| r.0 >= ERROR_BAR_WORST_RATIO), "{ratios:?}");
 }
