@@ -69,6 +69,7 @@ const SCENE: &[&str] = &[
 const RUN: &[&str] = &[
     "a_r",
     "branch",
+    "branches",
     "contact_stress_variance",
     "converged",
     "detached_fraction",
@@ -101,6 +102,13 @@ fn run_keys() {
         let v = json(&["run", "--preset", "system-1", "--gamma", gamma]);
         assert_has(&v, RUN, "run");
         assert_has(&v, SCENE, "run");
+        if gamma != "0" {
+            assert_has(
+                &v["branches"][0],
+                &["a_r", "branch", "elastic_energy", "gamma_coarse", "sigma_a", "stable"],
+                "run branches",
+            );
+        }
     }
 }
 

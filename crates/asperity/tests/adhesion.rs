@@ -200,7 +200,8 @@ fn pr_integrates_to_a_r_and_starts_at_the_wall() {
     assert!(ev.tensile_area > 0.01 * ev.stats.a_r);
     assert!(ev.stats.pr.density.iter().all(|d| d.is_finite() && *d >= 0.0));
     assert_eq!(ev.gamma_q.len(), ev.resolution.len());
-    assert!(ev.gamma_q.iter().all(|g| (0.0..=1.0 + 1e-12).contains(g)));
+    // γ(q) ≤ γ_s up to the energy balance's residual at q_s
+    assert!(ev.gamma_q.iter().all(|g| (0.0..=1.0 + ev.residual + 1e-12).contains(g)));
 }
 
 #[test]
@@ -277,21 +278,92 @@ fn sweep_across_the_thin_slab_transition() {
 }
 
 #[test]
-fn continuation_in_gamma_meets_the_fixed_point() {
-    // pseudo-arclength continuation from the adhesionless state (γ = 0) to γ_s: on system 1
-    // (no jump) it meets exactly one stable branch, the one Anderson mixing finds
+fn the_shooting_root_is_a_fixed_point_of_the_prescribed_wall_march() {
+    // system 1 (no jump): one branch; the march with the root's walls reproduces the root's
+    // a_r(q) (the residual is that march against the root, computed by the solver)
     let mut s = system(1, 3);
     s.pressure = 0.01;
-    let acc = AdhesionAccuracy {
-        explore_branches: false,
-        ..AdhesionAccuracy::default()
-    };
-    let direct = adhesion::solve(&s, &acc, None, None).unwrap();
-    let trace = adhesion::trace_in_gamma(&s, &acc, None).unwrap();
-    assert!(!trace.stalled, "{trace:?}");
-    assert!(trace.folds.is_empty(), "{trace:?}");
-    assert_eq!(trace.branches.len(), 1, "{trace:?}");
-    let b = &trace.branches[0];
-    assert!(b.converged && b.stable);
-    assert!((b.a_r / direct.a_r - 1.0).abs() < 1e-6, "{} vs {}", b.a_r, direct.a_r);
+    let sol = adhesion::solve(&s, &AdhesionAccuracy::default(), None, None).unwrap();
+    assert_eq!(sol.branches.len(), 1, "{:?}", sol.branches);
+    assert!(sol.branches[0].stable);
+    assert!(sol.residual < 1e-6, "{}", sol.residual);
+    assert!((sol.branches[0].a_r / sol.a_r - 1.0).abs() < 1e-6);
+}
+
+/// The issue-13 grid (system 2, models 3 and 4, thin slabs, small loads): every point solves,
+/// with its time and branches. `cargo test -p asperity --release --test adhesion -- --ignored
+/// --nocapture issue_grid`.
+#[test]
+#[ignore]
+fn issue_grid() {
+    let mut times = Vec::new();
+    let only = std::env::var("GRID_ONLY").ok();
+    for sys in [2u8, 1] {
+        for model in [3u8, 4] {
+            for t in [0.05, 0.08, 0.1, 0.12, 0.15, 0.2, 0.3, 0.5] {
+                for p in [1e-6, 1e-5, 1e-4, 1e-3, 5e-3, 0.02, 0.1] {
+                    if let Some(o) = &only {
+                        if *o != format!("{sys} {model} {t} {p:e}") {
+                            continue;
+                        }
+                    }
+                    let mut s = system(sys, model);
+                    s.thickness_qr = t;
+                    s.pressure = p;
+                    let t0 = std::time::Instant::now();
+                    let r = adhesion::solve(&s, &AdhesionAccuracy::default(), None, None);
+                    let dt = t0.elapsed().as_secs_f64();
+                    times.push(dt);
+                    match r {
+                        Ok(sol) => println!(
+                            "sys {sys} m {model} t {t} p {p:e}: a_r {:.5} shots {} res {:.1e} {:.1} ms branches {:?}",
+                            sol.a_r,
+                            sol.iterations,
+                            sol.residual,
+                            dt * 1e3,
+                            sol.branches
+                                .iter()
+                                .map(|b| (b.branch.as_str(), (b.a_r * 1e4).round() / 1e4))
+                                .collect::<Vec<_>>()
+                        ),
+                        Err(e) => println!("sys {sys} m {model} t {t} p {p:e}: ERROR {e} {:.1} ms", dt * 1e3),
+                    }
+                }
+            }
+        }
+    }
+    times.sort_by(|a, b| a.total_cmp(b));
+    println!(
+        "median {:.1} ms, worst {:.1} ms",
+        times[times.len() / 2] * 1e3,
+        times[times.len() - 1] * 1e3
+    );
+}
+
+/// Prints the branches of system 2 (model 3, t·q_r = 0.1) against γ and p*.
+#[test]
+#[ignore]
+fn branch_map() {
+    for model in [3u8, 4] {
+        for t in [0.1, 0.15, 0.2] {
+            for frac in [0.2, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0, 1.5, 2.0] {
+                for p in [1e-6, 1e-4, 1e-2] {
+                    let mut s = system(2, model);
+                    s.thickness_qr = t;
+                    s.pressure = p;
+                    s.gamma *= frac;
+                    let sol = adhesion::solve(&s, &AdhesionAccuracy::default(), None, None).unwrap();
+                    if sol.branches.len() > 1 {
+                        println!(
+                            "m {model} t {t} g {frac} p {p:e}: {:?}",
+                            sol.branches
+                                .iter()
+                                .map(|b| (b.branch.as_str(), (b.a_r * 1e4).round() / 1e4))
+                                .collect::<Vec<_>>()
+                        );
+                    }
+                }
+            }
+        }
+    }
 }

@@ -242,14 +242,19 @@ pub struct RunOutput {
     pub tensile_area: f64,
     /// 1 − a_r: the fraction that left the contact through the wall.
     pub detached_fraction: f64,
-    /// Fixed-point iterations of the adhesive solver (0 without adhesion).
+    /// Marches of the adhesive solver (0 without adhesion).
     pub iterations: usize,
-    /// Fixed-point residual max|G(a) − a|/a_r (0 without adhesion).
+    /// Self-consistency residual |γ(q_s)/γ_s − 1| (0 without adhesion).
     pub residual: f64,
-    /// "adhesionless", "loading", "loading (continuation in gamma)" or "upper (from full contact)".
+    /// "adhesionless", or "loading": the branch a loading history reaches (older versions
+    /// could also say "loading (continuation in gamma)" or "upper (from full contact)").
     pub branch: String,
-    /// a_r of a distinct unloading branch (from full contact), null if none was found.
+    /// a_r of a distinct unloading branch (the highest stable one), null if none.
     pub unloading_a_r: Option<f64>,
+    /// Every branch at this load, lowest a_r first: branch ("loading", "unstable",
+    /// "unloading"), stable, a_r, sigma_a, gamma_coarse (γ(q_L)/γ_s), elastic_energy.
+    /// Empty without adhesion.
+    pub branches: Vec<asperity::theory::adhesion::BranchState>,
     /// γ(q)/γ_s along `resolution.q` (empty without adhesion).
     pub gamma_q: Vec<f64>,
     /// σ_a*(q) along `resolution.q` (empty without adhesion).
@@ -306,6 +311,7 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         residual: ev.residual,
         branch: ev.branch.to_string(),
         unloading_a_r: ev.unloading_a_r,
+        branches: ev.branches.clone(),
         gamma_q: ev.gamma_q.clone(),
         sigma_a_q: ev.sigma_a_q.clone(),
         elapsed_s: ev.elapsed_s,
@@ -361,9 +367,17 @@ fn run_table(out: &RunOutput) -> String {
         if let Some(u) = out.unloading_a_r {
             line("unloading_a_r", format!("{u:.8} (a second, unloading branch)"));
         }
+        if out.branches.len() > 1 {
+            let list: Vec<String> = out
+                .branches
+                .iter()
+                .map(|b| format!("{} a_r = {:.6} sigma_a* = {:.4}", b.branch, b.a_r, b.sigma_a))
+                .collect();
+            line("branches", list.join("; "));
+        }
         line(
             "iterations",
-            format!("{} (residual {:.1e})", out.iterations, out.residual),
+            format!("{} marches (residual {:.1e})", out.iterations, out.residual),
         );
     }
     line("elastic_energy", format!("{:.6e} J/m^2", out.elastic_energy));

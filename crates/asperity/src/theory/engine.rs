@@ -4,7 +4,7 @@
 
 use crate::error::{check_in, Error, Field, Result};
 use crate::input::scene::Scene;
-use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution, Branch};
+use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution, Branch, BranchState};
 use crate::theory::persson::{self, Accuracy, ResolutionPoint};
 use serde::Serialize;
 use std::time::Instant;
@@ -130,15 +130,18 @@ pub struct Evaluation {
     pub gamma_q: Vec<f64>,
     /// σ_a*(q) at the `resolution` points (empty without adhesion).
     pub sigma_a_q: Vec<f64>,
-    /// Fixed-point iterations (0 without adhesion: the closed form needs none).
+    /// Marches of the adhesive solver (0 without adhesion: the closed form needs none).
     pub iterations: usize,
-    /// Fixed-point residual max|G(a) − a|/a_r (0 without adhesion).
+    /// Self-consistency residual |γ(q_s)/γ_s − 1| of the adhesive solution (0 without
+    /// adhesion).
     pub residual: f64,
-    /// The branch and how it was reached (serialised as "adhesionless", "loading", "loading
-    /// (continuation in gamma)", or "upper (from full contact)").
+    /// The branch (serialised as "adhesionless" or "loading": the branch a loading history
+    /// reaches; see [`Branch`]).
     pub branch: Branch,
-    /// a_r of a distinct unloading branch (started from full contact), if one exists.
+    /// a_r of a distinct unloading branch (the highest stable one), if one exists.
     pub unloading_a_r: Option<f64>,
+    /// Every branch at this load, lowest a_r first (empty without adhesion).
+    pub branches: Vec<BranchState>,
     /// γ̃_glo = γ_s/u_ela^(f) [S-24].
     pub gamma_glo: f64,
     /// Wall time (s).
@@ -202,6 +205,7 @@ pub fn evaluate_warm(
         residual: 0.0,
         branch: Branch::Adhesionless,
         unloading_a_r: None,
+        branches: Vec::new(),
         gamma_glo: 0.0,
         elapsed_s: t0.elapsed().as_secs_f64(),
         adhesive: None,
@@ -301,6 +305,7 @@ fn evaluate_adhesive(
         residual: sol.residual,
         branch: sol.branch,
         unloading_a_r: sol.unloading_a_r,
+        branches: sol.branches.clone(),
         gamma_glo: sol.gamma_glo,
         elapsed_s: t0.elapsed().as_secs_f64(),
         adhesive: Some(Box::new(sol)),

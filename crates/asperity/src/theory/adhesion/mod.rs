@@ -1,5 +1,5 @@
 //! Persson theory with adhesion: a moving absorbing wall, the scale-dependent surface energy
-//! and the self-consistent fixed point (physics.md §4; [S-5..S-9, S-14]).
+//! and the self-consistent solution with all its branches (physics.md §4; [S-5..S-9, S-14]).
 //!
 //! # Equations
 //!
@@ -44,40 +44,44 @@
 //! too far from the distribution to matter (p* + σ_a > 8.5√v, image mass < 1e-17), Pr is the
 //! mirror Gaussian about the wall and v follows the autonomous ODE dv/dB = W^{2α}(a(v)),
 //! integrated with RK4 in B (no grid). The grid starts from that mirror Gaussian with spacing
-//! h = √v/`points_per_width`, grows with the distribution and is coarsened by 2 (keeping every
-//! other node, exact) whenever √v exceeds 2·`points_per_width`·h, so its size stays bounded
-//! (~20·`points_per_width` nodes) from p* = 1e-8 to full contact.
+//! h = √v/`points_per_width`, reaches p* + σ_a + 10√v (rounded up to an FFT-friendly size
+//! 2^a·3^b·5^c) and is coarsened by 2 (keeping every other node, exact) whenever √v exceeds
+//! 2·`points_per_width`·h, so its size stays bounded (~20·`points_per_width` nodes) from
+//! p* = 1e-8 to full contact.
+//!
+//! # Self-consistency: one scalar equation, every branch
+//!
+//! γ(q) needs a_r at all finer scales and a_r needs σ_a at all coarser ones. Written with
+//! C = γ(q_L) the energy balance runs forward (`shooting`):
+//! a_r(q)γ(q) = C + ∫_{q_L}^{q} a_r W (q'E*f/4) dm, so for given C one march from q_L to q_s
+//! yields everything, and self-consistency is the scalar equation
+//!
+//! ```text
+//! H(C) = C + I(C) − γ_s a_r(q_s; C) = 0,   I = ∫_{q_L}^{q_s} a_r W (qE*f/4) dm,   C ∈ [−I_full, γ_s]
+//! ```
+//!
+//! with H(−I_full) < 0 < H(γ_s): a root always exists. `roots` finds every root (a scan in
+//! asinh(C/c₀), logarithmic in |C| on both sides of 0, at half resolution, then Brent's method
+//! at the requested one), so every branch of the scene at this load is found without
+//! iterating a map that loses contraction near a jump into contact — the old fixed point
+//! a ↦ march(σ_a(γ(a))) was ill-conditioned exactly there: an error δH in the balance moves γ
+//! by δH/a_r(q), which is large where γ(q) turns positive at small a_r. A root where H rises
+//! is stable; where it falls (between two rising ones), unstable. The loading branch — what a
+//! loading history from small p* reaches — is the lowest stable root; the highest stable root,
+//! where it differs, is the unloading branch (hysteresis), reported as `unloading_a_r` and in
+//! `branches`. `residual` is |H|/(γ_s a_r(q_s)) = |γ(q_s)/γ_s − 1| at the root (≤ `tol`).
 //!
 //! # Files
 //!
-//! `grid` (resolution steps), `propagator` (the march), `walls` (γ(q), σ_a(q)),
-//! `fixed_point` (Anderson mixing, cycle bisection), `strategy` (the fallbacks and the
-//! solution), and this module (accuracy, result types, entry points).
-//!
-//! # Self-consistency
-//!
-//! γ(q) needs a_r at all finer scales and a_r needs σ_a at all coarser ones: the unknown is
-//! the function a_r(q) at the step nodes, x ↦ G(x) = march(σ_a(γ(x))). The fixed point is
-//! found with Anderson mixing (depth 6, Walker–Ni type II), started from the adhesionless
-//! solution (the loading branch), until max|G(x) − x| ≤ `tol`·a_r(q_s). If Anderson stalls,
-//! the fallbacks of `strategy` are tried in order (a list of data, `strategy::Fallback`):
-//! two nearby resolutions; where plain iteration falls into a two-state cycle (near a jump
-//! into contact), a start bisected between the cycle's states; full contact (reported as the
-//! upper branch); damped mixing; continuation in γ_s (from γ = 0 in growing steps, each
-//! warm-started). A scene where none of these converges is an error
-//! ([`crate::error::Error::NotConverged`]) that lists the attempts made and their residuals. With `explore_branches`, the fixed
-//! point is also sought from full contact (a_r ≡ 1, the unloading branch); if it converges to
-//! a different state, both are reported (hysteresis: the loading branch is the answer, the
-//! other is `unloading_a_r`).
-//!
-//! Diagnostics: with `ASPERITY_DEBUG` set, every fixed-point iteration prints its residual and
-//! a_r(q_s) to stderr.
+//! `grid` (resolution steps), `propagator` (the march for given walls, one step at a time),
+//! `walls` (σ_a(q) for γ(q)), `shooting` (the forward march for given C), `roots` (all roots
+//! of H), `strategy` (the branch chosen and the solution assembled), and this module
+//! (accuracy, result types, entry points).
 
-mod continuation;
-mod fixed_point;
 mod grid;
-mod newton;
 mod propagator;
+mod roots;
+mod shooting;
 mod strategy;
 mod walls;
 
@@ -95,21 +99,23 @@ pub struct AdhesionAccuracy {
     pub steps_per_ln_q: f64,
     /// Grid nodes per standard deviation √v of the stress distribution.
     pub points_per_width: f64,
-    /// Fixed-point tolerance: max_q |G(a) − a| ≤ tol · a_r(q_s).
+    /// Self-consistency tolerance: |γ(q_s)/γ_s − 1| ≤ tol at each root (the energy balance
+    /// [S-14] at the finest scale).
     pub tol: f64,
-    /// Most fixed-point iterations per attempt.
+    /// Most root-refinement marches per branch.
     pub max_iterations: usize,
-    /// Also look for an unloading branch (started from full contact).
+    /// Scan for every branch even when a warm start (a nearby solution) is given. Off in
+    /// sweeps: the branches of the previous load are tracked, and the scan runs only when they
+    /// no longer account for every sign change of H.
     pub explore_branches: bool,
-    /// Use every fallback when a fixed point stalls (two nearby resolutions, damped mixing,
-    /// continuation in γ: up to seconds on a hard case). Off in sweeps, where a load that
-    /// stalls is reported as such after the cheap fallbacks (cycle bisection, full contact).
+    /// No effect since the shooting solver (every solve finds every root); kept so that code
+    /// that sets it still compiles.
     pub thorough: bool,
 }
 
 impl Default for AdhesionAccuracy {
     /// The interactive/`run` default: relative error of a_r ~1e-3 against a 4× finer solution
-    /// on systems 1 and 2 (`tests/adhesion.rs`); ~10 ms per solve on system 1.
+    /// on systems 1 and 2 (`tests/adhesion.rs`).
     fn default() -> Self {
         AdhesionAccuracy {
             steps_per_ln_q: 24.0,
@@ -133,8 +139,15 @@ pub enum Branch {
     Loading,
     /// The loading branch, reached by continuation in γ_s from 0.
     LoadingGammaContinuation,
-    /// Reached from full contact (a_r ≡ 1) where the loading iteration could not lock on.
+    /// Reached from full contact (a_r ≡ 1) where the loading iteration could not lock on
+    /// (the fixed-point solver before the shooting method; no longer produced).
     UpperFromFullContact,
+    /// The highest stable branch where it differs from the loading one: the state an
+    /// unloading history keeps (hysteresis).
+    Unloading,
+    /// A branch between two stable ones (H falls through its root): not reached by any
+    /// history.
+    Unstable,
 }
 
 impl Branch {
@@ -145,6 +158,8 @@ impl Branch {
             Branch::Loading => "loading",
             Branch::LoadingGammaContinuation => "loading (continuation in gamma)",
             Branch::UpperFromFullContact => "upper (from full contact)",
+            Branch::Unloading => "unloading",
+            Branch::Unstable => "unstable",
         }
     }
 }
@@ -213,8 +228,31 @@ pub struct AdhesiveSolution {
     /// Global adhesion measure γ̃_glo.
     pub gamma_glo: f64,
     /// The (steps per ln q, points per width) actually used when the requested resolution
-    /// stagnated and a nearby one converged; None when the requested one did.
+    /// stagnated and a nearby one converged; None when the requested one did (always, since
+    /// the shooting solver).
     pub resolution_used: Option<(f64, f64)>,
+    /// Every branch of the scene at this load, lowest a_r first (the chosen one included).
+    pub branches: Vec<BranchState>,
+    /// γ_s of the scene (J/m²).
+    pub gamma_s: f64,
+}
+
+/// One branch of the adhesive solution at a load: a root of the scalar self-consistency.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BranchState {
+    /// Which branch: "loading" (the lowest stable), "unloading" (the highest stable, where
+    /// distinct), "unstable" (between them).
+    pub branch: Branch,
+    /// Whether the branch is stable (H rises through its root).
+    pub stable: bool,
+    /// a_r(q_s).
+    pub a_r: f64,
+    /// σ_a*(q_s).
+    pub sigma_a: f64,
+    /// γ(q_L)/γ_s: the effective surface energy at the coarsest scale, the root's C/γ_s.
+    pub gamma_coarse: f64,
+    /// U (J/m²) of the branch [S-11, S-14].
+    pub elastic_energy: f64,
 }
 /// Propagates Pr through the scene's resolution with a prescribed wall σ_a*(q) (reduced,
 /// evaluated at each step's midpoint q) and no self-consistency: the propagator alone, for
@@ -237,83 +275,10 @@ pub fn propagate_with_wall(
         heat: propagator::Heat::new(),
         force_grid_from: grid_from_start.then_some(1),
         pressure: scene.pressure,
+        trials: 0,
     };
-    let out = m.march(&walls);
-    Ok((grid.q.clone(), out.a_nodes))
-}
-
-/// One branch met by [`trace_in_gamma`] at the scene's γ_s.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct TracedBranch {
-    /// a_r(q_s) of the branch.
-    pub a_r: f64,
-    /// Whether the branch is stable (an even number of folds lies between it and the
-    /// adhesionless start).
-    pub stable: bool,
-    /// Fixed-point residual of the polished state.
-    pub residual: f64,
-    /// Whether the polished state met the solver's tolerance.
-    pub converged: bool,
-}
-
-/// The result of [`trace_in_gamma`].
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct GammaTrace {
-    /// The branches met at γ = γ_s, in the order of the curve (the first is connected to the
-    /// adhesionless state: the loading branch).
-    pub branches: Vec<TracedBranch>,
-    /// γ/γ_s at the folds (turning points) passed.
-    pub folds: Vec<f64>,
-    /// γ/γ_s and a_r(q_s) of the last point reached.
-    pub last: (f64, f64),
-    /// Whether the trace ended because the corrector failed at the smallest step (see the
-    /// `continuation` module docs) rather than by leaving γ/γ_s ∈ (0, 2) or reaching full
-    /// contact.
-    pub stalled: bool,
-    /// Map evaluations spent.
-    pub evaluations: usize,
-}
-
-/// Follows the self-consistent solution from the adhesionless state (γ = 0) by
-/// pseudo-arclength continuation in γ up to 2γ_s (or full contact), through the folds of the
-/// curve, and reports every branch met at the scene's γ_s with its stability. A diagnostic
-/// and the start of the branch-following solver of issue 13: it is not yet used by
-/// [`solve`] (see the `continuation` module docs for where it stalls).
-///
-/// # Errors
-/// [`crate::error::Error::Invalid`] for a bad scene or accuracy, or
-/// [`crate::error::Error::Cancelled`].
-pub fn trace_in_gamma(
-    scene: &Scene,
-    acc: &AdhesionAccuracy,
-    cancel: Option<&std::sync::atomic::AtomicBool>,
-) -> Result<GammaTrace> {
-    scene.validate()?;
-    let grid = grid::build_grid(scene, acc.steps_per_ln_q);
-    let mut m = propagator::Marcher::new(scene, &grid, *acc);
-    let adhesionless = m.march(&vec![0.0; grid.steps.len()]).a_nodes;
-    let at = |mu: f64| {
-        let mut s = scene.clone();
-        s.gamma = scene.gamma * mu;
-        s
-    };
-    let tr = m.arclength(&at, newton::ln_a(&adhesionless), 0.0, 1.0, 2.0, cancel)?;
-    Ok(GammaTrace {
-        branches: tr
-            .crossings
-            .iter()
-            .map(|c| TracedBranch {
-                a_r: c.attempt.x.last().copied().unwrap_or(0.0),
-                stable: c.stable,
-                residual: c.attempt.residual,
-                converged: c.attempt.converged,
-            })
-            .collect(),
-        folds: tr.folds,
-        last: tr.last,
-        stalled: tr.stalled,
-        evaluations: tr.evaluations,
-    })
+    let a = m.march(&walls);
+    Ok((grid.q.clone(), a))
 }
 
 /// γ(q)/γ_s and σ_a*(q) interpolated at resolution q (linear in ln q between nodes).

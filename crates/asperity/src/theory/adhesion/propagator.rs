@@ -30,8 +30,10 @@ pub(super) struct Heat {
     plan: Option<Plan>,
     buf: Vec<Complex64>,
     scratch: Vec<Complex64>,
-    /// (coefficient, decay rate) of the mass integral per odd sine mode.
-    terms: Vec<(f64, f64)>,
+    /// Coefficient of the mass integral per odd sine mode k = 1, 3, 5, …
+    terms: Vec<f64>,
+    /// Decay rate of mode 1, ½(π/X)²: mode k decays at k² times it.
+    rate1: f64,
     n: usize,
     x: f64,
 }
@@ -44,6 +46,7 @@ impl Heat {
             buf: Vec::new(),
             scratch: Vec::new(),
             terms: Vec::new(),
+            rate1: 0.0,
             n: 0,
             x: 0.0,
         }
@@ -78,14 +81,29 @@ impl Heat {
         self.terms.clear();
         for k in (1..n).step_by(2) {
             let b = -2.0 * self.buf[k].im / m as f64;
-            let kk = k as f64 * PI / x;
-            self.terms.push((b * 2.0 * x / (k as f64 * PI), 0.5 * kk * kk));
+            self.terms.push(b * 2.0 * x / (k as f64 * PI));
         }
+        self.rate1 = 0.5 * (PI / x) * (PI / x);
     }
 
     /// ∫_0^X p dx after a further variance dv (exact for the loaded trigonometric interpolant).
+    /// exp(−r₁k²dv) by recurrence: with E = exp(−r₁dv), E^{(k+2)²} = E^{k²}·E^{4k+4} and
+    /// E^{4k+4} grows by E⁸ per mode — one exp per call instead of one per mode.
     pub(super) fn mass(&self, dv: f64) -> f64 {
-        self.terms.iter().map(|&(c, r)| c * (-r * dv).exp()).sum()
+        let e = (-self.rate1 * dv).exp();
+        let e2 = e * e;
+        let e4 = e2 * e2;
+        let e8 = e4 * e4;
+        let (mut pow, mut ratio, mut sum) = (e, e8, 0.0);
+        for &c in &self.terms {
+            sum += c * pow;
+            pow *= ratio;
+            ratio *= e8;
+            if pow < 1e-300 {
+                break;
+            }
+        }
+        sum
     }
 
     /// Writes the loaded values evolved by dv back into p.
@@ -93,10 +111,22 @@ impl Heat {
         let (n, x) = (self.n, self.x);
         let m = 2 * n;
         let (_, _, inv) = self.plan.as_ref().expect("loaded");
-        let c = 0.5 * dv * (PI / x) * (PI / x);
-        for k in 0..m {
-            let kk = k.min(m - k) as f64;
-            self.buf[k] *= (-c * kk * kk).exp() / m as f64;
+        // exp(−c k²)/m by the same recurrence as `mass`, applied to modes k and m − k
+        let e = (-0.5 * dv * (PI / x) * (PI / x)).exp();
+        let e2 = e * e;
+        let (mut pow, mut ratio) = (1.0 / m as f64, e);
+        for k in 0..=n {
+            if pow < 1e-300 {
+                pow = 0.0; // and stays 0: no denormal arithmetic
+            }
+            self.buf[k] *= pow;
+            if k > 0 && k < n {
+                self.buf[m - k] *= pow;
+            }
+            if pow > 0.0 {
+                pow *= ratio;
+                ratio *= e2;
+            }
         }
         inv.process_with_scratch(&mut self.buf, &mut self.scratch);
         p[0] = 0.0;
@@ -117,20 +147,12 @@ impl Heat {
 }
 
 /// The state of the march.
+#[derive(Clone)]
 pub(super) enum State {
     /// Mirror Gaussian about the wall (x = σ + wall ≥ 0), variance v.
     Analytic,
     /// Grid values at x_j = j h.
     Grid { h: f64, p: Vec<f64> },
-}
-
-/// Result of one march.
-pub(super) struct March {
-    pub(super) a_nodes: Vec<f64>,
-    pub(super) v_nodes: Vec<f64>,
-    pub(super) v: f64,
-    pub(super) wall: f64,
-    pub(super) state: State,
 }
 
 /// The variance increment of one march step: RK4 in the variance measure B for
@@ -159,6 +181,24 @@ fn substeps(b_before: f64, b: f64) -> usize {
     } else {
         1
     }
+}
+
+/// Whether n has no prime factor above 5.
+fn is_smooth(mut n: usize) -> bool {
+    if n == 0 {
+        return false;
+    }
+    for f in [2, 3, 5] {
+        while n.is_multiple_of(f) {
+            n /= f;
+        }
+    }
+    n == 1
+}
+
+/// The smallest n' ≥ n with no prime factor above 5.
+fn smooth_size(n: usize) -> usize {
+    (n.max(1)..).find(|&k| is_smooth(k)).unwrap_or(n)
 }
 
 /// Mirror-Gaussian contact fraction at distance d from the wall with variance v.
@@ -252,6 +292,8 @@ pub(super) struct Marcher<'a> {
     pub(super) force_grid_from: Option<usize>,
     /// p* of the march (the scene's unless a continuation varies it).
     pub(super) pressure: f64,
+    /// Trial steps taken by shooting marches (a cost counter).
+    pub(super) trials: usize,
 }
 
 impl<'a> Marcher<'a> {
@@ -264,93 +306,122 @@ impl<'a> Marcher<'a> {
             heat: Heat::new(),
             force_grid_from: None,
             pressure: scene.pressure,
+            trials: 0,
         }
     }
 
     /// Marches the distribution through the steps with the given wall positions (σ_a* at each
-    /// step's midpoint), returning a_r at the nodes and the final state.
-    pub(super) fn march(&mut self, walls: &[f64]) -> March {
-        let p0 = self.pressure;
-        let model = self.scene.model;
-        let ppw = self.acc.points_per_width;
+    /// step's midpoint), returning a_r at the nodes.
+    pub(super) fn march(&mut self, walls: &[f64]) -> Vec<f64> {
         let k_steps = self.grid.steps.len();
         let mut a_nodes = Vec::with_capacity(k_steps + 1);
         a_nodes.push(1.0);
-        let mut v_nodes = Vec::with_capacity(k_steps + 1);
-        v_nodes.push(0.0);
-        let mut v = 0.0f64;
-        let mut wall = walls.first().copied().unwrap_or(0.0);
-        let mut state = State::Analytic;
-        let mut b_cum = 0.0;
-        for (k, st) in self.grid.steps.iter().enumerate() {
-            if k > 0 {
-                b_cum += self.grid.steps[k - 1].b;
-            }
-            let s_k = walls[k];
-            let forced = self.force_grid_from == Some(k) && v > 0.0;
-            if let State::Analytic = state {
-                if s_k != wall || forced {
-                    let d_min = p0 + wall.min(s_k);
-                    let v_next = v + st.b;
-                    let far = d_min > 8.5 * v_next.sqrt();
-                    if (far || v == 0.0) && self.force_grid_from.is_none_or(|f| k < f) {
-                        // the image is negligible before and after (or nothing has diffused
-                        // yet: still δ(σ − p*)): the wall may move freely
-                        wall = s_k;
-                    } else {
-                        // switch to the grid, starting from the mirror Gaussian about `wall`
-                        let h = v.sqrt() / ppw;
-                        let d = p0 + wall;
-                        let x_max = d + 10.0 * v.sqrt();
-                        let n = (x_max / h).ceil() as usize + 1;
-                        let p: Vec<f64> = (0..=n)
-                            .map(|j| {
-                                if j == 0 || j == n {
-                                    0.0
-                                } else {
-                                    let x = j as f64 * h;
-                                    gauss(x - d, v) - gauss(x + d, v)
-                                }
-                            })
-                            .collect();
-                        state = State::Grid { h, p };
-                    }
-                }
-            }
-            match &mut state {
-                State::Analytic => {
-                    // RK4 in B for dv/dB = W^{2α}(a(v)), a(v) = erf((p + σ_a)/√(2v))
+        let mut cur = self.start(walls.first().copied().unwrap_or(0.0));
+        for &s_k in walls.iter().take(k_steps) {
+            a_nodes.push(self.step(&mut cur, s_k, true));
+        }
+        a_nodes
+    }
+
+    /// The state before the first step (δ(σ − p*), the wall at `first_wall`).
+    pub(super) fn start(&self, first_wall: f64) -> Cursor {
+        Cursor {
+            k: 0,
+            v: 0.0,
+            wall: first_wall,
+            state: State::Analytic,
+            b_cum: 0.0,
+        }
+    }
+
+    /// a_r after step `cur.k` with the wall at `s_k` (σ_a* over the step) — without changing
+    /// `cur`: one trial of the step, for a wall that depends on the step's own end (the
+    /// shooting march). Costs a shift and a forward transform (no inverse).
+    pub(super) fn trial(&mut self, cur: &Cursor, s_k: f64) -> f64 {
+        let mut c = cur.clone();
+        self.step(&mut c, s_k, false)
+    }
+
+    /// Advances `cur` by one step with the wall at `s_k`, returns a_r at the step's end.
+    /// `commit` = false skips writing the evolved grid back (only a_r is wanted; `cur` is then
+    /// a throw-away copy).
+    pub(super) fn step(&mut self, cur: &mut Cursor, s_k: f64, commit: bool) -> f64 {
+        let p0 = self.pressure;
+        let model = self.scene.model;
+        let ppw = self.acc.points_per_width;
+        let k = cur.k;
+        let st = self.grid.steps[k];
+        if k > 0 {
+            cur.b_cum += self.grid.steps[k - 1].b;
+        }
+        cur.k += 1;
+        let b_cum = cur.b_cum;
+        let v = cur.v;
+        let forced = self.force_grid_from == Some(k) && v > 0.0;
+        if let State::Analytic = cur.state {
+            if s_k != cur.wall || forced {
+                let wall = cur.wall;
+                let d_min = p0 + wall.min(s_k);
+                let v_next = v + st.b;
+                let far = d_min > 8.5 * v_next.sqrt();
+                if (far || v == 0.0) && self.force_grid_from.is_none_or(|f| k < f) {
+                    // the image is negligible before and after (or nothing has diffused
+                    // yet: still δ(σ − p*)): the wall may move freely
+                    cur.wall = s_k;
+                } else {
+                    // switch to the grid, starting from the mirror Gaussian about `wall`
+                    let h = v.sqrt() / ppw;
                     let d = p0 + wall;
-                    let rate_at = |v0: f64| move |u: f64| model.broadening(mirror_area(d, v0 + u));
-                    v += variance_step(&rate_at(v), b_cum, st.b);
-                    a_nodes.push(mirror_area(d, v));
-                    v_nodes.push(v);
+                    let x_max = d + 10.0 * v.sqrt();
+                    let n = (x_max / h).ceil() as usize + 1;
+                    let p: Vec<f64> = (0..=n)
+                        .map(|j| {
+                            if j == 0 || j == n {
+                                0.0
+                            } else {
+                                let x = j as f64 * h;
+                                gauss(x - d, v) - gauss(x + d, v)
+                            }
+                        })
+                        .collect();
+                    cur.state = State::Grid { h, p };
                 }
-                State::Grid { h, p } => {
-                    let delta = s_k - wall;
-                    if delta != 0.0 {
-                        shift(p, *h, delta);
-                        wall = s_k;
-                    }
-                    // extend the grid so that it reaches p + σ_a + 10√v after this step
-                    let need = p0 + wall + 10.0 * (v + st.b).sqrt();
-                    let n_need = (need / *h).ceil() as usize + 1;
-                    if p.len() - 1 < n_need {
-                        p.resize(n_need + 1, 0.0);
-                    }
-                    // the same RK4 rule in B as the analytic stage, with a(v) from the loaded
-                    // sine coefficients: the switch between the stages is continuous
-                    self.heat.load(p, *h);
-                    let heat = &self.heat;
-                    let rate = |u: f64| model.broadening(heat.mass(u).clamp(0.0, 1.0));
-                    let dv = variance_step(&rate, b_cum, st.b);
-                    let a = heat.mass(dv).clamp(0.0, 1.0);
+            }
+        }
+        match &mut cur.state {
+            State::Analytic => {
+                // RK4 in B for dv/dB = W^{2α}(a(v)), a(v) = erf((p + σ_a)/√(2v))
+                let d = p0 + cur.wall;
+                let rate_at = |v0: f64| move |u: f64| model.broadening(mirror_area(d, v0 + u));
+                cur.v += variance_step(&rate_at(v), b_cum, st.b);
+                mirror_area(d, cur.v)
+            }
+            State::Grid { h, p } => {
+                let delta = s_k - cur.wall;
+                if delta != 0.0 {
+                    shift(p, *h, delta);
+                    cur.wall = s_k;
+                }
+                // the grid reaches p + σ_a + 10√v after this step (beyond it the density is
+                // below e⁻⁵⁰ of its peak): extended with zeros or cut there, to an FFT-friendly
+                // size 2^a·3^b·5^c (the sine transform has length 2N, and a prime factor would
+                // cost a Rader transform)
+                let need = p0 + cur.wall + 10.0 * (v + st.b).sqrt();
+                let n = smooth_size((need / *h).ceil() as usize + 1);
+                p.resize(n + 1, 0.0);
+                p[n] = 0.0;
+                // the same RK4 rule in B as the analytic stage, with a(v) from the loaded
+                // sine coefficients: the switch between the stages is continuous
+                self.heat.load(p, *h);
+                let heat = &self.heat;
+                let rate = |u: f64| model.broadening(heat.mass(u).clamp(0.0, 1.0));
+                let dv = variance_step(&rate, b_cum, st.b);
+                let a = heat.mass(dv).clamp(0.0, 1.0);
+                cur.v += dv;
+                if commit {
                     self.heat.finish(p, dv);
-                    v += dv;
-                    a_nodes.push(a);
-                    v_nodes.push(v);
                     // coarsen: keep every other node
-                    if v.sqrt() > 2.0 * ppw * *h {
+                    if cur.v.sqrt() > 2.0 * ppw * *h {
                         if (p.len() - 1) % 2 == 1 {
                             p.push(0.0);
                         }
@@ -359,72 +430,80 @@ impl<'a> Marcher<'a> {
                         *h *= 2.0;
                     }
                 }
+                a
             }
-        }
-        March {
-            a_nodes,
-            v_nodes,
-            v,
-            wall,
-            state,
         }
     }
 }
-impl March {
-    /// (a_r, σ̄_c*, variance, tensile area) of the final distribution.
-    pub(super) fn state_moments(
-        &self,
-        sigma: &[f64],
-        density: &[f64],
-        p0: f64,
-        v: f64,
-        wall: f64,
-    ) -> Option<(f64, f64, f64, f64)> {
-        if let State::Analytic = self.state {
-            // closed forms of the mirror Gaussian about −wall (shift σ' = σ + wall)
-            let d = p0 + wall;
-            let sd = v.sqrt();
-            let a = crate::theory::mirror::area(d, sd);
-            if a <= 0.0 {
-                return None;
-            }
-            let (m1, var) = crate::theory::mirror::contact_moments(d, sd);
-            // tensile part: ∫_0^{wall} of the mirror density in σ'
-            let tens = if wall > 0.0 && sd > 0.0 {
-                let c = |x: f64| 0.5 * (erf((x - d) / (sd * 2f64.sqrt())) - erf((x + d) / (sd * 2f64.sqrt())));
-                (c(wall) - c(0.0)).max(0.0)
-            } else {
-                0.0
-            };
-            return Some((a, m1 - wall, var, tens));
-        }
-        let h = sigma.get(1).map(|s1| s1 - sigma[0]).unwrap_or(0.0);
-        // trapezoid with the Euler–Maclaurin end correction at the wall (f(0) = 0, f'(0) ≠ 0;
-        // f'(0) from a one-sided 3-point difference): O(h³) instead of O(h²)
-        let integrate = |f: &dyn Fn(usize) -> f64| -> f64 {
-            let n = density.len();
-            let sum: f64 = (0..n).map(f).sum::<f64>() * h;
-            if n < 3 {
-                return sum;
-            }
-            let d0 = (-3.0 * f(0) + 4.0 * f(1) - f(2)) / (2.0 * h);
-            sum + h * h / 12.0 * d0
-        };
-        let m0 = integrate(&|j| density[j]);
-        if m0.is_nan() || m0 <= 0.0 {
+
+/// Where a march stands between steps.
+#[derive(Clone)]
+pub(super) struct Cursor {
+    /// The next step's index.
+    pub(super) k: usize,
+    /// Accumulated variance.
+    pub(super) v: f64,
+    /// The wall's current position σ_a*.
+    pub(super) wall: f64,
+    pub(super) state: State,
+    /// Σ b of the steps before the previous one (the RK4 substep rule).
+    b_cum: f64,
+}
+
+/// (a_r, σ̄_c*, variance, tensile area) of a march's final distribution `state`, sampled
+/// as (`sigma`, `density`) with the wall at σ* = −`wall`.
+pub(super) fn state_moments(
+    state: &State,
+    sigma: &[f64],
+    density: &[f64],
+    p0: f64,
+    v: f64,
+    wall: f64,
+) -> Option<(f64, f64, f64, f64)> {
+    if let State::Analytic = state {
+        // closed forms of the mirror Gaussian about −wall (shift σ' = σ + wall)
+        let d = p0 + wall;
+        let sd = v.sqrt();
+        let a = crate::theory::mirror::area(d, sd);
+        if a <= 0.0 {
             return None;
         }
-        let m1 = integrate(&|j| sigma[j] * density[j]) / m0;
-        let m2 = integrate(&|j| (sigma[j] - m1) * (sigma[j] - m1) * density[j]) / m0;
-        let tens: f64 = sigma
-            .iter()
-            .zip(density)
-            .filter(|(s, _)| **s < 0.0)
-            .map(|(_, p)| p)
-            .sum::<f64>()
-            * h;
-        Some((m0, m1, m2.max(0.0), tens))
+        let (m1, var) = crate::theory::mirror::contact_moments(d, sd);
+        // tensile part: ∫_0^{wall} of the mirror density in σ'
+        let tens = if wall > 0.0 && sd > 0.0 {
+            let c = |x: f64| 0.5 * (erf((x - d) / (sd * 2f64.sqrt())) - erf((x + d) / (sd * 2f64.sqrt())));
+            (c(wall) - c(0.0)).max(0.0)
+        } else {
+            0.0
+        };
+        return Some((a, m1 - wall, var, tens));
     }
+    let h = sigma.get(1).map(|s1| s1 - sigma[0]).unwrap_or(0.0);
+    // trapezoid with the Euler–Maclaurin end correction at the wall (f(0) = 0, f'(0) ≠ 0;
+    // f'(0) from a one-sided 3-point difference): O(h³) instead of O(h²)
+    let integrate = |f: &dyn Fn(usize) -> f64| -> f64 {
+        let n = density.len();
+        let sum: f64 = (0..n).map(f).sum::<f64>() * h;
+        if n < 3 {
+            return sum;
+        }
+        let d0 = (-3.0 * f(0) + 4.0 * f(1) - f(2)) / (2.0 * h);
+        sum + h * h / 12.0 * d0
+    };
+    let m0 = integrate(&|j| density[j]);
+    if m0.is_nan() || m0 <= 0.0 {
+        return None;
+    }
+    let m1 = integrate(&|j| sigma[j] * density[j]) / m0;
+    let m2 = integrate(&|j| (sigma[j] - m1) * (sigma[j] - m1) * density[j]) / m0;
+    let tens: f64 = sigma
+        .iter()
+        .zip(density)
+        .filter(|(s, _)| **s < 0.0)
+        .map(|(_, p)| p)
+        .sum::<f64>()
+        * h;
+    Some((m0, m1, m2.max(0.0), tens))
 }
 
 #[cfg(test)]

@@ -1,0 +1,321 @@
+//! Every root of the scalar self-consistency H(C) = 0 of a scene (see `shooting`): the
+//! branches of the adhesive solution at one load.
+//!
+//! H(−I_full) < 0 < H(γ_s), so the roots come in an odd number; H changes over many decades
+//! of |C| (the onset of the walls moves from q_s to q_L as C goes from −I(q_s) to 0, and a
+//! tiny positive C already puts a wall at the coarsest scale), so the scan runs in
+//! w = asinh(C/c₀), logarithmic in |C| on both sides of 0, with c₀ a thousandth of the
+//! coarsest step's full-contact energy (below that C no longer changes the walls):
+//!
+//! 1. scan H at [`SCAN_PER_DECADE`] points per decade of |C| on a grid of half the requested
+//!    resolution (a quarter of the cost), bisect every cell across which a_r(q_s) changes by
+//!    more than e^0.3 (H is steep, and roots crowd, only where a_r is), and keep every sign
+//!    change;
+//! 2. re-bracket each at the requested resolution (widened by one scan cell if the coarse
+//!    bracket no longer holds; a pair of roots that merges at the fine resolution is a fold
+//!    and is dropped) and refine it with Brent's method in w to |H| ≤ tol·γ_s·a_r(q_s);
+//! 3. a root where H rises (H' > 0) is stable, one where it falls is the unstable middle
+//!    branch of a hysteresis loop.
+//!
+//! With a warm start (the roots of a nearby load) each is re-bracketed around its old C
+//! first, and the scan runs only when that fails.
+
+use super::grid::build_grid;
+use super::propagator::Marcher;
+use super::shooting::{Record, Shot};
+use super::walls::WallCoefficients;
+use super::AdhesionAccuracy;
+use crate::error::Result;
+use crate::input::scene::Scene;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Scan points per decade of |C| before the refinement.
+pub(super) const SCAN_PER_DECADE: f64 = 2.0;
+/// A scan cell is bisected while a_r(q_s) changes by more than this in ln across it.
+const SCAN_LN_A: f64 = 0.3;
+/// Smallest scan cell in w = asinh(C/c₀).
+const SCAN_MIN_CELL: f64 = 1e-3;
+/// Most coarse shots of a scan.
+const SCAN_MAX: usize = 400;
+
+/// One root of H: a branch of the scene.
+pub(super) struct Root {
+    /// C = γ(q_L) (J/m²).
+    pub(super) c: f64,
+    /// The recorded march at the root (requested resolution).
+    pub(super) record: Record,
+    /// H rises through the root.
+    pub(super) stable: bool,
+    /// |H|/(γ_s a_r(q_s)) at the root = |γ(q_s)/γ_s − 1|: the energy balance's mismatch.
+    pub(super) h_rel: f64,
+}
+
+/// The scan variable w = asinh(C/c₀) and back.
+struct Scale {
+    c0: f64,
+}
+
+impl Scale {
+    fn w(&self, c: f64) -> f64 {
+        (c / self.c0).asinh()
+    }
+    fn c(&self, w: f64) -> f64 {
+        self.c0 * w.sinh()
+    }
+}
+
+/// The solver for one scene and resolution: the marcher and the wall constants.
+struct Shooter<'a> {
+    m: Marcher<'a>,
+    coef: WallCoefficients,
+    shots: usize,
+}
+
+impl<'a> Shooter<'a> {
+    fn h(&mut self, c: f64) -> Shot {
+        self.shots += 1;
+        self.m.shoot(&self.coef, c, false)
+    }
+}
+
+/// [`crate::error::Error::Cancelled`] once `cancel` is set.
+fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
+    if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
+        Err(crate::error::Error::Cancelled)
+    } else {
+        Ok(())
+    }
+}
+
+/// All roots of H for `scene` at resolution `acc`, lowest C first. `warm`: C values of a
+/// nearby scene's roots, tried first. Returns the roots and the shots spent.
+pub(super) fn find_roots(
+    scene: &Scene,
+    acc: &AdhesionAccuracy,
+    warm: &[f64],
+    cancel: Option<&AtomicBool>,
+) -> Result<(Vec<Root>, usize)> {
+    let grid = build_grid(scene, acc.steps_per_ln_q);
+    let mut fine = Shooter {
+        m: Marcher::new(scene, &grid, *acc),
+        coef: WallCoefficients::new(scene, &grid),
+        shots: 0,
+    };
+    let gs = scene.gamma;
+    let i_full = fine.m.full_energy();
+    let e0 = grid.steps.first().map(|s| s.e).unwrap_or(i_full).max(1e-300);
+    let scale = Scale { c0: 1e-3 * e0.min(gs) };
+    let (w_lo, w_hi) = (scale.w(-i_full), scale.w(gs));
+    let tol = acc.tol * gs;
+    let mut roots: Vec<Root> = Vec::new();
+
+    // warm start: a bracket of ±1 scan cell around each old root, at the fine resolution
+    let cell = std::f64::consts::LN_10 / SCAN_PER_DECADE;
+    if !warm.is_empty() {
+        let mut ok = true;
+        let mut found = Vec::new();
+        for &c in warm {
+            check_cancel(cancel)?;
+            let w = scale.w(c).clamp(w_lo, w_hi);
+            let (a, b) = ((w - 0.25 * cell).max(w_lo), (w + 0.25 * cell).min(w_hi));
+            let (ha, hb) = (fine.h(scale.c(a)).h, fine.h(scale.c(b)).h);
+            if (ha < 0.0) != (hb < 0.0) {
+                found.push((a, ha, b, hb));
+            } else {
+                ok = false;
+                break;
+            }
+        }
+        // the warm roots must account for the whole sign pattern: lowest rises from −, and
+        // consecutive roots alternate
+        if ok && !found.is_empty() {
+            let alternate = found
+                .windows(2)
+                .all(|p| (p[0].1 < 0.0) != (p[1].1 < 0.0) && p[0].2 < p[1].0);
+            if alternate && found[0].1 < 0.0 && found[found.len() - 1].3 > 0.0 {
+                for (a, ha, b, hb) in found {
+                    roots.push(refine(&mut fine, &scale, a, ha, b, hb, tol, cancel)?);
+                }
+                let shots = fine.shots;
+                return Ok((roots, shots));
+            }
+        }
+    }
+
+    // coarse scan
+    let coarse_acc = AdhesionAccuracy {
+        steps_per_ln_q: (acc.steps_per_ln_q * 0.5).max(4.0),
+        points_per_width: (acc.points_per_width * 0.5).max(3.0),
+        ..*acc
+    };
+    let cgrid = build_grid(scene, coarse_acc.steps_per_ln_q);
+    let mut coarse = Shooter {
+        m: Marcher::new(scene, &cgrid, coarse_acc),
+        coef: WallCoefficients::new(scene, &cgrid),
+        shots: 0,
+    };
+    // a uniform start, then cells bisected while a_r(q_s) changes by more than a factor
+    // e^SCAN_LN_A across them: H = C + I − γ_s a_r is steep (and roots crowd) only where a_r
+    // is, so this resolves every pair of roots that is not about to merge
+    let n0 = ((w_hi - w_lo) / cell).ceil().max(8.0) as usize;
+    let mut pts: Vec<(f64, f64, f64)> = Vec::with_capacity(4 * n0);
+    for i in 0..=n0 {
+        check_cancel(cancel)?;
+        let w = w_lo + (w_hi - w_lo) * i as f64 / n0 as f64;
+        let shot = coarse.h(scale.c(w));
+        pts.push((w, shot.h, shot.a_s));
+    }
+    loop {
+        let mut next = Vec::with_capacity(2 * pts.len());
+        let mut split = false;
+        for i in 0..pts.len() {
+            next.push(pts[i]);
+            if i + 1 == pts.len() || coarse.shots >= SCAN_MAX {
+                continue;
+            }
+            let (p0, p1) = (pts[i], pts[i + 1]);
+            let jump = (p1.2.max(1e-300) / p0.2.max(1e-300)).ln().abs();
+            if jump > SCAN_LN_A && p1.0 - p0.0 > SCAN_MIN_CELL {
+                check_cancel(cancel)?;
+                let w = 0.5 * (p0.0 + p1.0);
+                let shot = coarse.h(scale.c(w));
+                next.push((w, shot.h, shot.a_s));
+                split = true;
+            }
+        }
+        pts = next;
+        if !split {
+            break;
+        }
+    }
+    let n = pts.len() - 1;
+    let ws: Vec<f64> = pts.iter().map(|p| p.0).collect();
+    let hs: Vec<f64> = pts.iter().map(|p| p.1).collect();
+    let mut brackets = Vec::new();
+    for i in 0..n {
+        if (hs[i] < 0.0) != (hs[i + 1] < 0.0) {
+            brackets.push(i);
+        }
+    }
+    // re-bracket at the fine resolution: the cell, else the cell widened by one on each side
+    let mut fine_cache: Vec<Option<f64>> = vec![None; ws.len()];
+    let mut fine_h = |fine: &mut Shooter<'_>, i: usize| -> f64 {
+        if let Some(h) = fine_cache[i] {
+            return h;
+        }
+        let h = fine.h(scale.c(ws[i])).h;
+        fine_cache[i] = Some(h);
+        h
+    };
+    let mut last_end = 0usize;
+    for &i in &brackets {
+        check_cancel(cancel)?;
+        let rising = hs[i] < 0.0;
+        let mut got = None;
+        for (a, b) in [(i, i + 1), (i.saturating_sub(1), (i + 2).min(n))] {
+            let a = a.max(last_end);
+            if a >= b {
+                continue;
+            }
+            let (ha, hb) = (fine_h(&mut fine, a), fine_h(&mut fine, b));
+            if (ha < 0.0) == rising && (hb < 0.0) != rising {
+                got = Some((a, ha, b, hb));
+                break;
+            }
+        }
+        if let Some((a, ha, b, hb)) = got {
+            roots.push(refine(&mut fine, &scale, ws[a], ha, ws[b], hb, tol, cancel)?);
+            last_end = b;
+        }
+    }
+    let shots = fine.shots + coarse.shots / 4;
+    // the sign pattern must be −…+: an even number of dropped roots keeps it; if every
+    // bracket was lost, fall back to the whole interval at the fine resolution
+    if roots.is_empty() {
+        let ha = fine.h(scale.c(w_lo)).h;
+        let hb = fine.h(scale.c(w_hi)).h;
+        roots.push(refine(&mut fine, &scale, w_lo, ha, w_hi, hb, tol, cancel)?);
+        return Ok((roots, fine.shots + coarse.shots / 4));
+    }
+    Ok((roots, shots))
+}
+
+/// Brent's method in w on a bracket [a, b] with H(a)·H(b) < 0, to |H| ≤ tol·a_r(q_s) (a
+/// relative mismatch of the energy balance at q_s: |γ(q_s)/γ_s − 1| ≤ tol) or a bracket
+/// below round-off; the root's march recorded.
+#[allow(clippy::too_many_arguments)]
+fn refine(
+    s: &mut Shooter<'_>,
+    scale: &Scale,
+    a: f64,
+    ha: f64,
+    b: f64,
+    hb: f64,
+    tol: f64,
+    cancel: Option<&AtomicBool>,
+) -> Result<Root> {
+    let stable = ha < 0.0;
+    let gs = scale_gamma(s);
+    // (w, H, a_r(q_s)); a_r unknown (NaN) for the bracket's given ends
+    let (mut pa, mut pb) = ((a, ha, f64::NAN), (b, hb, f64::NAN));
+    if pa.1.abs() < pb.1.abs() {
+        std::mem::swap(&mut pa, &mut pb);
+    }
+    let mut pc = pa;
+    let mut d = pb.0 - pa.0;
+    let mut bisected = true;
+    for _ in 0..s.m.acc.max_iterations {
+        check_cancel(cancel)?;
+        let ((a, fa, _), (b, fb, ab), (c, fc, _)) = (pa, pb, pc);
+        if fb.abs() <= tol * ab || (b - a).abs() <= 1e-13 * (1.0 + b.abs()) {
+            break;
+        }
+        // inverse quadratic interpolation, else secant, with Brent's safeguards
+        let mut x = if fa != fc && fb != fc {
+            a * fb * fc / ((fa - fb) * (fa - fc))
+                + b * fa * fc / ((fb - fa) * (fb - fc))
+                + c * fa * fb / ((fc - fa) * (fc - fb))
+        } else {
+            b - fb * (b - a) / (fb - fa)
+        };
+        let lo = (3.0 * a + b) / 4.0;
+        let outside = !((x > lo.min(b)) && (x < lo.max(b)));
+        let slow = if bisected {
+            (x - b).abs() >= (b - c).abs() / 2.0
+        } else {
+            (x - b).abs() >= (c - d).abs() / 2.0
+        };
+        if outside || slow || !x.is_finite() {
+            x = 0.5 * (a + b);
+            bisected = true;
+        } else {
+            bisected = false;
+        }
+        let shot = s.h(scale.c(x));
+        let px = (x, shot.h, shot.a_s);
+        d = c;
+        pc = pb;
+        if (fa < 0.0) != (px.1 < 0.0) {
+            pb = px;
+        } else {
+            pa = px;
+        }
+        if pa.1.abs() < pb.1.abs() {
+            std::mem::swap(&mut pa, &mut pb);
+        }
+    }
+    let coef = &s.coef;
+    let shot = s.m.shoot(coef, scale.c(pb.0), true);
+    s.shots += 1;
+    let h_rel = (shot.h / (gs * shot.a_s.max(1e-300))).abs();
+    Ok(Root {
+        c: shot.c,
+        h_rel,
+        record: shot.record.expect("recorded"),
+        stable,
+    })
+}
+
+fn scale_gamma(s: &Shooter<'_>) -> f64 {
+    s.m.scene.gamma.max(1e-300)
+}
