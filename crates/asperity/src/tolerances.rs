@@ -190,7 +190,7 @@ pub const ERROR_BAR_WORST_RATIO: f64 = 0.5;
 /// | set | S = 1 | S = 2 | S = 3 |
 /// |---|---|---|---|
 /// | 59 seeded random scenes: misses, worst ratio | 6, 0.62 | 0, 1.24 | 0, 1.86 |
-/// | issue grid (system II, t·q_r ≤ 0.5), 97 converged points | 13, 0.24 | 5, 0.48 | 2, 0.72 |
+/// | issue grid (system II, t·q_r ≤ 0.5), 97 points converged before the shooting solver | 13, 0.24 | 5, 0.48 | 2, 0.72 |
 ///
 /// S = 3 meets both criteria (≥ 95 % covered, never 2× below) on both sets, at a median
 /// over-estimate of ~5× on the issue grid and ~12× on the random set (BENCHMARKS.md, "The
