@@ -304,11 +304,11 @@ fn window(h: f64, p: f64, wpos: f64, v: f64) -> (i64, i64, f64) {
     (lo, hi, delta)
 }
 
-/// One backward-Euler solve over Δv from the grid's values on the window.
-fn be(g: &Grid, win: (i64, i64, f64), dv: f64) -> Vec<f64> {
+/// One backward-Euler solve over Δv from the values `value(j)` on the window.
+fn be(value: impl Fn(i64) -> f64, h: f64, win: (i64, i64, f64), dv: f64) -> Vec<f64> {
     let (lo, hi, delta) = win;
-    let old: Vec<f64> = (lo..=hi).map(|j| g.value(j)).collect();
-    implicit_step(&old, g.h, delta, dv)
+    let old: Vec<f64> = (lo..=hi).map(value).collect();
+    implicit_step(&old, h, delta, dv)
 }
 
 /// The grid holding `x` on lo.. and zeros elsewhere (nodes below lo absorbed).
@@ -356,19 +356,28 @@ fn advance(
         let jm = st.j + 0.5 * (g0 + am * ph.w(am)) * e1;
         let sm = wall(qm, vm, am, jm);
         let winm = window(st.g.h, p, -sm, vm);
-        let xm = be(&st.g, winm, dv1);
+        let h = st.g.h;
+        let xm = be(|j| st.g.value(j), h, winm, dv1);
         let am_new = mass(&xm, st.g.h, winm.2);
-        let gm = with_values(&st.g, &xm, winm.0);
         // second half, wall at q1
         let dv2 = 0.5 * (wp(am) + wp(a1)) * b2;
         let v1 = vm + dv2;
         let j1 = jm + 0.5 * (am * ph.w(am) + a1 * ph.w(a1)) * e2;
         let s1 = wall(q1, v1, a1, j1);
         let win = window(st.g.h, p, -s1, v1);
-        let x2 = be(&gm, win, dv2);
+        // the first half's values: nodes below its window absorbed, none above it
+        let mid_value = |j: i64| {
+            let k = j - winm.0;
+            if k < 0 || k >= xm.len() as i64 {
+                0.0
+            } else {
+                xm[k as usize]
+            }
+        };
+        let x2 = be(mid_value, h, win, dv2);
         // one full step over the same measure, wall at q1
         let dvf = 0.5 * (wp(st.a) + wp(a1)) * (b1 + b2);
-        let xf = be(&st.g, win, dvf);
+        let xf = be(|j| st.g.value(j), h, win, dvf);
         let x: Vec<f64> = x2.iter().zip(&xf).map(|(h2, f)| 2.0 * h2 - f).collect();
         let a1_new = mass(&x, st.g.h, win.2);
         let tol = 1e-13 * a1_new.abs() + 1e-300;
