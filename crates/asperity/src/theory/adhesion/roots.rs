@@ -8,12 +8,12 @@
 //! coarsest step's full-contact energy (below that C no longer changes the walls):
 //!
 //! 1. scan H at [`SCAN_PER_DECADE`] points per decade of |C| on a grid of half the requested
-//!    resolution (a quarter of the cost), bisect every cell across which a_r(q_s) changes by
-//!    more than e^0.3 (H is steep, and roots crowd, only where a_r is), and keep every sign
-//!    change;
-//! 2. re-bracket each at the requested resolution (widened by one scan cell if the coarse
-//!    bracket no longer holds; a pair of roots that merges at the fine resolution is a fold
-//!    and is dropped) and refine it with Brent's method in w to |H| ≤ tol·γ_s·a_r(q_s);
+//!    resolution (a quarter of the cost), bisect every cell that may hold a root (a bound from
+//!    the monotone parts of H, see `scan`), and keep every sign change;
+//! 2. re-bracket each at the requested resolution (widened outwards through the scan points
+//!    if the coarse bracket no longer holds; a pair of roots that merges at the fine
+//!    resolution is a fold and is dropped) and refine it with Brent's method in w to
+//!    |H| ≤ tol·γ_s·a_r(q_s);
 //! 3. a root where H rises (H' > 0) is stable, one where it falls is the unstable middle
 //!    branch of a hysteresis loop.
 //!
@@ -30,11 +30,9 @@ use crate::input::scene::Scene;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Scan points per decade of |C| before the refinement.
-pub(super) const SCAN_PER_DECADE: f64 = 2.0;
-/// A scan cell is bisected while a_r(q_s) changes by more than this in ln across it.
-const SCAN_LN_A: f64 = 0.3;
-/// Smallest scan cell in w = asinh(C/c₀).
-const SCAN_MIN_CELL: f64 = 1e-3;
+pub(super) const SCAN_PER_DECADE: f64 = 0.5;
+/// Smallest scan cell in w = asinh(C/c₀) (about 3 % in C).
+const SCAN_MIN_CELL: f64 = 0.03;
 /// Most coarse shots of a scan.
 const SCAN_MAX: usize = 400;
 
@@ -154,90 +152,136 @@ pub(super) fn find_roots(
         coef: WallCoefficients::new(scene, &cgrid),
         shots: 0,
     };
-    // a uniform start, then cells bisected while a_r(q_s) changes by more than a factor
-    // e^SCAN_LN_A across them: H = C + I − γ_s a_r is steep (and roots crowd) only where a_r
-    // is, so this resolves every pair of roots that is not about to merge
-    let n0 = ((w_hi - w_lo) / cell).ceil().max(8.0) as usize;
-    let mut pts: Vec<(f64, f64, f64)> = Vec::with_capacity(4 * n0);
+    let pts = scan(&mut coarse, &scale, w_lo, w_hi, gs, cancel)?;
+    let n = pts.len() - 1;
+    // the fine resolution moves the roots a little: each coarse sign change is re-bracketed
+    // at the fine resolution, widening outwards through the scan points (never past the
+    // previous root) until H has the coarse bracket's sign change
+    let mut fine_cache: Vec<Option<f64>> = vec![None; pts.len()];
+    let mut fine_h = |fine: &mut Shooter<'_>, i: usize| -> f64 {
+        if let Some(h) = fine_cache[i] {
+            return h;
+        }
+        let h = fine.h(scale.c(pts[i].w)).h;
+        fine_cache[i] = Some(h);
+        h
+    };
+    let mut last_end = 0usize;
+    for i in 0..n {
+        if (pts[i].h < 0.0) == (pts[i + 1].h < 0.0) {
+            continue;
+        }
+        check_cancel(cancel)?;
+        let rising = pts[i].h < 0.0;
+        let (mut a, mut b) = (i.max(last_end), i + 1);
+        let mut got = None;
+        for _ in 0..8 {
+            if a >= b {
+                break;
+            }
+            let (ha, hb) = (fine_h(&mut fine, a), fine_h(&mut fine, b));
+            let a_ok = (ha < 0.0) == rising;
+            let b_ok = (hb < 0.0) != rising;
+            if a_ok && b_ok {
+                got = Some((a, ha, b, hb));
+                break;
+            }
+            if !a_ok {
+                if a == last_end {
+                    break;
+                }
+                a -= 1;
+            }
+            if !b_ok {
+                if b == n {
+                    break;
+                }
+                b += 1;
+            }
+        }
+        if let Some((a, ha, b, hb)) = got {
+            roots.push(refine(&mut fine, &scale, pts[a].w, ha, pts[b].w, hb, tol, cancel)?);
+            last_end = b;
+        }
+    }
+    if std::env::var_os("ASPERITY_DEBUG").is_some() {
+        eprintln!(
+            "roots: {} coarse shots ({} scan points), {} fine, {} roots",
+            coarse.shots,
+            pts.len(),
+            fine.shots,
+            roots.len()
+        );
+    }
+    // the sign pattern is −…+: if every bracket was lost (roots that merge at the fine
+    // resolution), the whole interval at the fine resolution still holds one
+    if roots.is_empty() {
+        let ha = fine.h(scale.c(w_lo)).h;
+        let hb = fine.h(scale.c(w_hi)).h;
+        roots.push(refine(&mut fine, &scale, w_lo, ha, w_hi, hb, tol, cancel)?);
+    }
+    Ok((roots, fine.shots + coarse.shots / 4))
+}
+
+/// A scan point: w, H and its rising part F = C + I, and G = γ_s a_r(q_s) (H = F − G).
+#[derive(Clone, Copy)]
+struct Point {
+    w: f64,
+    h: f64,
+    f: f64,
+    g: f64,
+}
+
+/// The scan of H over [w_lo, w_hi]: [`SCAN_PER_DECADE`] points per decade of |C|, then every
+/// cell that may hold a root bisected down to [`SCAN_MIN_CELL`]. F = C + I and G = γ_s a_r
+/// both rise with C (more adhesion at the coarse scales means more contact at every scale),
+/// so on a cell H lies in [F₀ − G₁, F₁ − G₀]: a cell whose bound excludes 0 holds no root and
+/// is left alone, one whose bound includes 0 may hold a pair of roots and is bisected.
+fn scan(
+    s: &mut Shooter<'_>,
+    scale: &Scale,
+    w_lo: f64,
+    w_hi: f64,
+    gs: f64,
+    cancel: Option<&AtomicBool>,
+) -> Result<Vec<Point>> {
+    let at = |s: &mut Shooter<'_>, w: f64| -> Point {
+        let shot = s.h(scale.c(w));
+        Point {
+            w,
+            h: shot.h,
+            f: shot.f,
+            g: gs * shot.a_s,
+        }
+    };
+    let cell = std::f64::consts::LN_10 / SCAN_PER_DECADE;
+    let n0 = ((w_hi - w_lo) / cell).ceil().max(4.0) as usize;
+    let mut pts = Vec::with_capacity(4 * n0);
     for i in 0..=n0 {
         check_cancel(cancel)?;
-        let w = w_lo + (w_hi - w_lo) * i as f64 / n0 as f64;
-        let shot = coarse.h(scale.c(w));
-        pts.push((w, shot.h, shot.a_s));
+        pts.push(at(s, w_lo + (w_hi - w_lo) * i as f64 / n0 as f64));
     }
     loop {
         let mut next = Vec::with_capacity(2 * pts.len());
         let mut split = false;
         for i in 0..pts.len() {
             next.push(pts[i]);
-            if i + 1 == pts.len() || coarse.shots >= SCAN_MAX {
+            if i + 1 == pts.len() || s.shots >= SCAN_MAX {
                 continue;
             }
             let (p0, p1) = (pts[i], pts[i + 1]);
-            let jump = (p1.2.max(1e-300) / p0.2.max(1e-300)).ln().abs();
-            if jump > SCAN_LN_A && p1.0 - p0.0 > SCAN_MIN_CELL {
+            let (lo, hi) = (p0.f - p1.g, p1.f - p0.g);
+            if lo < 0.0 && hi > 0.0 && p1.w - p0.w > SCAN_MIN_CELL {
                 check_cancel(cancel)?;
-                let w = 0.5 * (p0.0 + p1.0);
-                let shot = coarse.h(scale.c(w));
-                next.push((w, shot.h, shot.a_s));
+                next.push(at(s, 0.5 * (p0.w + p1.w)));
                 split = true;
             }
         }
         pts = next;
         if !split {
-            break;
+            return Ok(pts);
         }
     }
-    let n = pts.len() - 1;
-    let ws: Vec<f64> = pts.iter().map(|p| p.0).collect();
-    let hs: Vec<f64> = pts.iter().map(|p| p.1).collect();
-    let mut brackets = Vec::new();
-    for i in 0..n {
-        if (hs[i] < 0.0) != (hs[i + 1] < 0.0) {
-            brackets.push(i);
-        }
-    }
-    // re-bracket at the fine resolution: the cell, else the cell widened by one on each side
-    let mut fine_cache: Vec<Option<f64>> = vec![None; ws.len()];
-    let mut fine_h = |fine: &mut Shooter<'_>, i: usize| -> f64 {
-        if let Some(h) = fine_cache[i] {
-            return h;
-        }
-        let h = fine.h(scale.c(ws[i])).h;
-        fine_cache[i] = Some(h);
-        h
-    };
-    let mut last_end = 0usize;
-    for &i in &brackets {
-        check_cancel(cancel)?;
-        let rising = hs[i] < 0.0;
-        let mut got = None;
-        for (a, b) in [(i, i + 1), (i.saturating_sub(1), (i + 2).min(n))] {
-            let a = a.max(last_end);
-            if a >= b {
-                continue;
-            }
-            let (ha, hb) = (fine_h(&mut fine, a), fine_h(&mut fine, b));
-            if (ha < 0.0) == rising && (hb < 0.0) != rising {
-                got = Some((a, ha, b, hb));
-                break;
-            }
-        }
-        if let Some((a, ha, b, hb)) = got {
-            roots.push(refine(&mut fine, &scale, ws[a], ha, ws[b], hb, tol, cancel)?);
-            last_end = b;
-        }
-    }
-    let shots = fine.shots + coarse.shots / 4;
-    // the sign pattern must be −…+: an even number of dropped roots keeps it; if every
-    // bracket was lost, fall back to the whole interval at the fine resolution
-    if roots.is_empty() {
-        let ha = fine.h(scale.c(w_lo)).h;
-        let hb = fine.h(scale.c(w_hi)).h;
-        roots.push(refine(&mut fine, &scale, w_lo, ha, w_hi, hb, tol, cancel)?);
-        return Ok((roots, fine.shots + coarse.shots / 4));
-    }
-    Ok((roots, shots))
 }
 
 /// Brent's method in w on a bracket [a, b] with H(a)·H(b) < 0, to |H| ≤ tol·a_r(q_s) (a
