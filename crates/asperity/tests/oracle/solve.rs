@@ -47,6 +47,12 @@ pub fn residual(ph: &Physics, path: &Path, res: &Resolution, c: f64) -> (f64, Ou
 /// All roots of H found by a scan (C + I₀ = (γ_s + I₀)·4^−k, k = `scan`…0, and C = −I₀) and
 /// refinement of each sign change, in increasing C.
 pub fn roots(ph: &Physics, res: &Resolution, scan: usize) -> Vec<Root> {
+    roots_dense(ph, res, scan, 1)
+}
+
+/// [`roots`] with each factor 4 of the scan divided into `sub` geometric steps (a pair of
+/// roots closer than a factor 4^(1/sub) in C + I₀ is missed).
+pub fn roots_dense(ph: &Physics, res: &Resolution, scan: usize, sub: usize) -> Vec<Root> {
     let path = Path::new(ph, res);
     // below C = −I₀ (I₀: the integral of the adhesionless march) the wall never turns on and
     // H = C + I₀ − γ_s a₀ < 0: every root lies in [−I₀, γ_s]
@@ -56,7 +62,12 @@ pub fn roots(ph: &Physics, res: &Resolution, scan: usize) -> Vec<Root> {
     // H changes fastest just above the onset −I₀ (a_r can grow by orders of magnitude within
     // 1e-4 of the bracket): the scan is geometric in C + I₀, from (γ_s + I₀)·4^−scan up
     let mut cs = vec![lo];
-    cs.extend((0..=scan).rev().map(|k| lo + (hi - lo) * 0.25f64.powi(k as i32)));
+    let n = scan * sub.max(1);
+    cs.extend(
+        (0..=n)
+            .rev()
+            .map(|k| lo + (hi - lo) * 0.25f64.powf(k as f64 / sub.max(1) as f64)),
+    );
     let hs: Vec<(f64, Outcome)> = cs.iter().map(|&c| residual(ph, &path, res, c)).collect();
     let mut out = Vec::new();
     let scan = cs.len() - 1;
@@ -219,6 +230,21 @@ pub fn loading(ph: &Physics, res: &Resolution, scan: usize) -> Answer {
         sigma_a: r2.outcome.sigma_a,
         c: r2.c,
     }
+}
+
+/// Every root of H at `res` (a scan of `scan` levels of `sub` steps each), each polished again at `res` refined
+/// twofold and extrapolated like [`loading`]: (a_r, error bar, C) per branch, in increasing C.
+pub fn branches(ph: &Physics, res: &Resolution, scan: usize, sub: usize) -> Vec<(f64, f64, f64)> {
+    let width = 1e-6 * (ph.gamma + Path::new(ph, res).e_full);
+    roots_dense(ph, res, scan, sub)
+        .iter()
+        .map(|r1| {
+            let r2 = root_near(ph, &res.refined(2.0), r1.c, width);
+            let (a1, a2) = (r1.outcome.a_r, r2.outcome.a_r);
+            let a = 2.0 * a2 - a1;
+            (a, ERROR_FRACTION * (a2 - a1).abs() + ERROR_FLOOR * a.abs(), r2.c)
+        })
+        .collect()
 }
 
 /// The default resolution of the oracle: steps of at most 5 % in B and 1/8 in ln q, at least
