@@ -81,6 +81,7 @@ const RUN: &[&str] = &[
     "jump_in_pressure",
     "mean_contact_stress",
     "mean_gap",
+    "mean_gap_lower_rel",
     "mean_gap_rel",
     "pr",
     "pr.density",
@@ -156,6 +157,8 @@ fn sweep_keys_and_columns() {
             // issue 13: both branches
             "a_r_unloading",
             "branches",
+            // issue 13: the mean gap's lower bound
+            "mean_gap_lower_rel",
         ],
         "sweep rows",
     );
@@ -171,7 +174,8 @@ fn sweep_keys_and_columns() {
         .next()
         .unwrap_or("")
         .to_string();
-    assert!(header.ends_with(",a_r_unloading,branches"), "{header}");
+    assert!(header.contains(",a_r_unloading,branches"), "{header}");
+    assert!(header.ends_with(",mean_gap_lower_rel"), "{header}");
     assert!(
         header.starts_with(
             "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error,\

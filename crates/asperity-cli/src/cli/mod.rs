@@ -226,10 +226,16 @@ pub struct RunOutput {
     pub converged: bool,
     /// Estimated absolute error of a_r.
     pub error_estimate: f64,
-    /// Mean gap ū (m) by the energy route [S-12]; null when unavailable (p* <= 0).
+    /// Mean gap ū (m) by the energy route on the stored elastic energy [S-12, S-14] (with
+    /// adhesion: the loading path that spends the interfacial energy in the cohesive zone,
+    /// docs/physics.md §5); null when unavailable (p* <= 0).
     pub mean_gap: Option<f64>,
     /// ū/h_rms; null when unavailable.
     pub mean_gap_rel: Option<f64>,
+    /// Lower bound of ū/h_rms on loading: the reversible route on U = U_el − a_r·γ_s made
+    /// admissible (max(0, its largest value at this or a higher load)); equal to
+    /// `mean_gap_rel` without adhesion up to quadrature error; null when the gap is.
+    pub mean_gap_lower_rel: Option<f64>,
     /// Why the mean gap is null (e.g. a load on the way to full contact where the adhesive
     /// fixed point did not converge); absent when it is given.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -315,6 +321,7 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         error_estimate: ev.error_estimate,
         mean_gap: gap.map(|g| g.metres),
         mean_gap_rel: gap.map(|g| g.relative),
+        mean_gap_lower_rel: gap.map(|g| g.lower),
         mean_gap_note,
         elastic_energy: ev.elastic_energy,
         sigma_a: ev.sigma_a,
@@ -372,6 +379,12 @@ fn run_table(out: &RunOutput) -> String {
     line("error_estimate (a_r)", format!("{:.2e}", out.error_estimate));
     if let (Some(g), Some(r)) = (out.mean_gap, out.mean_gap_rel) {
         line("mean_gap", format!("{g:.6e} m (u/h_rms = {r:.6})"));
+        if let (Some(lo), true) = (out.mean_gap_lower_rel, out.branch != "adhesionless") {
+            line(
+                "mean_gap lower bound",
+                format!("u/h_rms >= {lo:.6} (reversible loading)"),
+            );
+        }
     } else if let Some(n) = &out.mean_gap_note {
         line("mean_gap", n.clone());
     }

@@ -66,7 +66,7 @@ pub struct SweepArgs {
 /// rest were added with `--over`).
 pub const CSV_HEADER: &str = "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
 elastic_energy_reduced,mean_gap_error,contact_stress_variance,a_r_over_p,a_r_eq18,thickness_qr,gamma,\
-a_r_unloading,branches";
+a_r_unloading,branches,mean_gap_lower_rel";
 
 /// One row of `sweep` (CSV columns and JSON keys). Unavailable numbers are null (empty cells).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -139,7 +139,7 @@ pub fn csv(rows: &[Row]) -> String {
     for row in rows {
         let r = &row.row;
         out.push_str(&format!(
-            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.p,
             f(r.a_r),
             f(r.mean_gap_rel),
@@ -156,6 +156,7 @@ pub fn csv(rows: &[Row]) -> String {
             f(row.gamma),
             f(r.a_r_unloading),
             r.branches,
+            f(r.mean_gap_lower_rel),
         ));
     }
     out
@@ -238,6 +239,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                                     r.mean_gap_rel = g.relative;
                                     r.mean_gap = g.metres;
                                     r.mean_gap_error = g.error;
+                                    r.mean_gap_lower_rel = g.lower;
                                 }
                                 Ok(None) => {}
                                 Err(e) => notes.push(format!("value {:e}: mean gap unavailable: {e}", pt.value)),

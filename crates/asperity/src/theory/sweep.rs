@@ -4,7 +4,8 @@
 //! ln p*: the requested points (from `from` to `to`, log-spaced), refined by an integer factor
 //! when their spacing exceeds [`SWEEP_STEP_LN`], and extended with the same step up
 //! to full contact. The mean gap at every requested point then comes from one cumulative pass
-//! over that U table ([`crate::theory::gap::GapTable`]); nothing is evaluated twice. A 64-point chart
+//! over that table of the stored elastic energy U_el (the loading path's gap, physics.md §5;
+//! [`crate::theory::gap::GapTable`]); nothing is evaluated twice. A 64-point chart
 //! sweep of system 1 from p* = 1e-3 to 1 costs 64 + 13 engine evaluations.
 //!
 //! Every load is independent and the loads run in parallel (rayon), so a sweep gives the same
@@ -107,6 +108,9 @@ pub struct SweepRow {
     pub mean_gap_error: f64,
     /// ⟨δσ_c²⟩* (reduced by (E*ḡ)²).
     pub contact_stress_variance: f64,
+    /// Lower bound of ū/h_rms on loading (the reversible route made admissible; physics.md
+    /// §5.1); equal to `mean_gap_rel` without adhesion up to quadrature error.
+    pub mean_gap_lower_rel: f64,
     /// a_r of the unloading branch where it differs from the loading one (inside a hysteresis
     /// window); NaN (`null`) elsewhere. The loading curve is `a_r`; the unloading curve is
     /// `a_r_unloading` where given, else `a_r`.
@@ -131,6 +135,7 @@ impl SweepRow {
             elastic_energy_reduced: f64::NAN,
             mean_gap_error: f64::NAN,
             contact_stress_variance: f64::NAN,
+            mean_gap_lower_rel: f64::NAN,
             a_r_unloading: f64::NAN,
             branches: 0,
         }
@@ -218,39 +223,52 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         .collect();
     let evs = node_results(scene, &ps, opts, cancel)?;
     let unit = crate::theory::energy::energy_unit(scene);
-    // ū(p) integrates U over every load above p: below the highest failed load it is unknown
+    // ū(p) integrates U over every load above p: below the highest failed load it is unknown,
+    // and so it is below a load where the stored energy falls (not one stable branch)
     let last_fail = evs.iter().rposition(|e| e.is_err());
-    let first_ok = last_fail.map_or(0, |f| f + 1);
+    let mut first_ok = last_fail.map_or(0, |f| f + 1);
+    let stored: Vec<f64> = evs
+        .iter()
+        .map(|e| e.as_ref().map_or(f64::NAN, |e| gap::stored_energy(scene, e) / unit))
+        .collect();
+    let mut gap_note = None;
+    if n - first_ok >= 4 {
+        if let Some(j) = gap::route::last_decrease(&stored[first_ok..]) {
+            gap_note = Some(format!(
+                "the stored elastic energy falls between p* = {:.6e} and {:.6e} (the loads are not one \
+                 stable branch there): the mean gap is unknown at and below the first of them",
+                ps[first_ok + j],
+                ps[first_ok + j + 1]
+            ));
+            first_ok += j + 1;
+        }
+    }
     let table = if n - first_ok >= 4 {
-        let energy: Vec<f64> = evs[first_ok..]
+        let total: Vec<f64> = evs[first_ok..]
             .iter()
             .map(|e| e.as_ref().map_or(f64::NAN, |e| e.elastic_energy / unit))
             .collect();
-        Some(GapTable::from_energy(x0 + first_ok as f64 * step, step, energy)?)
+        Some(GapTable::from_energies(
+            x0 + first_ok as f64 * step,
+            step,
+            stored[first_ok..].to_vec(),
+            total,
+        )?)
     } else {
         None
     };
     let h_rms = scene.spectrum.rms_height();
-    let mut withheld = 0usize;
-    let mut gap_at = |i: usize| -> (f64, f64) {
+    let gap_at = |i: usize| -> (f64, f64, f64) {
         match &table {
-            Some(t) if i >= first_ok => {
-                let (g, e) = (t.gap[i - first_ok], t.error[i - first_ok]);
-                if gap::admissible(scene, g) {
-                    (g, e)
-                } else {
-                    withheld += 1;
-                    (f64::NAN, f64::NAN)
-                }
-            }
-            _ => (f64::NAN, f64::NAN),
+            Some(t) if i >= first_ok => (t.gap[i - first_ok], t.error[i - first_ok], t.lower[i - first_ok]),
+            _ => (f64::NAN, f64::NAN, f64::NAN),
         }
     };
     let mut failed_loads = Vec::new();
     let rows: Vec<SweepRow> = (0..spec.points)
         .map(|k| {
             let i = k * m;
-            let (g, g_err) = gap_at(i);
+            let (g, g_err, g_lo) = gap_at(i);
             match &evs[i] {
                 Ok(e) => SweepRow {
                     p: ps[i],
@@ -263,6 +281,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
                     elastic_energy_reduced: e.elastic_energy / unit,
                     mean_gap_error: g_err,
                     contact_stress_variance: e.stats.contact_stress_variance,
+                    mean_gap_lower_rel: g_lo,
                     a_r_unloading: e.unloading_a_r.unwrap_or(f64::NAN),
                     branches: e.branches.len().max(1),
                 },
@@ -287,18 +306,9 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
             ps[f]
         )
     });
-    let note = match (note, withheld) {
-        (n, 0) => n,
-        (n, k) => {
-            let w = format!(
-                "the mean gap of {k} row(s) is withheld (empty): with adhesion the energy route gave \
-                 u < 0 there, which is not admissible (docs/physics.md, mean gap with adhesion)"
-            );
-            Some(match n {
-                Some(n) => format!("{n}; {w}"),
-                None => w,
-            })
-        }
+    let note = match (note, gap_note) {
+        (Some(a), Some(b)) => Some(format!("{a}; {b}")),
+        (a, b) => a.or(b),
     };
     // monotone over the rows with numbers
     let finite: Vec<&SweepRow> = rows.iter().filter(|r| r.a_r.is_finite()).collect();
