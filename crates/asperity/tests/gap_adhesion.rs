@@ -36,13 +36,15 @@ fn the_gamma_to_zero_limit_is_the_adhesionless_gap() {
         let s = preset(name, model);
         let zero = gap_of(&s, 0.0, p).relative;
         let small: Vec<f64> = [1e-4, 1e-5, 1e-6].iter().map(|&g| gap_of(&s, g, p).relative).collect();
-        // continuity: ū(γ) − ū(γ/10) is O(γ̃_glo) and falls with γ
+        // continuity: ū(γ) − ū(γ/10) is O(γ̃_glo) and falls with γ (by 10^{-1/2} or faster:
+        // with the walls at the nodes σ_a(q_s) ∝ √γ enters the last step directly; measured
+        // ratio 0.28 on system 1, model 1, where the old mid-step walls gave ≤ 0.2)
         let mut with_g = s.clone();
         with_g.gamma = 1e-4;
         let glo = with_g.gamma_glo();
         let (d1, d2) = ((small[0] - small[1]).abs(), (small[1] - small[2]).abs());
         assert!(
-            d1 <= glo * zero && d2 <= 0.2 * d1 + 1e-12 * zero,
+            d1 <= glo * zero && d2 <= 0.4 * d1 + 1e-12 * zero,
             "{name} m{model}: {small:?}"
         );
         let rel = (small[2] / zero - 1.0).abs();
