@@ -78,6 +78,7 @@ const RUN: &[&str] = &[
     "error_estimate",
     "gamma_q",
     "iterations",
+    "jump_in_pressure",
     "mean_contact_stress",
     "mean_gap",
     "mean_gap_rel",
@@ -85,6 +86,7 @@ const RUN: &[&str] = &[
     "pr.density",
     "pr.sigma",
     "preset",
+    "pull_off_pressure",
     "residual",
     "resolution",
     "resolution.a_r",
@@ -126,6 +128,9 @@ fn sweep_keys_and_columns() {
             "monotone",
             "preset",
             "rows",
+            // issue 13: the hysteresis window's edges
+            "jump_in_pressure",
+            "pull_off_pressure",
         ],
         "sweep",
     );
@@ -148,6 +153,9 @@ fn sweep_keys_and_columns() {
             "a_r_eq18",
             "thickness_qr",
             "gamma",
+            // issue 13: both branches
+            "a_r_unloading",
+            "branches",
         ],
         "sweep rows",
     );
@@ -163,6 +171,7 @@ fn sweep_keys_and_columns() {
         .next()
         .unwrap_or("")
         .to_string();
+    assert!(header.ends_with(",a_r_unloading,branches"), "{header}");
     assert!(
         header.starts_with(
             "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error,\

@@ -316,7 +316,7 @@ fn issue_grid() {
                     times.push(dt);
                     match r {
                         Ok(sol) => println!(
-                            "sys {sys} m {model} t {t} p {p:e}: a_r {:.5} shots {} res {:.1e} {:.1} ms branches {:?}",
+                            "sys {sys} m {model} t {t} p {p:e}: a_r {:.8e} shots {} res {:.1e} {:.1} ms branches {:?}",
                             sol.a_r,
                             sol.iterations,
                             sol.residual,
@@ -363,6 +363,71 @@ fn branch_map() {
                         );
                     }
                 }
+            }
+        }
+    }
+}
+
+#[test]
+fn hysteresis_window_has_three_branches_and_brackets_the_load() {
+    // system 2, model 3, t·q_r = 0.1 at 0.8 γ_s: between pull-off and jump-in the loading branch
+    // (small a_r), an unstable one and the unloading branch (a_r ≈ 0.42) coexist
+    let mut s = system(2, 3);
+    s.thickness_qr = 0.1;
+    s.gamma *= 0.8;
+    s.pressure = 1e-5;
+    let acc = AdhesionAccuracy::default();
+    let sol = adhesion::solve(&s, &acc, None, None).unwrap();
+    let b = &sol.branches;
+    assert_eq!(b.len(), 3, "{b:?}");
+    assert!(b[0].stable && !b[1].stable && b[2].stable, "{b:?}");
+    assert!(b[0].a_r < b[1].a_r && b[1].a_r < b[2].a_r, "{b:?}");
+    assert_eq!(sol.branch, "loading");
+    assert!((sol.a_r - b[0].a_r).abs() < 1e-15);
+    assert_eq!(sol.unloading_a_r, Some(b[2].a_r));
+    // the effective coarse-scale surface energy rises from branch to branch (C orders them)
+    assert!(b[0].gamma_coarse < b[1].gamma_coarse && b[1].gamma_coarse < b[2].gamma_coarse);
+    let w = asperity::theory::hysteresis::window_around(&s, &acc, None)
+        .unwrap()
+        .unwrap();
+    let (lo, hi) = (w.pull_off_pressure.unwrap(), w.jump_in_pressure.unwrap());
+    assert!(lo < 1e-5 && 1e-5 < hi, "{w:?}");
+    // just outside each edge a single stable branch is left: below pull-off the loading one
+    // (small a_r), above jump-in the upper one
+    for (p, small) in [(lo * 0.9, true), (hi * 1.1, false)] {
+        let mut t = s.clone();
+        t.pressure = p;
+        let o = adhesion::solve(&t, &acc, None, None).unwrap();
+        assert_eq!(
+            o.branches.iter().filter(|b| b.stable).count(),
+            1,
+            "p {p}: {:?}",
+            o.branches
+        );
+        assert_eq!(o.a_r < 0.1, small, "p {p}: {}", o.a_r);
+    }
+}
+
+#[test]
+fn the_thin_slab_grid_converges_everywhere() {
+    // the issue-13 grid where the fixed-point solver failed (system 2, models 3 and 4,
+    // t·q_r 0.08–0.15, p* ≤ 1e-4): every point ends converged, on a stable branch, with
+    // 0 < a_r ≤ 1 and a self-consistent energy balance
+    for model in [3u8, 4] {
+        for t in [0.08, 0.1, 0.12, 0.15] {
+            for p in [1e-6, 1e-5, 1e-4] {
+                let mut s = system(2, model);
+                s.thickness_qr = t;
+                s.pressure = p;
+                let sol = adhesion::solve(&s, &AdhesionAccuracy::default(), None, None)
+                    .unwrap_or_else(|e| panic!("model {model}, t {t}, p {p}: {e}"));
+                assert!(sol.a_r > 0.0 && sol.a_r <= 1.0, "{}", sol.a_r);
+                assert!(
+                    sol.residual <= AdhesionAccuracy::default().tol * 1e3,
+                    "{}",
+                    sol.residual
+                );
+                assert!(sol.branches.iter().any(|b| b.stable && (b.a_r - sol.a_r).abs() < 1e-15));
             }
         }
     }

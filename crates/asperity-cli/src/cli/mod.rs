@@ -255,6 +255,13 @@ pub struct RunOutput {
     /// "unloading"), stable, a_r, sigma_a, gamma_coarse (γ(q_L)/γ_s), elastic_energy.
     /// Empty without adhesion.
     pub branches: Vec<asperity::theory::adhesion::BranchState>,
+    /// Inside a hysteresis window (two stable branches at this load): p* above which the
+    /// loading branch no longer exists (jump into contact); null outside a window or when
+    /// the window runs past the allowed range of p*.
+    pub jump_in_pressure: Option<f64>,
+    /// Inside a hysteresis window: p* below which the unloading branch no longer exists
+    /// (pull-off); null outside a window or when it runs past the allowed range.
+    pub pull_off_pressure: Option<f64>,
     /// γ(q)/γ_s along `resolution.q` (empty without adhesion).
     pub gamma_q: Vec<f64>,
     /// σ_a*(q) along `resolution.q` (empty without adhesion).
@@ -293,6 +300,12 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         Ok(g) => (g, None),
         Err(e) => (None, Some(format!("mean gap unavailable: {e}"))),
     };
+    // inside a hysteresis window: its edges (a few more solves, only then)
+    let window = if ev.branches.iter().filter(|b| b.stable).count() >= 2 {
+        asperity::theory::hysteresis::window_around(scene, &opts.adhesion, None)?
+    } else {
+        None
+    };
     Ok(RunOutput {
         preset: preset_name.to_string(),
         stats: ev.stats.clone(),
@@ -312,6 +325,8 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         branch: ev.branch.to_string(),
         unloading_a_r: ev.unloading_a_r,
         branches: ev.branches.clone(),
+        jump_in_pressure: window.and_then(|w| w.jump_in_pressure),
+        pull_off_pressure: window.and_then(|w| w.pull_off_pressure),
         gamma_q: ev.gamma_q.clone(),
         sigma_a_q: ev.sigma_a_q.clone(),
         elapsed_s: ev.elapsed_s,
@@ -374,6 +389,15 @@ fn run_table(out: &RunOutput) -> String {
                 .map(|b| format!("{} a_r = {:.6} sigma_a* = {:.4}", b.branch, b.a_r, b.sigma_a))
                 .collect();
             line("branches", list.join("; "));
+            let edge = |p: Option<f64>| p.map_or("beyond the allowed range".to_string(), |p| format!("{p:.4e}"));
+            line(
+                "hysteresis",
+                format!(
+                    "pull-off at p* = {}, jump-in at p* = {}: the loading history decides the branch",
+                    edge(out.pull_off_pressure),
+                    edge(out.jump_in_pressure)
+                ),
+            );
         }
         line(
             "iterations",

@@ -65,7 +65,8 @@ pub struct SweepArgs {
 /// The CSV header (the first nine columns are the public interface of the load sweep; the
 /// rest were added with `--over`).
 pub const CSV_HEADER: &str = "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
-elastic_energy_reduced,mean_gap_error,contact_stress_variance,a_r_over_p,a_r_eq18,thickness_qr,gamma";
+elastic_energy_reduced,mean_gap_error,contact_stress_variance,a_r_over_p,a_r_eq18,thickness_qr,gamma,\
+a_r_unloading,branches";
 
 /// One row of `sweep` (CSV columns and JSON keys). Unavailable numbers are null (empty cells).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -121,6 +122,12 @@ pub struct SweepOutput {
     /// What failed; absent when every value converged.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// Load sweeps: p* above which the loading branch no longer exists (the jump into
+    /// contact), where the range holds it; null otherwise (and for other knobs).
+    pub jump_in_pressure: Option<f64>,
+    /// Load sweeps: p* below which the unloading branch no longer exists (pull-off), where
+    /// the range holds it; null otherwise.
+    pub pull_off_pressure: Option<f64>,
 }
 
 /// Formats rows as CSV.
@@ -132,7 +139,7 @@ pub fn csv(rows: &[Row]) -> String {
     for row in rows {
         let r = &row.row;
         out.push_str(&format!(
-            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.p,
             f(r.a_r),
             f(r.mean_gap_rel),
@@ -147,6 +154,8 @@ pub fn csv(rows: &[Row]) -> String {
             o(row.a_r_eq18),
             row.thickness_qr.map_or("inf".to_string(), f),
             f(row.gamma),
+            f(r.a_r_unloading),
+            r.branches,
         ));
     }
     out
@@ -187,6 +196,8 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                 failed_values: sw.failed_loads.clone(),
                 failed_loads: sw.failed_loads,
                 note: sw.note,
+                jump_in_pressure: sw.jump_in_pressure,
+                pull_off_pressure: sw.pull_off_pressure,
             })
         }
         Over::Thickness | Over::Gamma => {
@@ -220,6 +231,8 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                             r.elastic_energy = e.elastic_energy;
                             r.elastic_energy_reduced = e.elastic_energy / unit;
                             r.converged = true;
+                            r.a_r_unloading = e.unloading_a_r.unwrap_or(f64::NAN);
+                            r.branches = e.branches.len().max(1);
                             match &pt.gap {
                                 Ok(Some(g)) => {
                                     r.mean_gap_rel = g.relative;
@@ -257,6 +270,8 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                 failed_loads: failed.iter().map(|_| scene.pressure).collect(),
                 failed_values: failed,
                 note,
+                jump_in_pressure: None,
+                pull_off_pressure: None,
             })
         }
     }

@@ -8,6 +8,7 @@ pub mod closed_form;
 pub mod energy;
 pub mod engine;
 pub mod gap;
+pub mod hysteresis;
 pub mod knob;
 pub mod loads;
 pub mod mirror;

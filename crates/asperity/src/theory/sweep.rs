@@ -7,14 +7,12 @@
 //! over that U table ([`crate::theory::gap::GapTable`]); nothing is evaluated twice. A 64-point chart
 //! sweep of system 1 from p* = 1e-3 to 1 costs 64 + 13 engine evaluations.
 //!
-//! Adhesionless loads are independent and run in parallel (rayon). Adhesive loads are run in
-//! order of increasing p* (the loading branch, continuation from the neighbouring load): the
-//! warm start is [`crate::theory::loads::evaluate_node`]: each load starts the fixed point from the previous load's
-//! a_r(q), which cuts the iterations and keeps the sweep on the loading branch (an adhesive
-//! jump shows as a non-monotone stretch, flagged by [`Sweep::monotone`]). The range is cut
-//! into chunks of at most 16 loads by a rule that depends on the number of loads only; the
-//! chunks run in parallel, so a sweep gives the same numbers, bit for bit, on any number of
-//! threads.
+//! Every load is independent and the loads run in parallel (rayon), so a sweep gives the same
+//! numbers, bit for bit, on any number of threads. With adhesion each load reports every
+//! branch: `a_r` is the loading branch (the lowest stable one), `a_r_unloading` the unloading
+//! branch where a hysteresis window makes it distinct, and the window's edges — the jump-in
+//! and pull-off loads ([`crate::theory::hysteresis`]) — are refined by bisection where the
+//! sweep's grid holds them.
 //!
 //! Cancellation: the caller may pass an `AtomicBool`; when it is set the sweep stops between
 //! evaluations and returns [`Error::Cancelled`].
@@ -23,6 +21,8 @@ use crate::error::{Error, Field, Result};
 use crate::input::scene::{Scene, PRESSURE_RANGE};
 use crate::theory::engine::Options;
 use crate::theory::gap::{self, GapTable};
+use crate::theory::hysteresis;
+use crate::theory::loads::NodeResult;
 use serde::Serialize;
 use std::sync::atomic::AtomicBool;
 
@@ -107,6 +107,13 @@ pub struct SweepRow {
     pub mean_gap_error: f64,
     /// ⟨δσ_c²⟩* (reduced by (E*ḡ)²).
     pub contact_stress_variance: f64,
+    /// a_r of the unloading branch where it differs from the loading one (inside a hysteresis
+    /// window); NaN (`null`) elsewhere. The loading curve is `a_r`; the unloading curve is
+    /// `a_r_unloading` where given, else `a_r`.
+    pub a_r_unloading: f64,
+    /// Number of solutions at this load (1 without adhesion or hysteresis, 3 inside a window:
+    /// loading, unstable, unloading; 0 where the solver did not converge).
+    pub branches: usize,
 }
 
 impl SweepRow {
@@ -124,6 +131,8 @@ impl SweepRow {
             elastic_energy_reduced: f64::NAN,
             mean_gap_error: f64::NAN,
             contact_stress_variance: f64::NAN,
+            a_r_unloading: f64::NAN,
+            branches: 0,
         }
     }
 }
@@ -145,6 +154,13 @@ pub struct Sweep {
     /// What failed and what it means for the other rows; absent when every load converged.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// p* above which the loading branch no longer exists (the jump into contact on loading),
+    /// where the sweep's range holds a hysteresis window's upper edge; to
+    /// [`crate::theory::hysteresis::EDGE_REL`].
+    pub jump_in_pressure: Option<f64>,
+    /// p* below which the unloading branch no longer exists (pull-off on unloading), where
+    /// the range holds the window's lower edge.
+    pub pull_off_pressure: Option<f64>,
 }
 
 impl Sweep {
@@ -247,6 +263,8 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
                     elastic_energy_reduced: e.elastic_energy / unit,
                     mean_gap_error: g_err,
                     contact_stress_variance: e.stats.contact_stress_variance,
+                    a_r_unloading: e.unloading_a_r.unwrap_or(f64::NAN),
+                    branches: e.branches.len().max(1),
                 },
                 Err(_) => {
                     failed_loads.push(ps[i]);
@@ -290,6 +308,23 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
                 || !w[1].mean_gap_rel.is_finite()
                 || w[1].mean_gap_rel <= w[0].mean_gap_rel)
     });
+    // the hysteresis window: the first run of grid loads with two stable branches; each edge
+    // inside the grid is refined by bisection between its two grid loads
+    let two = |e: &NodeResult| {
+        e.as_ref()
+            .is_ok_and(|e| e.branches.iter().filter(|b| b.stable).count() >= 2)
+    };
+    let (mut jump_in_pressure, mut pull_off_pressure) = (None, None);
+    if let Some(first) = evs.iter().position(two) {
+        let last = first + evs[first..].iter().take_while(|e| two(e)).count() - 1;
+        let acc = opts.adhesion;
+        if first > 0 && evs[first - 1].is_ok() {
+            pull_off_pressure = Some(hysteresis::edge(scene, ps[first], ps[first - 1], &acc, cancel)?);
+        }
+        if last + 1 < n && evs[last + 1].is_ok() {
+            jump_in_pressure = Some(hysteresis::edge(scene, ps[last], ps[last + 1], &acc, cancel)?);
+        }
+    }
     Ok(Sweep {
         rows,
         evaluations: n,
@@ -297,6 +332,8 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         monotone,
         failed_loads,
         note,
+        jump_in_pressure,
+        pull_off_pressure,
     })
 }
 

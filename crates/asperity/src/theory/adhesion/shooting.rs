@@ -21,20 +21,16 @@
 //! a_r ≤ 1), with I_full the full-contact value of I, so a root always exists in
 //! [−I_full, γ_s]; several roots are several branches of the same scene (hysteresis).
 //!
-//! Each step's wall is the mean of σ_a over the step with γ linear between its nodes, exactly
-//! as `walls` computes it for a given a_r(q); the end node's γ needs the step's own a_r, which
-//! a trial of the step predicts (from the geometric extrapolation of a_r) and a second trial
-//! corrects before the step is taken with the corrected wall. At the root the march agrees
-//! with the fixed-point map of the prescribed-wall propagator to the correction's error
-//! (measured through `AdhesiveSolution::residual`).
+//! Each step's wall is the mean of σ_a over the step with γ linear between its nodes (`walls`);
+//! the end node's γ needs the step's own a_r: a trial of the step with the wall of the
+//! geometrically extrapolated a_r predicts it, and the step is taken with the wall of the
+//! predicted end (predictor–corrector: second order in the step, and a fixed number of trials
+//! keeps H(C) a smooth function of C for the root finder). Iterating the trial to convergence
+//! instead changed a_r by at most 1.2e-5 relative (median 1e-7) on the issue-13 grid at 1.6× the
+//! cost.
 
 use super::propagator::{Cursor, Marcher};
 use super::walls::WallCoefficients;
-
-/// Most trials of a step whose wall depends on its own end.
-const MAX_TRIALS: usize = 6;
-/// A trial is accepted when a_r at the step's end moved by less than this (relative).
-const TRIAL_TOL: f64 = 1e-10;
 
 /// One shooting march.
 pub(super) struct Shot {
@@ -112,29 +108,13 @@ impl Marcher<'_> {
             let wall = if g0 <= 0.0 && c + energy + e <= 0.0 {
                 0.0
             } else {
-                // a = T(a), T(a) = the step's end with the wall of end value a: secant
-                // iteration on T(a) − a from the extrapolated guess (T is smooth and nearly
-                // flat: two or three trials)
-                let mut x0 = if a_prev > 0.0 { (a * a / a_prev).min(1.0) } else { a };
-                let mut r0 = self.trial(&cur, wall_for(x0)) - x0;
-                let mut guess = x0 + r0;
+                // predictor–corrector: a trial with the wall of the extrapolated end value
+                // gives the step's end, and the step is taken with the wall of that end (a
+                // fixed number of trials keeps H(C) smooth; second order in the step)
+                let guess = if a_prev > 0.0 { (a * a / a_prev).min(1.0) } else { a };
+                let end = self.trial(&cur, wall_for(guess));
                 self.trials += 1;
-                for _ in 1..MAX_TRIALS {
-                    if r0.abs() <= TRIAL_TOL * guess {
-                        break;
-                    }
-                    let x1 = guess;
-                    let r1 = self.trial(&cur, wall_for(x1)) - x1;
-                    self.trials += 1;
-                    let next = if r1 != r0 {
-                        x1 - r1 * (x1 - x0) / (r1 - r0)
-                    } else {
-                        x1 + r1
-                    };
-                    (x0, r0) = (x1, r1);
-                    guess = next.clamp(0.0, 1.0);
-                }
-                wall_for(guess)
+                wall_for(end)
             };
             let a_next = self.step(&mut cur, wall, true);
             let am = 0.5 * (a + a_next);

@@ -13,8 +13,9 @@ use crate::error::{Error, Field, Result};
 use crate::input::scene::Scene;
 use std::sync::atomic::AtomicBool;
 
-/// How far above `tol` a root's residual may end when its bracket collapsed.
-const ACCEPT: f64 = 1e3;
+/// The largest residual |γ(q_s)/γ_s − 1| accepted for a root whose bracket collapsed onto a
+/// jump of the discrete H (measured: up to 1.4e-4 on system 2, model 4, t·q_r = 0.15).
+const COLLAPSED: f64 = 1e-3;
 
 /// Checks the solver's own knobs.
 fn validate(acc: &AdhesionAccuracy) -> Result<()> {
@@ -69,10 +70,12 @@ pub fn solve(
         })
         .collect();
     let root = &roots[chosen];
-    // Brent stops at tol, or when its bracket collapses onto a jump of the discrete H (a
-    // switch of the march's stage between two shots): such a root is accepted up to
-    // ACCEPT·tol (its residual enters the error estimate), beyond that it is an error
-    if root.h_rel.is_nan() || root.h_rel > acc.tol.max(1e-12) * ACCEPT {
+    // Brent stops at tol, or when its bracket collapses onto a jump of the discrete H (the
+    // march switches from the mirror Gaussian to the grid at a step that depends on C, which
+    // moves H by up to ~1e-4 relative): such a root is accepted up to COLLAPSED (its residual
+    // enters the error estimate, and it is below the discretisation error), beyond that it is
+    // an error
+    if root.h_rel.is_nan() || root.h_rel > (acc.tol * 1e3).max(COLLAPSED) {
         return Err(Error::NotConverged {
             solver: "adhesive self-consistency".into(),
             reason: format!(
