@@ -217,7 +217,7 @@ pub struct SweepData {
     pub mean_contact_stress: Vec<f64>,
     /// Whether each load converged.
     pub converged: Vec<bool>,
-    /// a_r of the unloading branch (NaN where there is no distinct one; empty: not computed).
+    /// a_r of the unloading branch (NaN where there is no distinct one; empty: no hysteresis).
     pub a_r_unloading: Vec<f64>,
     /// p* above which the loading branch no longer exists (the jump into contact), when it
     /// lies in the swept range.
@@ -228,7 +228,9 @@ pub struct SweepData {
 }
 
 impl SweepData {
-    /// Copies the rows of a sweep (the loading branch, with ū and σ̄_c*).
+    /// Copies the rows of a sweep: the loading branch with ū and σ̄_c*, the unloading branch
+    /// where a hysteresis window makes it distinct, and the window's edges (the library refines
+    /// them by bisection, [`asperity::theory::hysteresis`]).
     pub fn from_sweep(s: &Sweep) -> SweepData {
         SweepData {
             p: s.rows.iter().map(|r| r.p).collect(),
@@ -236,15 +238,20 @@ impl SweepData {
             gap_rel: s.rows.iter().map(|r| r.mean_gap_rel).collect(),
             mean_contact_stress: s.rows.iter().map(|r| r.mean_contact_stress).collect(),
             converged: s.rows.iter().map(|r| r.converged).collect(),
-            a_r_unloading: Vec::new(),
-            jump_in: None,
-            pull_off: None,
+            // empty without a hysteresis (nothing to draw)
+            a_r_unloading: if s.rows.iter().any(|r| r.a_r_unloading.is_finite()) {
+                s.rows.iter().map(|r| r.a_r_unloading).collect()
+            } else {
+                Vec::new()
+            },
+            jump_in: s.jump_in_pressure,
+            pull_off: s.pull_off_pressure,
         }
     }
 
     /// Adds the unloading curve and the jump from the branches found at each load
     /// (`branches[k]` at `p[k]`; an empty list where the load failed), see
-    /// [`unloading_curve`].
+    /// [`unloading_curve`] (for loads evaluated one by one; a sweep carries its own).
     pub fn with_branches(mut self, branches: &[Vec<BranchState>]) -> SweepData {
         let (u, jump, pull) = unloading_curve(&self.p, branches);
         self.a_r_unloading = u;

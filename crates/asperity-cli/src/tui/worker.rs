@@ -501,20 +501,15 @@ fn serve_sweep(
     Some(sw)
 }
 
-/// The load curves of the charts at chart accuracy: the loading branch with ū and σ̄_c*
-/// ([`sweep::sweep`]) and, with adhesion, the branches at each requested load (the unloading
-/// curve and the jump, [`SweepData::with_branches`]).
+/// The load curves of the charts at chart accuracy: the loading branch with ū and σ̄_c*, and
+/// with adhesion the unloading branch and the jump-in and pull-off loads ([`sweep::sweep`]).
 pub fn load_sweep(scene: &Scene, spec: &SweepSpec, cancel: &AtomicBool) -> Result<SweepData> {
-    let sd = SweepData::from_sweep(&sweep::sweep(scene, spec, &Options::chart(), Some(cancel))?);
-    if scene.gamma == 0.0 {
-        return Ok(sd);
-    }
-    let evs = sweep::node_results(scene, &spec.pressures(), &Options::chart(), Some(cancel))?;
-    let branches: Vec<Vec<asperity::theory::adhesion::BranchState>> = evs
-        .into_iter()
-        .map(|e| e.map_or_else(|_| Vec::new(), |e| e.branches))
-        .collect();
-    Ok(sd.with_branches(&branches))
+    Ok(SweepData::from_sweep(&sweep::sweep(
+        scene,
+        spec,
+        &Options::chart(),
+        Some(cancel),
+    )?))
 }
 
 /// The thickness sweep of `scene` (cached); `None` when cancelled.
@@ -922,6 +917,74 @@ mod tests {
         let r = serve(&req, &mut c, false, false);
         // until the adhesive solver lands the engine refuses; either way the UI gets a reply
         assert_eq!(r.last(), Some(&Reply::Done { gen: 1 }));
+    }
+
+    #[test]
+    fn an_adhesive_point_comes_first_at_chart_accuracy_then_refined() {
+        let mut c = Caches::default();
+        let mut req = request(1, 0.01);
+        req.scene.gamma = 0.05;
+        let r = serve(&req, &mut c, false, false);
+        assert_eq!(kinds(&r), ["point", "sweep", "gap", "point", "done"]);
+        let (Reply::Point { result: Ok(first), .. }, Reply::Point { result: Ok(last), .. }) = (&r[0], &r[3]) else {
+            panic!("{r:?}");
+        };
+        assert!(first.preview && first.error_estimate.is_nan());
+        assert!(!last.preview && last.error_estimate.is_finite());
+        // chart accuracy: a_r to ~2e-3 relative (engine::Options::chart)
+        assert!(
+            (first.a_r / last.a_r - 1.0).abs() < 1e-2,
+            "{} vs {}",
+            first.a_r,
+            last.a_r
+        );
+        assert!(first.adhesionless.is_some() && first.wall.is_some());
+        // the refined point is cached: the next time it comes at once, alone
+        let again = serve(&req, &mut c, false, false);
+        assert_eq!(kinds(&again), ["point", "sweep", "gap", "done"]);
+        assert_eq!(again[0], r[3]);
+        // stale after the preview: only the preview is sent, nothing refined is cached
+        let mut c2 = Caches::default();
+        assert_eq!(kinds(&serve(&req, &mut c2, false, true)), ["point"]);
+        assert!(c2.points.is_empty() && c2.previews.len() == 1);
+    }
+
+    #[test]
+    fn the_load_curves_carry_both_branches_and_the_jump() {
+        // system 2, model 3, t·q_r = 0.1, γ_s = 0.8 × the preset's: a hysteresis window from
+        // below p* = 1e-6 to the jump-in load near 2.4e-4 (loading a_r ≈ 0.03 at 1e-4,
+        // unloading ≈ 0.43)
+        let mut scene = asperity::input::preset::Preset::resolve("system-2")
+            .unwrap()
+            .scene()
+            .unwrap();
+        scene.model = Model::named(3).unwrap();
+        scene.thickness_qr = 0.1;
+        scene.gamma = 0.8 * 0.157;
+        let spec = SweepSpec {
+            from: 1e-4,
+            to: 1e-3,
+            points: 9,
+        };
+        let sd = load_sweep(&scene, &spec, &AtomicBool::new(false)).unwrap();
+        assert_eq!(sd.a_r_unloading.len(), sd.p.len());
+        assert!(sd.a_r_unloading[0] > 0.3 && sd.a_r_unloading[0] < 0.6, "{sd:?}");
+        assert!(sd.a_r[0] < 0.1, "{sd:?}");
+        assert!(sd.a_r_unloading.last().is_some_and(|a| a.is_nan()), "{sd:?}");
+        assert_eq!(sd.pull_off, None, "the window runs below the range");
+        let jump = sd.jump_in.expect("the jump-in load lies in the range");
+        // independently: full-accuracy points a little below and above it (every branch
+        // searched): two stable branches below, one above
+        let stable = |p: f64| {
+            let mut s = scene.clone();
+            s.pressure = p;
+            let ev = engine::evaluate(&s, &Options::default()).unwrap();
+            ev.branches.iter().filter(|b| b.stable).count()
+        };
+        assert_eq!(stable(jump / 1.1), 2, "below {jump}");
+        assert_eq!(stable(jump * 1.1), 1, "above {jump}");
+        let cancelled = load_sweep(&scene, &spec, &AtomicBool::new(true));
+        assert!(matches!(cancelled, Err(Error::Cancelled)));
     }
 
     #[test]
