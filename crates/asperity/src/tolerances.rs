@@ -144,3 +144,56 @@ pub const RUN_SWEEP_REL: f64 = 1e-6;
 /// steep fall of a_r there is resolved only to that level); the wrong interpolant this guards
 /// against was off by a factor of 3.
 pub const THIN_SLAB_SMALL_LOAD_ENERGY_REL: f64 = 1e-2;
+
+// The adhesive oracle (issue 13 items 3 and 6; `tests/adhesion_oracle.rs`, `tests/oracle/`)
+
+/// The oracle's march with a prescribed wall against closed forms (fixed wall: the mirror
+/// Gaussian; linearly moving wall: Bachelier–Lévy), model 1 on a half-space, two levels
+/// extrapolated, relative to a_r. Measured ≤ 4.6e-5 (fixed) and ≤ 8.3e-5 (moving, p* = 1e-4);
+/// its error is first order in the step because the wall of each implicit solve sits at the
+/// step's end.
+pub const ORACLE_WALL_REL: f64 = 1.5e-4;
+
+/// The oracle at γ_s = 0 (σ_a ≡ 0, W-coupled broadening, slabs) against erf(√2p*) and the
+/// adaptive adhesionless ODE of `theory::persson`. Measured ≤ 6.2e-5.
+pub const ORACLE_ADHESIONLESS_REL: f64 = 1.5e-4;
+
+/// The fast adhesive solver at its default accuracy (24 steps per ln q, 10 points per width)
+/// against the oracle, relative to a_r, on top of the oracle's own error bar. Measured on 44
+/// scenes (systems I and II, models 1–4, t·q_r = ∞ to 0.25, p* = 1e-4 to 0.1; the ignored
+/// set): ≤ 1e-3 on most, 4e-3…9e-3 on five thin-slab scenes and 2.1e-2 on system II, model 4,
+/// t·q_r = 0.25, p* = 1e-4, where the first-order march converges slowly and not
+/// monotonically (2.1e-2, 5.0e-3, 3.4e-3, 9e-4 at 1×, 2×, 4×, 8× the resolution). On every
+/// scene the error stayed within `error_estimate` plus the oracle's bar, which the tests
+/// also assert.
+pub const ADHESION_ORACLE_REL: f64 = 3e-2;
+
+/// The fast adhesive solver at 4× the default resolution against the oracle (the ignored
+/// set of 44 scenes). Measured ≤ 1.1e-3, and 3.4e-3 on the scene named above.
+pub const ADHESION_ORACLE_FINE_REL: f64 = 5e-3;
+
+/// Honest error bars (issue 13 item 6): the share of random adhesive scenes on which
+/// `error_estimate` must be ≥ the true error of a_r (against the oracle, and against a 4×
+/// finer run of the fast solver).
+pub const ERROR_BAR_COVERAGE: f64 = 0.95;
+
+/// … and the smallest estimate/true-error ratio allowed on any scene (never more than 2×
+/// below).
+pub const ERROR_BAR_WORST_RATIO: f64 = 0.5;
+
+/// The safety factor of the adhesive `error_estimate` (engine.rs): S·(|a − a(steps/2)| +
+/// |a − a(points/2)|) + residual·a. The halvings measure a first-order error only once the
+/// march is asymptotic; on thin slabs it converges slowly and not monotonically (a(steps/2),
+/// a(points/2) and a can agree while all are off). Measured against the oracle (errors larger
+/// than the oracle's bar only) and 4× finer runs:
+///
+/// | set | S = 1 | S = 2 | S = 3 |
+/// |---|---|---|---|
+/// | 59 seeded random scenes: misses, worst ratio | 6, 0.62 | 0, 1.24 | 0, 1.86 |
+/// | issue grid (system II, t·q_r ≤ 0.5), 97 points converged before the shooting solver | 13, 0.24 | 5, 0.48 | 2, 0.72 |
+///
+/// S = 3 meets both criteria (≥ 95 % covered, never 2× below) on both sets, at a median
+/// over-estimate of ~5× on the issue grid and ~12× on the random set (BENCHMARKS.md, "The
+/// slow oracle and honest error bars"). Re-measure it with the ignored tests of
+/// `adhesion_oracle` and `adhesion_error_bars` whenever the propagator changes.
+pub const ADHESION_ERROR_SAFETY: f64 = 3.0;
