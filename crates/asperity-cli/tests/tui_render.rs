@@ -104,6 +104,9 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         gap_rel: vec![f64::NAN; 6],
         mean_contact_stress: vec![0.0; 6],
         converged: vec![false; 6],
+        a_r_unloading: vec![f64::NAN, 0.9, f64::INFINITY, -1.0, 0.7, f64::NAN],
+        jump_in: Some(f64::NAN),
+        pull_off: Some(0.0),
     }));
     if let Some(Ok(p)) = a.point.as_mut() {
         p.pr = vec![(0.0, 0.0), (f64::NAN, 1.0), (1.0, f64::INFINITY)];
@@ -335,4 +338,107 @@ fn defects_gap_axis_stale_values_long_messages_hints() {
     });
     let s = render(&a, 80, 24);
     assert!(s.contains("END"), "{s}");
+}
+
+/// Issue 13: a hysteresis on the a_r(p*) chart — the loading curve jumping into contact, the
+/// unloading curve (dotted, in the key) over the window, the jump-in and pull-off loads as
+/// vertical markers named with their p*, and the branches at the current load in the panel;
+/// the same in the SVG export. Synthetic sweep (the engine's is tested in the library).
+#[test]
+fn hysteresis_on_the_area_chart() {
+    use asperity_cli::tui::data::BranchRow;
+    let mut a = adhesionless("system-1");
+    a.set_charts([ChartKind::Area, ChartKind::AreaRatio, ChartKind::Gap]);
+    compute_now(&mut a, &mut Caches::default());
+    let (jump, pull) = (0.03, 0.005);
+    if let Some(Ok(sw)) = a.sweep.as_mut() {
+        let n = sw.p.len();
+        sw.a_r =
+            sw.p.iter()
+                .map(|&p| if p < jump { 0.8 * p } else { (0.5 + 0.3 * p).min(1.0) })
+                .collect();
+        sw.a_r_unloading =
+            sw.p.iter()
+                .map(|&p| {
+                    if (pull..jump).contains(&p) {
+                        0.45 + 0.3 * p
+                    } else {
+                        f64::NAN
+                    }
+                })
+                .collect();
+        sw.jump_in = Some(jump);
+        sw.pull_off = Some(pull);
+        assert_eq!(sw.a_r_unloading.len(), n);
+    }
+    if let Some(Ok(p)) = a.point.as_mut() {
+        p.branches = vec![
+            BranchRow {
+                name: "loading".into(),
+                a_r: 0.008,
+                stable: true,
+                shown: true,
+            },
+            BranchRow {
+                name: "unstable".into(),
+                a_r: 0.21,
+                stable: false,
+                shown: false,
+            },
+            BranchRow {
+                name: "unloading".into(),
+                a_r: 0.453,
+                stable: true,
+                shown: false,
+            },
+        ];
+    }
+    let m = asperity_cli::tui::charts::build(&a, ChartKind::Area);
+    use asperity_cli::tui::charts::Role;
+    let un = m
+        .series
+        .iter()
+        .find(|s| s.role == Role::Unloading)
+        .expect("unloading curve");
+    assert!(un.points.iter().filter(|q| q.1.is_finite()).count() > 5);
+    assert!(m.vlines.iter().any(|v| v.role == Role::JumpIn && v.x == jump));
+    assert!(m.vlines.iter().any(|v| v.role == Role::PullOff && v.x == pull));
+    let s = render(&a, 160, 48);
+    for needle in [
+        "• unloading",
+        "jump-in 0.030",
+        "pull-off 0.0050",
+        "loading   0.008000 ◀",
+        "unstable  0.2100",
+        "unloading 0.4530",
+    ] {
+        assert!(s.contains(needle), "{needle}: {s}");
+    }
+    insta::assert_snapshot!("hysteresis_160x48", s);
+    insta::assert_snapshot!("hysteresis_80x24", render(&a, 80, 24));
+    for (w, h) in [(60, 20), (61, 21), (20, 5), (1, 1)] {
+        draw_only(&a, w, h);
+    }
+    // the export draws the same: the unloading curve and both markers as dashed series
+    let spec = asperity_cli::tui::export::chart_spec(&m, "test");
+    for name in ["unloading", "jump-in 0.030", "pull-off 0.0050"] {
+        let s = spec
+            .series
+            .iter()
+            .find(|s| s.name == name)
+            .unwrap_or_else(|| panic!("{name}"));
+        assert_eq!(s.style, asperity_cli::chart::SeriesStyle::Dashed, "{name}");
+        assert!(
+            s.points.iter().filter(|q| q.0.is_finite() && q.1 > 0.0).count() >= 2,
+            "{name}"
+        );
+    }
+    let dir = std::env::temp_dir().join(format!("asperity-hysteresis-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    a.export_dir = dir.clone();
+    let paths = asperity_cli::tui::export::export_charts(&a).unwrap();
+    let svg = paths.iter().find(|p| p.ends_with("-area.svg")).expect("area svg");
+    let text = std::fs::read_to_string(svg).unwrap();
+    assert!(text.contains("unloading") && text.contains("jump-in") && text.contains("pull-off"));
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -9,8 +9,8 @@
 //! |--------------|---------------------------------------------------------------|------------|
 //! | `pr`         | Pr(σ*) at the current p*, linear axes, −σ_a* wall             | Figs. 2, 4 |
 //! | `pr-loglog`  | Pr(σ*) on log–log axes with the small- and large-stress asymptotes | Fig. 3 |
-//! | `area`       | a_r(p*) on log–log axes with eq. (18)                          | [S-18]     |
-//! | `area-ratio` | a_r/p* against p* with eq. (18)                                | Fig. 1     |
+//! | `area`       | a_r(p*) on log–log axes with eq. (18); with hysteresis the unloading branch and the jump-in / pull-off loads | [S-18] |
+//! | `area-ratio` | a_r/p* against p* with eq. (18) (and the unloading branch)     | Fig. 1     |
 //! | `thickness`  | a_r(t·q_r) at the current p*, with the adhesionless reference | Fig. 7     |
 //! | `stress`     | σ̄_c*(p*)                                                      | Fig. 5     |
 //! | `gap`        | ū/h_rms(p*)                                                   | Fig. 6     |
@@ -147,6 +147,12 @@ pub enum Role {
     Guide,
     /// The −σ_a* wall.
     Wall,
+    /// The unloading branch of a hysteresis (a_r charts).
+    Unloading,
+    /// The jump-in load: above it the loading branch no longer exists.
+    JumpIn,
+    /// The pull-off load: below it the unloading branch no longer exists.
+    PullOff,
 }
 
 /// How a series is drawn: the file renderer's style, so the screen and the `s` export agree
@@ -171,7 +177,7 @@ pub struct Series {
 pub struct VLine {
     /// x (data units).
     pub x: f64,
-    /// What it is ([`Role::Guide`] or [`Role::Wall`]).
+    /// What it is ([`Role::Guide`], [`Role::Wall`], [`Role::JumpIn`], [`Role::PullOff`]).
     pub role: Role,
     /// Legend name (empty: no legend entry).
     pub name: String,
@@ -597,6 +603,9 @@ fn area(app: &App, ratio: bool) -> ChartModel {
             draw: Draw::Line,
         });
     }
+    if !app.all_models {
+        hysteresis(&mut m, sw, &y_of);
+    }
     m.series.push(Series {
         name: theory_name(app),
         points: curve(sw),
@@ -636,6 +645,47 @@ fn area(app: &App, ratio: bool) -> ChartModel {
         plot::guard(yb[0], yb[1].min(0.0))
     };
     m
+}
+
+/// The unloading branch of a hysteresis (a dashed curve over the loads where it is distinct
+/// from the loading one, joined to the curve it merges into at the window's top) and the
+/// jump-in and pull-off loads as vertical markers named with their p*.
+fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64) {
+    let n = sw.p.len().min(sw.a_r_unloading.len());
+    let mut points: Vec<(f64, f64)> = Vec::new();
+    for k in 0..n {
+        let u = sw.a_r_unloading[k];
+        if u.is_finite() {
+            points.push((sw.p[k], y_of(sw.p[k], u)));
+        } else if k > 0 && sw.a_r_unloading[k - 1].is_finite() {
+            // the window's top: the unloading branch goes on as the only one
+            points.push((sw.p[k], y_of(sw.p[k], sw.a_r[k])));
+            points.push((f64::NAN, f64::NAN));
+        } else if points.last().is_some_and(|q| q.0.is_finite()) {
+            points.push((f64::NAN, f64::NAN));
+        }
+    }
+    if points.iter().any(|q| q.0.is_finite() && q.1.is_finite()) {
+        m.series.push(Series {
+            name: "unloading".into(),
+            points,
+            role: Role::Unloading,
+            draw: Draw::Dashed,
+        });
+    }
+    // named with their p* (the x axis says p*)
+    for (x, role, what) in [
+        (sw.jump_in, Role::JumpIn, "jump-in"),
+        (sw.pull_off, Role::PullOff, "pull-off"),
+    ] {
+        if let Some(x) = x.filter(|x| x.is_finite() && *x > 0.0) {
+            m.vlines.push(VLine {
+                x,
+                role,
+                name: format!("{what} {}", super::view::sig(x, 2)),
+            });
+        }
+    }
 }
 
 fn loads(app: &App, kind: ChartKind) -> ChartModel {

@@ -3,7 +3,16 @@
 //! adhesive solver's σ_a*, branch, iterations, residual, detached fraction), wire them in
 //! [`wall_marker`], [`branch_label`] and [`PointData::from_evaluation`]; nothing else in
 //! `tui` needs to change.
+//!
+//! Branches (hysteresis): at a load inside a hysteresis window the adhesive theory has several
+//! self-consistent solutions ([`Evaluation::branches`], lowest a_r first): the loading branch
+//! (what a loading history reaches), the unloading branch (what an unloading history keeps)
+//! and unstable ones between them. The point panel lists them ([`BranchRow`]); the a_r(p*)
+//! chart draws the unloading curve beside the loading one and marks the jump-in load (above
+//! which the loading branch no longer exists) and the pull-off load (below which the
+//! unloading branch no longer exists), see [`SweepData::with_branches`].
 
+use asperity::theory::adhesion::{Branch, BranchState};
 use asperity::theory::engine::Evaluation;
 use asperity::theory::sweep::Sweep;
 
@@ -20,10 +29,53 @@ pub fn branch_label(ev: &Evaluation) -> String {
         return "converged".into();
     }
     let mut s = format!("{} ({} it)", ev.branch, ev.iterations);
-    if ev.unloading_a_r.is_some() {
-        s.push_str(", 2 branches");
+    if ev.branches.len() > 1 {
+        s.push_str(&format!(", {} branches", ev.branches.len()));
     }
     s
+}
+
+/// One branch of the adhesive solution at the current load, as the point panel lists it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BranchRow {
+    /// "loading", "unloading" or "unstable".
+    pub name: String,
+    /// a_r(q_s) of the branch.
+    pub a_r: f64,
+    /// Whether it is stable (H rises through its root).
+    pub stable: bool,
+    /// Whether it is the branch the rest of the panel and the Pr chart show.
+    pub shown: bool,
+}
+
+/// The branches of an evaluation (empty without adhesion, or with a single branch: nothing to
+/// choose between).
+pub fn branch_rows(ev: &Evaluation) -> Vec<BranchRow> {
+    if ev.branches.len() < 2 {
+        return Vec::new();
+    }
+    // the shown branch: the evaluation's own (its a_r is the closest)
+    let shown = ev
+        .branches
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| b.branch == ev.branch)
+        .min_by(|x, y| {
+            let dx = (x.1.a_r - ev.stats.a_r).abs();
+            let dy = (y.1.a_r - ev.stats.a_r).abs();
+            dx.total_cmp(&dy)
+        })
+        .map(|(i, _)| i);
+    ev.branches
+        .iter()
+        .enumerate()
+        .map(|(i, b)| BranchRow {
+            name: b.branch.as_str().into(),
+            a_r: b.a_r,
+            stable: b.stable,
+            shown: Some(i) == shown,
+        })
+        .collect()
 }
 
 /// Extra read-outs (label, value) shown under "state" in the panel, in this order.
@@ -36,8 +88,10 @@ pub fn extra_readouts(ev: &Evaluation) -> Vec<(String, String)> {
         ("tensile".into(), super::view::sig(ev.tensile_area, 3)),
         ("residual".into(), format!("{:.1e}", ev.residual)),
     ];
-    if let Some(u) = ev.unloading_a_r {
-        v.push(("unload a_r".into(), format!("{u:.5}")));
+    if ev.branches.len() < 2 {
+        if let Some(u) = ev.unloading_a_r {
+            v.push(("unload a_r".into(), format!("{u:.5}")));
+        }
     }
     v
 }
@@ -74,6 +128,10 @@ pub struct PointData {
     /// Why this value carries no error bar, when the engine's full check failed but the fixed
     /// point itself converged (shown in the status line, not as an error).
     pub warning: Option<String>,
+    /// Every branch at this load (empty with fewer than two), see [`branch_rows`].
+    pub branches: Vec<BranchRow>,
+    /// A quick first answer at chart accuracy (no error bar); the full-accuracy point follows.
+    pub preview: bool,
 }
 
 impl PointData {
@@ -93,6 +151,8 @@ impl PointData {
             pressure: f64::NAN,
             pr_log: Vec::new(),
             warning: None,
+            branches: branch_rows(ev),
+            preview: false,
         }
     }
 
@@ -157,10 +217,20 @@ pub struct SweepData {
     pub mean_contact_stress: Vec<f64>,
     /// Whether each load converged.
     pub converged: Vec<bool>,
+    /// a_r of the unloading branch (NaN where there is no distinct one; empty: no hysteresis).
+    pub a_r_unloading: Vec<f64>,
+    /// p* above which the loading branch no longer exists (the jump into contact), when it
+    /// lies in the swept range.
+    pub jump_in: Option<f64>,
+    /// p* below which the unloading branch no longer exists (pull-off), when it lies in the
+    /// swept range.
+    pub pull_off: Option<f64>,
 }
 
 impl SweepData {
-    /// Copies the rows of a sweep.
+    /// Copies the rows of a sweep: the loading branch with ū and σ̄_c*, the unloading branch
+    /// where a hysteresis window makes it distinct, and the window's edges (the library refines
+    /// them by bisection, [`asperity::theory::hysteresis`]).
     pub fn from_sweep(s: &Sweep) -> SweepData {
         SweepData {
             p: s.rows.iter().map(|r| r.p).collect(),
@@ -168,8 +238,68 @@ impl SweepData {
             gap_rel: s.rows.iter().map(|r| r.mean_gap_rel).collect(),
             mean_contact_stress: s.rows.iter().map(|r| r.mean_contact_stress).collect(),
             converged: s.rows.iter().map(|r| r.converged).collect(),
+            // empty without a hysteresis (nothing to draw)
+            a_r_unloading: if s.rows.iter().any(|r| r.a_r_unloading.is_finite()) {
+                s.rows.iter().map(|r| r.a_r_unloading).collect()
+            } else {
+                Vec::new()
+            },
+            jump_in: s.jump_in_pressure,
+            pull_off: s.pull_off_pressure,
         }
     }
+
+    /// Adds the unloading curve and the jump from the branches found at each load
+    /// (`branches[k]` at `p[k]`; an empty list where the load failed), see
+    /// [`unloading_curve`] (for loads evaluated one by one; a sweep carries its own).
+    pub fn with_branches(mut self, branches: &[Vec<BranchState>]) -> SweepData {
+        let (u, jump, pull) = unloading_curve(&self.p, branches);
+        self.a_r_unloading = u;
+        self.jump_in = jump;
+        self.pull_off = pull;
+        self
+    }
+
+    /// Whether there is anything of a second branch to draw.
+    pub fn has_hysteresis(&self) -> bool {
+        self.a_r_unloading.iter().any(|a| a.is_finite()) || self.jump_in.is_some() || self.pull_off.is_some()
+    }
+}
+
+/// From the branches at each load `p[k]` (ascending): a_r of the unloading branch (NaN where
+/// there is none distinct from the loading one), the jump-in load and the pull-off load.
+///
+/// The hysteresis window is the run of loads with a distinct unloading branch. The jump-in
+/// load is the window's top: the last load where the loading branch still exists (its
+/// midpoint with the next load in ln p*, where the next load converged without hysteresis).
+/// The pull-off load is the window's bottom likewise. An edge at the end of the swept range
+/// (the window continues beyond it) is not a jump: `None`. With several windows the first
+/// jump-in and the last pull-off are reported.
+pub fn unloading_curve(p: &[f64], branches: &[Vec<BranchState>]) -> (Vec<f64>, Option<f64>, Option<f64>) {
+    let n = p.len().min(branches.len());
+    let unloading: Vec<f64> = (0..n)
+        .map(|k| {
+            branches[k]
+                .iter()
+                .find(|b| b.branch == Branch::Unloading && b.a_r.is_finite())
+                .map_or(f64::NAN, |b| b.a_r)
+        })
+        .collect();
+    // a load with numbers but without a distinct unloading branch (a single branch)
+    let single = |k: usize| !branches[k].is_empty() && unloading[k].is_nan();
+    let mid = |a: f64, b: f64| (a.ln() + 0.5 * (b.ln() - a.ln())).exp();
+    let mut jump = None;
+    let mut pull = None;
+    for k in 0..n.saturating_sub(1) {
+        let (here, next) = (unloading[k].is_finite(), unloading[k + 1].is_finite());
+        if jump.is_none() && here && single(k + 1) {
+            jump = Some(mid(p[k], p[k + 1]));
+        }
+        if next && single(k) {
+            pull = Some(mid(p[k], p[k + 1]));
+        }
+    }
+    (unloading, jump, pull)
 }
 
 /// ū/h_rms at the current p* from a one-point sweep, or why it is unavailable (a load on
@@ -279,6 +409,70 @@ pub const ADHESION_BY_DEFAULT: bool = true;
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn state(branch: Branch, a_r: f64) -> BranchState {
+        BranchState {
+            branch,
+            stable: branch != Branch::Unstable,
+            a_r,
+            sigma_a: 0.3,
+            gamma_coarse: 0.5,
+            elastic_energy: 1e-4,
+        }
+    }
+
+    fn window(lo: f64, hi: f64) -> Vec<BranchState> {
+        vec![
+            state(Branch::Loading, lo),
+            state(Branch::Unstable, 0.5 * (lo + hi)),
+            state(Branch::Unloading, hi),
+        ]
+    }
+
+    #[test]
+    fn unloading_curve_and_the_window_edges() {
+        let p = [1e-4, 2e-4, 4e-4, 8e-4, 1.6e-3, 3.2e-3];
+        let one = |a| vec![state(Branch::Loading, a)];
+        let b = vec![
+            one(0.01),
+            window(0.02, 0.40),
+            window(0.03, 0.41),
+            one(0.45),
+            one(0.47),
+            one(0.5),
+        ];
+        let (u, jump, pull) = unloading_curve(&p, &b);
+        assert!(u[0].is_nan() && u[3].is_nan() && u[5].is_nan(), "{u:?}");
+        assert_eq!((u[1], u[2]), (0.40, 0.41));
+        // edges at the geometric midpoints of the loads on either side
+        let jump = jump.unwrap();
+        let pull = pull.unwrap();
+        assert!((jump / (4e-4f64 * 8e-4).sqrt() - 1.0).abs() < 1e-12, "{jump}");
+        assert!((pull / (1e-4f64 * 2e-4).sqrt() - 1.0).abs() < 1e-12, "{pull}");
+        // a window running past the range has no edge there; a failed load is no edge
+        let b2 = vec![
+            window(0.02, 0.4),
+            window(0.03, 0.41),
+            vec![],
+            one(0.45),
+            one(0.5),
+            one(0.5),
+        ];
+        let (u2, jump2, pull2) = unloading_curve(&p, &b2);
+        assert_eq!((jump2, pull2), (None, None));
+        assert_eq!(u2.iter().filter(|a| a.is_finite()).count(), 2);
+        // no hysteresis, no load: nothing
+        let (u3, j3, p3) = unloading_curve(&p, &vec![one(0.1); 6]);
+        assert!(u3.iter().all(|a| a.is_nan()) && j3.is_none() && p3.is_none());
+        assert_eq!(unloading_curve(&[], &[]), (vec![], None, None));
+        let sd = SweepData {
+            p: p.to_vec(),
+            a_r: vec![0.01; 6],
+            ..SweepData::default()
+        }
+        .with_branches(&b);
+        assert!(sd.has_hysteresis() && sd.jump_in == Some(jump));
+    }
 
     #[test]
     fn point_data_copies_the_evaluation() {

@@ -168,6 +168,25 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
                 style: SeriesStyle::Dashed,
             });
         }
+        // the jump of a hysteresis: a dashed vertical line over the data's y range (> 0 on a
+        // log axis)
+        if matches!(v.role, Role::JumpIn | Role::PullOff) && y0.is_finite() {
+            let lo = if m.ys == Scale::Log10 {
+                m.series
+                    .iter()
+                    .flat_map(|s| s.points.iter())
+                    .map(|q| q.1)
+                    .filter(|y| y.is_finite() && *y > 0.0)
+                    .fold(f64::INFINITY, f64::min)
+            } else {
+                y0.min(0.0)
+            };
+            series.push(Series {
+                name: v.name.clone(),
+                points: vec![(v.x, lo), (v.x, y1)],
+                style: SeriesStyle::Dashed,
+            });
+        }
     }
     for s in &m.series {
         let points = if m.clip_y {

@@ -323,6 +323,7 @@ fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     row_styled("γ̃_glo", sig(app.scene.gamma_glo(), 3), false);
     let state = match &app.point {
         _ if stale_point || (app.busy && app.point.is_none()) => "computing…".to_string(),
+        Some(Ok(p)) if p.preview => format!("{} · refining…", p.branch),
         Some(Ok(p)) => p.branch.clone(),
         Some(Err(_)) => "failed (see below)".into(),
         None => dash(),
@@ -331,6 +332,18 @@ fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     if let Some(p) = pt {
         for (k, v) in &p.extra {
             row_styled(k, v.clone(), stale_point);
+        }
+        // hysteresis: every branch at this load, ◀ the one shown
+        for b in &p.branches {
+            let mark = if b.shown { " ◀" } else { "" };
+            let stab = if b.stable || b.name == "unstable" {
+                ""
+            } else {
+                " (unstable)"
+            };
+            let text = format!(" {}{}{stab}{mark}", pad(&b.name, 10), sig(b.a_r, 4));
+            let style = if stale_point { pal.dim() } else { Style::default() };
+            lines.push(Line::from(Span::styled(text, style)));
         }
     }
     let mut row = |k: &str, v: String| lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
@@ -510,6 +523,9 @@ fn look(pal: Palette, role: Role, draw: Draw) -> (Style, Marker, GraphType) {
         Role::Current => (pal.current(), Marker::Block, GraphType::Scatter),
         Role::Guide => (pal.guide(), Marker::Braille, GraphType::Line),
         Role::Wall => (pal.wall(), Marker::Bar, GraphType::Line),
+        Role::Unloading => (pal.wall(), Marker::Dot, GraphType::Line),
+        Role::JumpIn => (pal.current(), Marker::Bar, GraphType::Line),
+        Role::PullOff => (pal.wall(), Marker::Bar, GraphType::Line),
     }
 }
 
@@ -571,12 +587,19 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
     let max_points = 4 * area.width as usize;
     let mut drawn: Vec<Drawn> = Vec::new();
     let mut key: Vec<Span<'static>> = Vec::new();
+    // the jump markers of a hysteresis are named after the curves (a narrow panel cuts the key)
+    let mut key_last: Vec<Span<'static>> = Vec::new();
     for v in &m.vlines {
         let (style, marker, graph) = look(pal, v.role, Draw::Line);
         if let Some(x) = m.xs.forward(v.x) {
             drawn.push((plot::vertical(x, yb), style, marker, graph));
             if !v.name.is_empty() {
-                key.extend(legend(marker_symbol(marker), &v.name, style));
+                let entry = legend(marker_symbol(marker), &v.name, style);
+                if matches!(v.role, Role::JumpIn | Role::PullOff) {
+                    key_last.extend(entry);
+                } else {
+                    key.extend(entry);
+                }
             }
         }
     }
@@ -591,6 +614,7 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
         }
         key.extend(legend(marker_symbol(marker), &s.name, style));
     }
+    key.extend(key_last);
     if !key.is_empty() {
         block = block.title_bottom(Line::from(key));
     }

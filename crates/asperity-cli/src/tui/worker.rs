@@ -220,6 +220,7 @@ impl<V: Clone> Lru<V> {
 #[derive(Debug)]
 pub struct Caches {
     points: Lru<Result<PointData>>,
+    previews: Lru<Result<PointData>>,
     sweeps: Lru<Result<SweepData>>,
     gaps: Lru<Result<f64>>,
     thick: Lru<Result<ThicknessData>>,
@@ -229,6 +230,7 @@ impl Default for Caches {
     fn default() -> Self {
         Caches {
             points: Lru::new(64),
+            previews: Lru::new(64),
             sweeps: Lru::new(12),
             gaps: Lru::new(64),
             thick: Lru::new(24),
@@ -240,6 +242,38 @@ fn point_options() -> Options {
     Options {
         sigma_points: SIGMA_POINTS,
         ..Options::default()
+    }
+}
+
+/// The quick first answer of an adhesive point ([`PointData::preview`]): chart accuracy
+/// ([`Options::chart`]: half the resolution in both directions, no error estimate) with the
+/// search for every branch, so the panel lists the branches at once.
+fn preview_options() -> Options {
+    let mut o = Options::chart();
+    o.sigma_points = SIGMA_POINTS;
+    o.adhesion.explore_branches = true;
+    o
+}
+
+/// The adhesive point at chart accuracy (see [`preview_options`]), with the adhesionless
+/// comparison when `compare`.
+fn evaluate_preview(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<PointData> {
+    let ev = engine::evaluate_warm(scene, &preview_options(), None, Some(cancel))?;
+    let mut pd = PointData::at(&ev, scene.pressure);
+    pd.error_estimate = f64::NAN;
+    pd.preview = true;
+    if compare {
+        add_comparison(&mut pd, scene);
+    }
+    Ok(pd)
+}
+
+fn add_comparison(pd: &mut PointData, scene: &Scene) {
+    let mut s0 = scene.clone();
+    s0.gamma = 0.0;
+    // the comparison curve is optional: an error only hides it
+    if let Ok(ev0) = engine::evaluate(&s0, &point_options()) {
+        pd.adhesionless = Some(data::pr_points(&ev0));
     }
 }
 
@@ -268,12 +302,7 @@ fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<P
         Err(e) => return Err(e),
     };
     if compare && scene.gamma > 0.0 {
-        let mut s0 = scene.clone();
-        s0.gamma = 0.0;
-        // the comparison curve is optional: an error only hides it
-        if let Ok(ev0) = engine::evaluate(&s0, &point_options()) {
-            pd.adhesionless = Some(data::pr_points(&ev0));
-        }
+        add_comparison(&mut pd, scene);
     }
     Ok(pd)
 }
@@ -283,6 +312,11 @@ fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<P
 /// from the cache when there, then `Done`. Returns early, sending nothing more, as soon as
 /// `stale()` is true or a computation reports [`Error::Cancelled`]. A failed point does not
 /// stop the load charts: they do not depend on it.
+///
+/// Responsiveness (a key that moves p* or t·q_r through a jump into contact): an adhesive point
+/// not in the cache is sent twice, first at chart accuracy ([`PointData::preview`], a few tens
+/// of ms), then — after the charts' sweeps, which a newer key cancels — at full accuracy with
+/// its error bar.
 pub fn process(
     req: &Request,
     caches: &mut Caches,
@@ -291,8 +325,16 @@ pub fn process(
     send: &dyn Fn(Reply),
 ) {
     let gen = req.gen;
-    let Some(_) = serve_point(req, &req.scene, true, caches, cancel, send) else {
-        return;
+    let refine = if req.scene.gamma > 0.0 && caches.points.get(&point_key(&req.source, &req.scene)).is_none() {
+        if serve_preview(req, caches, cancel, send).is_none() {
+            return;
+        }
+        true
+    } else {
+        let Some(_) = serve_point(req, &req.scene, true, caches, cancel, send) else {
+            return;
+        };
+        false
     };
     if stale() {
         return;
@@ -346,6 +388,14 @@ pub fn process(
             return;
         }
     }
+    if refine {
+        if stale() {
+            return;
+        }
+        if serve_point(req, &req.scene, true, caches, cancel, send).is_none() {
+            return;
+        }
+    }
     for m in &req.models {
         let scene = req.with_model(m);
         for part in 0..3 {
@@ -364,6 +414,28 @@ pub fn process(
         }
     }
     send(Reply::Done { gen });
+}
+
+/// The chart-accuracy point of the request's scene (cached); `None` when cancelled.
+fn serve_preview(req: &Request, caches: &mut Caches, cancel: &AtomicBool, send: &dyn Fn(Reply)) -> Option<()> {
+    let key = point_key(&req.source, &req.scene);
+    let point = match caches.previews.get(&key) {
+        Some(p) => p,
+        None => {
+            let p = evaluate_preview(&req.scene, cancel, true);
+            if matches!(p, Err(Error::Cancelled)) {
+                return None;
+            }
+            caches.previews.put(key.clone(), p.clone());
+            p
+        }
+    };
+    send(Reply::Point {
+        gen: req.gen,
+        key,
+        result: point,
+    });
+    Some(())
 }
 
 /// The point of `scene` (cached); `None` when cancelled.
@@ -412,10 +484,9 @@ fn serve_sweep(
                 to: req.range.1,
                 points: SWEEP_POINTS,
             };
-            match sweep::sweep(scene, &spec, &Options::chart(), Some(cancel)) {
+            match load_sweep(scene, &spec, cancel) {
                 Err(Error::Cancelled) => return None,
                 r => {
-                    let r = r.map(|s| SweepData::from_sweep(&s));
                     caches.sweeps.put(key.clone(), r.clone());
                     r
                 }
@@ -428,6 +499,17 @@ fn serve_sweep(
         result: sw.clone(),
     });
     Some(sw)
+}
+
+/// The load curves of the charts at chart accuracy: the loading branch with ū and σ̄_c*, and
+/// with adhesion the unloading branch and the jump-in and pull-off loads ([`sweep::sweep`]).
+pub fn load_sweep(scene: &Scene, spec: &SweepSpec, cancel: &AtomicBool) -> Result<SweepData> {
+    Ok(SweepData::from_sweep(&sweep::sweep(
+        scene,
+        spec,
+        &Options::chart(),
+        Some(cancel),
+    )?))
 }
 
 /// The thickness sweep of `scene` (cached); `None` when cancelled.
@@ -660,6 +742,7 @@ mod tests {
             mean_contact_stress: vec![0.0; 20],
             converged: vec![true; 20],
             p: p.clone(),
+            ..SweepData::default()
         };
         for x in [1.1e-3, 5e-3, 0.02, p[19]] {
             let got = interpolate_gap(&sd, x).unwrap();
@@ -834,6 +917,74 @@ mod tests {
         let r = serve(&req, &mut c, false, false);
         // until the adhesive solver lands the engine refuses; either way the UI gets a reply
         assert_eq!(r.last(), Some(&Reply::Done { gen: 1 }));
+    }
+
+    #[test]
+    fn an_adhesive_point_comes_first_at_chart_accuracy_then_refined() {
+        let mut c = Caches::default();
+        let mut req = request(1, 0.01);
+        req.scene.gamma = 0.05;
+        let r = serve(&req, &mut c, false, false);
+        assert_eq!(kinds(&r), ["point", "sweep", "gap", "point", "done"]);
+        let (Reply::Point { result: Ok(first), .. }, Reply::Point { result: Ok(last), .. }) = (&r[0], &r[3]) else {
+            panic!("{r:?}");
+        };
+        assert!(first.preview && first.error_estimate.is_nan());
+        assert!(!last.preview && last.error_estimate.is_finite());
+        // chart accuracy: a_r to ~2e-3 relative (engine::Options::chart)
+        assert!(
+            (first.a_r / last.a_r - 1.0).abs() < 1e-2,
+            "{} vs {}",
+            first.a_r,
+            last.a_r
+        );
+        assert!(first.adhesionless.is_some() && first.wall.is_some());
+        // the refined point is cached: the next time it comes at once, alone
+        let again = serve(&req, &mut c, false, false);
+        assert_eq!(kinds(&again), ["point", "sweep", "gap", "done"]);
+        assert_eq!(again[0], r[3]);
+        // stale after the preview: only the preview is sent, nothing refined is cached
+        let mut c2 = Caches::default();
+        assert_eq!(kinds(&serve(&req, &mut c2, false, true)), ["point"]);
+        assert!(c2.points.is_empty() && c2.previews.len() == 1);
+    }
+
+    #[test]
+    fn the_load_curves_carry_both_branches_and_the_jump() {
+        // system 2, model 3, t·q_r = 0.1, γ_s = 0.8 × the preset's: a hysteresis window from
+        // below p* = 1e-6 to the jump-in load near 2.4e-4 (loading a_r ≈ 0.03 at 1e-4,
+        // unloading ≈ 0.43)
+        let mut scene = asperity::input::preset::Preset::resolve("system-2")
+            .unwrap()
+            .scene()
+            .unwrap();
+        scene.model = Model::named(3).unwrap();
+        scene.thickness_qr = 0.1;
+        scene.gamma = 0.8 * 0.157;
+        let spec = SweepSpec {
+            from: 1e-4,
+            to: 1e-3,
+            points: 9,
+        };
+        let sd = load_sweep(&scene, &spec, &AtomicBool::new(false)).unwrap();
+        assert_eq!(sd.a_r_unloading.len(), sd.p.len());
+        assert!(sd.a_r_unloading[0] > 0.3 && sd.a_r_unloading[0] < 0.6, "{sd:?}");
+        assert!(sd.a_r[0] < 0.1, "{sd:?}");
+        assert!(sd.a_r_unloading.last().is_some_and(|a| a.is_nan()), "{sd:?}");
+        assert_eq!(sd.pull_off, None, "the window runs below the range");
+        let jump = sd.jump_in.expect("the jump-in load lies in the range");
+        // independently: full-accuracy points a little below and above it (every branch
+        // searched): two stable branches below, one above
+        let stable = |p: f64| {
+            let mut s = scene.clone();
+            s.pressure = p;
+            let ev = engine::evaluate(&s, &Options::default()).unwrap();
+            ev.branches.iter().filter(|b| b.stable).count()
+        };
+        assert_eq!(stable(jump / 1.1), 2, "below {jump}");
+        assert_eq!(stable(jump * 1.1), 1, "above {jump}");
+        let cancelled = load_sweep(&scene, &spec, &AtomicBool::new(true));
+        assert!(matches!(cancelled, Err(Error::Cancelled)));
     }
 
     #[test]
