@@ -81,18 +81,7 @@ fn write(path: &Path, text: &str) -> Result<()> {
 
 /// Writes the files; returns their paths.
 pub fn export(app: &App) -> Result<Vec<String>> {
-    let name: String = app
-        .preset
-        .name
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
-                c
-            } else {
-                '_'
-            }
-        })
-        .collect();
+    let name = safe_name(app);
     let dir = &app.export_dir;
     let n = (1..10_000)
         .find(|n| !dir.join(format!("asperity-{name}-{n}.toml")).exists())
