@@ -177,7 +177,8 @@ fn default_scenes() -> [Scene; 10] {
 }
 
 /// The fast solver at its default accuracy against the oracle: within its own error estimate
-/// plus the oracle's bar (the honest error bar of item 6), and within `ADHESION_ORACLE_REL`·a_r
+/// plus the oracle's bar on ≥ 95 % of the scenes and never more than 2× below it (the honest
+/// error bar of item 6), and within `ADHESION_ORACLE_REL`·a_r
 /// plus the oracle's bar; with `fine_too`, a 4× finer fast run within
 /// `ADHESION_ORACLE_FINE_REL`·a_r plus the oracle's bar. Every scene is reported before the
 /// failures are.
@@ -185,6 +186,9 @@ fn agree(scenes: &[Scene], res: &Resolution, fine_too: bool) {
     let mut worst: f64 = 0.0;
     let mut worst_fine: f64 = 0.0;
     let mut failures = Vec::new();
+    // estimates below the error (plus the oracle's bar): item 6's criterion, ≥ 95 % covered
+    // and none more than 2× below
+    let mut misses: Vec<(f64, String)> = Vec::new();
     for s in scenes {
         let t0 = std::time::Instant::now();
         let o = loading(&Physics::from_scene(s), res, 6);
@@ -216,7 +220,10 @@ fn agree(scenes: &[Scene], res: &Resolution, fine_too: bool) {
             failures.push(format!("{label}: {} vs {} ± {}", ev.stats.a_r, o.a_r, o.error));
         }
         if err > ev.error_estimate + o.error {
-            failures.push(format!("{label}: error {err:.2e} > estimate {:.2e}", ev.error_estimate));
+            misses.push((
+                (ev.error_estimate + o.error) / err,
+                format!("{label}: error {err:.2e} > estimate {:.2e}", ev.error_estimate),
+            ));
         }
         if fine_too {
             let fine = AdhesionAccuracy {
@@ -235,6 +242,16 @@ fn agree(scenes: &[Scene], res: &Resolution, fine_too: bool) {
         }
     }
     eprintln!("worst relative error {worst:.1e} (default), {worst_fine:.1e} (4x finer)");
+    eprintln!(
+        "estimate below the error on {} of {} scenes: {misses:?}",
+        misses.len(),
+        scenes.len()
+    );
+    if misses.len() as f64 > (1.0 - ERROR_BAR_COVERAGE) * scenes.len() as f64
+        || misses.iter().any(|(r, _)| *r < ERROR_BAR_WORST_RATIO)
+    {
+        failures.extend(misses.into_iter().map(|(r, m)| format!("{m} (ratio {r:.2})")));
+    }
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
