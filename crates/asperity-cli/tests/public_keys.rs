@@ -108,7 +108,16 @@ fn run_keys() {
         if gamma != "0" {
             assert_has(
                 &v["branches"][0],
-                &["a_r", "branch", "elastic_energy", "gamma_coarse", "sigma_a", "stable"],
+                &[
+                    "a_r",
+                    "branch",
+                    "elastic_energy",
+                    "gamma_coarse",
+                    "mean_gap_rel",
+                    "mean_gap_reversible_rel",
+                    "sigma_a",
+                    "stable",
+                ],
                 "run branches",
             );
         }
@@ -132,6 +141,7 @@ fn sweep_keys_and_columns() {
             // issue 13: the hysteresis window's edges
             "jump_in_pressure",
             "pull_off_pressure",
+            "window_edges",
         ],
         "sweep",
     );

@@ -476,3 +476,68 @@ fn ladder() {
         }
     }
 }
+
+#[test]
+fn a_thickness_sweep_finds_the_window_edges_in_t() {
+    // system II, model 3 at 0.8 γ_s and p* = 1e-5: at t·q_r = 0.1 three branches coexist
+    // (`hysteresis_window_has_three_branches_and_brackets_the_load`). Thinning the slab from
+    // 0.16, the small-contact branch ends at a fold (the contact jumps in); thickening it from
+    // 0.06, the large-contact branch ends at another (the window is narrow: 7 values from 0.04
+    // to 0.4 put none inside it, and the sweep then shows the jump between two rows only). Independent check of each edge: the
+    // number of stable branches, solved directly 2 % on either side, and which branch is left.
+    use asperity::theory::hysteresis::{self, EdgeKind};
+    use asperity::theory::knob::{self, Knob, KnobSpec};
+    let mut s = system(2, 3);
+    s.gamma *= 0.8;
+    s.pressure = 1e-5;
+    let spec = KnobSpec {
+        knob: Knob::Thickness,
+        from: 0.06,
+        to: 0.16,
+        points: 11,
+    };
+    let opts = Options {
+        adhesion_error_estimate: false,
+        ..Options::default()
+    };
+    let pts = knob::knob_sweep(&s, &spec, &opts, false, None).unwrap();
+    let edges = hysteresis::knob_edges(&s, Knob::Thickness, &pts, &opts.adhesion, None).unwrap();
+    for p in &pts {
+        let e = p.result.as_ref().unwrap();
+        eprintln!(
+            "t {:.4}: {:?}",
+            p.value,
+            e.branches.iter().map(|b| (b.a_r, b.stable)).collect::<Vec<_>>()
+        );
+    }
+    eprintln!("{edges:?}");
+    assert!(
+        edges.iter().any(|e| e.kind == EdgeKind::JumpIn) && edges.iter().any(|e| e.kind == EdgeKind::PullOff),
+        "{edges:?}"
+    );
+    let acc = AdhesionAccuracy::default();
+    let stable_at = |t: f64| {
+        let mut x = s.clone();
+        x.thickness_qr = t;
+        adhesion::solve(&x, &acc, None, None)
+            .unwrap()
+            .branches
+            .into_iter()
+            .filter(|b| b.stable)
+            .map(|b| b.a_r)
+            .collect::<Vec<f64>>()
+    };
+    for e in &edges {
+        let (below, above) = (stable_at(e.value * 0.98), stable_at(e.value * 1.02));
+        assert_ne!(below.len() >= 2, above.len() >= 2, "{e:?}: {below:?} {above:?}");
+        // the window lies between the two edges: thick slabs keep the small contact only, thin
+        // ones the large; the branch left outside is the lower one at the pull-off edge
+        let (inside, outside) = if below.len() >= 2 {
+            (&below, &above)
+        } else {
+            (&above, &below)
+        };
+        let left_lower = (outside[0] - inside[0]).abs() < (outside[0] - inside[inside.len() - 1]).abs();
+        assert_eq!(left_lower, e.kind == EdgeKind::PullOff, "{e:?}: {inside:?} {outside:?}");
+    }
+}

@@ -294,3 +294,29 @@ fn resolved_gfmd_comparison_by_hand() {
         }
     }
 }
+
+/// Inside a hysteresis window (system II, model 3, t·q_r = 0.1 at 0.8 γ_s: pull-off ≈ 1.5e-7,
+/// jump-in ≈ 2.4e-4) the unloading branch has its own gap, from the table of the highest stable
+/// root: admissible (≥ 0), below the loading branch's (more contact, a closer surface),
+/// non-increasing in the load; above the jump-in there is one branch and no second gap.
+#[test]
+fn the_unloading_branch_has_its_own_admissible_gap() {
+    let mut s = preset("system-2", 3);
+    s.thickness_qr = 0.1;
+    let gamma = s.gamma * 0.8;
+    let (g1, g2) = (gap_of(&s, gamma, 1e-5), gap_of(&s, gamma, 4e-5));
+    let (u1, u2) = (
+        g1.unloading.expect("a window at 1e-5"),
+        g2.unloading.expect("a window at 4e-5"),
+    );
+    eprintln!(
+        "loading {:.4} {:.4}, unloading {:.4} {:.4} (reversible {:.4} {:.4})",
+        g1.relative, g2.relative, u1.relative, u2.relative, u1.reversible, u2.reversible
+    );
+    for (g, u) in [(&g1, &u1), (&g2, &u2)] {
+        assert!(u.relative >= 0.0 && u.relative.is_finite(), "{u:?}");
+        assert!(u.relative + u.error < g.relative - g.error, "{u:?} vs {g:?}");
+    }
+    assert!(u1.relative >= u2.relative - u1.error - u2.error, "{u1:?} {u2:?}");
+    assert!(gap_of(&s, gamma, 1e-3).unloading.is_none());
+}

@@ -258,9 +258,9 @@ pub struct RunOutput {
     /// a_r of a distinct unloading branch (the highest stable one), null if none.
     pub unloading_a_r: Option<f64>,
     /// Every branch at this load, lowest a_r first: branch ("loading", "unstable",
-    /// "unloading"), stable, a_r, sigma_a, gamma_coarse (γ(q_L)/γ_s), elastic_energy.
-    /// Empty without adhesion.
-    pub branches: Vec<asperity::theory::adhesion::BranchState>,
+    /// "unloading"), stable, a_r, sigma_a, gamma_coarse (γ(q_L)/γ_s), elastic_energy,
+    /// mean_gap_rel, mean_gap_reversible_rel. Empty without adhesion.
+    pub branches: Vec<RunBranch>,
     /// Inside a hysteresis window (two stable branches at this load): p* above which the
     /// loading branch no longer exists (jump into contact); null outside a window or when
     /// the window runs past the allowed range of p*.
@@ -278,6 +278,45 @@ pub struct RunOutput {
     pub scene: SceneSummary,
     /// a_r(q) along the resolution.
     pub resolution: ResolutionTable,
+}
+
+/// One branch in `run`'s `branches`: its state and its mean gap.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct RunBranch {
+    /// branch, stable, a_r, sigma_a, gamma_coarse, elastic_energy.
+    #[serde(flatten)]
+    pub state: asperity::theory::adhesion::BranchState,
+    /// ū/h_rms of this branch followed from this load up to full contact, by the reported
+    /// route (∫dU_el*/p*, docs/physics.md §5.1); null for an unstable branch (no quasi-static
+    /// path follows it) or when unavailable.
+    pub mean_gap_rel: Option<f64>,
+    /// The dissipation-free route ∫dU*/p* on the same branch: a lower bound of the gap on
+    /// loading, an upper bound on unloading; may be negative (no admissible gap is); null as
+    /// `mean_gap_rel`.
+    pub mean_gap_reversible_rel: Option<f64>,
+}
+
+/// The branches of an evaluation with their gaps (`gap`: the run's mean gap, which holds the
+/// loading branch's and, inside a hysteresis window, the unloading branch's).
+fn run_branches(ev: &engine::Evaluation, gap: Option<&asperity::theory::gap::MeanGap>) -> Vec<RunBranch> {
+    use asperity::theory::adhesion::Branch;
+    ev.branches
+        .iter()
+        .map(|b| {
+            let (rel, rev) = match (b.branch, gap) {
+                (Branch::Loading, Some(g)) => (Some(g.relative), Some(g.reversible)),
+                (Branch::Unloading, Some(g)) => g
+                    .unloading
+                    .map_or((None, None), |u| (Some(u.relative), Some(u.reversible))),
+                _ => (None, None),
+            };
+            RunBranch {
+                state: b.clone(),
+                mean_gap_rel: rel,
+                mean_gap_reversible_rel: rev,
+            }
+        })
+        .collect()
 }
 
 /// Evaluates one scene as `run` does.
@@ -331,7 +370,7 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         residual: ev.residual,
         branch: ev.branch.to_string(),
         unloading_a_r: ev.unloading_a_r,
-        branches: ev.branches.clone(),
+        branches: run_branches(&ev, gap.as_ref()),
         jump_in_pressure: window.and_then(|w| w.jump_in_pressure),
         pull_off_pressure: window.and_then(|w| w.pull_off_pressure),
         gamma_q: ev.gamma_q.clone(),
@@ -399,7 +438,13 @@ fn run_table(out: &RunOutput) -> String {
             let list: Vec<String> = out
                 .branches
                 .iter()
-                .map(|b| format!("{} a_r = {:.6} sigma_a* = {:.4}", b.branch, b.a_r, b.sigma_a))
+                .map(|b| {
+                    let gap = b.mean_gap_rel.map_or(String::new(), |g| format!(" u/h_rms = {g:.4}"));
+                    format!(
+                        "{} a_r = {:.6} sigma_a* = {:.4}{gap}",
+                        b.state.branch, b.state.a_r, b.state.sigma_a
+                    )
+                })
                 .collect();
             line("branches", list.join("; "));
             let edge = |p: Option<f64>| p.map_or("beyond the allowed range".to_string(), |p| format!("{p:.4e}"));

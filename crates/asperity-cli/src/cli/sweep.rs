@@ -128,6 +128,21 @@ pub struct SweepOutput {
     /// Load sweeps: p* below which the unloading branch no longer exists (pull-off), where
     /// the range holds it; null otherwise.
     pub pull_off_pressure: Option<f64>,
+    /// The edges of hysteresis windows inside the range, in the swept knob's values, each
+    /// with `value` and `kind` ("jump_in": the small-contact branch ends there, the contact
+    /// jumps in; "pull_off": the large-contact branch ends). Load sweeps: the edges above;
+    /// thickness and gamma sweeps: every edge between two neighbouring values that differ in
+    /// the number of stable branches, refined by bisection.
+    pub window_edges: Vec<asperity::theory::hysteresis::KnobEdge>,
+}
+
+/// The edges of a load sweep's window as [`SweepOutput::window_edges`] (ascending p*).
+fn load_edges(pull_off: Option<f64>, jump_in: Option<f64>) -> Vec<asperity::theory::hysteresis::KnobEdge> {
+    use asperity::theory::hysteresis::{EdgeKind, KnobEdge};
+    [(pull_off, EdgeKind::PullOff), (jump_in, EdgeKind::JumpIn)]
+        .into_iter()
+        .filter_map(|(v, kind)| v.map(|value| KnobEdge { value, kind }))
+        .collect()
 }
 
 /// Formats rows as CSV.
@@ -197,6 +212,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                 failed_values: sw.failed_loads.clone(),
                 failed_loads: sw.failed_loads,
                 note: sw.note,
+                window_edges: load_edges(sw.pull_off_pressure, sw.jump_in_pressure),
                 jump_in_pressure: sw.jump_in_pressure,
                 pull_off_pressure: sw.pull_off_pressure,
             })
@@ -217,6 +233,8 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
             let (preset, scene) = args.scene.resolve(args.pressure)?;
             let first = knob.apply(&scene, args.from);
             let points = knob::knob_sweep(&scene, &spec, &Options::default(), true, None)?;
+            let window_edges =
+                asperity::theory::hysteresis::knob_edges(&scene, knob, &points, &Options::default().adhesion, None)?;
             let unit = asperity::theory::energy::energy_unit(&scene);
             let mut notes = Vec::new();
             let mut failed = Vec::new();
@@ -274,6 +292,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                 note,
                 jump_in_pressure: None,
                 pull_off_pressure: None,
+                window_edges,
             })
         }
     }

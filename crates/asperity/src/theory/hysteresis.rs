@@ -7,6 +7,10 @@
 //! load (below it only the lower branch is left), so between pull-off and jump-in the state
 //! depends on the history. Both edges are found by bisection in ln p* on "two or more stable
 //! branches at this load", to [`EDGE_REL`] in p*.
+//!
+//! The same holds in the other knobs at a fixed load ([`knob_edges`]): thinning the slab
+//! (\[S\] Fig. 7) or raising γ_s, the small-contact branch ends at a fold where the contact
+//! jumps in, and going back the large-contact branch ends at another.
 
 use crate::error::Result;
 use crate::input::scene::{Scene, PRESSURE_RANGE};
@@ -57,16 +61,102 @@ pub fn edge(
     acc: &AdhesionAccuracy,
     cancel: Option<&AtomicBool>,
 ) -> Result<f64> {
-    let (mut a, mut b) = (inside.ln(), outside.ln());
-    while (a - b).abs() > EDGE_REL {
+    bisect(inside, outside, true, |p| stable_branches(scene, p, acc, cancel))
+}
+
+/// Bisection of a window edge between `inside` (`count` ≥ 2) and `outside`: in ln x when
+/// `log` (to [`EDGE_REL`] in x), else in x (to [`EDGE_REL`] of the larger end); the midpoint
+/// of the last bracket.
+fn bisect(inside: f64, outside: f64, log: bool, mut count: impl FnMut(f64) -> Result<usize>) -> Result<f64> {
+    let to = |x: f64| if log { x.ln() } else { x };
+    let from = |y: f64| if log { y.exp() } else { y };
+    let (mut a, mut b) = (to(inside), to(outside));
+    let tol = if log {
+        EDGE_REL
+    } else {
+        EDGE_REL * inside.abs().max(outside.abs())
+    };
+    while (a - b).abs() > tol {
         let m = 0.5 * (a + b);
-        if stable_branches(scene, m.exp(), acc, cancel)? >= 2 {
+        if count(from(m))? >= 2 {
             a = m;
         } else {
             b = m;
         }
     }
-    Ok((0.5 * (a + b)).exp())
+    Ok(from(0.5 * (a + b)))
+}
+
+/// Which branch ends at a window edge.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EdgeKind {
+    /// The lowest stable branch (small contact) ends: a state on it jumps into contact.
+    JumpIn,
+    /// The highest stable branch ends: a state on it drops out of contact (pull-off).
+    PullOff,
+}
+
+/// One edge of a hysteresis window in a knob other than the load (t·q_r, γ_s).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct KnobEdge {
+    /// The knob's value at the edge.
+    pub value: f64,
+    /// Which branch ends there.
+    pub kind: EdgeKind,
+}
+
+/// The window edges of a knob sweep: between every two neighbouring values where one has two
+/// or more stable branches and the other one, the edge by bisection (in ln t·q_r, or linearly
+/// in γ_s) to [`EDGE_REL`]. Which branch ends there is read from the side with one branch: if
+/// its a_r lies nearer the upper branch's of the other side, the lower branch ended (a jump
+/// into contact), else the upper one (pull-off). Values whose solve failed bound no edge.
+///
+/// # Errors
+/// As [`adhesion::solve`].
+pub fn knob_edges(
+    scene: &Scene,
+    knob: crate::theory::knob::Knob,
+    points: &[crate::theory::knob::KnobPoint],
+    acc: &AdhesionAccuracy,
+    cancel: Option<&AtomicBool>,
+) -> Result<Vec<KnobEdge>> {
+    use crate::theory::knob::Knob;
+    let stable = |e: &crate::theory::engine::Evaluation| -> Vec<f64> {
+        e.branches.iter().filter(|b| b.stable).map(|b| b.a_r).collect()
+    };
+    let acc = AdhesionAccuracy {
+        explore_branches: true,
+        ..*acc
+    };
+    let mut edges = Vec::new();
+    for w in points.windows(2) {
+        let (Ok(e0), Ok(e1)) = (&w[0].result, &w[1].result) else {
+            continue;
+        };
+        let (s0, s1) = (stable(e0), stable(e1));
+        if (s0.len() >= 2) == (s1.len() >= 2) {
+            continue;
+        }
+        let ((x_in, b_in), (x_out, b_out)) = if s0.len() >= 2 {
+            ((w[0].value, &s0), (w[1].value, &s1))
+        } else {
+            ((w[1].value, &s1), (w[0].value, &s0))
+        };
+        let value = bisect(x_in, x_out, knob == Knob::Thickness, |x| {
+            let s = knob.apply(scene, x);
+            stable_branches(&s, s.pressure, &acc, cancel)
+        })?;
+        let (lo, hi) = (b_in[0], b_in[b_in.len() - 1]);
+        let out = b_out.first().copied().unwrap_or(f64::NAN);
+        let kind = if (out - hi).abs() < (out - lo).abs() {
+            EdgeKind::JumpIn
+        } else {
+            EdgeKind::PullOff
+        };
+        edges.push(KnobEdge { value, kind });
+    }
+    Ok(edges)
 }
 
 /// The window around the scene's own load when it lies inside one (two stable branches),

@@ -38,6 +38,7 @@ pub use route::{stored_energy, stored_from, GapTable, DECREASE_NOISE_REL};
 
 use crate::error::Result;
 use crate::input::scene::Scene;
+use crate::theory::engine::Evaluation;
 use crate::theory::slab::slab_factor_at;
 
 /// Largest grid step in ln p* of the energy route (Richardson error below 1e-6 relative on the
@@ -94,6 +95,26 @@ pub struct MeanGap {
     /// Lower bound of ū/h_rms on loading (the reversible route made admissible; equal to
     /// `relative` without adhesion up to quadrature error).
     pub lower: f64,
+    /// The reversible route ∫dU*/p* on the total energy at p₀ (ū/h_rms, may be negative with
+    /// adhesion; `lower` is its admissible form).
+    pub reversible: f64,
+    /// The gap of the unloading branch (the highest stable root) where it differs from the
+    /// loading one at p₀ (inside a hysteresis window); None elsewhere, or where the table of
+    /// that branch is not one stable branch (see [`route`]).
+    pub unloading: Option<BranchGap>,
+}
+
+/// The mean gap of one branch at p₀ by the two routes on that branch's own table (the branch
+/// followed from p₀ up to full contact; physics.md §5.1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BranchGap {
+    /// ū/h_rms = ∫dU_el*/p* on the stored elastic energy (the reported route).
+    pub relative: f64,
+    /// Its estimated absolute error.
+    pub error: f64,
+    /// ∫dU*/p* on the total energy: dissipation-free; a lower bound of the gap on loading
+    /// and an upper bound on unloading (may be negative, which no admissible gap is).
+    pub reversible: f64,
 }
 
 /// Mean gap at the scene's pressure (U from [`crate::theory::engine::evaluate`] on a grid from
@@ -116,6 +137,8 @@ pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<
             energy_reduced: ev[0].elastic_energy / unit,
             stored_energy_reduced: stored_energy(scene, &ev[0]) / unit,
             lower: 0.0,
+            reversible: 0.0,
+            unloading: None,
         }));
     }
     let (x0, h, n) = grid_from(scene, scene.pressure, GAP_STEP_LN);
@@ -130,5 +153,39 @@ pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<
         energy_reduced: table.total_energy[0],
         stored_energy_reduced: table.energy[0],
         lower: table.lower[0],
+        reversible: table.reversible[0],
+        // a table that is not one stable branch leaves the unloading gap unknown, not the run
+        unloading: unloading_gap(scene, x0, h, &evs).unwrap_or(None),
+    }))
+}
+
+/// The gap of the unloading branch at the first load of `evs` (a uniform ln p* grid up to full
+/// contact, every branch solved at each load), where two stable branches exist there: the
+/// route on the table of the highest stable root at every load (the unloading branch, which
+/// above the window's jump-in is the loading one). No extra solves: the loads' evaluations
+/// already hold every branch.
+fn unloading_gap(scene: &Scene, x0: f64, h: f64, evs: &[Evaluation]) -> Result<Option<BranchGap>> {
+    let stable = |e: &Evaluation| e.branches.iter().filter(|b| b.stable).count();
+    if evs.first().is_none_or(|e| stable(e) < 2) {
+        return Ok(None);
+    }
+    let unit = crate::theory::energy::energy_unit(scene);
+    let (stored, total): (Vec<f64>, Vec<f64>) = evs
+        .iter()
+        .map(|e| {
+            let (u, a) = e
+                .branches
+                .iter()
+                .rev()
+                .find(|b| b.stable)
+                .map_or((e.elastic_energy, e.stats.a_r), |b| (b.elastic_energy, b.a_r));
+            (stored_from(scene, u, a) / unit, u / unit)
+        })
+        .unzip();
+    let t = GapTable::from_energies(x0, h, stored, total)?;
+    Ok(Some(BranchGap {
+        relative: t.gap[0],
+        error: t.error[0],
+        reversible: t.reversible[0],
     }))
 }
