@@ -203,6 +203,13 @@ pub const ERROR_BAR_WORST_RATIO: f64 = 0.5;
 /// honest error bars").
 pub const ADHESION_ERROR_SAFETY: f64 = 4.0;
 
+/// The step count of the error estimate's coarser run relative to the solve's, calibrated
+/// with [`ADHESION_ERROR_SAFETY`]: 2/3, not 1/2, whose nodes would be every other node of the
+/// solve's and share its alignment with the march's features (the onset of the wall, the
+/// cap, the PSD's breakpoints): on system II, model 4, t·q_r = 0.5 the runs at 12 and 24 steps
+/// per ln q agree to 3e-5 while both are 2e-4 off (20, 32 and 96 steps agree to 3e-5 there).
+pub const ADHESION_ERROR_STEPS_FACTOR: f64 = 2.0 / 3.0;
+
 // Mean gap with adhesion (issue 13, item 4; docs/physics.md §5)
 
 /// ū at γ_s = 1e-6 J/m² (γ̃_glo ~ 1e-6) against the adhesionless ū (energy route on the ODE,

@@ -212,13 +212,6 @@ pub fn evaluate_warm(
     })
 }
 
-/// The step count of the error estimate's coarser run, relative to the solve's: 2/3, not 1/2,
-/// whose nodes would be every other node of the solve's and share its alignment with the
-/// features of the march (the onset of the wall, the cap, the PSD's breakpoints): on system II,
-/// model 4, t·q_r = 0.5 the runs at 12 and 24 steps per ln q agree to 3e-5 while both are 2e-4
-/// off (20, 32 and 96 steps agree to 3e-5 there).
-const STEPS_COARSENING: f64 = 2.0 / 3.0;
-
 fn evaluate_adhesive(
     scene: &Scene,
     opts: &Options,
@@ -240,7 +233,7 @@ fn evaluate_adhesive(
             let mut coarse = opts.adhesion;
             coarse.explore_branches = false;
             if which == 0 {
-                coarse.steps_per_ln_q *= STEPS_COARSENING;
+                coarse.steps_per_ln_q *= crate::tolerances::ADHESION_ERROR_STEPS_FACTOR;
             } else {
                 coarse.points_per_width *= 0.5;
             }
