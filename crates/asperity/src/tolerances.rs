@@ -140,6 +140,13 @@ pub const SURFACE_SHAPE_REL: f64 = 1e-8;
 /// `gap::ENERGY_RTOL`, so U and a_r agree to round-off; 1e-6 is the bound.
 pub const RUN_SWEEP_REL: f64 = 1e-6;
 
+/// An adhesive sweep's load solved by tracking its neighbour's root against the same load
+/// scanned for every root: both refine the root to |γ(q_s)/γ_s − 1| ≤ 1e-8 from different
+/// brackets (measured up to 6.5e-8 relative in a_r, 1e-5 in U on system 2, model 4).
+pub const TRACKED_VS_SCANNED_REL: f64 = 1e-6;
+/// The same for U, a difference of two terms of up to ~100× its size at the smallest loads.
+pub const TRACKED_VS_SCANNED_ENERGY_REL: f64 = 1e-4;
+
 /// U at p* = 1e-7 on a thin slab (system 2, t·q_r = 0.1) at ENERGY_RTOL against rtol 1e-13:
 /// measured 2.6e-3 (v passes p*² within the ODE's absolute tolerance just above q_L, so the
 /// steep fall of a_r there is resolved only to that level); the wrong interpolant this guards

@@ -179,6 +179,45 @@ fn adhesive_sweeps_do_not_depend_on_the_thread_count() {
 }
 
 #[test]
+fn tracked_loads_agree_with_full_scans() {
+    // a sweep scans every branch only at every ANCHOR_STRIDE-th load and tracks the root in
+    // between (issue 13 target: 64 loads in ≤ 1 s); every row against its own full scan
+    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+    s.model = Model::named(4).unwrap();
+    s.thickness_qr = 0.1;
+    let spec = SweepSpec {
+        from: 1e-5,
+        to: 1.0,
+        points: 16,
+    };
+    let mut opts = Options::default();
+    let sw = sweep::sweep(&s, &spec, &opts, None).unwrap();
+    opts.accuracy.rtol = gap::ENERGY_RTOL;
+    opts.adhesion_error_estimate = false;
+    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+    for r in &sw.rows {
+        let mut one = s.clone();
+        one.pressure = r.p;
+        let ev = engine::evaluate(&one, &opts).unwrap();
+        assert!(
+            rel(r.a_r, ev.stats.a_r) < TRACKED_VS_SCANNED_REL,
+            "p* {}: {} vs {}",
+            r.p,
+            r.a_r,
+            ev.stats.a_r
+        );
+        assert!(
+            rel(r.elastic_energy, ev.elastic_energy) < TRACKED_VS_SCANNED_ENERGY_REL,
+            "p* {}: {} vs {}",
+            r.p,
+            r.elastic_energy,
+            ev.elastic_energy
+        );
+        assert_eq!(r.branches, ev.branches.len().max(1), "p* {}", r.p);
+    }
+}
+
+#[test]
 fn run_and_sweep_agree_at_small_loads_on_a_thin_slab() {
     // issue 13 item 5: system 2 without adhesion, model 3, t·q_r = 0.1, p* = 1e-7 (the ODE at
     // rtol 1e-7 stepped from q_L to q_r in one go and its cubic interpolant dipped below zero:

@@ -2,9 +2,14 @@
 //!
 //! [`node_results`] evaluates [`crate::theory::engine::evaluate`] at every p* of an ascending
 //! list with lean options (no Pr table, no resolution record, the ODE at the energy route's
-//! tolerance [`ENERGY_RTOL`]). Every load is independent — the adhesive solver finds every
-//! branch at a load on its own (`theory::adhesion`), so no continuation from a neighbouring load
-//! is needed — and the loads run in parallel: results do not depend on the thread count.
+//! tolerance [`ENERGY_RTOL`]). With adhesion every [`ANCHOR_STRIDE`]-th load (an anchor) scans
+//! for every branch (`theory::adhesion`); a load between two anchors that each have a single
+//! branch tracks its lower neighbour's root (a warm start, falling back to the scan when the
+//! root is not where it was), and every load between anchors with several branches (a
+//! hysteresis window) scans too. Anchors run in parallel, then the stretches between them:
+//! which load starts from which is fixed by the list, so results do not depend on the thread
+//! count. A window that opens and closes between two anchors (narrower than four load steps)
+//! is not seen.
 //! [`energies`] gives U* = U/(E*ḡh_rms) [S-11] at those loads, the input of the energy route to
 //! the mean gap [S-12] ([`crate::theory::gap`]) and of [`crate::theory::sweep`].
 //!
@@ -27,8 +32,8 @@ fn lean(opts: &Options) -> Options {
     o.accuracy.resolution_points = 2;
     o.accuracy.rtol = o.accuracy.rtol.min(ENERGY_RTOL);
     o.adhesion_error_estimate = false;
-    // every branch at every load (a warm start would only track the previous load's
-    // branches and miss a pair born between two loads)
+    // every branch (the anchors, and every load of a window); `node_results` turns this off
+    // where it tracks a root
     o.adhesion.explore_branches = true;
     o
 }
@@ -55,6 +60,12 @@ fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
     }
 }
 
+/// Every this many loads (by index in the ascending list) the adhesive solver scans for every
+/// branch; between two such anchors that both have a single branch, each load tracks the
+/// previous one's root (2–4 marches instead of 10–20 marches' worth). The anchors do not
+/// depend on the thread count, so neither do the results.
+pub const ANCHOR_STRIDE: usize = 4;
+
 /// One load's outcome: the evaluation, or why its solver did not converge.
 pub type NodeResult = std::result::Result<Evaluation, Error>;
 
@@ -73,12 +84,64 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
             Err(e) => Err(e),
         }
     };
-    ps.par_iter()
-        .map(|&p| {
+    if scene.gamma <= 0.0 || ps.len() <= ANCHOR_STRIDE {
+        return ps
+            .par_iter()
+            .map(|&p| {
+                check_cancel(cancel)?;
+                keep(evaluate_node(scene, p, &opts, None, cancel), p)
+            })
+            .collect();
+    }
+    // anchors: every ANCHOR_STRIDE-th load and the last, each with a full root scan
+    let n = ps.len();
+    let anchors: Vec<usize> = (0..n)
+        .step_by(ANCHOR_STRIDE)
+        .chain((!(n - 1).is_multiple_of(ANCHOR_STRIDE)).then_some(n - 1))
+        .collect();
+    let anchor_results: Vec<NodeResult> = anchors
+        .par_iter()
+        .map(|&i| {
             check_cancel(cancel)?;
-            keep(evaluate_node(scene, p, &opts, None, cancel), p)
+            keep(evaluate_node(scene, ps[i], &opts, None, cancel), ps[i])
         })
-        .collect()
+        .collect::<Result<_>>()?;
+    // the loads between two anchors: tracked from the lower anchor where both anchors have one
+    // branch, each scanned in full otherwise
+    let single = |r: &NodeResult| matches!(r, Ok(e) if e.branches.len() <= 1);
+    let mut tracked = opts;
+    tracked.adhesion.explore_branches = false;
+    let segments: Vec<Vec<NodeResult>> = anchors
+        .par_windows(2)
+        .zip(anchor_results.par_windows(2))
+        .map(|(ij, rs)| -> Result<Vec<NodeResult>> {
+            let track = single(&rs[0]) && single(&rs[1]);
+            let mut out: Vec<NodeResult> = Vec::with_capacity(ij[1] - ij[0] - 1);
+            for &p in &ps[ij[0] + 1..ij[1]] {
+                check_cancel(cancel)?;
+                let r = if track {
+                    let prev = match out.last() {
+                        Some(Ok(e)) => Some(e),
+                        Some(Err(_)) => None,
+                        None => rs[0].as_ref().ok(),
+                    };
+                    evaluate_node(scene, p, &tracked, prev, cancel)
+                } else {
+                    evaluate_node(scene, p, &opts, None, cancel)
+                };
+                out.push(keep(r, p)?);
+            }
+            Ok(out)
+        })
+        .collect::<Result<_>>()?;
+    let mut results = Vec::with_capacity(n);
+    let mut anchor_results = anchor_results.into_iter();
+    for seg in segments {
+        results.extend(anchor_results.next());
+        results.extend(seg);
+    }
+    results.extend(anchor_results);
+    Ok(results)
 }
 
 /// Evaluates the scene at every p* of `ps` (see [`node_results`]); the first load whose

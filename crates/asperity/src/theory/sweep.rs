@@ -8,7 +8,8 @@
 //! [`crate::theory::gap::GapTable`]); nothing is evaluated twice. A 64-point chart
 //! sweep of system 1 from p* = 1e-3 to 1 costs 64 + 13 engine evaluations.
 //!
-//! Every load is independent and the loads run in parallel (rayon), so a sweep gives the same
+//! The loads run in parallel (rayon) in a fixed pattern ([`crate::theory::loads`]: a full
+//! branch scan every few loads, the root tracked in between), so a sweep gives the same
 //! numbers, bit for bit, on any number of threads. With adhesion each load reports every
 //! branch: `a_r` is the loading branch (the lowest stable one), `a_r_unloading` the unloading
 //! branch where a hysteresis window makes it distinct, and the window's edges — the jump-in

@@ -17,8 +17,9 @@
 //! 3. a root where H rises (H' > 0) is stable, one where it falls is the unstable middle
 //!    branch of a hysteresis loop.
 //!
-//! With a warm start (the roots of a nearby load) each is re-bracketed around its old C
-//! first, and the scan runs only when that fails.
+//! With a warm start (the roots of a nearby load) each is re-bracketed next to its old C
+//! first (±2 % in C, widened 4× at a time on the side H(C_old) points to, up to a factor ~3),
+//! and the scan runs only when that fails or the brackets do not alternate in sign.
 
 use super::grid::build_grid;
 use super::propagator::Marcher;
@@ -112,16 +113,15 @@ pub(super) fn find_roots(
     if !warm.is_empty() {
         let mut ok = true;
         let mut found = Vec::new();
-        for &c in warm {
+        for (i, &c) in warm.iter().enumerate() {
             check_cancel(cancel)?;
-            let w = scale.w(c).clamp(w_lo, w_hi);
-            let (a, b) = ((w - 0.25 * cell).max(w_lo), (w + 0.25 * cell).min(w_hi));
-            let (ha, hb) = (fine.h(scale.c(a)).h, fine.h(scale.c(b)).h);
-            if (ha < 0.0) != (hb < 0.0) {
-                found.push((a, ha, b, hb));
-            } else {
-                ok = false;
-                break;
+            let w0 = scale.w(c).clamp(w_lo, w_hi);
+            match warm_bracket(&mut fine, &scale, w0, i % 2 == 0, (w_lo, w_hi), 0.25 * cell) {
+                Some(br) => found.push(br),
+                None => {
+                    ok = false;
+                    break;
+                }
             }
         }
         // the warm roots must account for the whole sign pattern: lowest rises from −, and
@@ -221,6 +221,44 @@ pub(super) fn find_roots(
         roots.push(refine(&mut fine, &scale, w_lo, ha, w_hi, hb, tol, cancel)?);
     }
     Ok((roots, fine.shots + coarse.shots / 4))
+}
+
+/// Half-width in w of the first warm bracket (about 2 % in C): a neighbouring load's root
+/// moves by less, so Brent's method starts close.
+const WARM_FIRST: f64 = 0.02;
+
+/// A sign change of H next to w₀ (an old root; H rises through it when `rising`): H(w₀)
+/// says on which side the root now lies, and that side's end moves out from ±[`WARM_FIRST`]
+/// 4× at a time up to `max` (within [w_lo, w_hi]). Returns (a, H(a), b, H(b)) with a < b, or
+/// None when no sign change lies within `max` on that side.
+fn warm_bracket(
+    s: &mut Shooter<'_>,
+    scale: &Scale,
+    w0: f64,
+    rising: bool,
+    (w_lo, w_hi): (f64, f64),
+    max: f64,
+) -> Option<(f64, f64, f64, f64)> {
+    let h0 = s.h(scale.c(w0)).h;
+    if h0 == 0.0 {
+        return None;
+    }
+    let right = (h0 < 0.0) == rising;
+    let mut d = WARM_FIRST.min(max);
+    loop {
+        let w = if right { (w0 + d).min(w_hi) } else { (w0 - d).max(w_lo) };
+        if w == w0 {
+            return None;
+        }
+        let h = s.h(scale.c(w)).h;
+        if (h < 0.0) != (h0 < 0.0) {
+            return Some(if right { (w0, h0, w, h) } else { (w, h, w0, h0) });
+        }
+        if d >= max || w == w_lo || w == w_hi {
+            return None;
+        }
+        d = (4.0 * d).min(max);
+    }
 }
 
 /// A scan point: w, H and its rising part F = C + I, and G = γ_s a_r(q_s) (H = F − G).
