@@ -159,8 +159,13 @@ pub fn knob_edges(
     Ok(edges)
 }
 
+/// Factor in p* of the steps outwards from a load inside a window to bracket its edges.
+pub const WINDOW_STEP: f64 = 4.0;
+
 /// The window around the scene's own load when it lies inside one (two stable branches),
-/// else `None`: steps outwards by factors of 2 in p* to bracket each edge, then [`edge`].
+/// else `None`: steps outwards by factors of [`WINDOW_STEP`] in p* to bracket each edge, then
+/// [`edge`]. An edge is `None` where the window reaches the end of the load range
+/// (`PRESSURE_RANGE`): in particular a pull-off that needs a tensile load.
 ///
 /// # Errors
 /// As [`adhesion::solve`].
@@ -170,13 +175,17 @@ pub fn window_around(scene: &Scene, acc: &AdhesionAccuracy, cancel: Option<&Atom
         return Ok(None);
     }
     let bound = |up: bool| -> Result<Option<f64>> {
+        // the unloading branch of a strongly adhesive scene often holds at every positive load
+        // (pull-off needs a tensile load): one solve at the end of the load range says so
+        let end = if up { PRESSURE_RANGE.1 } else { PRESSURE_RANGE.0 };
+        if stable_branches(scene, end, acc, cancel)? >= 2 {
+            return Ok(None);
+        }
         let mut inside = p0;
         loop {
-            let next = if up { inside * 2.0 } else { inside * 0.5 };
-            if !(PRESSURE_RANGE.0..=PRESSURE_RANGE.1).contains(&next) {
-                return Ok(None);
-            }
-            if stable_branches(scene, next, acc, cancel)? < 2 {
+            let next = if up { inside * WINDOW_STEP } else { inside / WINDOW_STEP };
+            let next = if up { next.min(end) } else { next.max(end) };
+            if next == end || stable_branches(scene, next, acc, cancel)? < 2 {
                 return edge(scene, inside, next, acc, cancel).map(Some);
             }
             inside = next;

@@ -3,10 +3,10 @@
 //! [`node_results`] evaluates [`crate::theory::engine::evaluate`] at every p* of an ascending
 //! list with lean options (no Pr table, no resolution record, the ODE at the energy route's
 //! tolerance [`ENERGY_RTOL`]). With adhesion every [`ANCHOR_STRIDE`]-th load (an anchor) scans
-//! for every branch (`theory::adhesion`); a load between two anchors that each have a single
-//! branch tracks its lower neighbour's root (a warm start, falling back to the scan when the
-//! root is not where it was), and every load between anchors with several branches (a
-//! hysteresis window) scans too. Anchors run in parallel, then the stretches between them:
+//! for every branch (`theory::adhesion`); a load between two anchors with the same number of branches
+//! tracks its lower neighbour's roots (a warm start, falling back to the scan when a root is
+//! not where it was or the roots no longer alternate in sign), and every load between anchors
+//! with different numbers (an edge of a hysteresis window) scans too. Anchors run in parallel, then the stretches between them:
 //! which load starts from which is fixed by the list, so results do not depend on the thread
 //! count. A window that opens and closes between two anchors (narrower than four load steps)
 //! is not seen.
@@ -61,8 +61,8 @@ fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
 }
 
 /// Every this many loads (by index in the ascending list) the adhesive solver scans for every
-/// branch; between two such anchors that both have a single branch, each load tracks the
-/// previous one's root (2–4 marches instead of 10–20 marches' worth). The anchors do not
+/// branch; between two such anchors that have the same number of branches, each load tracks
+/// the previous one's roots (2–4 marches each instead of 10–20 marches' worth for a scan). The anchors do not
 /// depend on the thread count, so neither do the results.
 pub const ANCHOR_STRIDE: usize = 4;
 
@@ -106,16 +106,16 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
             keep(evaluate_node(scene, ps[i], &opts, None, cancel), ps[i])
         })
         .collect::<Result<_>>()?;
-    // the loads between two anchors: tracked from the lower anchor where both anchors have one
-    // branch, each scanned in full otherwise
-    let single = |r: &NodeResult| matches!(r, Ok(e) if e.branches.len() <= 1);
+    // the loads between two anchors: tracked from the lower anchor where both anchors have
+    // the same number of branches, each scanned in full otherwise (an edge of a window)
+    let count = |r: &NodeResult| r.as_ref().ok().map(|e| e.branches.len().max(1));
     let mut tracked = opts;
     tracked.adhesion.explore_branches = false;
     let segments: Vec<Vec<NodeResult>> = anchors
         .par_windows(2)
         .zip(anchor_results.par_windows(2))
         .map(|(ij, rs)| -> Result<Vec<NodeResult>> {
-            let track = single(&rs[0]) && single(&rs[1]);
+            let track = count(&rs[0]).is_some() && count(&rs[0]) == count(&rs[1]);
             let mut out: Vec<NodeResult> = Vec::with_capacity(ij[1] - ij[0] - 1);
             for &p in &ps[ij[0] + 1..ij[1]] {
                 check_cancel(cancel)?;

@@ -122,6 +122,13 @@ const GROWTH_PER_PIECE: f64 = 3.0;
 
 /// Pieces of a step after the onset of its wall (see [`Marcher::step_onset`]).
 pub(super) const ONSET_PIECES: usize = 4;
+/// The first sub-piece of a moving piece that starts from a delta (v = 0), as a fraction of
+/// the piece.
+const FIRST_PIECE: f64 = 1e-6;
+/// A wall that grows past 1/`ONSET_GROWTH` times its value in one step (from zero, or from
+/// a small positive γ at the step's start) follows the square root in pieces like an onset:
+/// the limit C → 0 of γ(q_L) = C is then the same from both sides.
+pub(super) const ONSET_GROWTH: f64 = 0.5;
 
 /// Points of the shift's Lagrange interpolation: the error per shift is O(h⁸ ∂⁸Pr), ~1e-9 of
 /// Pr at 10 points per width (4 points gave ~1e-5 per shift, ~1e-3 after a march).
@@ -260,7 +267,9 @@ impl<'a> Marcher<'a> {
     /// like the square root of the distance from it. The step is split at the onset and in
     /// [`ONSET_PIECES`] pieces graded as i² after it, the wall following the square root
     /// through their ends (linear in v within each): the wall's path then carries no O(√Δ)
-    /// error at the onset.
+    /// error at the onset. A wall that starts the step at w₀ > 0 but more than doubles in it
+    /// (w₀ < [`ONSET_GROWTH`]·s_k: γ small at the start) is split the same way from the step's
+    /// start, σ_a² running linearly from w₀² to s_k².
     pub(super) fn step_onset(&mut self, cur: &mut Cursor, s_k: f64, onset: Option<f64>, commit: bool) -> f64 {
         let k = cur.k;
         let st = self.grid.steps[k];
@@ -269,23 +278,34 @@ impl<'a> Marcher<'a> {
         }
         cur.k += 1;
         let b_cum = cur.b_cum;
-        match onset {
-            Some(s0) if s0 > 0.0 && s0 < 1.0 && cur.wall == 0.0 && s_k > 0.0 => {
-                let mut pieces = vec![(s0, 0.0)];
-                for i in 1..=ONSET_PIECES {
-                    let t = i as f64 / ONSET_PIECES as f64;
-                    pieces.push((s0 + (1.0 - s0) * t * t, s_k * t));
-                }
-                let (mut from, mut a) = (0.0, cur.a);
-                let last = pieces.len() - 1;
-                for (i, &(to, wall)) in pieces.iter().enumerate() {
-                    let b = st.b * (to - from);
-                    a = self.advance(cur, wall, k, b, b_cum + st.b * from, commit || i < last);
-                    from = to;
-                }
-                a
+        let w0 = cur.wall;
+        let start = match onset {
+            Some(s0) if s0 > 0.0 && s0 < 1.0 && w0 == 0.0 => s0,
+            _ => 0.0,
+        };
+        if s_k > 0.0 && (start > 0.0 || w0 < ONSET_GROWTH * s_k) {
+            // σ_a² ∝ γ grows linearly from the onset (or from w0²) through the step
+            let mut pieces = Vec::with_capacity(ONSET_PIECES + 1);
+            if start > 0.0 {
+                pieces.push((start, 0.0));
             }
-            _ => self.advance(cur, s_k, k, st.b, b_cum, commit),
+            for i in 1..=ONSET_PIECES {
+                let t = i as f64 / ONSET_PIECES as f64;
+                pieces.push((
+                    start + (1.0 - start) * t * t,
+                    (w0 * w0 + (s_k * s_k - w0 * w0) * t * t).sqrt(),
+                ));
+            }
+            let (mut from, mut a) = (0.0, cur.a);
+            let last = pieces.len() - 1;
+            for (i, &(to, wall)) in pieces.iter().enumerate() {
+                let b = st.b * (to - from);
+                a = self.advance(cur, wall, k, b, b_cum + st.b * from, commit || i < last);
+                from = to;
+            }
+            a
+        } else {
+            self.advance(cur, s_k, k, st.b, b_cum, commit)
         }
     }
 
@@ -305,8 +325,12 @@ impl<'a> Marcher<'a> {
             let moving = s_k != cur.wall || !matches!(cur.state, State::Analytic);
             // dv/dB = W^{2α}(a_r) is of order 1: a piece of GROWTH_PER_PIECE·v in B adds about
             // that much variance
+            // (from v = 0, a delta, a first sub-piece of FIRST_PIECE of the piece: the growth
+            // pieces then follow the wall from where the distribution has a width)
             let piece = if moving && v > 0.0 && left > GROWTH_PER_PIECE * v * 1.5 {
                 GROWTH_PER_PIECE * v
+            } else if moving && v == 0.0 && b_done == 0.0 && s_k > cur.wall {
+                FIRST_PIECE * left
             } else {
                 left
             };

@@ -10,10 +10,13 @@
 //! 1. scan H at [`SCAN_PER_DECADE`] points per decade of |C| on a grid of half the requested
 //!    resolution (a quarter of the cost), bisect every cell that may hold a root (a bound from
 //!    the monotone parts of H, see `scan`), and keep every sign change;
-//! 2. re-bracket each at the requested resolution (widened outwards through the scan points
-//!    if the coarse bracket no longer holds; a pair of roots that merges at the fine
-//!    resolution is a fold and is dropped) and refine it with Brent's method in w to
-//!    |H| ≤ tol·γ_s·a_r(q_s);
+//! 2. take H at the requested resolution at the ends of each sign-change cell, widening the
+//!    cell through the scan points (and merging it with the next) until H has the coarse
+//!    scan's sign at both ends; where the region then shows fewer sign changes than the coarse
+//!    scan did, bisect its cells at the requested resolution as the scan does (a pair still
+//!    missing has merged there: a fold, dropped); refine every sign change with Brent's method
+//!    in w to |H| ≤ tol·γ_s·a_r(q_s). Roots that do not alternate in sign (−…+) send the whole
+//!    scan to the requested resolution;
 //! 3. a root where H rises (H' > 0) is stable, one where it falls is the unstable middle
 //!    branch of a hysteresis loop.
 //!
@@ -34,7 +37,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 pub(super) const SCAN_PER_DECADE: f64 = 0.5;
 /// Smallest scan cell in w = asinh(C/c₀) (about 3 % in C).
 const SCAN_MIN_CELL: f64 = 0.03;
-/// Most coarse shots of a scan.
+/// Most shots of a scan (coarse) or of the bisection of the regions (fine).
 const SCAN_MAX: usize = 400;
 
 /// One root of H: a branch of the scene.
@@ -154,63 +157,105 @@ pub(super) fn find_roots(
     };
     let pts = scan(&mut coarse, &scale, w_lo, w_hi, gs, cancel)?;
     let n = pts.len() - 1;
-    // the fine resolution moves the roots a little: each coarse sign change is re-bracketed
-    // at the fine resolution, widening outwards through the scan points (never past the
-    // previous root) until H has the coarse bracket's sign change
-    let mut fine_cache: Vec<Option<f64>> = vec![None; pts.len()];
-    let mut fine_h = |fine: &mut Shooter<'_>, i: usize| -> f64 {
-        if let Some(h) = fine_cache[i] {
-            return h;
+    // the fine resolution moves the roots, a fold's nearly merged pair most: each coarse sign
+    // change opens a region, its cell (merged with the next where they touch), H is taken at
+    // the fine resolution at the region's scan points, and where that
+    // shows fewer sign changes than the coarse scan did, the region's cells are bisected at
+    // the fine resolution as the scan bisects (a pair that is still missing then has merged:
+    // a fold, dropped). Consecutive sign changes of one sampled H alternate, so the roots of
+    // a region do too.
+    let mut regions: Vec<(usize, usize, usize)> = Vec::new();
+    for i in (0..n).filter(|&i| (pts[i].h < 0.0) != (pts[i + 1].h < 0.0)) {
+        let (lo, hi) = (i, i + 1);
+        match regions.last_mut() {
+            Some(r) if lo <= r.1 => {
+                r.1 = hi;
+                r.2 += 1;
+            }
+            _ => regions.push((lo, hi, 1)),
         }
-        let h = fine.h(scale.c(pts[i].w)).h;
-        fine_cache[i] = Some(h);
-        h
+    }
+    // a region is widened, one scan point at a time, until H at the fine resolution has the
+    // coarse scan's sign at both its ends (a root moved out of it), swallowing the regions it
+    // reaches; it never reaches back into the previous region
+    let mut fine_pts: Vec<Option<Point>> = vec![None; pts.len()];
+    let mut fine_at = |fine: &mut Shooter<'_>, i: usize| -> Point {
+        *fine_pts[i].get_or_insert_with(|| point(fine, &scale, pts[i].w, gs))
     };
-    let mut last_end = 0usize;
-    for i in 0..n {
-        if (pts[i].h < 0.0) == (pts[i + 1].h < 0.0) {
-            continue;
-        }
+    let mut floor = 0usize;
+    let mut ri = 0usize;
+    while ri < regions.len() {
         check_cancel(cancel)?;
-        let rising = pts[i].h < 0.0;
-        let (mut a, mut b) = (i.max(last_end), i + 1);
-        let mut got = None;
-        for _ in 0..8 {
-            if a >= b {
-                break;
+        let (mut lo, mut hi, mut count) = regions[ri];
+        lo = lo.max(floor);
+        loop {
+            if lo > floor && (fine_at(&mut fine, lo).h < 0.0) != (pts[lo].h < 0.0) {
+                lo -= 1;
+                continue;
             }
-            let (ha, hb) = (fine_h(&mut fine, a), fine_h(&mut fine, b));
-            let a_ok = (ha < 0.0) == rising;
-            let b_ok = (hb < 0.0) != rising;
-            if a_ok && b_ok {
-                got = Some((a, ha, b, hb));
-                break;
-            }
-            if !a_ok {
-                if a == last_end {
-                    break;
+            if hi < n && (fine_at(&mut fine, hi).h < 0.0) != (pts[hi].h < 0.0) {
+                hi += 1;
+                while ri + 1 < regions.len() && regions[ri + 1].0 <= hi {
+                    ri += 1;
+                    hi = hi.max(regions[ri].1);
+                    count += regions[ri].2;
                 }
-                a -= 1;
+                continue;
             }
-            if !b_ok {
-                if b == n {
-                    break;
-                }
-                b += 1;
+            break;
+        }
+        let mut fp: Vec<Point> = (lo..=hi).map(|i| fine_at(&mut fine, i)).collect();
+        if sign_changes(&fp) < count {
+            fp = bisect_cells(&mut fine, &scale, fp, gs, cancel)?;
+        }
+        for k in 0..fp.len() - 1 {
+            if (fp[k].h < 0.0) != (fp[k + 1].h < 0.0) {
+                roots.push(refine(
+                    &mut fine,
+                    &scale,
+                    fp[k].w,
+                    fp[k].h,
+                    fp[k + 1].w,
+                    fp[k + 1].h,
+                    tol,
+                    cancel,
+                )?);
             }
         }
-        if let Some((a, ha, b, hb)) = got {
-            roots.push(refine(&mut fine, &scale, pts[a].w, ha, pts[b].w, hb, tol, cancel)?);
-            last_end = b;
+        floor = hi;
+        ri += 1;
+    }
+    // the whole sign pattern is −…+ with alternating roots; where a root moved beyond its
+    // region at the fine resolution that fails, and the scan is repeated at the fine one
+    let alternate = roots.first().is_some_and(|r| r.stable)
+        && roots.last().is_some_and(|r| r.stable)
+        && roots.windows(2).all(|p| p[0].stable != p[1].stable);
+    if !alternate {
+        roots.clear();
+        let fp = scan(&mut fine, &scale, w_lo, w_hi, gs, cancel)?;
+        for k in 0..fp.len() - 1 {
+            if (fp[k].h < 0.0) != (fp[k + 1].h < 0.0) {
+                roots.push(refine(
+                    &mut fine,
+                    &scale,
+                    fp[k].w,
+                    fp[k].h,
+                    fp[k + 1].w,
+                    fp[k + 1].h,
+                    tol,
+                    cancel,
+                )?);
+            }
         }
     }
     if std::env::var_os("ASPERITY_DEBUG").is_some() {
         eprintln!(
-            "roots: {} coarse shots ({} scan points), {} fine, {} roots",
+            "roots: {} coarse shots ({} scan points), {} fine, {} roots{}",
             coarse.shots,
             pts.len(),
             fine.shots,
-            roots.len()
+            roots.len(),
+            if alternate { "" } else { " (fine scan)" }
         );
     }
     // the sign pattern is −…+: if every bracket was lost (roots that merge at the fine
@@ -283,22 +328,41 @@ fn scan(
     gs: f64,
     cancel: Option<&AtomicBool>,
 ) -> Result<Vec<Point>> {
-    let at = |s: &mut Shooter<'_>, w: f64| -> Point {
-        let shot = s.h(scale.c(w));
-        Point {
-            w,
-            h: shot.h,
-            f: shot.f,
-            g: gs * shot.a_s,
-        }
-    };
     let cell = std::f64::consts::LN_10 / SCAN_PER_DECADE;
     let n0 = ((w_hi - w_lo) / cell).ceil().max(4.0) as usize;
     let mut pts = Vec::with_capacity(4 * n0);
     for i in 0..=n0 {
         check_cancel(cancel)?;
-        pts.push(at(s, w_lo + (w_hi - w_lo) * i as f64 / n0 as f64));
+        pts.push(point(s, scale, w_lo + (w_hi - w_lo) * i as f64 / n0 as f64, gs));
     }
+    bisect_cells(s, scale, pts, gs, cancel)
+}
+
+/// H and its parts at w.
+fn point(s: &mut Shooter<'_>, scale: &Scale, w: f64, gs: f64) -> Point {
+    let shot = s.h(scale.c(w));
+    Point {
+        w,
+        h: shot.h,
+        f: shot.f,
+        g: gs * shot.a_s,
+    }
+}
+
+/// The number of sign changes of H along `pts`.
+fn sign_changes(pts: &[Point]) -> usize {
+    pts.windows(2).filter(|p| (p[0].h < 0.0) != (p[1].h < 0.0)).count()
+}
+
+/// Bisects every cell of `pts` whose bound [F₀ − G₁, F₁ − G₀] on H includes 0, down to
+/// [`SCAN_MIN_CELL`] or [`SCAN_MAX`] shots of `s`.
+fn bisect_cells(
+    s: &mut Shooter<'_>,
+    scale: &Scale,
+    mut pts: Vec<Point>,
+    gs: f64,
+    cancel: Option<&AtomicBool>,
+) -> Result<Vec<Point>> {
     loop {
         let mut next = Vec::with_capacity(2 * pts.len());
         let mut split = false;
@@ -311,7 +375,7 @@ fn scan(
             let (lo, hi) = (p0.f - p1.g, p1.f - p0.g);
             if lo < 0.0 && hi > 0.0 && p1.w - p0.w > SCAN_MIN_CELL {
                 check_cancel(cancel)?;
-                next.push(at(s, 0.5 * (p0.w + p1.w)));
+                next.push(point(s, scale, 0.5 * (p0.w + p1.w), gs));
                 split = true;
             }
         }
