@@ -210,6 +210,11 @@ pub const ERROR_BAR_WORST_RATIO: f64 = 0.5;
 /// honest error bars").
 pub const ADHESION_ERROR_SAFETY: f64 = 4.0;
 
+/// The adhesive a_r at the default resolution against twice the resolution in both directions
+/// at tiny loads with strong adhesion (system 2, model 4, p* ≤ 1e-7, `tests/adhesion.rs`;
+/// measured 2.3e-5 to 5.4e-5).
+pub const TINY_LOAD_REFINEMENT_REL: f64 = 1e-3;
+
 /// The step count of the error estimate's coarser run relative to the solve's, calibrated
 /// with [`ADHESION_ERROR_SAFETY`]: 2/3, not 1/2, whose nodes would be every other node of the
 /// solve's and share its alignment with the march's features (the onset of the wall, the

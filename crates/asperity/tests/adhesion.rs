@@ -246,6 +246,40 @@ fn hard_cases_converge_or_say_why() {
 }
 
 #[test]
+fn tiny_loads_with_strong_adhesion_converge_and_refine() {
+    // system 2, model 4 (σ_a capped), thin slabs, p* ≤ 1e-7: the root sits at C = γ(q_L) ≈ 0,
+    // where a wall starting from the delta at the first step made H(C) jump (not converged,
+    // |γ(q_s)/γ_s − 1| of 1e-2 to 0.3 at the best root). Each converges, and a_r agrees with a
+    // run at twice the resolution in both directions.
+    for (t, frac, p) in [(0.1, 0.8, 1e-8), (0.15, 1.0, 1e-9), (0.2, 1.5, 1e-7)] {
+        let mut s = system(2, 4);
+        s.thickness_qr = t;
+        s.gamma *= frac;
+        s.pressure = p;
+        let acc = AdhesionAccuracy::default();
+        let sol = adhesion::solve(&s, &acc, None, None).unwrap();
+        assert!(
+            sol.residual <= acc.tol,
+            "t {t} γ×{frac} p* {p}: residual {}",
+            sol.residual
+        );
+        let fine = AdhesionAccuracy {
+            steps_per_ln_q: 2.0 * acc.steps_per_ln_q,
+            points_per_width: 2.0 * acc.points_per_width,
+            ..acc
+        };
+        let f = adhesion::solve(&s, &fine, None, None).unwrap();
+        eprintln!("t {t} γ×{frac} p* {p}: a_r {} vs {} (2x finer)", sol.a_r, f.a_r);
+        assert!(
+            (sol.a_r / f.a_r - 1.0).abs() < TINY_LOAD_REFINEMENT_REL,
+            "t {t} γ×{frac} p* {p}: {} vs {}",
+            sol.a_r,
+            f.a_r
+        );
+    }
+}
+
+#[test]
 fn sweep_across_the_thin_slab_transition() {
     // system 2 at t·q_r = 0.15: contact jumps from ~1 % (adhesionless) to ~40 % at small load;
     // the loading branch is followed load by load with no NaN, a_r rising and ū falling
