@@ -208,20 +208,7 @@ pub(super) fn find_roots(
         if sign_changes(&fp) < count {
             fp = bisect_cells(&mut fine, &scale, fp, gs, cancel)?;
         }
-        for k in 0..fp.len() - 1 {
-            if (fp[k].h < 0.0) != (fp[k + 1].h < 0.0) {
-                roots.push(refine(
-                    &mut fine,
-                    &scale,
-                    fp[k].w,
-                    fp[k].h,
-                    fp[k + 1].w,
-                    fp[k + 1].h,
-                    tol,
-                    cancel,
-                )?);
-            }
-        }
+        refine_sign_changes(&mut fine, &scale, &fp, tol, cancel, &mut roots)?;
         floor = hi;
         ri += 1;
     }
@@ -233,20 +220,7 @@ pub(super) fn find_roots(
     if !alternate {
         roots.clear();
         let fp = scan(&mut fine, &scale, w_lo, w_hi, gs, cancel)?;
-        for k in 0..fp.len() - 1 {
-            if (fp[k].h < 0.0) != (fp[k + 1].h < 0.0) {
-                roots.push(refine(
-                    &mut fine,
-                    &scale,
-                    fp[k].w,
-                    fp[k].h,
-                    fp[k + 1].w,
-                    fp[k + 1].h,
-                    tol,
-                    cancel,
-                )?);
-            }
-        }
+        refine_sign_changes(&mut fine, &scale, &fp, tol, cancel, &mut roots)?;
     }
     if std::env::var_os("ASPERITY_DEBUG").is_some() {
         eprintln!(
@@ -384,6 +358,23 @@ fn bisect_cells(
             return Ok(pts);
         }
     }
+}
+
+/// Every sign change of H along `pts` refined (see [`refine`]) and appended to `roots`.
+fn refine_sign_changes(
+    s: &mut Shooter<'_>,
+    scale: &Scale,
+    pts: &[Point],
+    tol: f64,
+    cancel: Option<&AtomicBool>,
+    roots: &mut Vec<Root>,
+) -> Result<()> {
+    for p in pts.windows(2) {
+        if (p[0].h < 0.0) != (p[1].h < 0.0) {
+            roots.push(refine(s, scale, p[0].w, p[0].h, p[1].w, p[1].h, tol, cancel)?);
+        }
+    }
+    Ok(())
 }
 
 /// Brent's method in w on a bracket [a, b] with H(a)·H(b) < 0, to |H| ≤ tol·a_r(q_s) (a
