@@ -2,14 +2,14 @@
 //!
 //! [`node_results`] evaluates [`crate::theory::engine::evaluate`] at every p* of an ascending
 //! list with lean options (no Pr table, no resolution record, the ODE at the energy route's
-//! tolerance [`ENERGY_RTOL`]). With adhesion every [`ANCHOR_STRIDE`]-th load (an anchor) scans
-//! for every branch (`theory::adhesion`); a load between two anchors with the same number of branches
-//! tracks its lower neighbour's roots (a warm start, falling back to the scan when a root is
-//! not where it was or the roots no longer alternate in sign), and every load between anchors
-//! with different numbers (an edge of a hysteresis window) scans too. Anchors run in parallel, then the stretches between them:
-//! which load starts from which is fixed by the list, so results do not depend on the thread
-//! count. A window that opens and closes between two anchors (narrower than four load steps)
-//! is not seen.
+//! tolerance [`ENERGY_RTOL`]). With adhesion every [`ANCHOR_STRIDE`]-th load (an anchor)
+//! scans for every branch (`theory::adhesion`); a load between two anchors with the same
+//! number of branches tracks its lower neighbour's roots (a warm start, falling back to the
+//! scan when a root is not where it was or the roots no longer alternate in sign), and every
+//! load between anchors with different numbers (an edge of a hysteresis window) scans too.
+//! Anchors run in parallel, then the stretches between them: which load starts from which is
+//! fixed by the list, so results do not depend on the thread count. A window that opens and
+//! closes between two anchors (narrower than four load steps) is not seen.
 //! [`energies`] gives U* = U/(E*ḡh_rms) [S-11] at those loads, the input of the energy route to
 //! the mean gap [S-12] ([`crate::theory::gap`]) and of [`crate::theory::sweep`].
 //!
@@ -62,8 +62,8 @@ fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
 
 /// Every this many loads (by index in the ascending list) the adhesive solver scans for every
 /// branch; between two such anchors that have the same number of branches, each load tracks
-/// the previous one's roots (2–4 marches each instead of 10–20 marches' worth for a scan). The anchors do not
-/// depend on the thread count, so neither do the results.
+/// the previous one's roots (2–4 marches each instead of 10–20 marches' worth for a scan).
+/// The anchors do not depend on the thread count, so neither do the results.
 pub const ANCHOR_STRIDE: usize = 4;
 
 /// One load's outcome: the evaluation, or why its solver did not converge.
@@ -84,14 +84,13 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
             Err(e) => Err(e),
         }
     };
+    // one load scanned for every branch
+    let scanned = |p: f64| -> Result<NodeResult> {
+        check_cancel(cancel)?;
+        keep(evaluate_node(scene, p, &opts, None, cancel), p)
+    };
     if scene.gamma <= 0.0 || ps.len() <= ANCHOR_STRIDE {
-        return ps
-            .par_iter()
-            .map(|&p| {
-                check_cancel(cancel)?;
-                keep(evaluate_node(scene, p, &opts, None, cancel), p)
-            })
-            .collect();
+        return ps.par_iter().map(|&p| scanned(p)).collect();
     }
     // anchors: every ANCHOR_STRIDE-th load and the last, each with a full root scan
     let n = ps.len();
@@ -99,13 +98,7 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
         .step_by(ANCHOR_STRIDE)
         .chain((!(n - 1).is_multiple_of(ANCHOR_STRIDE)).then_some(n - 1))
         .collect();
-    let anchor_results: Vec<NodeResult> = anchors
-        .par_iter()
-        .map(|&i| {
-            check_cancel(cancel)?;
-            keep(evaluate_node(scene, ps[i], &opts, None, cancel), ps[i])
-        })
-        .collect::<Result<_>>()?;
+    let anchor_results: Vec<NodeResult> = anchors.par_iter().map(|&i| scanned(ps[i])).collect::<Result<_>>()?;
     // the loads between two anchors: tracked from the lower anchor where both anchors have
     // the same number of branches, each scanned in full otherwise (an edge of a window)
     let count = |r: &NodeResult| r.as_ref().ok().map(|e| e.branches.len().max(1));
@@ -118,18 +111,18 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
             let track = count(&rs[0]).is_some() && count(&rs[0]) == count(&rs[1]);
             let mut out: Vec<NodeResult> = Vec::with_capacity(ij[1] - ij[0] - 1);
             for &p in &ps[ij[0] + 1..ij[1]] {
-                check_cancel(cancel)?;
                 let r = if track {
+                    check_cancel(cancel)?;
                     let prev = match out.last() {
                         Some(Ok(e)) => Some(e),
                         Some(Err(_)) => None,
                         None => rs[0].as_ref().ok(),
                     };
-                    evaluate_node(scene, p, &tracked, prev, cancel)
+                    keep(evaluate_node(scene, p, &tracked, prev, cancel), p)?
                 } else {
-                    evaluate_node(scene, p, &opts, None, cancel)
+                    scanned(p)?
                 };
-                out.push(keep(r, p)?);
+                out.push(r);
             }
             Ok(out)
         })

@@ -128,7 +128,7 @@ const FIRST_PIECE: f64 = 1e-6;
 /// A wall that grows past 1/`ONSET_GROWTH` times its value in one step (from zero, or from
 /// a small positive γ at the step's start) follows the square root in pieces like an onset:
 /// the limit C → 0 of γ(q_L) = C is then the same from both sides.
-pub(super) const ONSET_GROWTH: f64 = 0.5;
+const ONSET_GROWTH: f64 = 0.5;
 
 /// Points of the shift's Lagrange interpolation: the error per shift is O(h⁸ ∂⁸Pr), ~1e-9 of
 /// Pr at 10 points per width (4 points gave ~1e-5 per shift, ~1e-3 after a march).
