@@ -113,6 +113,7 @@ fn run_keys() {
                     "branch",
                     "elastic_energy",
                     "gamma_coarse",
+                    "residual",
                     "mean_gap_rel",
                     "mean_gap_reversible_rel",
                     "sigma_a",

@@ -215,6 +215,13 @@ pub const ADHESION_ERROR_SAFETY: f64 = 4.0;
 /// measured 2.3e-5 to 5.4e-5).
 pub const TINY_LOAD_REFINEMENT_REL: f64 = 1e-3;
 
+/// The unloading branch's a_r at one load against the straight line (in ln p*) through its
+/// neighbours at ±10 %, across a load where the wall's onset crosses the first resolution
+/// node (system 2, model 3, t·q_r = 0.1, 0.8 γ_s, p* ≈ 1.2e-7, `tests/adhesion.rs`; the
+/// branch is flat there: a_r changes by 1e-6 relative between the neighbours). Before the
+/// onset was judged from the wall's own γ the root fell onto a jump of H and a_r was 2 % off.
+pub const ONSET_THRESHOLD_SMOOTH_REL: f64 = 1e-5;
+
 /// The step count of the error estimate's coarser run relative to the solve's, calibrated
 /// with [`ADHESION_ERROR_SAFETY`]: 2/3, not 1/2, whose nodes would be every other node of the
 /// solve's and share its alignment with the march's features (the onset of the wall, the

@@ -280,6 +280,39 @@ fn tiny_loads_with_strong_adhesion_converge_and_refine() {
 }
 
 #[test]
+fn every_branch_is_smooth_across_an_onset_threshold() {
+    // system 2, model 3, t·q_r = 0.1, 0.8 γ_s inside its hysteresis window: near p* = 1.2e-7
+    // the unloading root's wall turns on right at the first resolution node. The step after it
+    // used to judge the onset from a γ of the other sign than the one that had set the wall,
+    // H(C) jumped there, and the root fell onto the jump (a_r 2 % low, |γ(q_s)/γ_s − 1| of 3e-3
+    // unchecked, the unloading mean gap lost). Every branch meets the tolerance, and the
+    // unloading a_r lies on the line through its neighbours.
+    let mut s = system(2, 3);
+    s.thickness_qr = 0.1;
+    s.gamma *= 0.8;
+    let acc = AdhesionAccuracy::default();
+    let upper: Vec<f64> = [1.1e-7, 1.215e-7, 1.343e-7]
+        .iter()
+        .map(|&p| {
+            s.pressure = p;
+            let sol = adhesion::solve(&s, &acc, None, None).unwrap();
+            assert_eq!(sol.branches.len(), 3, "p* {p}: {:?}", sol.branches);
+            for b in &sol.branches {
+                assert!(b.residual <= acc.tol, "p* {p}: {b:?}");
+            }
+            sol.unloading_a_r.unwrap()
+        })
+        .collect();
+    let (l0, l1, l2) = (1.1e-7f64.ln(), 1.215e-7f64.ln(), 1.343e-7f64.ln());
+    let line = upper[0] + (upper[2] - upper[0]) * (l1 - l0) / (l2 - l0);
+    assert!(
+        (upper[1] / line - 1.0).abs() < ONSET_THRESHOLD_SMOOTH_REL,
+        "{upper:?}: {} off the line",
+        upper[1] / line - 1.0
+    );
+}
+
+#[test]
 fn sweep_across_the_thin_slab_transition() {
     // system 2 at t·q_r = 0.15: contact jumps from ~1 % (adhesionless) to ~40 % at small load;
     // the loading branch is followed load by load with no NaN, a_r rising and ū falling
@@ -429,8 +462,9 @@ fn branch_census() {
                         }
                     };
                     total_shots += sol.iterations;
+                    let worst = sol.branches.iter().map(|b| b.residual).fold(0.0, f64::max);
                     println!(
-                        "m {model} t {t} g {frac} p {p:e}: {} {:?} shots {} {ms:.0} ms",
+                        "m {model} t {t} g {frac} p {p:e}: {} {:?} worst residual {worst:.1e} shots {} {ms:.0} ms",
                         sol.branches.len(),
                         sol.branches
                             .iter()

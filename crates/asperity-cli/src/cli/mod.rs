@@ -259,7 +259,7 @@ pub struct RunOutput {
     pub unloading_a_r: Option<f64>,
     /// Every branch at this load, lowest a_r first: branch ("loading", "unstable",
     /// "unloading"), stable, a_r, sigma_a, gamma_coarse (γ(q_L)/γ_s), elastic_energy,
-    /// mean_gap_rel, mean_gap_reversible_rel. Empty without adhesion.
+    /// residual (the branch's |γ(q_s)/γ_s − 1|), mean_gap_rel, mean_gap_reversible_rel. Empty without adhesion.
     pub branches: Vec<RunBranch>,
     /// Inside a hysteresis window (two stable branches at this load): p* above which the
     /// loading branch no longer exists (jump into contact); null outside a window or when
@@ -283,7 +283,7 @@ pub struct RunOutput {
 /// One branch in `run`'s `branches`: its state and its mean gap.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct RunBranch {
-    /// branch, stable, a_r, sigma_a, gamma_coarse, elastic_energy.
+    /// branch, stable, a_r, sigma_a, gamma_coarse, elastic_energy, residual.
     #[serde(flatten)]
     pub state: asperity::theory::adhesion::BranchState,
     /// ū/h_rms of this branch followed from this load up to full contact, by the reported

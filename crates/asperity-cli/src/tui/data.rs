@@ -417,6 +417,7 @@ mod tests {
             a_r,
             sigma_a: 0.3,
             gamma_coarse: 0.5,
+            residual: 0.0,
             elastic_energy: 1e-4,
         }
     }

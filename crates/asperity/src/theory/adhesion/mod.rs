@@ -252,6 +252,8 @@ pub struct BranchState {
     pub gamma_coarse: f64,
     /// U (J/m²) of the branch [S-11, S-14].
     pub elastic_energy: f64,
+    /// The branch's own self-consistency residual |γ(q_s)/γ_s − 1| at its root.
+    pub residual: f64,
 }
 /// Propagates Pr through the scene's resolution with a prescribed wall σ_a*(q) (reduced,
 /// evaluated at the nodes q_k; the wall moves linearly in v between them) and no

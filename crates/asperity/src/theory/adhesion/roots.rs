@@ -9,7 +9,8 @@
 //!
 //! 1. scan H at [`SCAN_PER_DECADE`] points per decade of |C| on a grid of half the requested
 //!    resolution (a quarter of the cost), bisect every cell that may hold a root (a bound from
-//!    the monotone parts of H, see `scan`), and keep every sign change;
+//!    the monotone parts of H, see `scan`, unless H's curvature next to a narrow cell rules
+//!    it out, see `smooth_cell`), and keep every sign change;
 //! 2. take H at the requested resolution at the ends of each sign-change cell, widening the
 //!    cell through the scan points (and merging it with the next) until H has the coarse
 //!    scan's sign at both ends; where the region then shows fewer sign changes than the coarse
@@ -347,7 +348,7 @@ fn bisect_cells(
             }
             let (p0, p1) = (pts[i], pts[i + 1]);
             let (lo, hi) = (p0.f - p1.g, p1.f - p0.g);
-            if lo < 0.0 && hi > 0.0 && p1.w - p0.w > SCAN_MIN_CELL {
+            if lo < 0.0 && hi > 0.0 && p1.w - p0.w > SCAN_MIN_CELL && !smooth_cell(&pts, i) {
                 check_cancel(cancel)?;
                 next.push(point(s, scale, 0.5 * (p0.w + p1.w), gs));
                 split = true;
@@ -357,6 +358,45 @@ fn bisect_cells(
         if !split {
             return Ok(pts);
         }
+    }
+}
+
+/// Cells narrower than this in w (a factor 1.65 in C) may be left unsplit on the curvature
+/// test of [`smooth_cell`]; wider ones only on the monotone bound.
+const CURVATURE_CELL: f64 = 0.5;
+/// Safety factor on the curvature estimate of [`smooth_cell`].
+const CURVATURE_SAFETY: f64 = 4.0;
+
+/// Whether cell i of `pts` (narrower than [`CURVATURE_CELL`]) can hold no root beyond what
+/// its end values show, judging H'' by the largest second difference K of H at the cell's
+/// ends and next to them (four neighbouring points at least): with |H''| ≤ K, H differs from
+/// the chord by at most Kδ²/8 on a cell of width δ, so a cell whose ends have one sign holds
+/// no pair of roots while min|H₀|, |H₁| > S·Kδ²/8, and a cell with a sign change holds one
+/// root (H monotone) while |H₁ − H₀| > S·Kδ². S = [`CURVATURE_SAFETY`].
+///
+/// The monotone bound [F₀ − G₁, F₁ − G₀] alone cannot rule out a pair where H is small
+/// against the rise of F and G (tiny loads with strong adhesion, where H ≈ 1e-3 γ_s while F
+/// and G each rise by 0.4 γ_s: every cell was bisected down to [`SCAN_MIN_CELL`]).
+fn smooth_cell(pts: &[Point], i: usize) -> bool {
+    let delta = pts[i + 1].w - pts[i].w;
+    if delta > CURVATURE_CELL || i == 0 || i + 2 >= pts.len() {
+        return false;
+    }
+    let d2 = |j: usize| -> f64 {
+        let (a, b, c) = (pts[j - 1], pts[j], pts[j + 1]);
+        2.0 * ((c.h - b.h) / (c.w - b.w) - (b.h - a.h) / (b.w - a.w)) / (c.w - a.w)
+    };
+    let lo = i.saturating_sub(1).max(1);
+    let hi = (i + 2).min(pts.len() - 2);
+    let k = (lo..=hi).map(|j| d2(j).abs()).fold(0.0, f64::max);
+    if !k.is_finite() {
+        return false;
+    }
+    let (h0, h1) = (pts[i].h, pts[i + 1].h);
+    if (h0 < 0.0) == (h1 < 0.0) {
+        h0.abs().min(h1.abs()) > CURVATURE_SAFETY * k * delta * delta / 8.0
+    } else {
+        (h1 - h0).abs() > CURVATURE_SAFETY * k * delta * delta
     }
 }
 

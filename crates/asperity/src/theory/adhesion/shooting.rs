@@ -97,21 +97,29 @@ impl Marcher<'_> {
         let (mut a_prev, mut a) = (1.0f64, 1.0f64);
         let mut energy = 0.0f64;
         let mut cur: Cursor = self.start(coef.node(0, c));
+        // γ that set the wall at the current node (C at the first): the next step's onset
+        // is judged from it, so that the wall at a node and the onset after it agree (the
+        // recorded γ, from the step's actual end, can differ in sign near a threshold, and a
+        // step whose wall starts just above zero would then grow from its start while one
+        // just below waited for the onset: a jump of H in C)
+        let mut g_node = c;
         for k in 0..k_steps {
             let e = grid.steps[k].e;
-            let g0 = gamma_raw(c, energy, a);
-            let wall_for = |a_end: f64| -> f64 {
+            let g0 = g_node;
+            // γ at the step's end for a given end value of a_r
+            let end_gamma = |a_end: f64| -> f64 {
                 let am = 0.5 * (a + a_end);
-                coef.node(k + 1, gamma_raw(c, energy + am * model.w(am) * e, a_end))
+                gamma_raw(c, energy + am * model.w(am) * e, a_end)
             };
+            let wall_for = |a_end: f64| coef.node(k + 1, end_gamma(a_end));
             // γ at the step's end cannot turn positive (ā W(ā) ≤ 1): no wall, no trial
             // where γ (linear in ln q over the step) turns positive, if it does in this step
             let onset_for = |a_end: f64| -> Option<f64> {
-                let am = 0.5 * (a + a_end);
-                let g1 = gamma_raw(c, energy + am * model.w(am) * e, a_end);
+                let g1 = end_gamma(a_end);
                 (g0 <= 0.0 && g1 > 0.0).then(|| g0 / (g0 - g1))
             };
             let wall = if g0 <= 0.0 && c + energy + e <= 0.0 {
+                g_node = end_gamma(a);
                 (0.0, None)
             } else {
                 // predictor–corrector: a trial with the wall of the extrapolated end value
@@ -120,6 +128,7 @@ impl Marcher<'_> {
                 let guess = if a_prev > 0.0 { (a * a / a_prev).min(1.0) } else { a };
                 let end = self.trial(&cur, wall_for(guess), onset_for(guess));
                 self.trials += 1;
+                g_node = end_gamma(end);
                 (wall_for(end), onset_for(end))
             };
             let a_next = self.step_onset(&mut cur, wall.0, wall.1, true);

@@ -103,6 +103,7 @@ fn branch_state(scene: &Scene, grid: &Grid, r: &Root, branch: Branch) -> BranchS
         sigma_a: sigma_at(scene, q_s, rec.gamma_nodes.last().copied().unwrap_or(0.0)),
         gamma_coarse: r.c / scene.gamma,
         elastic_energy: rec.energy - a * scene.gamma,
+        residual: r.h_rel,
     }
 }
 
