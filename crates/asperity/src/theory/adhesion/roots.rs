@@ -433,8 +433,11 @@ fn refine(
 ) -> Result<Root> {
     let stable = ha < 0.0;
     let gs = scale_gamma(s);
-    // (w, H, a_r(q_s)); a_r unknown (NaN) for the bracket's given ends
+    // (w, H, a_r(q_s)); a_r unknown (NaN) for the bracket's given ends. Every shot is
+    // recorded (the record costs a few vectors, a march to repeat costs ~1 ms): the best one's
+    // record is the root's
     let (mut pa, mut pb) = ((a, ha, f64::NAN), (b, hb, f64::NAN));
+    let mut records: Vec<(f64, Shot)> = Vec::new();
     if pa.1.abs() < pb.1.abs() {
         std::mem::swap(&mut pa, &mut pb);
     }
@@ -468,8 +471,11 @@ fn refine(
         } else {
             bisected = false;
         }
-        let shot = s.h(scale.c(x));
+        s.shots += 1;
+        let shot = s.m.shoot(&s.coef, scale.c(x), true);
         let px = (x, shot.h, shot.a_s);
+        records.retain(|r| r.0 == pa.0 || r.0 == pb.0);
+        records.push((x, shot));
         d = c;
         pc = pb;
         if (fa < 0.0) != (px.1 < 0.0) {
@@ -481,9 +487,13 @@ fn refine(
             std::mem::swap(&mut pa, &mut pb);
         }
     }
-    let coef = &s.coef;
-    let shot = s.m.shoot(coef, scale.c(pb.0), true);
-    s.shots += 1;
+    let shot = match records.into_iter().find(|r| r.0 == pb.0) {
+        Some((_, shot)) => shot,
+        None => {
+            s.shots += 1;
+            s.m.shoot(&s.coef, scale.c(pb.0), true)
+        }
+    };
     let h_rel = (shot.h / (gs * shot.a_s.max(1e-300))).abs();
     Ok(Root {
         c: shot.c,
