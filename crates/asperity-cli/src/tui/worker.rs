@@ -794,7 +794,7 @@ mod tests {
     #[ignore = "slow (~30 s on a loaded 2-core machine: a hard adhesive case); cargo test -- --ignored"]
     fn a_point_without_error_bar_is_shown_with_the_reason() {
         // system II, t·q_r = 0.1, p* = 1e-5: the fixed point converges but neither
-        // half-resolution check does (the engine refuses; `run` prints the converged a_r in its
+        // resolution check does (the engine refuses; `run` prints the converged a_r in its
         // message). The explorer shows that a_r, without an error bar, and says why.
         let mut scene = asperity::input::preset::Preset::resolve("system-2")
             .unwrap()
@@ -817,7 +817,7 @@ mod tests {
         assert!((pd.a_r - quoted).abs() < 1e-6, "{} vs {quoted}", pd.a_r);
         assert!(pd.error_estimate.is_nan());
         assert!(pd.branch.ends_with("no error bar"), "{}", pd.branch);
-        assert!(msg.contains("neither half-resolution check"), "{msg}");
+        assert!(msg.contains("neither resolution check"), "{msg}");
     }
 
     #[test]

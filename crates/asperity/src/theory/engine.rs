@@ -20,9 +20,9 @@ pub struct Options {
     pub sigma_max: Option<f64>,
     /// Accuracy of the adhesive solver (used when γ_s > 0).
     pub adhesion: AdhesionAccuracy,
-    /// Estimate the adhesive solver's discretisation error with two more solves, each at half
-    /// of one resolution (about +60 % time); without it `error_estimate` is the fixed-point
-    /// residual.
+    /// Estimate the adhesive solver's discretisation error with two more solves, one at 3/2 of
+    /// the steps and one at half the points per width (about +50 % time); without it
+    /// `error_estimate` is the fixed-point residual.
     pub adhesion_error_estimate: bool,
 }
 
@@ -222,9 +222,9 @@ fn evaluate_adhesive(
     let warm_sol = warm.and_then(|w| w.adhesive.as_deref());
     let sol = adhesion::solve(scene, &opts.adhesion, warm_sol, cancel)?;
     let error_estimate = if opts.adhesion_error_estimate {
-        // coarsen each resolution in turn (their errors need not have the same sign, so one
-        // combined coarsening can hide both): S·(|a − a(2/3 steps)| + |a − a(points/2)|). For
-        // the second-order march these differences are 1.25× and 3× the errors they measure;
+        // probe each resolution in turn (their errors need not have the same sign, so one
+        // combined change can hide both): S·(|a − a(3/2 steps)| + |a − a(points/2)|). For
+        // the second-order march these differences are 0.56× and 3× the errors they measure;
         // S = 4 (`tolerances::ADHESION_ERROR_SAFETY`) covers the pre-asymptotic scenes where
         // they understate them (measured against the oracle of `tests/adhesion_oracle.rs` and
         // 4× finer runs)
@@ -259,7 +259,7 @@ fn evaluate_adhesive(
         return Err(Error::NotConverged {
             solver: "adhesive theory".into(),
             reason: format!(
-                "the fixed point converged (a_r = {:.6}, {} branch) but neither half-resolution \
+                "the fixed point converged (a_r = {:.6}, {} branch) but neither resolution \
                  check did, so its discretisation error cannot be estimated: the state sits on the \
                  edge of a jump into contact, where the result depends on the grid; try a nearby \
                  p*, t or gamma",

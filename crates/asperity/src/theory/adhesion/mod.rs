@@ -31,8 +31,10 @@
 //! σ_a ≡ const is reproduced to round-off (a_r is the spectral integral of the series; the
 //! trapezoid rule would be O(h²) because Pr'(wall) ≠ 0); a moving wall is second order in the
 //! step (measured order 2.0, `tests/adhesion.rs`). A wall receding into the distribution
-//! (c < 0) is shifted first and then held (first order; the growing weights e^{2|c|y} are
-//! avoided).
+//! (c < 0) is Strang-split: half a shift, the heat step with the wall held, the other half
+//! (second order; the growing weights e^{2|c|y} are avoided). Where a wall runs away faster
+//! than the grid resolves its image weight e^{−2cy} (2c·h > 2, right after an onset, where
+//! σ_a ∝ √γ starts at infinite speed) the grid is refined first.
 //!
 //! Δv = W^{2α}(a)·∫_step f²q²dm/(4ḡ²) by RK4 in the variance measure B with a(v) from the
 //! loaded coefficients. While the wall has not moved since the start (σ_a constant, in
@@ -71,7 +73,8 @@
 //! # Files
 //!
 //! `grid` (resolution steps), `heat` (the exact drift–diffusion step with an absorbing wall),
-//! `propagator` (the march for given walls, one step at a time),
+//! `propagator` (the march for given walls, one step at a time), `regrid` (shift, refine and
+//! re-offset the march's grid),
 //! `walls` (σ_a(q) for γ(q)), `shooting` (the forward march for given C), `roots` (all roots
 //! of H), `strategy` (the branch chosen and the solution assembled), and this module
 //! (accuracy, result types, entry points).
@@ -79,6 +82,7 @@
 mod grid;
 mod heat;
 mod propagator;
+mod regrid;
 mod roots;
 mod shooting;
 mod strategy;
