@@ -173,7 +173,10 @@ fn run_set(seed: u64, count: usize, res: &Resolution) {
 
 #[test]
 fn error_estimate_covers_the_true_error_on_a_small_seeded_set() {
-    run_set(13, 5, &oracle_resolution());
+    // the oracle refined as in the large set: at its base resolution its own error (up to
+    // ±7.8e-5 here) exceeded the fast solver's, and a scene's 3.75e-5 "error" against it was
+    // the oracle's (1.9e-5 refined; 1.0e-5 against a 4× finer fast run)
+    run_set(13, 5, &oracle_resolution().refined(2.0));
 }
 
 #[test]

@@ -197,6 +197,8 @@ impl Model {
         let w = self.w(a).max(0.0);
         if self.alpha == 0.5 {
             w
+        } else if self.alpha == 0.25 {
+            w.sqrt()
         } else {
             w.powf(2.0 * self.alpha)
         }

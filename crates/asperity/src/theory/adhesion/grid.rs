@@ -16,6 +16,51 @@ pub(super) struct Step {
     pub(super) b: f64,
     /// ∫_step (qE*f/4) dm (J/m²): full-contact elastic energy of the step's modes.
     pub(super) e: f64,
+    /// ln of the ratio of b's density in ln q at the step's end to that at its start (0 for
+    /// a discrete shell).
+    pub(super) b_slope: f64,
+    /// The same for e.
+    pub(super) e_slope: f64,
+}
+
+impl Step {
+    /// The fraction of the step's b reached where its e reaches the fraction `x_e`, both
+    /// densities taken log-linear in ln q over the step (second order in the step): with
+    /// F_κ(x) = (e^{κx} − 1)/(e^κ − 1) the fraction of a measure whose log-density rises by κ,
+    /// x_b = F_{κ_b}(F_{κ_e}⁻¹(x_e)).
+    ///
+    /// The onset of a wall inside a step is where C + I (linear in the e-measure) turns
+    /// positive, while the march runs in b: in a thin slab's steps the two differ by a few
+    /// per cent of the step (`shooting`).
+    pub(super) fn b_fraction_of_e(&self, x_e: f64) -> f64 {
+        let x_e = x_e.clamp(0.0, 1.0);
+        let x_s = if self.e_slope.abs() < 1e-12 {
+            x_e
+        } else {
+            (x_e * self.e_slope.exp_m1()).ln_1p() / self.e_slope
+        };
+        if self.b_slope.abs() < 1e-12 {
+            x_s
+        } else {
+            ((self.b_slope * x_s).exp_m1() / self.b_slope.exp_m1()).clamp(0.0, 1.0)
+        }
+    }
+
+    /// The inverse of [`Step::b_fraction_of_e`]: the fraction of the step's e reached where
+    /// its b reaches the fraction `x_b`.
+    pub(super) fn e_fraction_of_b(&self, x_b: f64) -> f64 {
+        let x_b = x_b.clamp(0.0, 1.0);
+        let x_s = if self.b_slope.abs() < 1e-12 {
+            x_b
+        } else {
+            (x_b * self.b_slope.exp_m1()).ln_1p() / self.b_slope
+        };
+        if self.e_slope.abs() < 1e-12 {
+            x_s
+        } else {
+            ((self.e_slope * x_s).exp_m1() / self.e_slope.exp_m1()).clamp(0.0, 1.0)
+        }
+    }
 }
 
 /// The step grid of a scene (q nodes and steps).
@@ -60,10 +105,24 @@ pub(super) fn build_grid(scene: &Scene, steps_per_ln_q: f64) -> Grid {
                         f * f * qq * qq / (4.0 * g2)
                     };
                     let efun = |qq: f64| qq * es * slab_factor_at(qq, t) / 4.0;
+                    // log-densities in ln q at the ends (dm/dln q is smooth inside a segment;
+                    // taken just inside it, on the segment's side of a breakpoint)
+                    let slope = |g: &dyn Fn(f64) -> f64| {
+                        let nudge = 1e-9 * (bb - a);
+                        let (qa, qb) = ((a + nudge).exp(), (bb - nudge).exp());
+                        let (da, db) = (g(qa) * sa.dm_dlnq(qa), g(qb) * sa.dm_dlnq(qb));
+                        if da > 0.0 && db > 0.0 {
+                            (db / da).ln()
+                        } else {
+                            0.0
+                        }
+                    };
                     steps.push(Step {
                         q_mid: mid.exp(),
                         b: integ(a, bb, &bfun),
                         e: integ(a, bb, &efun),
+                        b_slope: slope(&bfun),
+                        e_slope: slope(&efun),
                     });
                     q.push(bb.exp());
                 }
@@ -80,6 +139,8 @@ pub(super) fn build_grid(scene: &Scene, steps_per_ln_q: f64) -> Grid {
                     q_mid: m.q,
                     b: f * f * m.q * m.q * m.dm / (4.0 * g2),
                     e,
+                    b_slope: 0.0,
+                    e_slope: 0.0,
                 });
                 q.push(m.q);
             }

@@ -302,6 +302,7 @@ pub fn propagate_with_wall(
         force_grid_from: grid_from_start.then_some(1),
         pressure: scene.pressure,
         trials: 0,
+        step_aw: None,
     };
     let a = m.march(&walls, &onsets);
     Ok((grid.q.clone(), a))

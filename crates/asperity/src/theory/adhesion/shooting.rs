@@ -106,17 +106,52 @@ impl Marcher<'_> {
         for k in 0..k_steps {
             let e = grid.steps[k].e;
             let g0 = g_node;
-            // γ at the step's end for a given end value of a_r
-            let end_gamma = |a_end: f64| -> f64 {
+            // the step's energy ∫ a_r W de: one midpoint term, or the pieces' sum where the
+            // step was split at an onset (`aw`, see `Marcher::step_aw`)
+            let step_energy = |a_end: f64, aw: Option<f64>| -> f64 {
                 let am = 0.5 * (a + a_end);
-                gamma_raw(c, energy + am * model.w(am) * e, a_end)
+                aw.unwrap_or(am * model.w(am)) * e
             };
+            // γ at the step's end for a given end value of a_r (and split energy)
+            let end_gamma_aw =
+                |a_end: f64, aw: Option<f64>| -> f64 { gamma_raw(c, energy + step_energy(a_end, aw), a_end) };
+            let end_gamma = |a_end: f64| end_gamma_aw(a_end, None);
             let wall_for = |a_end: f64| coef.node(k + 1, end_gamma(a_end));
             // γ at the step's end cannot turn positive (ā W(ā) ≤ 1): no wall, no trial
-            // where γ (linear in ln q over the step) turns positive, if it does in this step
+            // where γ turns positive, if it does in this step: where C + I = ∫a_r W de crosses
+            // zero, as a fraction of the step's b (the march's measure; `Step`). (γ = (C + I)/a_r
+            // interpolated linearly put the onset off by the relative fall of a_r in the step.)
+            let step = grid.steps[k];
             let onset_for = |a_end: f64| -> Option<f64> {
                 let g1 = end_gamma(a_end);
-                (g0 <= 0.0 && g1 > 0.0).then(|| g0 / (g0 - g1))
+                (g0 <= 0.0 && g1 > 0.0).then(|| {
+                    // before the onset a_r W falls at the previous step's rate r₁ (a_r falls
+                    // fast there, hardly after it): x_e solves r₀x + r₁x²/2 = −(C + I)/e;
+                    // where that has no root in [0, 1], a_r W at the step's mean
+                    let need = -(c + energy) / e;
+                    let r0 = a * model.w(a);
+                    let r1 = (r0 - a_prev * model.w(a_prev)).min(0.0);
+                    let disc = r0 * r0 + 2.0 * r1 * need;
+                    let x = if r1 < 0.0 && disc >= 0.0 {
+                        need / (0.5 * (r0 + disc.sqrt()))
+                    } else if r0 > 0.0 {
+                        need / r0
+                    } else {
+                        f64::NAN
+                    };
+                    let x_e = if (0.0..=1.0).contains(&x) {
+                        x
+                    } else {
+                        let am = 0.5 * (a + a_end);
+                        let rise = am * model.w(am) * e;
+                        if rise > 0.0 {
+                            -(c + energy) / rise
+                        } else {
+                            0.0
+                        }
+                    };
+                    step.b_fraction_of_e(x_e)
+                })
             };
             let wall = if g0 <= 0.0 && c + energy + e <= 0.0 {
                 g_node = end_gamma(a);
@@ -127,13 +162,13 @@ impl Marcher<'_> {
                 // fixed number of trials keeps H(C) smooth; second order in the step)
                 let guess = if a_prev > 0.0 { (a * a / a_prev).min(1.0) } else { a };
                 let end = self.trial(&cur, wall_for(guess), onset_for(guess));
+                let aw = self.step_aw;
                 self.trials += 1;
-                g_node = end_gamma(end);
-                (wall_for(end), onset_for(end))
+                g_node = end_gamma_aw(end, aw);
+                (coef.node(k + 1, g_node), onset_for(end))
             };
             let a_next = self.step_onset(&mut cur, wall.0, wall.1, true);
-            let am = 0.5 * (a + a_next);
-            energy += am * model.w(am) * e;
+            energy += step_energy(a_next, self.step_aw);
             a_prev = a;
             a = a_next;
             if record {
