@@ -33,34 +33,35 @@ impl Step {
     /// positive, while the march runs in b: in a thin slab's steps the two differ by a few
     /// per cent of the step (`shooting`).
     pub(super) fn b_fraction_of_e(&self, x_e: f64) -> f64 {
-        let x_e = x_e.clamp(0.0, 1.0);
-        let x_s = if self.e_slope.abs() < 1e-12 {
-            x_e
-        } else {
-            (x_e * self.e_slope.exp_m1()).ln_1p() / self.e_slope
-        };
-        if self.b_slope.abs() < 1e-12 {
-            x_s
-        } else {
-            ((self.b_slope * x_s).exp_m1() / self.b_slope.exp_m1()).clamp(0.0, 1.0)
-        }
+        remap(x_e, self.e_slope, self.b_slope)
     }
 
     /// The inverse of [`Step::b_fraction_of_e`]: the fraction of the step's e reached where
     /// its b reaches the fraction `x_b`.
     pub(super) fn e_fraction_of_b(&self, x_b: f64) -> f64 {
-        let x_b = x_b.clamp(0.0, 1.0);
-        let x_s = if self.b_slope.abs() < 1e-12 {
-            x_b
-        } else {
-            (x_b * self.b_slope.exp_m1()).ln_1p() / self.b_slope
-        };
-        if self.e_slope.abs() < 1e-12 {
-            x_s
-        } else {
-            ((self.e_slope * x_s).exp_m1() / self.e_slope.exp_m1()).clamp(0.0, 1.0)
-        }
+        remap(x_b, self.b_slope, self.e_slope)
     }
+}
+
+/// F_κ(x) = (e^{κx} − 1)/(e^κ − 1): the fraction of a measure whose log-density rises by κ
+/// over the step, at the fraction x of the step in ln q.
+fn fraction(x: f64, kappa: f64) -> f64 {
+    if kappa.abs() < 1e-12 {
+        x
+    } else {
+        (kappa * x).exp_m1() / kappa.exp_m1()
+    }
+}
+
+/// F_to(F_from⁻¹(x)), clamped to [0, 1].
+fn remap(x: f64, from: f64, to: f64) -> f64 {
+    let x = x.clamp(0.0, 1.0);
+    let x_s = if from.abs() < 1e-12 {
+        x
+    } else {
+        (x * from.exp_m1()).ln_1p() / from
+    };
+    fraction(x_s, to).clamp(0.0, 1.0)
 }
 
 /// The step grid of a scene (q nodes and steps).
@@ -145,6 +146,35 @@ pub(super) fn build_grid(scene: &Scene, steps_per_ln_q: f64) -> Grid {
                 q.push(m.q);
             }
             Grid { q, steps }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fraction_maps_invert_each_other_and_match_the_measures() {
+        let st = Step {
+            q_mid: 1.0,
+            b: 1.0,
+            e: 1.0,
+            b_slope: 0.7,
+            e_slope: -0.3,
+        };
+        for x in [0.0, 0.1, 0.5, 0.93, 1.0] {
+            assert!((st.e_fraction_of_b(st.b_fraction_of_e(x)) - x).abs() < 1e-14, "{x}");
+            // the b fraction where e reaches x, by quadrature of the densities e^{κs}
+            let x_s = (x * (-0.3f64).exp_m1()).ln_1p() / -0.3;
+            let n = 20_000;
+            let b_num: f64 = (0..n)
+                .map(|i| ((i as f64 + 0.5) / n as f64 * x_s * 0.7).exp())
+                .sum::<f64>()
+                * x_s
+                / n as f64;
+            let b_all = 0.7f64.exp_m1() / 0.7;
+            assert!((st.b_fraction_of_e(x) - b_num / b_all).abs() < 1e-8, "{x}");
         }
     }
 }
