@@ -142,8 +142,7 @@ impl Marcher<'_> {
                     let x_e = if (0.0..=1.0).contains(&x) {
                         x
                     } else {
-                        let am = 0.5 * (a + a_end);
-                        let rise = am * model.w(am) * e;
+                        let rise = step_energy(a_end, None);
                         if rise > 0.0 {
                             -(c + energy) / rise
                         } else {
