@@ -20,9 +20,10 @@ pub struct Options {
     pub sigma_max: Option<f64>,
     /// Accuracy of the adhesive solver (used when γ_s > 0).
     pub adhesion: AdhesionAccuracy,
-    /// Estimate the adhesive solver's discretisation error with two more solves, one at 3/2 of
-    /// the steps and one at half the points per width (about +50 % time); without it
-    /// `error_estimate` is the fixed-point residual.
+    /// Estimate the adhesive solver's discretisation error with three more solves, warm
+    /// started from the first: at 3/2 and at 2× the steps, and at half the points per width
+    /// (about 1.5× the solve's own time); without it `error_estimate` is the fixed-point
+    /// residual.
     pub adhesion_error_estimate: bool,
 }
 
