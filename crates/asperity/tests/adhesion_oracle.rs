@@ -226,13 +226,7 @@ fn agree(scenes: &[Scene], res: &Resolution, fine_too: bool) {
             ));
         }
         if fine_too {
-            let fine = AdhesionAccuracy {
-                steps_per_ln_q: 4.0 * AdhesionAccuracy::default().steps_per_ln_q,
-                points_per_width: 4.0 * AdhesionAccuracy::default().points_per_width,
-                explore_branches: false,
-                ..AdhesionAccuracy::default()
-            };
-            let a = adhesion::solve(s, &fine, None, None).unwrap().a_r;
+            let a = adhesion::solve(s, &four_times_finer(), None, None).unwrap().a_r;
             let e = (a - o.a_r).abs();
             eprintln!("  4x finer: {a:.7}, error {e:.1e} ({:.1e} relative)", e / o.a_r);
             worst_fine = worst_fine.max(e / o.a_r);
@@ -371,6 +365,30 @@ fn oracle_refinement_study() {
     }
 }
 
+/// The fast solver at 4× the default resolution in both directions (one branch).
+fn four_times_finer() -> AdhesionAccuracy {
+    let d = AdhesionAccuracy::default();
+    AdhesionAccuracy {
+        steps_per_ln_q: 4.0 * d.steps_per_ln_q,
+        points_per_width: 4.0 * d.points_per_width,
+        explore_branches: false,
+        ..d
+    }
+}
+
+/// Sorts (estimate/error, scene) lowest first, prints the count below 1 and the lowest five
+/// under `what`, and returns that count.
+fn sort_and_count_misses(ratios: &mut [(f64, String)], what: &str) -> usize {
+    ratios.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let misses = ratios.iter().filter(|r| r.0 < 1.0).count();
+    eprintln!(
+        "{what}: {} points, {misses} missed by the estimate; lowest ratios {:?}",
+        ratios.len(),
+        &ratios[..ratios.len().min(5)]
+    );
+    misses
+}
+
 /// The issue's grid (system II, models 3 and 4, t·q_r = 0.05…0.5, p* = 1e-6…0.1): the oracle's
 /// roots of H at every point, and the fast solver's `error_estimate` against its error from the
 /// oracle wherever it converges. A point counts as a miss when the error exceeds the estimate
@@ -411,13 +429,7 @@ fn fast_solver_on_the_issue_grid() {
                             ratios.push((ev.error_estimate / (err - o.error), format!("model {m}, t {t}, p* {p}")));
                         }
                         // and against a 4× finer fast run, resolved everywhere
-                        let fine = AdhesionAccuracy {
-                            steps_per_ln_q: 4.0 * AdhesionAccuracy::default().steps_per_ln_q,
-                            points_per_width: 4.0 * AdhesionAccuracy::default().points_per_width,
-                            explore_branches: false,
-                            ..AdhesionAccuracy::default()
-                        };
-                        if let Ok(f) = adhesion::solve(&s, &fine, ev.adhesive.as_deref(), None) {
+                        if let Ok(f) = adhesion::solve(&s, &four_times_finer(), ev.adhesive.as_deref(), None) {
                             let e = (ev.stats.a_r - f.a_r).abs();
                             ratios_fine.push((ev.error_estimate / e, format!("model {m}, t {t}, p* {p}")));
                         }
@@ -438,20 +450,9 @@ fn fast_solver_on_the_issue_grid() {
         }
     }
     let converged = points - not_converged;
-    ratios.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let misses = ratios.iter().filter(|r| r.0 < 1.0).count();
-    eprintln!(
-        "{points} points, the fast solver did not converge on {not_converged}; of {converged} converged, {} resolved by the oracle, {misses} missed by the estimate; lowest ratios {:?}",
-        ratios.len(),
-        &ratios[..ratios.len().min(5)]
-    );
-    ratios_fine.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let misses_fine = ratios_fine.iter().filter(|r| r.0 < 1.0).count();
-    eprintln!(
-        "against a 4x finer run: {misses_fine} of {} missed; lowest ratios {:?}",
-        ratios_fine.len(),
-        &ratios_fine[..ratios_fine.len().min(5)]
-    );
+    eprintln!("{points} points, the fast solver did not converge on {not_converged}; of {converged} converged:");
+    let misses = sort_and_count_misses(&mut ratios, "resolved by the oracle");
+    let misses_fine = sort_and_count_misses(&mut ratios_fine, "against a 4x finer run");
     assert!(
         misses as f64 <= (1.0 - ERROR_BAR_COVERAGE) * converged as f64,
         "{ratios:?}"
