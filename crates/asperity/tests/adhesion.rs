@@ -19,6 +19,12 @@ fn system(n: u8, model: u8) -> Scene {
     s
 }
 
+/// a_r(q_s) of the propagator alone with a prescribed wall (`adhesion::propagate_with_wall`).
+fn a_r_at_q_s(s: &Scene, acc: &AdhesionAccuracy, wall: impl Fn(f64) -> f64, from_start: bool) -> f64 {
+    let (_, a) = adhesion::propagate_with_wall(s, acc, wall, from_start).unwrap();
+    *a.last().unwrap()
+}
+
 fn quick() -> Options {
     Options {
         adhesion_error_estimate: false,
@@ -79,11 +85,7 @@ fn moving_wall_converges_with_resolution() {
             points_per_width: 4.0 * k,
             ..AdhesionAccuracy::default()
         };
-        *adhesion::propagate_with_wall(&s, &acc, wall, false)
-            .unwrap()
-            .1
-            .last()
-            .unwrap()
+        a_r_at_q_s(&s, &acc, wall, false)
     };
     let reference = run(32.0);
     let errs: Vec<f64> = [1.0, 2.0, 4.0].iter().map(|&k| (run(k) - reference).abs()).collect();
@@ -109,11 +111,7 @@ fn receding_wall_is_second_order_accurate() {
             points_per_width: 20.0,
             ..AdhesionAccuracy::default()
         };
-        *adhesion::propagate_with_wall(&s, &acc, wall, true)
-            .unwrap()
-            .1
-            .last()
-            .unwrap()
+        a_r_at_q_s(&s, &acc, wall, true)
     };
     let reference = run(384.0);
     for steps in [12.0, 24.0, 48.0] {
@@ -139,11 +137,7 @@ fn a_wall_starting_like_a_square_root_converges_spectrally() {
             points_per_width: ppw,
             ..AdhesionAccuracy::default()
         };
-        *adhesion::propagate_with_wall(&s, &acc, wall, true)
-            .unwrap()
-            .1
-            .last()
-            .unwrap()
+        a_r_at_q_s(&s, &acc, wall, true)
     };
     let reference = run(80.0);
     for ppw in [5.0, 10.0, 20.0] {
