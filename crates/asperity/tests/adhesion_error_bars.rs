@@ -1,6 +1,7 @@
 //! Honest error bars (issue 13 item 6): the adhesive `error_estimate` of `engine::evaluate`
 //! against the true error of a_r, measured two ways on seeded random scenes: against the slow
-//! oracle (`oracle/`) and against a 4× finer run of the fast solver. The estimate must cover
+//! oracle (`oracle/`; only the difference beyond the oracle's own error bar counts) and
+//! against a 4× finer run of the fast solver. The estimate must cover
 //! the error on ≥ 95 % of the scenes and never fall more than 2× below it.
 //!
 //! The default test runs a small seeded set (a few seconds); the measured table of
@@ -105,14 +106,16 @@ fn measure(s: &Scene, res: &Resolution) -> Option<Row> {
 
 /// Ratios estimate/true error (oracle and finer run), printed as a table.
 fn ratios(rows: &[Row]) -> (Vec<f64>, Vec<f64>) {
-    eprintln!("| a_r | estimate | err vs oracle (± oracle) | est/err | err vs 4x finer | est/err |");
+    eprintln!("| a_r | estimate | err vs oracle (± oracle) | est/(err − oracle bar) | err vs 4x finer | est/err |");
     eprintln!("|---|---|---|---|---|---|");
     let mut ro = Vec::new();
     let mut rf = Vec::new();
     for r in rows {
-        // the oracle's own error bar is printed beside: where the error is below it, the
-        // ratio is only a bound
-        let eo = r.err_oracle;
+        // the oracle is not exact: only the part of the difference beyond its own error bar is
+        // charged to the fast solver (as in the grid and 44-scene checks of `adhesion_oracle`);
+        // a difference inside the oracle's bar counts as covered. The 4× finer run below has
+        // no such allowance.
+        let eo = (r.err_oracle - r.oracle_bar).max(0.0);
         ro.push(r.estimate / eo);
         rf.push(r.estimate / r.err_fine);
         eprintln!(
