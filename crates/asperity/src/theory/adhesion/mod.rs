@@ -117,8 +117,9 @@ pub struct AdhesionAccuracy {
 }
 
 impl Default for AdhesionAccuracy {
-    /// The interactive/`run` default: relative error of a_r ~1e-3 against a 4× finer solution
-    /// on systems 1 and 2 (`tests/adhesion.rs`).
+    /// The `run` default (24 steps per ln q, 10 points per width): relative a_r error
+    /// 1e-5–1e-4 against the slow oracle and a 4× finer run on systems I and II, thin slabs
+    /// included (the `ladder` and the oracle tests, BENCHMARKS.md).
     fn default() -> Self {
         AdhesionAccuracy {
             steps_per_ln_q: 24.0,
