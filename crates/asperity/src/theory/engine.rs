@@ -6,6 +6,7 @@ use crate::error::{check_in, Error, Field, Result};
 use crate::input::scene::Scene;
 use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution, Branch, BranchState};
 use crate::theory::persson::{self, Accuracy, ResolutionPoint};
+use rayon::prelude::*;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -246,13 +247,16 @@ fn evaluate_adhesive(
                 Err(e) => Err(e),
             }
         };
-        let mut step_diff: Option<f64> = None;
-        for factor in crate::tolerances::ADHESION_ERROR_STEPS_FACTORS {
-            if let Some(d) = probe(factor, 1.0)? {
-                step_diff = Some(step_diff.map_or(d, |s| s.max(d)));
-            }
-        }
-        let point_diff = probe(1.0, 0.5)?;
+        // the probes are independent solves: run side by side (rayon), combined in a fixed
+        // order, so the estimate does not depend on the number of threads
+        let factors = crate::tolerances::ADHESION_ERROR_STEPS_FACTORS;
+        let settings: Vec<(f64, f64)> = factors.iter().map(|&f| (f, 1.0)).chain([(1.0, 0.5)]).collect();
+        let diffs = settings
+            .par_iter()
+            .map(|&(steps, points)| probe(steps, points))
+            .collect::<Result<Vec<Option<f64>>>>()?;
+        let step_diff = diffs[..factors.len()].iter().flatten().copied().reduce(f64::max);
+        let point_diff = diffs[factors.len()];
         let safety = crate::tolerances::ADHESION_ERROR_SAFETY;
         let residual = sol.residual * sol.a_r;
         match (step_diff, point_diff) {
