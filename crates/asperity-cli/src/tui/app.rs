@@ -172,6 +172,8 @@ pub struct App {
     pub message: Option<Message>,
     /// Generation of the newest request.
     pub gen: u64,
+    /// The load charts' p* range of the last request (see [`sticky_range`]).
+    pub load_range: Option<(f64, f64)>,
     /// The current point (for the current scene, or the last one while computing).
     pub point: Option<Result<PointData>>,
     /// Generation of the request whose reply set [`App::point`].
@@ -247,6 +249,17 @@ pub fn chart_range(p: f64) -> (f64, f64) {
     let a = 10f64.powf(p.log10().floor()).min(1e-3).max(lo);
     let b = 10f64.powf(p.log10().ceil()).max(1.0).min(hi);
     (a, b)
+}
+
+/// The p* range of the load charts after p* moved to `p`: the previous range while it still
+/// holds p (stepping p* then reuses the cached load sweep: on system II's thin slab each
+/// decade boundary crossed cost a new sweep, ~0.85 s, where a step inside the range costs
+/// 0.12–0.17 s), else [`chart_range`] of p (not the union: a wider range costs more loads).
+pub fn sticky_range(prev: Option<(f64, f64)>, p: f64) -> (f64, f64) {
+    match prev {
+        Some((a, b)) if p >= a && p <= b => (a, b),
+        _ => chart_range(p),
+    }
 }
 
 /// Next grid value of a log-stepped parameter: `steps` grid points up (or down) from `x` on
@@ -347,6 +360,7 @@ impl App {
             compare: true,
             message: None,
             gen: 0,
+            load_range: None,
             point: None,
             point_gen: 0,
             sweep: None,
@@ -398,11 +412,13 @@ impl App {
         } else {
             Vec::new()
         };
+        let range = self.range();
+        self.load_range = Some(range);
         Some(Request {
             gen: self.gen,
             source: self.source.clone(),
             scene: self.scene.clone(),
-            range: chart_range(self.scene.pressure),
+            range,
             needs: self.needs(),
             models,
         })
@@ -521,9 +537,9 @@ impl App {
         self.pending
     }
 
-    /// The p* range the load charts show.
+    /// The p* range the load charts show ([`sticky_range`] of the last request's).
     pub fn range(&self) -> (f64, f64) {
-        chart_range(self.scene.pressure)
+        sticky_range(self.load_range, self.scene.pressure)
     }
 
     /// Takes a worker reply: kept only if it belongs to the current scene.
@@ -1452,6 +1468,18 @@ mod tests {
         let mut b = app();
         b.on_key(KeyEvent::new(KeyCode::Char('c'), M::CONTROL));
         assert!(b.quit);
+    }
+
+    #[test]
+    fn the_load_range_stays_while_p_stays_inside_it() {
+        // stepping p* up from 1e-6 keeps 1e-6..1 (the cached sweep), leaving it resets
+        let r = sticky_range(None, 1e-6);
+        assert_eq!(r, chart_range(1e-6));
+        assert_eq!(sticky_range(Some(r), 3e-4), r);
+        assert_eq!(sticky_range(Some(r), 1.0), r);
+        assert_eq!(sticky_range(Some(r), 3.0), chart_range(3.0));
+        assert_eq!(sticky_range(Some(r), 1e-7), chart_range(1e-7));
+        assert_ne!(chart_range(3e-4), r);
     }
 
     #[test]
