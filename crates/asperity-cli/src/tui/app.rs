@@ -253,8 +253,9 @@ pub fn chart_range(p: f64) -> (f64, f64) {
 
 /// The p* range of the load charts after p* moved to `p`: the previous range while it still
 /// holds p (stepping p* then reuses the cached load sweep: on system II's thin slab each
-/// decade boundary crossed cost a new sweep, ~0.85 s, where a step inside the range costs
-/// 0.12–0.17 s), else [`chart_range`] of p (not the union: a wider range costs more loads).
+/// decade boundary crossed cost a new sweep, ~0.85 s, where a step inside the range redraws
+/// every chart in 0.09–0.14 s), else [`chart_range`] of p (not the union: a wider range costs
+/// more loads).
 pub fn sticky_range(prev: Option<(f64, f64)>, p: f64) -> (f64, f64) {
     match prev {
         Some((a, b)) if p >= a && p <= b => (a, b),
