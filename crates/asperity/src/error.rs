@@ -75,6 +75,10 @@ pub enum Field {
     SweepTo,
     /// Number of loads in a sweep.
     SweepPoints,
+    /// Largest ln p* step of a sweep's energy table.
+    SweepStep,
+    /// Relative precision of a sweep's hysteresis-window edges.
+    EdgeRel,
     /// GFMD grid side N.
     Grid,
     /// GFMD relative force residual.
@@ -132,6 +136,8 @@ impl Field {
             Field::SweepFrom => "sweep.from",
             Field::SweepTo => "sweep.to",
             Field::SweepPoints => "sweep.points",
+            Field::SweepStep => "sweep.step_ln",
+            Field::EdgeRel => "sweep.edge_rel",
             Field::Grid => "gfmd.grid",
             Field::GfmdTolerance => "gfmd.tolerance",
             Field::MaxIterations => "gfmd.max_iterations",

@@ -218,6 +218,61 @@ fn tracked_loads_agree_with_full_scans() {
 }
 
 #[test]
+fn tracked_loads_inside_a_window_agree_with_full_scans() {
+    // inside a hysteresis window (system 2, model 3, t·q_r = 0.1, 0.8 γ_s: three branches
+    // from below 1e-6 up to the jump-in at ~2.3e-4) the loads between anchors track three
+    // roots each, from C extrapolated along the sweep (adhesion::solve_continued); every row
+    // against its own full scan at the same (chart) accuracy: both stable branches and the
+    // branch count, and the jump-in marked between the last row with three and the first with
+    // one
+    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+    s.model = Model::named(3).unwrap();
+    s.thickness_qr = 0.1;
+    s.gamma *= 0.8;
+    let spec = SweepSpec {
+        from: 1e-6,
+        to: 1e-3,
+        points: 14,
+    };
+    let opts = Options::chart();
+    let sw = sweep::sweep(&s, &spec, &opts, None).unwrap();
+    let mut scan = opts;
+    scan.accuracy.rtol = gap::ENERGY_RTOL;
+    scan.adhesion.explore_branches = true;
+    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+    for r in &sw.rows {
+        let mut one = s.clone();
+        one.pressure = r.p;
+        let ev = engine::evaluate(&one, &scan).unwrap();
+        assert_eq!(r.branches, ev.branches.len().max(1), "p* {}", r.p);
+        assert!(
+            rel(r.a_r, ev.stats.a_r) < TRACKED_VS_SCANNED_REL,
+            "p* {}: {} vs {}",
+            r.p,
+            r.a_r,
+            ev.stats.a_r
+        );
+        match ev.unloading_a_r {
+            Some(u) => assert!(
+                rel(r.a_r_unloading, u) < TRACKED_VS_SCANNED_REL,
+                "p* {}: {} vs {u}",
+                r.p,
+                r.a_r_unloading
+            ),
+            None => assert!(r.a_r_unloading.is_nan(), "p* {}", r.p),
+        }
+    }
+    assert!(sw.rows[0].branches == 3 && sw.rows[13].branches == 1, "{:?}", sw.rows);
+    let jump = sw.jump_in_pressure.expect("the jump-in lies in the range");
+    let last3 = sw.rows.iter().rposition(|r| r.branches == 3).unwrap();
+    assert!(
+        sw.rows[last3].p < jump && jump < sw.rows[last3 + 1].p,
+        "{jump} {:?}",
+        sw.rows
+    );
+}
+
+#[test]
 fn run_and_sweep_agree_at_small_loads_on_a_thin_slab() {
     // issue 13 item 5: system 2 without adhesion, model 3, t·q_r = 0.1, p* = 1e-7 (the ODE at
     // rtol 1e-7 stepped from q_L to q_r in one go and its cubic interpolant dipped below zero:

@@ -17,8 +17,10 @@
 //! `ASPERITY_PANIC_KEY=C` makes the key C panic (for the test that the terminal is restored
 //! after a panic).
 //!
-//! `ASPERITY_TRACE=FILE` appends one line per generation with the time from the key press to
-//! the first frame showing the current point and to the frame showing every chart.
+//! `ASPERITY_TRACE=FILE` appends lines per generation with the time from the key press to the
+//! first frame showing the current point (`point_drawn_ms`), the load charts of the current
+//! scene (`charts_drawn_ms`), and the frame after which nothing is left to compute
+//! (`all_drawn_ms`: the point refined to full accuracy, the other charts).
 
 pub mod app;
 pub mod charts;
@@ -68,6 +70,7 @@ struct Trace {
     file: Option<std::fs::File>,
     started: Option<(u64, Instant)>,
     point_logged: bool,
+    charts_logged: bool,
 }
 
 impl Trace {
@@ -78,6 +81,7 @@ impl Trace {
             file,
             started: None,
             point_logged: false,
+            charts_logged: false,
         }
     }
 
@@ -92,6 +96,11 @@ impl Trace {
         if !self.point_logged && app.point.is_some() && app.point_gen >= gen {
             let _ = writeln!(f, "gen {gen} point_drawn_ms {ms:.2}");
             self.point_logged = true;
+        }
+        let load_key = worker::sweep_key(&app.source, &app.scene, app.range());
+        if !self.charts_logged && app.point_gen >= gen && app.sweep_shown.as_ref() == Some(&load_key) {
+            let _ = writeln!(f, "gen {gen} charts_drawn_ms {ms:.2}");
+            self.charts_logged = true;
         }
         if !app.busy {
             let _ = writeln!(f, "gen {gen} all_drawn_ms {ms:.2}");
@@ -143,6 +152,7 @@ pub fn run_app(mut app: App) -> Result<()> {
             if trace.started.is_none_or(|(g, _)| g != req.gen) && trace.file.is_some() {
                 trace.started = Some((req.gen, Instant::now()));
                 trace.point_logged = false;
+                trace.charts_logged = false;
             }
             // a point already current stays on screen until replaced
             worker.submit(req);
@@ -191,6 +201,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                     if app.has_pending() {
                         trace.started = Some((app.gen + 1, t0));
                         trace.point_logged = false;
+                        trace.charts_logged = false;
                     }
                 }
                 Msg::Input(_) => {}

@@ -26,7 +26,36 @@ pub struct Options {
     /// (about 1.5× the solve's own time); without it `error_estimate` is the fixed-point
     /// residual.
     pub adhesion_error_estimate: bool,
+    /// Largest grid step in ln p* of a load sweep's table of U(p*), from which the mean gap
+    /// is integrated ([`crate::theory::sweep`]): coarser requested spacings are refined by an
+    /// integer factor ([`SWEEP_STEP_LN`]; [`CHART_SWEEP_STEP_LN`] in [`Options::chart`]).
+    pub sweep_step_ln: f64,
+    /// Relative precision in p* to which a load sweep refines the edges of a hysteresis
+    /// window (bisection in ln p*; [`EDGE_REL`], [`CHART_EDGE_REL`] in [`Options::chart`]).
+    pub edge_rel: f64,
 }
+
+/// The default [`Options::edge_rel`] (also `theory::hysteresis::EDGE_REL`).
+pub const EDGE_REL: f64 = 0.005;
+/// [`Options::edge_rel`] of [`Options::chart`]: a chart's column spans ~0.1–0.2 in ln p*, so
+/// 0.03 puts the marked edge inside its pixel with three bisection solves fewer per edge.
+pub const CHART_EDGE_REL: f64 = 0.03;
+/// Allowed [`Options::edge_rel`].
+pub const EDGE_REL_RANGE: (f64, f64) = (1e-6, 0.5);
+
+/// The default [`Options::sweep_step_ln`]: keeps the estimated gap error below ~1e-3
+/// relative where ū > 1e-3 h_rms (each sweep row reports its own estimate), so a 64-point
+/// chart over three decades (spacing 0.11) needs no extra loads below its last p*.
+pub const SWEEP_STEP_LN: f64 = 0.15;
+/// [`Options::sweep_step_ln`] of [`Options::chart`]: a 64-point chart over six decades
+/// (spacing 0.22) is not refined, half the loads of [`SWEEP_STEP_LN`]; ū then moves by at
+/// most 1.3e-3 relative against the default step (systems I and II, models 1, 3, 4,
+/// t·q_r = 0.05…∞, adhesionless and adhesive, p* = 1e-6…1), below a chart's pixel, and each
+/// row still reports its estimate. Below a jump into contact the gap carries the jump's
+/// placement inside its grid step instead ([`crate::theory::gap::route`]).
+pub const CHART_SWEEP_STEP_LN: f64 = 0.25;
+/// Allowed [`Options::sweep_step_ln`].
+pub const SWEEP_STEP_RANGE: (f64, f64) = (1e-3, 1.0);
 
 impl Default for Options {
     fn default() -> Self {
@@ -36,6 +65,8 @@ impl Default for Options {
             sigma_max: None,
             adhesion: AdhesionAccuracy::default(),
             adhesion_error_estimate: true,
+            sweep_step_ln: SWEEP_STEP_LN,
+            edge_rel: EDGE_REL,
         }
     }
 }
@@ -62,7 +93,8 @@ impl Options {
     /// # Errors
     /// [`Error::Invalid`] naming the first knob out of range ([`Field::Rtol`],
     /// [`Field::SigmaPoints`], [`Field::SigmaMax`], [`Field::AdhesionSteps`],
-    /// [`Field::AdhesionPoints`], [`Field::AdhesionTol`]).
+    /// [`Field::AdhesionPoints`], [`Field::AdhesionTol`], [`Field::SweepStep`],
+    /// [`Field::EdgeRel`]).
     pub fn validate(&self) -> Result<()> {
         check_in(Field::Rtol, self.accuracy.rtol, RTOL_RANGE.0, RTOL_RANGE.1)?;
         let n = self.sigma_points;
@@ -90,6 +122,13 @@ impl Options {
             ADHESION_POINTS_RANGE.1,
         )?;
         check_in(Field::AdhesionTol, a.tol, ADHESION_TOL_RANGE.0, ADHESION_TOL_RANGE.1)?;
+        check_in(
+            Field::SweepStep,
+            self.sweep_step_ln,
+            SWEEP_STEP_RANGE.0,
+            SWEEP_STEP_RANGE.1,
+        )?;
+        check_in(Field::EdgeRel, self.edge_rel, EDGE_REL_RANGE.0, EDGE_REL_RANGE.1)?;
         Ok(())
     }
 
@@ -102,6 +141,8 @@ impl Options {
         o.adhesion.points_per_width *= 0.5;
         o.adhesion.explore_branches = false;
         o.adhesion_error_estimate = false;
+        o.sweep_step_ln = CHART_SWEEP_STEP_LN;
+        o.edge_rel = CHART_EDGE_REL;
         o
     }
 }
@@ -166,11 +207,23 @@ pub fn evaluate_warm(
     warm: Option<&Evaluation>,
     cancel: Option<&std::sync::atomic::AtomicBool>,
 ) -> Result<Evaluation> {
+    evaluate_continued(scene, opts, warm.as_slice(), cancel)
+}
+
+/// [`evaluate_warm`] continued along a path of evaluations of the same scene at other loads,
+/// oldest first: with adhesion the solver extrapolates the branches from the last two
+/// ([`adhesion::solve_continued`]); with one it is [`evaluate_warm`].
+pub fn evaluate_continued(
+    scene: &Scene,
+    opts: &Options,
+    path: &[&Evaluation],
+    cancel: Option<&std::sync::atomic::AtomicBool>,
+) -> Result<Evaluation> {
     scene.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
     if scene.gamma > 0.0 {
-        return evaluate_adhesive(scene, opts, warm, cancel, t0);
+        return evaluate_adhesive(scene, opts, path, cancel, t0);
     }
     // the elastic energy and a_r(q) near q_L need the ODE resolved where v passes p*²: at
     // small p* the default rtol steps across it (one step from q_L to q_r on a thin slab at
@@ -217,12 +270,20 @@ pub fn evaluate_warm(
 fn evaluate_adhesive(
     scene: &Scene,
     opts: &Options,
-    warm: Option<&Evaluation>,
+    path: &[&Evaluation],
     cancel: Option<&std::sync::atomic::AtomicBool>,
     t0: Instant,
 ) -> Result<Evaluation> {
-    let warm_sol = warm.and_then(|w| w.adhesive.as_deref());
-    let sol = adhesion::solve(scene, &opts.adhesion, warm_sol, cancel)?;
+    // the path's adhesive solutions (a gap in it, e.g. an adhesionless entry, keeps only
+    // what follows the gap)
+    let mut sols: Vec<&adhesion::AdhesiveSolution> = Vec::with_capacity(path.len());
+    for e in path {
+        match e.adhesive.as_deref() {
+            Some(s) => sols.push(s),
+            None => sols.clear(),
+        }
+    }
+    let sol = adhesion::solve_continued(scene, &opts.adhesion, &sols, cancel)?;
     let error_estimate = if opts.adhesion_error_estimate {
         // probe each resolution in turn (their errors need not have the same sign, so one
         // combined change can hide both): S·(max(|a − a(3/2 steps)|, |a − a(2 steps)|) +

@@ -113,12 +113,18 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
             for &p in &ps[ij[0] + 1..ij[1]] {
                 let r = if track {
                     check_cancel(cancel)?;
-                    let prev = match out.last() {
-                        Some(Ok(e)) => Some(e),
-                        Some(Err(_)) => None,
-                        None => rs[0].as_ref().ok(),
-                    };
-                    keep(evaluate_node(scene, p, &tracked, prev, cancel), p)?
+                    // the last two loads of the stretch (the anchor first), for the solver
+                    // to extrapolate its roots from
+                    let before: Vec<&NodeResult> = rs[..1].iter().chain(out.iter()).collect();
+                    let path: Vec<&Evaluation> = before[before.len().saturating_sub(2)..]
+                        .iter()
+                        .map(|r| r.as_ref().ok())
+                        .collect::<Option<_>>()
+                        .or_else(|| before.last().and_then(|r| r.as_ref().ok()).map(|e| vec![e]))
+                        .unwrap_or_default();
+                    let mut s = scene.clone();
+                    s.pressure = p;
+                    keep(engine::evaluate_continued(&s, &tracked, &path, cancel), p)?
                 } else {
                     scanned(p)?
                 };

@@ -14,6 +14,7 @@ pub mod loads;
 pub mod mirror;
 pub mod persson;
 pub mod sweep;
+pub mod window;
 
 /// The slab factor moved to [`crate::elastic::slab`] (below inputs and theory alike); this
 /// path stays for code written against it.

@@ -2,7 +2,8 @@
 //!
 //! One sweep evaluates the scene ([`crate::theory::engine::evaluate`]) on a single uniform grid in
 //! ln p*: the requested points (from `from` to `to`, log-spaced), refined by an integer factor
-//! when their spacing exceeds [`SWEEP_STEP_LN`], and extended with the same step up
+//! when their spacing exceeds the options' `sweep_step_ln` ([`SWEEP_STEP_LN`] by default,
+//! [`CHART_SWEEP_STEP_LN`] for charts), and extended with the same step up
 //! to full contact. The mean gap at every requested point then comes from one cumulative pass
 //! over that table of the stored elastic energy U_el (the loading path's gap, physics.md §5;
 //! [`crate::theory::gap::GapTable`]); nothing is evaluated twice. A 64-point chart
@@ -13,7 +14,7 @@
 //! numbers, bit for bit, on any number of threads. With adhesion each load reports every
 //! branch: `a_r` is the loading branch (the lowest stable one), `a_r_unloading` the unloading
 //! branch where a hysteresis window makes it distinct, and the window's edges — the jump-in
-//! and pull-off loads ([`crate::theory::hysteresis`]) — are refined by bisection where the
+//! and pull-off loads ([`crate::theory::window`]) — are refined by bisection where the
 //! sweep's grid holds them.
 //!
 //! Cancellation: the caller may pass an `AtomicBool`; when it is set the sweep stops between
@@ -23,16 +24,11 @@ use crate::error::{Error, Field, Result};
 use crate::input::scene::{Scene, PRESSURE_RANGE};
 use crate::theory::engine::Options;
 use crate::theory::gap::{self, GapTable};
-use crate::theory::hysteresis;
-use crate::theory::loads::NodeResult;
+use crate::theory::window;
 use serde::Serialize;
 use std::sync::atomic::AtomicBool;
 
-/// Largest grid step in ln p* of a sweep's U table: coarser requested spacings are refined by
-/// an integer factor. 0.15 keeps the estimated gap error below ~1e-3 relative where
-/// ū > 1e-3 h_rms (each row reports its own estimate), so a 64-point chart over three decades
-/// (spacing 0.11) needs no extra loads below `to`.
-pub const SWEEP_STEP_LN: f64 = 0.15;
+pub use crate::theory::engine::{CHART_SWEEP_STEP_LN, SWEEP_STEP_LN};
 
 /// The load range of a sweep (reduced pressures, log-spaced).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -162,7 +158,7 @@ pub struct Sweep {
     pub note: Option<String>,
     /// p* above which the loading branch no longer exists (the jump into contact on loading),
     /// where the sweep's range holds a hysteresis window's upper edge; to
-    /// [`crate::theory::hysteresis::EDGE_REL`].
+    /// the options' `edge_rel` ([`crate::theory::window::EDGE_REL`] by default).
     pub jump_in_pressure: Option<f64>,
     /// p* below which the unloading branch no longer exists (pull-off on unloading), where
     /// the range holds the window's lower edge.
@@ -198,7 +194,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
     let x0 = spec.from.ln();
     let (step, m) = if spec.points > 1 {
         let hs = (spec.to / spec.from).ln() / (spec.points - 1) as f64;
-        let m = (hs / SWEEP_STEP_LN).ceil().max(1.0) as usize;
+        let m = (hs / opts.sweep_step_ln).ceil().max(1.0) as usize;
         (hs / m as f64, m)
     } else {
         (gap::GAP_STEP_LN, 1)
@@ -244,16 +240,30 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
             first_ok += j + 1;
         }
     }
+    // the hysteresis window: the first run of grid loads with two stable branches, each edge
+    // inside the grid refined by bisection between its two grid loads; the loading branch's
+    // jump into contact is then placed at its load in the gap table
+    let stable: Vec<Option<usize>> = evs
+        .iter()
+        .map(|e| e.as_ref().ok().map(|e| e.branches.iter().filter(|b| b.stable).count()))
+        .collect();
+    let window = window::window_on_grid(scene, &ps, &stable, &opts.adhesion, opts.edge_rel, cancel)?;
+    let (jump_in_pressure, pull_off_pressure) = (window.jump_in_pressure, window.pull_off_pressure);
+    let jump = jump_in_pressure.map(|p| gap::KnownJump {
+        ln_p: p.ln(),
+        uncertainty_ln: 0.5 * opts.edge_rel,
+    });
     let table = if n - first_ok >= 4 {
         let total: Vec<f64> = evs[first_ok..]
             .iter()
             .map(|e| e.as_ref().map_or(f64::NAN, |e| e.elastic_energy / unit))
             .collect();
-        Some(GapTable::from_energies(
+        Some(GapTable::from_energies_with_jump(
             x0 + first_ok as f64 * step,
             step,
             stored[first_ok..].to_vec(),
             total,
+            jump,
         )?)
     } else {
         None
@@ -319,23 +329,6 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
                 || !w[1].mean_gap_rel.is_finite()
                 || w[1].mean_gap_rel <= w[0].mean_gap_rel)
     });
-    // the hysteresis window: the first run of grid loads with two stable branches; each edge
-    // inside the grid is refined by bisection between its two grid loads
-    let two = |e: &NodeResult| {
-        e.as_ref()
-            .is_ok_and(|e| e.branches.iter().filter(|b| b.stable).count() >= 2)
-    };
-    let (mut jump_in_pressure, mut pull_off_pressure) = (None, None);
-    if let Some(first) = evs.iter().position(two) {
-        let last = first + evs[first..].iter().take_while(|e| two(e)).count() - 1;
-        let acc = opts.adhesion;
-        if first > 0 && evs[first - 1].is_ok() {
-            pull_off_pressure = Some(hysteresis::edge(scene, ps[first], ps[first - 1], &acc, cancel)?);
-        }
-        if last + 1 < n && evs[last + 1].is_ok() {
-            jump_in_pressure = Some(hysteresis::edge(scene, ps[last], ps[last + 1], &acc, cancel)?);
-        }
-    }
     Ok(Sweep {
         rows,
         evaluations: n,

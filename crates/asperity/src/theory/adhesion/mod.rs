@@ -88,7 +88,7 @@ mod shooting;
 mod strategy;
 mod walls;
 
-pub use strategy::solve;
+pub use strategy::{solve, solve_continued, EXTRAPOLATE_MAX};
 
 use crate::error::Result;
 use crate::input::scene::Scene;

@@ -45,13 +45,47 @@ pub fn solve(
     warm: Option<&AdhesiveSolution>,
     cancel: Option<&AtomicBool>,
 ) -> Result<AdhesiveSolution> {
+    solve_continued(scene, acc, warm.as_slice(), cancel)
+}
+
+/// Largest ratio of the next load step to the last one, in ln p*, over which
+/// [`solve_continued`] extrapolates the branches' C (a sweep's steps are equal: ratio 1).
+pub const EXTRAPOLATE_MAX: f64 = 2.0;
+
+/// [`solve`] continued along a path of solutions of the same scene at other loads, oldest
+/// first (a sweep's previous loads). With one, as [`solve`]'s `warm`; with two or more at
+/// distinct p* and the same number of branches, each branch's C is extrapolated linearly in
+/// ln p* (in asinh(C/c₀), the root scan's variable) from the last two to this scene's p*
+/// (when the step is at most [`EXTRAPOLATE_MAX`] times the last one): a load step of 0.11
+/// in ln p* moves a thin slab's roots by ~0.1 in that variable, and the extrapolation's
+/// guess lands within ~0.01, so each root is bracketed by two marches next to it.
+///
+/// # Errors
+/// As [`solve`].
+pub fn solve_continued(
+    scene: &Scene,
+    acc: &AdhesionAccuracy,
+    path: &[&AdhesiveSolution],
+    cancel: Option<&AtomicBool>,
+) -> Result<AdhesiveSolution> {
     scene.validate()?;
     validate(acc)?;
-    let warm_c: Vec<f64> = match warm {
-        Some(w) if !acc.explore_branches => w.branches.iter().map(|b| b.gamma_coarse * w.gamma_s).collect(),
-        _ => Vec::new(),
+    let roots_of =
+        |w: &AdhesiveSolution| -> Vec<f64> { w.branches.iter().map(|b| b.gamma_coarse * w.gamma_s).collect() };
+    let (warm_c, older): (Vec<f64>, Option<(Vec<f64>, f64)>) = match path {
+        _ if acc.explore_branches => (Vec::new(), None),
+        [.., o, w] => {
+            let (c, co) = (roots_of(w), roots_of(o));
+            let (x, xw, xo) = (scene.pressure.ln(), w.pressure.ln(), o.pressure.ln());
+            let r = (x - xw) / (xw - xo);
+            let ok = c.len() == co.len() && r.is_finite() && r > 0.0 && r <= EXTRAPOLATE_MAX;
+            (c, ok.then_some((co, r)))
+        }
+        [w] => (roots_of(w), None),
+        [] => (Vec::new(), None),
     };
-    let (roots, shots) = find_roots(scene, acc, &warm_c, cancel)?;
+    let trend = older.as_ref().map(|(c, r)| (c.as_slice(), *r));
+    let (roots, shots) = find_roots(scene, acc, &warm_c, trend, cancel)?;
     let grid = build_grid(scene, acc.steps_per_ln_q);
     let chosen = roots.iter().position(|r| r.stable).unwrap_or(0);
     let upper = roots.iter().rposition(|r| r.stable).filter(|&u| u != chosen);

@@ -34,7 +34,7 @@ pub mod closed_form;
 pub mod route;
 
 pub use closed_form::{asymptotic_slope, closed_form, closed_form_gamma_p, expint_e1};
-pub use route::{stored_energy, stored_from, GapTable, DECREASE_NOISE_REL};
+pub use route::{stored_energy, stored_from, GapTable, KnownJump, DECREASE_NOISE_REL};
 
 use crate::error::Result;
 use crate::input::scene::Scene;
@@ -144,7 +144,23 @@ pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<
     let (x0, h, n) = grid_from(scene, scene.pressure, GAP_STEP_LN);
     let ps: Vec<f64> = (0..n).map(|i| (x0 + i as f64 * h).exp()).collect();
     let evs = crate::theory::loads::evaluations(scene, &ps, opts, None)?;
-    let table = GapTable::from_evaluations(scene, x0, h, &evs)?;
+    // the loading branch jumps into contact at the top of a hysteresis window: its load,
+    // refined, places the jump of U_el inside its grid step (a few more solves, only then)
+    let stable: Vec<Option<usize>> = evs
+        .iter()
+        .map(|e| Some(e.branches.iter().filter(|b| b.stable).count()))
+        .collect();
+    let jump = if stable.iter().any(|c| c.is_some_and(|c| c >= 2)) {
+        crate::theory::window::window_on_grid(scene, &ps, &stable, &opts.adhesion, opts.edge_rel, None)?
+            .jump_in_pressure
+            .map(|p| KnownJump {
+                ln_p: p.ln(),
+                uncertainty_ln: 0.5 * opts.edge_rel,
+            })
+    } else {
+        None
+    };
+    let table = GapTable::from_evaluations_with_jump(scene, x0, h, &evs, jump)?;
     let h_rms = scene.spectrum.rms_height();
     Ok(Some(MeanGap {
         relative: table.gap[0],

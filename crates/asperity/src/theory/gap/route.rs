@@ -17,8 +17,16 @@
 //! [ΔU e^{−x_{j+1}}, ΔU e^{−x_j}] that holds for any U monotone on the interval: on smooth data
 //! the 4th-order value lies inside it (the limiter is inactive), and across a jump of the branch
 //! (a jump into contact between two nodes) it stops the cubic from ringing, so ū stays
-//! monotone and ≥ 0. The same sum on the every-other-node grid (step 2h) gives the Richardson
-//! estimate |ū_h − ū_2h|/15 per node, reported as the error.
+//! monotone and ≥ 0. An interval whose change exceeds 3 times each neighbour's (`JUMP_RATIO`)
+//! holds a jump whose place inside it the nodes do not show; it, every interval whose cubic
+//! reaches across it, and every interval where the limiter acts take the bracket's midpoint,
+//! with half the bracket's width in the error (a jump into contact in an interval 0.1 wide in
+//! ln p* carries ±5 % of its term; the Richardson difference alone had missed it 12×); where the
+//! caller knows the jump's load ([`KnownJump`], the refined jump-in of the loading branch)
+//! the interval's change is put there instead, with the error of that placement and of the
+//! smooth change moved with it (~0.5 % of the jump's term). The same sum on the
+//! every-other-node grid (step 2h) gives the Richardson estimate |ū_h − ū_2h|/15 per node;
+//! the reported error is that plus the unresolved jumps' and the dropped noise's parts.
 //!
 //! The stored energy of a stable branch does not decrease with the load (a_r(q) grows at every
 //! q, and a·W(a) grows with a): a decrease larger than [`DECREASE_NOISE_REL`] of the table's
@@ -41,6 +49,16 @@ use crate::theory::engine::Evaluation;
 /// models 3 and 4, t·q_r = 0.05…∞): the margin is for the adhesive solver's tolerance and
 /// grid error, which move U_el smoothly with the load.
 pub const DECREASE_NOISE_REL: f64 = 1e-4;
+
+/// A jump of the branch's energy at a known load between two nodes of a table: the jump into
+/// contact of a loading branch, refined by bisection ([`crate::theory::window::edge`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KnownJump {
+    /// ln p* of the jump.
+    pub ln_p: f64,
+    /// Its uncertainty in ln p* (half the last bisection bracket).
+    pub uncertainty_ln: f64,
+}
 
 /// Mean gap at the nodes of a uniform ln p* grid along one branch (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
@@ -74,6 +92,18 @@ impl GapTable {
 
     /// The table of one branch from U_el* (`stored`) and U* (`total`) at the nodes.
     pub fn from_energies(ln_p0: f64, step: f64, stored: Vec<f64>, total: Vec<f64>) -> Result<GapTable> {
+        GapTable::from_energies_with_jump(ln_p0, step, stored, total, None)
+    }
+
+    /// [`GapTable::from_energies`] with the branch's jump at a known load, where it has one
+    /// between two nodes (see the module docs).
+    pub fn from_energies_with_jump(
+        ln_p0: f64,
+        step: f64,
+        stored: Vec<f64>,
+        total: Vec<f64>,
+        jump: Option<KnownJump>,
+    ) -> Result<GapTable> {
         let n = stored.len();
         if n < 4 || total.len() != n || !(step > 0.0 && step.is_finite()) {
             return Err(Error::field(
@@ -106,12 +136,13 @@ impl GapTable {
                 ),
             });
         }
-        let (gap, dropped) = cumulative(ln_p0, step, &stored, true);
-        let mut error = richardson(ln_p0, step, &stored, &gap);
-        for (e, d) in error.iter_mut().zip(&dropped) {
-            *e += d;
+        let sum = cumulative(ln_p0, step, &stored, true, jump);
+        let gap = sum.gap;
+        let mut error = richardson(ln_p0, step, &stored, &gap, jump);
+        for ((e, d), u) in error.iter_mut().zip(&sum.dropped).zip(&sum.unresolved) {
+            *e += d + u;
         }
-        let (reversible, _) = cumulative(ln_p0, step, &total, false);
+        let reversible = cumulative(ln_p0, step, &total, false, jump).gap;
         let mut lower = vec![0.0; n];
         let mut best = 0.0f64;
         for i in (0..n).rev() {
@@ -132,10 +163,21 @@ impl GapTable {
 
     /// The table of one branch from its evaluations at the nodes (in increasing p*).
     pub fn from_evaluations(scene: &Scene, ln_p0: f64, step: f64, evs: &[Evaluation]) -> Result<GapTable> {
+        GapTable::from_evaluations_with_jump(scene, ln_p0, step, evs, None)
+    }
+
+    /// [`GapTable::from_evaluations`] with the branch's jump at a known load.
+    pub fn from_evaluations_with_jump(
+        scene: &Scene,
+        ln_p0: f64,
+        step: f64,
+        evs: &[Evaluation],
+        jump: Option<KnownJump>,
+    ) -> Result<GapTable> {
         let unit = crate::theory::energy::energy_unit(scene);
         let stored = evs.iter().map(|e| stored_energy(scene, e) / unit).collect();
         let total = evs.iter().map(|e| e.elastic_energy / unit).collect();
-        GapTable::from_energies(ln_p0, step, stored, total)
+        GapTable::from_energies_with_jump(ln_p0, step, stored, total, jump)
     }
 
     /// p* at node i.
@@ -173,10 +215,24 @@ pub fn last_decrease(stored: &[f64]) -> Option<usize> {
         .find(|&j| stored[j] - stored[j + 1] > noise)
 }
 
+/// An interval whose change of U exceeds this many times each neighbour's holds a jump (see
+/// [`cumulative`]).
+const JUMP_RATIO: f64 = 3.0;
+
+/// The cumulative sums of [`cumulative`].
+struct Sums {
+    /// ∫_{x_i}^{x_top} U'(x) e^{−x} dx at every node.
+    gap: Vec<f64>,
+    /// Per node, what counting decreases as no change dropped from the sum above it.
+    dropped: Vec<f64>,
+    /// Per node, the error of the unresolved jumps above it (see the module docs).
+    unresolved: Vec<f64>,
+}
+
 /// ∫_{x_i}^{x_top} U'(x) e^{−x} dx at every node (cubic Lagrange derivative, GL4 per interval,
-/// limited per interval; see the module docs). With `monotone`, decreases are counted as no
-/// change, and the second vector gives, per node, what that dropped from the sum above it.
-fn cumulative(x0: f64, h: f64, u: &[f64], monotone: bool) -> (Vec<f64>, Vec<f64>) {
+/// limited per interval, jumps placed at their midpoint or at `jump`; see the module docs).
+/// With `monotone`, decreases are counted as no change.
+fn cumulative(x0: f64, h: f64, u: &[f64], monotone: bool, jump: Option<KnownJump>) -> Sums {
     let n = u.len();
     // coefficient c[o][i] = Σ_g w_g ℓ_i'(o + τ_g) e^{−h(o + τ_g)} for an interval starting at
     // stencil offset o ∈ {0, 1, 2}, stencil nodes τ = 0, 1, 2, 3 (in units of h).
@@ -190,8 +246,28 @@ fn cumulative(x0: f64, h: f64, u: &[f64], monotone: bool) -> (Vec<f64>, Vec<f64>
             }
         }
     }
-    let mut gap = vec![0.0; n];
-    let mut dropped = vec![0.0; n];
+    let mut sums = Sums {
+        gap: vec![0.0; n],
+        dropped: vec![0.0; n],
+        unresolved: vec![0.0; n],
+    };
+    let change = |j: usize| -> f64 {
+        let du = u[j + 1] - u[j];
+        if monotone {
+            du.max(0.0)
+        } else {
+            du
+        }
+    };
+    // a jump: an interval whose change exceeds JUMP_RATIO times each neighbour's (a smooth U
+    // changes by similar amounts over neighbouring intervals, or monotonically more or less)
+    let jumps: Vec<bool> = (0..n - 1)
+        .map(|j| {
+            let d = change(j).abs();
+            let over = |i: Option<usize>| i.is_none_or(|i| d > JUMP_RATIO * change(i).abs());
+            d > 0.0 && over(j.checked_sub(1)) && over((j + 2 < n).then_some(j + 1))
+        })
+        .collect();
     for j in (0..n - 1).rev() {
         let k = j.saturating_sub(1).min(n - 4);
         let o = j - k;
@@ -201,26 +277,42 @@ fn cumulative(x0: f64, h: f64, u: &[f64], monotone: bool) -> (Vec<f64>, Vec<f64>
             s += c[o][i] * (u[k + i] - base);
         }
         let cubic = s * (-(x0 + k as f64 * h)).exp();
-        let mut du = u[j + 1] - u[j];
-        let mut lost = 0.0;
-        if monotone && du < 0.0 {
-            lost = -du * (-(x0 + j as f64 * h)).exp();
-            du = 0.0;
-        }
-        let (b_lo, b_hi) = (
-            du * (-(x0 + (j + 1) as f64 * h)).exp(),
-            du * (-(x0 + j as f64 * h)).exp(),
-        );
-        let inc = cubic.clamp(b_lo.min(b_hi), b_lo.max(b_hi));
-        gap[j] = gap[j + 1] + inc;
-        dropped[j] = dropped[j + 1] + lost;
+        let du = change(j);
+        let lost = if monotone && u[j + 1] < u[j] {
+            (u[j] - u[j + 1]) * (-(x0 + j as f64 * h)).exp()
+        } else {
+            0.0
+        };
+        let (xa, xb) = (x0 + j as f64 * h, x0 + (j + 1) as f64 * h);
+        let (ea, eb) = ((-xa).exp(), (-xb).exp());
+        let (b_lo, b_hi) = ((du * eb).min(du * ea), (du * eb).max(du * ea));
+        // the cubic's stencil (intervals k..k+2) reaches across a jump: it rings
+        let polluted = (k..k + 3).any(|i| jumps[i]);
+        let (inc, unresolved) = match jump.filter(|jp| jp.ln_p >= xa && jp.ln_p < xb) {
+            Some(jp) => {
+                // the whole change at the jump: off by the placement's uncertainty, and by the
+                // smooth change (as large as a neighbouring interval's) moved to it
+                let ej = (-jp.ln_p).exp();
+                let smooth = [j.checked_sub(1), (j + 2 < n).then_some(j + 1)]
+                    .into_iter()
+                    .flatten()
+                    .map(|i| change(i).abs())
+                    .fold(0.0, f64::max);
+                (du * ej, du.abs() * ej * jp.uncertainty_ln.abs() + smooth * (ea - eb))
+            }
+            None if !polluted && cubic >= b_lo && cubic <= b_hi => (cubic, 0.0),
+            None => (0.5 * (b_lo + b_hi), 0.5 * (b_hi - b_lo)),
+        };
+        sums.gap[j] = sums.gap[j + 1] + inc;
+        sums.dropped[j] = sums.dropped[j + 1] + lost;
+        sums.unresolved[j] = sums.unresolved[j + 1] + unresolved;
     }
-    (gap, dropped)
+    sums
 }
 
 /// Richardson estimate of the error of `gap` (computed on step h) from the every-other-node
 /// grid; the full gap where that grid has fewer than 4 nodes.
-fn richardson(x0: f64, h: f64, u: &[f64], gap: &[f64]) -> Vec<f64> {
+fn richardson(x0: f64, h: f64, u: &[f64], gap: &[f64], jump: Option<KnownJump>) -> Vec<f64> {
     let n = u.len();
     let mut error = vec![0.0; n];
     // coarse grid: every other node, keeping the top one
@@ -229,7 +321,7 @@ fn richardson(x0: f64, h: f64, u: &[f64], gap: &[f64]) -> Vec<f64> {
     if coarse.len() < 4 {
         return gap.to_vec();
     }
-    let (cg, _) = cumulative(x0 + first as f64 * h, 2.0 * h, &coarse, true);
+    let cg = cumulative(x0 + first as f64 * h, 2.0 * h, &coarse, true, jump).gap;
     for (k, g) in cg.iter().enumerate() {
         error[first + 2 * k] = (gap[first + 2 * k] - g).abs() / 15.0;
     }
@@ -278,7 +370,7 @@ mod tests {
         // the limiter must leave the exact values alone
         let (x0, h, n) = (-3.0, 0.3, 21);
         let u: Vec<f64> = (0..n).map(|i| (x0 + i as f64 * h).powi(3)).collect();
-        let (g, dropped) = cumulative(x0, h, &u, true);
+        let Sums { gap: g, dropped, .. } = cumulative(x0, h, &u, true, None);
         let anti = |x: f64| -(-x).exp() * (3.0 * x * x + 6.0 * x + 6.0);
         let top = x0 + (n - 1) as f64 * h;
         for (i, gi) in g.iter().enumerate() {
@@ -297,13 +389,59 @@ mod tests {
         let (x0, h, n) = (-4.0, 0.25, 17);
         let js = 8; // the step lies between nodes 8 and 9
         let u: Vec<f64> = (0..n).map(|i| if i > js { 1.0 } else { 0.0 }).collect();
-        let (g, _) = cumulative(x0, h, &u, true);
+        let g = cumulative(x0, h, &u, true, None).gap;
         for w in g.windows(2) {
             assert!(w[0] >= w[1] && w[1] >= 0.0, "{g:?}");
         }
         let (lo, hi) = ((-(x0 + (js + 1) as f64 * h)).exp(), (-(x0 + js as f64 * h)).exp());
         assert!(g[0] >= lo && g[0] <= hi, "{} not in [{lo}, {hi}]", g[0]);
         assert_eq!(g[js + 1], 0.0);
+    }
+
+    #[test]
+    fn a_jump_between_nodes_is_inside_the_error_and_placed_where_known() {
+        // U = 0.1x + Θ(x − x_s): ∫_{x_i}^{x_top} U'e^{−x} dx = 0.1(e^{−x_i} − e^{−x_top}) +
+        // e^{−x_s} below the step. Without its place the error must cover the step's term
+        // anywhere in its interval; with the place known (to ±1e-3 in x) it is put there
+        let (x0, h, n) = (-4.0, 0.25, 17);
+        let xs = x0 + 8.3 * h;
+        let u: Vec<f64> = (0..n)
+            .map(|i| {
+                let x = x0 + i as f64 * h;
+                0.1 * x + if x > xs { 1.0 } else { 0.0 }
+            })
+            .collect();
+        let top = x0 + (n - 1) as f64 * h;
+        let exact = |x: f64| 0.1 * ((-x).exp() - (-top).exp()) + if x < xs { (-xs).exp() } else { 0.0 };
+        let blind = GapTable::from_energy(x0, h, u.clone()).unwrap();
+        let jump = KnownJump {
+            ln_p: xs + 4e-4,
+            uncertainty_ln: 1e-3,
+        };
+        let placed = GapTable::from_energies_with_jump(x0, h, u.clone(), u, Some(jump)).unwrap();
+        for i in 0..n {
+            let x = x0 + i as f64 * h;
+            for t in [&blind, &placed] {
+                let miss = (t.gap[i] - exact(x)).abs();
+                assert!(
+                    miss <= t.error[i],
+                    "{i}: {} vs {} (error {})",
+                    t.gap[i],
+                    exact(x),
+                    t.error[i]
+                );
+            }
+            if i <= 8 {
+                // the step's term dominates below it: the known place cuts its error 5×
+                assert!(
+                    placed.error[i] < 0.2 * blind.error[i],
+                    "{i}: {} vs {}",
+                    placed.error[i],
+                    blind.error[i]
+                );
+                assert!((placed.gap[i] - exact(x)).abs() < 2e-3 * exact(x), "{i}");
+            }
+        }
     }
 
     #[test]
