@@ -338,18 +338,20 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
     };
     opts.validate()?;
     let ev = engine::evaluate(scene, &opts)?;
-    // the gap needs the loading branch at every load up to full contact: report why it is
-    // missing rather than failing the whole run
-    let (gap, mean_gap_note) = match asperity::theory::gap::mean_gap(scene, &opts) {
-        Ok(None) => (None, Some("the mean gap is defined for p* > 0 only".to_string())),
-        Ok(g) => (g, None),
-        Err(e) => (None, Some(format!("mean gap unavailable: {e}"))),
-    };
     // inside a hysteresis window: its edges (a few more solves, only then)
     let window = if ev.branches.iter().filter(|b| b.stable).count() >= 2 {
         asperity::theory::hysteresis::window_around(scene, &opts.adhesion, None)?
     } else {
         None
+    };
+    // the gap needs the loading branch at every load up to full contact (and places its jump
+    // into contact at the window's jump-in): report why it is missing rather than failing
+    // the whole run
+    let jump_in = window.and_then(|w| w.jump_in_pressure);
+    let (gap, mean_gap_note) = match asperity::theory::gap::mean_gap_knowing(scene, &opts, jump_in) {
+        Ok(None) => (None, Some("the mean gap is defined for p* > 0 only".to_string())),
+        Ok(g) => (g, None),
+        Err(e) => (None, Some(format!("mean gap unavailable: {e}"))),
     };
     Ok(RunOutput {
         preset: preset_name.to_string(),

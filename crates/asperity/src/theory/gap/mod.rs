@@ -121,6 +121,16 @@ pub struct BranchGap {
 /// p₀ to full contact). Adhesionless grids are evaluated in parallel; adhesive ones in order of
 /// increasing load (the loading branch). Returns `Ok(None)` for p₀ ≤ 0.
 pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<Option<MeanGap>> {
+    mean_gap_knowing(scene, opts, None)
+}
+
+/// [`mean_gap`] given the loading branch's jump-in load where the caller already has it
+/// (`window::window_around` at a load inside the window): no bisection of its own then.
+pub fn mean_gap_knowing(
+    scene: &Scene,
+    opts: &crate::theory::engine::Options,
+    jump_in: Option<f64>,
+) -> Result<Option<MeanGap>> {
     if scene.pressure <= 0.0 || !scene.pressure.is_finite() {
         return Ok(None);
     }
@@ -150,7 +160,12 @@ pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<
         .iter()
         .map(|e| Some(e.branches.iter().filter(|b| b.stable).count()))
         .collect();
-    let jump = if stable.iter().any(|c| c.is_some_and(|c| c >= 2)) {
+    let jump = if let Some(p) = jump_in {
+        Some(KnownJump {
+            ln_p: p.ln(),
+            uncertainty_ln: 0.5 * opts.edge_rel,
+        })
+    } else if stable.iter().any(|c| c.is_some_and(|c| c >= 2)) {
         crate::theory::window::window_on_grid(scene, &ps, &stable, &opts.adhesion, opts.edge_rel, None)?
             .jump_in_pressure
             .map(|p| KnownJump {
