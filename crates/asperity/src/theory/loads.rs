@@ -113,15 +113,15 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
             for &p in &ps[ij[0] + 1..ij[1]] {
                 let r = if track {
                     check_cancel(cancel)?;
-                    // the last two loads of the stretch (the anchor first), for the solver
-                    // to extrapolate its roots from
-                    let before: Vec<&NodeResult> = rs[..1].iter().chain(out.iter()).collect();
-                    let path: Vec<&Evaluation> = before[before.len().saturating_sub(2)..]
-                        .iter()
-                        .map(|r| r.as_ref().ok())
-                        .collect::<Option<_>>()
-                        .or_else(|| before.last().and_then(|r| r.as_ref().ok()).map(|e| vec![e]))
-                        .unwrap_or_default();
+                    // the last two loads of the stretch (the anchor first) that converged in
+                    // a row, for the solver to extrapolate its roots from
+                    let last = out.last().unwrap_or(&rs[0]);
+                    let before = out.len().checked_sub(2).map_or(&rs[0], |i| &out[i]);
+                    let path: Vec<&Evaluation> = match (before, last) {
+                        (Ok(b), Ok(l)) if !out.is_empty() => vec![b, l],
+                        (_, Ok(l)) => vec![l],
+                        (_, Err(_)) => Vec::new(),
+                    };
                     let mut s = scene.clone();
                     s.pressure = p;
                     keep(engine::evaluate_continued(&s, &tracked, &path, cancel), p)?
