@@ -107,6 +107,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         a_r_unloading: vec![f64::NAN, 0.9, f64::INFINITY, -1.0, 0.7, f64::NAN],
         jump_in: Some(f64::NAN),
         pull_off: Some(0.0),
+        preview: false,
     }));
     if let Some(Ok(p)) = a.point.as_mut() {
         p.pr = vec![(0.0, 0.0), (f64::NAN, 1.0), (1.0, f64::INFINITY)];

@@ -270,6 +270,12 @@ fn tracked_loads_inside_a_window_agree_with_full_scans() {
         "{jump} {:?}",
         sw.rows
     );
+    // the edge (aimed by the fold's normal form, theory::window) to its precision: full scans
+    // one edge_rel either side find two stable branches below and one above
+    let stable = |p: f64| asperity::theory::window::stable_branches(&s, p, &opts.adhesion, None).unwrap();
+    let step = opts.edge_rel.exp();
+    assert_eq!(stable(jump / step), 2, "below {jump}");
+    assert_eq!(stable(jump * step), 1, "above {jump}");
 }
 
 #[test]

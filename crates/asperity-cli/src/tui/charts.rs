@@ -543,6 +543,13 @@ fn reference_series(app: &App, quantity: &str, y: impl Fn(f64, f64) -> f64) -> V
     out
 }
 
+/// A preview sweep's chart says that the full one is on its way.
+fn mark_preview(m: &mut ChartModel, sw: &SweepData) {
+    if sw.preview {
+        m.title.push_str(" · refining…");
+    }
+}
+
 fn sweep_of(app: &App) -> Option<&SweepData> {
     app.sweep.as_ref().and_then(|r| r.as_ref().ok())
 }
@@ -587,6 +594,7 @@ fn area(app: &App, ratio: bool) -> ChartModel {
         return m;
     };
     m.stale = app.sweep_is_stale();
+    mark_preview(&mut m, sw);
     if app.eq18_applies() {
         m.series.push(Series {
             name: "eq. (18)".into(),
@@ -705,6 +713,7 @@ fn loads(app: &App, kind: ChartKind) -> ChartModel {
         return m;
     };
     m.stale = app.sweep_is_stale();
+    mark_preview(&mut m, sw);
     for (i, o) in others(app, App::model_sweep) {
         m.series.push(Series {
             name: slot_name(i),

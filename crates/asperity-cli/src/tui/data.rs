@@ -225,6 +225,9 @@ pub struct SweepData {
     /// p* below which the unloading branch no longer exists (pull-off), when it lies in the
     /// swept range.
     pub pull_off: Option<f64>,
+    /// The quick first sweep of an adhesive scene (fewer loads, see
+    /// `worker::PREVIEW_POINTS`), drawn while the full one runs.
+    pub preview: bool,
 }
 
 impl SweepData {
@@ -246,6 +249,7 @@ impl SweepData {
             },
             jump_in: s.jump_in_pressure,
             pull_off: s.pull_off_pressure,
+            preview: false,
         }
     }
 

@@ -19,8 +19,9 @@
 //!
 //! `ASPERITY_TRACE=FILE` appends lines per generation with the time from the key press to the
 //! first frame showing the current point (`point_drawn_ms`), the load charts of the current
-//! scene (`charts_drawn_ms`), and the frame after which nothing is left to compute
-//! (`all_drawn_ms`: the point refined to full accuracy, the other charts).
+//! scene (`charts_drawn_ms`: an adhesive scene's preview sweep, see `worker::PREVIEW_POINTS`),
+//! the load charts from the full sweep (`charts_final_ms`), and the frame after which nothing
+//! is left to compute (`all_drawn_ms`: the point refined to full accuracy, the other charts).
 
 pub mod app;
 pub mod charts;
@@ -71,6 +72,7 @@ struct Trace {
     started: Option<(u64, Instant)>,
     point_logged: bool,
     charts_logged: bool,
+    final_logged: bool,
 }
 
 impl Trace {
@@ -82,6 +84,7 @@ impl Trace {
             started: None,
             point_logged: false,
             charts_logged: false,
+            final_logged: false,
         }
     }
 
@@ -98,9 +101,15 @@ impl Trace {
             self.point_logged = true;
         }
         let load_key = worker::sweep_key(&app.source, &app.scene, app.range());
-        if !self.charts_logged && app.point_gen >= gen && app.sweep_shown.as_ref() == Some(&load_key) {
+        let shown = app.point_gen >= gen && app.sweep_shown.as_ref() == Some(&load_key);
+        if !self.charts_logged && shown {
             let _ = writeln!(f, "gen {gen} charts_drawn_ms {ms:.2}");
             self.charts_logged = true;
+        }
+        let preview = app.sweep.as_ref().is_some_and(|s| s.as_ref().is_ok_and(|s| s.preview));
+        if !self.final_logged && shown && !preview {
+            let _ = writeln!(f, "gen {gen} charts_final_ms {ms:.2}");
+            self.final_logged = true;
         }
         if !app.busy {
             let _ = writeln!(f, "gen {gen} all_drawn_ms {ms:.2}");
@@ -153,6 +162,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                 trace.started = Some((req.gen, Instant::now()));
                 trace.point_logged = false;
                 trace.charts_logged = false;
+                trace.final_logged = false;
             }
             // a point already current stays on screen until replaced
             worker.submit(req);
@@ -202,6 +212,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                         trace.started = Some((app.gen + 1, t0));
                         trace.point_logged = false;
                         trace.charts_logged = false;
+                        trace.final_logged = false;
                     }
                 }
                 Msg::Input(_) => {}

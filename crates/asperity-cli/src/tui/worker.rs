@@ -31,6 +31,18 @@ use std::sync::Arc;
 /// Points of the load sweeps (the charts show at most ~80 columns of braille, 2 dots each;
 /// 64 points joined by lines are indistinguishable from more).
 pub const SWEEP_POINTS: usize = 64;
+/// Points of the quick first load sweep of an adhesive scene, drawn while the full one runs:
+/// every third p* of the full sweep's [`SWEEP_POINTS`], at the U-table step
+/// [`PREVIEW_STEP_LN`] (no refinement over the ≤ 6 decades of a chart range), with the window
+/// edges refined as in the full sweep. On system II's thin slab inside its hysteresis window
+/// (t·q_r = 0.1, γ_s = 0.1256 J/m², 1e-5…1) it costs ~40 % of the full sweep.
+pub const PREVIEW_POINTS: usize = 22;
+/// Largest U-table step (ln p*) of the preview sweep ([`PREVIEW_POINTS`]).
+pub const PREVIEW_STEP_LN: f64 = 1.0;
+/// Precision (relative, in p*) of the preview's window edges: the largest the engine allows,
+/// about its load step (a jump drawn within a braille dot or two of the full sweep's, which
+/// refines it to `Options::chart`'s 3 %). Refining to 3 % took a third of the preview.
+pub const PREVIEW_EDGE_REL: f64 = asperity::theory::engine::EDGE_REL_RANGE.1;
 /// Points of the sampled Pr(σ*).
 pub const SIGMA_POINTS: usize = 241;
 /// t·q_r range of the thickness chart (\[S\] Fig. 7 spans about this).
@@ -340,7 +352,7 @@ pub fn process(
         return;
     }
     let sw = if req.needs.loads {
-        let Some(sw) = serve_sweep(req, &req.scene, caches, cancel, send) else {
+        let Some(sw) = serve_sweep(req, &req.scene, true, caches, cancel, send) else {
             return;
         };
         Some(sw)
@@ -404,7 +416,7 @@ pub fn process(
             }
             let done = match part {
                 0 if req.needs.point => serve_point(req, &scene, false, caches, cancel, send).map(|_| ()),
-                1 if req.needs.loads => serve_sweep(req, &scene, caches, cancel, send).map(|_| ()),
+                1 if req.needs.loads => serve_sweep(req, &scene, false, caches, cancel, send).map(|_| ()),
                 2 if req.needs.thickness => serve_thickness(req, &scene, caches, cancel, send).map(|_| ()),
                 _ => Some(()),
             };
@@ -471,6 +483,7 @@ fn serve_point(
 fn serve_sweep(
     req: &Request,
     scene: &Scene,
+    preview: bool,
     caches: &mut Caches,
     cancel: &AtomicBool,
     send: &dyn Fn(Reply),
@@ -479,6 +492,19 @@ fn serve_sweep(
     let sw = match caches.sweeps.get(&key) {
         Some(s) => s,
         None => {
+            // an adhesive sweep costs 0.1–0.3 s: a preview first ([`PREVIEW_POINTS`]), not
+            // cached (a failed preview is left to the full sweep to report)
+            if preview && scene.gamma > 0.0 {
+                match preview_sweep(scene, req.range, cancel) {
+                    Err(Error::Cancelled) => return None,
+                    Ok(sd) => send(Reply::Sweep {
+                        gen: req.gen,
+                        key: key.clone(),
+                        result: Ok(sd),
+                    }),
+                    Err(_) => {}
+                }
+            }
             let spec = SweepSpec {
                 from: req.range.0,
                 to: req.range.1,
@@ -510,6 +536,23 @@ pub fn load_sweep(scene: &Scene, spec: &SweepSpec, cancel: &AtomicBool) -> Resul
         &Options::chart(),
         Some(cancel),
     )?))
+}
+
+/// The quick first load curves of `scene` over `range` ([`PREVIEW_POINTS`]).
+pub fn preview_sweep(scene: &Scene, range: (f64, f64), cancel: &AtomicBool) -> Result<SweepData> {
+    let spec = SweepSpec {
+        from: range.0,
+        to: range.1,
+        points: PREVIEW_POINTS,
+    };
+    let opts = Options {
+        sweep_step_ln: PREVIEW_STEP_LN,
+        edge_rel: PREVIEW_EDGE_REL,
+        ..Options::chart()
+    };
+    let mut sd = SweepData::from_sweep(&sweep::sweep(scene, &spec, &opts, Some(cancel))?);
+    sd.preview = true;
+    Ok(sd)
 }
 
 /// The thickness sweep of `scene` (cached); `None` when cancelled.
@@ -925,8 +968,20 @@ mod tests {
         let mut req = request(1, 0.01);
         req.scene.gamma = 0.05;
         let r = serve(&req, &mut c, false, false);
-        assert_eq!(kinds(&r), ["point", "sweep", "gap", "point", "done"]);
-        let (Reply::Point { result: Ok(first), .. }, Reply::Point { result: Ok(last), .. }) = (&r[0], &r[3]) else {
+        // the load curves too come first as a preview (fewer loads), then in full
+        assert_eq!(kinds(&r), ["point", "sweep", "sweep", "gap", "point", "done"]);
+        let (Reply::Sweep { result: Ok(quick), .. }, Reply::Sweep { result: Ok(full), .. }) = (&r[1], &r[2]) else {
+            panic!("{r:?}");
+        };
+        assert!(quick.preview && !full.preview);
+        assert_eq!((quick.p.len(), full.p.len()), (PREVIEW_POINTS, SWEEP_POINTS));
+        // the preview's loads are the full sweep's every third (both log-spaced over the range)
+        for (k, p) in quick.p.iter().enumerate() {
+            let q = full.p[3 * k];
+            assert!((p / q - 1.0).abs() < 1e-12, "{p} vs {q}");
+            assert!((quick.a_r[k] / full.a_r[3 * k] - 1.0).abs() < 1e-6, "{k}");
+        }
+        let (Reply::Point { result: Ok(first), .. }, Reply::Point { result: Ok(last), .. }) = (&r[0], &r[4]) else {
             panic!("{r:?}");
         };
         assert!(first.preview && first.error_estimate.is_nan());
@@ -942,7 +997,7 @@ mod tests {
         // the refined point is cached: the next time it comes at once, alone
         let again = serve(&req, &mut c, false, false);
         assert_eq!(kinds(&again), ["point", "sweep", "gap", "done"]);
-        assert_eq!(again[0], r[3]);
+        assert_eq!(again[0], r[4]);
         // stale after the preview: only the preview is sent, nothing refined is cached
         let mut c2 = Caches::default();
         assert_eq!(kinds(&serve(&req, &mut c2, false, true)), ["point"]);
@@ -983,6 +1038,18 @@ mod tests {
         };
         assert_eq!(stable(jump / 1.1), 2, "below {jump}");
         assert_eq!(stable(jump * 1.1), 1, "above {jump}");
+        // the explorer's preview of the same range (6 loads, its edge to PREVIEW_EDGE_REL)
+        // shows both branches and a jump within its precision of the full sweep's
+        let quick = preview_sweep(&scene, (spec.from, spec.to), &AtomicBool::new(false)).unwrap();
+        assert!(
+            quick.preview && quick.a_r_unloading[0] > 0.3 && quick.a_r[0] < 0.1,
+            "{quick:?}"
+        );
+        let quick_jump = quick.jump_in.expect("the preview's jump-in");
+        assert!(
+            (quick_jump / jump).ln().abs() < PREVIEW_EDGE_REL,
+            "{quick_jump} vs {jump}"
+        );
         let cancelled = load_sweep(&scene, &spec, &AtomicBool::new(true));
         assert!(matches!(cancelled, Err(Error::Cancelled)));
     }

@@ -3,10 +3,12 @@
 //! [`node_results`] evaluates [`crate::theory::engine::evaluate`] at every p* of an ascending
 //! list with lean options (no Pr table, no resolution record, the ODE at the energy route's
 //! tolerance [`ENERGY_RTOL`]). With adhesion every [`ANCHOR_STRIDE`]-th load (an anchor)
-//! scans for every branch (`theory::adhesion`); a load between two anchors with the same
-//! number of branches tracks its lower neighbour's roots (a warm start, falling back to the
-//! scan when a root is not where it was or the roots no longer alternate in sign), and every
-//! load between anchors with different numbers (an edge of a hysteresis window) scans too.
+//! scans for every branch (`theory::adhesion`); the loads between two anchors track their
+//! neighbour's roots (a warm start from C interpolated between the neighbour and the next
+//! anchor, falling back to the scan when a root is not where it was or the roots no longer
+//! alternate in sign): upwards from the lower anchor, or downwards from the upper one where
+//! it has more branches (an edge of a hysteresis window lies between them: the pair of
+//! roots that ends at the fold is tracked up to it, and the first load past it scans).
 //! Anchors run in parallel, then the stretches between them: which load starts from which is
 //! fixed by the list, so results do not depend on the thread count. A window that opens and
 //! closes between two anchors (narrower than four load steps) is not seen.
@@ -99,8 +101,10 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
         .chain((!(n - 1).is_multiple_of(ANCHOR_STRIDE)).then_some(n - 1))
         .collect();
     let anchor_results: Vec<NodeResult> = anchors.par_iter().map(|&i| scanned(ps[i])).collect::<Result<_>>()?;
-    // the loads between two anchors: tracked from the lower anchor where both anchors have
-    // the same number of branches, each scanned in full otherwise (an edge of a window)
+    // the loads between two anchors: tracked from one anchor to the other, from the lower
+    // one unless the upper has more branches (an edge of a window between them: the branches
+    // that end at its fold are tracked up to it, where their brackets fail and the load is
+    // scanned); every load scanned where an anchor failed
     let count = |r: &NodeResult| r.as_ref().ok().map(|e| e.branches.len().max(1));
     let mut tracked = opts;
     tracked.adhesion.explore_branches = false;
@@ -108,17 +112,27 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
         .par_windows(2)
         .zip(anchor_results.par_windows(2))
         .map(|(ij, rs)| -> Result<Vec<NodeResult>> {
-            let track = count(&rs[0]).is_some() && count(&rs[0]) == count(&rs[1]);
-            let mut out: Vec<NodeResult> = Vec::with_capacity(ij[1] - ij[0] - 1);
-            for &p in &ps[ij[0] + 1..ij[1]] {
+            let (lower, upper) = (count(&rs[0]), count(&rs[1]));
+            let track = lower.is_some() && upper.is_some();
+            let down = upper > lower;
+            let (from, to) = if down { (&rs[1], &rs[0]) } else { (&rs[0], &rs[1]) };
+            let mut idx: Vec<usize> = (ij[0] + 1..ij[1]).collect();
+            if down {
+                idx.reverse();
+            }
+            let mut out: Vec<NodeResult> = Vec::with_capacity(idx.len());
+            for &i in &idx {
+                let p = ps[i];
                 let r = if track {
                     check_cancel(cancel)?;
-                    // the last two loads of the stretch (the anchor first) that converged in
-                    // a row, for the solver to extrapolate its roots from
-                    let last = out.last().unwrap_or(&rs[0]);
-                    let before = out.len().checked_sub(2).map_or(&rs[0], |i| &out[i]);
-                    let path: Vec<&Evaluation> = match (before, last) {
-                        (Ok(b), Ok(l)) if !out.is_empty() => vec![b, l],
+                    // the last converged load of the stretch (the anchor it starts from
+                    // first) and the anchor it runs to, for the solver to interpolate the
+                    // roots between where both have as many (half the error of extrapolating
+                    // from the last two, and the first load after the anchor gets a trend
+                    // too)
+                    let last = out.last().unwrap_or(from);
+                    let path: Vec<&Evaluation> = match (to, last) {
+                        (Ok(next), Ok(l)) => vec![next, l],
                         (_, Ok(l)) => vec![l],
                         (_, Err(_)) => Vec::new(),
                     };
@@ -129,6 +143,9 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
                     scanned(p)?
                 };
                 out.push(r);
+            }
+            if down {
+                out.reverse();
             }
             Ok(out)
         })

@@ -243,11 +243,11 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
     // the hysteresis window: the first run of grid loads with two stable branches, each edge
     // inside the grid refined by bisection between its two grid loads; the loading branch's
     // jump into contact is then placed at its load in the gap table
-    let stable: Vec<Option<usize>> = evs
+    let branches: Vec<Option<&[_]>> = evs
         .iter()
-        .map(|e| e.as_ref().ok().map(|e| e.branches.iter().filter(|b| b.stable).count()))
+        .map(|e| e.as_ref().ok().map(|e| e.branches.as_slice()))
         .collect();
-    let window = window::window_on_grid(scene, &ps, &stable, &opts.adhesion, opts.edge_rel, cancel)?;
+    let window = window::window_on_branches(scene, &ps, &branches, &opts.adhesion, opts.edge_rel, cancel)?;
     let (jump_in_pressure, pull_off_pressure) = (window.jump_in_pressure, window.pull_off_pressure);
     let jump = jump_in_pressure.map(|p| gap::KnownJump {
         ln_p: p.ln(),

@@ -473,9 +473,33 @@ fn refine_sign_changes(
     Ok(())
 }
 
+/// A bracket narrower than this in w (C to 1e-6 relative, far below any resolution's
+/// error) across which H still changes by more than [`JUMP_SLOPE`] times what the first
+/// bracket's mean slope predicts straddles a jump of the discrete H, not a root (where the
+/// wall's onset crosses a step's end as C changes; `strategy::COLLAPSED`): Brent's method
+/// stops there instead of bisecting on to round-off. Next to system II's thin-slab fold
+/// (t·q_r = 0.1, p* = 2.29e-4, chart accuracy) a root sat on such a jump of 7e-7 J/m², and
+/// the 30 bisections down to 1e-13 cost 180 ms (the marches on one side of the jump are
+/// 30× dearer: the onset right at a step's end starts the wall at a speed that refines
+/// the grid); the rule stops after 11.
+const JUMP_WIDTH: f64 = 1e-6;
+/// See [`JUMP_WIDTH`].
+const JUMP_SLOPE: f64 = 100.0;
+
+/// Interpolation steps (inverse quadratic, else secant) of [`refine`] after which the
+/// bracket must have halved, else the next step bisects. Brent's own rule (each step at most
+/// half the one before last) bisected where H rises steeply just past a root that the first
+/// secant undershot (a cold solve at system II, t·q_r = 1, p* = 1e-6, chart accuracy: a
+/// bracket of 1.9 in w, 14 marches, two of them 3–10 ms out in the steep part, where the
+/// walls start at the coarsest scales). Such a slow turn instead stretches the interpolated
+/// step past the root (2×, 4×, … at most to the midpoint), which brings the far end in:
+/// 7 marches there.
+const SLOW_STEPS: usize = 3;
+
 /// Brent's method in w on a bracket [a, b] with H(a)·H(b) < 0, to |H| ≤ tol·a_r(q_s) (a
-/// relative mismatch of the energy balance at q_s: |γ(q_s)/γ_s − 1| ≤ tol) or a bracket
-/// below round-off; the root's march recorded.
+/// relative mismatch of the energy balance at q_s: |γ(q_s)/γ_s − 1| ≤ tol), a bracket
+/// below round-off, or a bracket across a jump of H ([`JUMP_WIDTH`]); the root's march
+/// recorded.
 #[allow(clippy::too_many_arguments)]
 fn refine(
     s: &mut Shooter<'_>,
@@ -498,12 +522,19 @@ fn refine(
         std::mem::swap(&mut pa, &mut pb);
     }
     let mut pc = pa;
-    let mut d = pb.0 - pa.0;
-    let mut bisected = true;
+    // the bracket's widths since the last bisection, and the stretch of a slow step
+    let mut widths: Vec<f64> = Vec::new();
+    let mut boost = 2.0;
+    // the first bracket's mean slope, against which a jump of H shows (see JUMP_WIDTH)
+    let mean_slope = (pb.1 - pa.1).abs() / (pb.0 - pa.0).abs();
     for _ in 0..s.m.acc.max_iterations {
         check_cancel(cancel)?;
         let ((a, fa, _), (b, fb, ab), (c, fc, _)) = (pa, pb, pc);
-        if fb.abs() <= tol * ab || (b - a).abs() <= 1e-13 * (1.0 + b.abs()) {
+        let width = (b - a).abs();
+        if fb.abs() <= tol * ab
+            || width <= 1e-13 * (1.0 + b.abs())
+            || (width < JUMP_WIDTH && (fb - fa).abs() > JUMP_SLOPE * mean_slope * width)
+        {
             break;
         }
         // inverse quadratic interpolation, else secant, with Brent's safeguards
@@ -516,23 +547,33 @@ fn refine(
         };
         let lo = (3.0 * a + b) / 4.0;
         let outside = !((x > lo.min(b)) && (x < lo.max(b)));
-        let slow = if bisected {
-            (x - b).abs() >= (b - c).abs() / 2.0
-        } else {
-            (x - b).abs() >= (c - d).abs() / 2.0
-        };
-        if outside || slow || !x.is_finite() {
+        // slow: the bracket has not halved over the last SLOW_STEPS interpolations
+        let slow = widths.len() >= SLOW_STEPS && width > 0.5 * widths[widths.len() - SLOW_STEPS];
+        if outside || !x.is_finite() {
             x = 0.5 * (a + b);
-            bisected = true;
-        } else {
-            bisected = false;
+            widths.clear();
+        } else if slow {
+            // one-sided convergence (the far end stays): the step stretched past the root,
+            // `boost` times (doubling at each slow turn), at most to the midpoint
+            let m = 0.5 * (a + b);
+            let stretched = b + boost * (x - b);
+            x = if (stretched - b).abs() < (m - b).abs() {
+                stretched
+            } else {
+                m
+            };
+            boost *= 2.0;
+            widths.clear();
         }
+        if widths.last().is_some_and(|&w0| width <= 0.5 * w0) {
+            boost = 2.0;
+        }
+        widths.push(width);
         s.shots += 1;
         let shot = s.m.shoot(&s.coef, scale.c(x), true);
         let px = (x, shot.h, shot.a_s);
         records.retain(|r| r.0 == pa.0 || r.0 == pb.0);
         records.push((x, shot));
-        d = c;
         pc = pb;
         if (fa < 0.0) != (px.1 < 0.0) {
             pb = px;

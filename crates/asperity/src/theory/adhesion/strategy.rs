@@ -58,7 +58,10 @@ pub const EXTRAPOLATE_MAX: f64 = 2.0;
 /// ln p* (in asinh(C/c₀), the root scan's variable) from the last two to this scene's p*
 /// (when the step is at most [`EXTRAPOLATE_MAX`] times the last one): a load step of 0.11
 /// in ln p* moves a thin slab's roots by ~0.1 in that variable, and the extrapolation's
-/// guess lands within ~0.01, so each root is bracketed by two marches next to it.
+/// guess lands within ~0.01, so each root is bracketed by two marches next to it. Where
+/// this scene's p* lies between the last two (a sweep's next anchor, already solved, given
+/// before the last load), the same line interpolates: about half the error, and no limit
+/// on the step.
 ///
 /// # Errors
 /// As [`solve`].
@@ -78,7 +81,8 @@ pub fn solve_continued(
             let (c, co) = (roots_of(w), roots_of(o));
             let (x, xw, xo) = (scene.pressure.ln(), w.pressure.ln(), o.pressure.ln());
             let r = (x - xw) / (xw - xo);
-            let ok = c.len() == co.len() && r.is_finite() && r > 0.0 && r <= EXTRAPOLATE_MAX;
+            // r > 0: beyond the last (extrapolation); −1 < r < 0: between the two
+            let ok = c.len() == co.len() && r.is_finite() && r > -1.0 && r != 0.0 && r <= EXTRAPOLATE_MAX;
             (c, ok.then_some((co, r)))
         }
         [w] => (roots_of(w), None),

@@ -156,17 +156,14 @@ pub fn mean_gap_knowing(
     let evs = crate::theory::loads::evaluations(scene, &ps, opts, None)?;
     // the loading branch jumps into contact at the top of a hysteresis window: its load,
     // refined, places the jump of U_el inside its grid step (a few more solves, only then)
-    let stable: Vec<Option<usize>> = evs
-        .iter()
-        .map(|e| Some(e.branches.iter().filter(|b| b.stable).count()))
-        .collect();
+    let branches: Vec<Option<&[_]>> = evs.iter().map(|e| Some(e.branches.as_slice())).collect();
     let jump = if let Some(p) = jump_in {
         Some(KnownJump {
             ln_p: p.ln(),
             uncertainty_ln: 0.5 * opts.edge_rel,
         })
-    } else if stable.iter().any(|c| c.is_some_and(|c| c >= 2)) {
-        crate::theory::window::window_on_grid(scene, &ps, &stable, &opts.adhesion, opts.edge_rel, None)?
+    } else if evs.iter().any(|e| e.branches.iter().filter(|b| b.stable).count() >= 2) {
+        crate::theory::window::window_on_branches(scene, &ps, &branches, &opts.adhesion, opts.edge_rel, None)?
             .jump_in_pressure
             .map(|p| KnownJump {
                 ln_p: p.ln(),
