@@ -708,3 +708,28 @@ fn a_thickness_sweep_finds_the_window_edges_in_t() {
         assert_eq!(left_lower, e.kind == EdgeKind::PullOff, "{e:?}: {inside:?} {outside:?}");
     }
 }
+
+#[test]
+fn a_solve_does_not_depend_on_what_its_thread_solved_before() {
+    // the propagator keeps its FFT plans per thread across solves (adhesion::heat): a plan
+    // must depend on its length only, or the last bits of a result (and so of a sweep, whose
+    // loads land on whichever rayon thread is free) depend on the thread's history. System 1
+    // in a fresh thread, and in a thread that first solved a thin slab of system 2 (other grid
+    // sizes planned first): the same bits, error estimate included.
+    let solve = |warm_up: bool| {
+        std::thread::spawn(move || {
+            if warm_up {
+                let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+                s.model = Model::named(4).unwrap();
+                s.thickness_qr = 0.25;
+                engine::evaluate(&s, &Options::default()).unwrap();
+            }
+            let s = Preset::resolve("system-1").unwrap().scene().unwrap();
+            let e = engine::evaluate(&s, &Options::default()).unwrap();
+            (e.stats.a_r.to_bits(), e.error_estimate.to_bits(), e.residual.to_bits())
+        })
+        .join()
+        .unwrap()
+    };
+    assert_eq!(solve(false), solve(true));
+}

@@ -16,8 +16,43 @@
 
 use rustfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::f64::consts::PI;
 use std::sync::Arc;
+
+thread_local! {
+    /// The FFT plans of this thread by length, kept across marches and solves: the grid's
+    /// size changes from step to step, and planning each size afresh for every solve
+    /// (twiddles, AVX set-up) was 8 % of a cold solve at (8, 5). Each length is planned by a
+    /// planner of its own: a shared planner builds a length from the sub-plans it already
+    /// holds, so its plans (and the last bits of the results) depended on what it had
+    /// planned before, i.e. on which solves a thread had run.
+    static PLANS: RefCell<HashMap<usize, Pair>> = RefCell::new(HashMap::new());
+}
+
+/// Longest transform kept in [`PLANS`]: the usual grids are far shorter, and the few
+/// refined for a fast wall (up to 2¹⁷) would otherwise hold their twiddles for the life of
+/// the thread.
+const CACHED_MAX: usize = 1 << 13;
+
+/// The forward and inverse transforms of length m (see [`PLANS`]).
+fn plans(m: usize) -> Pair {
+    if m > CACHED_MAX {
+        let mut planner = FftPlanner::new();
+        return (planner.plan_fft_forward(m), planner.plan_fft_inverse(m));
+    }
+    PLANS.with(|cache| {
+        cache
+            .borrow_mut()
+            .entry(m)
+            .or_insert_with(|| {
+                let mut planner = FftPlanner::new();
+                (planner.plan_fft_forward(m), planner.plan_fft_inverse(m))
+            })
+            .clone()
+    })
+}
 
 /// Interleaved recurrence chains of [`Heat::mass`] (its start values are written for 4).
 const CHAINS: usize = 4;
@@ -27,6 +62,8 @@ const TAIL: f64 = 1e-17;
 
 /// Forward and inverse FFTs of one length.
 type Plan = (usize, Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>);
+/// A forward and an inverse FFT.
+type Pair = (Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>);
 
 /// The exact step of drift–diffusion on [0, X] with an absorbing (Dirichlet) end at 0 and a
 /// constant drift c, for a grid of N intervals (c = 0: the Dirichlet heat semigroup).
@@ -38,7 +75,6 @@ type Plan = (usize, Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>);
 /// inverse FFT. With `ext_rate` = 0 the extension is the plain odd one (c = 0, or a grid
 /// whose lower end is not the wall and carries no density).
 pub(super) struct Heat {
-    planner: FftPlanner<f64>,
     plan: Option<Plan>,
     buf: Vec<Complex64>,
     scratch: Vec<Complex64>,
@@ -60,7 +96,6 @@ pub(super) struct Heat {
 impl Heat {
     pub(super) fn new() -> Self {
         Heat {
-            planner: FftPlanner::new(),
             plan: None,
             buf: Vec::new(),
             scratch: Vec::new(),
@@ -82,10 +117,9 @@ impl Heat {
         let n = p.len() - 1;
         let m = 2 * n;
         if self.plan.as_ref().map(|pl| pl.0) != Some(m) {
-            let fwd = self.planner.plan_fft_forward(m);
-            let inv = self.planner.plan_fft_inverse(m);
+            let (fwd, inv) = plans(m);
             let len = fwd.get_inplace_scratch_len().max(inv.get_inplace_scratch_len());
-            self.scratch = vec![Complex64::new(0.0, 0.0); len];
+            self.scratch.resize(len, Complex64::new(0.0, 0.0));
             self.plan = Some((m, fwd, inv));
         }
         let (_, fwd, _) = self.plan.as_ref().expect("planned");
