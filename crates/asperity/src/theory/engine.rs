@@ -211,9 +211,9 @@ pub fn evaluate_warm(
 }
 
 /// [`evaluate_warm`] continued along a path of evaluations of the same scene at other loads,
-/// oldest first: with adhesion the solver extrapolates the branches from the last two, or interpolates
-/// between them where this load lies between ([`adhesion::solve_continued`]); with one it is
-/// [`evaluate_warm`].
+/// oldest first: with adhesion the solver extrapolates the branches from the last two, or
+/// interpolates between them where this load lies between ([`adhesion::solve_continued`]);
+/// with one it is [`evaluate_warm`].
 pub fn evaluate_continued(
     scene: &Scene,
     opts: &Options,

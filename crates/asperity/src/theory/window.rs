@@ -16,10 +16,11 @@
 //! loads' (ln p*, (C₂ − C₁)²) crosses zero at a guess of the edge, and two loads `rel`
 //! apart around the guess are solved side by side (rayon); when the first is inside and
 //! the second outside, the edge lies between them and the search ends after one round.
-//! Otherwise the bracket shrinks to whichever side failed, the new inside load refines the
-//! line, and a bracket without a guess is bisected. On system II, model 3, t·q_r = 0.1,
-//! 0.8 γ_s (chart accuracy, edge to 3 %) the jump-in took three bisection solves in a row
-//! (~60 ms), and one round of two side by side with the guess.
+//! Otherwise the bracket shrinks to whichever side failed, the new inside loads refine the
+//! line, and the next round solves the bracket's thirds side by side (as does every round
+//! without a guess) before aiming again. On system II, model 3, t·q_r = 0.1, 0.8 γ_s (chart
+//! accuracy, edge to 3 %) the jump-in took three bisection solves in a row (~60 ms), now one
+//! or two rounds of two side by side.
 //!
 //! This module depends only on the adhesive solver, so that the sweep and the mean gap (which
 //! place the loading branch's jump into contact) can use it; [`crate::theory::hysteresis`]
@@ -135,9 +136,9 @@ pub fn edge_to(
 }
 
 /// The edge between `inside` and `outside` (p*) to `rel` in p*, aimed by the fold's normal
-/// form (module docs) from `known` inside loads (ln p*, (C₂ − C₁)²): pairs of solves side by
-/// side around each guess, bisection without one. The geometric midpoint of the last
-/// bracket.
+/// form (module docs) from `known` inside loads (ln p*, (C₂ − C₁)²/γ_s²): rounds of two
+/// solves side by side, around the guess or at the bracket's thirds. The geometric midpoint
+/// of the last bracket.
 fn edge_aimed(
     scene: &Scene,
     (inside, outside): (f64, f64),
@@ -221,9 +222,10 @@ pub(crate) fn bisect(
 /// The hysteresis window on an ascending grid of loads `ps` whose every branch was solved
 /// (`stable[i]`: the number of stable branches at `ps[i]`, `None` where the solve failed):
 /// the first run of loads with two or more stable branches, each edge that lies inside the
-/// grid (its neighbour outside the run solved) refined by [`edge_to`] to `rel`, the two
-/// edges side by side (rayon). A window that opens and closes between two grid loads is not
-/// seen.
+/// grid (its neighbour outside the run solved) refined to `rel` in rounds of two solves side
+/// by side at the bracket's thirds, the two edges side by side (rayon); with the branches
+/// themselves [`window_on_branches`] aims at the fold instead. A window that opens and closes
+/// between two grid loads is not seen.
 ///
 /// # Errors
 /// As [`adhesion::solve`].
