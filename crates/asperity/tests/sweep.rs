@@ -179,6 +179,40 @@ fn adhesive_sweeps_do_not_depend_on_the_thread_count() {
 }
 
 #[test]
+fn window_sweeps_do_not_depend_on_the_thread_count() {
+    // a hysteresis window (system 2, model 3, t·q_r = 0.1, 0.8 γ_s): loads tracked across
+    // its edge from the anchor with more branches, the jump-in aimed by pairs of solves side
+    // by side (theory::window); one and two threads give the same bits
+    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+    s.model = Model::named(3).unwrap();
+    s.thickness_qr = 0.1;
+    s.gamma *= 0.8;
+    let spec = SweepSpec {
+        from: 1e-6,
+        to: 1e-3,
+        points: 14,
+    };
+    let opts = Options::chart();
+    let on = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| sweep::sweep(&s, &spec, &opts, None).unwrap())
+    };
+    let (one, two) = (on(1), on(2));
+    let bits = |p: Option<f64>| p.map(f64::to_bits);
+    assert!(one.jump_in_pressure.is_some());
+    assert_eq!(bits(one.jump_in_pressure), bits(two.jump_in_pressure));
+    for (a, b) in one.rows.iter().zip(&two.rows) {
+        assert_eq!(a.branches, b.branches, "p* {}", a.p);
+        assert_eq!(a.a_r.to_bits(), b.a_r.to_bits(), "p* {}", a.p);
+        assert_eq!(a.a_r_unloading.to_bits(), b.a_r_unloading.to_bits(), "p* {}", a.p);
+        assert_eq!(a.mean_gap_rel.to_bits(), b.mean_gap_rel.to_bits(), "p* {}", a.p);
+    }
+}
+
+#[test]
 fn tracked_loads_agree_with_full_scans() {
     // a sweep scans every branch only at every ANCHOR_STRIDE-th load and tracks the root in
     // between (issue 13 target: 64 loads in ≤ 1 s); every row against its own full scan
