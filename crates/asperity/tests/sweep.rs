@@ -20,6 +20,30 @@ fn system1(n: u8) -> Scene {
     s
 }
 
+/// System 2, model 3, t·q_r = 0.1, 0.8 γ_s, and a sweep 1e-6…1e-3 that holds its hysteresis
+/// window's jump-in (three branches from below 1e-6 up to ~2.3e-4).
+fn thin_slab_window() -> (Scene, SweepSpec) {
+    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+    s.model = Model::named(3).unwrap();
+    s.thickness_qr = 0.1;
+    s.gamma *= 0.8;
+    let spec = SweepSpec {
+        from: 1e-6,
+        to: 1e-3,
+        points: 14,
+    };
+    (s, spec)
+}
+
+/// `f` on a pool of `threads` threads.
+fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(f)
+}
+
 #[test]
 fn rows_match_single_evaluations() {
     let s = system1(3);
@@ -162,13 +186,7 @@ fn adhesive_sweeps_do_not_depend_on_the_thread_count() {
         points: 40,
     };
     let opts = Options::chart();
-    let on = |threads: usize| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap()
-            .install(|| sweep::sweep(&s, &spec, &opts, None).unwrap())
-    };
+    let on = |threads: usize| on_threads(threads, || sweep::sweep(&s, &spec, &opts, None).unwrap());
     let (one, two) = (on(1), on(2));
     assert!(one.failed_loads.is_empty());
     for (a, b) in one.rows.iter().zip(&two.rows) {
@@ -183,23 +201,9 @@ fn window_sweeps_do_not_depend_on_the_thread_count() {
     // a hysteresis window (system 2, model 3, t·q_r = 0.1, 0.8 γ_s): loads tracked across
     // its edge from the anchor with more branches, the jump-in aimed by pairs of solves side
     // by side (theory::window); one and two threads give the same bits
-    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-    s.model = Model::named(3).unwrap();
-    s.thickness_qr = 0.1;
-    s.gamma *= 0.8;
-    let spec = SweepSpec {
-        from: 1e-6,
-        to: 1e-3,
-        points: 14,
-    };
+    let (s, spec) = thin_slab_window();
     let opts = Options::chart();
-    let on = |threads: usize| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap()
-            .install(|| sweep::sweep(&s, &spec, &opts, None).unwrap())
-    };
+    let on = |threads: usize| on_threads(threads, || sweep::sweep(&s, &spec, &opts, None).unwrap());
     let (one, two) = (on(1), on(2));
     let bits = |p: Option<f64>| p.map(f64::to_bits);
     assert!(one.jump_in_pressure.is_some());
@@ -255,19 +259,11 @@ fn tracked_loads_agree_with_full_scans() {
 fn tracked_loads_inside_a_window_agree_with_full_scans() {
     // inside a hysteresis window (system 2, model 3, t·q_r = 0.1, 0.8 γ_s: three branches
     // from below 1e-6 up to the jump-in at ~2.3e-4) the loads between anchors track three
-    // roots each, from C extrapolated along the sweep (adhesion::solve_continued); every row
+    // roots each, from C interpolated towards the next anchor (adhesion::solve_continued); every row
     // against its own full scan at the same (chart) accuracy: both stable branches and the
     // branch count, and the jump-in marked between the last row with three and the first with
     // one
-    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-    s.model = Model::named(3).unwrap();
-    s.thickness_qr = 0.1;
-    s.gamma *= 0.8;
-    let spec = SweepSpec {
-        from: 1e-6,
-        to: 1e-3,
-        points: 14,
-    };
+    let (s, spec) = thin_slab_window();
     let opts = Options::chart();
     let sw = sweep::sweep(&s, &spec, &opts, None).unwrap();
     let mut scan = opts;
