@@ -35,6 +35,23 @@ fn thin_slab_window() -> (Scene, SweepSpec) {
     (s, spec)
 }
 
+/// The row's load evaluated on its own with `opts`, after checking the row's a_r against it
+/// to `tol` (relative) and its branch count.
+fn scanned_row(s: &Scene, r: &sweep::SweepRow, opts: &Options, tol: f64) -> engine::Evaluation {
+    let mut one = s.clone();
+    one.pressure = r.p;
+    let ev = engine::evaluate(&one, opts).unwrap();
+    assert!(
+        (r.a_r / ev.stats.a_r - 1.0).abs() < tol,
+        "p* {}: {} vs {}",
+        r.p,
+        r.a_r,
+        ev.stats.a_r
+    );
+    assert_eq!(r.branches, ev.branches.len().max(1), "p* {}", r.p);
+    ev
+}
+
 /// `f` on a pool of `threads` threads.
 fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
     rayon::ThreadPoolBuilder::new()
@@ -234,16 +251,7 @@ fn tracked_loads_agree_with_full_scans() {
     opts.adhesion_error_estimate = false;
     let rel = |a: f64, b: f64| (a / b - 1.0).abs();
     for r in &sw.rows {
-        let mut one = s.clone();
-        one.pressure = r.p;
-        let ev = engine::evaluate(&one, &opts).unwrap();
-        assert!(
-            rel(r.a_r, ev.stats.a_r) < TRACKED_VS_SCANNED_REL,
-            "p* {}: {} vs {}",
-            r.p,
-            r.a_r,
-            ev.stats.a_r
-        );
+        let ev = scanned_row(&s, r, &opts, TRACKED_VS_SCANNED_REL);
         assert!(
             rel(r.elastic_energy, ev.elastic_energy) < TRACKED_VS_SCANNED_ENERGY_REL,
             "p* {}: {} vs {}",
@@ -251,7 +259,6 @@ fn tracked_loads_agree_with_full_scans() {
             r.elastic_energy,
             ev.elastic_energy
         );
-        assert_eq!(r.branches, ev.branches.len().max(1), "p* {}", r.p);
     }
 }
 
@@ -259,10 +266,10 @@ fn tracked_loads_agree_with_full_scans() {
 fn tracked_loads_inside_a_window_agree_with_full_scans() {
     // inside a hysteresis window (system 2, model 3, t·q_r = 0.1, 0.8 γ_s: three branches
     // from below 1e-6 up to the jump-in at ~2.3e-4) the loads between anchors track three
-    // roots each, from C interpolated towards the next anchor (adhesion::solve_continued); every row
-    // against its own full scan at the same (chart) accuracy: both stable branches and the
-    // branch count, and the jump-in marked between the last row with three and the first with
-    // one
+    // roots each, from C interpolated towards the next anchor (adhesion::solve_continued);
+    // every row against its own full scan at the same (chart) accuracy: both stable branches
+    // and the branch count, and the jump-in marked between the last row with three and the
+    // first with one
     let (s, spec) = thin_slab_window();
     let opts = Options::chart();
     let sw = sweep::sweep(&s, &spec, &opts, None).unwrap();
@@ -271,17 +278,7 @@ fn tracked_loads_inside_a_window_agree_with_full_scans() {
     scan.adhesion.explore_branches = true;
     let rel = |a: f64, b: f64| (a / b - 1.0).abs();
     for r in &sw.rows {
-        let mut one = s.clone();
-        one.pressure = r.p;
-        let ev = engine::evaluate(&one, &scan).unwrap();
-        assert_eq!(r.branches, ev.branches.len().max(1), "p* {}", r.p);
-        assert!(
-            rel(r.a_r, ev.stats.a_r) < TRACKED_VS_SCANNED_REL,
-            "p* {}: {} vs {}",
-            r.p,
-            r.a_r,
-            ev.stats.a_r
-        );
+        let ev = scanned_row(&s, r, &scan, TRACKED_VS_SCANNED_REL);
         match ev.unloading_a_r {
             Some(u) => assert!(
                 rel(r.a_r_unloading, u) < TRACKED_VS_SCANNED_REL,
