@@ -5,7 +5,7 @@ use asperity::input::preset::{list_available, Preset, BUILTIN};
 #[test]
 fn every_shipped_preset_loads_and_validates() {
     let mut n = 0;
-    for entry in std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../../presets")).unwrap() {
+    for entry in std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/presets")).unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "toml") {
             let p = Preset::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

@@ -37,7 +37,7 @@ use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
 /// Tours compiled into the binary (name, TOML text).
-pub const BUILTIN: [(&str, &str); 1] = [("wang-muser", include_str!("../../../../tours/wang-muser.toml"))];
+pub const BUILTIN: [(&str, &str); 1] = [("wang-muser", include_str!("../../../tours/wang-muser.toml"))];
 
 /// The tour `asperity tour` and `t` start by default.
 pub const DEFAULT_TOUR: &str = "wang-muser";
@@ -377,7 +377,7 @@ caption = "a\nb\nc"
             let t = Tour::parse(text, name).unwrap();
             assert!((8..=12).contains(&t.steps.len()), "{name}: {} steps", t.steps.len());
         }
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tours");
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tours");
         for f in std::fs::read_dir(dir).unwrap() {
             let f = f.unwrap().path();
             Tour::load(&f).unwrap_or_else(|e| panic!("{}: {e}", f.display()));

@@ -44,14 +44,14 @@ use std::path::Path;
 
 /// The figures of \[S\] shipped with the binary: (id, file text).
 pub const BUILTIN: [(&str, &str); 8] = [
-    ("1", include_str!("../../../../figures/fig-1.toml")),
-    ("2", include_str!("../../../../figures/fig-2.toml")),
-    ("3", include_str!("../../../../figures/fig-3.toml")),
-    ("4", include_str!("../../../../figures/fig-4.toml")),
-    ("5", include_str!("../../../../figures/fig-5.toml")),
-    ("6", include_str!("../../../../figures/fig-6.toml")),
-    ("7", include_str!("../../../../figures/fig-7.toml")),
-    ("8", include_str!("../../../../figures/fig-8.toml")),
+    ("1", include_str!("../../../figures/fig-1.toml")),
+    ("2", include_str!("../../../figures/fig-2.toml")),
+    ("3", include_str!("../../../figures/fig-3.toml")),
+    ("4", include_str!("../../../figures/fig-4.toml")),
+    ("5", include_str!("../../../figures/fig-5.toml")),
+    ("6", include_str!("../../../figures/fig-6.toml")),
+    ("7", include_str!("../../../figures/fig-7.toml")),
+    ("8", include_str!("../../../figures/fig-8.toml")),
 ];
 
 /// The x axis of a figure.

@@ -69,7 +69,7 @@ fn values_that_would_break_a_solver_are_refused_up_front() {
     fails(&["run", "--pressure", "1e300"], &["--pressure = 1e300", "<= 1000"]);
     let dir = std::env::temp_dir().join(format!("asperity-bad-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../presets/system-2.toml")).unwrap();
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../presets/system-2.toml")).unwrap();
     let bad = dir.join("flat-gradient.toml");
     std::fs::write(&bad, text.replace("rms_gradient = 1.0", "rms_gradient = 1e-300")).unwrap();
     fails(

@@ -14,8 +14,8 @@ use std::path::{Path, PathBuf};
 
 /// Presets compiled into the binary (name, TOML text).
 pub const BUILTIN: [(&str, &str); 2] = [
-    ("system-1", include_str!("../../../../presets/system-1.toml")),
-    ("system-2", include_str!("../../../../presets/system-2.toml")),
+    ("system-1", include_str!("../../presets/system-1.toml")),
+    ("system-2", include_str!("../../presets/system-2.toml")),
 ];
 
 /// The default preset (system I, the contact-mechanics challenge).

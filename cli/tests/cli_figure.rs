@@ -253,7 +253,7 @@ fn bad_figure_arguments_exit_2_with_one_line() {
 fn bad_figure_files_give_the_preset_errors() {
     let dir = std::env::temp_dir().join(format!("asperity-figtoml-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let good = include_str!("../../../figures/fig-1.toml");
+    let good = include_str!("../../figures/fig-1.toml");
     for (name, from, to, needle) in [
         ("unknown", "points = 31", "points = 31\ncolour = \"red\"", "colour"),
         ("variant", "x = \"pressure\"", "x = \"speed\"", "line 6: x:"),
