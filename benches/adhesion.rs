@@ -1,4 +1,4 @@
-//! Adhesive theory (issue 3) and load sweeps (issue 4): time against error.
+//! Adhesive theory and load sweeps: time against error.
 //!
 //! - One adhesive solve of system 1 (model 3, p* = 0.01) and system 2 (model 4, p* = 0.005)
 //!   for a ladder of resolutions (steps per ln q, points per width), with the relative error

@@ -1,4 +1,4 @@
-//! One adhesionless evaluation (issue 2): time at the default accuracy, with the relative
+//! One adhesionless evaluation: time at the default accuracy, with the relative
 //! error of a_r against a refined solution (rtol = 1e-13) printed beside it.
 
 use asperity::input::model::Model;

@@ -1,4 +1,4 @@
-//! GFMD (issue 6): one adhesionless relaxation of a system-I map at p* = 0.01 to the default
+//! GFMD: one adhesionless relaxation of a system-I map at p* = 0.01 to the default
 //! relative force residual (1e-8), on 128² and 256² grids (L/λ_r = 2, λ_s/Δa = 8).
 
 use asperity::gfmd::{self, GfmdOptions, GridSpec, Problem};

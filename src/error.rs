@@ -63,7 +63,7 @@ pub enum Field {
     AdhesionSteps,
     /// Stress grid points per standard deviation of the adhesive solver.
     AdhesionPoints,
-    /// Fixed-point tolerance of the adhesive solver.
+    /// Self-consistency tolerance |γ(q_s)/γ_s − 1| of the adhesive solver.
     AdhesionTol,
     /// Upper end σ*_max of the tabulated Pr(σ*).
     SigmaMax,

@@ -21,7 +21,7 @@ pub const MODEL1_ERF_REL: f64 = 1e-9;
 pub const TABLE1_ABS: f64 = 5e-4;
 
 /// The model columns of the eq. (18) table in reference-values.md, printed to 5 digits and
-/// computed on the ideal PSD: 0.5 % relative (the issue's stated bound).
+/// computed on the ideal PSD: 0.5 % relative (the stated bound).
 pub const EQ18_TABLE_REL: f64 = 5e-3;
 
 /// ∫Pr dσ = a_r and ∫σPr dσ = p on a 4001-point trapezoid grid up to p + 8Δ: the trapezoid
@@ -32,12 +32,12 @@ pub const PR_INTEGRAL_REL: f64 = 1e-5;
 /// quadrature G(v) = 4∫W^{-2α}dv for t = ∞): both are converged to ~1e-10.
 pub const ORACLE_REL: f64 = 1e-7;
 
-/// Target relative error of a_r at the default accuracy against a refined solution
-/// (issue 2: below 1e-6).
+/// Target relative error of a_r at the default accuracy against a refined solution: below
+/// 1e-6.
 pub const DEFAULT_ACCURACY_REL: f64 = 1e-6;
 
 /// Mean gap: energy route (U on a grid of step 0.1 in ln p*, cubic-Lagrange derivative) against
-/// the Yang–Persson closed form, for p* ≤ 0.5 (issue 4: 1e-4). Measured ≤ 7e-6 on system 1;
+/// the Yang–Persson closed form, for p* ≤ 0.5. Measured ≤ 7e-6 on system 1;
 /// the Richardson estimate of the grid error matches the measured difference.
 pub const GAP_CLOSED_FORM_REL: f64 = 1e-4;
 
@@ -56,7 +56,7 @@ pub const SMALL_LOAD_ENERGY_REL: f64 = 1e-4;
 pub const ASYMPTOTE_SLOPE_REL: f64 = 1e-3;
 
 /// Model 1 on system 1: ū/h_rms "near 1.85 at p* = 0.01 and near 0.23 at p* = 0.1"
-/// (issue 4; the closed form gives 1.84658 and 0.234688): ±0.01 absolute.
+/// (the closed form gives 1.84658 and 0.234688): ±0.01 absolute.
 pub const SYSTEM1_GAP_ABS: f64 = 1e-2;
 
 /// A 64-point chart sweep against a 4× finer sweep at the shared loads: the finer grid is the
@@ -64,11 +64,11 @@ pub const SYSTEM1_GAP_ABS: f64 = 1e-2;
 /// ū > 1e-3 h_rms (4th-order rule).
 pub const SWEEP_REFINEMENT_REL: f64 = 2e-3;
 
-// Adhesion (issue 3)
+// Adhesion
 
 /// Constant wall on the grid against erf((p + σ_a)/√(2V)) (model 1, half-space): the sine
 /// propagator is exact in v and spectrally accurate in σ; what remains is the trapezoid sum of
-/// a_r on the grid (spectral for the odd-periodic density) and round-off (issue 3: 1e-8).
+/// a_r on the grid (spectral for the odd-periodic density) and round-off.
 pub const EXACT_WALL_ABS: f64 = 1e-8;
 
 /// σ_a ≡ 0 with a W-coupled broadening: the march (RK4 in the variance measure on 24 steps per
@@ -78,16 +78,15 @@ pub const ZERO_WALL_REL: f64 = 1e-6;
 /// Observed order of convergence of the moving-wall propagator (a wall opening linearly in
 /// ln q). Measured 2.0 (errors 3.6e-4, 9.1e-5, 2.3e-5 for 6/12/24 steps per ln q with 4/8/16
 /// points per width; orders 1.995, 2.007) with the exact drift step (the wall linear in v
-/// within a step); the earlier shift-then-heat splitting measured ≈ 1.3. With onset
-/// splitting up to a growth of 1/0.95 per step (session 23) the test's rungs are 12/24/48
-/// steps per ln q (errors 3.0e-5, 8.9e-6, 2.5e-6; orders 1.75, 1.84). The test asserts
-/// second order with a margin (> 1.7).
+/// within a step). With the onset splitting (a growth of at most 1/0.95 per step) the
+/// test's rungs are 12/24/48 steps per ln q (errors 3.0e-5, 8.9e-6, 2.5e-6; orders 1.75,
+/// 1.84). The test asserts second order with a margin (> 1.7).
 pub const MOVING_WALL_MIN_ORDER: f64 = 1.7;
 
 /// A wall receding into the distribution (σ_a falling linearly in ln q from 0.4 to 0.05,
 /// system 1, model 1, p* = 0.01, 20 points per width) at 12, 24 and 48 steps per ln q against
-/// 384: measured 1.1e-5, 1.4e-6, 3.1e-6 with the Strang-split shift; the shift-then-hold step
-/// before it (first order) gave 2.2e-3, 1.0e-3, 4.9e-4.
+/// 384: measured 1.1e-5, 1.4e-6, 3.1e-6 with the Strang-split shift (a first-order
+/// shift-then-hold step gives 2.2e-3, 1.0e-3, 4.9e-4).
 pub const RECEDING_WALL_ABS: f64 = 5e-5;
 
 /// A wall that starts like √ (σ_a ∝ √(t − 0.8) over the last fifth of ln q, up to 0.7; system
@@ -99,7 +98,7 @@ pub const ONSET_WALL_REL: f64 = 2e-5;
 /// The default adhesive resolution against a 4× finer one (a_r, relative), systems 1 and 2 at
 /// their reference loads. Measured against (192, 40): 4.4e-4 (system 1, model 3) and 2.5e-4
 /// (system 2, model 4), falling steadily with the step count (order ≈ 1.5–2; the onset of the
-/// wall limits it); with the old first-order splitting 1e-4 and 1.2e-3, not monotone. The
+/// wall limits it); a first-order splitting gives 1e-4 and 1.2e-3, not monotone. The
 /// 4× finer reference still carries ~1e-4: 1.5e-3.
 pub const ADHESION_DEFAULT_REL: f64 = 1.5e-3;
 
@@ -125,7 +124,7 @@ pub const GFMD_FULL_CONTACT_REL: f64 = 1e-7;
 /// so 1e-3 checks the limit (not the series, which `slab` tests to 1e-12).
 pub const GFMD_THIN_PLATE_REL: f64 = 1e-3;
 
-/// Johnson's 1-D sinusoid (the issue's bound, 1 % at λ/Δa ≥ 128). Counting contact nodes
+/// Johnson's 1-D sinusoid (bound: 1 % at λ/Δa ≥ 128). Counting contact nodes
 /// at λ/Δa = 512 resolves 2c to ±1 node out of ≥ 105 (observed ≤ 0.12 %); at λ/Δa = 128 node
 /// counting cannot reach 1 % (2c = 26 nodes at p̄ = 0.1 p_full), so there c and the pressure
 /// amplitude are fitted to the whole Johnson profile (observed ≤ 8e-4).
@@ -150,8 +149,8 @@ pub const SURFACE_GBAR_REL: f64 = 1e-12;
 /// largest mode, while modes near q_s are ~1e-4 of it).
 pub const SURFACE_SHAPE_REL: f64 = 1e-8;
 
-/// `run` against `sweep` at the same load (issue 13): both integrate the adhesionless ODE at
-/// `gap::ENERGY_RTOL`, so U and a_r agree to round-off; 1e-6 is the issue's bound.
+/// `run` against `sweep` at the same load: both integrate the adhesionless ODE at
+/// `gap::ENERGY_RTOL`, so U and a_r agree to round-off; 1e-6 leaves a wide margin.
 pub const RUN_SWEEP_REL: f64 = 1e-6;
 
 /// An adhesive sweep's load solved by tracking its neighbour's root against the same load
@@ -167,7 +166,7 @@ pub const TRACKED_VS_SCANNED_ENERGY_REL: f64 = 1e-4;
 /// against was off by a factor of 3.
 pub const THIN_SLAB_SMALL_LOAD_ENERGY_REL: f64 = 1e-2;
 
-// The adhesive oracle (issue 13 items 3 and 6; `tests/adhesion_oracle.rs`, `tests/oracle/`)
+// The adhesive oracle (`tests/adhesion_oracle.rs`, `tests/oracle/`)
 
 /// The oracle's march with a prescribed wall against closed forms (fixed wall: the mirror
 /// Gaussian; linearly moving wall: Bachelier–Lévy), model 1 on a half-space, two levels
@@ -194,7 +193,7 @@ pub const ADHESION_ORACLE_REL: f64 = 3e-2;
 /// set of 44 scenes). Measured ≤ 1.1e-3, and 3.4e-3 on the scene named above.
 pub const ADHESION_ORACLE_FINE_REL: f64 = 5e-3;
 
-/// Honest error bars (issue 13 item 6): the share of random adhesive scenes on which
+/// Honest error bars: the share of random adhesive scenes on which
 /// `error_estimate` must be ≥ the true error of a_r (against the oracle, and against a 4×
 /// finer run of the fast solver).
 pub const ERROR_BAR_COVERAGE: f64 = 0.95;
@@ -208,22 +207,13 @@ pub const ERROR_BAR_WORST_RATIO: f64 = 0.5;
 /// In the asymptotic regime of the second-order propagator the differences are 0.56×, 0.75×
 /// and 3× the errors they measure, but on thin slabs the march
 /// converges slowly and not monotonically in the steps (runs at 12, 16, 18 and 24 steps per
-/// ln q scatter by 7e-5 while all are 1–2e-4 off). Measured against the oracle and 4× finer
-/// runs:
-///
-/// | set | steps/2, S = 4 | 2/3 steps, S = 4 | refined grid: 2/3 steps, S = 8 | refined grid: 3/2 steps, S = 4 | onset inside a step: 3/2 steps, S = 4 | the same: 3/2 and 2 steps, S = 4 |
-/// |---|---|---|---|---|---|---|
-/// | 60 seeded random scenes vs oracle: misses, worst ratio, median | 1, 0.63, 6.9 | 0, 1.07, 4.3 | 1, 0.75, 9.6 | 1, 0.71, 3.6 | 4, 0.53, 9.0 | 0, 1.11, 9.0 |
-/// | the same against a 4× finer run: misses, worst ratio | 1, 0.75 | 0, 1.33 | 0, 1.19 | 0, 1.28 | 0, 1.04 | 0, 2.53 |
-/// | 44 scenes of the larger oracle set (systems I, II): misses | – | 2 (later 0) | 3 | 0 | 2 (vs 4× finer) | 0 (vs 4× finer; worst ratio 1.99) |
-/// | the 112-point issue grid vs a 4× finer run: misses, worst ratio | – | – | – | – | 18, 0.16 | 0, 1.43 |
-///
-/// With the grid refined at the wall's onset (`propagator`) the points-per-width error that
-/// dominated at the default fell 6× on system I, and the coarser step probe no longer saw the
-/// step error that was left: the finer probe (3/2 of the steps, ~+40 % time for `run`) does,
-/// with a tighter median. Re-measure it with the ignored tests of `adhesion_oracle` and
-/// `adhesion_error_bars` whenever the propagator changes (BENCHMARKS.md, "The slow oracle and
-/// honest error bars").
+/// ln q scatter by 7e-5 while all are 1–2e-4 off). With S = 4 and the probes at 3/2 and 2×
+/// the steps the estimate covered the true error on 60/60 seeded random scenes against the
+/// oracle (worst ratio 1.11, median 9.0) and against a 4× finer run (worst 2.53), on the
+/// 44-scene oracle set against a 4× finer run (worst 1.99) and on the 112-point thin-slab
+/// grid (worst 1.43); the probes it replaced are compared in BENCHMARKS.md ("Calibrating the
+/// error bar's safety factor"). Re-measure it with the ignored tests of `adhesion_oracle`
+/// and `adhesion_error_bars` whenever the propagator changes.
 pub const ADHESION_ERROR_SAFETY: f64 = 4.0;
 
 /// The adhesive a_r at the default resolution against twice the resolution in both directions
@@ -234,8 +224,8 @@ pub const TINY_LOAD_REFINEMENT_REL: f64 = 1e-3;
 /// The unloading branch's a_r at one load against the straight line (in ln p*) through its
 /// neighbours at ±10 %, across a load where the wall's onset crosses the first resolution
 /// node (system 2, model 3, t·q_r = 0.1, 0.8 γ_s, p* ≈ 1.2e-7, `tests/adhesion.rs`; the
-/// branch is flat there: a_r changes by 1e-6 relative between the neighbours). Before the
-/// onset was judged from the wall's own γ the root fell onto a jump of H and a_r was 2 % off.
+/// branch is flat there: a_r changes by 1e-6 relative between the neighbours). Judging the
+/// onset from anything but the wall's own γ puts the root onto a jump of H, 2 % off.
 pub const ONSET_THRESHOLD_SMOOTH_REL: f64 = 1e-5;
 
 /// The step counts of the error estimate's step probes relative to the solve's, calibrated
@@ -244,14 +234,14 @@ pub const ONSET_THRESHOLD_SMOOTH_REL: f64 = 1e-5;
 /// alignment with the wall's onset and agreed with the solve while both were 2e-4 off on
 /// system II, model 4, t·q_r = 0.5; 2/3 did the same on system II, model 3, t·q_r = 0.3,
 /// p* = 0.05). Two of them, because one finer probe can share it too: on the thin slabs of
-/// the issue grid (system II, model 4, t·q_r = 0.15) 24 and 36 steps agreed to 5e-7 while
+/// the thin-slab grid (system II, model 4, t·q_r = 0.15) 24 and 36 steps agreed to 5e-7 while
 /// both were 1.1e-5 off a 4× finer run; 48 steps moved by 5.8e-6. Measured on 216 scenes
-/// (60 random, the 112-point issue grid, the 44-scene oracle set) against a 4× finer run:
+/// (60 random, the 112-point thin-slab grid, the 44-scene oracle set) against a 4× finer run:
 /// 3/2 alone missed 20 (worst ratio 0.16), 3/2 and 2 miss none (worst ratio 1.43; against
 /// the oracle, where it resolves the error, none, worst 1.57).
 pub const ADHESION_ERROR_STEPS_FACTORS: [f64; 2] = [1.5, 2.0];
 
-// Mean gap with adhesion (issue 13, item 4; docs/physics.md §5)
+// Mean gap with adhesion (docs/physics.md §5)
 
 /// ū at γ_s = 1e-6 J/m² (γ̃_glo ~ 1e-6) against the adhesionless ū (energy route on the ODE,
 /// and the Yang–Persson closed form for model 1): the two use different solvers, and the

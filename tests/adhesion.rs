@@ -1,4 +1,4 @@
-//! The adhesive theory (issue 3): the moving-wall propagator against its exact cases and its
+//! The adhesive theory: the moving-wall propagator against its exact cases and its
 //! order of convergence, the self-consistent solutions of systems I and II against [S]'s
 //! findings, grid convergence, ∫Pr = a_r, the CLI fields, and hard cases.
 
@@ -6,7 +6,7 @@ use asperity::input::model::Model;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use asperity::surface::spectrum::{Normalisation, SelfAffine, Spectrum};
-use asperity::theory::adhesion::{self, AdhesionAccuracy};
+use asperity::theory::adhesion::{self, AdhesionAccuracy, Branch};
 use asperity::theory::engine::{self, Options};
 use asperity::theory::persson::{self, Accuracy};
 use asperity::tolerances::*;
@@ -173,7 +173,7 @@ fn system1_adhesion_adds_tens_of_percent() {
             "{}",
             ev.error_estimate
         );
-        assert_eq!(ev.branch, "loading");
+        assert_eq!(ev.branch, Branch::Loading);
         assert!(ev.sigma_a > 0.0 && ev.tensile_area > 0.0);
         assert!((ev.detached_fraction - (1.0 - ev.stats.a_r)).abs() < 1e-15);
     }
@@ -413,7 +413,7 @@ fn the_shooting_root_is_a_fixed_point_of_the_prescribed_wall_march() {
     assert!((sol.branches[0].a_r / sol.a_r - 1.0).abs() < 1e-6);
 }
 
-/// The issue-13 grid (system 2, models 3 and 4, thin slabs, small loads): every point solves,
+/// The thin-slab grid (system 2, models 3 and 4, thin slabs, small loads): every point solves,
 /// with its time and branches. `cargo test -p asperity --release --test adhesion -- --ignored
 /// --nocapture issue_grid`.
 #[test]
@@ -549,7 +549,7 @@ fn hysteresis_window_has_three_branches_and_brackets_the_load() {
     assert_eq!(b.len(), 3, "{b:?}");
     assert!(b[0].stable && !b[1].stable && b[2].stable, "{b:?}");
     assert!(b[0].a_r < b[1].a_r && b[1].a_r < b[2].a_r, "{b:?}");
-    assert_eq!(sol.branch, "loading");
+    assert_eq!(sol.branch, Branch::Loading);
     assert!((sol.a_r - b[0].a_r).abs() < 1e-15);
     assert_eq!(sol.unloading_a_r, Some(b[2].a_r));
     // the effective coarse-scale surface energy rises from branch to branch (C orders them)
@@ -577,7 +577,7 @@ fn hysteresis_window_has_three_branches_and_brackets_the_load() {
 
 #[test]
 fn the_thin_slab_grid_converges_everywhere() {
-    // the issue-13 grid where the fixed-point solver failed (system 2, models 3 and 4,
+    // the thin-slab grid where an iterated map loses contraction (system 2, models 3 and 4,
     // t·q_r 0.08–0.15, p* ≤ 1e-4): every point ends converged, on a stable branch, with
     // 0 < a_r ≤ 1 and a self-consistent energy balance
     for model in [3u8, 4] {
@@ -600,7 +600,7 @@ fn the_thin_slab_grid_converges_everywhere() {
     }
 }
 
-/// The accuracy ladder behind the default `AdhesionAccuracy` (BENCHMARKS.md, issue 13): the
+/// The accuracy ladder behind the default `AdhesionAccuracy` (BENCHMARKS.md): the
 /// relative a_r error of one adhesive solve against (192, 40) and its time, for rungs (steps
 /// per ln q, points per width) on system I (model 3, p* = 0.01) and system II (model 4,
 /// p* = 0.005, t·q_r = ∞ and 0.25). `cargo test -p asperity --test adhesion -- --ignored

@@ -1,4 +1,4 @@
-//! Honest error bars (issue 13 item 6): the adhesive `error_estimate` of `engine::evaluate`
+//! Honest error bars: the adhesive `error_estimate` of `engine::evaluate`
 //! against the true error of a_r, measured two ways on seeded random scenes: against the slow
 //! oracle (`oracle/`; only the difference beyond the oracle's own error bar counts) and
 //! against a 4× finer run of the fast solver. The estimate must cover

@@ -1,4 +1,4 @@
-//! The adhesive theory against an independent slow oracle (issue 13 item 3): `oracle/`
+//! The adhesive theory against an independent slow oracle: `oracle/`
 //! solves the same equations ([S-5..S-9, S-14]) with finite differences, a Shortley–Weller
 //! absorbing wall, extrapolated backward Euler in the variance and bisection on the scalar
 //! C = γ(q_L), sharing no code with `theory::adhesion` (like RustFFT's naive DFT beside its
@@ -394,7 +394,7 @@ fn sort_and_count_misses(ratios: &mut [(f64, String)], what: &str) -> usize {
 /// oracle wherever it converges. A point counts as a miss when the error exceeds the estimate
 /// by more than the oracle's bar; misses must stay ≤ 5 % and no estimate more than 2× below
 /// the error (less the bar); the same against a 4× finer fast run. Prints one row per point
-/// and the count of points where the fast solver did not converge (issue 13 item 1, not
+/// and the count of points where the fast solver did not converge (not
 /// asserted here).
 #[test]
 #[ignore]

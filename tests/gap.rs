@@ -1,4 +1,4 @@
-//! Mean gap and elastic energy (issue 4): the energy route against the Yang–Persson closed
+//! Mean gap and elastic energy: the energy route against the Yang–Persson closed
 //! form, limits, monotonicity, Persson's small-load asymptote, the system-1 values and hard
 //! cases.
 

@@ -1,4 +1,4 @@
-//! The mean gap with adhesion (issue 13, item 4; docs/physics.md §5): the γ → 0 limit, the
+//! The mean gap with adhesion (docs/physics.md §5): the γ → 0 limit, the
 //! admissibility of the gap on random adhesive scenes, the issue's example, and GFMD's mean gap
 //! on system II maps with adhesion, including the energy bracket that the gap rests on,
 //! checked on GFMD's exact energies.
@@ -247,7 +247,7 @@ fn gfmd_mean_gap_on_system_ii_with_adhesion() {
     }
 }
 
-/// By hand (BENCHMARKS.md, issue 13): the comparison above on a resolved map, printed as a
+/// By hand (BENCHMARKS.md): the comparison above on a resolved map, printed as a
 /// markdown table. `ASPERITY_GAP_PRESET` names the preset (a path; its `[gfmd]` grid is used),
 /// `ASPERITY_GAP_THICKNESS` the t·q_r values (comma-separated, `inf` allowed).
 /// `cargo test --release -p asperity --test gap_adhesion -- --ignored --nocapture`

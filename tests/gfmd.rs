@@ -1,4 +1,4 @@
-//! GFMD reference solver (issue 6): closed forms (full-contact sinusoid, thin plate, Johnson's
+//! GFMD reference solver: closed forms (full-contact sinusoid, thin plate, Johnson's
 //! partial contact), self-affine contact, reproducibility, hard cases, surface generator,
 //! height-map files and the `asperity gfmd` command.
 

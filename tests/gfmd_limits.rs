@@ -1,4 +1,4 @@
-//! GFMD you can trust (issue 15): the Δa → 0 limit with an error bar (Johnson's sinusoid, a
+//! GFMD you can trust: the Δa → 0 limit with an error bar (Johnson's sinusoid, a
 //! self-affine map), ensembles over seeds, load sweeps against single runs, the Polonsky–Keer
 //! solver against FIRE, and independence of the thread count.
 

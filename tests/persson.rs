@@ -1,4 +1,4 @@
-//! The adhesionless theory against the paper's numbers and closed forms (issue 2).
+//! The adhesionless theory against the paper's numbers and closed forms.
 
 use asperity::input::model::Model;
 use asperity::input::preset::Preset;

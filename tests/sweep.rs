@@ -1,4 +1,4 @@
-//! Load sweeps (issue 4): rows, shared U table, refinement error, cancellation, adhesion hook,
+//! Load sweeps: rows, shared U table, refinement error, cancellation, adhesion hook,
 //! validation and the `sweep` / `run` command lines.
 
 use asperity::error::Field;
@@ -193,7 +193,7 @@ fn adhesive_sweep_is_clean() {
 
 #[test]
 fn adhesive_sweeps_do_not_depend_on_the_thread_count() {
-    // issue 13 item 7: 40 loads (three continuation chunks) on one and on two threads give
+    // 40 loads (three continuation chunks) on one and on two threads give
     // the same numbers bit for bit
     let s = Preset::resolve("system-1").unwrap().scene().unwrap();
     assert!(s.gamma > 0.0);
@@ -236,7 +236,7 @@ fn window_sweeps_do_not_depend_on_the_thread_count() {
 #[test]
 fn tracked_loads_agree_with_full_scans() {
     // a sweep scans every branch only at every ANCHOR_STRIDE-th load and tracks the root in
-    // between (issue 13 target: 64 loads in ≤ 1 s); every row against its own full scan
+    // between (64 loads in about a second); every row against its own full scan
     let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
     s.model = Model::named(4).unwrap();
     s.thickness_qr = 0.1;
@@ -307,9 +307,9 @@ fn tracked_loads_inside_a_window_agree_with_full_scans() {
 
 #[test]
 fn run_and_sweep_agree_at_small_loads_on_a_thin_slab() {
-    // issue 13 item 5: system 2 without adhesion, model 3, t·q_r = 0.1, p* = 1e-7 (the ODE at
-    // rtol 1e-7 stepped from q_L to q_r in one go and its cubic interpolant dipped below zero:
-    // a_r(q) = 1 over a band of q and U three times too high)
+    // system 2 without adhesion, model 3, t·q_r = 0.1, p* = 1e-7 (an ODE at
+    // rtol 1e-7 stepped from q_L to q_r in one go has a cubic interpolant that dips below
+    // zero: a_r(q) = 1 over a band of q and U three times too high)
     let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
     s.gamma = 0.0;
     s.model = Model::named(3).unwrap();

@@ -1,5 +1,5 @@
 //! Bad input at the command line: one line on stderr naming the field (by its flag or preset
-//! key), the value and the allowed range, and exit code 2 (issue 12's list, tried as a user).
+//! key), the value and the allowed range, and exit code 2.
 
 use std::process::Command;
 

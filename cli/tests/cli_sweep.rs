@@ -77,7 +77,7 @@ fn run_json_has_gap_and_energy() {
 #[test]
 fn a_sweep_keeps_going_past_loads_that_do_not_converge() {
     // system 2, model 3, t·q_r = 0.1: at p* ~ 1e-4 the contact sits on the edge of a jump and
-    // the fixed point may not converge; the sweep still returns every other load, with empty
+    // the adhesive solve may not converge; the sweep still returns every other load, with empty
     // (null) rows where it failed and no mean gap at or below the highest failure
     let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
     s.model = Model::named(3).unwrap();

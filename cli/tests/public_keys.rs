@@ -1,5 +1,5 @@
 //! The public interface: the JSON keys of `run`, `sweep`, `gfmd` and the bench report's rungs,
-//! and the CSV columns of `sweep`, as they were when the workspace split (issue 12). Scripts
+//! and the CSV columns of `sweep`, as first published. Scripts
 //! depend on them: a change may add keys, never remove or rename one.
 
 use std::collections::BTreeSet;
@@ -139,7 +139,7 @@ fn sweep_keys_and_columns() {
             "monotone",
             "preset",
             "rows",
-            // issue 13: the hysteresis window's edges
+            // the hysteresis window's edges
             "jump_in_pressure",
             "pull_off_pressure",
             "window_edges",
@@ -159,16 +159,16 @@ fn sweep_keys_and_columns() {
             "mean_gap_error",
             "mean_gap_rel",
             "p",
-            // issue 14: sweeps over any knob
+            // sweeps over any knob
             "contact_stress_variance",
             "a_r_over_p",
             "a_r_eq18",
             "thickness_qr",
             "gamma",
-            // issue 13: both branches
+            // both branches
             "a_r_unloading",
             "branches",
-            // issue 13: the mean gap's lower bound
+            // the mean gap's lower bound
             "mean_gap_lower_rel",
         ],
         "sweep rows",
@@ -244,7 +244,7 @@ fn gfmd_keys() {
             "theory_error",
             "thickness_qr",
             "tolerance",
-            // issue 15
+            // GFMD's solver and timings
             "pk_iterations",
             "theory.mean_gap",
             "theory.mean_gap_rel",

@@ -302,7 +302,7 @@ fn tour_step() {
     assert!(!render(&a, 80, 24).contains("tour 2/10"));
 }
 
-/// Defects of issue 14: a negative gap is drawn (the ū axis does not start at 0), values of
+/// Chart defects that must not return: a negative gap is drawn (the ū axis does not start at 0), values of
 /// an earlier scene are marked while the new one computes, long messages wrap instead of being
 /// cut, and the hint bar names g and c.
 #[test]
@@ -341,7 +341,7 @@ fn defects_gap_axis_stale_values_long_messages_hints() {
     assert!(s.contains("END"), "{s}");
 }
 
-/// Issue 13: a hysteresis on the a_r(p*) chart — the loading curve jumping into contact, the
+/// A hysteresis on the a_r(p*) chart — the loading curve jumping into contact, the
 /// unloading curve (dotted, in the key) over the window, the jump-in and pull-off loads as
 /// vertical markers named with their p*, and the branches at the current load in the panel;
 /// the same in the SVG export. Synthetic sweep (the engine's is tested in the library).

@@ -6,7 +6,7 @@
 //! ```
 //!
 //! with dm = 2πqC(q)dq (the spectrum's height-variance measure). a_r(q) comes from whichever
-//! solver produced the scene's solution (adhesionless ODE or the adhesive fixed point).
+//! solver produced the scene's solution (adhesionless ODE or the adhesive self-consistent solution).
 //! Reduced energy: U* = U/(E*ḡ·h_rms), so that p*·(ū/h_rms) has the same unit.
 //!
 //! Quadrature: near q_L the variance grows linearly, V ∝ q − q_L, so at small load

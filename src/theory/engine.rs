@@ -23,8 +23,8 @@ pub struct Options {
     pub adhesion: AdhesionAccuracy,
     /// Estimate the adhesive solver's discretisation error with three more solves, warm
     /// started from the first: at 3/2 and at 2× the steps, and at half the points per width
-    /// (about 1.5× the solve's own time); without it `error_estimate` is the fixed-point
-    /// residual.
+    /// (about 1.5× the solve's own time); without it `error_estimate` is the
+    /// self-consistency residual times a_r.
     pub adhesion_error_estimate: bool,
     /// Largest grid step in ln p* of a load sweep's table of U(p*), from which the mean gap
     /// is integrated ([`crate::theory::sweep`]): coarser requested spacings are refined by an
@@ -84,7 +84,7 @@ pub const SIGMA_MAX_RANGE: (f64, f64) = (1e-6, 1e3);
 pub const ADHESION_STEPS_RANGE: (f64, f64) = (4.0, 1e4);
 /// See [`ADHESION_STEPS_RANGE`].
 pub const ADHESION_POINTS_RANGE: (f64, f64) = (4.0, 1e3);
-/// Allowed fixed-point tolerance of the adhesive solver.
+/// Allowed self-consistency tolerance |γ(q_s)/γ_s − 1| of the adhesive solver.
 pub const ADHESION_TOL_RANGE: (f64, f64) = (1e-14, 1e-1);
 
 impl Options {
@@ -200,7 +200,7 @@ pub fn evaluate(scene: &Scene, opts: &Options) -> Result<Evaluation> {
 }
 
 /// Evaluates a scene, warm-starting the adhesive solver from a neighbouring evaluation and
-/// checking `cancel` between fixed-point iterations.
+/// checking `cancel` between the marches of the adhesive root search.
 pub fn evaluate_warm(
     scene: &Scene,
     opts: &Options,
@@ -333,7 +333,7 @@ fn evaluate_adhesive(
         return Err(Error::NotConverged {
             solver: "adhesive theory".into(),
             reason: format!(
-                "the fixed point converged (a_r = {:.6}, {} branch) but neither resolution \
+                "the self-consistency converged (a_r = {:.6}, {} branch) but neither resolution \
                  check did, so its discretisation error cannot be estimated: the state sits on the \
                  edge of a jump into contact, where the result depends on the grid; try a nearby \
                  p*, t or gamma",

@@ -41,7 +41,7 @@ fn lean(opts: &Options) -> Options {
 }
 
 /// Evaluates one load, warm-started from the neighbouring load's result (continuation), and
-/// abandoning an adhesive fixed point when `cancel` is set.
+/// abandoning an adhesive solve when `cancel` is set.
 pub fn evaluate_node(
     scene: &Scene,
     p: f64,

@@ -19,8 +19,8 @@
 //! Otherwise the bracket shrinks to whichever side failed, the new inside loads refine the
 //! line, and the next round solves the bracket's thirds side by side (as does every round
 //! without a guess) before aiming again. On system II, model 3, t·q_r = 0.1, 0.8 γ_s (chart
-//! accuracy, edge to 3 %) the jump-in took three bisection solves in a row (~60 ms), now one
-//! or two rounds of two side by side.
+//! accuracy, edge to 3 %) the jump-in takes one or two rounds of two solves side by side,
+//! where bisection takes three solves in a row (~60 ms).
 //!
 //! This module depends only on the adhesive solver, so that the sweep and the mean gap (which
 //! place the loading branch's jump into contact) can use it; [`crate::theory::hysteresis`]

@@ -1,4 +1,4 @@
-//! An independent slow oracle for the adhesive theory (issue 13 item 3), like RustFFT's naive
+//! An independent slow oracle for the adhesive theory, like RustFFT's naive
 //! DFT beside its FFT: the same equations as `asperity::theory::adhesion` ([S-5..S-9, S-14],
 //! docs/physics.md §4) solved the plain way, sharing no code with the fast path. Only the
 //! scene's input parameters are read from the library.

@@ -146,7 +146,7 @@ pub struct RunArgs {
     /// Adhesive solver: grid points per standard deviation of Pr (accuracy knob).
     #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().points_per_width, allow_hyphen_values = true)]
     pub adhesion_points: f64,
-    /// Adhesive solver: fixed-point tolerance max|G(a) - a|/a_r.
+    /// Adhesive solver: self-consistency tolerance |gamma(q_s)/gamma_s - 1| at each root.
     #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().tol, allow_hyphen_values = true)]
     pub adhesion_tol: f64,
 }
@@ -237,7 +237,7 @@ pub struct RunOutput {
     /// `mean_gap_rel` without adhesion up to quadrature error; null when the gap is.
     pub mean_gap_lower_rel: Option<f64>,
     /// Why the mean gap is null (e.g. a load on the way to full contact where the adhesive
-    /// fixed point did not converge); absent when it is given.
+    /// solve did not converge); absent when it is given.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mean_gap_note: Option<String>,
     /// Elastic energy U per nominal area (J/m²) [S-11].

@@ -1289,7 +1289,7 @@ mod tests {
             gen: a.gen,
             key: key_now,
             result: Err(Error::NotConverged {
-                solver: "adhesive fixed point".into(),
+                solver: "adhesive self-consistency".into(),
                 reason: "test".into(),
             }),
         });

@@ -25,7 +25,7 @@ pub fn wall_marker(ev: &Evaluation) -> Option<f64> {
 /// One-word state of the solution for the read-out: "converged" or (with
 /// adhesion) the branch and iteration count.
 pub fn branch_label(ev: &Evaluation) -> String {
-    if ev.branch == "adhesionless" {
+    if ev.branch == Branch::Adhesionless {
         return "converged".into();
     }
     let mut s = format!("{} ({} it)", ev.branch, ev.iterations);
@@ -80,7 +80,7 @@ pub fn branch_rows(ev: &Evaluation) -> Vec<BranchRow> {
 
 /// Extra read-outs (label, value) shown under "state" in the panel, in this order.
 pub fn extra_readouts(ev: &Evaluation) -> Vec<(String, String)> {
-    if ev.branch == "adhesionless" {
+    if ev.branch == Branch::Adhesionless {
         return Vec::new();
     }
     let mut v = vec![
@@ -161,7 +161,7 @@ impl PointData {
     pub fn at(ev: &Evaluation, p: f64) -> PointData {
         let mut pd = PointData::from_evaluation(ev);
         pd.pressure = p;
-        if ev.branch == "adhesionless" && ev.width > 0.0 {
+        if ev.branch == Branch::Adhesionless && ev.width > 0.0 {
             let top = ev.stats.pr.sigma.last().copied().unwrap_or(p + 5.0 * ev.width);
             pd.pr_log = log_grid(PR_LOG_FROM, top, PR_LOG_POINTS)
                 .into_iter()

@@ -294,7 +294,7 @@ fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<P
     let mut pd = match engine::evaluate_warm(scene, &point_options(), None, Some(cancel)) {
         Ok(ev) => PointData::at(&ev, scene.pressure),
         Err(e @ Error::NotConverged { .. }) if scene.gamma > 0.0 => {
-            // the fixed point may have converged while its error check did not (the edge
+            // the self-consistency may have converged while its error check did not (the edge
             // of a jump into contact): show it, without an error bar, and say why
             let opts = Options {
                 adhesion_error_estimate: false,
@@ -837,7 +837,7 @@ mod tests {
     #[test]
     #[ignore = "slow (~30 s on a loaded 2-core machine: a hard adhesive case); cargo test -- --ignored"]
     fn a_point_without_error_bar_is_shown_with_the_reason() {
-        // system II, t·q_r = 0.1, p* = 1e-5: the fixed point converges but neither
+        // system II, t·q_r = 0.1, p* = 1e-5: the self-consistency converges but neither
         // resolution check does (the engine refuses; `run` prints the converged a_r in its
         // message). The explorer shows that a_r, without an error bar, and says why.
         let mut scene = asperity::input::preset::Preset::resolve("system-2")

@@ -62,9 +62,9 @@
 //! with H(−I_full) < 0 < H(γ_s): a root always exists. `roots` finds every root (a scan in
 //! asinh(C/c₀), logarithmic in |C| on both sides of 0, at half resolution, then Brent's method
 //! at the requested one), so every branch of the scene at this load is found without
-//! iterating a map that loses contraction near a jump into contact — the old fixed point
-//! a ↦ march(σ_a(γ(a))) was ill-conditioned exactly there: an error δH in the balance moves γ
-//! by δH/a_r(q), which is large where γ(q) turns positive at small a_r. A root where H rises
+//! iterating a map that loses contraction near a jump into contact (the map
+//! a ↦ march(σ_a(γ(a))) is ill-conditioned exactly there: an error δH in the balance moves γ
+//! by δH/a_r(q), which is large where γ(q) turns positive at small a_r). A root where H rises
 //! is stable; where it falls (between two rising ones), unstable. The loading branch — what a
 //! loading history from small p* reaches — is the lowest stable root; the highest stable root,
 //! where it differs, is the unloading branch (hysteresis), reported as `unloading_a_r` and in
@@ -111,9 +111,6 @@ pub struct AdhesionAccuracy {
     /// sweeps: the branches of the previous load are tracked, and the scan runs only when they
     /// no longer account for every sign change of H.
     pub explore_branches: bool,
-    /// No effect since the shooting solver (every solve finds every root); kept so that code
-    /// that sets it still compiles.
-    pub thorough: bool,
 }
 
 impl Default for AdhesionAccuracy {
@@ -127,25 +124,19 @@ impl Default for AdhesionAccuracy {
             tol: 1e-8,
             max_iterations: 200,
             explore_branches: true,
-            thorough: true,
         }
     }
 }
 
-/// The branch a solution lies on, and how it was reached. Serialised (and displayed) as the
-/// strings of the public JSON: "adhesionless", "loading", "loading (continuation in gamma)",
-/// "upper (from full contact)".
+/// The branch a solution lies on. Serialised (and displayed) as the strings of the public
+/// JSON: "adhesionless", "loading", "unloading", "unstable".
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Branch {
     /// No adhesion (γ_s = 0): a single solution.
     Adhesionless,
-    /// Connected to the adhesionless start (the loading branch).
+    /// The lowest stable branch: the state a loading history from small p* reaches.
     Loading,
-    /// The loading branch, reached by continuation in γ_s from 0.
-    LoadingGammaContinuation,
-    /// Reached from full contact (a_r ≡ 1) where the loading iteration could not lock on
-    /// (the fixed-point solver before the shooting method; no longer produced).
-    UpperFromFullContact,
     /// The highest stable branch where it differs from the loading one: the state an
     /// unloading history keeps (hysteresis).
     Unloading,
@@ -160,8 +151,6 @@ impl Branch {
         match self {
             Branch::Adhesionless => "adhesionless",
             Branch::Loading => "loading",
-            Branch::LoadingGammaContinuation => "loading (continuation in gamma)",
-            Branch::UpperFromFullContact => "upper (from full contact)",
             Branch::Unloading => "unloading",
             Branch::Unstable => "unstable",
         }
@@ -177,12 +166,6 @@ impl fmt::Display for Branch {
 impl Serialize for Branch {
     fn serialize<S: Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
         s.serialize_str(self.as_str())
-    }
-}
-
-impl PartialEq<&str> for Branch {
-    fn eq(&self, other: &&str) -> bool {
-        self.as_str() == *other
     }
 }
 
@@ -219,22 +202,18 @@ pub struct AdhesiveSolution {
     pub sigma: Vec<f64>,
     /// Pr(σ*) at q_s (∫ = a_r).
     pub density: Vec<f64>,
-    /// Fixed-point iterations (all attempts).
+    /// Marches of the root search (the scan and the refinement of every root).
     pub iterations: usize,
-    /// Final fixed-point residual max|G(a) − a| / a_r(q_s).
+    /// Self-consistency residual at the chosen root: |H|/(γ_s a_r(q_s)) = |γ(q_s)/γ_s − 1|.
     pub residual: f64,
     /// Which branch the solution is on and how it was reached.
     pub branch: Branch,
-    /// a_r of a distinct unloading branch (from full contact), if one was found.
+    /// a_r of a distinct unloading branch (the highest stable root), if one was found.
     pub unloading_a_r: Option<f64>,
     /// U = −a_r γ_s + Σ a W (qE*f/4) dm (J/m²) [S-11, S-14].
     pub elastic_energy: f64,
     /// Global adhesion measure γ̃_glo.
     pub gamma_glo: f64,
-    /// The (steps per ln q, points per width) actually used when the requested resolution
-    /// stagnated and a nearby one converged; None when the requested one did (always, since
-    /// the shooting solver).
-    pub resolution_used: Option<(f64, f64)>,
     /// Every branch of the scene at this load, lowest a_r first (the chosen one included).
     pub branches: Vec<BranchState>,
     /// γ_s of the scene (J/m²).

@@ -18,13 +18,13 @@
 //! and Δv = W^{2α}(a)·b by RK4 in the variance measure B (c = δ/Δv is iterated until the wall
 //! ends within 1e-3·δ of its node). A constant wall (c = 0) is the exact image solution, so
 //! σ_a ≡ const is reproduced to round-off. Measured order in the step ≈ 2.0
-//! (`tests/adhesion.rs`; the old shift-then-heat splitting gave ≈ 1.3).
+//! (`tests/adhesion.rs`; a shift-then-heat splitting gives ≈ 1.3).
 //!
 //! A wall moving into the distribution (c < 0) would need weights e^{2|c|y} that grow: such a
 //! step is Strang-split instead, half the shift (8-point Lagrange, odd continuation through the
 //! wall, mass below it removed; `regrid`), the heat step with the wall held, the other half
-//! (second order; the shift-then-hold step before it was first order, 1e-3 at 24 steps per
-//! ln q on a receding test wall against 1.4e-6 now, `tests/adhesion.rs`).
+//! (second order: 1.4e-6 at 24 steps per ln q on a receding test wall, where a first-order
+//! shift-then-hold step gives 1e-3, `tests/adhesion.rs`).
 //!
 //! A wall running away from the distribution at speed c weights its image by e^{−2cy}. Right
 //! after an onset σ_a ∝ √γ leaves zero at infinite speed, and at 10 points per width 2c·h
@@ -84,7 +84,7 @@ fn variance_step(rate: &dyn Fn(f64) -> f64, b_before: f64, b: f64) -> f64 {
 
 /// RK4 substeps of a march step: 8 while the accumulated variance measure is still small
 /// against the step's (a_r falls fast there), else 1. A function of the grid only, never of
-/// the iterate, so that the fixed-point map stays continuous.
+/// the shooting parameter C, so that H(C) stays continuous.
 fn substeps(b_before: f64, b: f64) -> usize {
     if b_before < 4.0 * b {
         8

@@ -1,8 +1,8 @@
 //! The solve: every root of the scalar self-consistency (`roots`, `shooting`), the branch a
 //! loading history reaches (the lowest stable root), the other branches listed, and the
-//! solution built from the chosen root: one more march with its walls gives the fixed-point
-//! residual max|G(a) − a|/a_r (the prescribed-wall propagator of the same discretisation), Pr
-//! at q_s and its moments, and the energy.
+//! solution built from the chosen root: its recorded march gives Pr at q_s and its moments,
+//! γ(q) and σ_a(q) at the nodes, and the energy; the root's self-consistency residual
+//! |γ(q_s)/γ_s − 1| is reported with it.
 
 use super::grid::{build_grid, Grid};
 use super::propagator::{gauss, shift, State};
@@ -231,6 +231,5 @@ fn finish(scene: &Scene, grid: &Grid, root: &Root, iterations: usize) -> Result<
         gamma_s: scene.gamma,
         elastic_energy: energy,
         gamma_glo: if u_f > 0.0 { scene.gamma / u_f } else { 0.0 },
-        resolution_used: None,
     })
 }
