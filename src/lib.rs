@@ -27,6 +27,7 @@
 //!   theory, adhesion [S-5..S-9, S-14], energy and mean gap [S-11, S-12], sweeps, and the
 //!   [`theory::engine`] that evaluates one scene.
 //! - [`gfmd`]: the brute-force reference solver.
+//! - [`fit`]: gauging model coefficients on reference data (weighted least squares).
 //! - [`contact`]: [`contact::ContactStats`], the statistics every result carries.
 //! - [`error`]: typed errors ([`Error`], [`Field`]); [`tolerances`]: every numerical tolerance.
 //!
@@ -49,6 +50,7 @@
 pub mod contact;
 pub mod elastic;
 pub mod error;
+pub mod fit;
 pub mod gfmd;
 pub mod input;
 pub mod numerics;

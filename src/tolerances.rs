@@ -262,3 +262,10 @@ pub const GFMD_ROUTE_REL: f64 = 0.02;
 /// Theory against GFMD (ū/h_rms, same map's spectrum, loading): the theory is approximate; it
 /// must get the order of magnitude (measured within a factor of 1.6 on the test maps).
 pub const GFMD_GAP_FACTOR: f64 = 3.0;
+
+/// Gauging (c₁, c₂) on [S-18] over p* = 1e-3…1 against \[S\]'s −2/9, 2/3: \[S\] states no
+/// uncertainty and gauged "closely", by eye on Fig. 1. The relative least-squares fit pins
+/// W(0) = 1 − c₁ − c₂ within its 2σ of 5/9, but c₁ − c₂ only loosely (correlation −0.998):
+/// it lands 0.094 from each of \[S\]'s values, ~3σ along that direction (docs/physics.md
+/// §3.5). This bound states how far along it.
+pub const EQ18_GAUGE_ABS: f64 = 0.12;

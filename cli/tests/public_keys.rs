@@ -437,3 +437,80 @@ caption = "a\nb"
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The keys of every object in the array at `key`.
+fn element_keys(v: &serde_json::Value, key: &str) -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    for e in v[key].as_array().unwrap_or_else(|| panic!("{key} is not an array")) {
+        keys(e, "", &mut out);
+    }
+    out
+}
+
+#[test]
+fn gauge_and_compare_keys() {
+    let v = json(&[
+        "gauge",
+        "--model",
+        "1",
+        "--fit",
+        "c1,c2",
+        "--reference",
+        "eq18",
+        "--points",
+        "9",
+        "--format",
+        "json",
+    ]);
+    assert_has(
+        &v,
+        &[
+            "reference",
+            "params",
+            "correlation",
+            "condition_number",
+            "residuals",
+            "chi2",
+            "chi2_reduced",
+            "points",
+            "evaluations",
+            "termination",
+            "model",
+            "model.c1",
+            "model.c2",
+            "model.alpha",
+            "model.k_griffith",
+            "model.cap",
+            "start",
+            "elapsed_s",
+            "saved_preset",
+        ],
+        "gauge",
+    );
+    for k in ["name", "value", "std_error", "start"] {
+        assert!(element_keys(&v, "params").contains(k), "gauge params.{k}");
+    }
+    for k in ["observable", "points", "rms", "max_abs", "rms_start"] {
+        assert!(element_keys(&v, "residuals").contains(k), "gauge residuals.{k}");
+    }
+    let v = json(&[
+        "compare",
+        "--reference",
+        "eq18",
+        "--points",
+        "5",
+        "--models",
+        "3,xu24",
+        "--format",
+        "json",
+    ]);
+    assert_has(&v, &["reference", "models"], "compare");
+    let m = element_keys(&v, "models");
+    for k in ["model", "scores"] {
+        assert!(m.contains(k), "compare models.{k}");
+    }
+    let s = element_keys(&v["models"][0], "scores");
+    for k in ["observable", "points", "mean", "max"] {
+        assert!(s.contains(k), "compare scores.{k}");
+    }
+}

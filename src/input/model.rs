@@ -15,6 +15,19 @@
 //!
 //! Model 4 is printed in \[S\] as W = 0.35 + 0.65(1 − a²), contradicting "W(a_r → 0) = 0.35"
 //! in the next sentence; physics.md §7 erratum 2 fixes it to W = 0.35 + 0.65a² (c₁ = 0.65).
+//!
+//! Two named variants of the literature, defined for the adhesionless half-space only
+//! (docs/physics.md §3.4), each with its fitting parameter γ_f (`model.fudge_gamma`):
+//!
+//! | variant | weight | where it acts | γ_f |
+//! |---|---|---|---|
+//! | YP08 (Yang & Persson 2008) | S(a) = γ_f + (1 − γ_f)a² | variance increments, dV = S(a_r(q))·dV₁ | 0.42 |
+//! | Xu24 (Xu et al. 2024) | S(a) = γ_f + (1 − γ_f)a | the whole variance: a_r = erf(p/√(2S(a_r)V₁)) | 0.42 |
+//!
+//! Both are stored as c₁ = 1 − γ_f, c₂ = 0, α = ½, k_G = 1, no cap: YP08 *is* [S-17] with
+//! c₁ = 1 − γ_f on the broadening (model 2 is γ_f = 0.45), so every solver takes it as is;
+//! Xu24's S is linear in a and acts on the total variance, which the adhesionless solver
+//! treats on its own ([`crate::theory::persson`]).
 
 use crate::error::{Error, Field, Result};
 use serde::{Deserialize, Serialize};
@@ -33,7 +46,20 @@ pub enum ModelKind {
     Four,
     /// Every coefficient set by the user.
     Custom,
+    /// Yang & Persson 2008: S = γ_f + (1 − γ_f)a² on the variance increments.
+    Yp08,
+    /// Xu et al. 2024: a_r = erf(p/√(2(γ_f + (1 − γ_f)a_r)V₁)).
+    Xu24,
 }
+
+/// The default fitting parameter γ_f of [`ModelKind::Yp08`] and [`ModelKind::Xu24`].
+pub const FUDGE_GAMMA_DEFAULT: f64 = 0.42;
+/// Allowed γ_f: S(a) must stay positive on (0, 1] and not exceed 1 (a reduction of the
+/// variance, as in both papers).
+pub const FUDGE_GAMMA_RANGE: (f64, f64) = (0.0, 1.0);
+
+/// The canonical key of γ_f (preset `[model]` key `fudge_gamma`).
+pub const FUDGE_GAMMA_KEY: &str = "model.fudge_gamma";
 
 /// Coefficients of one variant of the theory. Build with [`Model::named`] or [`Model::custom`].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -55,7 +81,7 @@ pub struct Model {
 /// Hashes the coefficients by their bit patterns (a cache key for front ends).
 impl std::hash::Hash for Model {
     fn hash<H: std::hash::Hasher>(&self, h: &mut H) {
-        self.number().hash(h);
+        self.kind.name().hash(h);
         for x in [self.c1, self.c2, self.alpha, self.k_griffith] {
             x.to_bits().hash(h);
         }
@@ -66,7 +92,7 @@ impl std::hash::Hash for Model {
 impl std::str::FromStr for ModelKind {
     type Err = Error;
 
-    /// `1`–`4` or `custom` (case-insensitive, surrounding blanks ignored).
+    /// `1`–`4`, `custom`, `yp08` or `xu24` (case-insensitive, surrounding blanks ignored).
     ///
     /// # Errors
     /// [`Error::Invalid`] for [`Field::Model`] naming the allowed values.
@@ -77,20 +103,45 @@ impl std::str::FromStr for ModelKind {
             "3" => Ok(ModelKind::Three),
             "4" => Ok(ModelKind::Four),
             "custom" => Ok(ModelKind::Custom),
-            _ => Err(Error::invalid_text(Field::Model, s.trim(), "1, 2, 3, 4 or custom")),
+            "yp08" => Ok(ModelKind::Yp08),
+            "xu24" => Ok(ModelKind::Xu24),
+            _ => Err(Error::invalid_text(Field::Model, s.trim(), MODEL_NAMES)),
         }
     }
 }
 
+/// The allowed model names, in words.
+pub const MODEL_NAMES: &str = "1, 2, 3, 4, custom, yp08 or xu24";
+
 impl ModelKind {
-    /// The model number 1–4, or `None` for custom.
+    /// The model number 1–4, or `None` for custom and the named variants.
     pub fn number(self) -> Option<u8> {
         match self {
             ModelKind::One => Some(1),
             ModelKind::Two => Some(2),
             ModelKind::Three => Some(3),
             ModelKind::Four => Some(4),
-            ModelKind::Custom => None,
+            ModelKind::Custom | ModelKind::Yp08 | ModelKind::Xu24 => None,
+        }
+    }
+
+    /// True for the literature variants YP08 and Xu24 (fitting parameter γ_f, adhesionless
+    /// half-space only).
+    pub fn is_fudge_variant(self) -> bool {
+        matches!(self, ModelKind::Yp08 | ModelKind::Xu24)
+    }
+
+    /// The name as `--model` and a preset's `variant` take it: "1".."4", "custom", "yp08",
+    /// "xu24".
+    pub fn name(self) -> &'static str {
+        match self {
+            ModelKind::One => "1",
+            ModelKind::Two => "2",
+            ModelKind::Three => "3",
+            ModelKind::Four => "4",
+            ModelKind::Custom => "custom",
+            ModelKind::Yp08 => "yp08",
+            ModelKind::Xu24 => "xu24",
         }
     }
 }
@@ -103,10 +154,44 @@ impl Model {
     /// # Errors
     /// Those of [`Model::custom`] when `current`'s coefficients are not a valid model.
     pub fn of_kind(kind: ModelKind, current: &Model) -> Result<Model> {
-        match kind.number() {
-            Some(n) => Model::named(n),
-            None => Model::custom(current.c1, current.c2, current.alpha, current.k_griffith, current.cap),
+        match kind {
+            ModelKind::Custom => Model::custom(current.c1, current.c2, current.alpha, current.k_griffith, current.cap),
+            ModelKind::Yp08 | ModelKind::Xu24 => {
+                Model::fudge(kind, current.fudge_gamma().unwrap_or(FUDGE_GAMMA_DEFAULT))
+            }
+            _ => Model::named(kind.number().unwrap_or(3)),
         }
+    }
+
+    /// YP08 or Xu24 with fitting parameter γ_f (c₁ = 1 − γ_f, c₂ = 0, α = ½, k_G = 1, no cap).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for `model.fudge_gamma` outside (0, 1], or for [`Field::Model`]
+    /// when `kind` is not one of the two.
+    pub fn fudge(kind: ModelKind, gamma_f: f64) -> Result<Model> {
+        if !kind.is_fudge_variant() {
+            return Err(Error::invalid_text(Field::Model, kind.name(), "yp08 or xu24"));
+        }
+        if !(gamma_f > FUDGE_GAMMA_RANGE.0 && gamma_f <= FUDGE_GAMMA_RANGE.1) {
+            return Err(Error::invalid(
+                Field::Other(FUDGE_GAMMA_KEY.into()),
+                gamma_f,
+                "0 < fudge_gamma <= 1",
+            ));
+        }
+        Ok(Model {
+            kind,
+            c1: 1.0 - gamma_f,
+            c2: 0.0,
+            alpha: 0.5,
+            k_griffith: 1.0,
+            cap: false,
+        })
+    }
+
+    /// γ_f of YP08 and Xu24 (1 − c₁); `None` for the other kinds.
+    pub fn fudge_gamma(&self) -> Option<f64> {
+        self.kind.is_fudge_variant().then_some(1.0 - self.c1)
     }
 
     /// Model 1–4 of \[S\] (model 4 with erratum 2 applied).
@@ -119,7 +204,7 @@ impl Model {
             2 => (ModelKind::Two, 0.55, 0.0, 0.5, 1.0, false),
             3 => (ModelKind::Three, -2.0 / 9.0, 2.0 / 3.0, 0.5, 2.0, true),
             4 => (ModelKind::Four, 0.65, 0.0, 0.25, 2.0, true),
-            _ => return Err(Error::invalid_text(Field::Model, n, "1, 2, 3, 4 or custom")),
+            _ => return Err(Error::invalid_text(Field::Model, n, MODEL_NAMES)),
         };
         Ok(Model {
             kind: m.0,
@@ -168,6 +253,13 @@ impl Model {
         if !(self.k_griffith > 0.0 && self.k_griffith <= 100.0) {
             return Err(Error::invalid(Field::KGriffith, self.k_griffith, "0 < k_G <= 100"));
         }
+        if self.kind.is_fudge_variant() && !(self.c1 >= 0.0 && self.c1 < 1.0) {
+            return Err(Error::invalid(
+                Field::Other(FUDGE_GAMMA_KEY.into()),
+                1.0 - self.c1,
+                "0 < fudge_gamma <= 1",
+            ));
+        }
         let wmin = self.w_min();
         if wmin < 0.0 {
             return Err(Error::invalid_text(
@@ -179,9 +271,13 @@ impl Model {
         Ok(())
     }
 
-    /// W(a) of [S-17].
+    /// W(a) of [S-17]; for Xu24 its linear S(a) = 1 − c₁(1 − a) = γ_f + (1 − γ_f)a (the
+    /// weight of the elastic energy [S-14]).
     #[inline]
     pub fn w(&self, a: f64) -> f64 {
+        if self.kind == ModelKind::Xu24 {
+            return 1.0 - self.c1 * (1.0 - a);
+        }
         let b = a * a;
         1.0 - self.c1 * (1.0 - b) - self.c2 * (1.0 - b * b)
     }
@@ -231,10 +327,12 @@ impl Model {
             ModelKind::Three => "model 3".into(),
             ModelKind::Four => "model 4".into(),
             ModelKind::Custom => "custom".into(),
+            ModelKind::Yp08 => "YP08".into(),
+            ModelKind::Xu24 => "Xu24".into(),
         }
     }
 
-    /// The model number 1–4, or `None` for custom.
+    /// The model number 1–4, or `None` for custom and the named variants.
     pub fn number(&self) -> Option<u8> {
         self.kind.number()
     }

@@ -93,6 +93,9 @@ pub struct ModelSpec {
     pub k_griffith: Option<f64>,
     /// Custom σ_a cap.
     pub cap: Option<bool>,
+    /// γ_f of the variants "yp08" and "xu24" (default 0.42).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fudge_gamma: Option<f64>,
 }
 
 impl Default for ModelSpec {
@@ -104,6 +107,35 @@ impl Default for ModelSpec {
             alpha: None,
             k_griffith: None,
             cap: None,
+            fudge_gamma: None,
+        }
+    }
+}
+
+impl ModelSpec {
+    /// The `[model]` table that gives `m` back: the number for models 1–4, the name and γ_f
+    /// for YP08 and Xu24, every coefficient for a custom model.
+    pub fn of_model(m: &Model) -> ModelSpec {
+        use crate::input::model::ModelKind;
+        match m.kind {
+            ModelKind::Custom => ModelSpec {
+                variant: Variant::Name("custom".into()),
+                c1: Some(m.c1),
+                c2: Some(m.c2),
+                alpha: Some(m.alpha),
+                k_griffith: Some(m.k_griffith),
+                cap: Some(m.cap),
+                fudge_gamma: None,
+            },
+            ModelKind::Yp08 | ModelKind::Xu24 => ModelSpec {
+                variant: Variant::Name(m.kind.name().into()),
+                fudge_gamma: m.fudge_gamma(),
+                ..ModelSpec::default()
+            },
+            _ => ModelSpec {
+                variant: Variant::Number(i64::from(m.number().unwrap_or(3))),
+                ..ModelSpec::default()
+            },
         }
     }
 }
@@ -295,15 +327,35 @@ impl Preset {
 
     /// The preset's default model.
     pub fn model(&self) -> Result<Model> {
+        use crate::input::model::{ModelKind, FUDGE_GAMMA_DEFAULT, FUDGE_GAMMA_KEY};
         let m = &self.model;
-        let n = match &m.variant {
-            Variant::Number(n) => Some(*n),
-            Variant::Name(s) if s == "custom" => None,
-            Variant::Name(s) => Some(
-                s.parse::<i64>()
-                    .map_err(|_| Error::invalid_text(Field::Model, s, "1, 2, 3, 4 or \"custom\""))?,
-            ),
-        };
+        if let Variant::Name(s) = &m.variant {
+            if let Ok(kind @ (ModelKind::Yp08 | ModelKind::Xu24)) = s.parse::<ModelKind>() {
+                if m.c1.is_some() || m.c2.is_some() || m.alpha.is_some() || m.k_griffith.is_some() || m.cap.is_some() {
+                    return Err(Error::invalid_text(
+                        Field::Model,
+                        s,
+                        "\"custom\" when c1, c2, alpha, k_griffith or cap are given",
+                    ));
+                }
+                return Model::fudge(kind, m.fudge_gamma.unwrap_or(FUDGE_GAMMA_DEFAULT));
+            }
+        }
+        if let Some(g) = m.fudge_gamma {
+            return Err(Error::invalid(
+                Field::Other(FUDGE_GAMMA_KEY.into()),
+                g,
+                "only with variant = \"yp08\" or \"xu24\"",
+            ));
+        }
+        let n =
+            match &m.variant {
+                Variant::Number(n) => Some(*n),
+                Variant::Name(s) if s == "custom" => None,
+                Variant::Name(s) => Some(s.parse::<i64>().map_err(|_| {
+                    Error::invalid_text(Field::Model, s, "1, 2, 3, 4, \"custom\", \"yp08\" or \"xu24\"")
+                })?),
+            };
         match n {
             Some(n) => {
                 if !(1..=4).contains(&n) {

@@ -157,7 +157,15 @@ impl Scene {
             SURFACE_ENERGY_RANGE.1,
         )?;
         check_in(Field::Range, self.range, RANGE_RANGE_M.0, RANGE_RANGE_M.1)?;
-        self.model.validate()
+        self.model.validate()?;
+        if self.model.kind.is_fudge_variant() && (self.gamma > 0.0 || self.thickness_qr.is_finite()) {
+            // the variants' papers define neither adhesion nor slabs: refuse rather than guess
+            return Err(Error::Unsupported(format!(
+                "{} is defined for the adhesionless half-space only (surface energy 0, thickness inf)",
+                self.model.label()
+            )));
+        }
+        Ok(())
     }
 
     /// Thickness in metres (∞ for a semi-infinite body).

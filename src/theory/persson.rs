@@ -22,6 +22,11 @@
 //! the integral is the paper's sum over modes: one midpoint step per |q| shell.
 //!
 //! Error estimate: the sum of the local error estimates in v, mapped to a_r with |da/dv|.
+//!
+//! Xu24 (Xu et al. 2024, docs/physics.md §3.4) does not weight the increments: with v₁(q) the
+//! W ≡ 1 variance, the effective variance is v(q) = S(a_r(q))·v₁(q), S(a) = γ_f + (1 − γ_f)a,
+//! and a_r(q) solves a = erf(p/√(2S(a)v₁(q))) at every resolution ([`xu24_area`]); the
+//! mirror Gaussian of width √v(q_s) then gives Pr, σ̄_c and ⟨δσ_c²⟩ as for the other models.
 
 use crate::error::Result;
 use crate::input::scene::Scene;
@@ -150,10 +155,113 @@ pub fn area_of_variance(p: f64, v: f64) -> f64 {
     }
 }
 
+/// a_r of Xu24 at reduced pressure p and W ≡ 1 variance v₁: the root of
+/// a = erf(p/√(2(γ_f + (1 − γ_f)a)v₁)) in (0, 1]. The right side falls as a grows (S grows),
+/// so the root is unique; bisection to the last bit.
+pub fn xu24_area(p: f64, v1: f64, gamma_f: f64) -> f64 {
+    if v1 <= 0.0 {
+        return 1.0;
+    }
+    let s = |a: f64| gamma_f + (1.0 - gamma_f) * a;
+    let g = |a: f64| a - area_of_variance(p, s(a) * v1);
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    if g(hi) <= 0.0 {
+        return 1.0;
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if g(mid) > 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The effective variance of Xu24 and its derivative in v₁: v = S(a)v₁ with a = xu24_area;
+/// dv/dv₁ = S/(1 − v₁S'·da/dv), da/dv = −(2/√π)e^{−x²}x/(2v), x = p/√(2v).
+fn xu24_variance(p: f64, v1: f64, gamma_f: f64) -> (f64, f64) {
+    let a = xu24_area(p, v1, gamma_f);
+    let s = gamma_f + (1.0 - gamma_f) * a;
+    let v = s * v1;
+    if v <= 0.0 {
+        return (0.0, s);
+    }
+    let x = p / (2.0 * v).sqrt();
+    let da_dv = -2.0 / PI.sqrt() * (-x * x).exp() * x / (2.0 * v);
+    (v, s / (1.0 - v1 * (1.0 - gamma_f) * da_dv))
+}
+
+/// Xu24: the W ≡ 1 solution mapped to the effective variance S(a)·v₁ at every resolution.
+fn solve_xu24(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
+    let gamma_f = scene
+        .model
+        .fudge_gamma()
+        .unwrap_or(crate::input::model::FUDGE_GAMMA_DEFAULT);
+    let mut plain = scene.clone();
+    plain.model = crate::input::model::Model::named(1)?;
+    let base = solve(&plain, acc)?;
+    let p = scene.pressure;
+    let mut trajectory = base.trajectory.clone();
+    for i in 0..trajectory.s.len() {
+        let (v, dv_dv1) = xu24_variance(p, trajectory.y[i], gamma_f);
+        trajectory.y[i] = v;
+        trajectory.dy[i] *= dv_dv1;
+    }
+    let resolution = base
+        .resolution
+        .iter()
+        .map(|r| {
+            let (v, _) = xu24_variance(p, r.variance, gamma_f);
+            ResolutionPoint {
+                q: r.q,
+                a_r: area_of_variance(p, v),
+                variance: v,
+            }
+        })
+        .collect();
+    let v1 = base.width * base.width;
+    let (v_end, dv_dv1) = xu24_variance(p, v1, gamma_f);
+    let width = v_end.max(0.0).sqrt();
+    let (mean, var) = mirror::contact_moments(p, width);
+    // the W ≡ 1 error in v₁ carried through dv/dv₁ and |da/dv|
+    let err_v = if base.width > 0.0 {
+        let x1 = p / (2.0 * v1).sqrt();
+        let da_dv1 = 2.0 / PI.sqrt() * (-x1 * x1).exp() * x1 / (2.0 * v1);
+        base.error_estimate / da_dv1.max(f64::MIN_POSITIVE) * dv_dv1
+    } else {
+        0.0
+    };
+    let error_estimate = if v_end > 0.0 {
+        let x = p / (2.0 * v_end).sqrt();
+        (2.0 / PI.sqrt() * (-x * x).exp() * x / (2.0 * v_end) * err_v).min(1.0)
+    } else {
+        0.0
+    };
+    Ok(Solution {
+        pressure: p,
+        a_r: mirror::area(p, width),
+        mean_contact_stress: mean,
+        contact_stress_variance: var,
+        width,
+        resolution,
+        error_estimate,
+        evaluations: base.evaluations,
+        trajectory,
+    })
+}
+
 /// Solves the adhesionless theory for a scene (γ is ignored: callers route adhesive scenes
 /// to the adhesion solver).
 pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
     scene.validate()?;
+    if scene.model.kind == crate::input::model::ModelKind::Xu24 {
+        return solve_xu24(scene, acc);
+    }
     let p = scene.pressure;
     let g2 = scene.spectrum.moment(2);
     let t = scene.thickness_m();

@@ -5,6 +5,7 @@
 //! asperity figure --list
 //! asperity figure 1|2|...|8|table-1|FILE.toml [--format chart|table|csv|json]
 //!                 [--svg FILE] [--png FILE] [--gfmd [--grid N] [--seed S]] [--points N]
+//!                 [--model 1,2,3,4,yp08,xu24]
 //! ```
 
 use super::emit;
@@ -63,6 +64,10 @@ pub struct FigureArgs {
     /// Height of the text chart in lines.
     #[arg(long, default_value_t = 32, value_parser = super::whole_number)]
     pub height: usize,
+    /// Add curves of these models: a comma-separated list of 1, 2, 3, 4, yp08, xu24
+    /// (e.g. figure 1 --model yp08,xu24; the variants need an adhesionless half-space figure).
+    #[arg(long, value_delimiter = ',')]
+    pub model: Vec<String>,
 }
 
 /// Runs `asperity figure`.
@@ -121,6 +126,26 @@ pub fn run(args: &FigureArgs) -> Result<()> {
                 return Err(Error::field("--points", n, "2 <= points <= 100000"));
             }
             s.points = n;
+        }
+        for m in &args.model {
+            let kind: asperity::input::model::ModelKind = m.parse()?;
+            if kind == asperity::input::model::ModelKind::Custom {
+                return Err(Error::field("--model", m, "1, 2, 3, 4, yp08 or xu24"));
+            }
+            let label = match kind.number() {
+                Some(n) => format!("model {n}"),
+                None => {
+                    asperity::input::model::Model::of_kind(kind, &asperity::input::model::Model::named(1)?)?.label()
+                }
+            };
+            s.curve.push(spec::CurveSpec {
+                label,
+                pressure: None,
+                thickness_qr: None,
+                gamma: None,
+                model: kind.number(),
+                variant: kind.number().is_none().then(|| kind.name().to_string()),
+            });
         }
         let data = compute::compute(&s, gfmd)?;
         match args.format {

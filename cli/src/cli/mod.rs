@@ -7,6 +7,7 @@ use asperity::contact::ContactStats;
 use asperity::theory::engine;
 pub mod bench;
 pub mod figure;
+pub mod gauge;
 pub mod gfmd;
 
 use asperity::error::Field;
@@ -51,6 +52,10 @@ pub enum Command {
     Gfmd(gfmd::GfmdArgs),
     /// A figure or table of the paper (1-8, table-1): data, a text chart, SVG/PNG (--list names them).
     Figure(figure::FigureArgs),
+    /// Fit coefficients of the custom model (c1, c2, alpha, k_griffith, w0) to reference data.
+    Gauge(gauge::GaugeArgs),
+    /// Every model (1-4, yp08, xu24, fitted presets) against a reference set: relative errors and an overlay.
+    Compare(gauge::CompareArgs),
 }
 
 /// Output format of `run`.
@@ -68,9 +73,13 @@ pub struct SceneArgs {
     /// Preset name (from presets/) or path to a preset TOML file.
     #[arg(long, default_value = preset::DEFAULT_PRESET)]
     pub preset: String,
-    /// Model variant: 1, 2, 3, 4 or custom (default: the preset's).
+    /// Model variant: 1, 2, 3, 4, custom, yp08 or xu24 (default: the preset's; yp08 and xu24
+    /// are defined for the adhesionless half-space: --gamma 0 --thickness inf).
     #[arg(long, allow_hyphen_values = true)]
     pub model: Option<String>,
+    /// Fitting parameter gamma_f of yp08/xu24: S(a) = gamma_f + (1 - gamma_f) a^2 (yp08) or a (xu24).
+    #[arg(long, allow_hyphen_values = true)]
+    pub fudge_gamma: Option<f64>,
     /// Custom model: c1 of W(a) = 1 - c1(1-a^2) - c2(1-a^4) (implies --model custom).
     #[arg(long, allow_hyphen_values = true)]
     pub c1: Option<f64>,
@@ -186,6 +195,16 @@ impl SceneArgs {
                 self.k_griffith.unwrap_or(model.k_griffith),
                 self.cap.unwrap_or(model.cap),
             )?;
+        }
+        if let Some(g) = self.fudge_gamma {
+            if !model.kind.is_fudge_variant() {
+                return Err(Error::invalid_text(
+                    Field::Model,
+                    model.kind.name(),
+                    "yp08 or xu24 when --fudge-gamma is given",
+                ));
+            }
+            model = Model::fudge(model.kind, g)?;
         }
         scene.model = model;
         if let Some(t) = &self.thickness {
@@ -499,6 +518,9 @@ pub fn field_name(field: &Field) -> &str {
         Field::HeightMap => "--surface",
         Field::Seeds => "--seeds",
         Field::Ladder => "--ladder",
+        Field::Other(k) if k == asperity::input::model::FUDGE_GAMMA_KEY => "--fudge-gamma",
+        Field::Other(k) if k == "fit" => "--fit",
+        Field::Other(k) if k == "reference" => "--reference",
         other => other.key(),
     }
 }
@@ -602,6 +624,8 @@ pub fn main() -> i32 {
         Some(Command::Sweep(args)) => sweep::run(&args).map(|text| emit(&text)),
         Some(Command::Gfmd(args)) => gfmd::run(&args),
         Some(Command::Figure(args)) => figure::run(&args),
+        Some(Command::Gauge(args)) => gauge::run(&args),
+        Some(Command::Compare(args)) => gauge::compare(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let out = evaluate(&preset.name, &scene, &args)?;
             match args.format {

@@ -241,7 +241,14 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
     let scenes: Vec<Scene> = spec
         .curve
         .iter()
-        .map(|c| curve_scene(&preset, &spec.overrides(), &c.overrides()))
+        .map(|c| {
+            let mut s = curve_scene(&preset, &spec.overrides(), &c.overrides())?;
+            if let Some(v) = &c.variant {
+                s.model = Model::of_kind(v.parse()?, &s.model)?;
+                s.validate()?;
+            }
+            Ok(s)
+        })
         .collect::<Result<_>>()?;
     let mut widths: Vec<(u8, f64, f64)> = Vec::new(); // (model, p*, Δ*) for the asymptotes
     for (c, scene) in spec.curve.iter().zip(&scenes) {

@@ -126,6 +126,10 @@ pub struct CurveSpec {
     pub gamma: Option<f64>,
     /// Model 1–4.
     pub model: Option<u8>,
+    /// A named variant instead of a numbered model: "yp08" or "xu24" (adhesionless
+    /// half-space only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub variant: Option<String>,
 }
 
 impl CurveSpec {

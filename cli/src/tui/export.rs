@@ -34,6 +34,7 @@ pub fn scene_preset(base: &Preset, scene: &Scene) -> Preset {
             alpha: Some(m.alpha),
             k_griffith: Some(m.k_griffith),
             cap: Some(m.cap),
+            fudge_gamma: None,
         },
         _ => ModelSpec {
             variant: Variant::Number(i64::from(m.number().unwrap_or(3))),

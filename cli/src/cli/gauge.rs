@@ -1,0 +1,441 @@
+//! `asperity gauge`: fit coefficients of the custom model to reference data
+//! ([`asperity::fit`]), and `asperity compare`: every model against a reference set.
+//!
+//! ```text
+//! asperity gauge --fit c1,c2[,alpha,k_griffith,w0] --reference eq18|FILE.csv
+//!                [--from P --to P --points N] [--pr FILE.csv] [scene flags]
+//!                [--format table|json] [--svg FILE] [--png FILE] [--save-preset FILE]
+//! ```
+//!
+//! With `--reference eq18` the scene is made adhesionless and semi-infinite (the closed form
+//! [S-18] describes only that case); a file reference is compared on the scene as given.
+
+use super::{emit, Format, SceneArgs};
+use crate::chart::{self, ChartSpec, Series, SeriesStyle};
+use asperity::error::{Error, Field, Result};
+use asperity::fit::reference::{self, Observable, Reference};
+use asperity::fit::{self, Fit, Param};
+use asperity::input::model::Model;
+use asperity::input::preset::{ModelSpec, Preset};
+use asperity::input::scene::Scene;
+use clap::Args;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+/// Reference options shared by `gauge` and `compare`.
+#[derive(Debug, Clone, Args)]
+pub struct ReferenceArgs {
+    /// eq18 (the closed form [S-18] over --from..--to) or a CSV file with columns p, a_r,
+    /// a_r_err, mean_contact_stress(_err), mean_gap_rel(_err).
+    #[arg(long)]
+    pub reference: String,
+    /// First p* of --reference eq18.
+    #[arg(long, default_value_t = 1e-3, allow_hyphen_values = true)]
+    pub from: f64,
+    /// Last p* of --reference eq18.
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
+    pub to: f64,
+    /// Number of log-spaced loads of --reference eq18.
+    #[arg(long, default_value_t = 31, allow_hyphen_values = true, value_parser = super::whole_number)]
+    pub points: usize,
+    /// Pr(sigma*) histograms: a CSV file with columns p, sigma, density.
+    #[arg(long)]
+    pub pr: Option<PathBuf>,
+}
+
+/// Arguments of `gauge`.
+#[derive(Debug, Clone, Args)]
+pub struct GaugeArgs {
+    /// Scene (its model is the starting point).
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// The coefficients to fit: a comma-separated list of c1, c2, alpha, k_griffith, w0.
+    #[arg(long)]
+    pub fit: String,
+    /// The reference.
+    #[command(flatten)]
+    pub reference: ReferenceArgs,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Write the before/after chart as SVG.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Write the before/after chart as PNG.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+    /// Write a preset with the fitted custom model (the scene's preset otherwise).
+    #[arg(long)]
+    pub save_preset: Option<PathBuf>,
+}
+
+fn read(path: &Path) -> Result<String> {
+    std::fs::read_to_string(path).map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))
+}
+
+/// The reference and the scene it is compared on.
+pub fn resolve_reference(args: &ReferenceArgs, scene: &mut Scene) -> Result<Reference> {
+    let mut r = match args.reference.as_str() {
+        "eq18" => {
+            // [S-18] is the adhesionless half-space
+            scene.gamma = 0.0;
+            scene.thickness_qr = f64::INFINITY;
+            reference::eq18(args.from, args.to, args.points)?
+        }
+        "gfmd" => {
+            return Err(Error::Unsupported(
+                "--reference gfmd: run `asperity gfmd --from P --to P --points N --format json`, write p and a_r (and errors) as CSV, and pass the file".into(),
+            ))
+        }
+        file => {
+            let path = Path::new(file);
+            let name = path.file_name().map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
+            reference::parse_csv(&read(path)?, &name)?
+        }
+    };
+    if let Some(pr) = &args.pr {
+        let name = pr
+            .file_name()
+            .map_or(String::new(), |n| n.to_string_lossy().into_owned());
+        r.points.extend(reference::parse_pr_csv(&read(pr)?, &name)?);
+    }
+    scene.validate()?;
+    Ok(r)
+}
+
+/// The JSON object printed by `gauge --format json`.
+#[derive(Debug, Serialize)]
+pub struct GaugeOutput {
+    /// "eq18" or the file name.
+    pub reference: String,
+    /// params, correlation, condition_number, residuals, chi2, chi2_reduced, points,
+    /// evaluations, termination, model, start, elapsed_s.
+    #[serde(flatten)]
+    pub fit: Fit,
+    /// The preset written, if any.
+    pub saved_preset: Option<String>,
+}
+
+/// Runs `asperity gauge`.
+pub fn run(args: &GaugeArgs) -> Result<()> {
+    let params = Param::parse_list(&args.fit)?;
+    let (preset, mut scene) = args.scene.resolve(None)?;
+    let r = resolve_reference(&args.reference, &mut scene)?;
+    let f = fit::fit(&scene, &r, &params)?;
+    if args.svg.is_some() || args.png.is_some() {
+        let models = [("before", f.start), ("after", f.model)];
+        let spec = overlay(&scene, &r, &models, "gauge")?;
+        write_charts(&spec, args.svg.as_deref(), args.png.as_deref())?;
+    }
+    let saved = match &args.save_preset {
+        Some(path) => {
+            save_preset(&preset, &scene, &f.model, path)?;
+            Some(path.display().to_string())
+        }
+        None => None,
+    };
+    match args.format {
+        Format::Json => {
+            let out = GaugeOutput {
+                reference: r.name.clone(),
+                fit: f,
+                saved_preset: saved,
+            };
+            emit(&serde_json::to_string_pretty(&out).expect("serialisable"));
+        }
+        Format::Table => emit(&table(&r, &f, saved.as_deref())),
+    }
+    Ok(())
+}
+
+fn table(r: &Reference, f: &Fit, saved: Option<&str>) -> String {
+    let mut t = format!(
+        "reference {} ({} points), starting from c1 = {}, c2 = {}, alpha = {}, k_G = {}\n\n",
+        r.name, f.points, f.start.c1, f.start.c2, f.start.alpha, f.start.k_griffith
+    );
+    t += &format!(
+        "{:<12} {:>14} {:>12} {:>12}\n",
+        "parameter", "value", "std_error", "start"
+    );
+    for p in &f.params {
+        t += &format!(
+            "{:<12} {:>14.6} {:>12.2e} {:>12.6}\n",
+            p.name, p.value, p.std_error, p.start
+        );
+    }
+    if f.params.len() > 1 {
+        t += "\ncorrelation\n";
+        for (p, row) in f.params.iter().zip(&f.correlation) {
+            t += &format!("{:<12}", p.name);
+            for c in row {
+                t += &format!(" {c:>8.4}");
+            }
+            t += "\n";
+        }
+    }
+    t += &format!(
+        "\n{:<20} {:>6} {:>12} {:>12} {:>12}\n",
+        "observable", "points", "rms", "max |r|", "rms start"
+    );
+    for o in &f.residuals {
+        t += &format!(
+            "{:<20} {:>6} {:>12.3e} {:>12.3e} {:>12.3e}\n",
+            o.observable, o.points, o.rms, o.max_abs, o.rms_start
+        );
+    }
+    t += "(residuals relative to the value, or in standard errors where the reference gives them)\n";
+    t += &format!("\nchi2 {:.4e}", f.chi2);
+    if let Some(c) = f.chi2_reduced {
+        t += &format!(", reduced chi2 {c:.4}");
+    }
+    t += &format!(
+        "; condition number {:.3e}; {} evaluations in {:.2} s ({})\n",
+        f.condition_number, f.evaluations, f.elapsed_s, f.termination
+    );
+    if let Some(s) = saved {
+        t += &format!("preset written: {s}\n");
+    }
+    t
+}
+
+/// Writes a preset: the scene's preset with the scene's load, thickness, adhesion and `model`.
+pub fn save_preset(base: &Preset, scene: &Scene, model: &Model, path: &Path) -> Result<()> {
+    let mut p = base.clone();
+    p.load.pressure = scene.pressure;
+    p.load.thickness_qr = scene.thickness_qr;
+    p.adhesion.surface_energy_j_m2 = scene.gamma;
+    p.model = ModelSpec::of_model(model);
+    p.name = path
+        .file_stem()
+        .map_or("gauged".into(), |s| s.to_string_lossy().into_owned());
+    p.description = format!("{} (model gauged by asperity gauge)", base.description);
+    let text = toml::to_string(&p).map_err(|e| Error::Io(format!("cannot write preset: {e}")))?;
+    // the preset must read back as written
+    Preset::parse(&text, &path.display().to_string())?;
+    std::fs::write(path, text).map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))
+}
+
+fn y_of(o: Observable, p: f64, v: f64) -> f64 {
+    if o == Observable::Area {
+        v / p
+    } else {
+        v
+    }
+}
+
+/// The reference as points and each model as a line, one chart per observable stacked in
+/// one figure's series (a_r shown as a_r/p* like [S] Fig. 1).
+pub fn overlay(scene: &Scene, r: &Reference, models: &[(&str, Model)], what: &str) -> Result<ChartSpec> {
+    let obs: Vec<Observable> = r.observables().into_iter().filter(|o| *o != Observable::Pr).collect();
+    let first = obs.first().copied().unwrap_or(Observable::Area);
+    let (lo, hi) = {
+        let l = r.loads();
+        (l[0], l[l.len() - 1])
+    };
+    let n = 61;
+    let grid: Vec<f64> = if hi > lo {
+        (0..n)
+            .map(|i| (lo.ln() + (hi / lo).ln() * i as f64 / (n - 1) as f64).exp())
+            .collect()
+    } else {
+        vec![lo]
+    };
+    let dense = Reference {
+        name: "grid".into(),
+        points: grid
+            .iter()
+            .map(|&p| reference::Observation {
+                p,
+                observable: first,
+                value: 1.0,
+                error: None,
+                sigma: 0.0,
+            })
+            .collect(),
+    };
+    let mut series = vec![Series {
+        name: format!("reference {}", r.name),
+        points: r
+            .points
+            .iter()
+            .filter(|o| o.observable == first)
+            .map(|o| (o.p, y_of(first, o.p, o.value)))
+            .collect(),
+        style: SeriesStyle::Points,
+    }];
+    for (label, m) in models {
+        let y = fit::predict(scene, m, &dense)?;
+        series.push(Series {
+            name: (*label).to_string(),
+            points: grid.iter().zip(&y).map(|(&p, &v)| (p, y_of(first, p, v))).collect(),
+            style: SeriesStyle::Line,
+        });
+    }
+    let y_label = match first {
+        Observable::Area => "a_r / p*",
+        Observable::MeanContactStress => "mean contact stress / (E* g)",
+        Observable::MeanGapRel => "mean gap / h_rms",
+        Observable::Pr => "Pr",
+    };
+    Ok(ChartSpec {
+        title: format!("asperity {what}: {} against {}", y_label, r.name),
+        x_label: "p* = p / (E* g)".into(),
+        y_label: y_label.into(),
+        x_log: hi > lo,
+        y_log: false,
+        series,
+    })
+}
+
+/// Writes the chart files asked for.
+pub fn write_charts(spec: &ChartSpec, svg: Option<&Path>, png: Option<&Path>) -> Result<()> {
+    if let Some(p) = svg {
+        chart::write_svg(spec, p).map_err(|e| Error::Io(format!("cannot write {}: {e}", p.display())))?;
+    }
+    if let Some(p) = png {
+        chart::write_png(spec, p).map_err(|e| Error::Io(format!("cannot write {}: {e}", p.display())))?;
+    }
+    Ok(())
+}
+
+/// Arguments of `compare`.
+#[derive(Debug, Clone, Args)]
+pub struct CompareArgs {
+    /// Scene.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// The reference.
+    #[command(flatten)]
+    pub reference: ReferenceArgs,
+    /// The models: a comma-separated list of 1, 2, 3, 4, yp08, xu24.
+    #[arg(long, default_value = "1,2,3,4,yp08,xu24")]
+    pub models: String,
+    /// Presets whose model joins the comparison (e.g. one written by gauge --save-preset).
+    #[arg(long, value_delimiter = ',')]
+    pub fitted: Vec<PathBuf>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Write the overlay chart as SVG.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Write the overlay chart as PNG.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+}
+
+/// One model's row of `compare`.
+#[derive(Debug, Serialize)]
+pub struct CompareRow {
+    /// "model 1".."model 4", "YP08", "Xu24", or the preset file's name.
+    pub model: String,
+    /// Per observable: observable, points, mean, max (relative errors; L1 for pr).
+    pub scores: Vec<fit::compare::Score>,
+    /// Why the model has no scores on this scene (e.g. a variant without adhesion); absent
+    /// when it has.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+/// The JSON object printed by `compare --format json`.
+#[derive(Debug, Serialize)]
+pub struct CompareOutput {
+    /// "eq18" or the file name.
+    pub reference: String,
+    /// One row per model.
+    pub models: Vec<CompareRow>,
+}
+
+/// Runs `asperity compare`.
+pub fn compare(args: &CompareArgs) -> Result<()> {
+    use asperity::input::model::ModelKind;
+    let (_, mut scene) = args.scene.resolve(None)?;
+    let r = resolve_reference(&args.reference, &mut scene)?;
+    let mut models: Vec<(String, Model)> = Vec::new();
+    for t in args.models.split(',').map(str::trim).filter(|t| !t.is_empty()) {
+        let kind: ModelKind = t.parse().map_err(|_| {
+            Error::invalid_text(
+                Field::Other("--models".into()),
+                t,
+                "a comma-separated list of 1, 2, 3, 4, yp08, xu24",
+            )
+        })?;
+        if kind == ModelKind::Custom {
+            return Err(Error::invalid_text(
+                Field::Other("--models".into()),
+                t,
+                "1, 2, 3, 4, yp08, xu24 (a custom model comes in with --fitted PRESET)",
+            ));
+        }
+        let m = Model::of_kind(kind, &scene.model)?;
+        models.push((m.label(), m));
+    }
+    for p in &args.fitted {
+        let preset = Preset::load(p)?;
+        let name = p
+            .file_stem()
+            .map_or("fitted".into(), |s| s.to_string_lossy().into_owned());
+        models.push((name, preset.model()?));
+    }
+    let rows: Vec<CompareRow> = models
+        .iter()
+        .map(|(name, m)| match fit::compare::score(&scene, m, &r) {
+            Ok(scores) => CompareRow {
+                model: name.clone(),
+                scores,
+                note: None,
+            },
+            Err(e) => CompareRow {
+                model: name.clone(),
+                scores: Vec::new(),
+                note: Some(super::render_error(&e)),
+            },
+        })
+        .collect();
+    if args.svg.is_some() || args.png.is_some() {
+        let drawable: Vec<(&str, Model)> = models
+            .iter()
+            .zip(&rows)
+            .filter(|(_, row)| row.note.is_none())
+            .map(|((n, m), _)| (n.as_str(), *m))
+            .collect();
+        let spec = overlay(&scene, &r, &drawable, "compare")?;
+        write_charts(&spec, args.svg.as_deref(), args.png.as_deref())?;
+    }
+    match args.format {
+        Format::Json => {
+            let out = CompareOutput {
+                reference: r.name.clone(),
+                models: rows,
+            };
+            emit(&serde_json::to_string_pretty(&out).expect("serialisable"));
+        }
+        Format::Table => {
+            let obs: Vec<&str> = r.observables().iter().map(|o| o.key()).collect();
+            let mut t = format!(
+                "reference {} ({} values); mean and largest |model/reference - 1| (pr: L1 distance)\n\n{:<14}",
+                r.name,
+                r.points.len(),
+                "model"
+            );
+            for o in &obs {
+                t += &format!(" {:>26}", format!("{o} mean / max"));
+            }
+            t += "\n";
+            for row in &rows {
+                t += &format!("{:<14}", row.model);
+                match &row.note {
+                    Some(n) => t += &format!(" {n}"),
+                    None => {
+                        for s in &row.scores {
+                            t += &format!(" {:>26}", format!("{:.3e} / {:.3e}", s.mean, s.max));
+                        }
+                    }
+                }
+                t += "\n";
+            }
+            emit(&t);
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,208 @@
+//! Gauging: [S]'s c₁, c₂ recovered from eq. (18), a synthetic round trip with noise of known
+//! size, and fits that cannot succeed saying why.
+
+use asperity::error::Error;
+use asperity::fit::reference::{self, Observable, Observation, Reference};
+use asperity::fit::{self, Param};
+use asperity::input::model::Model;
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use asperity::tolerances::*;
+
+fn half_space(model: Model) -> Scene {
+    let mut s = Preset::resolve("system-1").unwrap().scene().unwrap();
+    s.gamma = 0.0;
+    s.thickness_qr = f64::INFINITY;
+    s.model = model;
+    s
+}
+
+/// [S] §2.3: model 3's c₁ = −2/9, c₂ = 2/3 "adjusted to closely match a_r(p*)/p* from
+/// Equation (18)" over Fig. 1's range p* = 1e-3 … 1. Started from model 1 (c₁ = c₂ = 0).
+#[test]
+fn eq18_recovers_model_3() {
+    let r = reference::eq18(1e-3, 1.0, 31).unwrap();
+    let f = fit::fit(&half_space(Model::named(1).unwrap()), &r, &[Param::C1, Param::C2]).unwrap();
+    let (c1, c2) = (&f.params[0], &f.params[1]);
+    eprintln!(
+        "c1 = {} ± {}, c2 = {} ± {}, corr {:?}, rms {}, cond {}, {} evals, {:.2} s",
+        c1.value,
+        c1.std_error,
+        c2.value,
+        c2.std_error,
+        f.correlation,
+        f.residuals[0].rms,
+        f.condition_number,
+        f.evaluations,
+        f.elapsed_s
+    );
+    // the data pin W(0) = 1 − c₁ − c₂ (the small-p* slope of a_r): 5/9 for model 3
+    let rho = f.correlation[0][1];
+    let w0 = 1.0 - c1.value - c2.value;
+    let se_w0 = (c1.std_error.powi(2) + c2.std_error.powi(2) + 2.0 * rho * c1.std_error * c2.std_error).sqrt();
+    eprintln!("W(0) = {w0} ± {se_w0}");
+    assert!((w0 - 5.0 / 9.0).abs() < 2.0 * se_w0, "W(0) = {w0} ± {se_w0}");
+    // c₁ − c₂ is nearly free (correlation ≈ −1): [S]'s pair lies ~3σ along it (docs/physics.md §3.5)
+    assert!(rho < -0.99, "{rho}");
+    assert!((c1.value + 2.0 / 9.0).abs() < EQ18_GAUGE_ABS, "c1 = {}", c1.value);
+    assert!((c2.value - 2.0 / 3.0).abs() < EQ18_GAUGE_ABS, "c2 = {}", c2.value);
+    assert!((c1.value + 2.0 / 9.0).abs() < 4.0 * c1.std_error && (c2.value - 2.0 / 3.0).abs() < 4.0 * c2.std_error);
+    // the fit is better than model 3 everywhere it is measured: rms relative residual
+    let m3 = fit::predict(&half_space(Model::named(3).unwrap()), &Model::named(3).unwrap(), &r).unwrap();
+    let rms3 = (m3
+        .iter()
+        .zip(&r.points)
+        .map(|(y, o)| (y / o.value - 1.0).powi(2))
+        .sum::<f64>()
+        / 31.0)
+        .sqrt();
+    assert!(
+        f.residuals[0].rms <= rms3 * (1.0 + 1e-9),
+        "{} vs model 3 {rms3}",
+        f.residuals[0].rms
+    );
+    assert!(f.residuals[0].rms < 0.02, "rms {}", f.residuals[0].rms);
+    assert!(f.chi2_reduced.is_none());
+}
+
+/// Data from the custom model at known (c₁, c₂) plus Gaussian noise of known relative size;
+/// with the errors given, the fit recovers the truth within 2 standard errors for each seed
+/// and its reduced χ² is near 1.
+#[test]
+fn synthetic_round_trip() {
+    let truth = Model::custom(0.3, 0.25, 0.5, 1.0, false).unwrap();
+    let clean = reference::eq18(1e-3, 1.0, 25).unwrap();
+    let scene = half_space(truth);
+    let y = fit::predict(&scene, &truth, &clean).unwrap();
+    let noise = 0.01;
+    let mut chi2 = Vec::new();
+    for seed in 1..=5u64 {
+        // Box–Muller on a SplitMix64 stream
+        let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        let mut uniform = || {
+            state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let points = clean
+            .points
+            .iter()
+            .zip(&y)
+            .map(|(o, &v)| {
+                let g = (-2.0 * (1.0 - uniform()).ln()).sqrt() * (2.0 * std::f64::consts::PI * uniform()).cos();
+                Observation {
+                    value: v * (1.0 + noise * g),
+                    error: Some(noise * v),
+                    ..*o
+                }
+            })
+            .collect();
+        let r = Reference {
+            name: format!("synthetic {seed}"),
+            points,
+        };
+        let f = fit::fit(&half_space(Model::named(1).unwrap()), &r, &[Param::C1, Param::C2]).unwrap();
+        for (p, t) in f.params.iter().zip([0.3, 0.25]) {
+            assert!(
+                (p.value - t).abs() < 2.0 * p.std_error,
+                "seed {seed}: {} = {} ± {} vs {t}",
+                p.name,
+                p.value,
+                p.std_error
+            );
+        }
+        chi2.push(f.chi2_reduced.unwrap());
+    }
+    // 5 fits with 23 degrees of freedom each: the mean reduced χ² is 1 ± 0.13
+    let mean = chi2.iter().sum::<f64>() / chi2.len() as f64;
+    assert!((mean - 1.0).abs() < 0.5, "{chi2:?}");
+}
+
+#[test]
+fn unidentifiable_parameters_are_named() {
+    // k_G does nothing without adhesion: an infinite condition number naming k_griffith
+    let r = reference::eq18(1e-3, 1.0, 11).unwrap();
+    let e = fit::fit(
+        &half_space(Model::named(1).unwrap()),
+        &r,
+        &[Param::C1, Param::KGriffith],
+    )
+    .unwrap_err();
+    let t = e.to_string();
+    assert!(
+        matches!(e, Error::NotConverged { .. }) && t.contains("k_griffith") && t.contains("condition number"),
+        "{t}"
+    );
+    // a single load cannot tell c₁ from c₂... unless it has more points than parameters
+    let r1 = Reference {
+        name: "one".into(),
+        points: vec![Observation {
+            p: 0.01,
+            observable: Observable::Area,
+            value: 0.02,
+            error: None,
+            sigma: 0.0,
+        }],
+    };
+    let e = fit::fit(&half_space(Model::named(1).unwrap()), &r1, &[Param::C1, Param::C2]).unwrap_err();
+    assert!(e.to_string().contains("more points than fitted parameters"), "{e}");
+}
+
+#[test]
+fn unreachable_reference_is_refused() {
+    // a_r = 1 at every load: W would have to vanish; the best fit leaves the model's range
+    let points = [1e-3, 1e-2, 0.1, 0.5]
+        .iter()
+        .map(|&p| Observation {
+            p,
+            observable: Observable::Area,
+            value: 1.0,
+            error: None,
+            sigma: 0.0,
+        })
+        .collect();
+    let r = Reference {
+        name: "full".into(),
+        points,
+    };
+    let e = fit::fit(&half_space(Model::named(1).unwrap()), &r, &[Param::C1]).unwrap_err();
+    assert!(
+        matches!(e, Error::NotConverged { .. }) && e.to_string().contains("outside what the model can reach"),
+        "{e}"
+    );
+}
+
+#[test]
+fn bad_reference_files_name_line_and_column() {
+    for (text, want) in [
+        ("", "line 1, column (header)"),
+        ("p,area\n0.01,0.02\n", "line 1, column 2"),
+        ("p\n0.01\n", "line 1, column (header)"),
+        ("p,a_r\n0.01,0.02\n0.02,x\n", "line 3, column a_r = x"),
+        (
+            "p,a_r\n0.01,0.02\n0.02,1.5\n",
+            "line 3, column a_r = 1.5: allowed a number with 0 < a_r <= 1",
+        ),
+        ("# c\np,a_r\n-1,0.02\n", "line 3, column p = -1"),
+        ("p,a_r,a_r_err\n0.01,0.02,0\n", "line 2, column a_r_err = 0"),
+        ("p,a_r\n0.01,0.02,3\n", "line 2, column (row)"),
+        ("p,a_r_err\n0.01,0.02\n", "line 1, column (header)"),
+        ("p,a_r\n", "line 2, column (data)"),
+    ] {
+        let e = reference::parse_csv(text, "ref.csv").unwrap_err().to_string();
+        assert!(e.contains(&format!("ref.csv: {want}")), "{text:?}: {e}");
+        assert_eq!(e.lines().count(), 1);
+    }
+    for (text, want) in [
+        ("p,sigma\n", "line 1, column (header)"),
+        ("p,sigma,density\n0.01,0.1,-2\n", "line 2, column density = -2"),
+    ] {
+        let e = reference::parse_pr_csv(text, "pr.csv").unwrap_err().to_string();
+        assert!(e.contains(&format!("pr.csv: {want}")), "{text:?}: {e}");
+    }
+    let ok = reference::parse_csv("p,a_r,a_r_err,mean_gap_rel\n0.01,0.02,0.001,\n0.1,,,1.5\n", "ok.csv").unwrap();
+    assert_eq!(ok.points.len(), 2);
+    assert_eq!(ok.observables(), vec![Observable::Area, Observable::MeanGapRel]);
+}
