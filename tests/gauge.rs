@@ -206,3 +206,19 @@ fn bad_reference_files_name_line_and_column() {
     assert_eq!(ok.points.len(), 2);
     assert_eq!(ok.observables(), vec![Observable::Area, Observable::MeanGapRel]);
 }
+
+#[test]
+fn w0_is_one_minus_c1_minus_c2() {
+    // fitting (w₀, c₂) is a reparametrisation of (c₁, c₂): same optimum, w₀ = 1 − c₁ − c₂,
+    // with the standard error the covariance of (c₁, c₂) gives
+    let r = reference::eq18(1e-3, 1.0, 21).unwrap();
+    let s = half_space(Model::named(1).unwrap());
+    let a = fit::fit(&s, &r, &[Param::C1, Param::C2]).unwrap();
+    let b = fit::fit(&s, &r, &[Param::W0, Param::C2]).unwrap();
+    let w0 = 1.0 - a.params[0].value - a.params[1].value;
+    assert!((b.params[0].value - w0).abs() < 1e-5, "{} vs {w0}", b.params[0].value);
+    assert!((b.model.c1 - a.model.c1).abs() < 1e-4 && (b.model.c2 - a.model.c2).abs() < 1e-4);
+    let (s1, s2, rho) = (a.params[0].std_error, a.params[1].std_error, a.correlation[0][1]);
+    let se = (s1 * s1 + s2 * s2 + 2.0 * rho * s1 * s2).sqrt();
+    assert!((b.params[0].std_error / se - 1.0).abs() < 0.05, "{} vs {se}", b.params[0].std_error);
+}

@@ -5,7 +5,7 @@
 //! W^α [S-15], σ_a = k_G√(qE*fγ) [S-8]); the parameters are any of c₁, c₂, α, k_G and
 //! w₀ = W(0) = 1 − c₁ − c₂ (model 4's "W(a_r → 0)"; fitting w₀ moves c₁ at fixed c₂). The
 //! residual of observation i is r_i = (y_model − y_i)/s_i with s_i its standard error where the
-//! reference gives one, else |y_i| (relative residuals, as [S] Fig. 1 plots a_r/p*), and for a
+//! reference gives one, else |y_i| (relative residuals, as \[S\] Fig. 1 plots a_r/p*), and for a
 //! Pr(σ*) bin the peak of its histogram. Levenberg–Marquardt (the `levenberg-marquardt` crate,
 //! MINPACK's algorithm) minimises χ² = Σr_i²; the Jacobian is a central difference.
 //!
@@ -39,6 +39,9 @@ pub const MAX_CONDITION: f64 = 1e8;
 /// A fit whose W dips below this somewhere on [0, 1] has run into the edge of the model's
 /// range (W ≥ 0): the reference asks for more than the model can give.
 pub const EDGE_W: f64 = 1e-4;
+
+/// Likewise for α within this of its range [0, 4].
+pub const EDGE_ALPHA: f64 = 1e-3;
 
 /// A coefficient the fit may move.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -209,8 +212,13 @@ const PENALTY: f64 = 1e6;
 impl Problem<'_> {
     fn model_at(&self, x: &DVector<f64>) -> Model {
         let mut m = self.base;
-        for (p, v) in self.params.iter().zip(x.iter()) {
-            p.set(&mut m, *v);
+        // w₀ moves c₁ at the new c₂: set it last
+        for pass_w0 in [false, true] {
+            for (p, v) in self.params.iter().zip(x.iter()) {
+                if (*p == Param::W0) == pass_w0 {
+                    p.set(&mut m, *v);
+                }
+            }
         }
         m
     }
@@ -248,7 +256,12 @@ impl Problem<'_> {
             xp[k] += h;
             let mut xm = x.clone();
             xm[k] -= h;
-            let col = (self.residuals_at(&xp) - self.residuals_at(&xm)) / (2.0 * h);
+            // one-sided where a step leaves the model's range (at its edge)
+            let col = match (self.model_at(&xp).validate().is_ok(), self.model_at(&xm).validate().is_ok()) {
+                (true, false) => (self.residuals_at(&xp) - self.residuals_at(x)) / h,
+                (false, true) => (self.residuals_at(x) - self.residuals_at(&xm)) / h,
+                _ => (self.residuals_at(&xp) - self.residuals_at(&xm)) / (2.0 * h),
+            };
             j.set_column(k, &col);
         }
         j
@@ -393,7 +406,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
             "the best fit leaves the model's range ({e}): the reference lies outside what the model can reach"
         ),
     })?;
-    if model.w_min() < EDGE_W || model.alpha <= 0.0 || model.alpha >= 4.0 {
+    if model.w_min() < EDGE_W || model.alpha <= EDGE_ALPHA || model.alpha >= 4.0 - EDGE_ALPHA {
         let rms = (r.norm_squared() / n as f64).sqrt();
         return Err(Error::NotConverged {
             solver: "gauge".into(),
@@ -407,7 +420,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
     }
     let j = problem.jacobian_at(&x);
     let (cond, weakest) = identifiability(&j);
-    if !(cond <= MAX_CONDITION) {
+    if cond.is_nan() || cond > MAX_CONDITION {
         let combo: Vec<String> = params
             .iter()
             .zip(weakest.iter())
@@ -488,7 +501,7 @@ pub fn identifiability(j: &DMatrix<f64>) -> (f64, Vec<f64>) {
     let mut js = j.clone();
     for c in 0..k {
         let norm = j.column(c).norm();
-        if !(norm > 0.0) || !norm.is_finite() {
+        if norm.is_nan() || norm <= 0.0 || !norm.is_finite() {
             let mut v = vec![0.0; k];
             v[c] = 1.0;
             return (f64::INFINITY, v);

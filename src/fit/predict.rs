@@ -136,11 +136,12 @@ fn pr_at(s: &Scene, p: f64, max_sigma: f64) -> Result<Vec<(f64, f64)>> {
 }
 
 fn pr_options(max_sigma: f64) -> Options {
-    let mut o = Options::default();
-    o.adhesion_error_estimate = false;
-    o.sigma_points = 2001;
-    o.sigma_max = Some(max_sigma.clamp(1e-3, 1e3));
-    o
+    Options {
+        adhesion_error_estimate: false,
+        sigma_points: 2001,
+        sigma_max: Some(max_sigma.clamp(1e-3, 1e3)),
+        ..Options::default()
+    }
 }
 
 fn one_load(s: &Scene, p: f64, want_pr: bool, max_sigma: f64) -> Result<AtLoad> {

@@ -224,7 +224,7 @@ fn y_of(o: Observable, p: f64, v: f64) -> f64 {
 }
 
 /// The reference as points and each model as a line, one chart per observable stacked in
-/// one figure's series (a_r shown as a_r/p* like [S] Fig. 1).
+/// one figure's series (a_r shown as a_r/p* like \[S\] Fig. 1).
 pub fn overlay(scene: &Scene, r: &Reference, models: &[(&str, Model)], what: &str) -> Result<ChartSpec> {
     let obs: Vec<Observable> = r.observables().into_iter().filter(|o| *o != Observable::Pr).collect();
     let first = obs.first().copied().unwrap_or(Observable::Area);
