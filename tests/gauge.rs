@@ -220,5 +220,9 @@ fn w0_is_one_minus_c1_minus_c2() {
     assert!((b.model.c1 - a.model.c1).abs() < 1e-4 && (b.model.c2 - a.model.c2).abs() < 1e-4);
     let (s1, s2, rho) = (a.params[0].std_error, a.params[1].std_error, a.correlation[0][1]);
     let se = (s1 * s1 + s2 * s2 + 2.0 * rho * s1 * s2).sqrt();
-    assert!((b.params[0].std_error / se - 1.0).abs() < 0.05, "{} vs {se}", b.params[0].std_error);
+    assert!(
+        (b.params[0].std_error / se - 1.0).abs() < 0.05,
+        "{} vs {se}",
+        b.params[0].std_error
+    );
 }

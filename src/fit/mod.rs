@@ -257,7 +257,10 @@ impl Problem<'_> {
             let mut xm = x.clone();
             xm[k] -= h;
             // one-sided where a step leaves the model's range (at its edge)
-            let col = match (self.model_at(&xp).validate().is_ok(), self.model_at(&xm).validate().is_ok()) {
+            let col = match (
+                self.model_at(&xp).validate().is_ok(),
+                self.model_at(&xm).validate().is_ok(),
+            ) {
                 (true, false) => (self.residuals_at(&xp) - self.residuals_at(x)) / h,
                 (false, true) => (self.residuals_at(x) - self.residuals_at(&xm)) / h,
                 _ => (self.residuals_at(&xp) - self.residuals_at(&xm)) / (2.0 * h),
@@ -411,7 +414,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
         return Err(Error::NotConverged {
             solver: "gauge".into(),
             reason: format!(
-                "the best fit runs into the edge of the model's range (min W = {:.2e}, alpha = {}) with an rms misfit of {:.3}: the reference lies outside what the model can reach",
+                "the best fit runs into the edge of the model's range (min W = {:.2e}, alpha = {}) with an rms misfit of {:.3}: the reference lies outside what the model can reach within its range",
                 model.w_min(),
                 model.alpha,
                 rms
