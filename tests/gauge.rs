@@ -226,3 +226,68 @@ fn w0_is_one_minus_c1_minus_c2() {
         b.params[0].std_error
     );
 }
+
+#[test]
+fn gap_and_pr_observables_follow_the_theory() {
+    use asperity::fit::compare;
+    use asperity::theory::engine::Options;
+    use asperity::theory::persson::{self, Accuracy};
+    use asperity::theory::sweep::{self, SweepSpec};
+    // mean gaps: predict (a 48-row sweep, cubic in ln p*) against a sweep on the loads
+    let m3 = Model::named(3).unwrap();
+    let s = half_space(m3);
+    let spec = SweepSpec {
+        from: 1e-3,
+        to: 0.3,
+        points: 6,
+    };
+    let sw = sweep::sweep(&s, &spec, &Options::default(), None).unwrap();
+    let r = Reference {
+        name: "gaps".into(),
+        points: sw
+            .rows
+            .iter()
+            .map(|row| Observation {
+                p: row.p,
+                observable: Observable::MeanGapRel,
+                value: row.mean_gap_rel,
+                error: None,
+                sigma: 0.0,
+            })
+            .collect(),
+    };
+    let y = fit::predict(&s, &m3, &r).unwrap();
+    for (v, o) in y.iter().zip(&r.points) {
+        assert!(
+            (v / o.value - 1.0).abs() < SWEEP_REFINEMENT_REL,
+            "p* {}: {v} vs {}",
+            o.p,
+            o.value
+        );
+    }
+    // Pr histograms: model 3's own Pr has an L1 distance ~0 from model 3, not from model 1
+    let mut s1 = s.clone();
+    s1.pressure = 0.01;
+    let sol = persson::solve(&s1, &Accuracy::default()).unwrap();
+    let (sig, den) = sol.sample(2.0, 101);
+    let r = Reference {
+        name: "pr".into(),
+        points: sig
+            .iter()
+            .zip(&den)
+            .map(|(&sigma, &value)| Observation {
+                p: 0.01,
+                observable: Observable::Pr,
+                value,
+                error: None,
+                sigma,
+            })
+            .collect(),
+    };
+    let own = compare::score(&s, &m3, &r).unwrap();
+    let other = compare::score(&s, &Model::named(1).unwrap(), &r).unwrap();
+    assert_eq!(own[0].observable, "pr");
+    assert!(own[0].mean < 1e-4, "{own:?}");
+    // at least the difference of the areas, 0.0237 − 0.0214 ([S] §3.1)
+    assert!(other[0].mean > 0.002, "{other:?}");
+}
