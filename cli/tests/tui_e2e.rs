@@ -224,7 +224,7 @@ fn tour_in_tmux() {
     let dir = std::env::temp_dir().join(format!("asperity-e2e-tour-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let t = Tmux::start_with("tour", &dir, "", "tour");
-    let s = t.wait("the first step", |s| s.contains("tour 1/10") && solved(s));
+    let s = t.wait("the first step", |s| s.contains("tour 1/11") && solved(s));
     assert!(s.contains("Roughness, scale by scale") && s.contains("[S-1]"), "{s}");
     for (i, title) in [
         (2, "How much area?"),
@@ -232,20 +232,20 @@ fn tour_in_tmux() {
         (4, "What no W(a_r) can fix"),
     ] {
         t.keys(&["Right"]);
-        let s = t.wait(title, |s| s.contains(&format!("tour {i}/10")) && solved(s));
+        let s = t.wait(title, |s| s.contains(&format!("tour {i}/11")) && solved(s));
         assert!(s.contains(title), "{s}");
     }
     let s = t.screen();
     assert!(s.contains("Pr(σ*) log–log") && s.contains("σ→0 asymptote"), "{s}");
     // a knob still turns inside a step (p* is selected: l steps it up)
     t.keys(&["l"]);
-    t.wait("p* = 0.01122", |s| s.contains("0.01122") && s.contains("tour 4/10"));
+    t.wait("p* = 0.01122", |s| s.contains("0.01122") && s.contains("tour 4/11"));
     t.keys(&["Left"]);
-    t.wait("step 3", |s| s.contains("tour 3/10") && s.contains("0.01000"));
+    t.wait("step 3", |s| s.contains("tour 3/11") && s.contains("0.01000"));
     // through the adhesive steps to the last
-    for i in 4..=10 {
+    for i in 4..=11 {
         t.keys(&["Right"]);
-        t.wait("the next step", |s| s.contains(&format!("tour {i}/10")));
+        t.wait("the next step", |s| s.contains(&format!("tour {i}/11")));
     }
     let s = t.wait("the last step solved", |s| s.contains("Jump into contact") && solved(s));
     assert!(s.contains("system-2") && s.contains("a_r(t·q_r)"), "{s}");
@@ -273,7 +273,7 @@ fn tour_in_tmux() {
     }
     t.keys(&["Escape"]);
     t.wait("the tour to end", |s| {
-        s.contains("left the tour") && !s.contains("tour 10/10")
+        s.contains("left the tour") && !s.contains("tour 11/11")
     });
     t.keys(&["q"]);
     let s = t.wait("a clean exit", |s| s.contains("TTY="));
@@ -320,7 +320,7 @@ fn tui_and_tour_flags_are_validated_like_run() {
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
         String::from_utf8_lossy(&out.stderr).trim(),
-        "asperity: invalid --step = 99: allowed 1 <= step <= 10"
+        "asperity: invalid --step = 99: allowed 1 <= step <= 11"
     );
     let out = Command::new(BIN).args(["tour", "no-such-tour"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2));

@@ -282,7 +282,7 @@ fn tour_step() {
     assert_eq!(a.charts[0], ChartKind::AreaRatio);
     assert!(a.all_models && a.scene.gamma == 0.0);
     let s = render(&a, 80, 24);
-    assert!(s.contains("tour 2/10") && s.contains("How much area?"), "{s}");
+    assert!(s.contains("tour 2/11") && s.contains("How much area?"), "{s}");
     insta::assert_snapshot!("tour_step2_80x24", s);
     insta::assert_snapshot!("tour_step2_160x48", render(&a, 160, 48));
     // every size, tiny ones included, draws without a panic

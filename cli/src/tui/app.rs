@@ -858,7 +858,8 @@ impl App {
             return;
         };
         match ev.code {
-            KeyCode::Esc => self.edit = None,
+            // q cancels the field (a second q quits): no value contains a q
+            KeyCode::Esc | KeyCode::Char('q') => self.edit = None,
             KeyCode::Backspace => {
                 buf.pop();
             }
@@ -946,6 +947,12 @@ impl App {
         self.all_models = st.models;
         self.focus = 0;
         self.edit = None;
+        if let Some(k) = st.select {
+            let want = knob_param(k);
+            if let Some(i) = self.params().iter().position(|p| *p == want) {
+                self.selected = i;
+            }
+        }
         self.refresh();
     }
 
@@ -1134,6 +1141,18 @@ impl App {
         s.validate()?;
         self.set_scene(s);
         Ok(())
+    }
+}
+
+/// The panel row of a tour step's knob.
+pub fn knob_param(k: super::tour::Knob) -> Param {
+    use super::tour::Knob;
+    match k {
+        Knob::Preset => Param::Preset,
+        Knob::Model => Param::Model,
+        Knob::Pressure => Param::Pressure,
+        Knob::Thickness => Param::Thickness,
+        Knob::Gamma => Param::Gamma,
     }
 }
 
@@ -1469,6 +1488,30 @@ mod tests {
         let mut b = app();
         b.on_key(KeyEvent::new(KeyCode::Char('c'), M::CONTROL));
         assert!(b.quit);
+        // q while typing cancels the field and keeps the scene; a second q quits
+        let mut c = app();
+        let before = c.scene.clone();
+        key(&mut c, KeyCode::Char('5'));
+        key(&mut c, KeyCode::Char('q'));
+        assert_eq!((c.edit.as_deref(), c.quit), (None, false));
+        assert_eq!(c.scene, before);
+        key(&mut c, KeyCode::Char('q'));
+        assert!(c.quit);
+    }
+
+    #[test]
+    fn a_tour_step_selects_the_knob_its_caption_names() {
+        let mut a = app();
+        a.start_tour(Tour::resolve("wang-muser").unwrap(), 0);
+        assert_eq!(a.selected_param(), Param::Pressure);
+        let n = a.tour.as_ref().unwrap().tour.steps.len();
+        a.act(Action::Up);
+        a.tour_go(n as i32);
+        let step = &a.tour.as_ref().unwrap().tour.steps[n - 1];
+        assert_eq!(step.select, Some(crate::tui::tour::Knob::Pressure));
+        assert_eq!(a.selected_param(), Param::Pressure);
+        a.tour_go(-2);
+        assert_eq!(a.selected_param(), Param::Thickness);
     }
 
     #[test]

@@ -105,6 +105,17 @@ impl ChartKind {
         ChartKind::ALL[(i + dir).rem_euclid(n) as usize]
     }
 
+    /// The quantity of the preset's `[[reference]]` points this chart draws (GFMD data such
+    /// as \[S\] Table 1), if any.
+    pub fn reference_quantity(self) -> Option<&'static str> {
+        match self {
+            ChartKind::Area | ChartKind::AreaRatio | ChartKind::Thickness => Some("a_r"),
+            ChartKind::Stress => Some("mean_contact_stress"),
+            ChartKind::Gap => Some("mean_gap_rel"),
+            ChartKind::Pr | ChartKind::PrLog => None,
+        }
+    }
+
     /// What it needs computed.
     pub fn needs(self) -> Needs {
         match self {
@@ -620,7 +631,8 @@ fn area(app: &App, ratio: bool) -> ChartModel {
         role: theory_role(app),
         draw: Draw::Line,
     });
-    m.series.extend(reference_series(app, "a_r", y_of));
+    m.series
+        .extend(reference_series(app, kind.reference_quantity().unwrap_or("a_r"), y_of));
     if let Some(g) = app.gfmd_for_scene() {
         // the theory on GFMD's own (reduced) map: a second system, apart from the scene's curve
         if g.theory_sweep.len() > 1 {
@@ -698,11 +710,12 @@ fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64
 
 fn loads(app: &App, kind: ChartKind) -> ChartModel {
     let gap = kind == ChartKind::Gap;
-    let (title, ylab, quantity) = if gap {
-        ("ū/h_rms(p*)", "ū/h_rms", "mean_gap_rel")
+    let (title, ylab) = if gap {
+        ("ū/h_rms(p*)", "ū/h_rms")
     } else {
-        ("σ̄_c*(p*)", "σ̄_c*", "mean_contact_stress")
+        ("σ̄_c*(p*)", "σ̄_c*")
     };
+    let quantity = kind.reference_quantity().unwrap_or("mean_contact_stress");
     let mut m = base(kind, title.into(), "p* = p/E*ḡ", ylab, Scale::Log10, Scale::Linear);
     let pick = |sw: &SweepData| -> Vec<(f64, f64)> {
         let ys = if gap { &sw.gap_rel } else { &sw.mean_contact_stress };
@@ -816,7 +829,7 @@ fn thickness(app: &App) -> ChartModel {
     });
     // reference a_r points at this p* with a finite thickness
     let mut refs: Vec<Series> = Vec::new();
-    for r in references(app, "a_r") {
+    for r in references(app, ChartKind::Thickness.reference_quantity().unwrap_or("a_r")) {
         let Some(t) = r.thickness_qr.filter(|t| t.is_finite()) else {
             continue;
         };

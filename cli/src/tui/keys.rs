@@ -125,7 +125,7 @@ pub const TABLE: &[Binding] = &[
         keys: &[Key(KeyCode::Enter, NONE)],
         label: "0-9 Enter",
         action: Action::Edit,
-        help: "type a value (inf, 0 = off), Enter applies, Esc cancels",
+        help: "type a value (inf, 0 = off), Enter applies, Esc or q cancels",
     },
     Binding {
         keys: &[Key(KeyCode::Char('m'), NONE)],

@@ -21,12 +21,22 @@
 //! gamma = 0.0                  # optional gamma_s in J/m^2 (default: the preset's)
 //! charts = ["pr", "area-ratio", "gap"]   # big panel, lower left, lower right (1-3 names)
 //! models = false               # optional: overlay all models (the M key)
+//! select = "pressure"          # optional: the knob the caption tells the class to turn
 //! caption = """
 //! Two to four lines.
 //! """
+//!
+//! [[step.check]]               # optional: a claim of the caption, checked against the engine
+//! says = "model 1 undershoots eq. (18)"
+//! quantity = "a_r/p*"          # see [`QUANTITIES`]
+//! model = 1                    # optional: the step's scene with model/pressure/gamma/thickness_qr
+//! value = 1.60                 # value ± rel·|value|, and/or min/max bounds,
+//! rel = 0.005
+//! below = { quantity = "eq18/p*" }   # and/or below/above/near another quantity or scene
 //! ```
 //!
-//! Chart names: see [`super::charts`].
+//! Chart names: see [`super::charts`]. Knob names: [`Knob::NAMES`]. The checks are data only:
+//! the test `cli/tests/tui_tour_claims.rs` evaluates every one of them with the engine.
 
 use super::charts::ChartKind;
 use asperity::error::{Error, Result};
@@ -70,7 +80,158 @@ struct StepFile {
     gamma: Option<f64>,
     charts: Vec<String>,
     models: Option<bool>,
+    select: Option<String>,
     caption: String,
+    #[serde(default)]
+    check: Vec<Check>,
+}
+
+/// A knob of the parameter panel a step can select (the one its caption says to turn).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Knob {
+    /// The preset.
+    Preset,
+    /// The model.
+    Model,
+    /// p*.
+    Pressure,
+    /// t·q_r.
+    Thickness,
+    /// γ_s.
+    Gamma,
+}
+
+impl Knob {
+    /// The names of the `select` key, in the order of [`Knob::ALL`].
+    pub const NAMES: [&'static str; 5] = ["preset", "model", "pressure", "thickness_qr", "gamma"];
+    /// Every knob.
+    pub const ALL: [Knob; 5] = [Knob::Preset, Knob::Model, Knob::Pressure, Knob::Thickness, Knob::Gamma];
+
+    /// The knob named `s` (see [`Knob::NAMES`]).
+    pub fn parse(s: &str) -> Option<Knob> {
+        Knob::NAMES.iter().position(|n| *n == s).map(|i| Knob::ALL[i])
+    }
+}
+
+/// Quantities a [`Check`] can state (evaluated by the claims test with the engine):
+/// `a_r`, `sigma_a` (σ_a* at q_s: the wall sits at −σ_a*), `a_r/p*`, `eq18/p*` (the closed form [S-18]), `mean_contact_stress` (σ̄_c*),
+/// `gap_rel` (ū/h_rms), `width` (Δ* of the adhesionless Pr), `gamma_glo` (γ̃_glo),
+/// `tensile_area` (∫ Pr over σ* < 0), `tensile_fraction` (tensile_area / a_r), `W` (the model's
+/// W at `a_r`), `a_r_unloading` (the unloading branch at the load), `jump_in` (p* where the
+/// loading branch ends, from a load sweep p*/10…10p*), `pr_linearity` (Pr(σ₁)/σ₁ over Pr(σ₂)/σ₂
+/// at the first two stresses of the engine's grid), `reference:Q` (the preset's
+/// `[[reference]]` value of quantity Q at the scene's p*).
+pub const QUANTITIES: [&str; 14] = [
+    "a_r",
+    "sigma_a",
+    "a_r/p*",
+    "eq18/p*",
+    "mean_contact_stress",
+    "gap_rel",
+    "width",
+    "gamma_glo",
+    "tensile_area",
+    "tensile_fraction",
+    "W",
+    "a_r_unloading",
+    "jump_in",
+    "pr_linearity",
+];
+
+/// The other side of a comparison: the same quantity and scene unless overridden.
+#[derive(Debug, Clone, PartialEq, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct Side {
+    /// Another quantity (default: the check's).
+    pub quantity: Option<String>,
+    /// Another model.
+    pub model: Option<u8>,
+    /// Another p*.
+    pub pressure: Option<f64>,
+    /// Another γ_s.
+    pub gamma: Option<f64>,
+    /// Another t·q_r.
+    pub thickness_qr: Option<f64>,
+}
+
+/// A claim of a caption as data: a quantity of the step's scene (with overrides) and what the
+/// caption says about it.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Check {
+    /// The claim in words (shown when the check fails).
+    pub says: String,
+    /// See [`QUANTITIES`].
+    pub quantity: String,
+    /// Model instead of the step's.
+    pub model: Option<u8>,
+    /// p* instead of the step's.
+    pub pressure: Option<f64>,
+    /// γ_s instead of the step's.
+    pub gamma: Option<f64>,
+    /// t·q_r instead of the step's.
+    pub thickness_qr: Option<f64>,
+    /// a_r at which `W` is evaluated.
+    pub a_r: Option<f64>,
+    /// The stated value.
+    pub value: Option<f64>,
+    /// Relative tolerance of `value` and of `near` (0.005 when not given: a value quoted to
+    /// three digits).
+    pub rel: Option<f64>,
+    /// Lower bound.
+    pub min: Option<f64>,
+    /// Upper bound.
+    pub max: Option<f64>,
+    /// The quantity lies below this one.
+    pub below: Option<Side>,
+    /// The quantity lies above this one.
+    pub above: Option<Side>,
+    /// The quantity lies within `rel` of this one.
+    pub near: Option<Side>,
+}
+
+impl Check {
+    /// The relative tolerance of `value` and `near`.
+    pub fn rel(&self) -> f64 {
+        self.rel.unwrap_or(0.005)
+    }
+
+    fn validate(&self) -> std::result::Result<(), String> {
+        let known = |q: &str| QUANTITIES.contains(&q) || q.strip_prefix("reference:").is_some_and(|r| !r.is_empty());
+        if !known(&self.quantity) {
+            return Err(format!(
+                "quantity \"{}\"; allowed {}, reference:QUANTITY",
+                self.quantity,
+                QUANTITIES.join(", ")
+            ));
+        }
+        for s in [&self.below, &self.above, &self.near].into_iter().flatten() {
+            if let Some(q) = &s.quantity {
+                if !known(q) {
+                    return Err(format!(
+                        "quantity \"{q}\" of a comparison; allowed {}",
+                        QUANTITIES.join(", ")
+                    ));
+                }
+            }
+        }
+        if self.value.is_none()
+            && self.min.is_none()
+            && self.max.is_none()
+            && self.below.is_none()
+            && self.above.is_none()
+            && self.near.is_none()
+        {
+            return Err("states nothing: give value, min, max, below, above or near".into());
+        }
+        if self.quantity == "W" && self.a_r.is_none() {
+            return Err("W needs a_r".into());
+        }
+        if self.says.trim().is_empty() {
+            return Err("says must not be empty".into());
+        }
+        Ok(())
+    }
 }
 
 /// One validated step.
@@ -90,6 +251,10 @@ pub struct Step {
     pub models: bool,
     /// 2–4 lines.
     pub caption: Vec<String>,
+    /// The knob the caption tells the class to turn (selected when the step opens).
+    pub select: Option<Knob>,
+    /// The caption's claims (checked against the engine by the claims test).
+    pub checks: Vec<Check>,
 }
 
 /// A validated tour.
@@ -250,6 +415,20 @@ impl Tour {
             if s.title.trim().is_empty() {
                 return Err(err(at, "title", "must not be empty".into()));
             }
+            let select = match &s.select {
+                None => None,
+                Some(name) => Some(Knob::parse(name).ok_or_else(|| {
+                    err(
+                        at,
+                        "select",
+                        format!("unknown knob \"{name}\"; allowed {}", Knob::NAMES.join(", ")),
+                    )
+                })?),
+            };
+            for (j, c) in s.check.iter().enumerate() {
+                c.validate()
+                    .map_err(|m| err(at, "check", format!("check {j} ({}): {m}", c.says.trim())))?;
+            }
             steps.push(Step {
                 title: s.title.trim().to_string(),
                 source: source_name,
@@ -258,6 +437,8 @@ impl Tour {
                 charts,
                 models: s.models.unwrap_or(false),
                 caption,
+                select,
+                checks: s.check.clone(),
             });
         }
         Ok(Tour {
@@ -376,6 +557,13 @@ caption = "a\nb\nc"
         for (name, text) in BUILTIN {
             let t = Tour::parse(text, name).unwrap();
             assert!((8..=12).contains(&t.steps.len()), "{name}: {} steps", t.steps.len());
+            // an 80-column terminal shows every caption line unwrapped (box borders: 2 columns)
+            for l in t.steps.iter().flat_map(|s| &s.caption) {
+                assert!(
+                    l.chars().count() <= 76,
+                    "{name}: caption line too wide for 80 columns: {l}"
+                );
+            }
         }
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tours");
         for f in std::fs::read_dir(dir).unwrap() {
