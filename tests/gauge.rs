@@ -291,3 +291,37 @@ fn gap_and_pr_observables_follow_the_theory() {
     // at least the difference of the areas, 0.0237 − 0.0214 ([S] §3.1)
     assert!(other[0].mean > 0.002, "{other:?}");
 }
+
+#[test]
+fn data_too_noisy_to_pin_a_parameter_say_so() {
+    // standard errors of 10 on a_r ≤ 1: no coefficient is determined
+    let r = reference::eq18(1e-3, 1.0, 11).unwrap();
+    let noisy = Reference {
+        name: "noisy".into(),
+        points: r
+            .points
+            .iter()
+            .map(|o| Observation {
+                error: Some(10.0),
+                ..*o
+            })
+            .collect(),
+    };
+    let e = fit::fit(&half_space(Model::named(1).unwrap()), &noisy, &[Param::C1])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("cannot pin down c1"), "{e}");
+    // with errors of 1 % the same fit is determined
+    let fine = Reference {
+        name: "fine".into(),
+        points: r
+            .points
+            .iter()
+            .map(|o| Observation {
+                error: Some(0.01 * o.value),
+                ..*o
+            })
+            .collect(),
+    };
+    assert!(fit::fit(&half_space(Model::named(1).unwrap()), &fine, &[Param::C1]).is_ok());
+}

@@ -15,7 +15,8 @@
 //! correlations C_jk/√(C_jj C_kk). Identifiability: J with unit-scaled columns has singular
 //! values σ₁ ≥ … ≥ σ_k; its condition number σ₁/σ_k above [`MAX_CONDITION`] (or a zero
 //! column) means the data pin down only some combinations: the right singular vector of σ_k
-//! names the unconstrained one, and the fit says so instead of reporting error bars.
+//! names the unconstrained one, and the fit says so instead of reporting error bars; so it
+//! does for a single parameter whose standard error exceeds [`WEAK_SE_FACTOR`] × its size.
 
 pub mod compare;
 pub mod predict;
@@ -39,6 +40,10 @@ pub const MAX_CONDITION: f64 = 1e8;
 /// A fit whose W dips below this somewhere on [0, 1] has run into the edge of the model's
 /// range (W ≥ 0): the reference asks for more than the model can give.
 pub const EDGE_W: f64 = 1e-4;
+
+/// A fitted value whose standard error exceeds this many times max(|value|, 0.1) is not
+/// determined by the data (e.g. k_G where the σ_a cap is active): the fit says so.
+pub const WEAK_SE_FACTOR: f64 = 5.0;
 
 /// Likewise for α within this of its range [0, 4].
 pub const EDGE_ALPHA: f64 = 1e-3;
@@ -448,7 +453,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
         solver: "gauge".into(),
         reason: "JᵀJ is singular at the optimum: the data cannot identify the parameters".into(),
     })? * s2;
-    let fitted = params
+    let fitted: Vec<FittedParam> = params
         .iter()
         .enumerate()
         .map(|(i, p)| FittedParam {
@@ -458,6 +463,20 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
             start: x0[i],
         })
         .collect();
+    if let Some(p) = fitted
+        .iter()
+        .find(|p: &&FittedParam| !(p.std_error <= WEAK_SE_FACTOR * p.value.abs().max(0.1)))
+    {
+        return Err(Error::NotConverged {
+            solver: "gauge".into(),
+            reason: format!(
+                "the data cannot pin down {}: {} ± {} (a standard error above {WEAK_SE_FACTOR} × max(|value|, 0.1)); hold it fixed or add observables that depend on it",
+                p.name,
+                crate::error::fmt_value(p.value),
+                crate::error::fmt_value(p.std_error)
+            ),
+        });
+    }
     let correlation = (0..k)
         .map(|a| {
             (0..k)
