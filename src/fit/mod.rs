@@ -465,7 +465,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
         .collect();
     if let Some(p) = fitted
         .iter()
-        .find(|p: &&FittedParam| !(p.std_error <= WEAK_SE_FACTOR * p.value.abs().max(0.1)))
+        .find(|p: &&FittedParam| p.std_error.is_nan() || p.std_error > WEAK_SE_FACTOR * p.value.abs().max(0.1))
     {
         return Err(Error::NotConverged {
             solver: "gauge".into(),
