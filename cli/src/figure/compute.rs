@@ -16,26 +16,7 @@ use asperity::theory::sweep::{self, SweepSpec};
 use rayon::prelude::*;
 use std::sync::atomic::AtomicBool;
 
-/// The scene of a curve: the preset's, then the figure's overrides, then the curve's.
-pub fn curve_scene(preset: &Preset, fig: &Overrides, curve: &Overrides) -> Result<Scene> {
-    let mut s = preset.scene()?;
-    for o in [fig, curve] {
-        if let Some(m) = o.model {
-            s.model = Model::named(m)?;
-        }
-        if let Some(p) = o.pressure {
-            s.pressure = p;
-        }
-        if let Some(t) = o.thickness_qr {
-            s.thickness_qr = t;
-        }
-        if let Some(g) = o.gamma {
-            s.gamma = g;
-        }
-    }
-    s.validate()?;
-    Ok(s)
-}
+pub use super::spec::curve_scene;
 
 /// Brute-force runs: grid side and seed.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -321,8 +321,7 @@ impl FigureSpec {
         // every scene must be valid: the preset's scene with the overrides
         let preset = Preset::resolve(&self.preset).map_err(|e| format!("preset: {e}"))?;
         for (i, c) in self.curve.iter().enumerate() {
-            super::compute::curve_scene(&preset, &self.overrides(), &c.overrides())
-                .map_err(|e| format!("curve[{}]: {e}", i + 1))?;
+            curve_scene(&preset, &self.overrides(), &c.overrides()).map_err(|e| format!("curve[{}]: {e}", i + 1))?;
         }
         Ok(())
     }
@@ -342,4 +341,28 @@ pub fn resolve(id_or_path: &str) -> Result<FigureSpec> {
         asperity::error::fmt_text(id_or_path),
         "1, 2, 3, 4, 5, 6, 7, 8, table-1 or a figure TOML file",
     ))
+}
+/// The scene of a curve: the preset's, then the figure's overrides, then the curve's.
+pub fn curve_scene(
+    preset: &Preset,
+    fig: &Overrides,
+    curve: &Overrides,
+) -> asperity::error::Result<asperity::input::scene::Scene> {
+    let mut s = preset.scene()?;
+    for o in [fig, curve] {
+        if let Some(m) = o.model {
+            s.model = asperity::input::model::Model::named(m)?;
+        }
+        if let Some(p) = o.pressure {
+            s.pressure = p;
+        }
+        if let Some(t) = o.thickness_qr {
+            s.thickness_qr = t;
+        }
+        if let Some(g) = o.gamma {
+            s.gamma = g;
+        }
+    }
+    s.validate()?;
+    Ok(s)
 }

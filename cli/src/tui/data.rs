@@ -85,7 +85,7 @@ pub fn extra_readouts(ev: &Evaluation) -> Vec<(String, String)> {
     }
     let mut v = vec![
         ("σ_a*".into(), format!("{:.4}", ev.sigma_a)),
-        ("tensile".into(), super::view::sig(ev.tensile_area, 3)),
+        ("tensile".into(), super::words::sig(ev.tensile_area, 3)),
         ("residual".into(), format!("{:.1e}", ev.residual)),
     ];
     if ev.branches.len() < 2 {
@@ -409,6 +409,21 @@ fn invariant_rows(r: &asperity::gfmd::reduction::Reduction) -> Vec<(String, Stri
 /// Whether the explorer opens a preset with the preset's γ_s (true, like the CLI) or with
 /// adhesion off (false).
 pub const ADHESION_BY_DEFAULT: bool = true;
+
+/// a_r(p*) of eq. (18) of \[S\] (the closed form the area charts draw dashed).
+pub fn eq18_area(p: f64) -> f64 {
+    asperity::theory::closed_form::eq18_area(p)
+}
+
+/// The small-stress asymptote of the adhesionless Pr(σ*) (\[S\] Fig. 3).
+pub fn pr_small_stress(sigma: f64, p: f64, delta: f64) -> f64 {
+    asperity::theory::closed_form::pr_small_stress(sigma, p, delta)
+}
+
+/// The large-stress asymptote of the adhesionless Pr(σ*) (\[S\] Fig. 3).
+pub fn pr_large_stress(sigma: f64, p: f64, delta: f64) -> f64 {
+    asperity::theory::closed_form::pr_large_stress(sigma, p, delta)
+}
 
 #[cfg(test)]
 mod tests {

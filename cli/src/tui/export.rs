@@ -6,9 +6,9 @@
 //! `s`: writes the visible charts as SVG and PNG (`asperity-NAME-N-CHART.svg|png`) through
 //! the chart renderer ([`crate::chart`]), from the same [`ChartModel`]s the screen shows.
 
-use super::app::App;
 use super::charts::{self, ChartKind, ChartModel, Role};
 use super::plot::Scale;
+use super::state::App;
 use crate::chart::{self, ChartSpec, Series, SeriesStyle};
 use asperity::error::{Error, Result};
 use asperity::input::model::ModelKind;

@@ -1,13 +1,22 @@
 //! The terminal explorer (`asperity`, `asperity tui --preset P`).
 //!
-//! - [`app`]: state and key handling (pure, unit-tested without a terminal).
-//! - [`keys`]: the key table, used both for dispatch and for the `?` help.
-//! - [`worker`]: the compute thread (generations, cancellation, caches).
-//! - [`data`]: the only code that reads engine results (the adhesion merge point).
-//! - [`charts`]: the charts of the selector as plain data (drawn by [`view`], saved by `s`).
-//! - [`view`]: rendering; [`plot`]: the chart workarounds (log axes, NaN, labels, bounds).
-//! - [`tour`]: teaching tours (TOML files in `tours/`), walked with `t` or `asperity tour`.
-//! - [`export`]: `e` writes CSV + TOML, `s` the visible charts as SVG + PNG.
+//! State, update, effects — each in files that show it (no module imports one above it):
+//!
+//! - state: [`state`] (the scene, the knobs, the charts, the results shown: plain data),
+//!   [`knobs`] (the panel's parameters and their pure stepping), [`kinds`] (the chart kinds),
+//!   [`protocol`] (requests, replies and cache keys of the worker), [`tour`] (teaching tours,
+//!   TOML files in `tours/`), [`data`] (the plain data of engine results).
+//! - update: [`update`] (a key or a reply → the next state plus effects), [`keys`] (the key
+//!   table, used for dispatch and for the `?` help).
+//! - effects: [`worker`] (the compute thread: generations, cancellation, caches), [`jobs`]
+//!   (the engine jobs: point, sweeps, GFMD), [`effects`] (the files of `e` and `s`),
+//!   [`export`] (CSV + TOML, SVG + PNG).
+//! - drawing: [`charts`], [`chart_model`], [`charts_load`] (the charts as plain data, drawn by
+//!   [`view`] and saved by `s`), [`view`], [`panel`], [`palette`], [`plot`] (the chart
+//!   workarounds: log axes, NaN, labels, bounds), [`words`] (numbers and errors in words).
+//! - [`app`]: the state under the name the front ends use.
+//!
+//! Only [`worker`], [`jobs`] and [`data`] call the engine (`cli/tests/architecture.rs`).
 //!
 //! The event loop blocks on one channel that carries key/resize events (from an input
 //! thread) and worker replies; it redraws after each batch of messages, and ticks (for the
@@ -24,12 +33,23 @@
 //! is left to compute (`all_drawn_ms`: the point refined to full accuracy, the other charts).
 
 pub mod app;
+pub mod chart_model;
 pub mod charts;
+pub mod charts_load;
 pub mod data;
+pub mod effects;
 pub mod export;
+pub mod jobs;
 pub mod keys;
+pub mod kinds;
+pub mod knobs;
+pub mod palette;
+pub mod panel;
 pub mod plot;
+pub mod protocol;
+pub mod state;
 pub mod tour;
+pub mod update;
 pub mod view;
 pub mod words;
 pub mod worker;
@@ -37,11 +57,12 @@ pub mod worker;
 use app::App;
 use asperity::error::{Error, Result};
 use asperity::input::preset::Preset;
+use protocol::Reply;
 use ratatui::crossterm::event::{self, Event, KeyEventKind};
 use std::io::Write;
 use std::sync::mpsc::{channel, RecvTimeoutError};
 use std::time::{Duration, Instant};
-use worker::{Reply, Worker};
+use worker::Worker;
 
 /// Spinner period while busy.
 const TICK: Duration = Duration::from_millis(100);
@@ -100,7 +121,7 @@ impl Trace {
             let _ = writeln!(f, "gen {gen} point_drawn_ms {ms:.2}");
             self.point_logged = true;
         }
-        let load_key = worker::sweep_key(&app.source, &app.scene, app.range());
+        let load_key = protocol::sweep_key(&app.source, &app.scene, app.range());
         let shown = app.point_gen >= gen && app.sweep_shown.as_ref() == Some(&load_key);
         if !self.charts_logged && shown {
             let _ = writeln!(f, "gen {gen} charts_drawn_ms {ms:.2}");
@@ -167,9 +188,14 @@ pub fn run_app(mut app: App) -> Result<()> {
             // a point already current stays on screen until replaced
             worker.submit(req);
         }
-        if let Some((id, setup, cancel)) = app.take_gfmd_request() {
+        if let Some((id, scene, cancel)) = app.take_gfmd_request() {
             let tx = gfmd_tx.clone();
-            worker::spawn_gfmd(id, setup, cancel, move |r| {
+            let setup = jobs::gfmd_setup(&app.preset, &scene);
+            app.message = Some(app::Message {
+                text: format!("GFMD started on a {0}x{0} grid (g cancels)", setup.grid.n()),
+                error: false,
+            });
+            jobs::spawn_gfmd(id, setup, cancel, move |r| {
                 let _ = tx.send(Msg::Reply(Box::new(r)));
             })
             .map_err(|e| Error::Io(format!("cannot start the GFMD thread: {e}")))?;
@@ -208,6 +234,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                         panic!("ASPERITY_PANIC_KEY pressed");
                     }
                     app.on_key(k);
+                    effects::apply(&mut app);
                     if app.has_pending() {
                         trace.started = Some((app.gen + 1, t0));
                         trace.point_logged = false;

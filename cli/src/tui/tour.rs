@@ -38,7 +38,7 @@
 //! Chart names: see [`super::charts`]. Knob names: [`Knob::NAMES`]. The checks are data only:
 //! the test `cli/tests/tui_tour_claims.rs` evaluates every one of them with the engine.
 
-use super::charts::ChartKind;
+use super::kinds::ChartKind;
 use asperity::error::{Error, Result};
 use asperity::input::model::Model;
 use asperity::input::preset::{self, Preset};

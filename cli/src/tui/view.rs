@@ -2,84 +2,21 @@
 //! ū(p*)) and a status bar; the help and preset overlays; a "terminal too small" screen.
 //! Pure function of the [`App`]; every chart goes through [`super::plot`].
 
-use super::app::{App, GfmdState, Overlay, Param};
 use super::charts::{self, ChartModel, Draw, Role, Series};
 use super::keys;
+pub use super::palette::{Palette, SPINNER, SPINNER_DELAY};
+use super::panel::draw_panel;
 use super::plot;
+use super::state::{App, Overlay};
+pub use super::words::sig;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::{Color, Modifier, Style};
+use ratatui::style::{Modifier, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Block, Chart, Clear, Dataset, GraphType, Paragraph, Wrap};
 use ratatui::Frame;
-
 /// Smallest usable terminal.
 pub const MIN_SIZE: (u16, u16) = (60, 20);
-
-/// How long a computation runs before the spinner shows.
-const SPINNER_DELAY: std::time::Duration = std::time::Duration::from_millis(150);
-
-const SPINNER: [&str; 8] = ["⠋", "⠙", "⠹", "⠸", "⠼", "⠴", "⠦", "⠧"];
-
-/// Colours (Okabe–Ito, colour-blind safe) or plain styles under `NO_COLOR`.
-#[derive(Debug, Clone, Copy)]
-pub struct Palette {
-    color: bool,
-}
-
-impl Palette {
-    fn fg(&self, r: u8, g: u8, b: u8) -> Style {
-        if self.color {
-            Style::default().fg(Color::Rgb(r, g, b))
-        } else {
-            Style::default()
-        }
-    }
-    /// The theory curve (blue).
-    pub fn theory(&self) -> Style {
-        self.fg(0, 114, 178)
-    }
-    /// Reference curves (orange).
-    pub fn reference(&self) -> Style {
-        self.fg(230, 159, 0)
-    }
-    /// The current point (vermillion).
-    pub fn current(&self) -> Style {
-        self.fg(213, 94, 0)
-    }
-    /// The adhesionless comparison (bluish green).
-    pub fn compare(&self) -> Style {
-        self.fg(0, 158, 115)
-    }
-    /// The −σ_a* wall (reddish purple).
-    pub fn wall(&self) -> Style {
-        self.fg(204, 121, 167)
-    }
-    /// Guide lines (sky blue).
-    pub fn guide(&self) -> Style {
-        self.fg(86, 180, 233)
-    }
-    /// GFMD results (yellow; also told apart by the ▀ marker).
-    pub fn gfmd(&self) -> Style {
-        self.fg(240, 228, 66)
-    }
-    /// Errors.
-    pub fn error(&self) -> Style {
-        self.fg(213, 94, 0).add_modifier(Modifier::BOLD)
-    }
-    /// Plain text (the reference points).
-    pub fn text(&self) -> Style {
-        Style::default()
-    }
-    /// Dim text.
-    pub fn dim(&self) -> Style {
-        if self.color {
-            Style::default().fg(Color::Gray)
-        } else {
-            Style::default()
-        }
-    }
-}
 
 /// Draws the whole screen.
 pub fn draw(f: &mut Frame, app: &App) {
@@ -230,242 +167,6 @@ fn status_line(app: &App, pal: Palette) -> Line<'static> {
              e export  s save  p preset  r reset",
             pal.dim(),
         ))
-    }
-}
-
-/// A value with `n` significant digits, compact.
-pub fn sig(x: f64, n: usize) -> String {
-    if !x.is_finite() {
-        return plot::format_number(x);
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let e = x.abs().log10().floor() as i32;
-    if (-3..5).contains(&e) {
-        let d = (n as i32 - 1 - e).max(0) as usize;
-        format!("{x:.d$}")
-    } else {
-        format!("{x:.*e}", n.saturating_sub(1))
-    }
-}
-
-fn param_value(app: &App, p: Param) -> String {
-    let s = &app.scene;
-    let m = &s.model;
-    match p {
-        Param::Preset => app.preset.name.clone(),
-        Param::Model => m.label(),
-        Param::Pressure => sig(s.pressure, 4),
-        Param::Thickness => {
-            if s.thickness_qr.is_infinite() {
-                "∞".into()
-            } else {
-                sig(s.thickness_qr, 4)
-            }
-        }
-        Param::Gamma => {
-            if s.gamma == 0.0 {
-                "0 (off)".into()
-            } else {
-                sig(s.gamma, 4)
-            }
-        }
-        Param::C1 => sig(m.c1, 4),
-        Param::C2 => sig(m.c2, 4),
-        Param::Alpha => sig(m.alpha, 4),
-        Param::KGriffith => sig(m.k_griffith, 4),
-        Param::Cap => (if m.cap { "yes" } else { "no" }).into(),
-    }
-}
-
-fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
-    let mut lines: Vec<Line> = Vec::new();
-    let sel = app.selected_param();
-    for p in app.params() {
-        let is_sel = p == sel;
-        let value = match (&app.edit, is_sel) {
-            (Some(buf), true) => format!("{buf}▏"),
-            _ => param_value(app, p),
-        };
-        let text = format!("{}{}{}", if is_sel { "▶" } else { " " }, pad(p.label(), 9), value);
-        let style = if is_sel {
-            Style::default().add_modifier(Modifier::REVERSED)
-        } else {
-            Style::default()
-        };
-        lines.push(Line::from(Span::styled(text, style)));
-    }
-    lines.push(Line::from(Span::styled("─ results ─", pal.dim())));
-    let pt = app.point.as_ref().and_then(|r| r.as_ref().ok());
-    let dash = || "–".to_string();
-    // values of an earlier scene stay while the new one computes: dimmed and marked ⋯
-    let stale_point = app.point_is_stale() && pt.is_some();
-    let stale_gap = app.gap_is_stale();
-    let mut row_styled = |k: &str, v: String, stale: bool| {
-        if stale {
-            lines.push(Line::from(Span::styled(format!(" {}{v} ⋯", pad(k, 9)), pal.dim())));
-        } else {
-            lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
-        }
-    };
-    row_styled("a_r", pt.map_or_else(dash, |p| sig(p.a_r, 4)), stale_point);
-    row_styled(
-        "σ̄_c*",
-        pt.map_or_else(dash, |p| sig(p.mean_contact_stress, 4)),
-        stale_point,
-    );
-    let gap = match &app.gap {
-        Some(Ok(g)) => sig(*g, 4),
-        _ => dash(),
-    };
-    row_styled("ū/h_rms", gap, stale_gap && app.gap.is_some());
-    row_styled("γ̃_glo", sig(app.scene.gamma_glo(), 3), false);
-    let state = match &app.point {
-        _ if stale_point || (app.busy && app.point.is_none()) => "computing…".to_string(),
-        Some(Ok(p)) if p.preview => format!("{} · refining…", p.branch),
-        Some(Ok(p)) => p.branch.clone(),
-        Some(Err(_)) => "failed (see below)".into(),
-        None => dash(),
-    };
-    row_styled("state", state, false);
-    if let Some(p) = pt {
-        for (k, v) in &p.extra {
-            row_styled(k, v.clone(), stale_point);
-        }
-        // hysteresis: every branch at this load, ◀ the one shown
-        for b in &p.branches {
-            let mark = if b.shown { " ◀" } else { "" };
-            let stab = if b.stable || b.name == "unstable" {
-                ""
-            } else {
-                " (unstable)"
-            };
-            let text = format!(" {}{}{stab}{mark}", pad(&b.name, 10), sig(b.a_r, 4));
-            let style = if stale_point { pal.dim() } else { Style::default() };
-            lines.push(Line::from(Span::styled(text, style)));
-        }
-    }
-    let mut row = |k: &str, v: String| lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
-    row(
-        "err a_r",
-        pt.map_or_else(dash, |p| {
-            if p.error_estimate.is_finite() {
-                format!("{:.1e}", p.error_estimate)
-            } else {
-                dash()
-            }
-        }),
-    );
-    match &app.gfmd {
-        GfmdState::Idle => {}
-        GfmdState::Running {
-            iteration, residual, ..
-        } => {
-            let res = if residual.is_finite() {
-                format!(", res {residual:.0e}")
-            } else {
-                String::new()
-            };
-            row(
-                "GFMD",
-                format!("{} {iteration} it{res}", SPINNER[app.spinner % SPINNER.len()]),
-            );
-        }
-        GfmdState::Done { result: Err(e), .. } => row("GFMD", format!("failed: {e}")),
-        GfmdState::Done { result: Ok(v), .. } => {
-            if app.gfmd_for_scene().is_some() {
-                row("GFMD a_r", sig(v.a_r, 4));
-                row("GFMD σ̄c", sig(v.mean_contact_stress, 4));
-                let th = v.theory_a_r.map_or("–".into(), |t| sig(t, 4));
-                row("map th.", format!("{th} (N={})", v.grid));
-                for (k, val) in &v.invariants {
-                    row(k, val.clone());
-                }
-            } else {
-                row("GFMD", "other scene (g reruns)".into());
-            }
-        }
-    }
-    row(
-        "time",
-        match pt {
-            Some(p) if app.show_timing => format_time(p.elapsed_s),
-            Some(_) => "(hidden)".into(),
-            None => dash(),
-        },
-    );
-    // the scene in physical units (shown when the panel is tall enough)
-    let sc = &app.scene;
-    lines.push(Line::from(Span::styled("─ scene ─", pal.dim())));
-    for (k, v) in [
-        ("p", si(sc.pressure * sc.stress_unit(), "Pa")),
-        ("E*", si(sc.modulus, "Pa")),
-        ("h_rms", si(sc.spectrum.rms_height(), "m")),
-        ("ḡ", sig(sc.rms_gradient(), 4)),
-        ("λ_r/λ_s", sig(sc.spectrum.q_s() / sc.spectrum.q_r(), 4)),
-    ] {
-        lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
-    }
-    let block = Block::bordered().title(" parameters ");
-    f.render_widget(Paragraph::new(lines).block(block), area);
-}
-
-/// A value with an SI prefix: 250.0 kPa, 0.7766 µm.
-pub fn si(x: f64, unit: &str) -> String {
-    if !x.is_finite() || x == 0.0 {
-        return format!("{} {unit}", plot::format_number(x));
-    }
-    const PREFIXES: [(f64, &str); 9] = [
-        (1e12, "T"),
-        (1e9, "G"),
-        (1e6, "M"),
-        (1e3, "k"),
-        (1.0, ""),
-        (1e-3, "m"),
-        (1e-6, "µ"),
-        (1e-9, "n"),
-        (1e-12, "p"),
-    ];
-    let a = x.abs();
-    // a pressure below 1 Pa is written without prefix: "mPa" beside "MPa" misleads
-    let smallest = if unit == "Pa" { 1.0 } else { 1e-12 };
-    let (f, p) = PREFIXES
-        .iter()
-        .find(|(f, _)| a >= *f && *f >= smallest)
-        .copied()
-        .unwrap_or((smallest, if unit == "Pa" { "" } else { "p" }));
-    let v = x / f;
-    let text = if (1e-3..1e4).contains(&v.abs()) {
-        trim_zeros(&sig(v, 4))
-    } else {
-        sig(v, 3)
-    };
-    format!("{text} {p}{unit}")
-}
-
-/// "250.0" → "250", "0.7770" → "0.777" (numbers without an exponent only).
-fn trim_zeros(s: &str) -> String {
-    if s.contains('.') && !s.contains('e') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s.to_string()
-    }
-}
-
-/// `s` padded with spaces to `w` display columns (combining accents take none).
-fn pad(s: &str, w: usize) -> String {
-    let n = Span::raw(s).width();
-    format!("{s}{}", " ".repeat(w.saturating_sub(n)))
-}
-
-fn format_time(s: f64) -> String {
-    if s < 1e-3 {
-        format!("{:.0} µs", s * 1e6)
-    } else if s < 1.0 {
-        format!("{:.1} ms", s * 1e3)
-    } else {
-        format!("{s:.2} s")
     }
 }
 
@@ -644,11 +345,6 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
         )
         .legend_position(None);
     f.render_widget(chart, area);
-}
-
-/// Eq. (18) of \[S\] (see [`asperity::theory::closed_form::eq18_area`]).
-pub fn eq18(p: f64) -> f64 {
-    asperity::theory::closed_form::eq18_area(p)
 }
 
 fn popup(area: Rect, w: u16, h: u16) -> Rect {

@@ -31,6 +31,23 @@ pub fn describe(e: &Error) -> String {
     }
 }
 
+/// A value with `n` significant digits, compact.
+pub fn sig(x: f64, n: usize) -> String {
+    if !x.is_finite() {
+        return super::plot::format_number(x);
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let e = x.abs().log10().floor() as i32;
+    if (-3..5).contains(&e) {
+        let d = (n as i32 - 1 - e).max(0) as usize;
+        format!("{x:.d$}")
+    } else {
+        format!("{x:.*e}", n.saturating_sub(1))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,0 +1,264 @@
+//! A chart as plain data ([`ChartModel`]: title, axes, series in data units, vertical
+//! markers) and the helpers every chart builder shares (the theory's role and name, the other
+//! models' data, the preset's reference points, the current-point marker).
+
+use super::data::{PointData, SweepData};
+use super::kinds::{overlay_models, slot, slot_name, ChartKind};
+use super::plot::{self, Scale};
+use super::state::App;
+use asperity::input::model::Model;
+
+/// How a series is drawn: the file renderer's style, so the screen and the `s` export agree
+/// by construction.
+pub use crate::chart::SeriesStyle as Draw;
+
+/// What a series is (the view picks colour and marker from it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    /// The theory of the current scene.
+    Theory,
+    /// Model slot 0–3 (models 1–4) or 4 (custom), with `M`.
+    Model(usize),
+    /// The adhesionless comparison.
+    Compare,
+    /// A closed form (eq. (18), the small-stress asymptote, t = ∞).
+    Closed,
+    /// A second closed form (the large-stress asymptote).
+    Closed2,
+    /// The preset's reference points.
+    Reference,
+    /// GFMD.
+    Gfmd,
+    /// The current point.
+    Current,
+    /// A guide line (σ* = 0, current p*).
+    Guide,
+    /// The −σ_a* wall.
+    Wall,
+    /// The unloading branch of a hysteresis (a_r charts).
+    Unloading,
+    /// The jump-in load: above it the loading branch no longer exists.
+    JumpIn,
+    /// The pull-off load: below it the unloading branch no longer exists.
+    PullOff,
+}
+
+/// One series, in data units (NaN marks a gap).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend name.
+    pub name: String,
+    /// Points (data units).
+    pub points: Vec<(f64, f64)>,
+    /// What it is.
+    pub role: Role,
+    /// How it is drawn.
+    pub draw: Draw,
+}
+
+/// A vertical marker across the whole y range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VLine {
+    /// x (data units).
+    pub x: f64,
+    /// What it is ([`Role::Guide`], [`Role::Wall`], [`Role::JumpIn`], [`Role::PullOff`]).
+    pub role: Role,
+    /// Legend name (empty: no legend entry).
+    pub name: String,
+}
+
+/// A chart ready to draw.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChartModel {
+    /// Which chart.
+    pub kind: ChartKind,
+    /// Title (the quantity and the load it is drawn at).
+    pub title: String,
+    /// x axis title, with units.
+    pub x_label: String,
+    /// y axis title, with units.
+    pub y_label: String,
+    /// x scale.
+    pub xs: Scale,
+    /// y scale.
+    pub ys: Scale,
+    /// Plane bounds of x before rounding (the view rounds them to [`plot::ticks`]).
+    pub xb: [f64; 2],
+    /// Plane bounds of y before rounding.
+    pub yb: [f64; 2],
+    /// Series, drawn in this order (the key curve last).
+    pub series: Vec<Series>,
+    /// Vertical markers.
+    pub vlines: Vec<VLine>,
+    /// Why there is nothing to draw.
+    pub empty: Option<String>,
+    /// The data belong to an earlier scene (a newer one is being computed).
+    pub stale: bool,
+    /// Points of the y data outside [`ChartModel::yb`] are dropped (log axes spanning many
+    /// decades).
+    pub clip_y: bool,
+}
+
+pub fn theory_role(app: &App) -> Role {
+    if app.all_models {
+        Role::Model(slot(&app.scene.model))
+    } else {
+        Role::Theory
+    }
+}
+
+pub fn theory_name(app: &App) -> String {
+    if app.all_models {
+        slot_name(slot(&app.scene.model))
+    } else {
+        "theory".into()
+    }
+}
+
+/// The other models' data for `M` (slot, data), current model excluded.
+pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T>) -> Vec<(usize, &'a T)> {
+    if !app.all_models {
+        return Vec::new();
+    }
+    overlay_models(&app.scene.model)
+        .into_iter()
+        .filter(|m| slot(m) != slot(&app.scene.model))
+        .filter_map(|m| get(app, &m).map(|d| (slot(&m), d)))
+        .collect()
+}
+
+pub fn empty_message(app: &App) -> String {
+    if app.busy {
+        "computing…".into()
+    } else if app.compute_error().is_some() {
+        "no data: see the status line".into()
+    } else {
+        "no data".into()
+    }
+}
+
+pub fn base(kind: ChartKind, title: String, x: &str, y: &str, xs: Scale, ys: Scale) -> ChartModel {
+    ChartModel {
+        kind,
+        title,
+        x_label: x.into(),
+        y_label: y.into(),
+        xs,
+        ys,
+        xb: [0.0, 1.0],
+        yb: [0.0, 1.0],
+        series: Vec::new(),
+        vlines: Vec::new(),
+        empty: None,
+        stale: false,
+        clip_y: false,
+    }
+}
+
+/// Plane bounds of every series (and vertical line, for x).
+pub fn data_bounds(m: &ChartModel) -> (Option<[f64; 2]>, Option<[f64; 2]>) {
+    let runs: Vec<Vec<(f64, f64)>> = m
+        .series
+        .iter()
+        .flat_map(|s| plot::segments(&s.points, m.xs, m.ys))
+        .collect();
+    let refs: Vec<&[(f64, f64)]> = runs.iter().map(|r| r.as_slice()).collect();
+    let mut xb = plot::bounds(&refs, true, 0.0);
+    for v in &m.vlines {
+        if let Some(x) = m.xs.forward(v.x) {
+            xb = Some(match xb {
+                Some(b) => [b[0].min(x), b[1].max(x)],
+                None => plot::guard(x, x),
+            });
+        }
+    }
+    (xb, plot::bounds(&refs, false, 0.0))
+}
+
+pub fn current_point(app: &App) -> Option<&PointData> {
+    app.point.as_ref().and_then(|r| r.as_ref().ok())
+}
+
+pub fn references<'a>(
+    app: &'a App,
+    quantity: &'a str,
+) -> impl Iterator<Item = &'a asperity::input::preset::ReferencePoint> {
+    app.preset.reference.iter().filter(move |r| r.quantity == quantity)
+}
+
+/// Legend name of a reference point: its source, and its conditions where they differ from
+/// the scene's.
+pub fn reference_name(app: &App, r: &asperity::input::preset::ReferencePoint, with_thickness: bool) -> String {
+    let mut cond = Vec::new();
+    let gamma = r.gamma.unwrap_or(app.preset.adhesion.surface_energy_j_m2);
+    if gamma != app.scene.gamma {
+        cond.push(format!("γ_s={}", plot::format_number(gamma)));
+    }
+    let t = r.thickness_qr.unwrap_or(f64::INFINITY);
+    if with_thickness && t.to_bits() != app.scene.thickness_qr.to_bits() {
+        cond.push(format!("t·q_r={}", plot::format_number(t)));
+    }
+    if let Some(n) = r.model {
+        cond.push(format!("model {n}"));
+    }
+    if cond.is_empty() {
+        r.source.clone()
+    } else {
+        format!("{} ({})", r.source, cond.join(", "))
+    }
+}
+
+/// Reference points of `quantity` as series (one per source and conditions), y = f(p, value).
+pub fn reference_series(app: &App, quantity: &str, y: impl Fn(f64, f64) -> f64) -> Vec<Series> {
+    let mut out: Vec<Series> = Vec::new();
+    for r in references(app, quantity) {
+        let name = reference_name(app, r, true);
+        let pt = (r.pressure, y(r.pressure, r.value));
+        match out.iter_mut().find(|s| s.name == name) {
+            Some(s) => s.points.push(pt),
+            None => out.push(Series {
+                name,
+                points: vec![pt],
+                role: Role::Reference,
+                draw: Draw::Points,
+            }),
+        }
+    }
+    out
+}
+
+/// A preview sweep's chart says that the full one is on its way.
+pub fn mark_preview(m: &mut ChartModel, sw: &SweepData) {
+    if sw.preview {
+        m.title.push_str(" · refining…");
+    }
+}
+
+pub fn sweep_of(app: &App) -> Option<&SweepData> {
+    app.sweep.as_ref().and_then(|r| r.as_ref().ok())
+}
+
+/// The load charts share one x axis: the requested p* range, whatever converged.
+pub fn load_x(app: &App) -> [f64; 2] {
+    let (a, b) = app.range();
+    [a.log10(), b.log10()]
+}
+
+pub fn add_current(m: &mut ChartModel, x: f64, y: Option<f64>) {
+    m.vlines.insert(
+        0,
+        VLine {
+            x,
+            role: Role::Guide,
+            name: String::new(),
+        },
+    );
+    if let Some(y) = y.filter(|y| y.is_finite()) {
+        m.series.push(Series {
+            name: "p*".into(),
+            points: vec![(x, y)],
+            role: Role::Current,
+            draw: Draw::Points,
+        });
+    }
+}

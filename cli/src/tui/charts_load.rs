@@ -1,0 +1,277 @@
+//! The load and thickness charts: a_r(p*), a_r/p*, σ̄_c*(p*), ū/h_rms(p*) with the hysteresis
+//! window's branches and edges, and a_r(t·q_r).
+
+use super::chart_model::*;
+use super::data::{self, SweepData, ThicknessData};
+use super::kinds::{slot_name, ChartKind};
+use super::plot::{self, Scale};
+use super::state::App;
+
+pub fn area(app: &App, ratio: bool) -> ChartModel {
+    let (kind, title, ylab, ys) = if ratio {
+        (ChartKind::AreaRatio, "a_r/p*", "a_r/p*", Scale::Linear)
+    } else {
+        (ChartKind::Area, "a_r(p*)", "a_r", Scale::Log10)
+    };
+    let mut m = base(kind, title.into(), "p* = p/E*ḡ", ylab, Scale::Log10, ys);
+    let y_of = |p: f64, a: f64| if ratio { a / p } else { a };
+    let curve =
+        |sw: &SweepData| -> Vec<(f64, f64)> { sw.p.iter().zip(&sw.a_r).map(|(&p, &a)| (p, y_of(p, a))).collect() };
+    let Some(sw) = sweep_of(app) else {
+        m.empty = Some(empty_message(app));
+        return m;
+    };
+    m.stale = app.sweep_is_stale();
+    mark_preview(&mut m, sw);
+    if app.eq18_applies() {
+        m.series.push(Series {
+            name: "eq. (18)".into(),
+            points: sw.p.iter().map(|&p| (p, y_of(p, data::eq18_area(p)))).collect(),
+            role: Role::Closed,
+            draw: Draw::Dashed,
+        });
+    }
+    for (i, o) in others(app, App::model_sweep) {
+        m.series.push(Series {
+            name: slot_name(i),
+            points: curve(o),
+            role: Role::Model(i),
+            draw: Draw::Line,
+        });
+    }
+    if !app.all_models {
+        hysteresis(&mut m, sw, &y_of);
+    }
+    m.series.push(Series {
+        name: theory_name(app),
+        points: curve(sw),
+        role: theory_role(app),
+        draw: Draw::Line,
+    });
+    m.series
+        .extend(reference_series(app, kind.reference_quantity().unwrap_or("a_r"), y_of));
+    if let Some(g) = app.gfmd_for_scene() {
+        // the theory on GFMD's own (reduced) map: a second system, apart from the scene's curve
+        if g.theory_sweep.len() > 1 {
+            m.series.push(Series {
+                name: "theory on the GFMD map".into(),
+                points: g.theory_sweep.iter().map(|&(p, a, _)| (p, y_of(p, a))).collect(),
+                role: Role::Gfmd,
+                draw: Draw::Dashed,
+            });
+        }
+        m.series.push(Series {
+            name: "GFMD".into(),
+            points: std::iter::once((g.pressure, g.a_r))
+                .chain(g.sweep.iter().map(|&(p, a, _)| (p, a)))
+                .map(|(p, a)| (p, y_of(p, a)))
+                .collect(),
+            role: Role::Gfmd,
+            draw: Draw::Points,
+        });
+    }
+    let p = app.scene.pressure;
+    add_current(&mut m, p, current_point(app).map(|pt| y_of(p, pt.a_r)));
+    let (_, yb) = data_bounds(&m);
+    m.xb = load_x(app);
+    let yb = yb.unwrap_or([0.0, 1.0]);
+    m.yb = if ratio {
+        plot::guard(0.0, yb[1] * 1.05)
+    } else {
+        // a_r <= 1
+        plot::guard(yb[0], yb[1].min(0.0))
+    };
+    m
+}
+
+/// The unloading branch of a hysteresis (a dashed curve over the loads where it is distinct
+/// from the loading one, joined to the curve it merges into at the window's top) and the
+/// jump-in and pull-off loads as vertical markers named with their p*.
+fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64) {
+    let n = sw.p.len().min(sw.a_r_unloading.len());
+    let mut points: Vec<(f64, f64)> = Vec::new();
+    for k in 0..n {
+        let u = sw.a_r_unloading[k];
+        if u.is_finite() {
+            points.push((sw.p[k], y_of(sw.p[k], u)));
+        } else if k > 0 && sw.a_r_unloading[k - 1].is_finite() {
+            // the window's top: the unloading branch goes on as the only one
+            points.push((sw.p[k], y_of(sw.p[k], sw.a_r[k])));
+            points.push((f64::NAN, f64::NAN));
+        } else if points.last().is_some_and(|q| q.0.is_finite()) {
+            points.push((f64::NAN, f64::NAN));
+        }
+    }
+    if points.iter().any(|q| q.0.is_finite() && q.1.is_finite()) {
+        m.series.push(Series {
+            name: "unloading".into(),
+            points,
+            role: Role::Unloading,
+            draw: Draw::Dashed,
+        });
+    }
+    // named with their p* (the x axis says p*)
+    for (x, role, what) in [
+        (sw.jump_in, Role::JumpIn, "jump-in"),
+        (sw.pull_off, Role::PullOff, "pull-off"),
+    ] {
+        if let Some(x) = x.filter(|x| x.is_finite() && *x > 0.0) {
+            m.vlines.push(VLine {
+                x,
+                role,
+                name: format!("{what} {}", super::words::sig(x, 2)),
+            });
+        }
+    }
+}
+
+pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
+    let gap = kind == ChartKind::Gap;
+    let (title, ylab) = if gap {
+        ("ū/h_rms(p*)", "ū/h_rms")
+    } else {
+        ("σ̄_c*(p*)", "σ̄_c*")
+    };
+    let quantity = kind.reference_quantity().unwrap_or("mean_contact_stress");
+    let mut m = base(kind, title.into(), "p* = p/E*ḡ", ylab, Scale::Log10, Scale::Linear);
+    let pick = |sw: &SweepData| -> Vec<(f64, f64)> {
+        let ys = if gap { &sw.gap_rel } else { &sw.mean_contact_stress };
+        sw.p.iter().copied().zip(ys.iter().copied()).collect()
+    };
+    let Some(sw) = sweep_of(app) else {
+        m.empty = Some(empty_message(app));
+        return m;
+    };
+    m.stale = app.sweep_is_stale();
+    mark_preview(&mut m, sw);
+    for (i, o) in others(app, App::model_sweep) {
+        m.series.push(Series {
+            name: slot_name(i),
+            points: pick(o),
+            role: Role::Model(i),
+            draw: Draw::Line,
+        });
+    }
+    m.series.push(Series {
+        name: theory_name(app),
+        points: pick(sw),
+        role: theory_role(app),
+        draw: Draw::Line,
+    });
+    m.series.extend(reference_series(app, quantity, |_, v| v));
+    if let Some(g) = app.gfmd_for_scene() {
+        let y = if gap { g.gap_rel } else { g.mean_contact_stress };
+        let mut points = vec![(g.pressure, y)];
+        if gap {
+            if g.theory_sweep.len() > 1 {
+                m.series.push(Series {
+                    name: "theory on the GFMD map".into(),
+                    points: g.theory_sweep.iter().map(|&(p, _, u)| (p, u)).collect(),
+                    role: Role::Gfmd,
+                    draw: Draw::Dashed,
+                });
+            }
+            points.extend(g.sweep.iter().map(|&(p, _, u)| (p, u)));
+        }
+        m.series.push(Series {
+            name: "GFMD".into(),
+            points,
+            role: Role::Gfmd,
+            draw: Draw::Points,
+        });
+    }
+    let y = if gap {
+        app.gap_value()
+    } else {
+        current_point(app).map(|p| p.mean_contact_stress)
+    };
+    add_current(&mut m, app.scene.pressure, y);
+    let (_, yb) = data_bounds(&m);
+    m.xb = load_x(app);
+    let yb = yb.unwrap_or([0.0, 1.0]);
+    m.yb = if gap {
+        // the gap may be negative with adhesion: show what comes, and 0 for scale
+        plot::guard(yb[0].min(0.0), yb[1])
+    } else {
+        plot::guard(yb[0], yb[1])
+    };
+    m
+}
+
+pub fn thickness(app: &App) -> ChartModel {
+    let title = format!("a_r(t·q_r) at p* = {}", super::words::sig(app.scene.pressure, 3));
+    let mut m = base(ChartKind::Thickness, title, "t·q_r", "a_r", Scale::Log10, Scale::Linear);
+    let Some(td) = app.thickness.as_ref().and_then(|r| r.as_ref().ok()) else {
+        m.empty = Some(match app.thickness.as_ref() {
+            Some(Err(e)) => format!("no data: {e}"),
+            _ => empty_message(app),
+        });
+        return m;
+    };
+    m.stale = app.thickness_is_stale();
+    let curve = |t: &ThicknessData| -> Vec<(f64, f64)> { t.t.iter().copied().zip(t.a_r.iter().copied()).collect() };
+    let (t0, t1) = (
+        td.t.first().copied().unwrap_or(1e-2),
+        td.t.last().copied().unwrap_or(1e2),
+    );
+    if let Some(a0) = &td.adhesionless {
+        m.series.push(Series {
+            name: "γ_s=0".into(),
+            points: td.t.iter().copied().zip(a0.iter().copied()).collect(),
+            role: Role::Compare,
+            draw: Draw::Line,
+        });
+    }
+    if td.a_r_inf.is_finite() {
+        m.series.push(Series {
+            name: "t=∞".into(),
+            points: vec![(t0, td.a_r_inf), (t1, td.a_r_inf)],
+            role: Role::Closed,
+            draw: Draw::Dashed,
+        });
+    }
+    for (i, o) in others(app, App::model_thickness) {
+        m.series.push(Series {
+            name: slot_name(i),
+            points: curve(o),
+            role: Role::Model(i),
+            draw: Draw::Line,
+        });
+    }
+    m.series.push(Series {
+        name: theory_name(app),
+        points: curve(td),
+        role: theory_role(app),
+        draw: Draw::Line,
+    });
+    // reference a_r points at this p* with a finite thickness
+    let mut refs: Vec<Series> = Vec::new();
+    for r in references(app, ChartKind::Thickness.reference_quantity().unwrap_or("a_r")) {
+        let Some(t) = r.thickness_qr.filter(|t| t.is_finite()) else {
+            continue;
+        };
+        if (r.pressure / app.scene.pressure - 1.0).abs() > 1e-9 {
+            continue;
+        }
+        let name = reference_name(app, r, false);
+        match refs.iter_mut().find(|s| s.name == name) {
+            Some(s) => s.points.push((t, r.value)),
+            None => refs.push(Series {
+                name,
+                points: vec![(t, r.value)],
+                role: Role::Reference,
+                draw: Draw::Points,
+            }),
+        }
+    }
+    m.series.extend(refs);
+    let t = app.scene.thickness_qr;
+    if t.is_finite() && t >= t0 && t <= t1 {
+        add_current(&mut m, t, current_point(app).map(|p| p.a_r));
+    }
+    let (_, yb) = data_bounds(&m);
+    m.xb = [t0.log10(), t1.log10()];
+    let yb = yb.unwrap_or([0.0, 1.0]);
+    m.yb = plot::guard(0.0, yb[1].min(1.0));
+    m
+}

@@ -1,0 +1,264 @@
+//! The engine jobs of the explorer: the current point (at full and at chart accuracy, with the
+//! adhesionless comparison), the load and thickness sweeps of the charts, and the GFMD run of
+//! `g` on its own thread. Each turns the engine's results into the plain data of [`super::data`].
+
+use super::data::{self, GfmdView, PointData, SweepData, ThicknessData};
+use super::protocol::*;
+use asperity::error::{Error, Result};
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use asperity::theory::engine::{self, Options};
+use asperity::theory::sweep::{self, SweepSpec};
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+
+/// Precision (relative, in p*) of the preview's window edges: the largest the engine allows,
+/// about its load step (a jump drawn within a braille dot or two of the full sweep's, which
+/// refines it to `Options::chart`'s 3 %). Refining to 3 % took a third of the preview.
+pub const PREVIEW_EDGE_REL: f64 = asperity::theory::engine::EDGE_REL_RANGE.1;
+
+fn point_options() -> Options {
+    Options {
+        sigma_points: SIGMA_POINTS,
+        ..Options::default()
+    }
+}
+
+/// The quick first answer of an adhesive point ([`PointData::preview`]): chart accuracy
+/// ([`Options::chart`]: half the resolution in both directions, no error estimate) with the
+/// search for every branch, so the panel lists the branches at once.
+fn preview_options() -> Options {
+    let mut o = Options::chart();
+    o.sigma_points = SIGMA_POINTS;
+    o.adhesion.explore_branches = true;
+    o
+}
+
+/// The adhesive point at chart accuracy (see `preview_options`), with the adhesionless
+/// comparison when `compare`.
+pub fn evaluate_preview(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<PointData> {
+    let ev = engine::evaluate_warm(scene, &preview_options(), None, Some(cancel))?;
+    let mut pd = PointData::at(&ev, scene.pressure);
+    pd.error_estimate = f64::NAN;
+    pd.preview = true;
+    if compare {
+        add_comparison(&mut pd, scene);
+    }
+    Ok(pd)
+}
+
+fn add_comparison(pd: &mut PointData, scene: &Scene) {
+    let mut s0 = scene.clone();
+    s0.gamma = 0.0;
+    // the comparison curve is optional: an error only hides it
+    if let Ok(ev0) = engine::evaluate(&s0, &point_options()) {
+        pd.adhesionless = Some(data::pr_points(&ev0));
+    }
+}
+
+pub fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<PointData> {
+    let mut pd = match engine::evaluate_warm(scene, &point_options(), None, Some(cancel)) {
+        Ok(ev) => PointData::at(&ev, scene.pressure),
+        Err(e @ Error::NotConverged { .. }) if scene.gamma > 0.0 => {
+            // the self-consistency may have converged while its error check did not (the edge
+            // of a jump into contact): show it, without an error bar, and say why
+            let opts = Options {
+                adhesion_error_estimate: false,
+                ..point_options()
+            };
+            match engine::evaluate_warm(scene, &opts, None, Some(cancel)) {
+                Ok(ev) => {
+                    let mut pd = PointData::at(&ev, scene.pressure);
+                    pd.error_estimate = f64::NAN;
+                    pd.branch.push_str(", no error bar");
+                    pd.warning = Some(e.to_string());
+                    pd
+                }
+                Err(Error::Cancelled) => return Err(Error::Cancelled),
+                _ => return Err(e),
+            }
+        }
+        Err(e) => return Err(e),
+    };
+    if compare && scene.gamma > 0.0 {
+        add_comparison(&mut pd, scene);
+    }
+    Ok(pd)
+}
+
+/// The load curves of the charts at chart accuracy: the loading branch with ū and σ̄_c*, and
+/// with adhesion the unloading branch and the jump-in and pull-off loads ([`sweep::sweep`]).
+pub fn load_sweep(scene: &Scene, spec: &SweepSpec, cancel: &AtomicBool) -> Result<SweepData> {
+    Ok(SweepData::from_sweep(&sweep::sweep(
+        scene,
+        spec,
+        &Options::chart(),
+        Some(cancel),
+    )?))
+}
+
+/// The quick first load curves of `scene` over `range` ([`PREVIEW_POINTS`]).
+pub fn preview_sweep(scene: &Scene, range: (f64, f64), cancel: &AtomicBool) -> Result<SweepData> {
+    let spec = SweepSpec {
+        from: range.0,
+        to: range.1,
+        points: PREVIEW_POINTS,
+    };
+    let opts = Options {
+        sweep_step_ln: PREVIEW_STEP_LN,
+        edge_rel: PREVIEW_EDGE_REL,
+        ..Options::chart()
+    };
+    let mut sd = SweepData::from_sweep(&sweep::sweep(scene, &spec, &opts, Some(cancel))?);
+    sd.preview = true;
+    Ok(sd)
+}
+
+/// a_r at [`THICKNESS_POINTS`] log-spaced t·q_r in [`THICKNESS_RANGE`] and at t = ∞ (chart
+/// accuracy, each solve warm-started from the neighbouring thickness); a thickness where the
+/// solver fails is a gap (NaN), not an error. With adhesion also the adhesionless curve.
+pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessData> {
+    let t = data::log_grid(THICKNESS_RANGE.0, THICKNESS_RANGE.1, THICKNESS_POINTS);
+    let opts = Options {
+        sigma_points: 2,
+        ..Options::chart()
+    };
+    let at = |th: f64, gamma: f64, warm: Option<&engine::Evaluation>| {
+        let mut s = scene.clone();
+        s.thickness_qr = th;
+        s.gamma = gamma;
+        engine::evaluate_warm(&s, &opts, warm, Some(cancel))
+    };
+    let mut a_r = Vec::with_capacity(t.len());
+    // from thick to thin: the thick slab is the easier start
+    let mut warm: Option<engine::Evaluation> = None;
+    for &th in t.iter().rev() {
+        match at(th, scene.gamma, warm.as_ref()) {
+            Ok(ev) => {
+                a_r.push(ev.stats.a_r);
+                warm = Some(ev);
+            }
+            Err(Error::Cancelled) => return Err(Error::Cancelled),
+            Err(_) => {
+                a_r.push(f64::NAN);
+                warm = None;
+            }
+        }
+    }
+    a_r.reverse();
+    let a_r_inf = match at(f64::INFINITY, scene.gamma, None) {
+        Ok(ev) => ev.stats.a_r,
+        Err(Error::Cancelled) => return Err(Error::Cancelled),
+        Err(_) => f64::NAN,
+    };
+    let adhesionless = if scene.gamma > 0.0 {
+        let mut v = Vec::with_capacity(t.len());
+        for &th in &t {
+            match at(th, 0.0, None) {
+                Ok(ev) => v.push(ev.stats.a_r),
+                Err(Error::Cancelled) => return Err(Error::Cancelled),
+                Err(_) => v.push(f64::NAN),
+            }
+        }
+        Some(v)
+    } else {
+        None
+    };
+    if a_r.iter().all(|a| !a.is_finite()) {
+        return Err(Error::NotConverged {
+            solver: "thickness sweep".into(),
+            reason: "no thickness converged".into(),
+        });
+    }
+    Ok(ThicknessData {
+        t,
+        a_r,
+        a_r_inf,
+        adhesionless,
+    })
+}
+
+/// ū/h_rms at p* from the chart sweep's rows ([`sweep::interpolate_in_ln_p`]), when p* lies
+/// inside the swept range: it saves a separate gap computation (a sweep from p* to full
+/// contact) on every step of p*.
+pub fn interpolate_gap(sd: &SweepData, p: f64) -> Option<f64> {
+    sweep::interpolate_in_ln_p(&sd.p, &sd.gap_rel, p)
+}
+
+/// Loads of the GFMD sweep drawn on the a_r and ū charts (p*/3 … 3p*).
+pub const GFMD_SWEEP_POINTS: usize = 5;
+
+/// Bins of the GFMD Pr(σ*) histogram drawn in the explorer.
+pub const GFMD_CHART_BINS: usize = 80;
+
+/// Runs GFMD on its own thread (the theory worker stays responsive), reporting progress at
+/// most every 100 ms and the result at the end; `cancel` stops it between FIRE steps.
+pub fn spawn_gfmd(
+    id: u64,
+    setup: asperity::gfmd::GfmdSetup,
+    cancel: Arc<AtomicBool>,
+    send: impl Fn(Reply) + Send + 'static,
+) -> std::io::Result<()> {
+    std::thread::Builder::new()
+        .name("asperity-gfmd".into())
+        .spawn(move || {
+            let mut last = std::time::Instant::now();
+            // a chart-sized histogram: ~10⁴ contact nodes on 512² give ~100 per bin
+            let opts = asperity::gfmd::GfmdOptions {
+                pr_bins: GFMD_CHART_BINS,
+                ..asperity::gfmd::GfmdOptions::default()
+            };
+            let result = asperity::gfmd::run(
+                &setup,
+                &opts,
+                &mut |p: asperity::gfmd::Progress| {
+                    if last.elapsed() >= std::time::Duration::from_millis(100) {
+                        last = std::time::Instant::now();
+                        send(Reply::GfmdProgress {
+                            id,
+                            iteration: p.iteration,
+                            residual: p.residual,
+                        });
+                    }
+                },
+                &cancel,
+            );
+            // then the same map over a decade of loads around p* (warm-started), with the
+            // theory on the map's spectrum, for the a_r and ū charts
+            let result = result.map(|r| {
+                let view = GfmdView::from_result(&r);
+                let p = setup.scene.pressure;
+                let spec = asperity::theory::sweep::SweepSpec {
+                    from: (p / 3.0).max(1e-6),
+                    to: (3.0 * p).min(1.0).max(p / 3.0 * 1.01),
+                    points: GFMD_SWEEP_POINTS,
+                };
+                match asperity::gfmd::sweep::run_sweep(&setup, &spec, &opts, &mut |_, _| {}, &cancel) {
+                    Ok(sw) => view.with_sweep(&sw),
+                    Err(_) => view,
+                }
+            });
+            send(Reply::GfmdDone { id, result });
+        })?;
+    Ok(())
+}
+
+/// The GFMD setup of `g`: the scene on the preset's reduced grid (a 512² default).
+pub fn gfmd_setup(preset: &Preset, scene: &Scene) -> asperity::gfmd::GfmdSetup {
+    let grid = preset
+        .gfmd
+        .as_ref()
+        .map(asperity::gfmd::GridSpec::from_preset)
+        .unwrap_or(asperity::gfmd::GridSpec {
+            system_size_ratio: 2.0,
+            bandwidth: 32.0,
+            points_per_short_wavelength: 8.0,
+        });
+    asperity::gfmd::GfmdSetup {
+        scene: scene.clone(),
+        grid,
+        seed: 1,
+        surface: None,
+        rescale: true,
+    }
+}

@@ -1,0 +1,138 @@
+//! The chart selector's kinds and what each needs computed, and the model slots of `M`: plain
+//! data shared by the state, the worker and the charts (a leaf module: it imports none of them).
+
+use asperity::input::model::{Model, ModelKind};
+
+/// One chart of the selector.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ChartKind {
+    /// Pr(σ*), linear axes.
+    Pr,
+    /// Pr(σ*), log–log with asymptotes.
+    PrLog,
+    /// a_r(p*), log–log, with eq. (18).
+    Area,
+    /// a_r/p* against log p*, with eq. (18).
+    AreaRatio,
+    /// a_r(t·q_r) at the current p*.
+    Thickness,
+    /// σ̄_c*(p*).
+    Stress,
+    /// ū/h_rms(p*).
+    Gap,
+}
+
+/// What a chart needs computed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Needs {
+    /// Pr(σ*) at the current p* (of every drawn model).
+    pub point: bool,
+    /// The load sweep.
+    pub loads: bool,
+    /// The thickness sweep.
+    pub thickness: bool,
+}
+
+impl Needs {
+    /// Union.
+    pub fn or(self, o: Needs) -> Needs {
+        Needs {
+            point: self.point || o.point,
+            loads: self.loads || o.loads,
+            thickness: self.thickness || o.thickness,
+        }
+    }
+}
+
+impl ChartKind {
+    /// Every chart, in selector order.
+    pub const ALL: [ChartKind; 7] = [
+        ChartKind::Pr,
+        ChartKind::PrLog,
+        ChartKind::Area,
+        ChartKind::AreaRatio,
+        ChartKind::Thickness,
+        ChartKind::Stress,
+        ChartKind::Gap,
+    ];
+
+    /// The name used in tours and file names.
+    pub fn name(self) -> &'static str {
+        match self {
+            ChartKind::Pr => "pr",
+            ChartKind::PrLog => "pr-loglog",
+            ChartKind::Area => "area",
+            ChartKind::AreaRatio => "area-ratio",
+            ChartKind::Thickness => "thickness",
+            ChartKind::Stress => "stress",
+            ChartKind::Gap => "gap",
+        }
+    }
+
+    /// The chart named `s`.
+    pub fn parse(s: &str) -> Option<ChartKind> {
+        ChartKind::ALL.into_iter().find(|k| k.name() == s)
+    }
+
+    /// The next (`dir` = 1) or previous (−1) chart of the selector.
+    pub fn cycle(self, dir: i32) -> ChartKind {
+        let n = ChartKind::ALL.len() as i32;
+        let i = ChartKind::ALL.iter().position(|k| *k == self).unwrap_or(0) as i32;
+        ChartKind::ALL[(i + dir).rem_euclid(n) as usize]
+    }
+
+    /// The quantity of the preset's `[[reference]]` points this chart draws (GFMD data such
+    /// as \[S\] Table 1), if any.
+    pub fn reference_quantity(self) -> Option<&'static str> {
+        match self {
+            ChartKind::Area | ChartKind::AreaRatio | ChartKind::Thickness => Some("a_r"),
+            ChartKind::Stress => Some("mean_contact_stress"),
+            ChartKind::Gap => Some("mean_gap_rel"),
+            ChartKind::Pr | ChartKind::PrLog => None,
+        }
+    }
+
+    /// What it needs computed.
+    pub fn needs(self) -> Needs {
+        match self {
+            ChartKind::Pr | ChartKind::PrLog => Needs {
+                point: true,
+                ..Needs::default()
+            },
+            ChartKind::Thickness => Needs {
+                thickness: true,
+                ..Needs::default()
+            },
+            _ => Needs {
+                loads: true,
+                ..Needs::default()
+            },
+        }
+    }
+}
+
+/// Model slot of a model: 0–3 for models 1–4, 4 for custom.
+pub fn slot(m: &Model) -> usize {
+    match m.kind {
+        ModelKind::Custom => 4,
+        _ => m.number().map_or(4, |n| usize::from(n) - 1),
+    }
+}
+
+/// Legend name of a model slot.
+pub fn slot_name(i: usize) -> String {
+    if i < 4 {
+        format!("model {}", i + 1)
+    } else {
+        "custom".into()
+    }
+}
+
+/// The models drawn with `M`: 1–4, and the current one when it is custom.
+pub fn overlay_models(current: &Model) -> Vec<Model> {
+    let mut v: Vec<Model> = (1..=4).filter_map(|n| Model::named(n).ok()).collect();
+    if current.kind == ModelKind::Custom {
+        v.push(*current);
+    }
+    v
+}

@@ -1,0 +1,485 @@
+//! The explorer's state: the scene, the knobs, the charts, the results shown, plain data with
+//! pure stepping helpers (grids of p*, t·q_r and γ_s) and the queries the view asks (which
+//! results are current, what the charts need). Keys change it in [`super::update`]; work that
+//! leaves the process (engine jobs, files) is done by [`super::effects`] and the worker.
+
+use super::data::{GfmdView, PointData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
+use super::kinds::{self as charts, ChartKind, Needs};
+pub use super::knobs::*;
+use super::protocol::{point_key, sweep_key, thickness_key, CacheKey, Request};
+use super::tour::Tour;
+use asperity::error::Result;
+use asperity::input::model::{Model, ModelKind};
+use asperity::input::preset::{self, Preset};
+use asperity::input::scene::Scene;
+use std::collections::HashMap;
+use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+/// What covers the main view.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Overlay {
+    /// Nothing.
+    None,
+    /// The key help.
+    Help,
+    /// The preset picker, with its cursor.
+    Presets(usize),
+}
+
+/// The tour being walked (`t`, `asperity tour`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TourState {
+    /// The tour.
+    pub tour: Tour,
+    /// The current step.
+    pub step: usize,
+}
+
+/// The charts the explorer opens with: Pr(σ*) big, a_r(p*) and ū(p*) small.
+pub const DEFAULT_CHARTS: [ChartKind; 3] = [ChartKind::Pr, ChartKind::Area, ChartKind::Gap];
+
+/// One entry of the preset picker.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PresetEntry {
+    /// Name or path passed to [`Preset::resolve`].
+    pub source: String,
+    /// Where it comes from ("built-in", a path).
+    pub place: String,
+}
+
+/// A line for the status bar.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Message {
+    /// Text.
+    pub text: String,
+    /// Whether it reports a problem.
+    pub error: bool,
+}
+
+/// The explorer's state.
+#[derive(Debug)]
+pub struct App {
+    /// Presets the picker offers.
+    pub presets: Vec<PresetEntry>,
+    /// The current preset's source (name or path).
+    pub source: String,
+    /// The current preset.
+    pub preset: Preset,
+    /// The preset's scene (what `r` goes back to).
+    pub base: Scene,
+    /// The scene being explored.
+    pub scene: Scene,
+    /// Selected row of [`App::params`].
+    pub selected: usize,
+    /// The value being typed, if any.
+    pub edit: Option<String>,
+    /// Overlay.
+    pub overlay: Overlay,
+    /// The charts of the big panel, the lower-left and the lower-right panel.
+    pub charts: [ChartKind; 3],
+    /// The panel the chart selector (`v`) changes.
+    pub focus: usize,
+    /// Overlay every model on the charts (`M`).
+    pub all_models: bool,
+    /// Results of the other models (`M`), by cache key.
+    pub overlay_points: HashMap<CacheKey, Result<PointData>>,
+    /// Load sweeps of the other models, by cache key.
+    pub overlay_sweeps: HashMap<CacheKey, Result<SweepData>>,
+    /// Thickness sweeps of the other models, by cache key.
+    pub overlay_thickness: HashMap<CacheKey, Result<ThicknessData>>,
+    /// a_r(t·q_r) at the current p*.
+    pub thickness: Option<Result<ThicknessData>>,
+    /// The key of the shown point (None: set directly, e.g. in tests).
+    pub point_shown: Option<CacheKey>,
+    /// The key of the shown load sweep.
+    pub sweep_shown: Option<CacheKey>,
+    /// The key of the shown gap.
+    pub gap_shown: Option<CacheKey>,
+    /// The key of the shown thickness sweep.
+    pub thickness_shown: Option<CacheKey>,
+    /// The tour, when one is being walked.
+    pub tour: Option<TourState>,
+    /// Show the adhesionless comparison in the Pr chart.
+    pub compare: bool,
+    /// Status-bar message (cleared by the next key).
+    pub message: Option<Message>,
+    /// Generation of the newest request.
+    pub gen: u64,
+    /// The load charts' p* range of the last request (see [`sticky_range`]).
+    pub load_range: Option<(f64, f64)>,
+    /// The current point (for the current scene, or the last one while computing).
+    pub point: Option<Result<PointData>>,
+    /// Generation of the request whose reply set [`App::point`].
+    pub point_gen: u64,
+    /// The load curves.
+    pub sweep: Option<Result<SweepData>>,
+    /// ū/h_rms at the current point.
+    pub gap: Option<Result<f64>>,
+    /// A request is being served.
+    pub busy: bool,
+    /// When the current request was made (while busy).
+    pub busy_since: Option<std::time::Instant>,
+    /// Spinner phase (advanced by ticks while busy).
+    pub spinner: usize,
+    /// Set when the user quits.
+    pub quit: bool,
+    /// Show compute times (off in snapshot tests: they vary from run to run).
+    pub show_timing: bool,
+    /// Use colour (off under `NO_COLOR`).
+    pub color: bool,
+    /// Where `e` writes.
+    pub export_dir: PathBuf,
+    /// The background GFMD run (started with `g`).
+    pub gfmd: GfmdState,
+    /// A GFMD run to start (taken by the event loop).
+    /// A GFMD run to start (taken by the event loop): run id, scene, cancel flag.
+    pub(crate) gfmd_request: Option<(u64, Scene, Arc<AtomicBool>)>,
+    pub(crate) gfmd_cancel: Option<Arc<AtomicBool>>,
+    pub(crate) gfmd_next: u64,
+    /// The scene or the charts changed since the last request.
+    pub(crate) pending: bool,
+    /// Work the last keys asked for that touches the outside world (files), done by
+    /// [`super::effects::apply`].
+    pub effects: Vec<Effect>,
+}
+
+/// The state of the background GFMD run.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum GfmdState {
+    /// None started (or the last was cancelled).
+    #[default]
+    Idle,
+    /// Running: id, the scene it runs, FIRE steps and residual so far.
+    Running {
+        /// Run id.
+        id: u64,
+        /// The scene it runs.
+        scene: Scene,
+        /// FIRE steps so far.
+        iteration: usize,
+        /// Residual so far.
+        residual: f64,
+    },
+    /// Finished: the scene it ran and its outcome.
+    Done {
+        /// The scene it ran.
+        scene: Scene,
+        /// The result, or the error.
+        result: std::result::Result<GfmdView, String>,
+    },
+}
+
+/// Whether two scenes describe the same physical system (GFMD does not depend on the model).
+pub(crate) fn same_system(a: &Scene, b: &Scene) -> bool {
+    a.spectrum == b.spectrum
+        && a.modulus == b.modulus
+        && a.pressure == b.pressure
+        && a.thickness_qr.to_bits() == b.thickness_qr.to_bits()
+        && a.gamma == b.gamma
+        && a.range == b.range
+}
+
+impl App {
+    /// A fresh explorer on `preset` (resolved from `source`).
+    pub fn new(source: &str, preset: Preset) -> Result<App> {
+        let base = initial_scene(&preset)?;
+        let mut presets: Vec<PresetEntry> = preset::list_available()
+            .into_iter()
+            .map(|(name, place)| PresetEntry { source: name, place })
+            .collect();
+        if !presets.iter().any(|e| e.source == source) {
+            presets.push(PresetEntry {
+                source: source.to_string(),
+                place: "--preset".into(),
+            });
+        }
+        Ok(App {
+            presets,
+            source: source.to_string(),
+            preset,
+            scene: base.clone(),
+            base,
+            selected: 2,
+            edit: None,
+            overlay: Overlay::None,
+            charts: DEFAULT_CHARTS,
+            focus: 0,
+            all_models: false,
+            overlay_points: HashMap::new(),
+            overlay_sweeps: HashMap::new(),
+            overlay_thickness: HashMap::new(),
+            thickness: None,
+            point_shown: None,
+            sweep_shown: None,
+            gap_shown: None,
+            thickness_shown: None,
+            tour: None,
+            compare: true,
+            message: None,
+            gen: 0,
+            load_range: None,
+            point: None,
+            point_gen: 0,
+            sweep: None,
+            gap: None,
+            busy: false,
+            busy_since: None,
+            spinner: 0,
+            quit: false,
+            show_timing: true,
+            color: true,
+            export_dir: PathBuf::from("."),
+            gfmd: GfmdState::Idle,
+            gfmd_request: None,
+            gfmd_cancel: None,
+            gfmd_next: 0,
+            pending: true,
+            effects: Vec::new(),
+        })
+    }
+
+    /// The rows of the parameter panel (the custom coefficients only for the custom model).
+    pub fn params(&self) -> Vec<Param> {
+        let mut v = BASIC.to_vec();
+        if self.scene.model.kind == ModelKind::Custom {
+            v.extend(CUSTOM);
+        }
+        v
+    }
+
+    /// The selected parameter.
+    pub fn selected_param(&self) -> Param {
+        let p = self.params();
+        p[self.selected.min(p.len() - 1)]
+    }
+
+    /// The request the worker should serve next, if the scene changed since the last one.
+    pub fn take_request(&mut self) -> Option<Request> {
+        if !self.pending {
+            return None;
+        }
+        self.pending = false;
+        self.gen += 1;
+        self.busy = true;
+        self.busy_since = Some(std::time::Instant::now());
+        let models = if self.all_models {
+            charts::overlay_models(&self.scene.model)
+                .into_iter()
+                .filter(|m| charts::slot(m) != charts::slot(&self.scene.model))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let range = self.range();
+        self.load_range = Some(range);
+        Some(Request {
+            gen: self.gen,
+            source: self.source.clone(),
+            scene: self.scene.clone(),
+            range,
+            needs: self.needs(),
+            models,
+        })
+    }
+
+    /// What the visible charts need computed.
+    pub fn needs(&self) -> Needs {
+        self.charts.iter().fold(Needs::default(), |n, c| n.or(c.needs()))
+    }
+
+    /// The scene with another model.
+    pub(crate) fn with_model(&self, m: &Model) -> Scene {
+        let mut s = self.scene.clone();
+        s.model = *m;
+        s
+    }
+
+    /// The point of model `m` at the current scene (the current point for the current model).
+    pub fn model_point(&self, m: &Model) -> Option<&PointData> {
+        if charts::slot(m) == charts::slot(&self.scene.model) {
+            return self.point.as_ref().and_then(|r| r.as_ref().ok());
+        }
+        let key = point_key(&self.source, &self.with_model(m));
+        self.overlay_points.get(&key).and_then(|r| r.as_ref().ok())
+    }
+
+    /// The load sweep of model `m`.
+    pub fn model_sweep(&self, m: &Model) -> Option<&SweepData> {
+        if charts::slot(m) == charts::slot(&self.scene.model) {
+            return self.sweep.as_ref().and_then(|r| r.as_ref().ok());
+        }
+        let key = sweep_key(&self.source, &self.with_model(m), self.range());
+        self.overlay_sweeps.get(&key).and_then(|r| r.as_ref().ok())
+    }
+
+    /// The thickness sweep of model `m`.
+    pub fn model_thickness(&self, m: &Model) -> Option<&ThicknessData> {
+        if charts::slot(m) == charts::slot(&self.scene.model) {
+            return self.thickness.as_ref().and_then(|r| r.as_ref().ok());
+        }
+        let key = thickness_key(&self.source, &self.with_model(m));
+        self.overlay_thickness.get(&key).and_then(|r| r.as_ref().ok())
+    }
+
+    /// Whether the shown point belongs to an earlier scene.
+    pub fn point_is_stale(&self) -> bool {
+        self.point_shown
+            .as_ref()
+            .is_some_and(|k| *k != point_key(&self.source, &self.scene))
+    }
+
+    /// Whether the shown load sweep belongs to an earlier scene.
+    pub fn sweep_is_stale(&self) -> bool {
+        self.sweep_shown
+            .as_ref()
+            .is_some_and(|k| *k != sweep_key(&self.source, &self.scene, self.range()))
+    }
+
+    /// Whether the shown gap belongs to an earlier scene.
+    pub fn gap_is_stale(&self) -> bool {
+        self.gap_shown
+            .as_ref()
+            .is_some_and(|k| *k != point_key(&self.source, &self.scene))
+    }
+
+    /// Whether the shown thickness sweep belongs to an earlier scene.
+    pub fn thickness_is_stale(&self) -> bool {
+        self.thickness_shown
+            .as_ref()
+            .is_some_and(|k| *k != thickness_key(&self.source, &self.scene))
+    }
+
+    /// ū/h_rms at the current point, if computed.
+    pub fn gap_value(&self) -> Option<f64> {
+        match &self.gap {
+            Some(Ok(g)) => Some(*g),
+            _ => None,
+        }
+    }
+
+    /// Whether eq. (18) describes the scene (adhesionless, semi-infinite).
+    pub fn eq18_applies(&self) -> bool {
+        self.scene.gamma == 0.0 && self.scene.thickness_qr.is_infinite()
+    }
+
+    /// Shows `charts` in the big, lower-left and lower-right panels.
+    pub fn set_charts(&mut self, charts: [ChartKind; 3]) {
+        self.charts = charts;
+        self.refresh();
+    }
+
+    /// Asks for the charts' data again (after the charts or `M` changed; cached parts are
+    /// instant).
+    pub(crate) fn refresh(&mut self) {
+        self.pending = true;
+    }
+
+    /// Keys of the other models' results for the current scene (for keeping replies).
+    pub(crate) fn overlay_keys(&self) -> (Vec<CacheKey>, Vec<CacheKey>, Vec<CacheKey>) {
+        let mut p = Vec::new();
+        let mut sw = Vec::new();
+        let mut t = Vec::new();
+        if self.all_models {
+            for m in charts::overlay_models(&self.scene.model) {
+                let s = self.with_model(&m);
+                p.push(point_key(&self.source, &s));
+                sw.push(sweep_key(&self.source, &s, self.range()));
+                t.push(thickness_key(&self.source, &s));
+            }
+        }
+        (p, sw, t)
+    }
+
+    /// Whether the scene changed since the last request.
+    pub fn has_pending(&self) -> bool {
+        self.pending
+    }
+
+    /// The p* range the load charts show ([`sticky_range`] of the last request's).
+    pub fn range(&self) -> (f64, f64) {
+        sticky_range(self.load_range, self.scene.pressure)
+    }
+
+    /// The finished GFMD result, when it was run on the scene shown now (the model only
+    /// matters for the theory, so it is not compared).
+    pub fn gfmd_for_scene(&self) -> Option<&GfmdView> {
+        match &self.gfmd {
+            GfmdState::Done { scene, result: Ok(v) } if same_system(scene, &self.scene) => Some(v),
+            _ => None,
+        }
+    }
+
+    /// Advances the spinner (called on ticks while busy).
+    pub fn tick(&mut self) {
+        self.spinner = self.spinner.wrapping_add(1);
+    }
+
+    /// The first error of the current results, for the status bar.
+    pub fn compute_error(&self) -> Option<String> {
+        use super::words::describe;
+        if let Some(Err(e)) = &self.point {
+            return Some(describe(e));
+        }
+        if let Some(Err(e)) = &self.sweep {
+            return Some(format!("load sweep: {}", describe(e)));
+        }
+        if let Some(Err(e)) = &self.gap {
+            return Some(format!("mean gap: {}", describe(e)));
+        }
+        if self.charts.contains(&ChartKind::Thickness) {
+            if let Some(Err(e)) = &self.thickness {
+                return Some(format!("thickness chart: {}", describe(e)));
+            }
+        }
+        None
+    }
+
+    /// Why the current point has no error bar, if so (shown in the status line).
+    pub fn compute_warning(&self) -> Option<String> {
+        match &self.point {
+            Some(Ok(p)) => p.warning.as_ref().map(|w| format!("a_r without error bar: {w}")),
+            _ => None,
+        }
+    }
+
+    pub(crate) fn info(&mut self, text: impl Into<String>) {
+        self.message = Some(Message {
+            text: text.into(),
+            error: false,
+        });
+    }
+
+    pub(crate) fn fail(&mut self, e: impl std::fmt::Display) {
+        self.message = Some(Message {
+            text: e.to_string(),
+            error: true,
+        });
+    }
+}
+
+/// Work an update asks for beyond the state (see [`super::effects`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Effect {
+    /// `e`: write the curves (CSV) and the scene (TOML).
+    Export,
+    /// `s`: save the visible charts as SVG and PNG.
+    SaveCharts,
+}
+
+/// Inserts into a reply map, forgetting everything when it grows past a few hundred entries.
+pub(crate) fn bounded_insert<V>(map: &mut HashMap<CacheKey, V>, key: CacheKey, v: V) {
+    if map.len() >= 256 {
+        map.clear();
+    }
+    map.insert(key, v);
+}
+
+/// The scene the explorer opens a preset with (γ_s per [`ADHESION_BY_DEFAULT`]).
+pub fn initial_scene(p: &Preset) -> Result<Scene> {
+    let mut s = p.scene()?;
+    if !ADHESION_BY_DEFAULT {
+        s.gamma = 0.0;
+    }
+    Ok(s)
+}

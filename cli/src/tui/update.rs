@@ -1,0 +1,541 @@
+//! Key presses and worker replies → the next state ([`App`]) plus effects: a request for the
+//! worker (`pending`, taken by [`App::take_request`]), a GFMD run to start
+//! ([`App::take_gfmd_request`]), files to write ([`Effect`]). No terminal, no threads, no
+//! files here, so every key is unit-tested.
+
+use super::keys::{self, Action};
+use super::kinds::ChartKind;
+use super::protocol::{point_key, sweep_key, thickness_key, Reply};
+use super::state::*;
+use super::tour::Tour;
+use asperity::error::{Error, Result};
+use asperity::input::model::Model;
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+
+impl App {
+    /// Takes a worker reply: kept only if it belongs to the current scene.
+    pub fn on_reply(&mut self, reply: Reply) {
+        match reply {
+            Reply::Point { gen, key, result } => {
+                if key == point_key(&self.source, &self.scene) {
+                    self.point_gen = self.point_gen.max(gen);
+                    self.point = Some(result);
+                    self.point_shown = Some(key);
+                } else if self.overlay_keys().0.contains(&key) {
+                    bounded_insert(&mut self.overlay_points, key, result);
+                }
+            }
+            Reply::Sweep { key, result, .. } => {
+                if key == sweep_key(&self.source, &self.scene, self.range()) {
+                    self.sweep = Some(result);
+                    self.sweep_shown = Some(key);
+                } else if self.overlay_keys().1.contains(&key) {
+                    bounded_insert(&mut self.overlay_sweeps, key, result);
+                }
+            }
+            Reply::Gap { key, result, .. } => {
+                if key == point_key(&self.source, &self.scene) {
+                    self.gap = Some(result);
+                    self.gap_shown = Some(key);
+                }
+            }
+            Reply::Thickness { key, result, .. } => {
+                if key == thickness_key(&self.source, &self.scene) {
+                    self.thickness = Some(result);
+                    self.thickness_shown = Some(key);
+                } else if self.overlay_keys().2.contains(&key) {
+                    bounded_insert(&mut self.overlay_thickness, key, result);
+                }
+            }
+            Reply::GfmdProgress {
+                id,
+                iteration,
+                residual,
+            } => {
+                if let GfmdState::Running {
+                    id: cur,
+                    iteration: it,
+                    residual: res,
+                    ..
+                } = &mut self.gfmd
+                {
+                    if *cur == id {
+                        *it = iteration;
+                        *res = residual;
+                        self.spinner = self.spinner.wrapping_add(1);
+                    }
+                }
+            }
+            Reply::GfmdDone { id, result } => {
+                if let GfmdState::Running { id: cur, scene, .. } = &self.gfmd {
+                    if *cur == id {
+                        let scene = scene.clone();
+                        self.gfmd_cancel = None;
+                        if self
+                            .message
+                            .as_ref()
+                            .is_some_and(|m| m.text.starts_with("GFMD started"))
+                        {
+                            self.message = None;
+                        }
+                        match result {
+                            Err(Error::Cancelled) => self.gfmd = GfmdState::Idle,
+                            r => {
+                                self.gfmd = GfmdState::Done {
+                                    scene,
+                                    result: r.map_err(|e| e.to_string()),
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            Reply::Done { gen } => {
+                if gen == self.gen {
+                    self.busy = false;
+                    self.busy_since = None;
+                }
+            }
+        }
+    }
+
+    /// `g`: asks for a GFMD run of the current scene on the preset's reduced grid, or cancels
+    /// the running one.
+    pub fn toggle_gfmd(&mut self) {
+        if let GfmdState::Running { .. } = self.gfmd {
+            if let Some(c) = self.gfmd_cancel.take() {
+                c.store(true, Ordering::Relaxed);
+            }
+            self.gfmd = GfmdState::Idle;
+            self.gfmd_request = None;
+            self.info("GFMD cancelled");
+            return;
+        }
+        self.gfmd_next += 1;
+        let id = self.gfmd_next;
+        let cancel = Arc::new(AtomicBool::new(false));
+        self.gfmd_cancel = Some(cancel.clone());
+        self.gfmd_request = Some((id, self.scene.clone(), cancel));
+        self.gfmd = GfmdState::Running {
+            id,
+            scene: self.scene.clone(),
+            iteration: 0,
+            residual: f64::NAN,
+        };
+        self.info("GFMD started on the preset's reduced grid (g cancels)");
+    }
+
+    /// The GFMD run to start, if `g` asked for one: its id, scene and cancel flag (the event
+    /// loop builds the setup, `jobs::gfmd_setup`, and starts the thread).
+    pub fn take_gfmd_request(&mut self) -> Option<(u64, Scene, Arc<AtomicBool>)> {
+        self.gfmd_request.take()
+    }
+
+    /// Handles one key press.
+    pub fn on_key(&mut self, ev: KeyEvent) {
+        if ev.code == KeyCode::Char('c') && ev.modifiers.contains(KeyModifiers::CONTROL) {
+            self.quit = true;
+            return;
+        }
+        self.message = None;
+        if self.edit.is_some() {
+            self.on_edit_key(ev);
+            return;
+        }
+        match self.overlay {
+            Overlay::Help => {
+                // any key closes the help; q still quits
+                self.overlay = Overlay::None;
+                if ev.code == KeyCode::Char('q') {
+                    self.quit = true;
+                }
+                return;
+            }
+            Overlay::Presets(cursor) => {
+                self.on_picker_key(ev, cursor);
+                return;
+            }
+            Overlay::None => {}
+        }
+        if self.tour.is_some()
+            && ev
+                .modifiers
+                .intersection(KeyModifiers::SHIFT | KeyModifiers::CONTROL)
+                .is_empty()
+        {
+            match ev.code {
+                KeyCode::Left => return self.tour_go(-1),
+                KeyCode::Right => return self.tour_go(1),
+                KeyCode::Esc => return self.leave_tour(),
+                _ => {}
+            }
+        }
+        if let KeyCode::Char(c) = ev.code {
+            if (c.is_ascii_digit() || c == '.' || c == '-') && !ev.modifiers.contains(KeyModifiers::CONTROL) {
+                self.edit = Some(c.to_string());
+                return;
+            }
+        }
+        let Some(action) = keys::action_for(&ev) else {
+            return;
+        };
+        self.act(action);
+    }
+
+    /// Performs an action of the key table.
+    pub fn act(&mut self, action: Action) {
+        let n = self.params().len();
+        match action {
+            Action::Up => self.selected = (self.selected + n - 1) % n,
+            Action::Down => self.selected = (self.selected + 1) % n,
+            Action::Dec => self.step(-1, false),
+            Action::Inc => self.step(1, false),
+            Action::DecCoarse => self.step(-1, true),
+            Action::IncCoarse => self.step(1, true),
+            Action::Edit => self.edit = Some(String::new()),
+            Action::CycleModel => self.cycle_model(1),
+            Action::Presets => {
+                let cur = self.presets.iter().position(|e| e.source == self.source).unwrap_or(0);
+                self.overlay = Overlay::Presets(cur);
+            }
+            Action::Reset => {
+                self.set_scene(self.base.clone());
+                self.info(format!("reset to preset {}", self.preset.name));
+            }
+            Action::Export => self.effects.push(Effect::Export),
+            Action::AreaMode => {
+                let mut any = false;
+                for c in &mut self.charts {
+                    *c = match *c {
+                        ChartKind::Area => ChartKind::AreaRatio,
+                        ChartKind::AreaRatio => ChartKind::Area,
+                        other => other,
+                    };
+                    any |= matches!(*c, ChartKind::Area | ChartKind::AreaRatio);
+                }
+                if !any {
+                    self.info("no area chart shown: v picks the charts");
+                }
+            }
+            Action::Chart => {
+                let f = self.focus.min(2);
+                self.charts[f] = self.charts[f].cycle(1);
+                self.refresh();
+            }
+            Action::Focus => self.focus = (self.focus + 1) % 3,
+            Action::Models => {
+                self.all_models = !self.all_models;
+                self.refresh();
+            }
+            Action::Tour => {
+                if self.tour.is_some() {
+                    self.leave_tour();
+                } else {
+                    match Tour::resolve(super::tour::DEFAULT_TOUR) {
+                        Ok(t) => self.start_tour(t, 0),
+                        Err(e) => self.fail(e),
+                    }
+                }
+            }
+            Action::Save => self.effects.push(Effect::SaveCharts),
+            Action::Compare => self.compare = !self.compare,
+            Action::Gfmd => self.toggle_gfmd(),
+            Action::Help => self.overlay = Overlay::Help,
+            Action::Quit => self.quit = true,
+        }
+    }
+
+    pub(crate) fn on_edit_key(&mut self, ev: KeyEvent) {
+        let Some(buf) = self.edit.as_mut() else {
+            return;
+        };
+        match ev.code {
+            // q cancels the field (a second q quits): no value contains a q
+            KeyCode::Esc | KeyCode::Char('q') => self.edit = None,
+            KeyCode::Backspace => {
+                buf.pop();
+            }
+            KeyCode::Enter => {
+                let text = std::mem::take(buf);
+                self.edit = None;
+                if !text.trim().is_empty() {
+                    if let Err(e) = self.set_typed(self.selected_param(), &text) {
+                        self.fail(e);
+                    }
+                }
+            }
+            KeyCode::Char(c) if buf.chars().count() < 64 => buf.push(c),
+            _ => {}
+        }
+    }
+
+    pub(crate) fn on_picker_key(&mut self, ev: KeyEvent, cursor: usize) {
+        let n = self.presets.len().max(1);
+        match ev.code {
+            KeyCode::Up | KeyCode::Char('k') => self.overlay = Overlay::Presets((cursor + n - 1) % n),
+            KeyCode::Down | KeyCode::Char('j') | KeyCode::Tab => self.overlay = Overlay::Presets((cursor + 1) % n),
+            KeyCode::Enter => {
+                self.overlay = Overlay::None;
+                if let Some(e) = self.presets.get(cursor).cloned() {
+                    self.load_preset(&e.source);
+                }
+            }
+            KeyCode::Char('q') => self.quit = true,
+            _ => self.overlay = Overlay::None,
+        }
+    }
+
+    /// Starts walking `tour` at step `step`.
+    pub fn start_tour(&mut self, tour: Tour, step: usize) {
+        let step = step.min(tour.steps.len().saturating_sub(1));
+        self.tour = Some(TourState { tour, step });
+        self.apply_step();
+    }
+
+    /// Moves `dir` steps along the tour (stops at the ends).
+    pub fn tour_go(&mut self, dir: i32) {
+        let Some(t) = self.tour.as_mut() else { return };
+        let n = t.tour.steps.len() as i32;
+        let next = (t.step as i32 + dir).clamp(0, n - 1) as usize;
+        if next == t.step {
+            self.info(if dir > 0 {
+                "last step of the tour: Esc leaves"
+            } else {
+                "first step of the tour"
+            });
+            return;
+        }
+        t.step = next;
+        self.apply_step();
+    }
+
+    /// Leaves the tour; the scene and the charts stay as they are.
+    pub fn leave_tour(&mut self) {
+        if self.tour.take().is_some() {
+            if let Ok(s) = initial_scene(&self.preset) {
+                self.base = s;
+            }
+            self.info("left the tour (t starts it again)");
+        }
+    }
+
+    pub(crate) fn apply_step(&mut self) {
+        let Some(t) = &self.tour else { return };
+        let st = t.tour.steps[t.step].clone();
+        if st.source != self.source || st.preset != self.preset {
+            self.source = st.source.clone();
+            self.preset = st.preset.clone();
+            if !self.presets.iter().any(|e| e.source == st.source) {
+                self.presets.push(PresetEntry {
+                    source: st.source.clone(),
+                    place: "tour".into(),
+                });
+            }
+        }
+        // `r` goes back to the step's scene
+        self.base = st.scene.clone();
+        self.set_scene(st.scene);
+        self.charts = st.charts;
+        self.all_models = st.models;
+        self.focus = 0;
+        self.edit = None;
+        if let Some(k) = st.select {
+            let want = knob_param(k);
+            if let Some(i) = self.params().iter().position(|p| *p == want) {
+                self.selected = i;
+            }
+        }
+        self.refresh();
+    }
+
+    /// Loads a preset by name or path; on error the current one stays and the error shows.
+    pub fn load_preset(&mut self, source: &str) {
+        match Preset::resolve(source).and_then(|p| initial_scene(&p).map(|s| (p, s))) {
+            Ok((p, s)) => {
+                self.source = source.to_string();
+                self.preset = p;
+                self.base = s.clone();
+                self.set_scene(s);
+                self.info(format!("preset {}", self.preset.name));
+            }
+            Err(e) => self.fail(e),
+        }
+    }
+
+    pub(crate) fn set_scene(&mut self, scene: Scene) {
+        if scene != self.scene {
+            self.pending = true;
+        }
+        self.scene = scene;
+        self.selected = self.selected.min(self.params().len() - 1);
+    }
+
+    /// Applies a candidate scene if it validates; otherwise shows why not.
+    pub(crate) fn try_scene(&mut self, scene: Scene) {
+        match scene.validate() {
+            Ok(()) => self.set_scene(scene),
+            Err(e) => self.fail(e),
+        }
+    }
+
+    pub(crate) fn try_model(&mut self, m: Result<Model>) {
+        match m {
+            Ok(m) => {
+                let mut s = self.scene.clone();
+                s.model = m;
+                self.try_scene(s);
+            }
+            Err(e) => self.fail(e),
+        }
+    }
+
+    pub(crate) fn cycle_model(&mut self, dir: i32) {
+        let cur = self.scene.model.number().map_or(5, i32::from);
+        let next = (cur - 1 + dir).rem_euclid(5) + 1;
+        if next == 5 {
+            let m = self.scene.model;
+            self.try_model(Model::custom(m.c1, m.c2, m.alpha, m.k_griffith, m.cap));
+        } else {
+            self.try_model(Model::named(next as u8));
+        }
+    }
+
+    pub(crate) fn step(&mut self, dir: i32, coarse: bool) {
+        let pick = |s: (f64, f64)| if coarse { s.1 } else { s.0 };
+        let mut s = self.scene.clone();
+        let m = s.model;
+        match self.selected_param() {
+            Param::Preset => {
+                let n = self.presets.len() as i32;
+                if n > 0 {
+                    let cur = self.presets.iter().position(|e| e.source == self.source).unwrap_or(0) as i32;
+                    let next = self.presets[(cur + dir).rem_euclid(n) as usize].source.clone();
+                    self.load_preset(&next);
+                }
+                return;
+            }
+            Param::Model => {
+                self.cycle_model(dir);
+                return;
+            }
+            Param::Pressure => {
+                let p = log_step_from(s.pressure, self.base.pressure, pick(PRESSURE_STEPS), dir);
+                s.pressure = p.clamp(PRESSURE_KEYS.0, PRESSURE_KEYS.1);
+            }
+            Param::Thickness => {
+                let t = s.thickness_qr;
+                s.thickness_qr = if t.is_infinite() {
+                    if dir > 0 {
+                        t
+                    } else {
+                        THICKNESS_KEYS.1
+                    }
+                } else {
+                    let v = log_step_from(t, self.base.thickness_qr, pick(THICKNESS_STEPS), dir);
+                    if v > THICKNESS_KEYS.1 * (1.0 + 1e-9) {
+                        f64::INFINITY
+                    } else {
+                        v.max(THICKNESS_KEYS.0)
+                    }
+                };
+            }
+            Param::Gamma => {
+                let g = s.gamma;
+                s.gamma = if g == 0.0 {
+                    if dir > 0 {
+                        let pg = self.preset.adhesion.surface_energy_j_m2;
+                        if pg > 0.0 {
+                            pg
+                        } else {
+                            1e-2
+                        }
+                    } else {
+                        0.0
+                    }
+                } else {
+                    let v = log_step_from(g, self.preset.adhesion.surface_energy_j_m2, pick(GAMMA_STEPS), dir);
+                    if v < GAMMA_KEYS.0 * (1.0 - 1e-9) {
+                        0.0
+                    } else {
+                        v.min(GAMMA_KEYS.1)
+                    }
+                };
+            }
+            Param::C1 => {
+                return self.try_model(Model::custom(
+                    lin_step(m.c1, pick((0.01, 0.1)), dir),
+                    m.c2,
+                    m.alpha,
+                    m.k_griffith,
+                    m.cap,
+                ))
+            }
+            Param::C2 => {
+                return self.try_model(Model::custom(
+                    m.c1,
+                    lin_step(m.c2, pick((0.01, 0.1)), dir),
+                    m.alpha,
+                    m.k_griffith,
+                    m.cap,
+                ))
+            }
+            Param::Alpha => {
+                let a = lin_step(m.alpha, pick((0.05, 0.25)), dir).clamp(0.0, 4.0);
+                return self.try_model(Model::custom(m.c1, m.c2, a, m.k_griffith, m.cap));
+            }
+            Param::KGriffith => {
+                let k = lin_step(m.k_griffith, pick((0.1, 1.0)), dir);
+                let k = if k <= 0.0 { m.k_griffith.min(0.1) } else { k };
+                return self.try_model(Model::custom(m.c1, m.c2, m.alpha, k, m.cap));
+            }
+            Param::Cap => return self.try_model(Model::custom(m.c1, m.c2, m.alpha, m.k_griffith, !m.cap)),
+        }
+        self.try_scene(s);
+    }
+
+    /// Sets a parameter from typed text.
+    pub fn set_typed(&mut self, param: Param, text: &str) -> Result<()> {
+        let mut s = self.scene.clone();
+        let m = s.model;
+        let t = text.trim();
+        match param {
+            Param::Preset => {
+                self.load_preset(t);
+                return match &self.message {
+                    Some(Message { error: true, text }) => Err(Error::Unsupported(text.clone())),
+                    _ => Ok(()),
+                };
+            }
+            Param::Model => {
+                s.model = Model::of_kind(t.parse::<asperity::input::model::ModelKind>()?, &m)?;
+            }
+            Param::Pressure => {
+                let p = parse_number("p*", t)?;
+                if p <= 0.0 {
+                    return Err(Error::field("p*", t, "p* > 0"));
+                }
+                s.pressure = p;
+            }
+            Param::Thickness => s.thickness_qr = t.parse::<asperity::input::scene::ThicknessQr>()?.0,
+            Param::Gamma => {
+                s.gamma = if t.eq_ignore_ascii_case("off") {
+                    0.0
+                } else {
+                    parse_number("gamma", t)?
+                }
+            }
+            Param::C1 => s.model = Model::custom(parse_number("c1", t)?, m.c2, m.alpha, m.k_griffith, m.cap)?,
+            Param::C2 => s.model = Model::custom(m.c1, parse_number("c2", t)?, m.alpha, m.k_griffith, m.cap)?,
+            Param::Alpha => s.model = Model::custom(m.c1, m.c2, parse_number("alpha", t)?, m.k_griffith, m.cap)?,
+            Param::KGriffith => s.model = Model::custom(m.c1, m.c2, m.alpha, parse_number("k_G", t)?, m.cap)?,
+            Param::Cap => s.model = Model::custom(m.c1, m.c2, m.alpha, m.k_griffith, parse_bool("cap", t)?)?,
+        }
+        s.validate()?;
+        self.set_scene(s);
+        Ok(())
+    }
+}
