@@ -18,6 +18,7 @@ pub type Result<T> = std::result::Result<T, Error>;
 /// fields to their own names (e.g. [`Field::Thickness`] is `--thickness` on the command line,
 /// `load.thickness_qr` in a preset, `t·q_r` in the explorer).
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Field {
     /// L, the side of the periodic square (m).
     SystemSize,
@@ -168,8 +169,216 @@ impl fmt::Display for Field {
     }
 }
 
+/// One end of an allowed range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Bound {
+    /// The end value is allowed (`<=`).
+    Inclusive(f64),
+    /// Values must stay strictly beyond it (`<`).
+    Exclusive(f64),
+    /// No limit on this side.
+    Unbounded,
+}
+
+/// An allowed interval of numbers, optionally whole numbers only.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Range {
+    /// Lower end.
+    pub lo: Bound,
+    /// Upper end.
+    pub hi: Bound,
+    /// Whole numbers only (counts, grid sides, seeds).
+    pub whole: bool,
+}
+
+impl Range {
+    /// `lo <= x <= hi`.
+    pub const fn closed(lo: f64, hi: f64) -> Range {
+        Range {
+            lo: Bound::Inclusive(lo),
+            hi: Bound::Inclusive(hi),
+            whole: false,
+        }
+    }
+
+    /// Whole numbers `lo <= n <= hi`.
+    pub const fn whole(lo: f64, hi: f64) -> Range {
+        Range {
+            lo: Bound::Inclusive(lo),
+            hi: Bound::Inclusive(hi),
+            whole: true,
+        }
+    }
+
+    /// `lo < x <= hi`.
+    pub const fn open_closed(lo: f64, hi: f64) -> Range {
+        Range {
+            lo: Bound::Exclusive(lo),
+            hi: Bound::Inclusive(hi),
+            whole: false,
+        }
+    }
+
+    /// `x > lo` (finite).
+    pub const fn above(lo: f64) -> Range {
+        Range {
+            lo: Bound::Exclusive(lo),
+            hi: Bound::Unbounded,
+            whole: false,
+        }
+    }
+
+    /// `x >= lo` (finite).
+    pub const fn at_least(lo: f64) -> Range {
+        Range {
+            lo: Bound::Inclusive(lo),
+            hi: Bound::Unbounded,
+            whole: false,
+        }
+    }
+
+    /// Whether `x` lies in the range (NaN never does; an unbounded end still excludes ±∞).
+    pub fn contains(&self, x: f64) -> bool {
+        let lo = match self.lo {
+            Bound::Inclusive(l) => x >= l,
+            Bound::Exclusive(l) => x > l,
+            Bound::Unbounded => x > f64::NEG_INFINITY,
+        };
+        let hi = match self.hi {
+            Bound::Inclusive(h) => x <= h,
+            Bound::Exclusive(h) => x < h,
+            Bound::Unbounded => x < f64::INFINITY,
+        };
+        lo && hi && (!self.whole || x.fract() == 0.0)
+    }
+
+    /// Checks `value` for `field`.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for `field` with this range when `value` lies outside it (or is NaN).
+    pub fn check(&self, field: Field, value: f64) -> Result<f64> {
+        if self.contains(value) {
+            Ok(value)
+        } else {
+            Err(Error::invalid(field, value, *self))
+        }
+    }
+
+    /// The range in words about a quantity called `name`, e.g. `1e-12 <= pressure <= 1000`,
+    /// `a whole number 1 <= points <= 100000`, `range_m > 0`.
+    pub fn describe(&self, name: &str) -> String {
+        let lo = match self.lo {
+            Bound::Inclusive(l) => Some(format!("{} <= ", fmt_value(l))),
+            Bound::Exclusive(l) => Some(format!("{} < ", fmt_value(l))),
+            Bound::Unbounded => None,
+        };
+        let hi = match self.hi {
+            Bound::Inclusive(h) => Some(format!(" <= {}", fmt_value(h))),
+            Bound::Exclusive(h) => Some(format!(" < {}", fmt_value(h))),
+            Bound::Unbounded => None,
+        };
+        let core = match (lo, hi) {
+            (Some(l), Some(h)) => format!("{l}{name}{h}"),
+            (Some(l), None) => {
+                // "0 < x" reads better as "x > 0"
+                let (v, op) = match self.lo {
+                    Bound::Exclusive(l) => (l, ">"),
+                    Bound::Inclusive(l) => (l, ">="),
+                    Bound::Unbounded => unreachable!(),
+                };
+                let _ = l;
+                format!("{name} {op} {}", fmt_value(v))
+            }
+            (None, Some(h)) => format!("{name}{h}"),
+            (None, None) => format!("{name} finite"),
+        };
+        if self.whole {
+            format!("a whole number {core}")
+        } else {
+            core
+        }
+    }
+}
+
+/// What a field accepts: the typed bound an [`Error::Invalid`] carries, which each front end
+/// renders in its own words ([`Allowed::describe`] is the library's).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Allowed {
+    /// A numeric interval.
+    Range(Range),
+    /// A numeric interval or one of the named values (e.g. `inf` for the thickness).
+    RangeOr(Range, Vec<String>),
+    /// One of a list of choices.
+    Choices(Vec<String>),
+    /// A condition that is neither a range nor a list (e.g. W(a) >= 0 on [0, 1]), in words.
+    Text(String),
+}
+
+impl Allowed {
+    /// A list of choices.
+    pub fn choices<S: ToString>(items: impl IntoIterator<Item = S>) -> Allowed {
+        Allowed::Choices(items.into_iter().map(|s| s.to_string()).collect())
+    }
+
+    /// The allowed values in words, naming the quantity `name` inside a range.
+    pub fn describe(&self, name: &str) -> String {
+        match self {
+            Allowed::Range(r) => r.describe(name),
+            Allowed::RangeOr(r, extra) => format!("{}, or {}", r.describe(name), extra.join(" or ")),
+            Allowed::Choices(c) => match c.len() {
+                0 => "nothing".into(),
+                1 => c[0].clone(),
+                n => format!("{} or {}", c[..n - 1].join(", "), c[n - 1]),
+            },
+            Allowed::Text(t) => t.clone(),
+        }
+    }
+
+    /// The numeric range, where there is one.
+    pub fn range(&self) -> Option<&Range> {
+        match self {
+            Allowed::Range(r) | Allowed::RangeOr(r, _) => Some(r),
+            _ => None,
+        }
+    }
+}
+
+impl fmt::Display for Allowed {
+    /// [`Allowed::describe`] with the quantity called `value`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.describe("value"))
+    }
+}
+
+impl From<Range> for Allowed {
+    fn from(r: Range) -> Allowed {
+        Allowed::Range(r)
+    }
+}
+
+impl From<String> for Allowed {
+    fn from(s: String) -> Allowed {
+        Allowed::Text(s)
+    }
+}
+
+impl From<&str> for Allowed {
+    fn from(s: &str) -> Allowed {
+        Allowed::Text(s.to_string())
+    }
+}
+
+impl From<&String> for Allowed {
+    fn from(s: &String) -> Allowed {
+        Allowed::Text(s.clone())
+    }
+}
+
 /// Everything that can go wrong in asperity.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum Error {
     /// A field has a value outside its allowed range (or NaN).
     Invalid {
@@ -177,8 +386,8 @@ pub enum Error {
         field: Field,
         /// The offending value, compactly formatted (see [`fmt_value`]).
         value: String,
-        /// The allowed range, in words, e.g. `1e-12 <= value <= 1000`.
-        allowed: String,
+        /// What the field accepts (a range, a list of choices, or a condition in words).
+        allowed: Allowed,
     },
     /// A field has a value outside its allowed range (or NaN), named by a free-form string.
     ///
@@ -188,8 +397,8 @@ pub enum Error {
         field: String,
         /// The offending value, as the user gave it.
         value: String,
-        /// The allowed range, in words.
-        allowed: String,
+        /// What the field accepts.
+        allowed: Allowed,
     },
     /// A preset (or tour, or other TOML input) could not be read or parsed.
     Preset {
@@ -216,7 +425,7 @@ pub enum Error {
 impl Error {
     /// An [`Error::Invalid`] for `field`: `value` is formatted with [`fmt_value`] when it is a
     /// number (use [`Error::invalid_text`] for non-numeric values).
-    pub fn invalid(field: Field, value: f64, allowed: impl Into<String>) -> Self {
+    pub fn invalid(field: Field, value: f64, allowed: impl Into<Allowed>) -> Self {
         Error::Invalid {
             field,
             value: fmt_value(value),
@@ -225,19 +434,19 @@ impl Error {
     }
 
     /// An [`Error::Invalid`] whose value is text (a model name, a path, a shape).
-    pub fn invalid_text(field: Field, value: impl fmt::Display, allowed: impl Into<String>) -> Self {
+    pub fn invalid_text(field: Field, value: impl fmt::Display, allowed: impl Into<Allowed>) -> Self {
         Error::Invalid {
             field,
-            value: value.to_string(),
+            value: fmt_text(&value.to_string()),
             allowed: allowed.into(),
         }
     }
 
     /// Shorthand for [`Error::InvalidField`] (free-form field name).
-    pub fn field(field: impl Into<String>, value: impl fmt::Display, allowed: impl Into<String>) -> Self {
+    pub fn field(field: impl Into<String>, value: impl fmt::Display, allowed: impl Into<Allowed>) -> Self {
         Error::InvalidField {
             field: field.into(),
-            value: value.to_string(),
+            value: fmt_text(&value.to_string()),
             allowed: allowed.into(),
         }
     }
@@ -254,9 +463,16 @@ impl Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Error::Invalid { field, value, allowed } => write!(f, "invalid {field} = {value}: allowed {allowed}"),
+            Error::Invalid { field, value, allowed } => {
+                write!(
+                    f,
+                    "invalid {field} = {value}: allowed {}",
+                    allowed.describe(field.short())
+                )
+            }
             Error::InvalidField { field, value, allowed } => {
-                write!(f, "invalid {field} = {value}: allowed {allowed}")
+                let name = field.trim_start_matches('-');
+                write!(f, "invalid {field} = {value}: allowed {}", allowed.describe(name))
             }
             Error::Preset { source, message } => {
                 let one_line = message.split_whitespace().collect::<Vec<_>>().join(" ");
@@ -291,6 +507,9 @@ pub fn fmt_value(x: f64) -> String {
 /// digits prints as `1e300`), anything else as given, cut to 60 characters.
 pub fn fmt_text(s: &str) -> String {
     let t = s.trim();
+    if t.is_empty() {
+        return "\"\" (empty)".into();
+    }
     if let Ok(x) = t.parse::<f64>() {
         if t.len() > 12 {
             return fmt_value(x);
@@ -307,8 +526,7 @@ pub fn fmt_text(s: &str) -> String {
 /// states the range as `lo <= value <= hi`.
 pub fn check_in(field: Field, value: f64, lo: f64, hi: f64) -> Result<f64> {
     if value.is_nan() || value < lo || value > hi {
-        let allowed = format!("{} <= {} <= {}", fmt_value(lo), field.short(), fmt_value(hi));
-        return Err(Error::invalid(field, value, allowed));
+        return Err(Error::invalid(field, value, Range::closed(lo, hi)));
     }
     Ok(value)
 }
@@ -316,7 +534,7 @@ pub fn check_in(field: Field, value: f64, lo: f64, hi: f64) -> Result<f64> {
 /// Checks that `value` is finite and strictly positive.
 pub fn check_finite_positive(field: Field, value: f64) -> Result<f64> {
     if !(value.is_finite() && value > 0.0) {
-        return Err(Error::invalid(field, value, "a finite number > 0"));
+        return Err(Error::invalid(field, value, Range::above(0.0)));
     }
     Ok(value)
 }
@@ -332,7 +550,7 @@ pub fn check_range(field: &str, value: f64, lo: f64, hi: f64, allowed: &str) -> 
 /// Checks that `value` is finite and strictly positive.
 pub fn check_positive(field: &str, value: f64) -> Result<f64> {
     if !(value.is_finite() && value > 0.0) {
-        return Err(Error::field(field, fmt_value(value), "a finite number > 0"));
+        return Err(Error::field(field, fmt_value(value), Range::above(0.0)));
     }
     Ok(value)
 }

@@ -53,6 +53,7 @@ pub mod error;
 pub mod fit;
 pub mod gfmd;
 pub mod input;
+pub mod limits;
 pub mod numerics;
 pub mod surface;
 pub mod theory;

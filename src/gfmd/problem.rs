@@ -1,7 +1,7 @@
 //! The contact problem and the solver's options, progress reports and relaxed configuration
 //! (see the [module docs](super) for the model).
 
-use crate::error::{Error, Field, Result};
+use crate::error::{Bound, Error, Field, Range, Result};
 use crate::surface::heightmap::Surface;
 
 /// The minimiser.
@@ -64,25 +64,34 @@ impl Default for GfmdOptions {
     }
 }
 
+/// Allowed relative force residual of a GFMD relaxation.
+pub const TOLERANCE_RANGE: Range = Range {
+    lo: Bound::Inclusive(1e-14),
+    hi: Bound::Exclusive(1.0),
+    whole: false,
+};
+/// Allowed iteration limit.
+pub const MAX_ITERATIONS_RANGE: Range = Range {
+    lo: Bound::Inclusive(1.0),
+    hi: Bound::Unbounded,
+    whole: true,
+};
+/// Allowed number of histogram bins of Pr(σ*).
+pub const BINS_RANGE: Range = Range::whole(1.0, 1e6);
+/// Allowed initial contact gap (m).
+pub const CONTACT_GAP_RANGE: Range = Range::at_least(0.0);
+
 impl GfmdOptions {
     /// Checks the options, naming the field.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::GfmdTolerance`], [`Field::MaxIterations`],
+    /// [`Field::Bins`] or [`Field::ContactGap`] outside its range.
     pub fn validate(&self) -> Result<()> {
-        if !(self.tolerance.is_finite() && self.tolerance >= 1e-14 && self.tolerance < 1.0) {
-            return Err(Error::invalid(
-                Field::GfmdTolerance,
-                self.tolerance,
-                "1e-14 <= tolerance < 1",
-            ));
-        }
-        if self.max_iterations == 0 {
-            return Err(Error::invalid(Field::MaxIterations, 0.0, "an integer >= 1"));
-        }
-        if !(1..=1_000_000).contains(&self.pr_bins) {
-            return Err(Error::invalid(Field::Bins, self.pr_bins as f64, "1 <= bins <= 1000000"));
-        }
-        if !(self.contact_gap.is_finite() && self.contact_gap >= 0.0) {
-            return Err(Error::invalid(Field::ContactGap, self.contact_gap, "a gap >= 0 (m)"));
-        }
+        TOLERANCE_RANGE.check(Field::GfmdTolerance, self.tolerance)?;
+        MAX_ITERATIONS_RANGE.check(Field::MaxIterations, self.max_iterations as f64)?;
+        BINS_RANGE.check(Field::Bins, self.pr_bins as f64)?;
+        CONTACT_GAP_RANGE.check(Field::ContactGap, self.contact_gap)?;
         Ok(())
     }
 }

@@ -29,8 +29,18 @@
 //! Xu24's S is linear in a and acts on the total variance, which the adhesionless solver
 //! treats on its own ([`crate::theory::persson`]).
 
-use crate::error::{Error, Field, Result};
+use crate::error::{fmt_value, Allowed, Error, Field, Range, Result};
 use serde::{Deserialize, Serialize};
+
+/// The model variants by name.
+pub const MODEL_CHOICES: [&str; 7] = ["1", "2", "3", "4", "custom", "yp08", "xu24"];
+/// Allowed c₁ and c₂ each (W(a) ≥ 0 on [0, 1] is checked on the pair): the paper's models
+/// have |c| ≤ 1; beyond 1000 W spans more orders of magnitude than the broadening resolves.
+pub const C_RANGE: Range = Range::closed(-1e3, 1e3);
+/// Allowed α, the exponent of W in the stress broadening [S-15].
+pub const ALPHA_RANGE: Range = Range::closed(0.0, 4.0);
+/// Allowed k_G, the Griffith prefactor [S-8].
+pub const K_GRIFFITH_RANGE: Range = Range::open_closed(0.0, 100.0);
 
 /// Which variant of the theory a [`Model`] is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -105,7 +115,11 @@ impl std::str::FromStr for ModelKind {
             "custom" => Ok(ModelKind::Custom),
             "yp08" => Ok(ModelKind::Yp08),
             "xu24" => Ok(ModelKind::Xu24),
-            _ => Err(Error::invalid_text(Field::Model, s.trim(), MODEL_NAMES)),
+            _ => Err(Error::invalid_text(
+                Field::Model,
+                s.trim(),
+                Allowed::choices(MODEL_CHOICES),
+            )),
         }
     }
 }
@@ -204,7 +218,7 @@ impl Model {
             2 => (ModelKind::Two, 0.55, 0.0, 0.5, 1.0, false),
             3 => (ModelKind::Three, -2.0 / 9.0, 2.0 / 3.0, 0.5, 2.0, true),
             4 => (ModelKind::Four, 0.65, 0.0, 0.25, 2.0, true),
-            _ => return Err(Error::invalid_text(Field::Model, n, MODEL_NAMES)),
+            _ => return Err(Error::invalid_text(Field::Model, n, Allowed::choices(MODEL_CHOICES))),
         };
         Ok(Model {
             kind: m.0,
@@ -232,39 +246,33 @@ impl Model {
     }
 
     /// Checks the coefficients (used for custom models and after user edits).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::C1`] or [`Field::C2`] outside [`C_RANGE`], [`Field::Alpha`]
+    /// outside [`ALPHA_RANGE`], [`Field::KGriffith`] outside [`K_GRIFFITH_RANGE`], and
+    /// [`Field::WeightCoefficients`] when W(a) < 0 somewhere on [0, 1].
     pub fn validate(&self) -> Result<()> {
-        if !self.c1.is_finite() {
-            return Err(Error::invalid(
-                Field::C1,
-                self.c1,
-                "a finite number with W(a) >= 0 on [0, 1]",
-            ));
-        }
-        if !self.c2.is_finite() {
-            return Err(Error::invalid(
-                Field::C2,
-                self.c2,
-                "a finite number with W(a) >= 0 on [0, 1]",
-            ));
-        }
-        if !(self.alpha >= 0.0 && self.alpha <= 4.0) {
-            return Err(Error::invalid(Field::Alpha, self.alpha, "0 <= alpha <= 4"));
-        }
-        if !(self.k_griffith > 0.0 && self.k_griffith <= 100.0) {
-            return Err(Error::invalid(Field::KGriffith, self.k_griffith, "0 < k_G <= 100"));
-        }
+        C_RANGE.check(Field::C1, self.c1)?;
+        C_RANGE.check(Field::C2, self.c2)?;
+        ALPHA_RANGE.check(Field::Alpha, self.alpha)?;
+        K_GRIFFITH_RANGE.check(Field::KGriffith, self.k_griffith)?;
         if self.kind.is_fudge_variant() && !(self.c1 >= 0.0 && self.c1 < 1.0) {
             return Err(Error::invalid(
                 Field::Other(FUDGE_GAMMA_KEY.into()),
                 1.0 - self.c1,
-                "0 < fudge_gamma <= 1",
+                Range::open_closed(0.0, 1.0),
             ));
         }
         let wmin = self.w_min();
         if wmin < 0.0 {
             return Err(Error::invalid_text(
                 Field::WeightCoefficients,
-                format!("({}, {}) giving min W = {wmin:.4}", self.c1, self.c2),
+                format!(
+                    "({}, {}) giving min W = {}",
+                    fmt_value(self.c1),
+                    fmt_value(self.c2),
+                    fmt_value((wmin * 1e4).round() / 1e4)
+                ),
                 "coefficients with W(a) = 1 - c1(1-a^2) - c2(1-a^4) >= 0 for all 0 <= a <= 1",
             ));
         }

@@ -68,7 +68,7 @@ pub struct LoadSpec {
 }
 
 /// Model number or "custom".
-#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Variant {
     /// 1–4.
@@ -76,6 +76,33 @@ pub enum Variant {
     /// "1".."4" or "custom".
     Name(String),
 }
+
+impl<'de> Deserialize<'de> for Variant {
+    /// An integer or a string; anything else (e.g. `3.5`) is refused with the choices.
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Variant, D::Error> {
+        struct V;
+        impl serde::de::Visitor<'_> for V {
+            type Value = Variant;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("1, 2, 3, 4 or \"custom\"")
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> std::result::Result<Variant, E> {
+                Ok(Variant::Number(v))
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> std::result::Result<Variant, E> {
+                Ok(Variant::Number(i64::try_from(v).unwrap_or(i64::MAX)))
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> std::result::Result<Variant, E> {
+                Ok(Variant::Name(v.to_string()))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// Largest preset (or other TOML input) read: presets are a few hundred bytes, and a file far
+/// larger is not one (refused before parsing, so that a huge file fails at once).
+pub const MAX_TOML_BYTES: u64 = 1 << 20;
 
 /// `[model]`.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
@@ -201,11 +228,25 @@ pub struct Preset {
     pub reference: Vec<ReferencePoint>,
 }
 
+/// The error for a TOML input over [`MAX_TOML_BYTES`].
+pub fn too_large(source: &str, len: u64) -> Error {
+    Error::Preset {
+        source: source.to_string(),
+        message: format!(
+            "{} bytes: allowed a preset file of at most {} bytes",
+            len, MAX_TOML_BYTES
+        ),
+    }
+}
+
 const QUANTITIES: [&str; 4] = ["a_r", "mean_contact_stress", "contact_stress_variance", "mean_gap_rel"];
 
 impl Preset {
     /// Parses TOML text; `source` names the file in errors.
     pub fn parse(text: &str, source: &str) -> Result<Preset> {
+        if text.len() as u64 > MAX_TOML_BYTES {
+            return Err(too_large(source, text.len() as u64));
+        }
         let preset: Preset = toml::from_str(text).map_err(|e| Error::Preset {
             source: source.to_string(),
             message: toml_error_message(text, &e),
@@ -225,6 +266,10 @@ impl Preset {
 
     /// Reads a preset from a file.
     pub fn load(path: &Path) -> Result<Preset> {
+        let len = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
+        if len > MAX_TOML_BYTES {
+            return Err(too_large(&path.display().to_string(), len));
+        }
         let text = std::fs::read_to_string(path)
             .map_err(|e| Error::Io(format!("cannot read preset {}: {e}", path.display())))?;
         Preset::parse(&text, &path.display().to_string())

@@ -5,7 +5,7 @@
 //! t·q_r. Surface energy γ_s in J/m², range of adhesion ρ in m.
 
 use crate::elastic::slab::slab_factor_at;
-use crate::error::{check_in, fmt_value, Error, Field, Result};
+use crate::error::{check_in, fmt_value, Allowed, Error, Field, Range, Result};
 use crate::input::model::Model;
 use crate::surface::spectrum::Spectrum;
 use serde::Serialize;
@@ -80,12 +80,9 @@ impl std::fmt::Display for ThicknessQr {
     }
 }
 
-fn thickness_allowed() -> String {
-    format!(
-        "{} <= t·q_r <= {}, or inf",
-        fmt_value(THICKNESS_RANGE.0),
-        fmt_value(THICKNESS_RANGE.1)
-    )
+/// What t·q_r accepts: [`THICKNESS_RANGE`], or `inf`.
+pub fn thickness_allowed() -> Allowed {
+    Allowed::RangeOr(Range::closed(THICKNESS_RANGE.0, THICKNESS_RANGE.1), vec!["inf".into()])
 }
 
 /// Hashes every input by bit pattern: equal scenes hash equally (the explorer's cache key).

@@ -24,6 +24,8 @@ use std::f64::consts::PI;
 /// Allowed lengths L, λ_r, λ_s (m): from a picometre to a kilometre, so that q and the
 /// moments ∫q^k dm stay far from overflow and underflow.
 pub const LENGTH_RANGE_M: (f64, f64) = (1e-12, 1e3);
+/// Allowed Hurst exponents H.
+pub const HURST_RANGE: (f64, f64) = (1e-3, 1.0);
 /// Allowed rms gradient ḡ: the theory is small-slope; below 1e-6 C₀ underflows for short
 /// wavelengths.
 pub const RMS_GRADIENT_RANGE: (f64, f64) = (1e-6, 100.0);
@@ -110,7 +112,7 @@ impl SelfAffine {
                 "a bandwidth rolloff_wavelength_m/short_wavelength_m <= 1e8",
             ));
         }
-        check_in(Field::Hurst, hurst, 1e-3, 1.0)?;
+        check_in(Field::Hurst, hurst, HURST_RANGE.0, HURST_RANGE.1)?;
         let mut s = SelfAffine {
             system_size,
             lambda_r,

@@ -2,7 +2,7 @@
 //! adhesionless mirror-Gaussian path when γ_s = 0, the adhesive solver otherwise) and returns
 //! the quantities every front end shows. The CLI and the TUI call only this (and the sweep).
 
-use crate::error::{check_in, Error, Field, Result};
+use crate::error::{check_in, Error, Field, Range, Result};
 use crate::input::scene::Scene;
 use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution, Branch, BranchState};
 use crate::theory::persson::{self, Accuracy, ResolutionPoint};
@@ -79,13 +79,7 @@ pub const SIGMA_POINTS_RANGE: (usize, usize) = (2, 1_000_000);
 /// Allowed σ*_max: Pr(σ*) of any scene is negligible beyond σ* ~ p* + 10 (Δ ≤ 1 for ḡ-reduced
 /// stresses), so a larger table would sample only zeros.
 pub const SIGMA_MAX_RANGE: (f64, f64) = (1e-6, 1e3);
-/// Allowed adhesive resolution steps per ln q and grid points per width: at least 4 because
-/// the error estimate solves again at half of each.
-pub const ADHESION_STEPS_RANGE: (f64, f64) = (4.0, 1e4);
-/// See [`ADHESION_STEPS_RANGE`].
-pub const ADHESION_POINTS_RANGE: (f64, f64) = (4.0, 1e3);
-/// Allowed self-consistency tolerance |γ(q_s)/γ_s − 1| of the adhesive solver.
-pub const ADHESION_TOL_RANGE: (f64, f64) = (1e-14, 1e-1);
+pub use crate::theory::adhesion::{ADHESION_POINTS_RANGE, ADHESION_STEPS_RANGE, ADHESION_TOL_RANGE};
 
 impl Options {
     /// Checks every accuracy knob against its allowed range.
@@ -102,26 +96,13 @@ impl Options {
             return Err(Error::invalid(
                 Field::SigmaPoints,
                 n as f64,
-                format!("{} <= points <= {}", SIGMA_POINTS_RANGE.0, SIGMA_POINTS_RANGE.1),
+                Range::whole(SIGMA_POINTS_RANGE.0 as f64, SIGMA_POINTS_RANGE.1 as f64),
             ));
         }
         if let Some(s) = self.sigma_max {
             check_in(Field::SigmaMax, s, SIGMA_MAX_RANGE.0, SIGMA_MAX_RANGE.1)?;
         }
-        let a = &self.adhesion;
-        check_in(
-            Field::AdhesionSteps,
-            a.steps_per_ln_q,
-            ADHESION_STEPS_RANGE.0,
-            ADHESION_STEPS_RANGE.1,
-        )?;
-        check_in(
-            Field::AdhesionPoints,
-            a.points_per_width,
-            ADHESION_POINTS_RANGE.0,
-            ADHESION_POINTS_RANGE.1,
-        )?;
-        check_in(Field::AdhesionTol, a.tol, ADHESION_TOL_RANGE.0, ADHESION_TOL_RANGE.1)?;
+        self.adhesion.validate()?;
         check_in(
             Field::SweepStep,
             self.sweep_step_ln,
@@ -300,7 +281,7 @@ fn evaluate_adhesive(
             coarse.explore_branches = false;
             coarse.steps_per_ln_q *= steps;
             coarse.points_per_width *= points;
-            match adhesion::solve(scene, &coarse, Some(&sol), cancel) {
+            match adhesion::solve_checked(scene, &coarse, &[&sol], cancel) {
                 Ok(c) => Ok(Some((c.a_r - sol.a_r).abs())),
                 Err(Error::Cancelled) => Err(Error::Cancelled),
                 // near a jump a probe may not converge although the solve did: the estimate

@@ -253,18 +253,27 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         ln_p: p.ln(),
         uncertainty_ln: 0.5 * opts.edge_rel,
     });
+    // a gap table that cannot be built leaves the rows without a gap, as `run` does
     let table = if n - first_ok >= 4 {
         let total: Vec<f64> = evs[first_ok..]
             .iter()
             .map(|e| e.as_ref().map_or(f64::NAN, |e| e.elastic_energy / unit))
             .collect();
-        Some(GapTable::from_energies_with_jump(
+        match GapTable::from_energies_with_jump(
             x0 + first_ok as f64 * step,
             step,
             stored[first_ok..].to_vec(),
             total,
             jump,
-        )?)
+        ) {
+            Ok(t) => Some(t),
+            Err(Error::Cancelled) => return Err(Error::Cancelled),
+            Err(e) => {
+                let why = format!("mean gap unavailable: {e}");
+                gap_note = Some(gap_note.map_or(why.clone(), |g| format!("{g}; {why}")));
+                None
+            }
+        }
     } else {
         None
     };

@@ -12,12 +12,36 @@ pub struct BenchArgs {
     #[arg(long)]
     pub quick: bool,
     /// Where the full run writes its report.
-    #[arg(long, default_value = "BENCHMARKS.md")]
+    #[arg(long, default_value = "BENCHMARKS.md", allow_hyphen_values = true)]
     pub output: String,
+}
+
+/// Refuses an `--output` the report could not be written to, before any ladder runs: an
+/// empty name, a folder that does not exist, or a folder.
+fn check_output(path: &str) -> Result<()> {
+    let p = std::path::Path::new(path);
+    let dir = match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => std::path::Path::new("."),
+    };
+    let why = if path.trim().is_empty() {
+        Some("a file name")
+    } else if p.is_dir() {
+        Some("a file, not a folder")
+    } else if !dir.is_dir() {
+        Some("a file in an existing folder")
+    } else {
+        None
+    };
+    match why {
+        Some(w) => Err(Error::field("--output", asperity::error::fmt_text(path), w)),
+        None => Ok(()),
+    }
 }
 
 /// Runs the benchmark ladders.
 pub fn run(args: &BenchArgs) -> Result<()> {
+    check_output(&args.output)?;
     let mut rep = Report::default();
     let mut add = |r: Report| {
         rep.rungs.extend(r.rungs);

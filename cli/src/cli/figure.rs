@@ -33,36 +33,37 @@ pub enum FigureFormat {
 #[derive(Debug, Clone, Args)]
 pub struct FigureArgs {
     /// 1 … 8, table-1, or a figure TOML file.
+    #[arg(allow_hyphen_values = true)]
     pub id: Option<String>,
     /// Name every figure with one line.
     #[arg(long)]
     pub list: bool,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = FigureFormat::Chart)]
+    #[arg(long, value_enum, default_value_t = FigureFormat::Chart, allow_hyphen_values = true)]
     pub format: FigureFormat,
     /// Write the chart as SVG.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::out_path(None))]
     pub svg: Option<PathBuf>,
     /// Write the chart as PNG.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::out_path(Some("png")))]
     pub png: Option<PathBuf>,
     /// Add the brute-force GFMD points where the figure has them.
     #[arg(long)]
     pub gfmd: bool,
     /// GFMD grid side N (default: the preset's reduced grid, 512 for both systems).
-    #[arg(long, requires = "gfmd", allow_hyphen_values = true)]
+    #[arg(long, requires = "gfmd", allow_hyphen_values = true, value_parser = super::parse::whole(asperity::error::Field::Grid))]
     pub grid: Option<i64>,
     /// GFMD seed.
-    #[arg(long, default_value_t = 1, requires = "gfmd", value_parser = super::whole_number_u64)]
+    #[arg(long, default_value_t = 1, requires = "gfmd", allow_hyphen_values = true, value_parser = super::whole_number_u64)]
     pub seed: u64,
     /// Number of x values (or σ* samples) instead of the figure file's.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::whole_number)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::count_in("points", 2, 100_000))]
     pub points: Option<usize>,
     /// Width of the text chart in characters.
-    #[arg(long, default_value_t = 100, value_parser = super::whole_number)]
+    #[arg(long, default_value_t = 100, allow_hyphen_values = true, value_parser = super::parse::count_in("width", 20, 1000))]
     pub width: usize,
     /// Height of the text chart in lines.
-    #[arg(long, default_value_t = 32, value_parser = super::whole_number)]
+    #[arg(long, default_value_t = 32, allow_hyphen_values = true, value_parser = super::parse::count_in("height", 10, 1000))]
     pub height: usize,
     /// Add curves of these models: a comma-separated list of 1, 2, 3, 4, yp08, xu24
     /// (e.g. figure 1 --model yp08,xu24; the variants need an adhesionless half-space figure).
@@ -121,6 +122,9 @@ pub fn run(args: &FigureArgs) -> Result<()> {
         fig
     } else {
         let mut s = spec::resolve(id)?;
+        if !spec::BUILTIN.iter().any(|(i, _)| *i == id) {
+            eprintln!("asperity figure: read {id}");
+        }
         if let Some(n) = args.points {
             if !(2..=100_000).contains(&n) {
                 return Err(Error::field("--points", n, "2 <= points <= 100000"));

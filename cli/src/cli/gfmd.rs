@@ -37,38 +37,38 @@ pub struct GfmdArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Reduced pressure p* = p/(E* g), g the map's rms gradient (default: the preset's).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number(Field::Pressure))]
     pub pressure: Option<f64>,
     /// Grid side N (default: the preset's [gfmd] grid); keeps L/lambda_r and lambda_s/da.
-    #[arg(long, allow_hyphen_values = true, conflicts_with = "surface")]
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "surface", value_parser = super::parse::whole(Field::Grid))]
     pub grid: Option<i64>,
     /// Seed of the random surface.
     #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::whole_number_u64)]
     pub seed: u64,
     /// Height map to use instead of a generated one (text matrix, metres, one row per line).
-    #[arg(long, requires = "size")]
+    #[arg(long, requires = "size", allow_hyphen_values = true, value_parser = super::parse::in_path)]
     pub surface: Option<PathBuf>,
     /// Side L of the --surface map in metres.
-    #[arg(long, requires = "surface", allow_hyphen_values = true)]
+    #[arg(long, requires = "surface", allow_hyphen_values = true, value_parser = super::number(Field::SystemSize))]
     pub size: Option<f64>,
     /// Write the height map used to this file (text matrix).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::out_path(None))]
     pub save_surface: Option<PathBuf>,
     /// Relative force residual to reach.
-    #[arg(long, default_value = "1e-8", allow_hyphen_values = true)]
+    #[arg(long, default_value = "1e-8", allow_hyphen_values = true, value_parser = super::number(Field::GfmdTolerance))]
     pub tolerance: f64,
     /// Largest number of FIRE steps.
-    #[arg(long, default_value_t = GfmdOptions::default().max_iterations, allow_hyphen_values = true, value_parser = super::whole_number)]
+    #[arg(long, default_value_t = GfmdOptions::default().max_iterations, allow_hyphen_values = true, value_parser = super::count(Field::MaxIterations))]
     pub max_iterations: usize,
     /// Number of bins of the Pr(sigma*) histogram.
-    #[arg(long, default_value_t = GfmdOptions::default().pr_bins, allow_hyphen_values = true, value_parser = super::whole_number)]
+    #[arg(long, default_value_t = GfmdOptions::default().pr_bins, allow_hyphen_values = true, value_parser = super::count(Field::Bins))]
     pub bins: usize,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Json)]
+    #[arg(long, value_enum, default_value_t = Format::Json, allow_hyphen_values = true)]
     pub format: Format,
     /// Minimiser: auto (pk up to 2048^2 nodes, fire above), pk (Polonsky-Keer CG for the hard
     /// wall, FIRE with adhesion) or fire (FIRE alone).
-    #[arg(long, value_enum, default_value_t = MethodArg::Auto)]
+    #[arg(long, value_enum, default_value_t = MethodArg::Auto, allow_hyphen_values = true)]
     pub method: MethodArg,
     /// Keep gamma_s and rho as given on the reduced grid (default: rescale them so that the
     /// reduced system keeps gamma_glo and the Tabor parameter of the full one).
@@ -78,19 +78,19 @@ pub struct GfmdArgs {
     #[arg(long, conflicts_with = "surface")]
     pub extrapolate: bool,
     /// Points per short wavelength lambda_s/da of the --extrapolate ladder.
-    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true)]
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, value_parser = super::parse::ladder_rung)]
     pub ladder: Vec<f64>,
     /// Repeat over K realisations (seeds S..S+K-1) and report mean +- standard error.
-    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::whole_number, conflicts_with = "surface")]
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::parse::count_in("seeds", 1, MAX_SEEDS), conflicts_with = "surface")]
     pub seeds: usize,
     /// Load sweep: first p* (warm-started loads from --from to --to).
-    #[arg(long, allow_hyphen_values = true, requires = "to", conflicts_with_all = ["extrapolate", "pressure"])]
+    #[arg(long, allow_hyphen_values = true, requires = "to", conflicts_with_all = ["extrapolate", "pressure"], value_parser = super::number(Field::Pressure))]
     pub from: Option<f64>,
     /// Load sweep: last p*.
-    #[arg(long, allow_hyphen_values = true, requires = "from")]
+    #[arg(long, allow_hyphen_values = true, requires = "from", value_parser = super::number(Field::Pressure))]
     pub to: Option<f64>,
     /// Load sweep: number of log-spaced loads.
-    #[arg(long, default_value_t = 8, allow_hyphen_values = true, value_parser = super::whole_number)]
+    #[arg(long, default_value_t = 8, allow_hyphen_values = true, value_parser = super::parse::count_in("points", 1, 100_000))]
     pub points: usize,
 }
 

@@ -22,7 +22,10 @@ use serde::Serialize;
 use std::io::IsTerminal;
 use std::io::Write;
 
+pub mod parse;
 pub mod sweep;
+
+pub use parse::{clap_error_line, count, field_name, number, render_error, whole_number, whole_number_u64};
 
 /// asperity: explore Persson's contact-mechanics theory of rough, adhesive, elastic contacts.
 #[derive(Debug, Parser)]
@@ -75,31 +78,31 @@ pub struct SceneArgs {
     pub preset: String,
     /// Model variant: 1, 2, 3, 4, custom, yp08 or xu24 (default: the preset's; yp08 and xu24
     /// are defined for the adhesionless half-space: --gamma 0 --thickness inf).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = parse::model)]
     pub model: Option<String>,
     /// Fitting parameter gamma_f of yp08/xu24: S(a) = gamma_f + (1 - gamma_f) a^2 (yp08) or a (xu24).
     #[arg(long, allow_hyphen_values = true)]
     pub fudge_gamma: Option<f64>,
     /// Custom model: c1 of W(a) = 1 - c1(1-a^2) - c2(1-a^4) (implies --model custom).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::C1))]
     pub c1: Option<f64>,
     /// Custom model: c2 (implies --model custom).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::C2))]
     pub c2: Option<f64>,
     /// Custom model: broadening exponent alpha, dp ~ W^alpha (implies --model custom).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::Alpha))]
     pub alpha: Option<f64>,
     /// Custom model: Griffith prefactor k_G (implies --model custom).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::KGriffith))]
     pub k_griffith: Option<f64>,
     /// Custom model: cap sigma_a at gamma_s/rho (true/false; implies --model custom).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub cap: Option<bool>,
     /// Thickness t*q_r, or inf for a semi-infinite body (default: the preset's).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = parse::thickness)]
     pub thickness: Option<String>,
     /// Surface energy gamma_s in J/m^2; 0 = no adhesion.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::SurfaceEnergy))]
     pub gamma: Option<f64>,
 }
 
@@ -110,7 +113,7 @@ pub struct TuiArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Reduced pressure p* = p/(E* g) (default: the preset's reference load).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::Pressure))]
     pub pressure: Option<f64>,
 }
 
@@ -118,10 +121,10 @@ pub struct TuiArgs {
 #[derive(Debug, Clone, Args)]
 pub struct TourArgs {
     /// Tour name (from tours/ or built in) or path to a tour TOML file.
-    #[arg(default_value = crate::tui::tour::DEFAULT_TOUR)]
+    #[arg(default_value = crate::tui::tour::DEFAULT_TOUR, allow_hyphen_values = true)]
     pub tour: String,
     /// Step to start at (1 = the first).
-    #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = parse::step)]
     pub step: i64,
     /// List the available tours and exit.
     #[arg(long)]
@@ -135,28 +138,28 @@ pub struct RunArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Reduced pressure p* = p/(E* g) (default: the preset's reference load).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::Pressure))]
     pub pressure: Option<f64>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Json)]
+    #[arg(long, value_enum, default_value_t = Format::Json, allow_hyphen_values = true)]
     pub format: Format,
     /// Number of sigma* points of the Pr(sigma*) table.
-    #[arg(long, default_value_t = 201, allow_hyphen_values = true, value_parser = whole_number)]
+    #[arg(long, default_value_t = 201, allow_hyphen_values = true, value_parser = count(Field::SigmaPoints))]
     pub sigma_points: usize,
     /// Largest sigma* of the Pr table (default p* + 5 times the distribution's width).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::SigmaMax))]
     pub sigma_max: Option<f64>,
     /// Relative tolerance of the variance ODE (accuracy knob).
-    #[arg(long, default_value_t = Accuracy::default().rtol, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = Accuracy::default().rtol, allow_hyphen_values = true, value_parser = number(Field::Rtol))]
     pub rtol: f64,
     /// Adhesive solver: march steps per unit of ln q (accuracy knob; see BENCHMARKS.md).
-    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().steps_per_ln_q, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().steps_per_ln_q, allow_hyphen_values = true, value_parser = number(Field::AdhesionSteps))]
     pub adhesion_steps: f64,
     /// Adhesive solver: grid points per standard deviation of Pr (accuracy knob).
-    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().points_per_width, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().points_per_width, allow_hyphen_values = true, value_parser = number(Field::AdhesionPoints))]
     pub adhesion_points: f64,
     /// Adhesive solver: self-consistency tolerance |gamma(q_s)/gamma_s - 1| at each root.
-    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().tol, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().tol, allow_hyphen_values = true, value_parser = number(Field::AdhesionTol))]
     pub adhesion_tol: f64,
 }
 
@@ -271,8 +274,7 @@ pub struct RunOutput {
     pub iterations: usize,
     /// Self-consistency residual |γ(q_s)/γ_s − 1| (0 without adhesion).
     pub residual: f64,
-    /// "adhesionless", or "loading": the branch a loading history reaches (older versions
-    /// could also say "loading (continuation in gamma)" or "upper (from full contact)").
+    /// "adhesionless", or "loading": the branch a loading history reaches.
     pub branch: String,
     /// a_r of a distinct unloading branch (the highest stable one), null if none.
     pub unloading_a_r: Option<f64>,
@@ -489,101 +491,6 @@ fn run_table(out: &RunOutput) -> String {
     t.trim_end().to_string()
 }
 
-/// The command-line name of a field: its flag where one sets it, else its canonical key.
-pub fn field_name(field: &Field) -> &str {
-    match field {
-        Field::Pressure => "--pressure",
-        Field::Thickness => "--thickness",
-        Field::SurfaceEnergy => "--gamma",
-        Field::Model => "--model",
-        Field::C1 => "--c1",
-        Field::C2 => "--c2",
-        Field::Alpha => "--alpha",
-        Field::KGriffith => "--k-griffith",
-        Field::WeightCoefficients => "--c1/--c2",
-        Field::Rtol => "--rtol",
-        Field::AdhesionSteps => "--adhesion-steps",
-        Field::AdhesionPoints => "--adhesion-points",
-        Field::AdhesionTol => "--adhesion-tol",
-        Field::SigmaMax => "--sigma-max",
-        Field::SigmaPoints => "--sigma-points",
-        Field::SweepFrom => "--from",
-        Field::SweepTo => "--to",
-        Field::SweepPoints => "--points",
-        Field::Grid => "--grid",
-        Field::GfmdTolerance => "--tolerance",
-        Field::MaxIterations => "--max-iterations",
-        Field::Bins => "--bins",
-        Field::SystemSize => "--size",
-        Field::HeightMap => "--surface",
-        Field::Seeds => "--seeds",
-        Field::Ladder => "--ladder",
-        Field::Other(k) if k == asperity::input::model::FUDGE_GAMMA_KEY => "--fudge-gamma",
-        Field::Other(k) if k == "fit" => "--fit",
-        Field::Other(k) if k == "reference" => "--reference",
-        other => other.key(),
-    }
-}
-
-/// An error in the command line's words: invalid fields are named by their flag.
-pub fn render_error(e: &Error) -> String {
-    match e {
-        Error::Invalid { field, value, allowed } => {
-            format!("invalid {} = {value}: allowed {allowed}", field_name(field))
-        }
-        e => e.to_string(),
-    }
-}
-
-/// Parses a count (a whole number ≥ 0); the library checks its range.
-pub fn whole_number(s: &str) -> std::result::Result<usize, String> {
-    whole_number_u64(s).and_then(|v| usize::try_from(v).map_err(|_| "a whole number".to_string()))
-}
-
-/// Parses a whole number ≥ 0 (e.g. a seed).
-pub fn whole_number_u64(s: &str) -> std::result::Result<u64, String> {
-    s.trim().parse::<u64>().map_err(|_| "a whole number >= 0".to_string())
-}
-
-/// A command-line parse error in one line, in the same shape as the other input errors:
-/// `invalid --flag = value: allowed …` where clap knows the flag and value, else clap's
-/// first line.
-pub fn clap_error_line(e: &clap::Error) -> String {
-    use clap::error::{ContextKind, ContextValue};
-    let text = |k| match e.get(k) {
-        Some(ContextValue::String(s)) => Some(s.clone()),
-        _ => None,
-    };
-    if let (Some(arg), Some(value)) = (text(ContextKind::InvalidArg), text(ContextKind::InvalidValue)) {
-        let flag = arg.split_whitespace().next().unwrap_or(&arg).to_string();
-        let allowed = match e.get(ContextKind::ValidValue) {
-            Some(ContextValue::Strings(v)) => v.join(", "),
-            _ => std::error::Error::source(e)
-                .map(|s| s.to_string())
-                .unwrap_or_else(|| "see --help".into()),
-        };
-        return format!(
-            "invalid {flag} = {}: allowed {allowed}",
-            asperity::error::fmt_text(&value)
-        );
-    }
-    if e.kind() == clap::error::ErrorKind::MissingRequiredArgument {
-        if let Some(ContextValue::Strings(missing)) = e.get(ContextKind::InvalidArg) {
-            let names: Vec<&str> = missing
-                .iter()
-                .map(|m| m.split_whitespace().next().unwrap_or(m))
-                .collect();
-            return format!(
-                "missing {}: required by the other flags given (see --help)",
-                names.join(", ")
-            );
-        }
-    }
-    let rendered = e.to_string();
-    let first = rendered.lines().next().unwrap_or("").trim();
-    first.strip_prefix("error: ").unwrap_or(first).to_string()
-}
-
 /// Runs the CLI; returns the process exit code.
 pub fn main() -> i32 {
     let cli = match Cli::try_parse() {
@@ -656,6 +563,9 @@ fn tour_entry(args: &TourArgs) -> Result<()> {
         return Ok(());
     }
     let t = Tour::resolve(&args.tour)?;
+    if !tour::BUILTIN.iter().any(|(n, _)| *n == args.tour) {
+        eprintln!("asperity tour: read {}", args.tour);
+    }
     let n = t.steps.len();
     if args.step < 1 || args.step as usize > n {
         return Err(Error::invalid_text(

@@ -43,22 +43,22 @@ pub struct SweepArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// The knob to sweep: pressure (p*), thickness (t*q_r) or gamma (gamma_s, J/m^2).
-    #[arg(long, value_enum, default_value_t = Over::Pressure)]
+    #[arg(long, value_enum, default_value_t = Over::Pressure, allow_hyphen_values = true)]
     pub over: Over,
     /// First value of the swept knob.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::sweep_end)]
     pub from: f64,
     /// Last value of the swept knob.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::sweep_end)]
     pub to: f64,
     /// Number of values from --from to --to (log-spaced; linear for gamma).
-    #[arg(long, default_value_t = 64, allow_hyphen_values = true, value_parser = super::whole_number)]
+    #[arg(long, default_value_t = 64, allow_hyphen_values = true, value_parser = super::parse::count_in("points", 1, 100_000))]
     pub points: usize,
     /// Reduced pressure p* of a thickness or gamma sweep (default: the preset's).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number(Field::Pressure))]
     pub pressure: Option<f64>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]
+    #[arg(long, value_enum, default_value_t = SweepFormat::Csv, allow_hyphen_values = true)]
     pub format: SweepFormat,
 }
 

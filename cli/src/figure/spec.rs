@@ -329,12 +329,13 @@ impl FigureSpec {
 
 /// Resolves `id_or_path`: an existing file, else a built-in figure id.
 pub fn resolve(id_or_path: &str) -> Result<FigureSpec> {
+    // a built-in id wins over a file of the same name in the working folder
+    if let Some((_, text)) = BUILTIN.iter().find(|(n, _)| *n == id_or_path) {
+        return FigureSpec::parse(text, &format!("figures/fig-{id_or_path}.toml"));
+    }
     let p = Path::new(id_or_path);
     if p.is_file() {
         return FigureSpec::load(p);
-    }
-    if let Some((_, text)) = BUILTIN.iter().find(|(n, _)| *n == id_or_path) {
-        return FigureSpec::parse(text, &format!("figures/fig-{id_or_path}.toml"));
     }
     Err(Error::field(
         "figure",

@@ -458,6 +458,10 @@ impl Tour {
     /// Resolves a tour like a preset: an existing file, `tours/NAME.toml` under the working
     /// directory, a built-in tour.
     pub fn resolve(name_or_path: &str) -> Result<Tour> {
+        // a built-in name wins over a file of the same name in the working folder
+        if let Some((_, text)) = BUILTIN.iter().find(|(n, _)| *n == name_or_path) {
+            return Tour::parse(text, name_or_path);
+        }
         let p = Path::new(name_or_path);
         if p.is_file() {
             return Tour::load(p);
@@ -465,9 +469,6 @@ impl Tour {
         let local = PathBuf::from("tours").join(format!("{name_or_path}.toml"));
         if !name_or_path.contains('/') && local.is_file() {
             return Tour::load(&local);
-        }
-        if let Some((_, text)) = BUILTIN.iter().find(|(n, _)| *n == name_or_path) {
-            return Tour::parse(text, name_or_path);
         }
         let known: Vec<String> = list_available().into_iter().map(|(n, _)| n).collect();
         Err(Error::Preset {

@@ -88,9 +88,10 @@ mod shooting;
 mod strategy;
 mod walls;
 
+pub(crate) use strategy::solve_checked;
 pub use strategy::{solve, solve_continued, EXTRAPOLATE_MAX};
 
-use crate::error::Result;
+use crate::error::{check_in, Field, Result};
 use crate::input::scene::Scene;
 use serde::{Serialize, Serializer};
 use std::fmt;
@@ -111,6 +112,39 @@ pub struct AdhesionAccuracy {
     /// sweeps: the branches of the previous load are tracked, and the scan runs only when they
     /// no longer account for every sign change of H.
     pub explore_branches: bool,
+}
+
+/// Allowed march steps per ln q: at least 4 because the engine's error estimate compares
+/// with half the resolution; the same range wherever the knob is set.
+pub const ADHESION_STEPS_RANGE: (f64, f64) = (4.0, 1e4);
+/// Allowed grid points per width (at least 4, as [`ADHESION_STEPS_RANGE`]).
+pub const ADHESION_POINTS_RANGE: (f64, f64) = (4.0, 1e3);
+/// Allowed self-consistency tolerance |γ(q_s)/γ_s − 1|.
+pub const ADHESION_TOL_RANGE: (f64, f64) = (1e-14, 1e-1);
+
+impl AdhesionAccuracy {
+    /// Checks the knobs against [`ADHESION_STEPS_RANGE`], [`ADHESION_POINTS_RANGE`] and
+    /// [`ADHESION_TOL_RANGE`] (the engine and [`solve`] use this one check).
+    ///
+    /// # Errors
+    /// [`crate::Error::Invalid`] naming [`Field::AdhesionSteps`], [`Field::AdhesionPoints`] or
+    /// [`Field::AdhesionTol`], or [`Field::MaxIterations`] for zero marches.
+    pub fn validate(&self) -> Result<()> {
+        check_in(
+            Field::AdhesionSteps,
+            self.steps_per_ln_q,
+            ADHESION_STEPS_RANGE.0,
+            ADHESION_STEPS_RANGE.1,
+        )?;
+        check_in(
+            Field::AdhesionPoints,
+            self.points_per_width,
+            ADHESION_POINTS_RANGE.0,
+            ADHESION_POINTS_RANGE.1,
+        )?;
+        check_in(Field::AdhesionTol, self.tol, ADHESION_TOL_RANGE.0, ADHESION_TOL_RANGE.1)?;
+        Ok(())
+    }
 }
 
 impl Default for AdhesionAccuracy {

@@ -9,27 +9,13 @@ use super::propagator::{gauss, shift, State};
 use super::roots::{find_roots, Root};
 use super::walls::sigma_at;
 use super::{AdhesionAccuracy, AdhesiveSolution, Branch, BranchState};
-use crate::error::{Error, Field, Result};
+use crate::error::{Error, Result};
 use crate::input::scene::Scene;
 use std::sync::atomic::AtomicBool;
 
 /// The largest residual |γ(q_s)/γ_s − 1| accepted for a root whose bracket collapsed onto a
 /// jump of the discrete H (measured: up to 1.4e-4 on system 2, model 4, t·q_r = 0.15).
 const COLLAPSED: f64 = 1e-3;
-
-/// Checks the solver's own knobs.
-fn validate(acc: &AdhesionAccuracy) -> Result<()> {
-    for (name, v, lo, hi) in [
-        (Field::AdhesionSteps, acc.steps_per_ln_q, 2.0, 1e4),
-        (Field::AdhesionPoints, acc.points_per_width, 2.0, 1e3),
-        (Field::AdhesionTol, acc.tol, 1e-15, 1e-1),
-    ] {
-        if !(v >= lo && v <= hi) {
-            return Err(Error::invalid(name, v, format!("{lo} <= value <= {hi}")));
-        }
-    }
-    Ok(())
-}
 
 /// Solves the adhesive theory for a scene with γ_s > 0 (see the module docs). `warm` is a
 /// previous solution of a nearby scene: its branches' C = γ(q_L) are re-bracketed first
@@ -72,7 +58,18 @@ pub fn solve_continued(
     cancel: Option<&AtomicBool>,
 ) -> Result<AdhesiveSolution> {
     scene.validate()?;
-    validate(acc)?;
+    acc.validate()?;
+    solve_checked(scene, acc, path, cancel)
+}
+
+/// [`solve_continued`] on a validated scene, at any resolution the march can run (the
+/// engine's error estimate probes at half the points per width, below the allowed minimum).
+pub(crate) fn solve_checked(
+    scene: &Scene,
+    acc: &AdhesionAccuracy,
+    path: &[&AdhesiveSolution],
+    cancel: Option<&AtomicBool>,
+) -> Result<AdhesiveSolution> {
     let roots_of =
         |w: &AdhesiveSolution| -> Vec<f64> { w.branches.iter().map(|b| b.gamma_coarse * w.gamma_s).collect() };
     let (warm_c, older): (Vec<f64>, Option<(Vec<f64>, f64)>) = match path {
