@@ -109,7 +109,7 @@ fn custom_model_from_flags() {
 fn bad_flags_give_one_line_errors() {
     let cases: [(&[&str], &str); 6] = [
         (&["run", "--thickness", "-1"], "--thickness = -1"),
-        (&["run", "--pressure", "nan"], "--pressure = NaN"),
+        (&["run", "--pressure", "nan"], "--pressure = nan"),
         (&["run", "--pressure", "-0.1"], "--pressure = -0.1"),
         (&["run", "--model", "9"], "--model = 9"),
         (&["run", "--preset", "nope"], "known presets"),
