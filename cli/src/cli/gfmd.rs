@@ -78,7 +78,7 @@ pub struct GfmdArgs {
     #[arg(long, conflicts_with = "surface")]
     pub extrapolate: bool,
     /// Points per short wavelength lambda_s/da of the --extrapolate ladder.
-    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, value_parser = super::parse::ladder_rung)]
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, value_parser = ladder_rung)]
     pub ladder: Vec<f64>,
     /// Repeat over K realisations (seeds S..S+K-1) and report mean +- standard error.
     #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::parse::count_in("seeds", 1, MAX_SEEDS), conflicts_with = "surface")]
@@ -503,4 +503,14 @@ fn table(o: &GfmdResult) -> String {
         t.push_str(&reduction_table(r));
     }
     t.trim_end().to_string()
+}
+
+/// A value parser for one rung of `gfmd --ladder` (λ_s/Δa in [`LADDER_RANGE`]).
+pub fn ladder_rung(s: &str) -> std::result::Result<f64, String> {
+    let (lo, hi) = LADDER_RANGE;
+    let r = asperity::error::Range::closed(lo, hi);
+    match s.trim().parse::<f64>() {
+        Ok(x) if r.contains(x) => Ok(x),
+        _ => Err(r.describe("lambda_s/da")),
+    }
 }

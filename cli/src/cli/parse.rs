@@ -256,13 +256,3 @@ pub fn step(s: &str) -> std::result::Result<i64, String> {
         _ => Err("a whole number 1 <= step <= the tour's number of steps".into()),
     }
 }
-
-/// A value parser for one rung of `gfmd --ladder` (λ_s/Δa in [`super::gfmd::LADDER_RANGE`]).
-pub fn ladder_rung(s: &str) -> std::result::Result<f64, String> {
-    let (lo, hi) = super::gfmd::LADDER_RANGE;
-    let r = Range::closed(lo, hi);
-    match s.trim().parse::<f64>() {
-        Ok(x) if r.contains(x) => Ok(x),
-        _ => Err(r.describe("lambda_s/da")),
-    }
-}
