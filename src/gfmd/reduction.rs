@@ -57,7 +57,7 @@ impl Invariants {
     pub fn of(scene: &Scene) -> Option<Invariants> {
         let sa = match &scene.spectrum {
             Spectrum::SelfAffine(s) => s,
-            Spectrum::Discrete(_) => return None,
+            Spectrum::Discrete(_) | Spectrum::Tabulated(_) => return None,
         };
         let adh = scene.gamma > 0.0;
         Some(Invariants {
@@ -105,9 +105,9 @@ pub struct Reduction {
 pub fn reduce(full: &Scene, grid: &GridSpec, rescale: bool) -> Result<(Scene, Reduction)> {
     let sa = match &full.spectrum {
         Spectrum::SelfAffine(s) => *s,
-        Spectrum::Discrete(_) => {
+        Spectrum::Discrete(_) | Spectrum::Tabulated(_) => {
             return Err(crate::error::Error::Unsupported(
-                "a reduced grid needs a self-affine spectrum".into(),
+                "a generated map needs a self-affine spectrum (a tabulated one needs its height map)".into(),
             ))
         }
     };

@@ -244,7 +244,7 @@ pub fn prepare(setup: &GfmdSetup) -> Result<Prepared> {
             let (red, reduction) = reduce(scene, &setup.grid, setup.rescale)?;
             let spec = match &red.spectrum {
                 Spectrum::SelfAffine(sa) => *sa,
-                Spectrum::Discrete(_) => unreachable!("reduce gives a self-affine spectrum"),
+                _ => unreachable!("reduce gives a self-affine spectrum"),
             };
             let surface = heightmap::generate(&spec, setup.grid.n(), setup.seed)?;
             Ok(Prepared {

@@ -1,4 +1,7 @@
 //! The rough surface: its height spectrum C(q) and random height maps drawn from it.
 
 pub mod heightmap;
+pub mod psd;
+pub mod readers;
 pub mod spectrum;
+pub mod tabulated;

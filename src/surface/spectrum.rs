@@ -19,6 +19,7 @@
 //! bandwidth λ_r/λ_s up to 10⁶ and beyond.
 
 use crate::error::{check_in, Error, Field, Result};
+pub use crate::surface::tabulated::Tabulated;
 use std::f64::consts::PI;
 
 /// Allowed lengths L, λ_r, λ_s (m): from a picometre to a kilometre, so that q and the
@@ -273,13 +274,15 @@ impl Discrete {
     }
 }
 
-/// Either spectrum; the theory runs on both.
+/// A height spectrum; the theory runs on each.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Spectrum {
     /// Ideal continuum PSD.
     SelfAffine(SelfAffine),
     /// Modes of an actual surface.
     Discrete(Discrete),
+    /// A tabulated continuum PSD (a measured spectrum), log–log interpolated.
+    Tabulated(Tabulated),
 }
 
 /// Hashes the spectrum by the bit patterns of its parameters (or modes), so equal spectra
@@ -303,6 +306,12 @@ impl std::hash::Hash for Spectrum {
                     m.dm.to_bits().hash(h);
                 }
             }
+            Spectrum::Tabulated(t) => {
+                2u8.hash(h);
+                for x in t.q.iter().chain(&t.psd).chain([&t.q_min, &t.q_max, &t.q_r]) {
+                    x.to_bits().hash(h);
+                }
+            }
         }
     }
 }
@@ -313,6 +322,7 @@ impl Spectrum {
         match self {
             Spectrum::SelfAffine(s) => s.q_l(),
             Spectrum::Discrete(d) => 2.0 * PI / d.system_size,
+            Spectrum::Tabulated(t) => t.q_min,
         }
     }
     /// Roll-off wave number q_r.
@@ -320,6 +330,7 @@ impl Spectrum {
         match self {
             Spectrum::SelfAffine(s) => s.q_r(),
             Spectrum::Discrete(d) => d.q_r,
+            Spectrum::Tabulated(t) => t.q_r,
         }
     }
     /// Largest wave number q_s.
@@ -327,6 +338,7 @@ impl Spectrum {
         match self {
             Spectrum::SelfAffine(s) => s.q_s(),
             Spectrum::Discrete(d) => d.modes.last().map_or(0.0, |m| m.q),
+            Spectrum::Tabulated(t) => t.q_max,
         }
     }
     /// ∫ qⁿ dm.
@@ -334,6 +346,7 @@ impl Spectrum {
         match self {
             Spectrum::SelfAffine(s) => s.moment(n),
             Spectrum::Discrete(d) => d.moment(n),
+            Spectrum::Tabulated(t) => t.moment(n),
         }
     }
     /// h_rms (m).
@@ -359,7 +372,43 @@ impl Spectrum {
                     vec![s.q_l(), s.q_s()]
                 }
             }
+            Spectrum::Tabulated(t) => t.breakpoints().to_vec(),
             Spectrum::Discrete(_) => vec![],
+        }
+    }
+
+    /// Whether the spectrum is a continuum PSD (self-affine or tabulated), integrated by
+    /// quadrature between [`Spectrum::breakpoints`], rather than a set of modes.
+    pub fn is_continuum(&self) -> bool {
+        !matches!(self, Spectrum::Discrete(_))
+    }
+
+    /// dm/d(ln q) = 2π q² C(q) of a continuum spectrum (0 for a discrete one).
+    #[inline]
+    pub fn dm_dlnq(&self, q: f64) -> f64 {
+        match self {
+            Spectrum::SelfAffine(s) => s.dm_dlnq(q),
+            Spectrum::Tabulated(t) => 2.0 * PI * q * q * t.psd_at(q),
+            Spectrum::Discrete(_) => 0.0,
+        }
+    }
+
+    /// C(q) in m⁴ of a continuum spectrum (0 for a discrete one).
+    pub fn psd(&self, q: f64) -> f64 {
+        match self {
+            Spectrum::SelfAffine(s) => s.psd(q),
+            Spectrum::Tabulated(t) => t.psd_at(q),
+            Spectrum::Discrete(_) => 0.0,
+        }
+    }
+
+    /// What the spectrum is, for output: "self-affine", "discrete" (a map's modes) or
+    /// "tabulated".
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Spectrum::SelfAffine(_) => "self-affine",
+            Spectrum::Discrete(_) => "discrete",
+            Spectrum::Tabulated(_) => "tabulated",
         }
     }
 
@@ -369,7 +418,7 @@ impl Spectrum {
     pub fn nodes(&self, panel_width: f64) -> Vec<Mode> {
         match self {
             Spectrum::Discrete(d) => d.modes.clone(),
-            Spectrum::SelfAffine(s) => {
+            Spectrum::SelfAffine(_) | Spectrum::Tabulated(_) => {
                 let bp = self.breakpoints();
                 let mut out = Vec::new();
                 for w in bp.windows(2) {
@@ -384,7 +433,7 @@ impl Spectrum {
                             let q = lnq.exp().clamp(w[0], w[1]);
                             out.push(Mode {
                                 q,
-                                dm: 0.5 * h * wt * s.dm_dlnq_in(q, w[0], w[1]),
+                                dm: 0.5 * h * wt * self.dm_dlnq_in(q, w[0], w[1]),
                             });
                         };
                         for &(x, wt) in GL8.iter().rev() {
@@ -403,6 +452,16 @@ impl Spectrum {
     /// ∫ F(q) dm using [`Spectrum::nodes`] with [`PANEL_WIDTH_LN`].
     pub fn integrate(&self, f: impl Fn(f64) -> f64) -> f64 {
         self.nodes(PANEL_WIDTH_LN).iter().map(|m| f(m.q) * m.dm).sum()
+    }
+}
+
+impl Spectrum {
+    /// dm/dln q of a continuum spectrum on the segment [lo, hi] (see [`SelfAffine`]'s).
+    fn dm_dlnq_in(&self, q: f64, lo: f64, hi: f64) -> f64 {
+        match self {
+            Spectrum::SelfAffine(s) => s.dm_dlnq_in(q, lo, hi),
+            other => other.dm_dlnq(q),
+        }
     }
 }
 

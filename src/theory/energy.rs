@@ -21,9 +21,9 @@ use crate::surface::spectrum::{Mode, Spectrum, GL8, PANEL_WIDTH_LN};
 
 /// Quadrature nodes (q, dm) for the energy integral (see the module docs).
 pub fn energy_nodes(spectrum: &Spectrum) -> Vec<Mode> {
-    let Spectrum::SelfAffine(sa) = spectrum else {
+    if !spectrum.is_continuum() {
         return spectrum.nodes(PANEL_WIDTH_LN);
-    };
+    }
     let bp = spectrum.breakpoints();
     let (lo, hi) = (bp[0], bp[1]);
     let (ya, yb) = (((hi - lo) * 1e-16).ln(), (hi - lo).ln());
@@ -37,7 +37,10 @@ pub fn energy_nodes(spectrum: &Spectrum) -> Vec<Mode> {
             let d = (mid + 0.5 * h * x).exp();
             let q = (lo + d).min(hi);
             // dm = 2πqC dq, dq = d·du
-            let c = if bp.len() > 2 { sa.c0 } else { sa.psd(q) };
+            let c = match spectrum {
+                Spectrum::SelfAffine(sa) if bp.len() > 2 => sa.c0,
+                other => other.psd(q),
+            };
             out.push(Mode {
                 q,
                 dm: 0.5 * h * wt * 2.0 * std::f64::consts::PI * q * c * d,

@@ -271,13 +271,13 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
     let out_q = resolution_grid(scene, acc.resolution_points);
 
     let (v_end, err_v, evaluations, resolution, trajectory) = match &scene.spectrum {
-        Spectrum::SelfAffine(sa) => {
-            let sa = *sa;
+        Spectrum::SelfAffine(_) | Spectrum::Tabulated(_) => {
+            let spec = &scene.spectrum;
             let mut rhs = |s: f64, v: f64| -> f64 {
                 let q = s.exp();
                 let a = area_of_variance(p, v);
                 let f = crate::elastic::slab::slab_factor_at(q, t);
-                model.broadening(a) * f * f * q * q * sa.dm_dlnq(q) / (4.0 * g2)
+                model.broadening(a) * f * f * q * q * spec.dm_dlnq(q) / (4.0 * g2)
             };
             // Absolute tolerance, scaled by the size of the answer: v(q_s) lies between
             // W_min^{2α}·v₁ and v₁ with v₁ = ∫f²q²dm/(4ḡ²) (the W = 1 variance). Errors below

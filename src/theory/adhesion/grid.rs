@@ -76,7 +76,8 @@ pub(super) fn build_grid(scene: &Scene, steps_per_ln_q: f64) -> Grid {
     let g2 = scene.spectrum.moment(2);
     let es = scene.modulus;
     match &scene.spectrum {
-        Spectrum::SelfAffine(sa) => {
+        Spectrum::SelfAffine(_) | Spectrum::Tabulated(_) => {
+            let sa = &scene.spectrum;
             let bp = scene.spectrum.breakpoints();
             let mut q = vec![bp[0]];
             let mut steps = Vec::new();

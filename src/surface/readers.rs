@@ -1,0 +1,504 @@
+//! Height maps from files, the format chosen by the file's extension:
+//!
+//! | extension | format | lateral size | height unit |
+//! |---|---|---|---|
+//! | `.txt` `.asc` `.dat` | text matrix: one row (fixed y) per line, whitespace-separated; `#` lines are comments, where Gwyddion's text export's `# Width: 10.0 µm` and `# Value units: m` are read | `# Width:` line, else the caller's | `# Value units:`, else the caller's, else m |
+//! | `.xyz` | columns `x y z` (or `x z` for a line scan), whitespace, comma or semicolon separated, on a regular grid in any order | n·Δx from the coordinates, in the heights' unit | the caller's, else m |
+//! | `.npy` | NumPy array, 2-D (rows = y) or 1-D (a line scan); f64, f32, i64, i32, i16 | the caller's | the caller's, else m |
+//! | `.gsf` | Gwyddion simple field: `Gwyddion Simple Field 1.0`, `Key = Value` lines (XRes, YRes, XReal, YReal, XYUnits, ZUnits), NUL padding to a multiple of 4 bytes, XRes·YRes little-endian f32 | XReal | ZUnits, else the caller's, else m |
+//!
+//! A lateral size given by the caller overrides the file's (it is the x side, n_x·Δa). Maps need
+//! square pixels (Δx = Δy). A single row (or a single column, or `x z` columns) is a line scan:
+//! a [`Surface`] with ny = 1. Instrument formats (x3p, sdf, opd, datx…): no maintained Rust
+//! crate reads one, so none is read here; export to `.gsf` or `.xyz` (Gwyddion reads them all).
+//!
+//! Errors name the file, the line (text formats) or byte offset (binary ones) and what is wrong.
+
+use crate::error::{fmt_value, Error, Field, Result};
+use crate::surface::heightmap::{Surface, MAX_GRID};
+use crate::surface::spectrum::LENGTH_RANGE_M;
+use std::path::Path;
+
+/// A length unit of heights or coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Unit {
+    /// metre
+    M,
+    /// millimetre
+    Mm,
+    /// micrometre
+    Um,
+    /// nanometre
+    Nm,
+    /// picometre
+    Pm,
+}
+
+impl Unit {
+    /// Metres per unit.
+    pub fn metres(self) -> f64 {
+        match self {
+            Unit::M => 1.0,
+            Unit::Mm => 1e-3,
+            Unit::Um => 1e-6,
+            Unit::Nm => 1e-9,
+            Unit::Pm => 1e-12,
+        }
+    }
+    /// Parses `m`, `mm`, `um` (`µm`, `μm`), `nm`, `pm`.
+    pub fn parse(s: &str) -> Option<Unit> {
+        match s.trim() {
+            "m" => Some(Unit::M),
+            "mm" => Some(Unit::Mm),
+            "um" | "µm" | "μm" => Some(Unit::Um),
+            "nm" => Some(Unit::Nm),
+            "pm" => Some(Unit::Pm),
+            _ => None,
+        }
+    }
+}
+
+/// What the caller knows about a file.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ReadOptions {
+    /// Lateral size (m) of the x side; overrides the file's.
+    pub size: Option<f64>,
+    /// Unit of the heights where the file does not state one.
+    pub height_unit: Option<Unit>,
+}
+
+/// The formats, by extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// `.txt`, `.asc`, `.dat`.
+    Text,
+    /// `.xyz`.
+    Xyz,
+    /// `.npy`.
+    Npy,
+    /// `.gsf`.
+    Gsf,
+}
+
+/// The format of a file name, or an error naming the allowed extensions.
+///
+/// # Errors
+/// [`Error::Invalid`] for an unknown extension.
+pub fn format_of(path: &Path) -> Result<Format> {
+    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+    match ext.as_str() {
+        "txt" | "asc" | "dat" => Ok(Format::Text),
+        "xyz" => Ok(Format::Xyz),
+        "npy" => Ok(Format::Npy),
+        "gsf" => Ok(Format::Gsf),
+        _ => Err(Error::invalid_text(
+            Field::HeightMap,
+            path.display().to_string(),
+            "a file ending in .txt, .asc, .dat, .xyz, .npy or .gsf",
+        )),
+    }
+}
+
+fn bad(source: &str, at: String, what: impl std::fmt::Display, allowed: &str) -> Error {
+    Error::invalid_text(Field::HeightMap, format!("{source}:{at}: {what}"), allowed.to_string())
+}
+
+/// Reads a height map (module docs).
+///
+/// # Errors
+/// [`Error::Io`] when the file cannot be read, [`Error::Invalid`] naming the file, the place
+/// and the fault otherwise.
+pub fn read(path: &Path, opts: &ReadOptions) -> Result<Surface> {
+    let format = format_of(path)?;
+    let bytes = std::fs::read(path).map_err(|e| Error::Io(format!("cannot read surface {}: {e}", path.display())))?;
+    parse(&bytes, format, &path.display().to_string(), opts)
+}
+
+/// Parses a height map held in memory; `source` names it in errors.
+///
+/// # Errors
+/// As [`read`].
+pub fn parse(bytes: &[u8], format: Format, source: &str, opts: &ReadOptions) -> Result<Surface> {
+    let text = |b: &[u8]| -> Result<String> {
+        String::from_utf8(b.to_vec()).map_err(|e| {
+            bad(source, format!("byte {}", e.utf8_error().valid_up_to()), "not UTF-8 text", "a text file")
+        })
+    };
+    let raw = match format {
+        Format::Text => parse_text(&text(bytes)?, source)?,
+        Format::Xyz => parse_xyz(&text(bytes)?, source)?,
+        Format::Npy => parse_npy(bytes, source)?,
+        Format::Gsf => parse_gsf(bytes, source)?,
+    };
+    raw.into_surface(source, opts)
+}
+
+/// A grid as read, before units and size are applied.
+struct Raw {
+    nx: usize,
+    ny: usize,
+    values: Vec<f64>,
+    /// Lateral x side in the file's length unit (`size_unit`) or metres.
+    size_x: Option<f64>,
+    size_y: Option<f64>,
+    /// Unit of the lateral size; None: the heights' unit.
+    size_unit: Option<Unit>,
+    /// Unit of the heights stated in the file.
+    height_unit: Option<Unit>,
+}
+
+impl Raw {
+    fn into_surface(self, source: &str, opts: &ReadOptions) -> Result<Surface> {
+        let (nx, ny) = (self.nx, self.ny);
+        if nx > MAX_GRID || ny > MAX_GRID || nx < 2 {
+            return Err(bad(
+                source,
+                "shape".into(),
+                format!("{nx} x {ny} points"),
+                &format!("2 <= points per row <= {MAX_GRID}, rows <= {MAX_GRID}"),
+            ));
+        }
+        let zu = self.height_unit.or(opts.height_unit).unwrap_or(Unit::M);
+        let lu = self.size_unit.unwrap_or(zu);
+        let size = match (opts.size, self.size_x) {
+            (Some(l), _) => l,
+            (None, Some(l)) => l * lu.metres(),
+            (None, None) => {
+                return Err(Error::invalid_text(
+                    Field::SystemSize,
+                    format!("none ({source} gives no lateral size)"),
+                    "the map's x side L in metres",
+                ))
+            }
+        };
+        crate::error::check_in(Field::SystemSize, size, LENGTH_RANGE_M.0, LENGTH_RANGE_M.1)?;
+        let spacing = size / nx as f64;
+        if let (None, Some(sy), true) = (opts.size, self.size_y, ny > 1) {
+            let dy = sy * lu.metres() / ny as f64;
+            if ((dy / spacing) - 1.0).abs() > 1e-3 {
+                return Err(bad(
+                    source,
+                    "size".into(),
+                    format!("pixels of {} m x {} m", fmt_value(spacing), fmt_value(dy)),
+                    "square pixels (equal spacing in x and y)",
+                ));
+            }
+        }
+        let f = zu.metres();
+        Surface::new(nx, ny, spacing, self.values.into_iter().map(|v| v * f).collect())
+    }
+}
+
+const TEXT_ALLOWED: &str = "a matrix of finite heights, one row per line, the same number in each";
+
+/// A length with unit, e.g. `10.000 µm`.
+fn length_with_unit(s: &str) -> Option<(f64, Option<Unit>)> {
+    let mut it = s.split_whitespace();
+    let v: f64 = it.next()?.parse().ok()?;
+    Some((v, it.next().and_then(Unit::parse)))
+}
+
+fn parse_text(text: &str, source: &str) -> Result<Raw> {
+    let mut rows: Vec<Vec<f64>> = Vec::new();
+    let (mut width, mut height, mut zunit) = (None, None, None);
+    for (i, line) in text.lines().enumerate() {
+        let t = line.trim();
+        if let Some(c) = t.strip_prefix('#') {
+            // Gwyddion's text export header
+            let c = c.trim();
+            if let Some(v) = c.strip_prefix("Width:") {
+                width = length_with_unit(v);
+            } else if let Some(v) = c.strip_prefix("Height:") {
+                height = length_with_unit(v);
+            } else if let Some(v) = c.strip_prefix("Value units:") {
+                zunit = Some(Unit::parse(v).ok_or_else(|| bad(source, format!("{}", i + 1), format!("height unit '{}'", v.trim()), "m, mm, um, nm or pm"))?);
+            }
+            continue;
+        }
+        if t.is_empty() {
+            continue;
+        }
+        let mut row = Vec::new();
+        for tok in t.split(|c: char| c.is_whitespace() || c == ',' || c == ';').filter(|s| !s.is_empty()) {
+            let v: f64 = tok.parse().map_err(|_| bad(source, format!("{}", i + 1), format!("'{tok}' (not a number)"), TEXT_ALLOWED))?;
+            if !v.is_finite() {
+                return Err(bad(source, format!("{}", i + 1), format!("'{tok}' (not finite)"), TEXT_ALLOWED));
+            }
+            row.push(v);
+        }
+        if let Some(r0) = rows.first() {
+            if row.len() != r0.len() {
+                return Err(bad(source, format!("{}", i + 1), format!("a row of {} values (the first has {})", row.len(), r0.len()), TEXT_ALLOWED));
+            }
+        }
+        rows.push(row);
+    }
+    if rows.is_empty() {
+        return Err(bad(source, "1".into(), "no data", TEXT_ALLOWED));
+    }
+    let (mut ny, mut nx) = (rows.len(), rows[0].len());
+    if nx == 1 {
+        // a single column: a line scan
+        (nx, ny) = (ny, 1);
+    }
+    let values = rows.concat();
+    Ok(Raw {
+        nx,
+        ny,
+        values,
+        size_x: width.map(|w| w.0),
+        size_y: height.map(|h| h.0),
+        size_unit: width.map(|w| w.1.unwrap_or(Unit::M)),
+        height_unit: zunit,
+    })
+}
+
+fn parse_xyz(text: &str, source: &str) -> Result<Raw> {
+    const ALLOWED: &str = "columns x y z (or x z) of finite numbers on a regular grid";
+    let mut pts: Vec<Vec<f64>> = Vec::new();
+    let mut lines = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let t = line.trim();
+        if t.is_empty() || t.starts_with('#') {
+            continue;
+        }
+        let mut row = Vec::with_capacity(3);
+        for tok in t.split(|c: char| c.is_whitespace() || c == ',' || c == ';').filter(|s| !s.is_empty()) {
+            let v: f64 = tok.parse().map_err(|_| bad(source, format!("{}", i + 1), format!("'{tok}' (not a number)"), ALLOWED))?;
+            if !v.is_finite() {
+                return Err(bad(source, format!("{}", i + 1), format!("'{tok}' (not finite)"), ALLOWED));
+            }
+            row.push(v);
+        }
+        let want = pts.first().map_or(row.len(), |r| r.len());
+        if !(row.len() == 2 || row.len() == 3) || row.len() != want {
+            return Err(bad(source, format!("{}", i + 1), format!("{} columns", row.len()), ALLOWED));
+        }
+        pts.push(row);
+        lines.push(i + 1);
+    }
+    if pts.len() < 2 {
+        return Err(bad(source, "1".into(), format!("{} points", pts.len()), ALLOWED));
+    }
+    let line_scan = pts[0].len() == 2;
+    // the regular axis of one coordinate: sorted distinct values, equally spaced
+    let axis = |k: usize| -> Result<(f64, f64, usize)> {
+        let mut v: Vec<f64> = pts.iter().map(|p| p[k]).collect();
+        v.sort_by(f64::total_cmp);
+        let span = v[v.len() - 1] - v[0];
+        v.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * span.abs().max(f64::MIN_POSITIVE));
+        let n = v.len();
+        if n < 2 {
+            return Ok((v[0], 1.0, 1));
+        }
+        let d = span / (n - 1) as f64;
+        if let Some(w) = v.windows(2).find(|w| ((w[1] - w[0]) / d - 1.0).abs() > 1e-3) {
+            return Err(bad(source, "grid".into(), format!("uneven spacing at {} = {}", ["x", "y"][k], fmt_value(w[1])), ALLOWED));
+        }
+        Ok((v[0], d, n))
+    };
+    let (x0, dx, nx) = axis(0)?;
+    let (y0, dy, ny) = if line_scan { (0.0, dx, 1) } else { axis(1)? };
+    if nx * ny != pts.len() {
+        return Err(bad(source, "grid".into(), format!("{} points for a {nx} x {ny} grid", pts.len()), ALLOWED));
+    }
+    let mut values = vec![f64::NAN; nx * ny];
+    for (p, line) in pts.iter().zip(&lines) {
+        let i = ((p[0] - x0) / dx).round() as usize;
+        let j = if line_scan { 0 } else { ((p[1] - y0) / dy).round() as usize };
+        let k = j * nx + i;
+        if !values[k].is_nan() {
+            return Err(bad(source, format!("{line}"), "a repeated grid point", ALLOWED));
+        }
+        values[k] = p[p.len() - 1];
+    }
+    Ok(Raw {
+        nx,
+        ny,
+        values,
+        size_x: Some(dx * nx as f64),
+        size_y: Some(dy * ny as f64),
+        size_unit: None,
+        height_unit: None,
+    })
+}
+
+fn parse_npy(bytes: &[u8], source: &str) -> Result<Raw> {
+    const ALLOWED: &str = "a 1-D or 2-D NumPy array of floats or integers";
+    let file = npyz::NpyFile::new(bytes).map_err(|e| bad(source, "byte 0".into(), format!("not a NumPy file ({e})"), ALLOWED))?;
+    let shape = file.shape().to_vec();
+    let fortran = file.order() == npyz::Order::Fortran;
+    let (ny, nx) = match shape.as_slice() {
+        [n] => (1usize, *n as usize),
+        [r, c] => (*r as usize, *c as usize),
+        s => return Err(bad(source, "header".into(), format!("an array of shape {s:?}"), ALLOWED)),
+    };
+    let dtype = file.dtype();
+    let values: Vec<f64> = match file.data::<f64>() {
+        Ok(r) => r.collect::<std::io::Result<_>>(),
+        Err(_) => {
+            let file = npyz::NpyFile::new(bytes).map_err(|e| bad(source, "byte 0".into(), e, ALLOWED))?;
+            let ts = match &dtype {
+                npyz::DType::Plain(t) => t.to_string(),
+                other => format!("{:?}", other.descr()),
+            };
+            macro_rules! widen {
+                ($t:ty) => {
+                    file.data::<$t>()
+                        .map_err(|_| bad(source, "header".into(), format!("dtype {ts}"), ALLOWED))?
+                        .map(|v| v.map(|x| x as f64))
+                        .collect::<std::io::Result<_>>()
+                };
+            }
+            match ts.get(1..).unwrap_or("") {
+                "f4" => widen!(f32),
+                "i8" => widen!(i64),
+                "i4" => widen!(i32),
+                "i2" => widen!(i16),
+                _ => return Err(bad(source, "header".into(), format!("dtype {ts}"), ALLOWED)),
+            }
+        }
+    }
+    .map_err(|e| bad(source, "data".into(), format!("truncated or unreadable data ({e})"), ALLOWED))?;
+    if values.len() != nx * ny {
+        return Err(bad(source, "data".into(), format!("{} values for shape {shape:?}", values.len()), ALLOWED));
+    }
+    let values = if fortran && ny > 1 {
+        (0..nx * ny).map(|k| values[(k % nx) * ny + k / nx]).collect()
+    } else {
+        values
+    };
+    if let Some(k) = values.iter().position(|v| !v.is_finite()) {
+        return Err(bad(source, format!("element {k}"), "a height that is not finite", ALLOWED));
+    }
+    Ok(Raw {
+        nx,
+        ny,
+        values,
+        size_x: None,
+        size_y: None,
+        size_unit: None,
+        height_unit: None,
+    })
+}
+
+const GSF_MAGIC: &str = "Gwyddion Simple Field 1.0";
+
+fn parse_gsf(bytes: &[u8], source: &str) -> Result<Raw> {
+    const ALLOWED: &str = "a Gwyddion simple field (header, NUL padding, little-endian f32 data)";
+    if !bytes.starts_with(GSF_MAGIC.as_bytes()) {
+        return Err(bad(source, "byte 0".into(), format!("no '{GSF_MAGIC}' line"), ALLOWED));
+    }
+    let nul = bytes.iter().position(|&b| b == 0).ok_or_else(|| bad(source, format!("byte {}", bytes.len()), "no NUL padding after the header", ALLOWED))?;
+    let header = std::str::from_utf8(&bytes[..nul]).map_err(|e| bad(source, format!("byte {}", e.valid_up_to()), "a header that is not UTF-8", ALLOWED))?;
+    let data_at = nul.div_ceil(4) * 4 + if nul.is_multiple_of(4) { 4 } else { 0 };
+    let mut keys = std::collections::HashMap::new();
+    for (i, line) in header.lines().enumerate().skip(1) {
+        let t = line.trim();
+        if t.is_empty() {
+            continue;
+        }
+        let (k, v) = t.split_once('=').ok_or_else(|| bad(source, format!("{}", i + 1), format!("'{t}' (not Key = Value)"), ALLOWED))?;
+        keys.insert(k.trim().to_string(), (v.trim().to_string(), i + 1));
+    }
+    let num = |k: &str| -> Result<Option<f64>> {
+        keys.get(k)
+            .map(|(v, line)| v.parse::<f64>().ok().filter(|x| x.is_finite() && *x > 0.0).ok_or_else(|| bad(source, format!("{line}"), format!("{k} = {v}"), "a number > 0")))
+            .transpose()
+    };
+    let res = |k: &str| -> Result<usize> {
+        match num(k)? {
+            Some(v) if v.fract() == 0.0 => Ok(v as usize),
+            _ => Err(bad(source, "header".into(), format!("{k} missing or not a whole number"), ALLOWED)),
+        }
+    };
+    let (nx, ny) = (res("XRes")?, res("YRes")?);
+    let unit = |k: &str| -> Result<Option<Unit>> {
+        keys.get(k)
+            .map(|(v, line)| Unit::parse(v).ok_or_else(|| bad(source, format!("{line}"), format!("{k} = {v}"), "m, mm, um, nm or pm")))
+            .transpose()
+    };
+    let need = nx.checked_mul(ny).and_then(|n| n.checked_mul(4)).unwrap_or(usize::MAX);
+    let have = bytes.len().saturating_sub(data_at);
+    if have < need {
+        return Err(bad(source, format!("byte {}", bytes.len()), format!("{have} data bytes, {need} needed for {nx} x {ny} f32"), ALLOWED));
+    }
+    let values: Vec<f64> = bytes[data_at..data_at + need]
+        .chunks_exact(4)
+        .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]) as f64)
+        .collect();
+    if let Some(k) = values.iter().position(|v| !v.is_finite()) {
+        return Err(bad(source, format!("byte {}", data_at + 4 * k), "a height that is not finite", ALLOWED));
+    }
+    Ok(Raw {
+        nx,
+        ny,
+        values,
+        size_x: num("XReal")?,
+        size_y: num("YReal")?,
+        size_unit: Some(unit("XYUnits")?.unwrap_or(Unit::M)),
+        height_unit: unit("ZUnits")?,
+    })
+}
+
+/// Writes a map in the format of `path`'s extension (heights and lengths in metres; `.gsf`
+/// stores f32, the others every digit).
+///
+/// # Errors
+/// [`Error::Invalid`] for an unknown extension, [`Error::Io`] when writing fails.
+pub fn write(s: &Surface, path: &Path) -> Result<()> {
+    let bytes = encode(s, format_of(path)?)?;
+    std::fs::write(path, bytes).map_err(|e| Error::Io(format!("cannot write surface {}: {e}", path.display())))
+}
+
+/// The bytes of a map in `format` (see [`write`]).
+///
+/// # Errors
+/// [`Error::Io`] if the NumPy encoder fails.
+pub fn encode(s: &Surface, format: Format) -> Result<Vec<u8>> {
+    Ok(match format {
+        Format::Text => {
+            let mut t = format!("# Width: {:e} m\n# Value units: m\n", s.size_x());
+            t.push_str(&s.to_text());
+            t.into_bytes()
+        }
+        Format::Xyz => {
+            let mut t = String::new();
+            for (k, h) in s.heights.iter().enumerate() {
+                let (x, y) = ((k % s.nx) as f64 * s.spacing, (k / s.nx) as f64 * s.spacing);
+                if s.ny == 1 {
+                    t.push_str(&format!("{x:e} {h:e}\n"));
+                } else {
+                    t.push_str(&format!("{x:e} {y:e} {h:e}\n"));
+                }
+            }
+            t.into_bytes()
+        }
+        Format::Npy => {
+            use npyz::WriterBuilder;
+            let mut buf = Vec::new();
+            let shape: Vec<u64> = if s.ny == 1 { vec![s.nx as u64] } else { vec![s.ny as u64, s.nx as u64] };
+            let io = |e: std::io::Error| Error::Io(format!("cannot encode a NumPy array: {e}"));
+            let mut w = npyz::WriteOptions::new().default_dtype().shape(&shape).writer(&mut buf).begin_nd().map_err(io)?;
+            w.extend(s.heights.iter().copied()).map_err(io)?;
+            w.finish().map_err(io)?;
+            buf
+        }
+        Format::Gsf => {
+            let mut b = format!(
+                "{GSF_MAGIC}\nXRes = {}\nYRes = {}\nXReal = {:e}\nYReal = {:e}\nXYUnits = m\nZUnits = m\n",
+                s.nx,
+                s.ny,
+                s.size_x(),
+                s.size_y()
+            )
+            .into_bytes();
+            let pad = 4 - b.len() % 4;
+            b.extend(std::iter::repeat_n(0u8, pad));
+            for h in &s.heights {
+                b.extend((*h as f32).to_le_bytes());
+            }
+            b
+        }
+    })
+}
