@@ -33,7 +33,11 @@ fn every_reader_reads_back_what_its_writer_wrote() {
             };
             let back = readers::parse(&bytes, f, "mem", &opts).unwrap_or_else(|e| panic!("{f:?}: {e}"));
             assert_eq!((back.nx, back.ny), (s.nx, s.ny), "{f:?}");
-            assert!((back.spacing / s.spacing - 1.0).abs() < 1e-12, "{f:?}: {}", back.spacing);
+            assert!(
+                (back.spacing / s.spacing - 1.0).abs() < 1e-12,
+                "{f:?}: {}",
+                back.spacing
+            );
             let tol = if f == Format::Gsf { 1e-7 } else { 0.0 };
             for (a, b) in back.heights.iter().zip(&s.heights) {
                 assert!((a - b).abs() <= tol * b.abs(), "{f:?}: {a} vs {b}");
@@ -80,24 +84,54 @@ fn bad_files_give_one_line_naming_the_file_the_place_and_the_fault() {
     let npy_ok = readers::encode(&map(4, 4), Format::Npy).unwrap();
     let no_size = ReadOptions::default();
     let cases: Vec<(Format, Vec<u8>, &str)> = vec![
-        (Format::Text, b"1 2 3\n4 x 6\n".to_vec(), "bad.txt:2: 'x' (not a number)"),
+        (
+            Format::Text,
+            b"1 2 3\n4 x 6\n".to_vec(),
+            "bad.txt:2: 'x' (not a number)",
+        ),
         (Format::Text, b"1 2 3\n4 5\n".to_vec(), "bad.txt:2: a row of 2 values"),
         (Format::Text, b"1 2\nnan 4\n".to_vec(), "bad.txt:2: 'nan' (not finite)"),
         (Format::Text, b"# nothing\n".to_vec(), "bad.txt:1: no data"),
-        (Format::Text, b"# Value units: furlong\n1 2\n".to_vec(), "bad.txt:1: height unit 'furlong'"),
+        (
+            Format::Text,
+            b"# Value units: furlong\n1 2\n".to_vec(),
+            "bad.txt:1: height unit 'furlong'",
+        ),
         (Format::Text, vec![0x31, 0x20, 0xff, 0x0a], "bad.txt:byte 2: not UTF-8"),
         (Format::Xyz, b"0 0 1\n1 0 2\n0 1\n".to_vec(), "bad.txt:3: 2 columns"),
-        (Format::Xyz, b"0 0 1\n1 0 2\n3 0 2\n".to_vec(), "bad.txt:grid: uneven spacing"),
-        (Format::Xyz, b"0 0 1\n1 0 2\n0 1 3\n".to_vec(), "bad.txt:grid: 3 points for a 2 x 2 grid"),
-        (Format::Gsf, b"Gwyddion Simple Field 0.9\n".to_vec(), "bad.txt:byte 0: no 'Gwyddion Simple Field 1.0' line"),
-        (Format::Gsf, gsf_ok[..gsf_ok.len() - 6].to_vec(), "data bytes, 64 needed"),
+        (
+            Format::Xyz,
+            b"0 0 1\n1 0 2\n3 0 2\n".to_vec(),
+            "bad.txt:grid: uneven spacing",
+        ),
+        (
+            Format::Xyz,
+            b"0 0 1\n1 0 2\n0 1 3\n".to_vec(),
+            "bad.txt:grid: 3 points for a 2 x 2 grid",
+        ),
         (
             Format::Gsf,
-            String::from_utf8_lossy(&gsf_ok).replace("XRes = 4", "XRes = four").into_bytes(),
+            b"Gwyddion Simple Field 0.9\n".to_vec(),
+            "bad.txt:byte 0: no 'Gwyddion Simple Field 1.0' line",
+        ),
+        (
+            Format::Gsf,
+            gsf_ok[..gsf_ok.len() - 6].to_vec(),
+            "data bytes, 64 needed",
+        ),
+        (
+            Format::Gsf,
+            String::from_utf8_lossy(&gsf_ok)
+                .replace("XRes = 4", "XRes = four")
+                .into_bytes(),
             "bad.txt:2: XRes = four",
         ),
         (Format::Npy, b"not numpy".to_vec(), "bad.txt:byte 0: not a NumPy file"),
-        (Format::Npy, npy_ok[..npy_ok.len() - 8].to_vec(), "bad.txt:data: truncated"),
+        (
+            Format::Npy,
+            npy_ok[..npy_ok.len() - 8].to_vec(),
+            "bad.txt:data: truncated",
+        ),
     ];
     for (f, bytes, needle) in cases {
         let opts = ReadOptions {
@@ -109,9 +143,16 @@ fn bad_files_give_one_line_naming_the_file_the_place_and_the_fault() {
         assert!(!e.contains('\n'), "{e}");
     }
     // no lateral size: the size field is named
-    let e = readers::parse(&npy_ok, Format::Npy, "a.npy", &no_size).unwrap_err().to_string();
-    assert!(e.contains("surface.system_size_m") && e.contains("a.npy gives no lateral size"), "{e}");
-    let e = readers::format_of(std::path::Path::new("x.sdf")).unwrap_err().to_string();
+    let e = readers::parse(&npy_ok, Format::Npy, "a.npy", &no_size)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("surface.system_size_m") && e.contains("a.npy gives no lateral size"),
+        "{e}"
+    );
+    let e = readers::format_of(std::path::Path::new("x.sdf"))
+        .unwrap_err()
+        .to_string();
     assert!(e.contains(".gsf"), "{e}");
 }
 
@@ -128,21 +169,60 @@ fn the_psd_of_generated_maps_recovers_the_spectrum() {
             let (sa, s) = generated(hurst, seed);
             let spec = Spectrum::SelfAffine(sa);
             for periodic in [true, false] {
-                let a = analyse(&s, &PsdOptions { periodic, ..PsdOptions::default() }).unwrap();
+                let a = analyse(
+                    &s,
+                    &PsdOptions {
+                        periodic,
+                        ..PsdOptions::default()
+                    },
+                )
+                .unwrap();
                 let fit = a.fit.unwrap();
                 let what = format!("H {hurst} seed {seed} periodic {periodic}");
-                let moment_rel = if periodic { PSD_MOMENT_REL } else { PSD_WINDOWED_MOMENT_REL };
-                assert!((fit.hurst - hurst).abs() < PSD_HURST_ABS, "{what}: H = {} ± {}", fit.hurst, fit.hurst_error);
-                assert!((a.rms_gradient / spec.rms_gradient() - 1.0).abs() < moment_rel, "{what}: g {}", a.rms_gradient);
-                assert!((a.rms_height / spec.rms_height() - 1.0).abs() < moment_rel, "{what}: h {} vs {}", a.rms_height, spec.rms_height());
+                let moment_rel = if periodic {
+                    PSD_MOMENT_REL
+                } else {
+                    PSD_WINDOWED_MOMENT_REL
+                };
+                assert!(
+                    (fit.hurst - hurst).abs() < PSD_HURST_ABS,
+                    "{what}: H = {} ± {}",
+                    fit.hurst,
+                    fit.hurst_error
+                );
+                assert!(
+                    (a.rms_gradient / spec.rms_gradient() - 1.0).abs() < moment_rel,
+                    "{what}: g {}",
+                    a.rms_gradient
+                );
+                assert!(
+                    (a.rms_height / spec.rms_height() - 1.0).abs() < moment_rel,
+                    "{what}: h {} vs {}",
+                    a.rms_height,
+                    spec.rms_height()
+                );
                 // q_r and q_s within their bins
-                assert!((fit.q_r / sa.q_r()).ln().abs() < 0.3, "{what}: q_r {} vs {}", fit.q_r, sa.q_r());
-                assert!(fit.q_s <= sa.q_s() * 1.01 && fit.q_s > sa.q_s() / 1.4, "{what}: q_s {} vs {}", fit.q_s, sa.q_s());
+                assert!(
+                    (fit.q_r / sa.q_r()).ln().abs() < 0.3,
+                    "{what}: q_r {} vs {}",
+                    fit.q_r,
+                    sa.q_r()
+                );
+                assert!(
+                    fit.q_s <= sa.q_s() * 1.01 && fit.q_s > sa.q_s() / 1.4,
+                    "{what}: q_s {} vs {}",
+                    fit.q_s,
+                    sa.q_s()
+                );
                 // the table integrates to the variance (2π∫qC dq by the trapezoid in ln q)
-                let m0: f64 = a.bins.windows(2).map(|w| {
-                    let f = |b: &asperity::surface::psd::PsdBin| 2.0 * PI * b.q * b.q * b.psd;
-                    0.5 * (f(&w[0]) + f(&w[1])) * (w[1].q / w[0].q).ln()
-                }).sum();
+                let m0: f64 = a
+                    .bins
+                    .windows(2)
+                    .map(|w| {
+                        let f = |b: &asperity::surface::psd::PsdBin| 2.0 * PI * b.q * b.q * b.psd;
+                        0.5 * (f(&w[0]) + f(&w[1])) * (w[1].q / w[0].q).ln()
+                    })
+                    .sum();
                 assert!(m0 > 0.5 * spec.moment(0) && m0 < 1.5 * spec.moment(0), "{what}: {m0}");
             }
         }
@@ -168,7 +248,14 @@ fn a_line_scan_gives_the_isotropic_spectrum() {
         }
     }
     let s = Surface::new(n, 1, l / n as f64, h).unwrap();
-    let a = analyse(&s, &PsdOptions { periodic: true, ..PsdOptions::default() }).unwrap();
+    let a = analyse(
+        &s,
+        &PsdOptions {
+            periodic: true,
+            ..PsdOptions::default()
+        },
+    )
+    .unwrap();
     assert!(a.line_scan);
     let fit = a.fit.unwrap();
     assert!((fit.hurst - hurst).abs() < PSD_HURST_ABS, "H = {}", fit.hurst);
@@ -181,7 +268,9 @@ fn a_line_scan_gives_the_isotropic_spectrum() {
 
 /// The analytic C(q) written as a table at q_L, q_r, q_s and log-spaced points between.
 fn table_of(sa: &SelfAffine) -> Tabulated {
-    let mut q: Vec<f64> = (0..=60).map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / 60.0)).collect();
+    let mut q: Vec<f64> = (0..=60)
+        .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / 60.0))
+        .collect();
     q.push(sa.q_r());
     q.sort_by(f64::total_cmp);
     q.dedup_by(|a, b| (*a / *b - 1.0).abs() < 1e-9);
@@ -195,21 +284,35 @@ fn table_of(sa: &SelfAffine) -> Tabulated {
 #[test]
 fn the_theory_on_an_ideal_table_equals_the_analytic_spectrum() {
     let opts = engine::Options::default();
-    for (preset, thickness, gamma) in [("system-1", f64::INFINITY, 0.0), ("system-2", 0.5, 0.0), ("system-2", f64::INFINITY, -1.0)] {
+    for (preset, thickness, gamma) in [
+        ("system-1", f64::INFINITY, 0.0),
+        ("system-2", 0.5, 0.0),
+        ("system-2", f64::INFINITY, -1.0),
+    ] {
         let p = Preset::resolve(preset).unwrap();
         let mut scene = p.scene().unwrap();
         scene.thickness_qr = thickness;
         if gamma >= 0.0 {
             scene.gamma = gamma;
         }
-        let Spectrum::SelfAffine(sa) = scene.spectrum.clone() else { unreachable!() };
+        let Spectrum::SelfAffine(sa) = scene.spectrum.clone() else {
+            unreachable!()
+        };
         let mut tab = scene.clone();
         tab.spectrum = Spectrum::Tabulated(table_of(&sa));
         assert_eq!(tab.spectrum.q_r(), sa.q_r());
-        let (a, b) = (engine::evaluate(&scene, &opts).unwrap(), engine::evaluate(&tab, &opts).unwrap());
+        let (a, b) = (
+            engine::evaluate(&scene, &opts).unwrap(),
+            engine::evaluate(&tab, &opts).unwrap(),
+        );
         let rel = |x: f64, y: f64| (x / y - 1.0).abs();
         let what = format!("{preset} t {thickness} gamma {}", scene.gamma);
-        assert!(rel(b.stats.a_r, a.stats.a_r) < TABULATED_THEORY_REL, "{what}: a_r {} vs {}", b.stats.a_r, a.stats.a_r);
+        assert!(
+            rel(b.stats.a_r, a.stats.a_r) < TABULATED_THEORY_REL,
+            "{what}: a_r {} vs {}",
+            b.stats.a_r,
+            a.stats.a_r
+        );
         assert!(
             rel(b.stats.mean_contact_stress, a.stats.mean_contact_stress) < TABULATED_THEORY_REL,
             "{what}: sigma_c {} vs {}",
@@ -218,6 +321,11 @@ fn the_theory_on_an_ideal_table_equals_the_analytic_spectrum() {
         );
         let ga = asperity::theory::gap::mean_gap(&scene, &opts).unwrap().unwrap();
         let gb = asperity::theory::gap::mean_gap(&tab, &opts).unwrap().unwrap();
-        assert!(rel(gb.relative, ga.relative) < TABULATED_THEORY_REL, "{what}: gap {} vs {}", gb.relative, ga.relative);
+        assert!(
+            rel(gb.relative, ga.relative) < TABULATED_THEORY_REL,
+            "{what}: gap {} vs {}",
+            gb.relative,
+            ga.relative
+        );
     }
 }

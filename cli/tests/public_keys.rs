@@ -60,6 +60,8 @@ const SCENE: &[&str] = &[
     "scene.rms_gradient",
     "scene.rms_height_m",
     "scene.semi_infinite",
+    "scene.spectrum",
+    "scene.spectrum_source",
     "scene.sigma_a_cap",
     "scene.tabor",
     "scene.thickness_m",
@@ -98,6 +100,42 @@ const RUN: &[&str] = &[
     "unloading_a_r",
     "width",
 ];
+
+#[test]
+fn psd_keys_and_columns() {
+    let map = "tests/fixtures/two_bands.txt";
+    let v = json(&["psd", map, "--format", "json"]);
+    assert_has(
+        &v,
+        &[
+            "file",
+            "points",
+            "system_size_m",
+            "rms_height_m",
+            "rms_gradient",
+            "rms_curvature",
+            "hurst",
+            "hurst_error",
+            "rolloff_wavelength_m",
+            "rolloff_wavelength_range_m",
+            "short_wavelength_m",
+            "short_wavelength_range_m",
+            "line_scan",
+            "window",
+            "detrend",
+            "elapsed_s",
+            "table",
+        ],
+        "psd",
+    );
+    assert_has(&v["table"][0], &["q", "psd", "modes"], "psd table");
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(["psd", map, "--format", "csv"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("q,psd\n"));
+}
 
 #[test]
 fn run_keys() {

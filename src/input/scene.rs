@@ -235,6 +235,11 @@ impl Scene {
             q_l: self.spectrum.q_l(),
             q_r: self.spectrum.q_r(),
             q_s: self.spectrum.q_s(),
+            spectrum: self.spectrum.kind().to_string(),
+            spectrum_source: match &self.spectrum {
+                crate::surface::spectrum::Spectrum::Tabulated(t) => Some(t.source.clone()),
+                _ => None,
+            },
         }
     }
 }
@@ -290,4 +295,9 @@ pub struct SceneSummary {
     pub q_r: f64,
     /// q_s (1/m).
     pub q_s: f64,
+    /// The spectrum the theory ran on: "self-affine" (the preset's), "tabulated" (a PSD table
+    /// or a measured map's PSD) or "discrete" (a map's own modes).
+    pub spectrum: String,
+    /// The file a tabulated spectrum came from (null otherwise).
+    pub spectrum_source: Option<String>,
 }

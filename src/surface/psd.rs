@@ -127,7 +127,11 @@ pub fn analyse(s: &Surface, opts: &PsdOptions) -> Result<PsdAnalysis> {
     let h = detrend(s, opts.periodic);
     let rms_height = (h.iter().map(|x| x * x).sum::<f64>() / h.len() as f64).sqrt();
     if !(rms_height > 0.0) {
-        return Err(Error::invalid_text(Field::HeightMap, "a flat map", "a height map with some roughness"));
+        return Err(Error::invalid_text(
+            Field::HeightMap,
+            "a flat map",
+            "a height map with some roughness",
+        ));
     }
     let hw = if opts.periodic { h } else { hann(&h, nx, ny) };
     let mut plan = crate::numerics::fft2::RealFft2::new(nx, ny);
@@ -136,7 +140,11 @@ pub fn analyse(s: &Surface, opts: &PsdOptions) -> Result<PsdAnalysis> {
     let norm = 1.0 / (nx * ny) as f64;
     let (lx, ly) = (s.size_x(), s.size_y());
     // C per mode: A|h̃|²/(2π)² (2-D) or L|h̃|²/(2π) (1-D)
-    let unit = if line { lx / (2.0 * PI) } else { lx * ly / (2.0 * PI).powi(2) };
+    let unit = if line {
+        lx / (2.0 * PI)
+    } else {
+        lx * ly / (2.0 * PI).powi(2)
+    };
     let q_lo = 2.0 * PI / lx.max(ly);
     let q_nyq = PI / da;
     let per_ln = opts.bins_per_decade / 10f64.ln();
@@ -190,7 +198,8 @@ pub fn analyse(s: &Surface, opts: &PsdOptions) -> Result<PsdAnalysis> {
     if line {
         // 1-D → isotropic 2-D with the self-affine factor at the fitted H (module docs)
         let hurst = fit.map_or(0.5, |f| ((f.exponent - 1.0) / 2.0).clamp(0.0, 1.0));
-        let factor = statrs::function::gamma::gamma(1.0 + hurst) / (PI.sqrt() * statrs::function::gamma::gamma(hurst + 0.5));
+        let factor =
+            statrs::function::gamma::gamma(1.0 + hurst) / (PI.sqrt() * statrs::function::gamma::gamma(hurst + 0.5));
         for b in &mut bins {
             b.psd *= factor / b.q;
         }
@@ -250,15 +259,14 @@ fn hann(h: &[f64], nx: usize, ny: usize) -> Vec<f64> {
         if n == 1 {
             return vec![1.0];
         }
-        let w: Vec<f64> = (0..n).map(|i| (PI * (i as f64 + 0.5) / n as f64).sin().powi(2)).collect();
+        let w: Vec<f64> = (0..n)
+            .map(|i| (PI * (i as f64 + 0.5) / n as f64).sin().powi(2))
+            .collect();
         let ms = w.iter().map(|x| x * x).sum::<f64>() / n as f64;
         w.iter().map(|x| x / ms.sqrt()).collect()
     };
     let (wx, wy) = (w1(nx), w1(ny));
-    h.iter()
-        .enumerate()
-        .map(|(k, v)| v * wx[k % nx] * wy[k / nx])
-        .collect()
+    h.iter().enumerate().map(|(k, v)| v * wx[k % nx] * wy[k / nx]).collect()
 }
 
 /// Weighted least squares of y = a − β·max(0, x − x_r) for a given x_r: (a, β, SSR, cov).

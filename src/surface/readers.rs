@@ -85,7 +85,11 @@ pub enum Format {
 /// # Errors
 /// [`Error::Invalid`] for an unknown extension.
 pub fn format_of(path: &Path) -> Result<Format> {
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
     match ext.as_str() {
         "txt" | "asc" | "dat" => Ok(Format::Text),
         "xyz" => Ok(Format::Xyz),
@@ -121,7 +125,12 @@ pub fn read(path: &Path, opts: &ReadOptions) -> Result<Surface> {
 pub fn parse(bytes: &[u8], format: Format, source: &str, opts: &ReadOptions) -> Result<Surface> {
     let text = |b: &[u8]| -> Result<String> {
         String::from_utf8(b.to_vec()).map_err(|e| {
-            bad(source, format!("byte {}", e.utf8_error().valid_up_to()), "not UTF-8 text", "a text file")
+            bad(
+                source,
+                format!("byte {}", e.utf8_error().valid_up_to()),
+                "not UTF-8 text",
+                "a text file",
+            )
         })
     };
     let raw = match format {
@@ -211,7 +220,14 @@ fn parse_text(text: &str, source: &str) -> Result<Raw> {
             } else if let Some(v) = c.strip_prefix("Height:") {
                 height = length_with_unit(v);
             } else if let Some(v) = c.strip_prefix("Value units:") {
-                zunit = Some(Unit::parse(v).ok_or_else(|| bad(source, format!("{}", i + 1), format!("height unit '{}'", v.trim()), "m, mm, um, nm or pm"))?);
+                zunit = Some(Unit::parse(v).ok_or_else(|| {
+                    bad(
+                        source,
+                        format!("{}", i + 1),
+                        format!("height unit '{}'", v.trim()),
+                        "m, mm, um, nm or pm",
+                    )
+                })?);
             }
             continue;
         }
@@ -219,16 +235,36 @@ fn parse_text(text: &str, source: &str) -> Result<Raw> {
             continue;
         }
         let mut row = Vec::new();
-        for tok in t.split(|c: char| c.is_whitespace() || c == ',' || c == ';').filter(|s| !s.is_empty()) {
-            let v: f64 = tok.parse().map_err(|_| bad(source, format!("{}", i + 1), format!("'{tok}' (not a number)"), TEXT_ALLOWED))?;
+        for tok in t
+            .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
+            .filter(|s| !s.is_empty())
+        {
+            let v: f64 = tok.parse().map_err(|_| {
+                bad(
+                    source,
+                    format!("{}", i + 1),
+                    format!("'{tok}' (not a number)"),
+                    TEXT_ALLOWED,
+                )
+            })?;
             if !v.is_finite() {
-                return Err(bad(source, format!("{}", i + 1), format!("'{tok}' (not finite)"), TEXT_ALLOWED));
+                return Err(bad(
+                    source,
+                    format!("{}", i + 1),
+                    format!("'{tok}' (not finite)"),
+                    TEXT_ALLOWED,
+                ));
             }
             row.push(v);
         }
         if let Some(r0) = rows.first() {
             if row.len() != r0.len() {
-                return Err(bad(source, format!("{}", i + 1), format!("a row of {} values (the first has {})", row.len(), r0.len()), TEXT_ALLOWED));
+                return Err(bad(
+                    source,
+                    format!("{}", i + 1),
+                    format!("a row of {} values (the first has {})", row.len(), r0.len()),
+                    TEXT_ALLOWED,
+                ));
             }
         }
         rows.push(row);
@@ -263,16 +299,31 @@ fn parse_xyz(text: &str, source: &str) -> Result<Raw> {
             continue;
         }
         let mut row = Vec::with_capacity(3);
-        for tok in t.split(|c: char| c.is_whitespace() || c == ',' || c == ';').filter(|s| !s.is_empty()) {
-            let v: f64 = tok.parse().map_err(|_| bad(source, format!("{}", i + 1), format!("'{tok}' (not a number)"), ALLOWED))?;
+        for tok in t
+            .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
+            .filter(|s| !s.is_empty())
+        {
+            let v: f64 = tok
+                .parse()
+                .map_err(|_| bad(source, format!("{}", i + 1), format!("'{tok}' (not a number)"), ALLOWED))?;
             if !v.is_finite() {
-                return Err(bad(source, format!("{}", i + 1), format!("'{tok}' (not finite)"), ALLOWED));
+                return Err(bad(
+                    source,
+                    format!("{}", i + 1),
+                    format!("'{tok}' (not finite)"),
+                    ALLOWED,
+                ));
             }
             row.push(v);
         }
         let want = pts.first().map_or(row.len(), |r| r.len());
         if !(row.len() == 2 || row.len() == 3) || row.len() != want {
-            return Err(bad(source, format!("{}", i + 1), format!("{} columns", row.len()), ALLOWED));
+            return Err(bad(
+                source,
+                format!("{}", i + 1),
+                format!("{} columns", row.len()),
+                ALLOWED,
+            ));
         }
         pts.push(row);
         lines.push(i + 1);
@@ -293,19 +344,33 @@ fn parse_xyz(text: &str, source: &str) -> Result<Raw> {
         }
         let d = span / (n - 1) as f64;
         if let Some(w) = v.windows(2).find(|w| ((w[1] - w[0]) / d - 1.0).abs() > 1e-3) {
-            return Err(bad(source, "grid".into(), format!("uneven spacing at {} = {}", ["x", "y"][k], fmt_value(w[1])), ALLOWED));
+            return Err(bad(
+                source,
+                "grid".into(),
+                format!("uneven spacing at {} = {}", ["x", "y"][k], fmt_value(w[1])),
+                ALLOWED,
+            ));
         }
         Ok((v[0], d, n))
     };
     let (x0, dx, nx) = axis(0)?;
     let (y0, dy, ny) = if line_scan { (0.0, dx, 1) } else { axis(1)? };
     if nx * ny != pts.len() {
-        return Err(bad(source, "grid".into(), format!("{} points for a {nx} x {ny} grid", pts.len()), ALLOWED));
+        return Err(bad(
+            source,
+            "grid".into(),
+            format!("{} points for a {nx} x {ny} grid", pts.len()),
+            ALLOWED,
+        ));
     }
     let mut values = vec![f64::NAN; nx * ny];
     for (p, line) in pts.iter().zip(&lines) {
         let i = ((p[0] - x0) / dx).round() as usize;
-        let j = if line_scan { 0 } else { ((p[1] - y0) / dy).round() as usize };
+        let j = if line_scan {
+            0
+        } else {
+            ((p[1] - y0) / dy).round() as usize
+        };
         let k = j * nx + i;
         if !values[k].is_nan() {
             return Err(bad(source, format!("{line}"), "a repeated grid point", ALLOWED));
@@ -325,13 +390,21 @@ fn parse_xyz(text: &str, source: &str) -> Result<Raw> {
 
 fn parse_npy(bytes: &[u8], source: &str) -> Result<Raw> {
     const ALLOWED: &str = "a 1-D or 2-D NumPy array of floats or integers";
-    let file = npyz::NpyFile::new(bytes).map_err(|e| bad(source, "byte 0".into(), format!("not a NumPy file ({e})"), ALLOWED))?;
+    let file = npyz::NpyFile::new(bytes)
+        .map_err(|e| bad(source, "byte 0".into(), format!("not a NumPy file ({e})"), ALLOWED))?;
     let shape = file.shape().to_vec();
     let fortran = file.order() == npyz::Order::Fortran;
     let (ny, nx) = match shape.as_slice() {
         [n] => (1usize, *n as usize),
         [r, c] => (*r as usize, *c as usize),
-        s => return Err(bad(source, "header".into(), format!("an array of shape {s:?}"), ALLOWED)),
+        s => {
+            return Err(bad(
+                source,
+                "header".into(),
+                format!("an array of shape {s:?}"),
+                ALLOWED,
+            ))
+        }
     };
     let dtype = file.dtype();
     let values: Vec<f64> = match file.data::<f64>() {
@@ -359,9 +432,21 @@ fn parse_npy(bytes: &[u8], source: &str) -> Result<Raw> {
             }
         }
     }
-    .map_err(|e| bad(source, "data".into(), format!("truncated or unreadable data ({e})"), ALLOWED))?;
+    .map_err(|e| {
+        bad(
+            source,
+            "data".into(),
+            format!("truncated or unreadable data ({e})"),
+            ALLOWED,
+        )
+    })?;
     if values.len() != nx * ny {
-        return Err(bad(source, "data".into(), format!("{} values for shape {shape:?}", values.len()), ALLOWED));
+        return Err(bad(
+            source,
+            "data".into(),
+            format!("{} values for shape {shape:?}", values.len()),
+            ALLOWED,
+        ));
     }
     let values = if fortran && ny > 1 {
         (0..nx * ny).map(|k| values[(k % nx) * ny + k / nx]).collect()
@@ -369,7 +454,12 @@ fn parse_npy(bytes: &[u8], source: &str) -> Result<Raw> {
         values
     };
     if let Some(k) = values.iter().position(|v| !v.is_finite()) {
-        return Err(bad(source, format!("element {k}"), "a height that is not finite", ALLOWED));
+        return Err(bad(
+            source,
+            format!("element {k}"),
+            "a height that is not finite",
+            ALLOWED,
+        ));
     }
     Ok(Raw {
         nx,
@@ -389,8 +479,22 @@ fn parse_gsf(bytes: &[u8], source: &str) -> Result<Raw> {
     if !bytes.starts_with(GSF_MAGIC.as_bytes()) {
         return Err(bad(source, "byte 0".into(), format!("no '{GSF_MAGIC}' line"), ALLOWED));
     }
-    let nul = bytes.iter().position(|&b| b == 0).ok_or_else(|| bad(source, format!("byte {}", bytes.len()), "no NUL padding after the header", ALLOWED))?;
-    let header = std::str::from_utf8(&bytes[..nul]).map_err(|e| bad(source, format!("byte {}", e.valid_up_to()), "a header that is not UTF-8", ALLOWED))?;
+    let nul = bytes.iter().position(|&b| b == 0).ok_or_else(|| {
+        bad(
+            source,
+            format!("byte {}", bytes.len()),
+            "no NUL padding after the header",
+            ALLOWED,
+        )
+    })?;
+    let header = std::str::from_utf8(&bytes[..nul]).map_err(|e| {
+        bad(
+            source,
+            format!("byte {}", e.valid_up_to()),
+            "a header that is not UTF-8",
+            ALLOWED,
+        )
+    })?;
     let data_at = nul.div_ceil(4) * 4 + if nul.is_multiple_of(4) { 4 } else { 0 };
     let mut keys = std::collections::HashMap::new();
     for (i, line) in header.lines().enumerate().skip(1) {
@@ -398,37 +502,67 @@ fn parse_gsf(bytes: &[u8], source: &str) -> Result<Raw> {
         if t.is_empty() {
             continue;
         }
-        let (k, v) = t.split_once('=').ok_or_else(|| bad(source, format!("{}", i + 1), format!("'{t}' (not Key = Value)"), ALLOWED))?;
+        let (k, v) = t.split_once('=').ok_or_else(|| {
+            bad(
+                source,
+                format!("{}", i + 1),
+                format!("'{t}' (not Key = Value)"),
+                ALLOWED,
+            )
+        })?;
         keys.insert(k.trim().to_string(), (v.trim().to_string(), i + 1));
     }
     let num = |k: &str| -> Result<Option<f64>> {
         keys.get(k)
-            .map(|(v, line)| v.parse::<f64>().ok().filter(|x| x.is_finite() && *x > 0.0).ok_or_else(|| bad(source, format!("{line}"), format!("{k} = {v}"), "a number > 0")))
+            .map(|(v, line)| {
+                v.parse::<f64>()
+                    .ok()
+                    .filter(|x| x.is_finite() && *x > 0.0)
+                    .ok_or_else(|| bad(source, format!("{line}"), format!("{k} = {v}"), "a number > 0"))
+            })
             .transpose()
     };
     let res = |k: &str| -> Result<usize> {
         match num(k)? {
             Some(v) if v.fract() == 0.0 => Ok(v as usize),
-            _ => Err(bad(source, "header".into(), format!("{k} missing or not a whole number"), ALLOWED)),
+            _ => Err(bad(
+                source,
+                "header".into(),
+                format!("{k} missing or not a whole number"),
+                ALLOWED,
+            )),
         }
     };
     let (nx, ny) = (res("XRes")?, res("YRes")?);
     let unit = |k: &str| -> Result<Option<Unit>> {
         keys.get(k)
-            .map(|(v, line)| Unit::parse(v).ok_or_else(|| bad(source, format!("{line}"), format!("{k} = {v}"), "m, mm, um, nm or pm")))
+            .map(|(v, line)| {
+                Unit::parse(v)
+                    .ok_or_else(|| bad(source, format!("{line}"), format!("{k} = {v}"), "m, mm, um, nm or pm"))
+            })
             .transpose()
     };
     let need = nx.checked_mul(ny).and_then(|n| n.checked_mul(4)).unwrap_or(usize::MAX);
     let have = bytes.len().saturating_sub(data_at);
     if have < need {
-        return Err(bad(source, format!("byte {}", bytes.len()), format!("{have} data bytes, {need} needed for {nx} x {ny} f32"), ALLOWED));
+        return Err(bad(
+            source,
+            format!("byte {}", bytes.len()),
+            format!("{have} data bytes, {need} needed for {nx} x {ny} f32"),
+            ALLOWED,
+        ));
     }
     let values: Vec<f64> = bytes[data_at..data_at + need]
         .chunks_exact(4)
         .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]) as f64)
         .collect();
     if let Some(k) = values.iter().position(|v| !v.is_finite()) {
-        return Err(bad(source, format!("byte {}", data_at + 4 * k), "a height that is not finite", ALLOWED));
+        return Err(bad(
+            source,
+            format!("byte {}", data_at + 4 * k),
+            "a height that is not finite",
+            ALLOWED,
+        ));
     }
     Ok(Raw {
         nx,
@@ -477,9 +611,18 @@ pub fn encode(s: &Surface, format: Format) -> Result<Vec<u8>> {
         Format::Npy => {
             use npyz::WriterBuilder;
             let mut buf = Vec::new();
-            let shape: Vec<u64> = if s.ny == 1 { vec![s.nx as u64] } else { vec![s.ny as u64, s.nx as u64] };
+            let shape: Vec<u64> = if s.ny == 1 {
+                vec![s.nx as u64]
+            } else {
+                vec![s.ny as u64, s.nx as u64]
+            };
             let io = |e: std::io::Error| Error::Io(format!("cannot encode a NumPy array: {e}"));
-            let mut w = npyz::WriteOptions::new().default_dtype().shape(&shape).writer(&mut buf).begin_nd().map_err(io)?;
+            let mut w = npyz::WriteOptions::new()
+                .default_dtype()
+                .shape(&shape)
+                .writer(&mut buf)
+                .begin_nd()
+                .map_err(io)?;
             w.extend(s.heights.iter().copied()).map_err(io)?;
             w.finish().map_err(io)?;
             buf

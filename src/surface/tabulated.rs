@@ -53,19 +53,37 @@ impl Tabulated {
     /// crossed, a bandwidth above [`MAX_TABLE_BANDWIDTH`], or an rms gradient outside
     /// [`RMS_GRADIENT_RANGE`].
     pub fn new(q: Vec<f64>, psd: Vec<f64>, source: &str, q_min: Option<f64>, q_max: Option<f64>) -> Result<Self> {
-        let bad = |what: String| Error::invalid_text(Field::Other("psd".into()), what, "a table of q (1/m) ascending and psd (m^4) > 0, two rows or more");
+        let bad = |what: String| {
+            Error::invalid_text(
+                Field::Other("psd".into()),
+                what,
+                "a table of q (1/m) ascending and psd (m^4) > 0, two rows or more",
+            )
+        };
         if q.len() != psd.len() || q.len() < 2 {
             return Err(bad(format!("{source}: {} rows", q.len().min(psd.len()))));
         }
         for i in 0..q.len() {
             if !(q[i].is_finite() && q[i] > 0.0) {
-                return Err(bad(format!("{source}: row {}: q = {} (not > 0)", i + 1, fmt_value(q[i]))));
+                return Err(bad(format!(
+                    "{source}: row {}: q = {} (not > 0)",
+                    i + 1,
+                    fmt_value(q[i])
+                )));
             }
             if !(psd[i].is_finite() && psd[i] > 0.0) {
-                return Err(bad(format!("{source}: row {}: psd = {} (not finite and > 0)", i + 1, fmt_value(psd[i]))));
+                return Err(bad(format!(
+                    "{source}: row {}: psd = {} (not finite and > 0)",
+                    i + 1,
+                    fmt_value(psd[i])
+                )));
             }
             if i > 0 && q[i] <= q[i - 1] {
-                return Err(bad(format!("{source}: row {}: q = {} not above the previous row's", i + 1, fmt_value(q[i]))));
+                return Err(bad(format!(
+                    "{source}: row {}: q = {} not above the previous row's",
+                    i + 1,
+                    fmt_value(q[i])
+                )));
             }
         }
         let (lo, hi) = (q[0], q[q.len() - 1]);
@@ -76,15 +94,26 @@ impl Tabulated {
             return Err(Error::invalid(Field::Other("q_min".into()), q_min, range));
         }
         if !(q_max <= hi * (1.0 + 1e-12) && q_max > q_min) {
-            return Err(Error::invalid(Field::Other("q_max".into()), q_max, format!("q_min < q <= {} (1/m)", fmt_value(hi))));
+            return Err(Error::invalid(
+                Field::Other("q_max".into()),
+                q_max,
+                format!("q_min < q <= {} (1/m)", fmt_value(hi)),
+            ));
         }
         let (q_min, q_max) = (q_min.max(lo), q_max.min(hi));
         if q_max / q_min > MAX_TABLE_BANDWIDTH {
-            return Err(bad(format!("{source}: a bandwidth q_max/q_min = {}", fmt_value(q_max / q_min))));
+            return Err(bad(format!(
+                "{source}: a bandwidth q_max/q_min = {}",
+                fmt_value(q_max / q_min)
+            )));
         }
         let (lmin, lmax) = (2.0 * PI / LENGTH_RANGE_M.1, 2.0 * PI / LENGTH_RANGE_M.0);
         if q_min < lmin || q_max > lmax {
-            return Err(bad(format!("{source}: q outside [{}, {}] 1/m", fmt_value(lmin), fmt_value(lmax))));
+            return Err(bad(format!(
+                "{source}: q outside [{}, {}] 1/m",
+                fmt_value(lmin),
+                fmt_value(lmax)
+            )));
         }
         let mut t = Tabulated {
             q,
@@ -102,16 +131,19 @@ impl Tabulated {
             return Err(Error::invalid_text(
                 Field::RmsGradient,
                 format!("{} (of the table {source})", fmt_value(g)),
-                format!("{} <= rms gradient <= {} (check the units: q in 1/m, psd in m^4)", fmt_value(glo), fmt_value(ghi)),
+                format!(
+                    "{} <= rms gradient <= {} (check the units: q in 1/m, psd in m^4)",
+                    fmt_value(glo),
+                    fmt_value(ghi)
+                ),
             ));
         }
-        let (qs, cs): (Vec<f64>, Vec<f64>) = t
-            .q
-            .iter()
-            .zip(&t.psd)
-            .filter(|(&x, _)| x >= t.q_min && x <= t.q_max)
-            .map(|(&x, &c)| (x, c))
-            .unzip();
+        let (qs, cs): (Vec<f64>, Vec<f64>) =
+            t.q.iter()
+                .zip(&t.psd)
+                .filter(|(&x, _)| x >= t.q_min && x <= t.q_max)
+                .map(|(&x, &c)| (x, c))
+                .unzip();
         let weights = vec![1.0; qs.len()];
         if let Some(fit) = crate::surface::psd::fit_self_affine(&qs, &cs, &weights) {
             t.q_r = fit.q_r.clamp(t.q_min, t.q_max);
@@ -121,7 +153,10 @@ impl Tabulated {
 
     /// The table's index i with q[i] ≤ x < q[i+1] (clamped to the intervals).
     fn interval(&self, x: f64) -> usize {
-        self.q.partition_point(|&v| v <= x).saturating_sub(1).min(self.q.len() - 2)
+        self.q
+            .partition_point(|&v| v <= x)
+            .saturating_sub(1)
+            .min(self.q.len() - 2)
     }
 
     /// Log–log slope of interval i.
@@ -183,7 +218,11 @@ impl Tabulated {
     /// ([`Tabulated::new`]).
     pub fn parse_csv(text: &str, source: &str, q_min: Option<f64>, q_max: Option<f64>) -> Result<Self> {
         let bad = |line: usize, what: String| {
-            Error::invalid_text(Field::Other("psd".into()), format!("{source}:{line}: {what}"), "a CSV table with columns q (1/m) and psd (m^4)")
+            Error::invalid_text(
+                Field::Other("psd".into()),
+                format!("{source}:{line}: {what}"),
+                "a CSV table with columns q (1/m) and psd (m^4)",
+            )
         };
         let mut cols: Option<(usize, usize)> = None;
         let (mut q, mut c) = (Vec::new(), Vec::new());
@@ -198,13 +237,23 @@ impl Tabulated {
                     let find = |name: &str| cells.iter().position(|c| c.eq_ignore_ascii_case(name));
                     match (find("q"), find("psd")) {
                         (Some(a), Some(b)) => cols = Some((a, b)),
-                        _ => return Err(bad(i + 1, format!("header '{t}' has no columns named q and psd"))),
+                        _ => {
+                            let head: String = t.chars().take(40).collect();
+                            let more = if head.len() < t.len() { "..." } else { "" };
+                            return Err(bad(
+                                i + 1,
+                                format!("header '{head}{more}' has no columns named q and psd"),
+                            ));
+                        }
                     }
                 }
                 Some((a, b)) => {
                     let cell = |k: usize| -> Result<f64> {
-                        let s = cells.get(k).ok_or_else(|| bad(i + 1, format!("{} cells, column {} missing", cells.len(), k + 1)))?;
-                        s.parse::<f64>().map_err(|_| bad(i + 1, format!("'{s}' (not a number)")))
+                        let s = cells
+                            .get(k)
+                            .ok_or_else(|| bad(i + 1, format!("{} cells, column {} missing", cells.len(), k + 1)))?;
+                        s.parse::<f64>()
+                            .map_err(|_| bad(i + 1, format!("'{s}' (not a number)")))
                     };
                     q.push(cell(a)?);
                     c.push(cell(b)?);
@@ -222,7 +271,8 @@ impl Tabulated {
     /// # Errors
     /// [`Error::Io`] when the file cannot be read; the parse errors otherwise.
     pub fn load_csv(path: &std::path::Path, q_min: Option<f64>, q_max: Option<f64>) -> Result<Self> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))?;
+        let text =
+            std::fs::read_to_string(path).map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))?;
         Tabulated::parse_csv(&text, &path.display().to_string(), q_min, q_max)
     }
 }
@@ -245,7 +295,9 @@ mod tests {
     #[test]
     fn a_self_affine_table_has_the_closed_form_moments_and_its_kink() {
         let sa = SelfAffine::new(100e-6, 20e-6, 0.1e-6, 0.8, Normalisation::RmsGradient(1.0)).unwrap();
-        let mut q: Vec<f64> = (0..=40).map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / 40.0)).collect();
+        let mut q: Vec<f64> = (0..=40)
+            .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / 40.0))
+            .collect();
         q.push(sa.q_r());
         q.sort_by(f64::total_cmp);
         q.dedup();

@@ -14,7 +14,6 @@ use asperity::gfmd::ladder::{Ensemble, Extrapolated, Ladder, MeanSe};
 use asperity::gfmd::reduction::Reduction;
 use asperity::gfmd::sweep::GfmdSweep;
 use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec, Progress};
-use asperity::surface::heightmap::Surface;
 use asperity::theory::sweep::SweepSpec;
 use clap::Args;
 use serde::Serialize;
@@ -45,12 +44,6 @@ pub struct GfmdArgs {
     /// Seed of the random surface.
     #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::whole_number_u64)]
     pub seed: u64,
-    /// Height map to use instead of a generated one (text matrix, metres, one row per line).
-    #[arg(long, requires = "size", allow_hyphen_values = true, value_parser = super::parse::in_path)]
-    pub surface: Option<PathBuf>,
-    /// Side L of the --surface map in metres.
-    #[arg(long, requires = "surface", allow_hyphen_values = true, value_parser = super::number(Field::SystemSize))]
-    pub size: Option<f64>,
     /// Write the height map used to this file (text matrix).
     #[arg(long, allow_hyphen_values = true, value_parser = super::parse::out_path(None))]
     pub save_surface: Option<PathBuf>,
@@ -125,6 +118,17 @@ pub struct StudyOutput {
 
 /// Builds the setup and options from the arguments.
 pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
+    if args.scene.source.psd.is_some() {
+        return Err(Error::field(
+            "--psd",
+            args.scene
+                .source
+                .psd
+                .as_ref()
+                .map_or(String::new(), |p| p.display().to_string()),
+            "none for gfmd: it needs a height map (--surface FILE)",
+        ));
+    }
     let (preset, scene) = args.scene.resolve(args.pressure)?;
     let mut grid = preset.gfmd.as_ref().map(GridSpec::from_preset).unwrap_or(DEFAULT_GRID);
     if let Some(n) = args.grid {
@@ -133,13 +137,12 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
         }
         grid = grid.with_grid(n as usize)?;
     }
-    let surface = match (&args.surface, args.size) {
-        (Some(p), Some(l)) => {
-            let s = Surface::load(p, l)?;
+    let surface = match args.scene.source.map()? {
+        Some(s) => {
             s.check_rough()?;
             Some(s)
         }
-        _ => None,
+        None => None,
     };
     let opts = GfmdOptions {
         tolerance: args.tolerance,

@@ -23,6 +23,7 @@ use std::io::IsTerminal;
 use std::io::Write;
 
 pub mod parse;
+pub mod surface;
 pub mod sweep;
 
 pub use parse::{clap_error_line, count, field_name, number, render_error, whole_number, whole_number_u64};
@@ -59,6 +60,8 @@ pub enum Command {
     Gauge(gauge::GaugeArgs),
     /// Every model (1-4, yp08, xu24, fitted presets) against a reference set: relative errors and an overlay.
     Compare(gauge::CompareArgs),
+    /// The PSD of a measured height map: radial average, h_rms, rms gradient and curvature, self-affine fit.
+    Psd(surface::PsdArgs),
 }
 
 /// Output format of `run`.
@@ -104,6 +107,9 @@ pub struct SceneArgs {
     /// Surface energy gamma_s in J/m^2; 0 = no adhesion.
     #[arg(long, allow_hyphen_values = true, value_parser = number(Field::SurfaceEnergy))]
     pub gamma: Option<f64>,
+    /// A measured surface or PSD table instead of the preset's spectrum.
+    #[command(flatten)]
+    pub source: surface::SurfaceArgs,
 }
 
 /// Arguments of `tui`: the scene flags of `run`.
@@ -218,6 +224,9 @@ impl SceneArgs {
         }
         if let Some(p) = pressure {
             scene.pressure = p;
+        }
+        if let Some(spectrum) = self.source.spectrum()? {
+            scene.spectrum = spectrum;
         }
         scene.validate()?;
         Ok((preset, scene))
@@ -533,6 +542,7 @@ pub fn main() -> i32 {
         Some(Command::Figure(args)) => figure::run(&args),
         Some(Command::Gauge(args)) => gauge::run(&args),
         Some(Command::Compare(args)) => gauge::compare(&args),
+        Some(Command::Psd(args)) => surface::run_psd(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let out = evaluate(&preset.name, &scene, &args)?;
             match args.format {

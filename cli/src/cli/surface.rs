@@ -1,0 +1,396 @@
+//! The measured-surface flags shared by the theory commands and `gfmd`: `--surface FILE`
+//! (a height map, format by extension, see [`asperity::surface::readers`]), `--psd FILE.csv`
+//! (a PSD table, columns `q` and `psd`), `--size`, `--height-unit`, `--periodic`, `--qmin`,
+//! `--qmax`; and `asperity psd`.
+
+use super::emit;
+use asperity::error::{Error, Result};
+use asperity::surface::heightmap::Surface;
+use asperity::surface::psd::{self, PsdAnalysis, PsdOptions};
+use asperity::surface::readers::{self, ReadOptions, Unit};
+use asperity::surface::spectrum::{Spectrum, Tabulated};
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::path::PathBuf;
+
+/// `--height-unit`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum HeightUnitArg {
+    /// nanometres
+    Nm,
+    /// micrometres
+    Um,
+    /// millimetres
+    Mm,
+    /// metres
+    M,
+}
+
+impl HeightUnitArg {
+    fn unit(self) -> Unit {
+        match self {
+            HeightUnitArg::Nm => Unit::Nm,
+            HeightUnitArg::Um => Unit::Um,
+            HeightUnitArg::Mm => Unit::Mm,
+            HeightUnitArg::M => Unit::M,
+        }
+    }
+}
+
+/// Where the spectrum comes from when it is not the preset's.
+#[derive(Debug, Clone, Default, Args)]
+pub struct SurfaceArgs {
+    /// Measured height map (.txt .asc .dat matrix, .xyz columns, .npy, .gsf): the theory runs
+    /// on its PSD, gfmd on the map itself.
+    #[arg(long)]
+    pub surface: Option<PathBuf>,
+    /// PSD table (CSV with columns q in 1/m and psd in m^4, as `asperity psd --format csv`
+    /// writes) to run the theory on instead of the preset's spectrum.
+    #[arg(long, conflicts_with = "surface")]
+    pub psd: Option<PathBuf>,
+    /// Side L of the --surface map in metres (its x side; overrides the file's).
+    #[arg(long, allow_hyphen_values = true)]
+    pub size: Option<f64>,
+    /// Unit of the --surface heights where the file states none (default m).
+    #[arg(long, value_enum)]
+    pub height_unit: Option<HeightUnitArg>,
+    /// The --surface map is periodic (generated or GFMD maps): no plane fit, no window.
+    #[arg(long)]
+    pub periodic: bool,
+    /// Lower cut-off of the tabulated spectrum in 1/m (default: the table's first q).
+    #[arg(long, allow_hyphen_values = true)]
+    pub qmin: Option<f64>,
+    /// Upper cut-off of the tabulated spectrum in 1/m (default: the table's last q).
+    #[arg(long, allow_hyphen_values = true)]
+    pub qmax: Option<f64>,
+}
+
+impl SurfaceArgs {
+    fn read_options(&self) -> Result<ReadOptions> {
+        if let Some(l) = self.size {
+            if !(l.is_finite() && l > 0.0) {
+                return Err(Error::field("--size", l, "a length > 0 in metres"));
+            }
+        }
+        Ok(ReadOptions {
+            size: self.size,
+            height_unit: self.height_unit.map(HeightUnitArg::unit),
+        })
+    }
+
+    /// The --surface map, if one is given.
+    pub fn map(&self) -> Result<Option<Surface>> {
+        match &self.surface {
+            Some(p) => Ok(Some(readers::read(p, &self.read_options()?)?)),
+            None => {
+                if self.size.is_some() || self.height_unit.is_some() || self.periodic {
+                    return Err(Error::field(
+                        "--size/--height-unit/--periodic",
+                        "given",
+                        "only with --surface FILE",
+                    ));
+                }
+                Ok(None)
+            }
+        }
+    }
+
+    /// The tabulated spectrum of --psd or of the --surface map's PSD (None: the preset's).
+    pub fn spectrum(&self) -> Result<Option<Spectrum>> {
+        for (flag, v) in [("--qmin", self.qmin), ("--qmax", self.qmax)] {
+            if let Some(x) = v {
+                if !(x.is_finite() && x > 0.0) {
+                    return Err(Error::field(flag, x, "a wave number > 0 in 1/m"));
+                }
+            }
+        }
+        let table = if let Some(p) = &self.psd {
+            self.map()?;
+            Tabulated::load_csv(p, self.qmin, self.qmax)
+        } else if let Some(s) = self.map()? {
+            let a = psd::analyse(&s, &self.psd_options())?;
+            let (q, c): (Vec<f64>, Vec<f64>) = a.bins.iter().map(|b| (b.q, b.psd)).unzip();
+            let name = self
+                .surface
+                .as_ref()
+                .map(|p| p.display().to_string())
+                .unwrap_or_default();
+            Tabulated::new(q, c, &name, self.qmin, self.qmax)
+        } else {
+            if self.qmin.is_some() || self.qmax.is_some() {
+                return Err(Error::field("--qmin/--qmax", "given", "only with --psd or --surface"));
+            }
+            return Ok(None);
+        };
+        table.map(|t| Some(Spectrum::Tabulated(t))).map_err(rename_table_fields)
+    }
+
+    /// The PSD options of --periodic.
+    pub fn psd_options(&self) -> PsdOptions {
+        PsdOptions {
+            periodic: self.periodic,
+            ..PsdOptions::default()
+        }
+    }
+}
+
+/// The table's cut-off fields in the command line's words.
+fn rename_table_fields(e: Error) -> Error {
+    match e {
+        Error::Invalid { field, value, allowed } => {
+            let flag = match field.key() {
+                "q_min" => "--qmin",
+                "q_max" => "--qmax",
+                "psd" => "--psd",
+                _ => return Error::Invalid { field, value, allowed },
+            };
+            Error::Invalid {
+                field: asperity::error::Field::Other(flag.into()),
+                value,
+                allowed,
+            }
+        }
+        e => e,
+    }
+}
+
+/// Output format of `psd`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum PsdFormat {
+    /// Summary and the table, aligned.
+    Table,
+    /// CSV: q (1/m), psd (m^4).
+    Csv,
+    /// One JSON object: the summary keys and `table`.
+    Json,
+}
+
+/// Arguments of `psd`.
+#[derive(Debug, Clone, Args)]
+pub struct PsdArgs {
+    /// Height map (.txt .asc .dat .xyz .npy .gsf).
+    pub file: PathBuf,
+    /// Side L of the map in metres (its x side; overrides the file's).
+    #[arg(long, allow_hyphen_values = true)]
+    pub size: Option<f64>,
+    /// Unit of the heights where the file states none (default m).
+    #[arg(long, value_enum)]
+    pub height_unit: Option<HeightUnitArg>,
+    /// The map is periodic: no plane fit, no window.
+    #[arg(long)]
+    pub periodic: bool,
+    /// Radial bins per decade of q.
+    #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
+    pub bins_per_decade: f64,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = PsdFormat::Table)]
+    pub format: PsdFormat,
+    /// Write the log-log chart of C(q) with the fit to this SVG file.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Write the chart to this PNG file.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+}
+
+/// The JSON of `psd`.
+#[derive(Debug, Serialize)]
+pub struct PsdOutput {
+    /// The file analysed.
+    pub file: String,
+    /// Points per row and rows (1 for a line scan).
+    pub points: [usize; 2],
+    /// Side L (m) of the x direction.
+    pub system_size_m: f64,
+    /// h_rms (m).
+    pub rms_height_m: f64,
+    /// ḡ.
+    pub rms_gradient: f64,
+    /// rms mean curvature ½∇²h (1/m).
+    pub rms_curvature: f64,
+    /// Fitted H (null without a fit).
+    pub hurst: Option<f64>,
+    /// Its standard error.
+    pub hurst_error: Option<f64>,
+    /// 2π/q_r of the fit (m).
+    pub rolloff_wavelength_m: Option<f64>,
+    /// [low, high] of λ_r (m).
+    pub rolloff_wavelength_range_m: Option<[f64; 2]>,
+    /// 2π/q_s of the fit (m).
+    pub short_wavelength_m: Option<f64>,
+    /// [low, high] of λ_s (m).
+    pub short_wavelength_range_m: Option<[f64; 2]>,
+    /// Whether the map was a line scan (1-D PSD converted to 2-D).
+    pub line_scan: bool,
+    /// The window ("hann" or "none").
+    pub window: String,
+    /// The detrending.
+    pub detrend: String,
+    /// Elapsed time (s).
+    pub elapsed_s: f64,
+    /// The radial average: q (1/m), psd (m^4), modes.
+    pub table: Vec<psd::PsdBin>,
+}
+
+fn output(file: &str, s: &Surface, a: &PsdAnalysis, elapsed: f64) -> PsdOutput {
+    let two_pi = 2.0 * std::f64::consts::PI;
+    let f = a.fit.as_ref();
+    PsdOutput {
+        file: file.to_string(),
+        points: [s.nx, s.ny],
+        system_size_m: s.size_x(),
+        rms_height_m: a.rms_height,
+        rms_gradient: a.rms_gradient,
+        rms_curvature: a.rms_curvature,
+        hurst: f.map(|f| f.hurst),
+        hurst_error: f.map(|f| f.hurst_error),
+        rolloff_wavelength_m: f.map(|f| two_pi / f.q_r),
+        rolloff_wavelength_range_m: f.map(|f| [two_pi / f.q_r_high, two_pi / f.q_r_low]),
+        short_wavelength_m: f.map(|f| two_pi / f.q_s),
+        short_wavelength_range_m: f.map(|f| [two_pi / f.q_s_high, two_pi / f.q_s]),
+        line_scan: a.line_scan,
+        window: a.window.to_string(),
+        detrend: a.detrend.to_string(),
+        elapsed_s: elapsed,
+        table: a.bins.clone(),
+    }
+}
+
+/// Runs `asperity psd`.
+pub fn run_psd(args: &PsdArgs) -> Result<()> {
+    let sa = SurfaceArgs {
+        surface: Some(args.file.clone()),
+        size: args.size,
+        height_unit: args.height_unit,
+        periodic: args.periodic,
+        ..SurfaceArgs::default()
+    };
+    let start = std::time::Instant::now();
+    let s = sa.map()?.expect("a file is given");
+    let opts = PsdOptions {
+        bins_per_decade: args.bins_per_decade,
+        ..sa.psd_options()
+    };
+    let (lo, hi) = psd::BINS_PER_DECADE_RANGE;
+    if !(args.bins_per_decade >= lo && args.bins_per_decade <= hi) {
+        return Err(Error::field(
+            "--bins-per-decade",
+            args.bins_per_decade,
+            format!("{lo} <= bins <= {hi}"),
+        ));
+    }
+    let a = psd::analyse(&s, &opts)?;
+    let out = output(&args.file.display().to_string(), &s, &a, start.elapsed().as_secs_f64());
+    match args.format {
+        PsdFormat::Json => emit(&serde_json::to_string_pretty(&out).expect("serialisable")),
+        PsdFormat::Csv => {
+            let (q, c): (Vec<f64>, Vec<f64>) = a.bins.iter().map(|b| (b.q, b.psd)).unzip();
+            emit(asperity::surface::tabulated::to_csv(&q, &c).trim_end());
+        }
+        PsdFormat::Table => emit(&table(&out)),
+    }
+    let spec = chart(&out, &a);
+    for (path, png) in [(&args.svg, false), (&args.png, true)] {
+        if let Some(p) = path {
+            let r = if png {
+                crate::chart::write_png(&spec, p)
+            } else {
+                crate::chart::write_svg(&spec, p)
+            };
+            r.map_err(|e| Error::Io(format!("cannot write {}: {e}", p.display())))?;
+            eprintln!("asperity psd: wrote {}", p.display());
+        }
+    }
+    Ok(())
+}
+
+fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::ChartSpec {
+    use crate::chart::{ChartSpec, Series, SeriesStyle};
+    let mut series = vec![Series {
+        name: "C(q), radial average".into(),
+        points: a.bins.iter().map(|b| (b.q, b.psd)).collect(),
+        style: SeriesStyle::Points,
+    }];
+    if let (Some(f), Some(first)) = (&a.fit, a.bins.first()) {
+        // the fitted law through the bins: plateau to q_r, power law to q_s
+        let c_r = a
+            .bins
+            .iter()
+            .filter(|b| b.q <= f.q_s)
+            .map(|b| b.psd.ln() + f.exponent * (b.q / f.q_r).ln().max(0.0))
+            .sum::<f64>()
+            / a.bins.iter().filter(|b| b.q <= f.q_s).count().max(1) as f64;
+        let law = |q: f64| (c_r - f.exponent * (q / f.q_r).ln().max(0.0)).exp();
+        series.push(Series {
+            name: format!("self-affine fit, H = {:.3}", f.hurst),
+            points: vec![(first.q, law(first.q)), (f.q_r, law(f.q_r)), (f.q_s, law(f.q_s))],
+            style: SeriesStyle::Dashed,
+        });
+    }
+    ChartSpec {
+        title: format!("PSD of {}", o.file),
+        x_label: "q (1/m)".into(),
+        y_label: "C(q) (m^4)".into(),
+        x_log: true,
+        y_log: true,
+        series,
+    }
+}
+
+fn table(o: &PsdOutput) -> String {
+    let mut t = String::new();
+    let mut line = |k: &str, v: String| t.push_str(&format!("{k:<24}{v}\n"));
+    line("file", o.file.clone());
+    line(
+        "points",
+        format!(
+            "{} x {}{}",
+            o.points[0],
+            o.points[1],
+            if o.line_scan {
+                " (line scan: 1-D PSD converted to 2-D)"
+            } else {
+                ""
+            }
+        ),
+    );
+    line("system_size_m", format!("{:.6e}", o.system_size_m));
+    line("detrend / window", format!("{} / {}", o.detrend, o.window));
+    line("rms_height_m", format!("{:.6e}", o.rms_height_m));
+    line("rms_gradient", format!("{:.6}", o.rms_gradient));
+    line("rms_curvature", format!("{:.6e} 1/m", o.rms_curvature));
+    match (
+        o.hurst,
+        o.hurst_error,
+        o.rolloff_wavelength_range_m,
+        o.short_wavelength_range_m,
+    ) {
+        (Some(h), Some(e), Some(r), Some(s)) => {
+            line("hurst", format!("{h:.4} +- {e:.4}"));
+            line(
+                "rolloff_wavelength_m",
+                format!(
+                    "{:.4e} (in [{:.4e}, {:.4e}])",
+                    o.rolloff_wavelength_m.unwrap_or(f64::NAN),
+                    r[0],
+                    r[1]
+                ),
+            );
+            line(
+                "short_wavelength_m",
+                format!(
+                    "{:.4e} (in [{:.4e}, {:.4e}])",
+                    o.short_wavelength_m.unwrap_or(f64::NAN),
+                    s[0],
+                    s[1]
+                ),
+            );
+        }
+        _ => line("fit", "none (fewer than four bins)".into()),
+    }
+    t.push_str(&format!("\n{:>14} {:>14} {:>8}\n", "q (1/m)", "psd (m^4)", "modes"));
+    for b in &o.table {
+        t.push_str(&format!("{:>14.6e} {:>14.6e} {:>8}\n", b.q, b.psd, b.modes));
+    }
+    t.trim_end().to_string()
+}

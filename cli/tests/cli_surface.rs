@@ -1,0 +1,184 @@
+//! Measured surfaces end to end: `psd`, and `run`, `sweep`, `gfmd` on a shipped map that is not
+//! self-affine (tests/fixtures/two_bands.txt: two bands of roughness, one anisotropic), and the
+//! theory on the CSV table of an ideal self-affine spectrum against the preset's analytic one.
+
+use asperity::input::preset::Preset;
+use asperity::surface::spectrum::Spectrum;
+use std::process::{Command, Output};
+
+const MAP: &str = "tests/fixtures/two_bands.txt";
+
+fn asperity(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap()
+}
+
+fn ok(args: &[&str]) -> String {
+    let out = asperity(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    serde_json::from_str(&ok(args)).unwrap()
+}
+
+fn tmp(name: &str) -> String {
+    let d = std::env::temp_dir().join(format!("asperity-cli-surface-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d.join(name).display().to_string()
+}
+
+#[test]
+fn psd_of_the_two_band_map() {
+    let v = json(&["psd", MAP, "--periodic", "--format", "json"]);
+    // the file's header: 2 µm wide, heights in nm
+    assert!((v["system_size_m"].as_f64().unwrap() - 2e-6).abs() < 1e-18);
+    let h = v["rms_height_m"].as_f64().unwrap();
+    assert!(h > 1e-9 && h < 1e-7, "{h}");
+    // the table integrates (trapezoid in ln q) to about h_rms² and has two separate bands
+    let t = v["table"].as_array().unwrap();
+    assert!(t.len() >= 4);
+    let q: Vec<f64> = t.iter().map(|r| r["q"].as_f64().unwrap()).collect();
+    let c: Vec<f64> = t.iter().map(|r| r["psd"].as_f64().unwrap()).collect();
+    let peak = c.iter().cloned().fold(0.0, f64::max);
+    assert!(c.iter().any(|&x| x < 1e-3 * peak), "a gap between the bands: {c:?}");
+    let csv = ok(&["psd", MAP, "--periodic", "--format", "csv"]);
+    assert!(csv.starts_with("q,psd\n"));
+    assert_eq!(csv.lines().count(), q.len() + 1);
+    for k in [
+        "rms_gradient",
+        "rms_curvature",
+        "hurst",
+        "rolloff_wavelength_m",
+        "short_wavelength_m",
+    ] {
+        assert!(v.get(k).is_some(), "{k}");
+    }
+}
+
+#[test]
+fn run_sweep_and_gfmd_on_the_two_band_map() {
+    let v = json(&[
+        "run",
+        "--surface",
+        MAP,
+        "--periodic",
+        "--gamma",
+        "0",
+        "--pressure",
+        "0.1",
+    ]);
+    assert_eq!(v["scene"]["spectrum"], "tabulated");
+    assert_eq!(v["scene"]["spectrum_source"], MAP);
+    let a = v["a_r"].as_f64().unwrap();
+    assert!(a > 0.0 && a < 1.0, "{a}");
+    // with adhesion (the preset's gamma), and a PSD table written by `psd`
+    let table = tmp("two_bands.csv");
+    std::fs::write(&table, ok(&["psd", MAP, "--periodic", "--format", "csv"])).unwrap();
+    let w = json(&["run", "--psd", &table, "--pressure", "0.1", "--thickness", "1"]);
+    assert!(w["a_r"].as_f64().unwrap() > 0.0);
+    let csv = ok(&[
+        "sweep",
+        "--surface",
+        MAP,
+        "--periodic",
+        "--from",
+        "0.01",
+        "--to",
+        "0.3",
+        "--points",
+        "3",
+    ]);
+    assert_eq!(csv.lines().count(), 4, "{csv}");
+    let csv = ok(&[
+        "sweep",
+        "--psd",
+        &table,
+        "--over",
+        "gamma",
+        "--from",
+        "0",
+        "--to",
+        "0.01",
+        "--points",
+        "2",
+        "--pressure",
+        "0.1",
+    ]);
+    assert_eq!(csv.lines().count(), 3, "{csv}");
+    // GFMD on the map itself, with the theory on the map's own modes beside it
+    let g = json(&["gfmd", "--surface", MAP, "--gamma", "0", "--pressure", "0.1"]);
+    let ga = g["a_r"].as_f64().unwrap();
+    let ta = g["theory"]["a_r"].as_f64().unwrap();
+    assert!(ga > 0.0 && ga < 1.0 && ta > 0.0 && ta < 1.0, "{ga} {ta}");
+}
+
+#[test]
+fn the_theory_on_the_csv_of_an_ideal_spectrum_equals_the_preset() {
+    let p = Preset::resolve("system-2").unwrap();
+    let Spectrum::SelfAffine(sa) = p.spectrum().unwrap() else {
+        unreachable!()
+    };
+    let mut q: Vec<f64> = (0..=50)
+        .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / 50.0))
+        .collect();
+    q.push(sa.q_r());
+    q.sort_by(f64::total_cmp);
+    q.dedup_by(|a, b| (*a / *b - 1.0).abs() < 1e-9);
+    q[0] = sa.q_l();
+    *q.last_mut().unwrap() = sa.q_s();
+    let c: Vec<f64> = q.iter().map(|&x| sa.psd(x)).collect();
+    let path = tmp("ideal.csv");
+    std::fs::write(&path, asperity::surface::tabulated::to_csv(&q, &c)).unwrap();
+    for extra in [&["--thickness", "inf"][..], &["--thickness", "0.5", "--gamma", "0"][..]] {
+        let mut base = vec!["run", "--preset", "system-2"];
+        base.extend_from_slice(extra);
+        let a = json(&base);
+        base.extend_from_slice(&["--psd", &path]);
+        let b = json(&base);
+        assert_eq!(b["scene"]["spectrum"], "tabulated");
+        assert_eq!(a["scene"]["spectrum"], "self-affine");
+        for k in ["a_r", "mean_contact_stress", "mean_gap_rel"] {
+            let (x, y) = (a[k].as_f64().unwrap(), b[k].as_f64().unwrap());
+            assert!(
+                (y / x - 1.0).abs() < asperity::tolerances::TABULATED_THEORY_REL,
+                "{extra:?} {k}: {y} vs {x}"
+            );
+        }
+    }
+}
+
+#[test]
+fn bad_surface_input_is_one_line_and_exit_2() {
+    let bad = tmp("bad.txt");
+    std::fs::write(&bad, "1 2 3\n4 x 6\n").unwrap();
+    let csv = tmp("bad.csv");
+    std::fs::write(&csv, "q,psd\n1e6,1e-30\n2e6,-1\n").unwrap();
+    for (args, needle) in [
+        (
+            vec!["psd", bad.as_str(), "--size", "1e-6"],
+            "bad.txt:2: 'x' (not a number)",
+        ),
+        (vec!["run", "--psd", csv.as_str()], "row 2: psd = -1"),
+        (vec!["run", "--psd", MAP], "has no columns named q and psd"),
+        (vec!["psd", "tests/fixtures/none.npy", "--size", "1e-6"], "cannot read"),
+        (vec!["psd", MAP, "--bins-per-decade", "0"], "--bins-per-decade"),
+        (vec!["run", "--size", "1e-6"], "only with --surface"),
+        (vec!["gfmd", "--psd", csv.as_str()], "none for gfmd"),
+        (vec!["run", "--surface", MAP, "--qmin", "1e20"], "--qmin"),
+    ] {
+        let out = asperity(&args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+    }
+}
