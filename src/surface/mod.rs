@@ -1,5 +1,6 @@
 //! The rough surface: its height spectrum C(q) and random height maps drawn from it.
 
+pub mod fit;
 pub mod heightmap;
 pub mod psd;
 pub mod readers;

@@ -14,7 +14,7 @@
 //! ∫qⁿ dm are exact sums of power-law integrals over the intervals.
 //!
 //! The roll-off wave number q_r (the unit of reduced thicknesses t·q_r) is the fitted roll-off
-//! of [`crate::surface::psd::fit_self_affine`] on the table inside the cut-offs.
+//! of [`crate::surface::fit::fit_self_affine`] on the table inside the cut-offs.
 
 use crate::error::{fmt_value, Error, Field, Result};
 use crate::surface::spectrum::{LENGTH_RANGE_M, RMS_GRADIENT_RANGE};
@@ -90,10 +90,10 @@ impl Tabulated {
         let q_min = q_min.unwrap_or(lo);
         let q_max = q_max.unwrap_or(hi);
         let range = format!("{} <= q <= {} (1/m, the table's ends)", fmt_value(lo), fmt_value(hi));
-        if !(q_min >= lo * (1.0 - 1e-12) && q_min < hi) {
+        if !(lo * (1.0 - 1e-12)..hi).contains(&q_min) {
             return Err(Error::invalid(Field::Other("q_min".into()), q_min, range));
         }
-        if !(q_max <= hi * (1.0 + 1e-12) && q_max > q_min) {
+        if q_max.is_nan() || q_max > hi * (1.0 + 1e-12) || q_max <= q_min {
             return Err(Error::invalid(
                 Field::Other("q_max".into()),
                 q_max,
@@ -127,7 +127,7 @@ impl Tabulated {
         t.kinks = t.find_kinks();
         let g = t.moment(2).sqrt();
         let (glo, ghi) = RMS_GRADIENT_RANGE;
-        if !(g >= glo && g <= ghi) {
+        if !(glo..=ghi).contains(&g) {
             return Err(Error::invalid_text(
                 Field::RmsGradient,
                 format!("{} (of the table {source})", fmt_value(g)),
@@ -141,11 +141,11 @@ impl Tabulated {
         let (qs, cs): (Vec<f64>, Vec<f64>) =
             t.q.iter()
                 .zip(&t.psd)
-                .filter(|(&x, _)| x >= t.q_min && x <= t.q_max)
+                .filter(|(&x, _)| (t.q_min..=t.q_max).contains(&x))
                 .map(|(&x, &c)| (x, c))
                 .unzip();
         let weights = vec![1.0; qs.len()];
-        if let Some(fit) = crate::surface::psd::fit_self_affine(&qs, &cs, &weights) {
+        if let Some(fit) = crate::surface::fit::fit_self_affine(&qs, &cs, &weights) {
             t.q_r = fit.q_r.clamp(t.q_min, t.q_max);
         }
         Ok(t)
@@ -183,7 +183,7 @@ impl Tabulated {
 
     /// C(q) in m⁴ (0 outside [q_min, q_max]).
     pub fn psd_at(&self, x: f64) -> f64 {
-        if !(x >= self.q_min && x <= self.q_max) {
+        if !(self.q_min..=self.q_max).contains(&x) {
             return 0.0;
         }
         let i = self.interval(x);

@@ -49,13 +49,13 @@ pub struct SurfaceArgs {
     #[arg(long, conflicts_with = "surface")]
     pub psd: Option<PathBuf>,
     /// Side L of the --surface map in metres (its x side; overrides the file's).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, requires = "surface")]
     pub size: Option<f64>,
     /// Unit of the --surface heights where the file states none (default m).
-    #[arg(long, value_enum)]
+    #[arg(long, value_enum, requires = "surface")]
     pub height_unit: Option<HeightUnitArg>,
     /// The --surface map is periodic (generated or GFMD maps): no plane fit, no window.
-    #[arg(long)]
+    #[arg(long, requires = "surface")]
     pub periodic: bool,
     /// Lower cut-off of the tabulated spectrum in 1/m (default: the table's first q).
     #[arg(long, allow_hyphen_values = true)]
@@ -108,6 +108,7 @@ impl SurfaceArgs {
             self.map()?;
             Tabulated::load_csv(p, self.qmin, self.qmax)
         } else if let Some(s) = self.map()? {
+            s.check_rough()?;
             let a = psd::analyse(&s, &self.psd_options())?;
             let (q, c): (Vec<f64>, Vec<f64>) = a.bins.iter().map(|b| (b.q, b.psd)).unzip();
             let name = self
@@ -272,7 +273,7 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
         ..sa.psd_options()
     };
     let (lo, hi) = psd::BINS_PER_DECADE_RANGE;
-    if !(args.bins_per_decade >= lo && args.bins_per_decade <= hi) {
+    if !(lo..=hi).contains(&args.bins_per_decade) {
         return Err(Error::field(
             "--bins-per-decade",
             args.bins_per_decade,
