@@ -241,27 +241,21 @@ pub const ONSET_THRESHOLD_SMOOTH_REL: f64 = 1e-5;
 /// the oracle, where it resolves the error, none, worst 1.57).
 pub const ADHESION_ERROR_STEPS_FACTORS: [f64; 2] = [1.5, 2.0];
 
-// Mean gap with adhesion (docs/physics.md §5)
+// Mean gap with adhesion (docs/physics.md §5.1)
 
-/// ū at γ_s = 1e-6 J/m² (γ̃_glo ~ 1e-6) against the adhesionless ū (energy route on the ODE,
-/// and the Yang–Persson closed form for model 1): the two use different solvers, and the
-/// adhesive march's discretisation moves U_el (not a_r, which agrees to ~1e-6) by up to a few
-/// 1e-4 over the loads up to full contact. Measured 1e-5 (system I, model 1), 4.2e-4
-/// (system II, model 4).
+/// ū at γ_s = 1e-6 J/m² (γ̃_glo ~ 1e-6) against the adhesionless ū (the same energy route at
+/// a load raised by the contact's edge tension, X ∝ √γ_s) and the Yang–Persson closed form for
+/// model 1 (an independent quadrature).
 pub const GAP_GAMMA_LIMIT_REL: f64 = 1e-3;
 
-/// GFMD's mean gap (ū/h_rms) below which the comparisons are not made: near full contact ū is
-/// a small difference of a few nodes' gaps on a 128² map.
-pub const GFMD_GAP_FLOOR: f64 = 1e-2;
+/// The theory's adhesive ū against GFMD's ⟨g⟩ on the half-space (same map's spectrum, γ̃_glo
+/// and μ_T kept): the target, 10 %. Measured 2–6 % on system II's 512² map
+/// (BENCHMARKS.md).
+pub const GAP_GFMD_HALF_SPACE_REL: f64 = 0.10;
 
-/// ∫dU/p on GFMD's quarter-decade load table (U linear in p per interval) against the measured
-/// ū: the rule's own error (U is not linear in p within an interval); the bracket is met to
-/// 0.4 % at worst on the test maps (weak adhesion, where ū sits on the reversible bound).
-pub const GFMD_ROUTE_REL: f64 = 0.02;
-
-/// Theory against GFMD (ū/h_rms, same map's spectrum, loading): the theory is approximate; it
-/// must get the order of magnitude (measured within a factor of 1.6 on the test maps).
-pub const GFMD_GAP_FACTOR: f64 = 3.0;
+/// On slabs the theory's adhesive ū may miss GFMD's by its adhesionless error on the same map
+/// plus this much (the target, 10 percentage points).
+pub const GAP_GFMD_SLAB_EXTRA: f64 = 0.10;
 
 /// Gauging (c₁, c₂) on [S-18] over p* = 1e-3…1 against \[S\]'s −2/9, 2/3: \[S\] states no
 /// uncertainty and gauged "closely", by eye on Fig. 1. The relative least-squares fit pins

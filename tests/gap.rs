@@ -25,7 +25,7 @@ fn with_p(scene: &Scene, p: f64) -> Scene {
 }
 
 fn energy_route(scene: &Scene, p: f64) -> gap::MeanGap {
-    gap::mean_gap(&with_p(scene, p), &Options::default()).unwrap().unwrap()
+    gap::mean_gap(&with_p(scene, p), &Options::default()).unwrap()
 }
 
 #[test]
@@ -215,12 +215,13 @@ fn hard_cases_give_finite_monotone_gaps() {
 
 #[test]
 fn no_gap_for_non_positive_load() {
-    // the engine rejects p* <= 0 before a gap is asked for; the gap module reports None
+    // the energy route is singular at p = 0: p* <= 0 is an error naming the load
     let mut s = system1(Model::named(1).unwrap());
-    s.pressure = 0.0;
-    assert_eq!(gap::mean_gap(&s, &Options::default()).unwrap(), None);
-    s.pressure = -0.1;
-    assert_eq!(gap::mean_gap(&s, &Options::default()).unwrap(), None);
+    for p in [0.0, -0.1, f64::NAN] {
+        s.pressure = p;
+        let e = gap::mean_gap(&s, &Options::default()).unwrap_err();
+        assert!(e.to_string().contains("p* > 0"), "{e}");
+    }
 }
 
 #[test]
@@ -231,7 +232,7 @@ fn gap_at_the_top_of_the_pressure_range_is_zero() {
         s.gamma = gamma;
         for p in [gap::full_contact_pressure(&s) * 1.01, 1e3] {
             s.pressure = p;
-            let g = gap::mean_gap(&s, &Options::default()).unwrap().unwrap();
+            let g = gap::mean_gap(&s, &Options::default()).unwrap();
             assert_eq!(g.relative, 0.0, "gamma {gamma}, p* {p}");
             assert!(g.energy_reduced.is_finite());
         }

@@ -85,6 +85,11 @@ const RUN: &[&str] = &[
     "mean_gap",
     "mean_gap_lower_rel",
     "mean_gap_rel",
+    // the gap's bracket, error bar and what it is (docs/physics.md §5.1)
+    "mean_gap_upper_rel",
+    "mean_gap_error",
+    "contact_load",
+    "mean_gap_about",
     "pr",
     "pr.density",
     "pr.sigma",
@@ -156,6 +161,10 @@ fn run_keys() {
                     "mean_gap_reversible_rel",
                     "sigma_a",
                     "stable",
+                    "mean_gap_lower_rel",
+                    "mean_gap_upper_rel",
+                    "mean_gap_error",
+                    "contact_load",
                 ],
                 "run branches",
             );
@@ -208,6 +217,13 @@ fn sweep_keys_and_columns() {
             "branches",
             // the mean gap's lower bound
             "mean_gap_lower_rel",
+            // the gap of each branch with its bracket (docs/physics.md §5.1)
+            "mean_gap_upper_rel",
+            "contact_load",
+            "mean_gap_unloading_rel",
+            "mean_gap_unloading_error",
+            "mean_gap_unloading_lower_rel",
+            "contact_load_unloading",
         ],
         "sweep rows",
     );
@@ -224,7 +240,13 @@ fn sweep_keys_and_columns() {
         .unwrap_or("")
         .to_string();
     assert!(header.contains(",a_r_unloading,branches"), "{header}");
-    assert!(header.ends_with(",mean_gap_lower_rel"), "{header}");
+    assert!(
+        header.ends_with(
+            ",mean_gap_lower_rel,mean_gap_upper_rel,contact_load,mean_gap_unloading_rel,\
+             mean_gap_unloading_error,mean_gap_unloading_lower_rel,contact_load_unloading"
+        ),
+        "{header}"
+    );
     assert!(
         header.starts_with(
             "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error,\

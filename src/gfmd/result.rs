@@ -118,15 +118,16 @@ pub fn run(
     let t_theory = Instant::now();
     let (theory, theory_error) = match prep.theory_scene(scene.pressure).and_then(|th| {
         let ev = engine::evaluate(&th, &engine::Options::default())?;
-        Ok((ev, gap::mean_gap(&th, &engine::Options::default())))
+        let g = gap::mean_gap_of(&th, &ev, &engine::Options::default());
+        Ok((ev, g))
     }) {
         Ok((ev, g)) => (
             Some(TheoryComparison {
                 stats: ev.stats,
                 width: ev.width,
                 model: scene.model.label(),
-                mean_gap: g.as_ref().ok().and_then(|g| g.map(|g| g.metres)),
-                mean_gap_rel: g.as_ref().ok().and_then(|g| g.map(|g| g.relative)),
+                mean_gap: g.as_ref().ok().map(|g| g.metres),
+                mean_gap_rel: g.as_ref().ok().map(|g| g.relative),
             }),
             None,
         ),

@@ -166,6 +166,10 @@ pub struct Evaluation {
     pub unloading_a_r: Option<f64>,
     /// Every branch at this load, lowest a_r first (empty without adhesion).
     pub branches: Vec<BranchState>,
+    /// Per entry of `branches`: the net force ∫σ* Pr dσ* its contact carries (reduced; p* plus
+    /// the tension carried off through the wall, physics.md §5.1). Empty without adhesion.
+    #[serde(skip)]
+    pub contact_loads: Vec<f64>,
     /// γ̃_glo = γ_s/u_ela^(f) [S-24].
     pub gamma_glo: f64,
     /// Wall time (s).
@@ -243,6 +247,7 @@ pub fn evaluate_continued(
         branch: Branch::Adhesionless,
         unloading_a_r: None,
         branches: Vec::new(),
+        contact_loads: Vec::new(),
         gamma_glo: 0.0,
         elapsed_s: t0.elapsed().as_secs_f64(),
         adhesive: None,
@@ -361,6 +366,7 @@ fn evaluate_adhesive(
         branch: sol.branch,
         unloading_a_r: sol.unloading_a_r,
         branches: sol.branches.clone(),
+        contact_loads: sol.contact_loads.clone(),
         gamma_glo: sol.gamma_glo,
         elapsed_s: t0.elapsed().as_secs_f64(),
         adhesive: Some(Box::new(sol)),

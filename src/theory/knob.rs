@@ -5,8 +5,8 @@
 //! caller's options (with [`engine::Options::default`] a point is bit for bit what
 //! `asperity run` gives for the same scene), in parallel: the results do not depend on the
 //! number of threads. A value whose solver does not converge is kept as an error and the
-//! sweep goes on; invalid input ends it. The mean gap [S-12], optional because it needs a
-//! load sweep up to full contact per value, comes from [`gap::mean_gap`].
+//! sweep goes on; invalid input ends it. The mean gap [S-12], optional because it needs an
+//! adhesionless load sweep up to full contact per value, comes from [`gap::mean_gap_of`].
 //!
 //! Spacing: t·q_r is log-spaced (it spans decades, \[S\] Fig. 7 runs from 0.01 to ∞); γ_s is
 //! spaced linearly (so that a sweep may start at γ_s = 0, the adhesionless limit).
@@ -131,7 +131,7 @@ pub struct KnobPoint {
     pub scene: Scene,
     /// The evaluation, or why the solver did not converge.
     pub result: std::result::Result<Evaluation, Error>,
-    /// The mean gap (`None` when not asked for, or p* ≤ 0), or why it is unavailable.
+    /// The mean gap (`None` when not asked for), or why it is unavailable.
     pub gap: std::result::Result<Option<MeanGap>, Error>,
 }
 
@@ -164,10 +164,9 @@ pub fn knob_sweep(
                 Err(e) => return Err(e),
                 Ok(ev) => Ok(ev),
             };
-            let gap = if with_gap && result.is_ok() {
-                gap::mean_gap(&s, opts)
-            } else {
-                Ok(None)
+            let gap = match &result {
+                Ok(ev) if with_gap => gap::mean_gap_of(&s, ev, opts).map(Some),
+                _ => Ok(None),
             };
             Ok(KnobPoint {
                 value: v,

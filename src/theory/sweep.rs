@@ -115,6 +115,22 @@ pub struct SweepRow {
     /// Number of solutions at this load (1 without adhesion or hysteresis, 3 inside a window:
     /// loading, unstable, unloading; 0 where the solver did not converge).
     pub branches: usize,
+    /// Upper end of the gap's bracket: the adhesionless gap ū₀(p*)/h_rms at the same load
+    /// (physics.md §5.1); equal to `mean_gap_rel` without adhesion.
+    pub mean_gap_upper_rel: f64,
+    /// p_c* of the loading branch: the net force its contact carries per nominal area, at which
+    /// its gap is the adhesionless one (p* without adhesion).
+    pub contact_load: f64,
+    /// ū/h_rms of the unloading branch where it differs from the loading one (inside a
+    /// hysteresis window); NaN (`null`) elsewhere.
+    pub mean_gap_unloading_rel: f64,
+    /// Its estimated absolute error; NaN as `mean_gap_unloading_rel`.
+    pub mean_gap_unloading_error: f64,
+    /// Lower end of its bracket (its upper end is `mean_gap_upper_rel`); NaN as
+    /// `mean_gap_unloading_rel`.
+    pub mean_gap_unloading_lower_rel: f64,
+    /// p_c* of the unloading branch; NaN as `mean_gap_unloading_rel`.
+    pub contact_load_unloading: f64,
 }
 
 impl SweepRow {
@@ -135,6 +151,12 @@ impl SweepRow {
             mean_gap_lower_rel: f64::NAN,
             a_r_unloading: f64::NAN,
             branches: 0,
+            mean_gap_upper_rel: f64::NAN,
+            contact_load: f64::NAN,
+            mean_gap_unloading_rel: f64::NAN,
+            mean_gap_unloading_error: f64::NAN,
+            mean_gap_unloading_lower_rel: f64::NAN,
+            contact_load_unloading: f64::NAN,
         }
     }
 }
@@ -220,90 +242,71 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         .collect();
     let evs = node_results(scene, &ps, opts, cancel)?;
     let unit = crate::theory::energy::energy_unit(scene);
-    // ū(p) integrates U over every load above p: below the highest failed load it is unknown,
-    // and so it is below a load where the stored energy falls (not one stable branch)
-    let last_fail = evs.iter().rposition(|e| e.is_err());
-    let mut first_ok = last_fail.map_or(0, |f| f + 1);
-    let stored: Vec<f64> = evs
-        .iter()
-        .map(|e| e.as_ref().map_or(f64::NAN, |e| gap::stored_energy(scene, e) / unit))
-        .collect();
-    let mut gap_note = None;
-    if n - first_ok >= 4 {
-        if let Some(j) = gap::route::last_decrease(&stored[first_ok..]) {
-            gap_note = Some(format!(
-                "the stored elastic energy falls between p* = {:.6e} and {:.6e} (the loads are not one \
-                 stable branch there): the mean gap is unknown at and below the first of them",
-                ps[first_ok + j],
-                ps[first_ok + j + 1]
-            ));
-            first_ok += j + 1;
-        }
-    }
     // the hysteresis window: the first run of grid loads with two stable branches, each edge
-    // inside the grid refined by bisection between its two grid loads; the loading branch's
-    // jump into contact is then placed at its load in the gap table
+    // inside the grid refined by bisection between its two grid loads
     let branches: Vec<Option<&[_]>> = evs
         .iter()
         .map(|e| e.as_ref().ok().map(|e| e.branches.as_slice()))
         .collect();
     let window = window::window_on_branches(scene, &ps, &branches, &opts.adhesion, opts.edge_rel, cancel)?;
     let (jump_in_pressure, pull_off_pressure) = (window.jump_in_pressure, window.pull_off_pressure);
-    let jump = jump_in_pressure.map(|p| gap::KnownJump {
-        ln_p: p.ln(),
-        uncertainty_ln: 0.5 * opts.edge_rel,
-    });
-    // a gap table that cannot be built leaves the rows without a gap, as `run` does
-    let table = if n - first_ok >= 4 {
-        let total: Vec<f64> = evs[first_ok..]
-            .iter()
-            .map(|e| e.as_ref().map_or(f64::NAN, |e| e.elastic_energy / unit))
-            .collect();
-        match GapTable::from_energies_with_jump(
-            x0 + first_ok as f64 * step,
-            step,
-            stored[first_ok..].to_vec(),
-            total,
-            jump,
-        ) {
-            Ok(t) => Some(t),
-            Err(Error::Cancelled) => return Err(Error::Cancelled),
-            Err(e) => {
-                let why = format!("mean gap unavailable: {e}");
-                gap_note = Some(gap_note.map_or(why.clone(), |g| format!("{g}; {why}")));
-                None
+    // the mean gap (physics.md §5.1): without adhesion the energy route on this grid's own
+    // table; with adhesion the load each branch's contact carries on the adhesionless table of the scene
+    let (gaps, gap_note) = if scene.gamma > 0.0 {
+        match gap::DryGap::new(scene, spec.from, opts) {
+            Ok(dry) => {
+                let gaps = (0..n)
+                    .map(|i| match &evs[i] {
+                        Ok(e) if i % m == 0 => gap::branch_gaps(&dry, ps[i], e).ok(),
+                        _ => None,
+                    })
+                    .collect();
+                (gaps, None)
             }
+            Err(Error::Cancelled) => return Err(Error::Cancelled),
+            Err(e) => (vec![None; n], Some(format!("mean gap unavailable: {e}"))),
         }
     } else {
-        None
+        dry_sweep_gaps(scene, &ps, step, &evs, unit)?
     };
     let h_rms = scene.spectrum.rms_height();
-    let gap_at = |i: usize| -> (f64, f64, f64) {
-        match &table {
-            Some(t) if i >= first_ok => (t.gap[i - first_ok], t.error[i - first_ok], t.lower[i - first_ok]),
-            _ => (f64::NAN, f64::NAN, f64::NAN),
-        }
-    };
     let mut failed_loads = Vec::new();
     let rows: Vec<SweepRow> = (0..spec.points)
         .map(|k| {
             let i = k * m;
-            let (g, g_err, g_lo) = gap_at(i);
+            let nan = f64::NAN;
+            let (l, u) = gaps[i].unwrap_or((
+                gap::BranchGap {
+                    relative: nan,
+                    error: nan,
+                    lower: nan,
+                    upper: nan,
+                    contact_load: nan,
+                },
+                None,
+            ));
+            let un = |f: fn(&gap::BranchGap) -> f64| u.as_ref().map_or(nan, f);
             match &evs[i] {
                 Ok(e) => SweepRow {
                     p: ps[i],
                     a_r: e.stats.a_r,
-                    mean_gap_rel: g,
-                    mean_gap: g * h_rms,
+                    mean_gap_rel: l.relative,
+                    mean_gap: l.relative * h_rms,
                     mean_contact_stress: e.stats.mean_contact_stress,
                     elastic_energy: e.elastic_energy,
                     converged: true,
                     elastic_energy_reduced: e.elastic_energy / unit,
-                    mean_gap_error: g_err,
+                    mean_gap_error: l.error,
                     contact_stress_variance: e.stats.contact_stress_variance,
-                    mean_gap_lower_rel: g_lo,
+                    mean_gap_lower_rel: l.lower,
                     a_r_unloading: e.unloading_a_r.unwrap_or(f64::NAN),
                     branches: e.branches.len().max(1),
+                    mean_gap_upper_rel: l.upper,
+                    contact_load: l.contact_load,
+                    mean_gap_unloading_rel: un(|b| b.relative),
+                    mean_gap_unloading_error: un(|b| b.error),
+                    mean_gap_unloading_lower_rel: un(|b| b.lower),
+                    contact_load_unloading: un(|b| b.contact_load),
                 },
                 Err(_) => {
                     failed_loads.push(ps[i]);
@@ -312,18 +315,26 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
             }
         })
         .collect();
-    let note = last_fail.map(|f| {
+    let note = evs.iter().rposition(|e| e.is_err()).map(|f| {
         let first_err = evs
             .iter()
             .find_map(|e| e.as_ref().err())
             .map(|e| e.to_string())
             .unwrap_or_default();
+        // without adhesion the gap integrates over every load above; with adhesion each row's
+        // gap is its own state's
+        let below = if scene.gamma > 0.0 {
+            String::new()
+        } else {
+            format!(
+                ", and the mean gap is unknown at and below p* = {:.6e}, the highest of them",
+                ps[f]
+            )
+        };
         format!(
-            "{} of {} loads did not converge (the first: {first_err}); their rows are empty (null), \
-             and the mean gap is unknown at and below p* = {:.6e}, the highest of them",
+            "{} of {} loads did not converge (the first: {first_err}); their rows are empty (null){below}",
             evs.iter().filter(|e| e.is_err()).count(),
             n,
-            ps[f]
         )
     });
     let note = match (note, gap_note) {
@@ -348,6 +359,65 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         jump_in_pressure,
         pull_off_pressure,
     })
+}
+
+/// Per grid load, the adhesionless mean gap by the energy route on the sweep's own table (see
+/// the module docs), and a note where part of it is unknown: below the highest failed load,
+/// or below a load where the stored energy falls (not one stable branch).
+type NodeGaps = Vec<Option<(gap::BranchGap, Option<gap::BranchGap>)>>;
+
+fn dry_sweep_gaps(
+    scene: &Scene,
+    ps: &[f64],
+    step: f64,
+    evs: &[Result<crate::theory::engine::Evaluation>],
+    unit: f64,
+) -> Result<(NodeGaps, Option<String>)> {
+    let n = ps.len();
+    let last_fail = evs.iter().rposition(|e| e.is_err());
+    let mut first_ok = last_fail.map_or(0, |f| f + 1);
+    let stored: Vec<f64> = evs
+        .iter()
+        .map(|e| e.as_ref().map_or(f64::NAN, |e| gap::stored_energy(scene, e) / unit))
+        .collect();
+    let mut gap_note = None;
+    if n - first_ok >= 4 {
+        if let Some(j) = gap::route::last_decrease(&stored[first_ok..]) {
+            gap_note = Some(format!(
+                "the stored elastic energy falls between p* = {:.6e} and {:.6e} (the loads are not one \
+                 stable branch there): the mean gap is unknown at and below the first of them",
+                ps[first_ok + j],
+                ps[first_ok + j + 1]
+            ));
+            first_ok += j + 1;
+        }
+    }
+    let mut gaps = vec![None; n];
+    if n - first_ok >= 4 {
+        // a gap table that cannot be built leaves the rows without a gap, as `run` does
+        let table = match GapTable::from_energy(ps[first_ok].ln(), step, stored[first_ok..].to_vec()) {
+            Ok(t) => t,
+            Err(Error::Cancelled) => return Err(Error::Cancelled),
+            Err(e) => {
+                let why = format!("mean gap unavailable: {e}");
+                return Ok((gaps, Some(gap_note.map_or(why.clone(), |g| format!("{g}; {why}")))));
+            }
+        };
+        for i in first_ok..n {
+            let g = table.gap[i - first_ok];
+            gaps[i] = Some((
+                gap::BranchGap {
+                    relative: g,
+                    error: table.error[i - first_ok],
+                    lower: g,
+                    upper: g,
+                    contact_load: ps[i],
+                },
+                None,
+            ));
+        }
+    }
+    Ok((gaps, gap_note))
 }
 
 /// A sweep column `values` at p* by cubic Lagrange interpolation in ln p* on the four nearest

@@ -257,16 +257,26 @@ pub struct RunOutput {
     pub converged: bool,
     /// Estimated absolute error of a_r.
     pub error_estimate: f64,
-    /// Mean gap ū (m) by the energy route on the stored elastic energy [S-12, S-14] (with
-    /// adhesion: the loading path that spends the interfacial energy in the cohesive zone,
-    /// docs/physics.md §5); null when unavailable (p* <= 0).
+    /// Mean gap ū (m) of the loading branch: the adhesionless gap [S-12] at the load the
+    /// branch's contact carries (without adhesion: the energy route itself; docs/physics.md §5.1); null
+    /// when unavailable.
     pub mean_gap: Option<f64>,
     /// ū/h_rms; null when unavailable.
     pub mean_gap_rel: Option<f64>,
-    /// Lower bound of ū/h_rms on loading: the reversible route on U = U_el − a_r·γ_s made
-    /// admissible (max(0, its largest value at this or a higher load)); equal to
-    /// `mean_gap_rel` without adhesion up to quadrature error; null when the gap is.
+    /// Lower end of ū/h_rms's bracket: the adhesionless gap at the load that gives the same
+    /// a_r (no higher than `mean_gap_rel`); equal to `mean_gap_rel` without adhesion; null
+    /// when the gap is.
     pub mean_gap_lower_rel: Option<f64>,
+    /// Upper end of the bracket: the adhesionless gap at the same load; null when the gap is.
+    pub mean_gap_upper_rel: Option<f64>,
+    /// Estimated absolute error of `mean_gap_rel` (quadrature and interpolation); null when
+    /// the gap is.
+    pub mean_gap_error: Option<f64>,
+    /// p_c*: the net force the loading branch's contact carries per nominal area, ∫σ*Pr dσ*
+    /// (p* plus the tension of the contact edges; p* without adhesion); null when the gap is.
+    pub contact_load: Option<f64>,
+    /// One line saying what `mean_gap_rel` is.
+    pub mean_gap_about: String,
     /// Why the mean gap is null (e.g. a load on the way to full contact where the adhesive
     /// solve did not converge); absent when it is given.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -289,7 +299,9 @@ pub struct RunOutput {
     pub unloading_a_r: Option<f64>,
     /// Every branch at this load, lowest a_r first: branch ("loading", "unstable",
     /// "unloading"), stable, a_r, sigma_a, gamma_coarse (γ(q_L)/γ_s), elastic_energy,
-    /// residual (the branch's |γ(q_s)/γ_s − 1|), mean_gap_rel, mean_gap_reversible_rel. Empty without adhesion.
+    /// residual (the branch's |γ(q_s)/γ_s − 1|), mean_gap_rel, mean_gap_reversible_rel,
+    /// mean_gap_lower_rel, mean_gap_upper_rel, mean_gap_error, contact_load. Empty
+    /// without adhesion.
     pub branches: Vec<RunBranch>,
     /// Inside a hysteresis window (two stable branches at this load): p* above which the
     /// loading branch no longer exists (jump into contact); null outside a window or when
@@ -316,37 +328,68 @@ pub struct RunBranch {
     /// branch, stable, a_r, sigma_a, gamma_coarse, elastic_energy, residual.
     #[serde(flatten)]
     pub state: asperity::theory::adhesion::BranchState,
-    /// ū/h_rms of this branch followed from this load up to full contact, by the reported
-    /// route (∫dU_el*/p*, docs/physics.md §5.1); null for an unstable branch (no quasi-static
-    /// path follows it) or when unavailable.
+    /// ū/h_rms of this branch: the adhesionless gap at the load its contact carries (docs/physics.md
+    /// §5.1); null for an unstable branch (no quasi-static path follows it) or when
+    /// unavailable.
     pub mean_gap_rel: Option<f64>,
-    /// The dissipation-free route ∫dU*/p* on the same branch: a lower bound of the gap on
-    /// loading, an upper bound on unloading; may be negative (no admissible gap is); null as
+    /// The adhesionless gap at the same load (the bracket's upper end, the same for every
+    /// branch: the dissipation-free route [S-12] of the scene without adhesion); null as
     /// `mean_gap_rel`.
     pub mean_gap_reversible_rel: Option<f64>,
+    /// The bracket's lower end: the adhesionless gap at the load with this branch's a_r;
+    /// null as `mean_gap_rel`.
+    pub mean_gap_lower_rel: Option<f64>,
+    /// The bracket's upper end (= `mean_gap_reversible_rel`); null as `mean_gap_rel`.
+    pub mean_gap_upper_rel: Option<f64>,
+    /// Estimated absolute error of `mean_gap_rel`; null as `mean_gap_rel`.
+    pub mean_gap_error: Option<f64>,
+    /// The net force the branch's contact carries per nominal area, ∫σ*Pr dσ*; null as
+    /// `mean_gap_rel`.
+    pub contact_load: Option<f64>,
 }
 
 /// The branches of an evaluation with their gaps (`gap`: the run's mean gap, which holds the
 /// loading branch's and, inside a hysteresis window, the unloading branch's).
 fn run_branches(ev: &engine::Evaluation, gap: Option<&asperity::theory::gap::MeanGap>) -> Vec<RunBranch> {
     use asperity::theory::adhesion::Branch;
+    use asperity::theory::gap::BranchGap;
     ev.branches
         .iter()
         .map(|b| {
-            let (rel, rev) = match (b.branch, gap) {
-                (Branch::Loading, Some(g)) => (Some(g.relative), Some(g.reversible)),
-                (Branch::Unloading, Some(g)) => g
-                    .unloading
-                    .map_or((None, None), |u| (Some(u.relative), Some(u.reversible))),
-                _ => (None, None),
+            let g: Option<BranchGap> = match (b.branch, gap) {
+                (Branch::Loading, Some(g)) if b.stable => Some(BranchGap {
+                    relative: g.relative,
+                    error: g.error,
+                    lower: g.lower,
+                    upper: g.upper,
+                    contact_load: g.contact_load,
+                }),
+                (Branch::Unloading, Some(g)) => g.unloading,
+                _ => None,
             };
             RunBranch {
                 state: b.clone(),
-                mean_gap_rel: rel,
-                mean_gap_reversible_rel: rev,
+                mean_gap_rel: g.map(|g| g.relative),
+                mean_gap_reversible_rel: g.map(|g| g.upper),
+                mean_gap_lower_rel: g.map(|g| g.lower),
+                mean_gap_upper_rel: g.map(|g| g.upper),
+                mean_gap_error: g.map(|g| g.error),
+                contact_load: g.map(|g| g.contact_load),
             }
         })
         .collect()
+}
+
+/// What `mean_gap_rel` is, in one line.
+pub fn mean_gap_about(adhesive: bool) -> String {
+    if adhesive {
+        "mean_gap_rel: the adhesionless gap at the load the branch's contact carries (p* + the pull of its edges) \
+         (docs/physics.md 5.1), bracketed by the adhesionless gap at the load with the same a_r \
+         (lower) and at the same load (upper)"
+            .into()
+    } else {
+        "mean_gap_rel: the energy route of Persson theory, integral of dU/p from p* to full contact [S-12]".into()
+    }
 }
 
 /// Evaluates one scene as `run` does.
@@ -374,13 +417,10 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
     } else {
         None
     };
-    // the gap needs the loading branch at every load up to full contact (and places its jump
-    // into contact at the window's jump-in): report why it is missing rather than failing
-    // the whole run
-    let jump_in = window.and_then(|w| w.jump_in_pressure);
-    let (gap, mean_gap_note) = match asperity::theory::gap::mean_gap_knowing(scene, &opts, jump_in) {
-        Ok(None) => (None, Some("the mean gap is defined for p* > 0 only".to_string())),
-        Ok(g) => (g, None),
+    // the gap of each branch from its own state at this load and the adhesionless table of
+    // the scene: report why it is missing rather than failing the whole run
+    let (gap, mean_gap_note) = match asperity::theory::gap::mean_gap_of(scene, &ev, &opts) {
+        Ok(g) => (Some(g), None),
         Err(e) => (None, Some(format!("mean gap unavailable: {e}"))),
     };
     Ok(RunOutput {
@@ -393,6 +433,10 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
         mean_gap: gap.map(|g| g.metres),
         mean_gap_rel: gap.map(|g| g.relative),
         mean_gap_lower_rel: gap.map(|g| g.lower),
+        mean_gap_upper_rel: gap.map(|g| g.upper),
+        mean_gap_error: gap.map(|g| g.error),
+        contact_load: gap.map(|g| g.contact_load),
+        mean_gap_about: mean_gap_about(scene.gamma > 0.0),
         mean_gap_note,
         elastic_energy: ev.elastic_energy,
         sigma_a: ev.sigma_a,
@@ -449,13 +493,22 @@ fn run_table(out: &RunOutput) -> String {
     line("width*", format!("{:.6}", out.width));
     line("error_estimate (a_r)", format!("{:.2e}", out.error_estimate));
     if let (Some(g), Some(r)) = (out.mean_gap, out.mean_gap_rel) {
-        line("mean_gap", format!("{g:.6e} m (u/h_rms = {r:.6})"));
-        if let (Some(lo), true) = (out.mean_gap_lower_rel, out.branch != "adhesionless") {
+        let err = out.mean_gap_error.map_or(String::new(), |e| format!(" +- {e:.1e}"));
+        line("mean_gap", format!("{g:.6e} m (u/h_rms = {r:.6}{err})"));
+        if let (Some(lo), Some(hi), true) = (
+            out.mean_gap_lower_rel,
+            out.mean_gap_upper_rel,
+            out.branch != "adhesionless",
+        ) {
             line(
-                "mean_gap lower bound",
-                format!("u/h_rms >= {lo:.6} (reversible loading)"),
+                "mean_gap bracket",
+                format!(
+                    "{lo:.6} <= u/h_rms <= {hi:.6} (same a_r / same load without adhesion); contact load p_c* = {:.4e}",
+                    out.contact_load.unwrap_or(f64::NAN)
+                ),
             );
         }
+        line("mean_gap is", out.mean_gap_about.clone());
     } else if let Some(n) = &out.mean_gap_note {
         line("mean_gap", n.clone());
     }

@@ -66,7 +66,8 @@ pub struct SweepArgs {
 /// rest were added with `--over`).
 pub const CSV_HEADER: &str = "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
 elastic_energy_reduced,mean_gap_error,contact_stress_variance,a_r_over_p,a_r_eq18,thickness_qr,gamma,\
-a_r_unloading,branches,mean_gap_lower_rel";
+a_r_unloading,branches,mean_gap_lower_rel,mean_gap_upper_rel,contact_load,mean_gap_unloading_rel,\
+mean_gap_unloading_error,mean_gap_unloading_lower_rel,contact_load_unloading";
 
 /// One row of `sweep` (CSV columns and JSON keys). Unavailable numbers are null (empty cells).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -154,7 +155,7 @@ pub fn csv(rows: &[Row]) -> String {
     for row in rows {
         let r = &row.row;
         out.push_str(&format!(
-            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.p,
             f(r.a_r),
             f(r.mean_gap_rel),
@@ -172,6 +173,12 @@ pub fn csv(rows: &[Row]) -> String {
             f(r.a_r_unloading),
             r.branches,
             f(r.mean_gap_lower_rel),
+            f(r.mean_gap_upper_rel),
+            f(r.contact_load),
+            f(r.mean_gap_unloading_rel),
+            f(r.mean_gap_unloading_error),
+            f(r.mean_gap_unloading_lower_rel),
+            f(r.contact_load_unloading),
         ));
     }
     out
@@ -258,6 +265,14 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                                     r.mean_gap = g.metres;
                                     r.mean_gap_error = g.error;
                                     r.mean_gap_lower_rel = g.lower;
+                                    r.mean_gap_upper_rel = g.upper;
+                                    r.contact_load = g.contact_load;
+                                    if let Some(u) = g.unloading {
+                                        r.mean_gap_unloading_rel = u.relative;
+                                        r.mean_gap_unloading_error = u.error;
+                                        r.mean_gap_unloading_lower_rel = u.lower;
+                                        r.contact_load_unloading = u.contact_load;
+                                    }
                                 }
                                 Ok(None) => {}
                                 Err(e) => notes.push(format!("value {:e}: mean gap unavailable: {e}", pt.value)),

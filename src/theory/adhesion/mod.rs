@@ -250,6 +250,10 @@ pub struct AdhesiveSolution {
     pub gamma_glo: f64,
     /// Every branch of the scene at this load, lowest a_r first (the chosen one included).
     pub branches: Vec<BranchState>,
+    /// Per entry of `branches`: the net force its contact carries per nominal area,
+    /// ∫σ* Pr dσ* over the contact (reduced): p* plus the tension carried off through the wall
+    /// (physics.md §4; it sets the branch's mean gap, §5.1).
+    pub contact_loads: Vec<f64>,
     /// γ_s of the scene (J/m²).
     pub gamma_s: f64,
 }

@@ -123,6 +123,7 @@ pub(crate) fn solve_checked(
     let mut sol = finish(scene, &grid, root, shots)?;
     sol.unloading_a_r = upper.map(|u| branches[u].a_r);
     sol.branches = branches;
+    sol.contact_loads = roots.iter().map(|r| contact_load(scene, &grid, r)).collect();
     Ok(sol)
 }
 
@@ -142,23 +143,28 @@ fn branch_state(scene: &Scene, grid: &Grid, r: &Root, branch: Branch) -> BranchS
     }
 }
 
-/// The solution at a root: Pr(σ*) at q_s and its moments from the recorded march's final
-/// state (the wall moved to σ_a(q_s)), γ(q) and σ_a(q) at the nodes, and the energy.
-fn finish(scene: &Scene, grid: &Grid, root: &Root, iterations: usize) -> Result<AdhesiveSolution> {
-    let rec = &root.record;
+/// The net force the contact of a root carries per nominal area, ∫σ* Pr dσ* over the contact
+/// at q_s (reduced): p* + X, X = ∫σ_a(q)|da_r(q)| the tension carried off by the area that
+/// detached at the wall (physics.md §4, §5.1), summed over the resolution steps with the
+/// trapezoid rule (X directly, not ∫σPr − p*, which would lose it to round-off at small γ_s).
+fn contact_load(scene: &Scene, grid: &Grid, r: &Root) -> f64 {
+    let rec = &r.record;
+    let wall = |k: usize| sigma_at(scene, grid.q[k], rec.gamma_nodes[k]);
+    let n = rec.a_nodes.len().min(grid.q.len()).min(rec.gamma_nodes.len());
+    let x: f64 = (1..n)
+        .map(|k| 0.5 * (wall(k - 1) + wall(k)) * (rec.a_nodes[k - 1] - rec.a_nodes[k]).max(0.0))
+        .sum();
+    scene.pressure + x
+}
+
+/// Pr(σ*) at q_s from a recorded march's final state with the wall moved to σ_a(q_s): the
+/// samples σ*, the density and the wall's position.
+fn final_distribution(scene: &Scene, grid: &Grid, rec: &super::shooting::Record) -> (Vec<f64>, Vec<f64>, f64) {
     let fin = &rec.end;
-    let gs = scene.gamma;
-    let sigma_nodes: Vec<f64> = grid
-        .q
-        .iter()
-        .zip(&rec.gamma_nodes)
-        .map(|(&q, &g)| sigma_at(scene, q, g))
-        .collect();
-    // the final state with the wall at σ_a(q_s)
-    let s_end = *sigma_nodes.last().unwrap_or(&0.0);
+    let q_s = grid.q.last().copied().unwrap_or(0.0);
+    let s_end = sigma_at(scene, q_s, rec.gamma_nodes.last().copied().unwrap_or(0.0));
     let p0 = scene.pressure;
-    let fin_v = fin.v;
-    let (sigma, density, wall_end) = match &fin.state {
+    match &fin.state {
         State::Analytic => {
             // mirror Gaussian about −wall: sample it
             let wall = fin.wall;
@@ -189,7 +195,24 @@ fn finish(scene: &Scene, grid: &Grid, root: &Root, iterations: usize) -> Result<
             let sig = (0..p.len()).map(|j| j as f64 * h - s_end).collect();
             (sig, p, s_end)
         }
-    };
+    }
+}
+
+/// The solution at a root: Pr(σ*) at q_s and its moments from the recorded march's final
+/// state (the wall moved to σ_a(q_s)), γ(q) and σ_a(q) at the nodes, and the energy.
+fn finish(scene: &Scene, grid: &Grid, root: &Root, iterations: usize) -> Result<AdhesiveSolution> {
+    let rec = &root.record;
+    let fin = &rec.end;
+    let gs = scene.gamma;
+    let sigma_nodes: Vec<f64> = grid
+        .q
+        .iter()
+        .zip(&rec.gamma_nodes)
+        .map(|(&q, &g)| sigma_at(scene, q, g))
+        .collect();
+    let p0 = scene.pressure;
+    let fin_v = fin.v;
+    let (sigma, density, wall_end) = final_distribution(scene, grid, rec);
     let (_, mean, var, tensile) =
         match super::propagator::state_moments(&fin.state, &sigma, &density, p0, fin_v, wall_end) {
             Some(t) => t,
@@ -225,6 +248,7 @@ fn finish(scene: &Scene, grid: &Grid, root: &Root, iterations: usize) -> Result<
         branch: Branch::Loading,
         unloading_a_r: None,
         branches: Vec::new(),
+        contact_loads: Vec::new(),
         gamma_s: scene.gamma,
         elastic_energy: energy,
         gamma_glo: if u_f > 0.0 { scene.gamma / u_f } else { 0.0 },

@@ -1,42 +1,43 @@
-//! Mean gap ū(p₀) from the elastic energy [S-11, S-12] (with and without adhesion), and the
-//! Yang–Persson closed form.
+//! Mean gap ū(p₀) [S-11, S-12]: the energy route without adhesion, each branch's state mapped
+//! onto it with adhesion, and the Yang–Persson closed form.
 //!
-//! # The route (physics.md §5)
-//!
-//! Along a quasi-static path of one branch, the external load's work goes into the energy of
-//! the interface or is dissipated: −p dū = dU_el − γ_s da_r(q_s) + dD, dD ≥ 0 in the direction
-//! of the process, with U_el = Σ_q a_r W u_ela^(f) [S-14] the stored elastic energy and
-//! −a_r γ_s the interfacial energy [S-11]. The reported gap is the one of the loading path in
-//! which the interfacial energy of the contact gained is spent in the cohesive zone (the
-//! adhesive stresses that pull a region into contact do the work γ_s per area and it is not
-//! stored), so the load's work goes into the stored elastic energy:
+//! # Without adhesion (physics.md §5)
 //!
 //! ```text
-//! ū(p₀) = + ∫_{p₀}^{∞} U_el'(p)/p dp          (reduced: ū/h_rms = ∫ dU_el*/p*)
+//! ū(p₀) = + ∫_{p₀}^{∞} U'(p)/p dp          (reduced: ū/h_rms = ∫ dU*/p*)
 //! ```
 //!
-//! Without adhesion U_el = U and this is [S-12] (sign: erratum 5), the route asperity has
-//! always used; as γ_s → 0 it tends to that value continuously. It is ≥ 0 and non-increasing
-//! in p* on any branch whose stored energy grows with the load (a_r(q) grows at every q on a
-//! stable branch, and a·W(a) grows with a); [`route`] checks that and limits each interval so
-//! that a jump of the branch between two loads cannot make it ring. The reversible route on
-//! U = U_el − a_r γ_s (dD = 0, [S-12] as printed) is a lower bound on loading and can be
-//! negative; [`MeanGap::lower`] reports max(0, max_{p' ≥ p₀} ū_rev(p')) beside the gap.
+//! [S-12] with the sign of erratum 5 ([`route`]). U is sampled on a uniform grid in x = ln p*
+//! that reaches full contact (p*_full, where erf(p*/√(2v_full)) = erf(6), so 1 − a_r < 1e-16
+//! and U' ≈ 0 above it). The default step [`GAP_STEP_LN`] keeps the Richardson error estimate
+//! below 1e-6 relative on the tested scenes. A mean gap is defined for p₀ > 0 only (the
+//! integrand is singular at p = 0): p₀ ≤ 0 is an error.
 //!
-//! U is sampled on a uniform grid in x = ln p* that reaches full contact (p*_full, where
-//! erf(p*/√(2v_full)) = erf(6), so 1 − a_r < 1e-16 and U' ≈ 0 above it). A sweep of N loads
-//! shares one table ([`GapTable`]); the gap of another branch comes from the table of that
-//! branch ([`GapTable::from_evaluations`]). The default step [`GAP_STEP_LN`] keeps the
-//! Richardson error estimate below 1e-6 relative on the tested scenes. A mean gap is defined for
-//! p₀ > 0 only (the integrand is singular at p = 0).
+//! # With adhesion (physics.md §5.1)
+//!
+//! With adhesion the energy balance does not give ū (the snap-ins dissipate an amount the
+//! theory does not know, and a route over the loads above p₀ crosses the loading branch's jump
+//! into contact). Each branch b at p₀ is an equilibrium state whose contact carries the net
+//! force p_c,b = ∫σPr_b dσ = p₀ + X_b (the mirror kernel's wall removes tension with the
+//! area that detaches; the edges' cohesive zones pull with X_b); its gap is the adhesionless
+//! gap of the same scene at that load ([`state`]):
+//!
+//! ```text
+//! ū_b(p₀) = ū₀(p_c,b),   ū₀(p_area,b) ≤ ū_b ≤ ū₀(p₀)
+//! ```
+//!
+//! with p_area,b the adhesionless load with the branch's a_r. A sweep of N loads shares one
+//! adhesionless table.
 
 pub mod closed_form;
 pub mod route;
+pub mod state;
 
 pub use closed_form::{asymptotic_slope, closed_form, closed_form_gamma_p, expint_e1};
 pub use route::{stored_energy, stored_from, GapTable, KnownJump, DECREASE_NOISE_REL};
+pub use state::{BranchGap, DryGap};
 
-use crate::error::Result;
+use crate::error::{Error, Field, Result};
 use crate::input::scene::Scene;
 use crate::theory::engine::Evaluation;
 use crate::theory::slab::slab_factor_at;
@@ -79,141 +80,126 @@ pub fn grid_from(scene: &Scene, p_lo: f64, max_step: f64) -> (f64, f64, usize) {
     (x0, (top - x0) / intervals as f64, intervals + 1)
 }
 
-/// The mean gap at one load.
+/// The mean gap at one load: the loading branch's (the only one without adhesion or outside a
+/// hysteresis window) and, inside a window, the unloading branch's (physics.md §5.1).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MeanGap {
-    /// ū/h_rms.
+    /// ū/h_rms of the loading branch: the adhesionless gap at the load its contact carries
+    /// ([`state`]).
     pub relative: f64,
     /// ū in metres.
     pub metres: f64,
-    /// Estimated absolute error of ū/h_rms.
+    /// Estimated absolute error of ū/h_rms (quadrature and interpolation of the adhesionless
+    /// gap; the model's bracket is [`MeanGap::lower`]..[`MeanGap::upper`]).
     pub error: f64,
-    /// U* at p₀ (U/(E*ḡh_rms)), the total energy [S-11].
+    /// U* at p₀ (U/(E*ḡh_rms)), the total energy [S-11] of the loading branch.
     pub energy_reduced: f64,
     /// The stored elastic energy U_el* at p₀ (= U* without adhesion).
     pub stored_energy_reduced: f64,
-    /// Lower bound of ū/h_rms on loading (the reversible route made admissible; equal to
-    /// `relative` without adhesion up to quadrature error).
+    /// The bracket's lower end: the adhesionless gap at the load with the branch's a_r (no
+    /// higher than `relative`); equal to `relative` without adhesion.
     pub lower: f64,
-    /// The reversible route ∫dU*/p* on the total energy at p₀ (ū/h_rms, may be negative with
-    /// adhesion; `lower` is its admissible form).
+    /// The bracket's upper end: the adhesionless gap at the same load.
+    pub upper: f64,
+    /// The same as `upper` (the dissipation-free route [S-12] of the scene without adhesion,
+    /// where it is exact).
     pub reversible: f64,
-    /// The gap of the unloading branch (the highest stable root) where it differs from the
-    /// loading one at p₀ (inside a hysteresis window); None elsewhere, or where the table of
-    /// that branch is not one stable branch (see [`route`]).
+    /// p_c*, the net force the loading branch's contact carries per nominal area (p* without
+    /// adhesion).
+    pub contact_load: f64,
+    /// The gap of the unloading branch (the highest stable one) where it differs from the
+    /// loading one at p₀ (inside a hysteresis window); None elsewhere.
     pub unloading: Option<BranchGap>,
 }
 
-/// The mean gap of one branch at p₀ by the two routes on that branch's own table (the branch
-/// followed from p₀ up to full contact; physics.md §5.1).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BranchGap {
-    /// ū/h_rms = ∫dU_el*/p* on the stored elastic energy (the reported route).
-    pub relative: f64,
-    /// Its estimated absolute error.
-    pub error: f64,
-    /// ∫dU*/p* on the total energy: dissipation-free; a lower bound of the gap on loading
-    /// and an upper bound on unloading (may be negative, which no admissible gap is).
-    pub reversible: f64,
-}
-
-/// Mean gap at the scene's pressure (U from [`crate::theory::engine::evaluate`] on a grid from
-/// p₀ to full contact). Adhesionless grids are evaluated in parallel; adhesive ones in order of
-/// increasing load (the loading branch). Returns `Ok(None)` for p₀ ≤ 0.
-pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<Option<MeanGap>> {
-    mean_gap_knowing(scene, opts, None)
-}
-
-/// [`mean_gap`] given the loading branch's jump-in load where the caller already has it
-/// (`window::window_around` at a load inside the window): no bisection of its own then.
-pub fn mean_gap_knowing(
-    scene: &Scene,
-    opts: &crate::theory::engine::Options,
-    jump_in: Option<f64>,
-) -> Result<Option<MeanGap>> {
-    if scene.pressure <= 0.0 || !scene.pressure.is_finite() {
-        return Ok(None);
-    }
+/// The mean gap at the scene's pressure, p* > 0 (an error otherwise: the energy route is
+/// singular at p = 0). Evaluates the scene once and the adhesionless scene from p* up to full
+/// contact ([`mean_gap_of`]).
+pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<MeanGap> {
+    check_load(scene.pressure)?;
     scene.validate()?;
-    let unit = crate::theory::energy::energy_unit(scene);
-    if scene.pressure >= full_contact_pressure(scene) {
-        // full contact: U' = 0 from here on, so ū = 0 (no grid above p*_full is needed, and
-        // none may leave the allowed pressure range)
-        let ev = crate::theory::loads::evaluations(scene, &[scene.pressure], opts, None)?;
-        return Ok(Some(MeanGap {
-            relative: 0.0,
-            metres: 0.0,
-            error: 0.0,
-            energy_reduced: ev[0].elastic_energy / unit,
-            stored_energy_reduced: stored_energy(scene, &ev[0]) / unit,
-            lower: 0.0,
-            reversible: 0.0,
-            unloading: None,
-        }));
-    }
-    let (x0, h, n) = grid_from(scene, scene.pressure, GAP_STEP_LN);
-    let ps: Vec<f64> = (0..n).map(|i| (x0 + i as f64 * h).exp()).collect();
-    let evs = crate::theory::loads::evaluations(scene, &ps, opts, None)?;
-    // the loading branch jumps into contact at the top of a hysteresis window: its load,
-    // refined, places the jump of U_el inside its grid step (a few more solves, only then)
-    let branches: Vec<Option<&[_]>> = evs.iter().map(|e| Some(e.branches.as_slice())).collect();
-    let jump = if let Some(p) = jump_in {
-        Some(KnownJump {
-            ln_p: p.ln(),
-            uncertainty_ln: 0.5 * opts.edge_rel,
-        })
-    } else if evs.iter().any(|e| e.branches.iter().filter(|b| b.stable).count() >= 2) {
-        crate::theory::window::window_on_branches(scene, &ps, &branches, &opts.adhesion, opts.edge_rel, None)?
-            .jump_in_pressure
-            .map(|p| KnownJump {
-                ln_p: p.ln(),
-                uncertainty_ln: 0.5 * opts.edge_rel,
-            })
-    } else {
-        None
-    };
-    let table = GapTable::from_evaluations_with_jump(scene, x0, h, &evs, jump)?;
-    let h_rms = scene.spectrum.rms_height();
-    Ok(Some(MeanGap {
-        relative: table.gap[0],
-        metres: table.gap[0] * h_rms,
-        error: table.error[0],
-        energy_reduced: table.total_energy[0],
-        stored_energy_reduced: table.energy[0],
-        lower: table.lower[0],
-        reversible: table.reversible[0],
-        // a table that is not one stable branch leaves the unloading gap unknown, not the run
-        unloading: unloading_gap(scene, x0, h, &evs).unwrap_or(None),
-    }))
+    let ev = crate::theory::engine::evaluate(scene, opts)?;
+    mean_gap_of(scene, &ev, opts)
 }
 
-/// The gap of the unloading branch at the first load of `evs` (a uniform ln p* grid up to full
-/// contact, every branch solved at each load), where two stable branches exist there: the
-/// route on the table of the highest stable root at every load (the unloading branch, which
-/// above the window's jump-in is the loading one). No extra solves: the loads' evaluations
-/// already hold every branch.
-fn unloading_gap(scene: &Scene, x0: f64, h: f64, evs: &[Evaluation]) -> Result<Option<BranchGap>> {
-    let stable = |e: &Evaluation| e.branches.iter().filter(|b| b.stable).count();
-    if evs.first().is_none_or(|e| stable(e) < 2) {
-        return Ok(None);
+fn check_load(p: f64) -> Result<()> {
+    if p > 0.0 && p.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::invalid(
+            Field::Pressure,
+            p,
+            "p* > 0 (the mean gap is defined for positive loads: the energy route is singular at p = 0)",
+        ))
     }
+}
+
+/// The mean gap of an evaluation `ev` of `scene` at its pressure (every branch of `ev` is
+/// used; nothing adhesive is solved again): the adhesionless table of the scene from p* up to
+/// full contact and the load each stable branch's contact carries ([`state`]).
+pub fn mean_gap_of(scene: &Scene, ev: &Evaluation, opts: &crate::theory::engine::Options) -> Result<MeanGap> {
+    let p = scene.pressure;
+    check_load(p)?;
     let unit = crate::theory::energy::energy_unit(scene);
-    let (stored, total): (Vec<f64>, Vec<f64>) = evs
-        .iter()
-        .map(|e| {
-            let (u, a) = e
-                .branches
-                .iter()
-                .rev()
-                .find(|b| b.stable)
-                .map_or((e.elastic_energy, e.stats.a_r), |b| (b.elastic_energy, b.a_r));
-            (stored_from(scene, u, a) / unit, u / unit)
-        })
-        .unzip();
-    let t = GapTable::from_energies(x0, h, stored, total)?;
-    Ok(Some(BranchGap {
-        relative: t.gap[0],
-        error: t.error[0],
-        reversible: t.reversible[0],
-    }))
+    let h_rms = scene.spectrum.rms_height();
+    let energy_reduced = ev.elastic_energy / unit;
+    let stored_energy_reduced = stored_energy(scene, ev) / unit;
+    if p >= full_contact_pressure(scene) {
+        // full contact: U' = 0 from here on, so ū = 0 on every branch
+        let zero = BranchGap {
+            relative: 0.0,
+            error: 0.0,
+            lower: 0.0,
+            upper: 0.0,
+            contact_load: p,
+        };
+        return Ok(assemble(zero, None, h_rms, energy_reduced, stored_energy_reduced));
+    }
+    let dry = DryGap::new(scene, p, opts)?;
+    let (loading, unloading) = branch_gaps(&dry, p, ev)?;
+    Ok(assemble(
+        loading,
+        unloading,
+        h_rms,
+        energy_reduced,
+        stored_energy_reduced,
+    ))
+}
+
+/// The gaps of an evaluation's loading branch and, where distinct, its unloading branch, on
+/// the adhesionless table `dry` (which must start at or below p).
+pub fn branch_gaps(dry: &DryGap, p: f64, ev: &Evaluation) -> Result<(BranchGap, Option<BranchGap>)> {
+    use crate::theory::adhesion::Branch;
+    if ev.branches.is_empty() {
+        return Ok((dry.branch(p, ev.stats.a_r, p)?, None));
+    }
+    let of = |kind: Branch| -> Result<Option<BranchGap>> {
+        match ev.branches.iter().position(|b| b.branch == kind && b.stable) {
+            Some(i) => {
+                let rep = ev.contact_loads.get(i).copied().unwrap_or(f64::NAN);
+                Ok(Some(dry.branch(p, ev.branches[i].a_r, rep)?))
+            }
+            None => Ok(None),
+        }
+    };
+    let loading = of(Branch::Loading)?.ok_or_else(|| Error::NotConverged {
+        solver: "mean gap".into(),
+        reason: "the evaluation has no stable loading branch".into(),
+    })?;
+    Ok((loading, of(Branch::Unloading)?))
+}
+
+fn assemble(l: BranchGap, u: Option<BranchGap>, h_rms: f64, energy: f64, stored: f64) -> MeanGap {
+    MeanGap {
+        relative: l.relative,
+        metres: l.relative * h_rms,
+        error: l.error,
+        energy_reduced: energy,
+        stored_energy_reduced: stored,
+        lower: l.lower,
+        upper: l.upper,
+        reversible: l.upper,
+        contact_load: l.contact_load,
+        unloading: u,
+    }
 }

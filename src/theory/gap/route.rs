@@ -1,13 +1,13 @@
-//! The energy route on the table of one branch: ū at the nodes of a uniform ln p* grid from the
-//! stored elastic energy there, and the reversible lower bound from the total energy.
+//! The energy route on a table of energies: ū at the nodes of a uniform ln p* grid.
 //!
 //! ```text
-//! ū(p₀) = ∫_{p₀}^{∞} U_el'(p)/p dp = ∫_{ln p₀}^{∞} (dU_el/d ln p) e^{−ln p} d ln p
+//! ū(p₀) = ∫_{p₀}^{∞} U'(p)/p dp = ∫_{ln p₀}^{∞} (dU/d ln p) e^{−ln p} d ln p
 //! ```
 //!
-//! (physics.md §5: on loading, the load's work goes into the stored elastic energy
-//! U_el = Σ a_r W u_ela^(f) [S-14]; without adhesion U_el = U [S-11] and this is the route of
-//! [S-12] with the sign of erratum 5.) In reduced units U* = U/(E*ḡh_rms), p* = p/(E*ḡ), so
+//! (physics.md §5: the route of [S-12] with the sign of erratum 5, on the adhesionless U [S-11];
+//! the mean gap with adhesion maps each branch onto this table, §5.1 and [`super::state`]. The
+//! table also takes a stored energy U_el and a total energy apart, for energy tables with
+//! adhesion such as GFMD's.) In reduced units U* = U/(E*ḡh_rms), p* = p/(E*ḡ), so
 //! ū/h_rms = ∫ dU*/p*.
 //!
 //! Quadrature: on each grid interval dU/dx (x = ln p*) is the derivative of the cubic Lagrange
