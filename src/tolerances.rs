@@ -248,6 +248,11 @@ pub const ADHESION_ERROR_STEPS_FACTORS: [f64; 2] = [1.5, 2.0];
 /// model 1 (an independent quadrature).
 pub const GAP_GAMMA_LIMIT_REL: f64 = 1e-3;
 
+/// X = ∫σ_a|da_r| summed over the adhesive march's steps (trapezoid in the resolution) against
+/// ∫σPr − p* of its final distribution (the solver's moments): the two discretisations of the
+/// same force (see `tests/gap_adhesion.rs` for the measured agreement).
+pub const GAP_CONTACT_LOAD_REL: f64 = 0.02;
+
 /// The theory's adhesive ū against GFMD's ⟨g⟩ on the half-space (same map's spectrum, γ̃_glo
 /// and μ_T kept): the target, 10 %. Measured 2–6 % on system II's 512² map
 /// (BENCHMARKS.md).

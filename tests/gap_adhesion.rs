@@ -240,3 +240,29 @@ fn the_unloading_branch_has_its_own_admissible_gap() {
     assert!(g1.relative >= g2.relative, "{g1:?} {g2:?}");
     assert!(gap_of(&s, gamma, 1e-3).unloading.is_none());
 }
+
+/// The load a branch's contact carries, p* + X with X = ∫σ_a|da_r| summed over the march's
+/// steps, against ∫σ*Pr dσ* of its final distribution (a_r·σ̄_c*, the solver's moments): two
+/// computations of the same force (the mirror kernel raises ∫σPr by σ_a per unit of detached
+/// area, physics.md §4).
+#[test]
+fn the_contact_load_is_the_force_of_the_final_distribution() {
+    for (t, model) in [(f64::INFINITY, 4), (0.3, 4), (0.15, 3)] {
+        let mut s = preset("system-2", model);
+        s.thickness_qr = t;
+        s.pressure = 5e-3;
+        let ev = asperity::theory::engine::evaluate(&s, &Options::default()).unwrap();
+        let i = ev.branches.iter().position(|b| b.stable).unwrap();
+        let x_steps = ev.contact_loads[i] - s.pressure;
+        let x_pr = ev.stats.a_r * ev.stats.mean_contact_stress - s.pressure;
+        eprintln!(
+            "t = {t}, model {model}: X/p* = {:.5} (steps), {:.5} (Pr)",
+            x_steps / s.pressure,
+            x_pr / s.pressure
+        );
+        assert!(
+            x_steps > 0.0 && (x_steps - x_pr).abs() <= GAP_CONTACT_LOAD_REL * x_pr,
+            "{x_steps} vs {x_pr}"
+        );
+    }
+}
