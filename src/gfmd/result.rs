@@ -24,7 +24,8 @@ pub struct TheoryComparison {
     pub width: f64,
     /// Model label.
     pub model: String,
-    /// ū (m) by the energy route [S-12] on the map's spectrum (null where unavailable).
+    /// ū (m) on the map's spectrum: the energy route [S-12], with adhesion at the load the
+    /// loading branch's contact carries (physics.md §5.1; null where unavailable).
     pub mean_gap: Option<f64>,
     /// ū/h_rms (null where unavailable).
     pub mean_gap_rel: Option<f64>,

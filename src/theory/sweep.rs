@@ -4,9 +4,11 @@
 //! ln p*: the requested points (from `from` to `to`, log-spaced), refined by an integer factor
 //! when their spacing exceeds the options' `sweep_step_ln` ([`SWEEP_STEP_LN`] by default,
 //! [`CHART_SWEEP_STEP_LN`] for charts), and extended with the same step up
-//! to full contact. The mean gap at every requested point then comes from one cumulative pass
-//! over that table of the stored elastic energy U_el (the loading path's gap, physics.md §5;
-//! [`crate::theory::gap::GapTable`]); nothing is evaluated twice. A 64-point chart
+//! to full contact. Without adhesion the mean gap at every requested point then comes from one
+//! cumulative pass over that table of U (physics.md §5; [`crate::theory::gap::GapTable`]);
+//! with adhesion each row's branches are mapped onto one adhesionless table of the scene from
+//! the first load (the gap at the load each branch's contact carries, physics.md §5.1;
+//! [`crate::theory::gap::DryGap`]); nothing is evaluated twice. A 64-point chart
 //! sweep of system 1 from p* = 1e-3 to 1 costs 64 + 13 engine evaluations.
 //!
 //! The loads run in parallel (rayon) in a fixed pattern ([`crate::theory::loads`]: a full
