@@ -268,7 +268,7 @@ pub const GAP_GFMD_SLAB_EXTRA: f64 = 0.10;
 /// it lands 0.094 from each of \[S\]'s values, ~3σ along that direction (docs/physics.md
 /// §3.5). This bound states how far along it.
 pub const EQ18_GAUGE_ABS: f64 = 0.12;
-/// Hurst exponent recovered by the PSD of a generated self-affine map (absolute), issue's check.
+/// Hurst exponent recovered by the PSD of a generated self-affine map (absolute).
 pub const PSD_HURST_ABS: f64 = 0.05;
 /// h_rms and ḡ recovered by the PSD of a generated self-affine map (relative).
 pub const PSD_MOMENT_REL: f64 = 0.02;
@@ -280,3 +280,14 @@ pub const TABULATED_THEORY_REL: f64 = 1e-4;
 /// per cent (measured over the test's 9 maps: ḡ within 5.6 % (H = 0.9, where long wavelengths
 /// carry much of ḡ²), h_rms within 1.1 %, H within 0.045).
 pub const PSD_WINDOWED_MOMENT_REL: f64 = 0.08;
+
+/// A march whose wall runs away from the distribution (to σ_a* = 1e3…1e9 in one step): once
+/// the wall is far no more contact is lost, so a_r after the jump stays as it was up to the
+/// round-off of the marches that follow (the runaway step drops an image of less than 1e-9 of
+/// a_r, `propagator::IMAGE_NEGLIGIBLE`).
+pub const RUNAWAY_WALL_REL: f64 = 1e-8;
+
+/// The same jump to σ_a* = 1e3, 1e6 and 1e9: a_r at q_s agrees to this (measured 3e-5: the
+/// slowest wall's image over the jump is resolved on a grid that spans it, the others are
+/// offset, and the onset pieces differ).
+pub const RUNAWAY_WALL_SPREAD_REL: f64 = 1e-4;

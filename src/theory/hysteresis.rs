@@ -11,7 +11,8 @@ use serde::Serialize;
 use std::sync::atomic::AtomicBool;
 
 pub use crate::theory::window::{
-    edge, edge_to, stable_branches, window_around, window_on_branches, window_on_grid, Window, EDGE_REL, WINDOW_STEP,
+    edge, edge_to, stable_branches, window_around, window_around_from, window_on_branches, window_on_grid, Window,
+    EDGE_REL, WINDOW_STEP,
 };
 
 /// Which branch ends at a window edge.

@@ -28,7 +28,7 @@
 
 use crate::error::Result;
 use crate::input::scene::{Scene, PRESSURE_RANGE};
-use crate::theory::adhesion::{self, AdhesionAccuracy, BranchState};
+use crate::theory::adhesion::{self, AdhesionAccuracy, AdhesiveSolution, BranchState};
 use serde::Serialize;
 use std::sync::atomic::AtomicBool;
 
@@ -63,6 +63,35 @@ fn branches_at(scene: &Scene, p: f64, acc: &AdhesionAccuracy, cancel: Option<&At
         ..*acc
     };
     Ok(adhesion::solve(&s, &acc, None, cancel)?.branches)
+}
+
+/// The pair of roots (C₁ < C₂, J/m²) that merges at `fold`, at a load with three or more
+/// roots, and whether H rises through the lower one (see [`adhesion::pair_at`]).
+fn fold_pair(branches: &[BranchState], gamma: f64, fold: Fold) -> Option<((f64, f64), bool)> {
+    let mut c: Vec<f64> = branches.iter().map(|b| b.gamma_coarse * gamma).collect();
+    if c.len() < 3 {
+        return None;
+    }
+    c.sort_by(f64::total_cmp);
+    let n = c.len();
+    Some(match fold {
+        Fold::Lower => ((c[0], c[1]), true),
+        Fold::Upper => ((c[n - 2], c[n - 1]), false),
+    })
+}
+
+/// The pair of `fold` at p*, tracked from `pair` at a nearby load ([`adhesion::pair_at`]),
+/// at the self-consistency's counting tolerance.
+fn pair_near(
+    scene: &Scene,
+    p: f64,
+    pair: ((f64, f64), bool),
+    acc: &AdhesionAccuracy,
+    cancel: Option<&AtomicBool>,
+) -> Result<Option<((f64, f64), bool)>> {
+    let mut s = scene.clone();
+    s.pressure = p;
+    Ok(adhesion::pair_at(&s, acc, pair.0, pair.1, cancel)?.map(|c| (c, pair.1)))
 }
 
 fn stable_count(branches: &[BranchState]) -> usize {
@@ -185,6 +214,43 @@ fn edge_aimed(
             }
         } else {
             b = lo;
+        }
+    }
+    Ok((0.5 * (a + b)).exp())
+}
+
+/// The edge between `inside` (p*, where the pair of roots `pair` of its fold exists) and
+/// `outside`, to `rel` in p*: rounds of two loads side by side at the bracket's thirds, each
+/// asking whether the pair persists, tracked from the nearest inside load
+/// ([`adhesion::pair_at`]: 4–8 marches instead of a solve's 30–40 for every branch). The
+/// geometric midpoint of the last bracket.
+fn edge_tracked(
+    scene: &Scene,
+    (inside, outside): (f64, f64),
+    pair: ((f64, f64), bool),
+    acc: &AdhesionAccuracy,
+    rel: f64,
+    cancel: Option<&AtomicBool>,
+) -> Result<f64> {
+    let (mut a, mut b) = (inside.ln(), outside.ln());
+    let mut pair = pair;
+    while (b - a).abs() > rel * (1.0 + 1e-9) {
+        let (lo, hi) = (a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0);
+        let (rl, rh) = rayon::join(
+            || pair_near(scene, lo.exp(), pair, acc, cancel),
+            || pair_near(scene, hi.exp(), pair, acc, cancel),
+        );
+        match (rl?, rh?) {
+            (Some(_), Some(ph)) => {
+                a = hi;
+                pair = ph;
+            }
+            (Some(pl), None) => {
+                a = lo;
+                b = hi;
+                pair = pl;
+            }
+            (None, _) => b = lo,
         }
     }
     Ok((0.5 * (a + b)).exp())
@@ -316,21 +382,43 @@ fn window_of(
 pub const WINDOW_STEP: f64 = 4.0;
 
 /// The window around the scene's own load when it lies inside one (two stable branches),
-/// else `None`: steps outwards by factors of [`WINDOW_STEP`] in p* to bracket each edge, then
-/// [`edge`]. An edge is `None` where the window reaches the end of the load range
-/// (`PRESSURE_RANGE`): in particular a pull-off that needs a tensile load.
+/// else `None`: see [`window_around_from`], after a solve at p* that finds every branch.
 ///
 /// # Errors
 /// As [`adhesion::solve`].
 pub fn window_around(scene: &Scene, acc: &AdhesionAccuracy, cancel: Option<&AtomicBool>) -> Result<Option<Window>> {
-    let p0 = scene.pressure;
     if scene.gamma == 0.0 {
         return Ok(None);
     }
-    let at_p0 = branches_at(scene, p0, acc, cancel)?;
-    if stable_count(&at_p0) < 2 {
+    let all = AdhesionAccuracy {
+        explore_branches: true,
+        ..*acc
+    };
+    let at_p0 = adhesion::solve(scene, &all, None, cancel)?;
+    window_around_from(scene, &at_p0, acc, cancel)
+}
+
+/// The window around the scene's own load from its solution `at_p0` (every branch found, as
+/// `run`'s evaluation has it), `None` outside a window: steps outwards by factors of
+/// [`WINDOW_STEP`] in p* while the pair of roots that merges at the edge persists (tracked
+/// from the last load inside, [`adhesion::pair_at`]; where it is lost, a solve for every
+/// branch decides), then the edge by [`edge_tracked`] to [`EDGE_REL`]. An edge is `None` where
+/// the window reaches the end of the load range (`PRESSURE_RANGE`): in particular a pull-off
+/// that needs a tensile load (one solve at that end says so).
+///
+/// # Errors
+/// As [`adhesion::solve`].
+pub fn window_around_from(
+    scene: &Scene,
+    at_p0: &AdhesiveSolution,
+    acc: &AdhesionAccuracy,
+    cancel: Option<&AtomicBool>,
+) -> Result<Option<Window>> {
+    let p0 = scene.pressure;
+    if scene.gamma == 0.0 || stable_count(&at_p0.branches) < 2 {
         return Ok(None);
     }
+    let gamma = scene.gamma;
     let bound = |up: bool| -> Result<Option<f64>> {
         // the unloading branch of a strongly adhesive scene often holds at every positive load
         // (pull-off needs a tensile load): one solve at the end of the load range says so
@@ -340,27 +428,39 @@ pub fn window_around(scene: &Scene, acc: &AdhesionAccuracy, cancel: Option<&Atom
         }
         // loading ends at the lower pair's fold (above p0), unloading at the upper's
         let fold = if up { Fold::Lower } else { Fold::Upper };
-        let mut known: Vec<(f64, f64)> = pair_gap2(&at_p0, fold).map(|d| (p0.ln(), d)).into_iter().collect();
+        let Some(mut pair) = fold_pair(&at_p0.branches, gamma, fold) else {
+            return Ok(None);
+        };
         let mut inside = p0;
         loop {
             let next = if up { inside * WINDOW_STEP } else { inside / WINDOW_STEP };
             let next = if up { next.min(end) } else { next.max(end) };
-            let at_next = if next == end {
-                None
-            } else {
-                Some(branches_at(scene, next, acc, cancel)?)
+            if next == end {
+                return edge_tracked(scene, (inside, next), pair, acc, EDGE_REL, cancel).map(Some);
+            }
+            let tracked = match pair_near(scene, next, pair, acc, cancel)? {
+                Some(p) => Some(p),
+                // lost: a solve for every branch decides (the pair may have moved further
+                // than the tracking reaches over a factor WINDOW_STEP)
+                None => {
+                    let b = branches_at(scene, next, acc, cancel)?;
+                    if stable_count(&b) >= 2 {
+                        fold_pair(&b, gamma, fold)
+                    } else {
+                        None
+                    }
+                }
             };
-            match at_next {
-                Some(b) if stable_count(&b) >= 2 => {
-                    known.extend(pair_gap2(&b, fold).map(|d| (next.ln(), d)));
+            match tracked {
+                Some(p) => {
+                    pair = p;
                     inside = next;
                 }
-                _ => return edge_aimed(scene, (inside, next), known, fold, acc, EDGE_REL, cancel).map(Some),
+                None => return edge_tracked(scene, (inside, next), pair, acc, EDGE_REL, cancel).map(Some),
             }
         }
     };
     // side by side: the pull-off's check at the bottom of the load range is the dearest solve
-    // (system II, t·q_r = 0.1, 0.8 γ_s: 0.78 s at p* = 1e-12, the jump-in search 0.45 s)
     let (pull_off, jump_in) = rayon::join(|| bound(false), || bound(true));
     Ok(Some(Window {
         pull_off_pressure: pull_off?,

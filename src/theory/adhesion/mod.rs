@@ -76,11 +76,12 @@
 //! `propagator` (the march for given walls, one step at a time), `regrid` (shift, refine and
 //! re-offset the march's grid),
 //! `walls` (σ_a(q) for γ(q)), `shooting` (the forward march for given C), `roots` (all roots
-//! of H), `strategy` (the branch chosen and the solution assembled), and this module
+//! of H), `pair` (whether the pair of roots that merges at a fold persists), `strategy` (the branch chosen and the solution assembled), and this module
 //! (accuracy, result types, entry points).
 
 mod grid;
 mod heat;
+mod pair;
 mod propagator;
 mod regrid;
 mod roots;
@@ -88,6 +89,7 @@ mod shooting;
 mod strategy;
 mod walls;
 
+pub use pair::pair_at;
 pub(crate) use strategy::solve_checked;
 pub use strategy::{solve, solve_continued, EXTRAPOLATE_MAX};
 
@@ -321,8 +323,15 @@ pub fn propagate_with_wall(
         pressure: scene.pressure,
         trials: 0,
         step_aw: None,
+        overflow: false,
     };
     let a = m.march(&walls, &onsets);
+    if m.overflow {
+        return Err(crate::error::Error::NotConverged {
+            solver: "adhesive march".into(),
+            reason: format!("the prescribed wall needs more than {} grid nodes", m.max_nodes()),
+        });
+    }
     Ok((grid.q.clone(), a))
 }
 

@@ -150,6 +150,14 @@ const ONSET_GROWTH: f64 = 0.95;
 /// 24 steps per ln q, 10 points per width): a_r error 2.1e-4 without, 2e-7 with; 2c·h reached
 /// 15 in the first onset piece.
 const REFINE_DRIFT: f64 = 2.0;
+/// The most nodes of a march's grid (with [`Marcher::max_nodes`]): about 20 MB of transform
+/// buffers. The grid follows the distribution (~25·`points_per_width` nodes) and is refined to
+/// at most [`REFINE_MAX_NODES`], so a march that asks for more has lost the distribution (a
+/// wall far from it that the grid cannot follow): it is cut here and flagged
+/// ([`Marcher::overflow`]) instead of allocating without bound (a wall that jumps from 0 to
+/// σ_a* = 1e7 in one step, as the root scan asks at p* = 1e-12, would need 9e9 nodes on a
+/// grid that spans it).
+const GRID_MAX_NODES: usize = 1 << 18;
 /// The grid is refined no further than this many nodes.
 const REFINE_MAX_NODES: usize = 1 << 16;
 /// No refinement for [`REFINE_DRIFT`] where the image the refinement would resolve carries
@@ -159,6 +167,18 @@ const REFINE_MAX_NODES: usize = 1 << 16;
 /// t·q_r = 0.1, p* = 2.29e-4, marches 30× dearer than their neighbours). Where the refinement
 /// matters the image carries 1e-5–3e-3 of it.
 const IMAGE_NEGLIGIBLE: f64 = 1e-9;
+
+/// A wall that runs away by more than this many times the span of the grid in one piece,
+/// carrying a negligible image ([`IMAGE_NEGLIGIBLE`]), leaves the distribution behind: the
+/// step is free diffusion and the grid is offset instead of stretched (see
+/// [`Marcher::advance`]).
+const RUNAWAY_SPAN: f64 = 4.0;
+
+/// Zero nodes put below the content of a grid that a runaway wall leaves behind: ten standard
+/// deviations of the step's spread (variance `dv`) and the shift's stencil.
+fn runaway_pad(dv: f64, h: f64) -> usize {
+    (10.0 * dv.sqrt() / h).ceil() as usize + 8
+}
 
 /// The mass ∫₀^∞ e^{−2cy} p(y) dy of the weighted image of a wall running away at speed c
 /// from the grid values `p` (p[0] = 0 at the wall, spacing h), where 2c·h ≫ 1: p'(0)/(4c²),
@@ -183,9 +203,19 @@ pub(super) struct Marcher<'a> {
     /// The mean of a_r W(a_r) over the e-measure of the last step taken (trial or not), where
     /// it was split in pieces (an onset); None for a step in one piece.
     pub(super) step_aw: Option<f64>,
+    /// Set when a step would have needed a grid beyond [`Marcher::max_nodes`]: the grid was
+    /// cut there, and the march's result is not to be trusted (the solve refuses).
+    pub(super) overflow: bool,
 }
 
 impl<'a> Marcher<'a> {
+    /// The most nodes a march's grid may hold: [`GRID_MAX_NODES`], or 400 per
+    /// `points_per_width` where that is more (a grid spans ~25 widths at most, refined up to
+    /// [`REFINE_MAX_NODES`] right after an onset).
+    pub(super) fn max_nodes(&self) -> usize {
+        GRID_MAX_NODES.max((400.0 * self.acc.points_per_width) as usize)
+    }
+
     /// A marcher of `scene` on `grid` (no forced grid).
     pub(super) fn new(scene: &'a Scene, grid: &'a Grid, acc: AdhesionAccuracy) -> Self {
         Marcher {
@@ -197,6 +227,7 @@ impl<'a> Marcher<'a> {
             pressure: scene.pressure,
             trials: 0,
             step_aw: None,
+            overflow: false,
         }
     }
 
@@ -419,7 +450,29 @@ impl<'a> Marcher<'a> {
                 let mut drift = 0.0;
                 // the second half of a receding wall's shift, after the heat step
                 let mut receding = 0.0;
-                if delta != 0.0 && *m > 0 {
+                // a wall that runs away from the distribution by more than RUNAWAY_SPAN times
+                // the grid's span, so fast that its image carries a negligible mass: the step
+                // is free diffusion carried `delta` from the wall (the image dropped, an error
+                // below IMAGE_NEGLIGIBLE of a_r), the grid offset by whole cells as for a wall
+                // ahead of the distribution, with zeros below the content for the step's
+                // spread. A grid that spanned the whole new distance from the wall to the
+                // distribution would need σ_a*/h nodes: the root scan puts σ_a* at 1e4 after
+                // one step at p* = 1e-9 (γ = (C + I)/a_r at tiny a_r), 9e6 nodes, and 9e9 at
+                // p* = 1e-12
+                let runaway = *m == 0 && delta > 0.0 && dv_guess > 0.0 && {
+                    let span = (p.len() - 1) as f64 * h;
+                    let pad = runaway_pad(st.b.max(dv_guess), h);
+                    delta > RUNAWAY_SPAN * span
+                        && (delta / h).floor() >= pad as f64
+                        && image_mass(p, h, delta / dv_guess) <= IMAGE_NEGLIGIBLE * cur.a
+                };
+                if runaway {
+                    let pad = runaway_pad(st.b.max(dv_guess), h);
+                    let cells = (delta / h).floor();
+                    p.splice(0..0, std::iter::repeat_n(0.0, pad));
+                    *m = cells as usize - pad;
+                    cur.wall += cells * h;
+                } else if delta != 0.0 && *m > 0 {
                     // the distribution is far from the wall: move it by whole cells through
                     // the grid's offset, by the remaining fraction of a cell spectrally
                     let cells = (delta / h).floor();
@@ -442,7 +495,12 @@ impl<'a> Marcher<'a> {
                     receding = 0.5 * delta;
                 } else if delta != 0.0 && dv_guess <= 0.0 {
                     // no variance to move the wall in: shift, then the (empty) heat step
-                    shift(p, h, delta);
+                    // (a shift that would grow the grid beyond its bound is flagged instead)
+                    if delta / h > self.max_nodes() as f64 {
+                        self.overflow = true;
+                    } else {
+                        shift(p, h, delta);
+                    }
                     cur.wall = s_k;
                 }
                 let rest = if receding < 0.0 { 0.0 } else { s_k - cur.wall };
@@ -453,6 +511,14 @@ impl<'a> Marcher<'a> {
                 let need = p0 + cur.wall.max(s_k) + 10.0 * (v + st.b).sqrt() + 0.01 * rest.abs() + 2.0 * h;
                 let top = ((need / h).ceil() as usize + 1).saturating_sub(*m).max(8);
                 let n = smooth_size(top);
+                // the grid's hard bound (see GRID_MAX_NODES): beyond it the march is flagged
+                // and cut, and the solve refuses
+                let n = if n > self.max_nodes() {
+                    self.overflow = true;
+                    self.max_nodes()
+                } else {
+                    n
+                };
                 p.resize(n + 1, 0.0);
                 p[n] = 0.0;
                 let mut dv = 0.0;

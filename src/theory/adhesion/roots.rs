@@ -50,7 +50,7 @@ pub(super) const SCAN_PER_DECADE: f64 = 0.1;
 /// on the sets of [`SCAN_PER_DECADE`].
 const SCAN_MIN_CELL: f64 = 0.1;
 /// Widest reach in w of a warm bracket (a factor ~3 in C).
-const WARM_MAX: f64 = 1.15;
+pub(super) const WARM_MAX: f64 = 1.15;
 /// Most shots of a scan (coarse) or of the bisection of the regions (fine).
 const SCAN_MAX: usize = 400;
 
@@ -67,30 +67,49 @@ pub(super) struct Root {
 }
 
 /// The scan variable w = asinh(C/c₀) and back.
-struct Scale {
-    c0: f64,
+pub(super) struct Scale {
+    pub(super) c0: f64,
 }
 
 impl Scale {
-    fn w(&self, c: f64) -> f64 {
+    pub(super) fn w(&self, c: f64) -> f64 {
         (c / self.c0).asinh()
     }
-    fn c(&self, w: f64) -> f64 {
+    pub(super) fn c(&self, w: f64) -> f64 {
         self.c0 * w.sinh()
     }
 }
 
 /// The solver for one scene and resolution: the marcher and the wall constants.
-struct Shooter<'a> {
-    m: Marcher<'a>,
-    coef: WallCoefficients,
-    shots: usize,
+pub(super) struct Shooter<'a> {
+    pub(super) m: Marcher<'a>,
+    pub(super) coef: WallCoefficients,
+    pub(super) shots: usize,
 }
 
 impl<'a> Shooter<'a> {
-    fn h(&mut self, c: f64) -> Shot {
+    pub(super) fn h(&mut self, c: f64) -> Shot {
         self.shots += 1;
         self.m.shoot(&self.coef, c, false)
+    }
+}
+
+/// [`crate::error::Error::NotConverged`] where a march of `s` needed a grid beyond its bound
+/// (`propagator::GRID_MAX_NODES`): its H is not to be trusted, so neither are the roots.
+pub(super) fn check_bounded(s: &Shooter<'_>) -> Result<()> {
+    if s.m.overflow {
+        Err(crate::error::Error::NotConverged {
+            solver: "adhesive march".into(),
+            reason: format!(
+                "the stress distribution would need more than {} grid nodes at p* = {:.3e} \
+                 (the adhesive wall ran further from it in one resolution step than the grid can \
+                 follow); a finer resolution in ln q may resolve it",
+                s.m.max_nodes(),
+                s.m.pressure
+            ),
+        })
+    } else {
+        Ok(())
     }
 }
 
@@ -160,6 +179,7 @@ pub(super) fn find_roots(
                 for (a, ha, b, hb) in found {
                     roots.push(refine(&mut fine, &scale, a, ha, b, hb, tol, cancel)?);
                 }
+                check_bounded(&fine)?;
                 let shots = fine.shots;
                 if std::env::var_os("ASPERITY_DEBUG").is_some() {
                     eprintln!("roots: warm, {shots} fine shots, {} roots", roots.len());
@@ -265,6 +285,8 @@ pub(super) fn find_roots(
         let hb = fine.h(scale.c(w_hi)).h;
         roots.push(refine(&mut fine, &scale, w_lo, ha, w_hi, hb, tol, cancel)?);
     }
+    check_bounded(&coarse)?;
+    check_bounded(&fine)?;
     Ok((roots, fine.shots + coarse.shots / 4))
 }
 
@@ -283,7 +305,7 @@ const WARM_MARGIN: f64 = 0.003;
 /// probes where H approaches 0, else 4× further. Returns (a, H(a), b, H(b)) with a < b, the
 /// last two probes (the tightest bracket seen), or None when no sign change lies within
 /// `max` on that side.
-fn warm_bracket(
+pub(super) fn warm_bracket(
     s: &mut Shooter<'_>,
     scale: &Scale,
     w0: f64,
