@@ -73,6 +73,7 @@
 //! # Files
 //!
 //! `grid` (resolution steps), `heat` (the exact drift–diffusion step with an absorbing wall),
+//! `moments` (the final distribution's moments),
 //! `propagator` (the march for given walls, one step at a time), `regrid` (shift, refine and
 //! re-offset the march's grid),
 //! `walls` (σ_a(q) for γ(q)), `shooting` (the forward march for given C), `roots` (all roots
@@ -81,6 +82,7 @@
 
 mod grid;
 mod heat;
+mod moments;
 mod pair;
 mod propagator;
 mod regrid;
