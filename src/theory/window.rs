@@ -402,9 +402,10 @@ pub fn window_around(scene: &Scene, acc: &AdhesionAccuracy, cancel: Option<&Atom
 /// `run`'s evaluation has it), `None` outside a window: steps outwards by factors of
 /// [`WINDOW_STEP`] in p* while the pair of roots that merges at the edge persists (tracked
 /// from the last load inside, [`adhesion::pair_at`]; where it is lost, a solve for every
-/// branch decides), then the edge by [`edge_tracked`] to [`EDGE_REL`]. An edge is `None` where
-/// the window reaches the end of the load range (`PRESSURE_RANGE`): in particular a pull-off
-/// that needs a tensile load (one solve at that end says so).
+/// branch decides), then the edge by rounds of two tracked loads side by side at the
+/// bracket's thirds, to [`EDGE_REL`]. An edge is `None` where the window reaches the end of
+/// the load range (`PRESSURE_RANGE`): in particular a pull-off that needs a tensile load (one
+/// solve at that end says so).
 ///
 /// # Errors
 /// As [`adhesion::solve`].
