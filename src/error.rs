@@ -504,7 +504,8 @@ pub fn fmt_value(x: f64) -> String {
 }
 
 /// Formats user text for a message: a number as [`fmt_value`] does (so `1e300` typed as 301
-/// digits prints as `1e300`), anything else as given, cut to 60 characters.
+/// digits prints as `1e300`), anything else as given, cut to 120 characters (room for a file
+/// name, a line number and what is wrong with it).
 pub fn fmt_text(s: &str) -> String {
     let t = s.trim();
     if t.is_empty() {
@@ -515,8 +516,8 @@ pub fn fmt_text(s: &str) -> String {
             return fmt_value(x);
         }
     }
-    if t.chars().count() > 60 {
-        let cut: String = t.chars().take(57).collect();
+    if t.chars().count() > 120 {
+        let cut: String = t.chars().take(117).collect();
         return format!("{cut}...");
     }
     t.to_string()

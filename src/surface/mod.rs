@@ -3,6 +3,7 @@
 pub mod fit;
 pub mod heightmap;
 pub mod psd;
+pub mod ranges;
 pub mod readers;
 pub mod spectrum;
 pub mod tabulated;

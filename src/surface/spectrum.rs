@@ -22,16 +22,7 @@ use crate::error::{check_in, Error, Field, Result};
 pub use crate::surface::tabulated::Tabulated;
 use std::f64::consts::PI;
 
-/// Allowed lengths L, λ_r, λ_s (m): from a picometre to a kilometre, so that q and the
-/// moments ∫q^k dm stay far from overflow and underflow.
-pub const LENGTH_RANGE_M: (f64, f64) = (1e-12, 1e3);
-/// Allowed Hurst exponents H.
-pub const HURST_RANGE: (f64, f64) = (1e-3, 1.0);
-/// Allowed rms gradient ḡ: the theory is small-slope; below 1e-6 C₀ underflows for short
-/// wavelengths.
-pub const RMS_GRADIENT_RANGE: (f64, f64) = (1e-6, 100.0);
-/// Allowed rms height (m).
-pub const RMS_HEIGHT_RANGE_M: (f64, f64) = (1e-15, 1e3);
+pub use crate::surface::ranges::{HURST_RANGE, LENGTH_RANGE_M, RMS_GRADIENT_RANGE, RMS_HEIGHT_RANGE_M};
 
 /// Largest width of one Gauss–Legendre panel in ln q.
 pub const PANEL_WIDTH_LN: f64 = 0.25;

@@ -17,7 +17,7 @@
 //! of [`crate::surface::fit::fit_self_affine`] on the table inside the cut-offs.
 
 use crate::error::{fmt_value, Error, Field, Result};
-use crate::surface::spectrum::{LENGTH_RANGE_M, RMS_GRADIENT_RANGE};
+use crate::surface::ranges::{LENGTH_RANGE_M, RMS_GRADIENT_RANGE};
 use std::f64::consts::PI;
 
 /// A change of the log–log slope larger than this at a table point splits the quadrature there.

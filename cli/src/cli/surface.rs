@@ -4,7 +4,7 @@
 //! `--qmax`; and `asperity psd`.
 
 use super::emit;
-use asperity::error::{Error, Result};
+use asperity::error::{Error, Field, Result};
 use asperity::surface::heightmap::Surface;
 use asperity::surface::psd::{self, PsdAnalysis, PsdOptions};
 use asperity::surface::readers::{self, ReadOptions, Unit};
@@ -42,14 +42,14 @@ impl HeightUnitArg {
 pub struct SurfaceArgs {
     /// Measured height map (.txt .asc .dat matrix, .xyz columns, .npy, .gsf): the theory runs
     /// on its PSD, gfmd on the map itself.
-    #[arg(long)]
+    #[arg(long, value_parser = super::parse::in_path)]
     pub surface: Option<PathBuf>,
     /// PSD table (CSV with columns q in 1/m and psd in m^4, as `asperity psd --format csv`
     /// writes) to run the theory on instead of the preset's spectrum.
-    #[arg(long, conflicts_with = "surface")]
+    #[arg(long, conflicts_with = "surface", value_parser = super::parse::in_path)]
     pub psd: Option<PathBuf>,
     /// Side L of the --surface map in metres (its x side; overrides the file's).
-    #[arg(long, allow_hyphen_values = true, requires = "surface")]
+    #[arg(long, allow_hyphen_values = true, requires = "surface", value_parser = super::parse::number(Field::SystemSize))]
     pub size: Option<f64>,
     /// Unit of the --surface heights where the file states none (default m).
     #[arg(long, value_enum, requires = "surface")]
