@@ -585,7 +585,7 @@ pub fn write(s: &Surface, path: &Path) -> Result<()> {
     std::fs::write(path, bytes).map_err(|e| Error::Io(format!("cannot write surface {}: {e}", path.display())))
 }
 
-/// The bytes of a map in `format` (see [`write`]).
+/// The bytes of a map in `format` (see [`write()`]).
 ///
 /// # Errors
 /// [`Error::Io`] if the NumPy encoder fails.
