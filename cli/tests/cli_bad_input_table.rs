@@ -170,6 +170,61 @@ const CASES: &[Case] = &[
         &["abc", "-1", "1e300"],
         "1e-12 <= system_size_m <= 1000",
     ),
+    // gauge --reference gfmd: the flags of gfmd, and the gfmd-only flags with another reference
+    (
+        &["gauge", "--fit", "w0", "--reference", "gfmd"],
+        "--seeds",
+        &["-1", "0", "5000", "abc"],
+        "1 <= seeds <= 1000",
+    ),
+    (
+        &["gauge", "--fit", "w0", "--reference", "gfmd"],
+        "--grid",
+        &["-1", "3", "abc", "4.5"],
+        "4 <= grid <= 8192",
+    ),
+    (
+        &["gauge", "--fit", "w0", "--reference", "gfmd"],
+        "--seed",
+        &["-1", "abc", "1.5"],
+        "0 <= seed <=",
+    ),
+    (
+        &["gauge", "--fit", "w0", "--reference", "gfmd", "--extrapolate"],
+        "--ladder",
+        &["1", "abc", "1000"],
+        "2 <= lambda_s/da <= 256",
+    ),
+    (
+        &["gauge", "--fit", "w0", "--reference", "gfmd"],
+        "--method",
+        &["-1", "newton"],
+        "auto, pk, fire",
+    ),
+    (
+        &["gauge", "--fit", "w0", "--reference", "gfmd"],
+        "--save-reference",
+        &["", "x.txt"],
+        "a file name ending in .csv",
+    ),
+    (
+        &["gauge", "--fit", "c1", "--reference", "eq18"],
+        "--seeds",
+        &["3"],
+        "only with --reference gfmd",
+    ),
+    (
+        &["compare", "--reference", "eq18"],
+        "--grid",
+        &["64"],
+        "only with --reference gfmd",
+    ),
+    (
+        &["gauge", "--fit", "c1", "--reference", "eq18"],
+        "--observables",
+        &["abc", "mean_gap_rel"],
+        "a comma-separated list of a_r, mean_contact_stress, mean_gap_rel, pr",
+    ),
     // figure
     (
         &["figure", "3"],

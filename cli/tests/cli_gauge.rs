@@ -194,3 +194,116 @@ fn gauge_saves_a_preset_that_compare_reads() {
     );
     assert!(score("model 1", "mean") > 0.2, "{out}");
 }
+
+/// `gauge --reference gfmd` (2 seeds, 3 loads, 64² system II without adhesion) against the
+/// independent path: the same loads run by `asperity gfmd --from --to --points` per seed,
+/// averaged here, written as a reference CSV and fitted on the reduced scene that gauge saved
+/// as a preset. Same reference rows, same fitted w0 and standard error.
+#[test]
+fn gfmd_reference_equals_its_numbers_as_a_csv_reference() {
+    use asperity::tolerances::{GFMD_REFERENCE_FIT_REL, GFMD_REFERENCE_ROWS_REL};
+    let dir = std::env::temp_dir().join(format!("asperity-cli-gauge-gfmd-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let red = dir.join("reduced.toml").display().to_string();
+    let saved = dir.join("saved.csv").display().to_string();
+    let scene = ["--preset", "system-2", "--gamma", "0", "--model", "4"];
+    let loads = ["--from", "0.005", "--to", "0.02", "--points", "3"];
+    let mut args: Vec<&str> = vec![
+        "gauge",
+        "--fit",
+        "w0",
+        "--reference",
+        "gfmd",
+        "--grid",
+        "64",
+        "--seeds",
+        "2",
+    ];
+    args.extend(scene);
+    args.extend(loads);
+    args.extend(["--save-preset", &red, "--save-reference", &saved, "--format", "json"]);
+    let (code, out, err) = asperity(&args);
+    assert_eq!(code, 0, "{err}");
+    let g: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(g["reference"], "gfmd");
+    assert_eq!(g["gfmd"]["grid"], 64);
+
+    // the same sweeps, one `gfmd` run per seed
+    let mut per_seed: Vec<Vec<(f64, f64, f64)>> = Vec::new();
+    for seed in ["1", "2"] {
+        let mut a: Vec<&str> = vec!["gfmd", "--grid", "64", "--seed", seed, "--format", "json"];
+        a.extend(&scene[..4]);
+        a.extend(loads);
+        let (code, out, err) = asperity(&a);
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        per_seed.push(
+            v["rows"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|r| {
+                    let f = |k: &str| r[k].as_f64().unwrap();
+                    (f("p"), f("a_r"), f("mean_gap_rel"))
+                })
+                .collect(),
+        );
+    }
+    let mean_se = |x: [f64; 2]| {
+        let m = (x[0] + x[1]) / 2.0;
+        let var = ((x[0] - m).powi(2) + (x[1] - m).powi(2)) / 1.0;
+        (m, (var / 2.0).sqrt())
+    };
+    let mut csv = String::from("p,a_r,a_r_err,mean_gap_rel,mean_gap_rel_err\n");
+    let rows = g["gfmd"]["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    for k in 0..3 {
+        let (p, a1, u1) = per_seed[0][k];
+        let (_, a2, u2) = per_seed[1][k];
+        let (a, ae) = mean_se([a1, a2]);
+        let (u, ue) = mean_se([u1, u2]);
+        for (key, want) in [
+            ("a_r", a),
+            ("a_r_err", ae),
+            ("mean_gap_rel", u),
+            ("mean_gap_rel_err", ue),
+        ] {
+            let got = rows[k][key].as_f64().unwrap();
+            assert!(
+                (got / want - 1.0).abs() < GFMD_REFERENCE_ROWS_REL,
+                "load {k} {key}: {got} vs {want}"
+            );
+        }
+        csv += &format!("{p:e},{a:e},{ae:e},{u:e},{ue:e}\n");
+    }
+    let path = dir.join("by_hand.csv").display().to_string();
+    std::fs::write(&path, csv).unwrap();
+    let by_csv = |file: &str| {
+        let (code, out, err) = asperity(&[
+            "gauge",
+            "--preset",
+            &red,
+            "--model",
+            "4",
+            "--fit",
+            "w0",
+            "--reference",
+            file,
+            "--format",
+            "json",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        serde_json::from_str::<serde_json::Value>(&out).unwrap()
+    };
+    for c in [by_csv(&path), by_csv(&saved)] {
+        for k in ["value", "std_error"] {
+            let (x, y) = (g["params"][0][k].as_f64().unwrap(), c["params"][0][k].as_f64().unwrap());
+            assert!(
+                (x / y - 1.0).abs() < GFMD_REFERENCE_FIT_REL,
+                "w0 {k}: gfmd {x} vs csv {y}"
+            );
+        }
+        let (x, y) = (g["chi2"].as_f64().unwrap(), c["chi2"].as_f64().unwrap());
+        assert!((x / y - 1.0).abs() < GFMD_REFERENCE_FIT_REL, "chi2 {x} vs {y}");
+    }
+}

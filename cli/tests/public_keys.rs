@@ -547,6 +547,7 @@ fn gauge_and_compare_keys() {
             "start",
             "elapsed_s",
             "saved_preset",
+            "gfmd",
         ],
         "gauge",
     );
@@ -575,5 +576,51 @@ fn gauge_and_compare_keys() {
     let s = element_keys(&v["models"][0], "scores");
     for k in ["observable", "points", "mean", "max"] {
         assert!(s.contains(k), "compare scores.{k}");
+    }
+}
+
+#[test]
+fn gauge_gfmd_reference_keys() {
+    let v = json(&[
+        "gauge",
+        "--preset",
+        "system-2",
+        "--gamma",
+        "0",
+        "--fit",
+        "w0",
+        "--reference",
+        "gfmd",
+        "--grid",
+        "32",
+        "--points",
+        "2",
+        "--format",
+        "json",
+    ]);
+    assert_has(
+        &v,
+        &[
+            "gfmd.grid",
+            "gfmd.seeds",
+            "gfmd.ladder",
+            "gfmd.rows",
+            "gfmd.reduction",
+            "gfmd.iterations",
+            "gfmd.elapsed_s",
+        ],
+        "gauge --reference gfmd",
+    );
+    let r = element_keys(&v["gfmd"], "rows");
+    for k in [
+        "p",
+        "a_r",
+        "a_r_err",
+        "mean_contact_stress",
+        "mean_contact_stress_err",
+        "mean_gap_rel",
+        "mean_gap_rel_err",
+    ] {
+        assert!(r.contains(k), "gauge gfmd.rows.{k}");
     }
 }

@@ -19,6 +19,7 @@
 //! does for a single parameter whose standard error exceeds [`WEAK_SE_FACTOR`] × its size.
 
 pub mod compare;
+pub mod gfmd_reference;
 pub mod predict;
 pub mod reference;
 

@@ -41,6 +41,14 @@ impl Observable {
         }
     }
 
+    /// Every observable, in [`Observable`] order.
+    pub const ALL: [Observable; 4] = [
+        Observable::Area,
+        Observable::MeanContactStress,
+        Observable::MeanGapRel,
+        Observable::Pr,
+    ];
+
     /// The observables a reference CSV may hold, in column order.
     pub const COLUMNS: [Observable; 3] = [Observable::Area, Observable::MeanContactStress, Observable::MeanGapRel];
 

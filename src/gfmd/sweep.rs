@@ -13,7 +13,7 @@
 //! as the theory's U = Σ u_ela − a_rγ_s [S-11] counts it. The elastic part is
 //! ½⟨(w − w̄)(σ − p₀)⟩ over the nodes (Parseval; σ − p₀ = φ⋆w).
 
-use super::{measure, prepare, solve_from, GfmdOptions, GfmdSetup, Problem, Progress, Solution};
+use super::{measure, prepare, solve_from, GfmdOptions, GfmdSetup, Prepared, Problem, Progress, Solution};
 use crate::error::Result;
 use crate::theory::engine::Options;
 use crate::theory::sweep::{self, Sweep, SweepSpec};
@@ -97,6 +97,35 @@ pub fn run_sweep(
     cancel: &AtomicBool,
 ) -> Result<GfmdSweep> {
     let t0 = Instant::now();
+    let (prep, rows, iterations) = run_loads(setup, spec, opts, progress, cancel)?;
+    let (theory, theory_error) = match prep
+        .theory_scene(spec.from)
+        .and_then(|sc| sweep::sweep(&sc, spec, &Options::default(), Some(cancel)))
+    {
+        Ok(s) => (Some(s), None),
+        Err(e) => (None, Some(e.to_string())),
+    };
+    Ok(GfmdSweep {
+        rows,
+        grid: prep.surface.nx,
+        seed: setup.surface.is_none().then_some(setup.seed),
+        reduction: prep.reduction.clone(),
+        theory,
+        theory_error,
+        iterations,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// The GFMD part of [`run_sweep`] without the theory: the prepared map, one row per load and
+/// the total solver steps.
+pub fn run_loads(
+    setup: &GfmdSetup,
+    spec: &SweepSpec,
+    opts: &GfmdOptions,
+    progress: &mut dyn FnMut(usize, Progress),
+    cancel: &AtomicBool,
+) -> Result<(Prepared, Vec<GfmdSweepRow>, usize)> {
     spec.validate()?;
     opts.validate()?;
     let prep = prepare(setup)?;
@@ -122,21 +151,5 @@ pub fn run_sweep(
         });
         start = Some(sol.gap);
     }
-    let (theory, theory_error) = match prep
-        .theory_scene(spec.from)
-        .and_then(|sc| sweep::sweep(&sc, spec, &Options::default(), Some(cancel)))
-    {
-        Ok(s) => (Some(s), None),
-        Err(e) => (None, Some(e.to_string())),
-    };
-    Ok(GfmdSweep {
-        rows,
-        grid: prep.surface.nx,
-        seed: setup.surface.is_none().then_some(setup.seed),
-        reduction: prep.reduction.clone(),
-        theory,
-        theory_error,
-        iterations,
-        elapsed_s: t0.elapsed().as_secs_f64(),
-    })
+    Ok((prep, rows, iterations))
 }

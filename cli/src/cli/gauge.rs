@@ -2,17 +2,22 @@
 //! ([`asperity::fit`]), and `asperity compare`: every model against a reference set.
 //!
 //! ```text
-//! asperity gauge --fit c1,c2[,alpha,k_griffith,w0] --reference eq18|FILE.csv
-//!                [--from P --to P --points N] [--pr FILE.csv] [scene flags]
+//! asperity gauge --fit c1,c2[,alpha,k_griffith,w0] --reference eq18|gfmd|FILE.csv
+//!                [--from P --to P --points N] [--pr FILE.csv] [--observables LIST] [scene flags]
+//!                [--grid N --seed S --seeds K --extrapolate --ladder 4,8,16 --method M
+//!                 --save-reference FILE.csv]   (gfmd only)
 //!                [--format table|json] [--svg FILE] [--png FILE] [--save-preset FILE]
 //! ```
 //!
 //! With `--reference eq18` the scene is made adhesionless and semi-infinite (the closed form
-//! [S-18] describes only that case); a file reference is compared on the scene as given.
+//! [S-18] describes only that case); with `--reference gfmd` it becomes the reduced scene that
+//! GFMD runs ([`super::gauge_gfmd`]); a file reference is compared on the scene as given.
 
+use super::gauge_gfmd::{self, GfmdRefArgs};
 use super::{emit, Format, SceneArgs};
 use crate::chart::{self, ChartSpec, Series, SeriesStyle};
 use asperity::error::{Error, Field, Result};
+use asperity::fit::gfmd_reference::GfmdReference;
 use asperity::fit::reference::{self, Observable, Reference};
 use asperity::fit::{self, Fit, Param};
 use asperity::input::model::Model;
@@ -25,22 +30,30 @@ use std::path::{Path, PathBuf};
 /// Reference options shared by `gauge` and `compare`.
 #[derive(Debug, Clone, Args)]
 pub struct ReferenceArgs {
-    /// eq18 (the closed form [S-18] over --from..--to) or a CSV file with columns p, a_r,
-    /// a_r_err, mean_contact_stress(_err), mean_gap_rel(_err).
+    /// eq18 (the closed form [S-18] over --from..--to), gfmd (a GFMD load sweep of the scene
+    /// over --from..--to) or a CSV file with columns p, a_r, a_r_err,
+    /// mean_contact_stress(_err), mean_gap_rel(_err).
     #[arg(long)]
     pub reference: String,
-    /// First p* of --reference eq18.
-    #[arg(long, default_value_t = 1e-3, allow_hyphen_values = true)]
-    pub from: f64,
-    /// Last p* of --reference eq18.
-    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
-    pub to: f64,
-    /// Number of log-spaced loads of --reference eq18.
-    #[arg(long, default_value_t = 31, allow_hyphen_values = true, value_parser = super::whole_number)]
-    pub points: usize,
+    /// First p* of --reference eq18 (default 1e-3) or gfmd (default p*/2.5).
+    #[arg(long, allow_hyphen_values = true)]
+    pub from: Option<f64>,
+    /// Last p* of --reference eq18 (default 1) or gfmd (default p*·2.5).
+    #[arg(long, allow_hyphen_values = true)]
+    pub to: Option<f64>,
+    /// Number of log-spaced loads of --reference eq18 (default 31) or gfmd (default 4).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::whole_number)]
+    pub points: Option<usize>,
     /// Pr(sigma*) histograms: a CSV file with columns p, sigma, density.
     #[arg(long)]
     pub pr: Option<PathBuf>,
+    /// Fit only these observables of the reference: a comma-separated list of a_r,
+    /// mean_contact_stress, mean_gap_rel, pr (default: all it holds).
+    #[arg(long)]
+    pub observables: Option<String>,
+    /// GFMD options of --reference gfmd.
+    #[command(flatten)]
+    pub gfmd: GfmdRefArgs,
 }
 
 /// Arguments of `gauge`.
@@ -73,23 +86,41 @@ fn read(path: &Path) -> Result<String> {
     std::fs::read_to_string(path).map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))
 }
 
-/// The reference and the scene it is compared on.
-pub fn resolve_reference(args: &ReferenceArgs, scene: &mut Scene) -> Result<Reference> {
+/// The reference and the scene it is compared on (for `gfmd`, the scene GFMD runs), with the
+/// GFMD run when it is one.
+pub fn resolve_reference(
+    args: &ReferenceArgs,
+    preset: &Preset,
+    scene_args: &SceneArgs,
+    scene: &mut Scene,
+) -> Result<(Reference, Option<GfmdReference>)> {
+    if args.reference != "gfmd" {
+        args.gfmd.refuse_unless_gfmd(&args.reference)?;
+    }
+    let mut gfmd = None;
     let mut r = match args.reference.as_str() {
         "eq18" => {
             // [S-18] is the adhesionless half-space
             scene.gamma = 0.0;
             scene.thickness_qr = f64::INFINITY;
-            reference::eq18(args.from, args.to, args.points)?
+            reference::eq18(
+                args.from.unwrap_or(1e-3),
+                args.to.unwrap_or(1.0),
+                args.points.unwrap_or(31),
+            )?
         }
         "gfmd" => {
-            return Err(Error::Unsupported(
-                "--reference gfmd: run `asperity gfmd --from P --to P --points N --format json`, write p and a_r (and errors) as CSV, and pass the file".into(),
-            ))
+            let map = scene_args.source.map()?;
+            let g = gauge_gfmd::resolve(&args.gfmd, (args.from, args.to, args.points), preset, map, scene)?;
+            let r = g.reference.clone();
+            gfmd = Some(g);
+            r
         }
         file => {
             let path = Path::new(file);
-            let name = path.file_name().map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
+            let name = path
+                .file_name()
+                .map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
             reference::parse_csv(&read(path)?, &name)?
         }
     };
@@ -99,15 +130,31 @@ pub fn resolve_reference(args: &ReferenceArgs, scene: &mut Scene) -> Result<Refe
             .map_or(String::new(), |n| n.to_string_lossy().into_owned());
         r.points.extend(reference::parse_pr_csv(&read(pr)?, &name)?);
     }
+    if let Some(list) = &args.observables {
+        let allowed = "a comma-separated list of a_r, mean_contact_stress, mean_gap_rel, pr held by the reference";
+        let mut keep = Vec::new();
+        for t in list.split(',').map(str::trim) {
+            let o = Observable::ALL
+                .into_iter()
+                .find(|o| o.key() == t)
+                .filter(|o| r.observables().contains(o))
+                .ok_or_else(|| Error::field("--observables", list, allowed))?;
+            keep.push(o);
+        }
+        r.points.retain(|o| keep.contains(&o.observable));
+    }
     scene.validate()?;
-    Ok(r)
+    Ok((r, gfmd))
 }
 
 /// The JSON object printed by `gauge --format json`.
 #[derive(Debug, Serialize)]
 pub struct GaugeOutput {
-    /// "eq18" or the file name.
+    /// "eq18", "gfmd" or the file name.
     pub reference: String,
+    /// The GFMD run of `--reference gfmd` (grid, seeds, ladder, rows, reduction, iterations,
+    /// elapsed_s); null for the other references.
+    pub gfmd: Option<GfmdReference>,
     /// params, correlation, condition_number, residuals, chi2, chi2_reduced, points,
     /// evaluations, termination, model, start, elapsed_s.
     #[serde(flatten)]
@@ -120,7 +167,7 @@ pub struct GaugeOutput {
 pub fn run(args: &GaugeArgs) -> Result<()> {
     let params = Param::parse_list(&args.fit)?;
     let (preset, mut scene) = args.scene.resolve(None)?;
-    let r = resolve_reference(&args.reference, &mut scene)?;
+    let (r, gfmd) = resolve_reference(&args.reference, &preset, &args.scene, &mut scene)?;
     let f = fit::fit(&scene, &r, &params)?;
     if args.svg.is_some() || args.png.is_some() {
         let models = [("before", f.start), ("after", f.model)];
@@ -138,12 +185,16 @@ pub fn run(args: &GaugeArgs) -> Result<()> {
         Format::Json => {
             let out = GaugeOutput {
                 reference: r.name.clone(),
+                gfmd,
                 fit: f,
                 saved_preset: saved,
             };
             emit(&serde_json::to_string_pretty(&out).expect("serialisable"));
         }
-        Format::Table => emit(&table(&r, &f, saved.as_deref())),
+        Format::Table => {
+            let head = gfmd.as_ref().map_or(String::new(), gauge_gfmd::table);
+            emit(&(head + &table(&r, &f, saved.as_deref())))
+        }
     }
     Ok(())
 }
@@ -198,12 +249,23 @@ fn table(r: &Reference, f: &Fit, saved: Option<&str>) -> String {
     t
 }
 
-/// Writes a preset: the scene's preset with the scene's load, thickness, adhesion and `model`.
+/// Writes a preset: the scene's preset with the scene's load, thickness, modulus, adhesion,
+/// self-affine spectrum (the reduced one of `--reference gfmd`) and `model`.
 pub fn save_preset(base: &Preset, scene: &Scene, model: &Model, path: &Path) -> Result<()> {
     let mut p = base.clone();
     p.load.pressure = scene.pressure;
     p.load.thickness_qr = scene.thickness_qr;
+    p.material.contact_modulus_pa = scene.modulus;
     p.adhesion.surface_energy_j_m2 = scene.gamma;
+    p.adhesion.range_m = scene.range;
+    if let asperity::surface::spectrum::Spectrum::SelfAffine(sa) = &scene.spectrum {
+        p.surface.system_size_m = sa.system_size;
+        p.surface.rolloff_wavelength_m = sa.lambda_r;
+        p.surface.short_wavelength_m = sa.lambda_s;
+        p.surface.hurst = sa.hurst;
+        p.surface.rms_gradient = Some(scene.spectrum.rms_gradient());
+        p.surface.rms_height_m = None;
+    }
     p.model = ModelSpec::of_model(model);
     p.name = path
         .file_stem()
@@ -349,8 +411,8 @@ pub struct CompareOutput {
 /// Runs `asperity compare`.
 pub fn compare(args: &CompareArgs) -> Result<()> {
     use asperity::input::model::ModelKind;
-    let (_, mut scene) = args.scene.resolve(None)?;
-    let r = resolve_reference(&args.reference, &mut scene)?;
+    let (preset, mut scene) = args.scene.resolve(None)?;
+    let (r, _) = resolve_reference(&args.reference, &preset, &args.scene, &mut scene)?;
     let mut models: Vec<(String, Model)> = Vec::new();
     for t in args.models.split(',').map(str::trim).filter(|t| !t.is_empty()) {
         let kind: ModelKind = t.parse().map_err(|_| {

@@ -8,6 +8,7 @@ use asperity::theory::engine;
 pub mod bench;
 pub mod figure;
 pub mod gauge;
+pub mod gauge_gfmd;
 pub mod gfmd;
 
 use asperity::error::Field;

@@ -1,0 +1,207 @@
+//! `gauge --reference gfmd` / `compare --reference gfmd`: the GFMD load sweep that gauge runs
+//! itself ([`asperity::fit::gfmd_reference`]), with the flags of `asperity gfmd` (same names,
+//! same parsers).
+//!
+//! Default grid: the preset's `[gfmd]` grid (L/λ_r = 2, λ_r/λ_s = 32, λ_s/Δa = 8 without one),
+//! at most [`DEFAULT_MAX_GRID`]² (larger ones keep L/λ_r and λ_s/Δa and narrow λ_r/λ_s, as
+//! `gfmd --grid`); default loads: [`DEFAULT_POINTS`] log-spaced from p*/[`DEFAULT_SPAN`] to
+//! p*·[`DEFAULT_SPAN`] around the scene's p*.
+
+use super::gfmd::{ladder_rung, MethodArg, DEFAULT_GRID};
+use super::parse;
+use asperity::error::{Error, Field, Result};
+use asperity::fit::gfmd_reference::{self, GfmdReference, GfmdReferenceSpec, Stage};
+use asperity::gfmd::{GfmdOptions, GfmdSetup, GridSpec, Method, Progress};
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use asperity::surface::heightmap::Surface;
+use asperity::theory::sweep::SweepSpec;
+use clap::Args;
+use std::io::{IsTerminal, Write};
+use std::sync::atomic::AtomicBool;
+use std::time::{Duration, Instant};
+
+/// Largest default grid side of `--reference gfmd` (a larger preset grid is narrowed to it).
+pub const DEFAULT_MAX_GRID: usize = 256;
+/// Default number of loads of `--reference gfmd`.
+pub const DEFAULT_POINTS: usize = 4;
+/// Default loads span p*/span..p*·span around the scene's p*.
+pub const DEFAULT_SPAN: f64 = 2.5;
+
+/// The GFMD options of `--reference gfmd` (as in `asperity gfmd`).
+#[derive(Debug, Clone, Args)]
+pub struct GfmdRefArgs {
+    /// --reference gfmd: grid side N (default: the preset's [gfmd] grid, at most 256).
+    #[arg(long, allow_hyphen_values = true, value_parser = parse::whole(Field::Grid))]
+    pub grid: Option<i64>,
+    /// --reference gfmd: seed of the first random surface.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::whole_number_u64)]
+    pub seed: Option<u64>,
+    /// --reference gfmd: K realisations (seeds S..S+K-1); their standard errors weight the fit.
+    #[arg(long, allow_hyphen_values = true, value_parser = parse::count_in("seeds", 1, gfmd_reference::MAX_SEEDS))]
+    pub seeds: Option<usize>,
+    /// --reference gfmd: a ladder of resolutions (--ladder) per load, extrapolated to da -> 0.
+    #[arg(long)]
+    pub extrapolate: bool,
+    /// --reference gfmd: points per short wavelength lambda_s/da of the --extrapolate ladder.
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, value_parser = ladder_rung)]
+    pub ladder: Vec<f64>,
+    /// --reference gfmd: minimiser (auto, pk or fire; see gfmd --method).
+    #[arg(long, value_enum, allow_hyphen_values = true)]
+    pub method: Option<MethodArg>,
+    /// --reference gfmd: write the reference (mean and standard error per load) as CSV.
+    #[arg(long, allow_hyphen_values = true, value_parser = parse::out_path(Some("csv")))]
+    pub save_reference: Option<std::path::PathBuf>,
+}
+
+impl GfmdRefArgs {
+    /// The flags given that only `--reference gfmd` takes: refused with another reference.
+    pub fn refuse_unless_gfmd(&self, reference: &str) -> Result<()> {
+        let given: [(&str, Option<String>); 6] = [
+            ("--grid", self.grid.map(|x| x.to_string())),
+            ("--seed", self.seed.map(|x| x.to_string())),
+            ("--seeds", self.seeds.map(|x| x.to_string())),
+            ("--extrapolate", self.extrapolate.then(|| "true".into())),
+            ("--method", self.method.map(|m| format!("{m:?}").to_ascii_lowercase())),
+            (
+                "--save-reference",
+                self.save_reference.as_ref().map(|p| p.display().to_string()),
+            ),
+        ];
+        for (flag, v) in given {
+            if let Some(v) = v {
+                return Err(Error::field(
+                    flag,
+                    v,
+                    format!("only with --reference gfmd (not --reference {reference})"),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Runs the GFMD reference of the scene (on `surface` when a map is given): loads `from..to` (`points`), defaults as in the
+/// module docs. Replaces `scene` by the scene GFMD runs (the fit's scene).
+pub fn resolve(
+    args: &GfmdRefArgs,
+    loads: (Option<f64>, Option<f64>, Option<usize>),
+    preset: &Preset,
+    surface: Option<Surface>,
+    scene: &mut Scene,
+) -> Result<GfmdReference> {
+    let mut grid = preset.gfmd.as_ref().map(GridSpec::from_preset).unwrap_or(DEFAULT_GRID);
+    match args.grid {
+        Some(n) => {
+            if n < 4 {
+                return Err(Error::invalid(Field::Grid, n as f64, "an integer N >= 4"));
+            }
+            grid = grid.with_grid(n as usize)?;
+        }
+        None if grid.n() > DEFAULT_MAX_GRID => grid = grid.with_grid(DEFAULT_MAX_GRID)?,
+        None => {}
+    }
+    let p = scene.pressure;
+    let spec = GfmdReferenceSpec {
+        loads: SweepSpec {
+            from: loads.0.unwrap_or(p / DEFAULT_SPAN),
+            to: loads.1.unwrap_or(p * DEFAULT_SPAN),
+            points: loads.2.unwrap_or(DEFAULT_POINTS),
+        },
+        seeds: args.seeds.unwrap_or(1),
+        ladder: args.extrapolate.then(|| args.ladder.clone()),
+    };
+    let opts = GfmdOptions {
+        method: match args.method.unwrap_or(MethodArg::Auto) {
+            MethodArg::Auto => Method::Auto,
+            MethodArg::Pk => Method::PolonskyKeer,
+            MethodArg::Fire => Method::Fire,
+        },
+        ..GfmdOptions::default()
+    };
+    let setup = GfmdSetup {
+        scene: scene.clone(),
+        grid,
+        seed: args.seed.unwrap_or(1),
+        surface,
+        rescale: true,
+    };
+    let cancel = AtomicBool::new(false);
+    let tty = std::io::stderr().is_terminal();
+    let start = Instant::now();
+    let mut last = Instant::now();
+    let mut live = false;
+    let mut report = |st: &Stage, pr: Progress| {
+        let what = format!(
+            "gauge: gfmd reference: seed {}/{}, {}{}^2, load {}/{}",
+            st.seed_index + 1,
+            st.seeds,
+            if st.rungs > 1 {
+                format!("rung {}/{}, ", st.rung + 1, st.rungs)
+            } else {
+                String::new()
+            },
+            st.grid,
+            st.load + 1,
+            st.loads
+        );
+        if pr.iteration == 0 && !tty {
+            eprintln!("{what} ({:.1} s)", start.elapsed().as_secs_f64());
+        } else if tty && last.elapsed() > Duration::from_millis(100) {
+            last = Instant::now();
+            live = true;
+            let mut e = std::io::stderr().lock();
+            let _ = write!(
+                e,
+                "\r{what}: step {:>7}, contact {:.4}, {:.1} s ",
+                pr.iteration,
+                pr.contact_fraction,
+                start.elapsed().as_secs_f64()
+            );
+            let _ = e.flush();
+        }
+    };
+    let out = gfmd_reference::gfmd_reference(&setup, &spec, &opts, &mut report, &cancel);
+    if live {
+        eprintln!();
+    }
+    let out = out?;
+    if let Some(path) = &args.save_reference {
+        std::fs::write(path, gfmd_reference::to_csv(&out.rows, out.scene.gamma > 0.0))
+            .map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))?;
+    }
+    *scene = out.scene.clone();
+    Ok(out)
+}
+
+/// The GFMD block of `gauge`'s table.
+pub fn table(g: &GfmdReference) -> String {
+    let mut t = format!(
+        "GFMD reference: grid {}^2, seeds {:?}{}, {} steps in {:.1} s (fitted on the reduced scene GFMD ran)\n",
+        g.grid,
+        g.seeds,
+        g.ladder.as_ref().map_or(String::new(), |l| format!(
+            ", extrapolated da -> 0 over lambda_s/da = {l:?}"
+        )),
+        g.iterations,
+        g.elapsed_s
+    );
+    let e = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.2e}"));
+    t += &format!(
+        "{:>12} {:>12} {:>10} {:>12} {:>10} {:>12} {:>10}\n",
+        "p*", "a_r", "+-", "sigma_c*", "+-", "u/h_rms", "+-"
+    );
+    for r in &g.rows {
+        t += &format!(
+            "{:>12.4e} {:>12.6} {:>10} {:>12.6} {:>10} {:>12.6} {:>10}\n",
+            r.p,
+            r.a_r,
+            e(r.a_r_err),
+            r.mean_contact_stress,
+            e(r.mean_contact_stress_err),
+            r.mean_gap_rel,
+            e(r.mean_gap_rel_err)
+        );
+    }
+    t + "\n"
+}
