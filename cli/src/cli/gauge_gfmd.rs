@@ -31,7 +31,7 @@ pub const DEFAULT_SPAN: f64 = 2.5;
 /// The GFMD options of `--reference gfmd` (as in `asperity gfmd`).
 #[derive(Debug, Clone, Args)]
 pub struct GfmdRefArgs {
-    /// --reference gfmd: grid side N (default: the preset's [gfmd] grid, at most 256).
+    /// --reference gfmd: grid side N (default: the grid of the preset's gfmd table, at most 256).
     #[arg(long, allow_hyphen_values = true, value_parser = parse::whole(Field::Grid))]
     pub grid: Option<i64>,
     /// --reference gfmd: seed of the first random surface.
