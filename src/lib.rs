@@ -55,6 +55,7 @@ pub mod gfmd;
 pub mod input;
 pub mod limits;
 pub mod numerics;
+pub mod report;
 pub mod surface;
 pub mod theory;
 pub mod tolerances;

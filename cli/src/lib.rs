@@ -6,4 +6,5 @@ pub mod benchmark;
 pub mod chart;
 pub mod cli;
 pub mod figure;
+pub mod report;
 pub mod tui;

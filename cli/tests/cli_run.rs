@@ -48,7 +48,10 @@ fn run_json_has_the_public_fields() {
     let a = v["a_r"].as_f64().unwrap();
     let exact = statrs::function::erf::erf(2f64.sqrt() * 0.01);
     assert!((a - exact).abs() < 1e-9);
+    // `converged` is computed from the result (a finite error bar, a_r in [0, 1]); the
+    // closed form here has an error bar at round-off
     assert_eq!(v["converged"], true);
+    assert!(v["error_estimate"].as_f64().unwrap() < 1e-9, "{}", v["error_estimate"]);
     assert!(v["scene"].get("thickness_qr").is_some() && v["scene"]["thickness_qr"].is_null());
     assert!(v["scene"].get("gamma_glo").is_some());
     // ∫density dσ = a_r on the printed grid (trapezoid, 2001 points over p + 5Δ: the cut

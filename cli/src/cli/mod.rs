@@ -3,7 +3,6 @@
 //! The headless commands print JSON or a table to stdout; errors go to stderr as one line
 //! with a non-zero exit code. Flag names and JSON keys are a public interface.
 
-use asperity::contact::ContactStats;
 use asperity::theory::engine;
 pub mod bench;
 pub mod figure;
@@ -15,11 +14,10 @@ use asperity::error::Field;
 use asperity::error::{Error, Result};
 use asperity::input::model::{Model, ModelKind};
 use asperity::input::preset::{self, Preset};
+use asperity::input::scene::Scene;
 use asperity::input::scene::ThicknessQr;
-use asperity::input::scene::{Scene, SceneSummary};
 use asperity::theory::persson::Accuracy;
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use serde::Serialize;
 use std::io::IsTerminal;
 use std::io::Write;
 
@@ -234,175 +232,9 @@ impl SceneArgs {
     }
 }
 
-/// `resolution` in the JSON output.
-#[derive(Debug, Clone, Serialize, PartialEq)]
-pub struct ResolutionTable {
-    /// q (1/m).
-    pub q: Vec<f64>,
-    /// a_r(q).
-    pub a_r: Vec<f64>,
-}
-
-/// The JSON object printed by `asperity run`.
-#[derive(Debug, Clone, Serialize, PartialEq)]
-pub struct RunOutput {
-    /// Preset name.
-    pub preset: String,
-    /// `a_r`, `mean_contact_stress` (reduced by E*ḡ), `contact_stress_variance` (by (E*ḡ)²)
-    /// and `pr` = {`sigma`, `density`}, ∫density dσ* = a_r.
-    #[serde(flatten)]
-    pub stats: ContactStats,
-    /// Width Δ* of the stress distribution.
-    pub width: f64,
-    /// Whether the solver met its tolerance.
-    pub converged: bool,
-    /// Estimated absolute error of a_r.
-    pub error_estimate: f64,
-    /// Mean gap ū (m) of the loading branch: the adhesionless gap [S-12] at the load the
-    /// branch's contact carries (without adhesion: the energy route itself; docs/physics.md §5.1); null
-    /// when unavailable.
-    pub mean_gap: Option<f64>,
-    /// ū/h_rms; null when unavailable.
-    pub mean_gap_rel: Option<f64>,
-    /// Lower end of ū/h_rms's bracket: the adhesionless gap at the load that gives the same
-    /// a_r (no higher than `mean_gap_rel`); equal to `mean_gap_rel` without adhesion; null
-    /// when the gap is.
-    pub mean_gap_lower_rel: Option<f64>,
-    /// Upper end of the bracket: the adhesionless gap at the same load; null when the gap is.
-    pub mean_gap_upper_rel: Option<f64>,
-    /// Estimated absolute error of `mean_gap_rel` (quadrature and interpolation); null when
-    /// the gap is.
-    pub mean_gap_error: Option<f64>,
-    /// p_c*: the net force the loading branch's contact carries per nominal area, ∫σ*Pr dσ*
-    /// (p* plus the tension of the contact edges; p* without adhesion); null when the gap is.
-    pub contact_load: Option<f64>,
-    /// One line saying what `mean_gap_rel` is.
-    pub mean_gap_about: String,
-    /// Why the mean gap is null (e.g. a load on the way to full contact where the adhesive
-    /// solve did not converge); absent when it is given.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub mean_gap_note: Option<String>,
-    /// Elastic energy U per nominal area (J/m²) [S-11].
-    pub elastic_energy: f64,
-    /// σ_a*(q_s): the adhesive wall at σ* = −σ_a* (0 without adhesion).
-    pub sigma_a: f64,
-    /// Contact area under tension, ∫_{−σ_a}^0 Pr dσ*.
-    pub tensile_area: f64,
-    /// 1 − a_r: the fraction that left the contact through the wall.
-    pub detached_fraction: f64,
-    /// Marches of the adhesive solver (0 without adhesion).
-    pub iterations: usize,
-    /// Self-consistency residual |γ(q_s)/γ_s − 1| (0 without adhesion).
-    pub residual: f64,
-    /// "adhesionless", or "loading": the branch a loading history reaches.
-    pub branch: String,
-    /// a_r of a distinct unloading branch (the highest stable one), null if none.
-    pub unloading_a_r: Option<f64>,
-    /// Every branch at this load, lowest a_r first: branch ("loading", "unstable",
-    /// "unloading"), stable, a_r, sigma_a, gamma_coarse (γ(q_L)/γ_s), elastic_energy,
-    /// residual (the branch's |γ(q_s)/γ_s − 1|), mean_gap_rel, mean_gap_reversible_rel,
-    /// mean_gap_lower_rel, mean_gap_upper_rel, mean_gap_error, contact_load. Empty
-    /// without adhesion.
-    pub branches: Vec<RunBranch>,
-    /// Inside a hysteresis window (two stable branches at this load): p* above which the
-    /// loading branch no longer exists (jump into contact); null outside a window or when
-    /// the window runs past the allowed range of p*.
-    pub jump_in_pressure: Option<f64>,
-    /// Inside a hysteresis window: p* below which the unloading branch no longer exists
-    /// (pull-off); null outside a window or when it runs past the allowed range.
-    pub pull_off_pressure: Option<f64>,
-    /// γ(q)/γ_s along `resolution.q` (empty without adhesion).
-    pub gamma_q: Vec<f64>,
-    /// σ_a*(q) along `resolution.q` (empty without adhesion).
-    pub sigma_a_q: Vec<f64>,
-    /// Wall time of the whole computation of the command (s): the solve with its error
-    /// estimate, the hysteresis window and the mean gap (the parts follow).
-    pub elapsed_s: f64,
-    /// Wall time of the solve at p* with its error estimate (s).
-    pub elapsed_solve_s: f64,
-    /// Wall time of the hysteresis window's edges (s; 0 outside a window).
-    pub elapsed_window_s: f64,
-    /// Wall time of the mean gap (s).
-    pub elapsed_gap_s: f64,
-    /// Resolved inputs.
-    pub scene: SceneSummary,
-    /// a_r(q) along the resolution.
-    pub resolution: ResolutionTable,
-}
-
-/// One branch in `run`'s `branches`: its state and its mean gap.
-#[derive(Debug, Clone, Serialize, PartialEq)]
-pub struct RunBranch {
-    /// branch, stable, a_r, sigma_a, gamma_coarse, elastic_energy, residual.
-    #[serde(flatten)]
-    pub state: asperity::theory::adhesion::BranchState,
-    /// ū/h_rms of this branch: the adhesionless gap at the load its contact carries (docs/physics.md
-    /// §5.1); null for an unstable branch (no quasi-static path follows it) or when
-    /// unavailable.
-    pub mean_gap_rel: Option<f64>,
-    /// The adhesionless gap at the same load (the bracket's upper end, the same for every
-    /// branch: the dissipation-free route [S-12] of the scene without adhesion); null as
-    /// `mean_gap_rel`.
-    pub mean_gap_reversible_rel: Option<f64>,
-    /// The bracket's lower end: the adhesionless gap at the load with this branch's a_r;
-    /// null as `mean_gap_rel`.
-    pub mean_gap_lower_rel: Option<f64>,
-    /// The bracket's upper end (= `mean_gap_reversible_rel`); null as `mean_gap_rel`.
-    pub mean_gap_upper_rel: Option<f64>,
-    /// Estimated absolute error of `mean_gap_rel`; null as `mean_gap_rel`.
-    pub mean_gap_error: Option<f64>,
-    /// The net force the branch's contact carries per nominal area, ∫σ*Pr dσ*; null as
-    /// `mean_gap_rel`.
-    pub contact_load: Option<f64>,
-}
-
-/// The branches of an evaluation with their gaps (`gap`: the run's mean gap, which holds the
-/// loading branch's and, inside a hysteresis window, the unloading branch's).
-fn run_branches(ev: &engine::Evaluation, gap: Option<&asperity::theory::gap::MeanGap>) -> Vec<RunBranch> {
-    use asperity::theory::adhesion::Branch;
-    use asperity::theory::gap::BranchGap;
-    ev.branches
-        .iter()
-        .map(|b| {
-            let g: Option<BranchGap> = match (b.branch, gap) {
-                (Branch::Loading, Some(g)) if b.stable => Some(BranchGap {
-                    relative: g.relative,
-                    error: g.error,
-                    lower: g.lower,
-                    upper: g.upper,
-                    contact_load: g.contact_load,
-                }),
-                (Branch::Unloading, Some(g)) => g.unloading,
-                _ => None,
-            };
-            RunBranch {
-                state: b.clone(),
-                mean_gap_rel: g.map(|g| g.relative),
-                mean_gap_reversible_rel: g.map(|g| g.upper),
-                mean_gap_lower_rel: g.map(|g| g.lower),
-                mean_gap_upper_rel: g.map(|g| g.upper),
-                mean_gap_error: g.map(|g| g.error),
-                contact_load: g.map(|g| g.contact_load),
-            }
-        })
-        .collect()
-}
-
-/// What `mean_gap_rel` is, in one line.
-pub fn mean_gap_about(adhesive: bool) -> String {
-    if adhesive {
-        "mean_gap_rel: the adhesionless gap at the load the branch's contact carries (p* + the pull of its edges) \
-         (docs/physics.md 5.1), bracketed by the adhesionless gap at the load with the same a_r \
-         (lower) and at the same load (upper)"
-            .into()
-    } else {
-        "mean_gap_rel: the energy route of Persson theory, integral of dU/p from p* to full contact [S-12]".into()
-    }
-}
-
-/// Evaluates one scene as `run` does.
-pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunOutput> {
-    let opts = engine::Options {
+/// The engine's options of `run` from its accuracy flags.
+pub fn run_options(args: &RunArgs) -> engine::Options {
+    engine::Options {
         accuracy: Accuracy {
             rtol: args.rtol,
             ..Accuracy::default()
@@ -416,163 +248,13 @@ pub fn evaluate(preset_name: &str, scene: &Scene, args: &RunArgs) -> Result<RunO
             ..asperity::theory::adhesion::AdhesionAccuracy::default()
         },
         ..engine::Options::default()
-    };
-    opts.validate()?;
-    let t0 = std::time::Instant::now();
-    let ev = engine::evaluate(scene, &opts)?;
-    let t_solve = t0.elapsed().as_secs_f64();
-    // inside a hysteresis window: its edges (a few more solves, only then)
-    let window = match ev.adhesive.as_deref() {
-        Some(sol) if ev.branches.iter().filter(|b| b.stable).count() >= 2 => {
-            asperity::theory::hysteresis::window_around_from(scene, sol, &opts.adhesion, None)?
-        }
-        _ => None,
-    };
-    let t_window = t0.elapsed().as_secs_f64();
-    // the gap of each branch from its own state at this load and the adhesionless table of
-    // the scene: report why it is missing rather than failing the whole run
-    let (gap, mean_gap_note) = match asperity::theory::gap::mean_gap_of(scene, &ev, &opts) {
-        Ok(g) => (Some(g), None),
-        Err(e) => (None, Some(format!("mean gap unavailable: {e}"))),
-    };
-    let elapsed_s = t0.elapsed().as_secs_f64();
-    Ok(RunOutput {
-        preset: preset_name.to_string(),
-        stats: ev.stats.clone(),
-        width: ev.width,
-        // a solver that misses its tolerance returns an error, never a result
-        converged: true,
-        error_estimate: ev.error_estimate,
-        mean_gap: gap.map(|g| g.metres),
-        mean_gap_rel: gap.map(|g| g.relative),
-        mean_gap_lower_rel: gap.map(|g| g.lower),
-        mean_gap_upper_rel: gap.map(|g| g.upper),
-        mean_gap_error: gap.map(|g| g.error),
-        contact_load: gap.map(|g| g.contact_load),
-        mean_gap_about: mean_gap_about(scene.gamma > 0.0),
-        mean_gap_note,
-        elastic_energy: ev.elastic_energy,
-        sigma_a: ev.sigma_a,
-        tensile_area: ev.tensile_area,
-        detached_fraction: ev.detached_fraction,
-        iterations: ev.iterations,
-        residual: ev.residual,
-        branch: ev.branch.to_string(),
-        unloading_a_r: ev.unloading_a_r,
-        branches: run_branches(&ev, gap.as_ref()),
-        jump_in_pressure: window.and_then(|w| w.jump_in_pressure),
-        pull_off_pressure: window.and_then(|w| w.pull_off_pressure),
-        gamma_q: ev.gamma_q.clone(),
-        sigma_a_q: ev.sigma_a_q.clone(),
-        elapsed_s,
-        elapsed_solve_s: t_solve,
-        elapsed_window_s: t_window - t_solve,
-        elapsed_gap_s: elapsed_s - t_window,
-        scene: scene.summary(),
-        resolution: ResolutionTable {
-            q: ev.resolution.iter().map(|r| r.q).collect(),
-            a_r: ev.resolution.iter().map(|r| r.a_r).collect(),
-        },
-    })
+    }
 }
 
 /// Writes a line to stdout; a closed pipe (`asperity run | head`) is not an error.
 pub fn emit(text: &str) {
     let mut out = std::io::stdout().lock();
     let _ = writeln!(out, "{text}");
-}
-
-fn run_table(out: &RunOutput) -> String {
-    let s = &out.scene;
-    let mut t = String::new();
-    let mut line = |k: &str, v: String| t.push_str(&format!("{k:<28}{v}\n"));
-    line("preset", out.preset.clone());
-    line(
-        "model",
-        format!("{} (c1 = {}, c2 = {}, alpha = {})", s.model, s.c1, s.c2, s.alpha),
-    );
-    line("p*", format!("{:.6e}  ({:.4e} Pa)", s.pressure, s.pressure_pa));
-    line(
-        "t*q_r",
-        match s.thickness_qr {
-            Some(t) => format!("{t}"),
-            None => "inf (semi-infinite)".into(),
-        },
-    );
-    line("gamma_s", format!("{} J/m^2 (gamma_glo = {:.4})", s.gamma, s.gamma_glo));
-    line("a_r", format!("{:.8}", out.stats.a_r));
-    line("mean_contact_stress*", format!("{:.6}", out.stats.mean_contact_stress));
-    line(
-        "contact_stress_variance*",
-        format!("{:.6}", out.stats.contact_stress_variance),
-    );
-    line("width*", format!("{:.6}", out.width));
-    line("error_estimate (a_r)", format!("{:.2e}", out.error_estimate));
-    if let (Some(g), Some(r)) = (out.mean_gap, out.mean_gap_rel) {
-        let err = out.mean_gap_error.map_or(String::new(), |e| format!(" +- {e:.1e}"));
-        line("mean_gap", format!("{g:.6e} m (u/h_rms = {r:.6}{err})"));
-        if let (Some(lo), Some(hi), true) = (
-            out.mean_gap_lower_rel,
-            out.mean_gap_upper_rel,
-            out.branch != "adhesionless",
-        ) {
-            line(
-                "mean_gap bracket",
-                format!(
-                    "{lo:.6} <= u/h_rms <= {hi:.6} (same a_r / same load without adhesion); contact load p_c* = {:.4e}",
-                    out.contact_load.unwrap_or(f64::NAN)
-                ),
-            );
-        }
-        line("mean_gap is", out.mean_gap_about.clone());
-    } else if let Some(n) = &out.mean_gap_note {
-        line("mean_gap", n.clone());
-    }
-    if out.branch != "adhesionless" {
-        line("sigma_a*", format!("{:.6} (wall at sigma* = -sigma_a*)", out.sigma_a));
-        line("tensile_area", format!("{:.6e}", out.tensile_area));
-        line("branch", out.branch.clone());
-        if let Some(u) = out.unloading_a_r {
-            line("unloading_a_r", format!("{u:.8} (a second, unloading branch)"));
-        }
-        if out.branches.len() > 1 {
-            let list: Vec<String> = out
-                .branches
-                .iter()
-                .map(|b| {
-                    let gap = b.mean_gap_rel.map_or(String::new(), |g| format!(" u/h_rms = {g:.4}"));
-                    format!(
-                        "{} a_r = {:.6} sigma_a* = {:.4}{gap}",
-                        b.state.branch, b.state.a_r, b.state.sigma_a
-                    )
-                })
-                .collect();
-            line("branches", list.join("; "));
-            let edge = |p: Option<f64>| p.map_or("beyond the allowed range".to_string(), |p| format!("{p:.4e}"));
-            line(
-                "hysteresis",
-                format!(
-                    "pull-off at p* = {}, jump-in at p* = {}: the loading history decides the branch",
-                    edge(out.pull_off_pressure),
-                    edge(out.jump_in_pressure)
-                ),
-            );
-        }
-        line(
-            "iterations",
-            format!("{} marches (residual {:.1e})", out.iterations, out.residual),
-        );
-    }
-    line("elastic_energy", format!("{:.6e} J/m^2", out.elastic_energy));
-    line("converged", format!("{}", out.converged));
-    line(
-        "elapsed_s",
-        format!(
-            "{:.3e} (solve {:.3e}, window {:.3e}, gap {:.3e})",
-            out.elapsed_s, out.elapsed_solve_s, out.elapsed_window_s, out.elapsed_gap_s
-        ),
-    );
-    t.trim_end().to_string()
 }
 
 /// Runs the CLI; returns the process exit code.
@@ -619,10 +301,10 @@ pub fn main() -> i32 {
         Some(Command::Compare(args)) => gauge::compare(&args),
         Some(Command::Psd(args)) => surface::run_psd(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
-            let out = evaluate(&preset.name, &scene, &args)?;
+            let out = asperity::report::point(&scene, &run_options(&args))?;
             match args.format {
-                Format::Json => emit(&serde_json::to_string_pretty(&out).expect("serialisable")),
-                Format::Table => emit(&run_table(&out)),
+                Format::Json => emit(&crate::report::point_json(&preset.name, &out)),
+                Format::Table => emit(&crate::report::point_table(&preset.name, &out)),
             }
             Ok(())
         }),

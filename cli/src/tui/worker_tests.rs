@@ -191,8 +191,23 @@ fn adhesive_error_is_reported_not_thrown() {
     let mut req = request(1, 0.01);
     req.scene.gamma = 0.05;
     let r = serve(&req, &mut c, false, false);
-    // until the adhesive solver lands the engine refuses; either way the UI gets a reply
+    // the UI gets every reply and the end; each point is a finite adhesive result with its
+    // wall or the engine's error as a value (the worker never panics or drops it)
     assert_eq!(r.last(), Some(&Reply::Done { gen: 1 }));
+    let points: Vec<&Result<PointData>> = r
+        .iter()
+        .filter_map(|x| match x {
+            Reply::Point { result, .. } => Some(result),
+            _ => None,
+        })
+        .collect();
+    assert!(!points.is_empty(), "{r:?}");
+    for p in points {
+        match p {
+            Ok(pd) => assert!(pd.a_r.is_finite() && pd.a_r > 0.0 && pd.wall.is_some(), "{pd:?}"),
+            Err(e) => assert!(matches!(e, asperity::Error::NotConverged { .. }), "{e}"),
+        }
+    }
 }
 
 #[test]

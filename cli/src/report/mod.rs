@@ -1,0 +1,112 @@
+//! How the binary writes the library's reports ([`asperity::report`]): `run`'s JSON object
+//! and its table. The JSON keys are the report's field names (a public interface, pinned by
+//! `cli/tests/public_keys.rs`), with the preset's name first.
+
+use asperity::report::PointReport;
+use asperity::theory::adhesion::Branch;
+use serde::Serialize;
+
+/// `run --format json`: the preset's name, then every field of the report.
+pub fn point_json(preset: &str, out: &PointReport) -> String {
+    #[derive(Serialize)]
+    struct Run<'a> {
+        preset: &'a str,
+        #[serde(flatten)]
+        report: &'a PointReport,
+    }
+    serde_json::to_string_pretty(&Run { preset, report: out }).expect("serialisable")
+}
+
+/// `run --format table`: one line per quantity, names padded to a column.
+pub fn point_table(preset: &str, out: &PointReport) -> String {
+    let s = &out.scene;
+    let mut t = String::new();
+    let mut line = |k: &str, v: String| t.push_str(&format!("{k:<28}{v}\n"));
+    line("preset", preset.to_string());
+    line(
+        "model",
+        format!("{} (c1 = {}, c2 = {}, alpha = {})", s.model, s.c1, s.c2, s.alpha),
+    );
+    line("p*", format!("{:.6e}  ({:.4e} Pa)", s.pressure, s.pressure_pa));
+    line(
+        "t*q_r",
+        match s.thickness_qr {
+            Some(t) => format!("{t}"),
+            None => "inf (semi-infinite)".into(),
+        },
+    );
+    line("gamma_s", format!("{} J/m^2 (gamma_glo = {:.4})", s.gamma, s.gamma_glo));
+    line("a_r", format!("{:.8}", out.stats.a_r));
+    line("mean_contact_stress*", format!("{:.6}", out.stats.mean_contact_stress));
+    line(
+        "contact_stress_variance*",
+        format!("{:.6}", out.stats.contact_stress_variance),
+    );
+    line("width*", format!("{:.6}", out.width));
+    line("error_estimate (a_r)", format!("{:.2e}", out.error_estimate));
+    if let (Some(g), Some(r)) = (out.mean_gap, out.mean_gap_rel) {
+        let err = out.mean_gap_error.map_or(String::new(), |e| format!(" +- {e:.1e}"));
+        line("mean_gap", format!("{g:.6e} m (u/h_rms = {r:.6}{err})"));
+        if let (Some(lo), Some(hi), true) = (
+            out.mean_gap_lower_rel,
+            out.mean_gap_upper_rel,
+            out.branch != Branch::Adhesionless,
+        ) {
+            line(
+                "mean_gap bracket",
+                format!(
+                    "{lo:.6} <= u/h_rms <= {hi:.6} (same a_r / same load without adhesion); contact load p_c* = {:.4e}",
+                    out.contact_load.unwrap_or(f64::NAN)
+                ),
+            );
+        }
+        line("mean_gap is", out.mean_gap_about.clone());
+    } else if let Some(n) = &out.mean_gap_note {
+        line("mean_gap", n.clone());
+    }
+    if out.branch != Branch::Adhesionless {
+        line("sigma_a*", format!("{:.6} (wall at sigma* = -sigma_a*)", out.sigma_a));
+        line("tensile_area", format!("{:.6e}", out.tensile_area));
+        line("branch", out.branch.to_string());
+        if let Some(u) = out.unloading_a_r {
+            line("unloading_a_r", format!("{u:.8} (a second, unloading branch)"));
+        }
+        if out.branches.len() > 1 {
+            let list: Vec<String> = out
+                .branches
+                .iter()
+                .map(|b| {
+                    let gap = b.mean_gap_rel.map_or(String::new(), |g| format!(" u/h_rms = {g:.4}"));
+                    format!(
+                        "{} a_r = {:.6} sigma_a* = {:.4}{gap}",
+                        b.state.branch, b.state.a_r, b.state.sigma_a
+                    )
+                })
+                .collect();
+            line("branches", list.join("; "));
+            let edge = |p: Option<f64>| p.map_or("beyond the allowed range".to_string(), |p| format!("{p:.4e}"));
+            line(
+                "hysteresis",
+                format!(
+                    "pull-off at p* = {}, jump-in at p* = {}: the loading history decides the branch",
+                    edge(out.pull_off_pressure),
+                    edge(out.jump_in_pressure)
+                ),
+            );
+        }
+        line(
+            "iterations",
+            format!("{} marches (residual {:.1e})", out.iterations, out.residual),
+        );
+    }
+    line("elastic_energy", format!("{:.6e} J/m^2", out.elastic_energy));
+    line("converged", format!("{}", out.converged));
+    line(
+        "elapsed_s",
+        format!(
+            "{:.3e} (solve {:.3e}, window {:.3e}, gap {:.3e})",
+            out.elapsed_s, out.elapsed_solve_s, out.elapsed_window_s, out.elapsed_gap_s
+        ),
+    );
+    t.trim_end().to_string()
+}

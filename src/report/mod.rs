@@ -1,0 +1,13 @@
+//! Reports: what a front end shows of a computation, as plain typed data.
+//!
+//! A report gathers the results of several library calls (the evaluation of a scene, its
+//! hysteresis window, the mean gap of each branch, the time each took) into one value that a
+//! front end renders in its own words: the `asperity` binary writes it as JSON or a table, a
+//! script or another program reads the fields. Values that may be absent are `Option`s (never
+//! NaN), and an absent value comes with the reason where there is one.
+//!
+//! - [`point`]: one scene at one load, everything `asperity run` prints.
+
+pub mod point;
+
+pub use point::{point, BranchReport, PointReport, ResolutionTable};
