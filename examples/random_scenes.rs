@@ -1,5 +1,6 @@
-//! CPU time per adhesive `run` computation (the solve with its error estimate and, inside a
-//! hysteresis window, the window's edges) on seeded random scenes: systems I and II, models
+//! CPU time per adhesive `run` computation (the solve with its error estimate, inside a
+//! hysteresis window the window's edges, and the mean gap of each branch) on seeded random
+//! scenes: systems I and II, models
 //! 1–4, t·q_r log-uniform in 1e-2…1e3 or ∞, γ_s log-uniform in 1e-3…1.5 J/m², p*
 //! log-uniform in 1e-9…1. Prints every call and the slowest ten (BENCHMARKS.md):
 //! `cargo run --release --example random_scenes -- [N] [SEED]`; with `hard` instead of N, the
@@ -8,7 +9,7 @@
 
 use asperity::input::model::Model;
 use asperity::input::preset::Preset;
-use asperity::theory::{engine, hysteresis};
+use asperity::theory::{engine, gap, hysteresis};
 
 /// CPU seconds of this process (all threads; the calls run one at a time).
 fn cpu() -> f64 {
@@ -72,11 +73,20 @@ fn main() {
                 }
                 _ => None,
             };
-            Ok((ev.stats.a_r, ev.error_estimate, w.is_some()))
+            let g = gap::mean_gap_of(&scene, &ev, &opts).ok();
+            Ok((ev.stats.a_r, ev.error_estimate, w.is_some(), g))
         });
         let spent = cpu() - c0;
         let what = match &outcome {
-            Ok((a, e, w)) => format!("a_r {a:.4e} +- {e:.1e}{}", if *w { " (window)" } else { "" }),
+            Ok((a, e, w, g)) => {
+                let (u, lo, hi, ue) = g.map_or((f64::NAN, f64::NAN, f64::NAN, f64::NAN), |g| {
+                    (g.relative, g.lower, g.upper, g.error)
+                });
+                format!(
+                    "a_r {a:.6e} +- {e:.1e} gap {u:.6e} +- {ue:.1e} [{lo:.6e}, {hi:.6e}]{}",
+                    if *w { " (window)" } else { "" }
+                )
+            }
             Err(e) => format!("refused: {e}"),
         };
         let line = format!("system {system} model {model} t*q_r {t:.4e} gamma {gamma:.4e} p* {p:.4e}: {what}");
@@ -88,6 +98,15 @@ fn main() {
     for (spent, line) in rows.iter().take(10) {
         println!("{spent:6.2} s  {line}");
     }
+    let mut cpus: Vec<f64> = rows.iter().map(|r| r.0).collect();
+    cpus.sort_by(f64::total_cmp);
+    let at = |f: f64| cpus[((f * (n as f64 - 1.0)).round() as usize).min(n - 1)];
+    println!(
+        "CPU median {:.3} s, p95 {:.3} s, max {:.3} s",
+        at(0.5),
+        at(0.95),
+        at(1.0)
+    );
     let refused = rows.iter().filter(|r| r.1.contains("refused")).count();
     println!(
         "{n} scenes, {refused} refused, total {:.1} s CPU",

@@ -302,3 +302,13 @@ pub const GFMD_REFERENCE_ROWS_REL: f64 = 1e-12;
 /// the adaptive ODE's steps, and Levenberg–Marquardt stops at a relative step of 1.5e-8 of the
 /// scaled parameters; observed 1e-7 on w0 (1e-5 of its standard error), hence 1e-5.
 pub const GFMD_REFERENCE_FIT_REL: f64 = 1e-5;
+
+/// A discrete spectrum coarse-grained into shells of ln q (`surface::shells`): h_rms², ḡ² and
+/// the mean-square curvature, kept exactly by the two-point Gauss rule per shell, against the
+/// sums over every mode group (relative; measured at round-off, 1e-15).
+pub const SHELL_MOMENT_REL: f64 = 1e-6;
+
+/// The theory (a_r, σ̄_c*, ū of each branch) on a map's spectrum coarse-grained into shells of
+/// `surface::shells::THEORY_SHELL_LN` against the same on every mode group (relative;
+/// measured ≤ 3.4e-5 for a_r and σ̄_c*, ≤ 4.4e-4 for ū on system II with adhesion).
+pub const SHELL_THEORY_REL: f64 = 1e-3;

@@ -1,5 +1,5 @@
 //! The public interface: the JSON keys of `run`, `sweep`, `gfmd` and the bench report's rungs,
-//! and the CSV columns of `sweep`, as first published. Scripts
+//! and the CSV columns of `sweep` and `gfmd`, as first published. Scripts
 //! depend on them: a change may add keys, never remove or rename one.
 
 use std::collections::BTreeSet;
@@ -419,6 +419,46 @@ fn gfmd_study_and_sweep_keys() {
         ],
         "gfmd sweep row",
     );
+}
+
+/// `gfmd --format csv`: the same header for a single run and a sweep; sweep's column names
+/// where GFMD measures the same quantity, then GFMD's own and the theory's on the same map.
+#[test]
+fn gfmd_csv_columns() {
+    const COLUMNS: &str = "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
+                           contact_stress_variance,iterations,residual,theory_a_r,theory_mean_gap_rel,\
+                           theory_mean_contact_stress";
+    let columns: Vec<&str> = COLUMNS.split(',').map(str::trim).collect();
+    for args in [
+        &["gfmd", "--grid", "32", "--gamma", "0", "--format", "csv"][..],
+        &[
+            "gfmd", "--grid", "32", "--gamma", "0", "--from", "0.01", "--to", "0.1", "--points", "2", "--format", "csv",
+        ][..],
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8_lossy(&out.stdout).to_string();
+        let mut lines = text.lines();
+        let header: Vec<&str> = lines.next().unwrap_or("").split(',').collect();
+        assert_eq!(header, columns, "{args:?}");
+        let rows: Vec<&str> = lines.collect();
+        assert!(!rows.is_empty(), "{args:?}: no rows");
+        for row in rows {
+            assert_eq!(row.split(',').count(), columns.len(), "{args:?}: {row}");
+        }
+    }
+    assert_eq!(asperity_cli::cli::gfmd::GFMD_CSV_HEADER, columns.join(","));
+    let sweep: Vec<&str> = asperity_cli::cli::sweep::CSV_HEADER.split(',').collect();
+    for c in &columns[..8] {
+        assert!(sweep.contains(c), "{c} is not a column of sweep");
+    }
 }
 
 #[test]

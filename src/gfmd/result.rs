@@ -7,6 +7,7 @@ use crate::contact::ContactStats;
 use crate::error::{Error, Field, Result};
 use crate::input::scene::Scene;
 use crate::surface::heightmap::{self, Surface};
+use crate::surface::shells::THEORY_SHELL_LN;
 use crate::surface::spectrum::Spectrum;
 use crate::theory::engine;
 use crate::theory::gap;
@@ -118,8 +119,14 @@ pub fn run(
     // theory on the same realisation
     let t_theory = Instant::now();
     let (theory, theory_error) = match prep.theory_scene(scene.pressure).and_then(|th| {
-        let ev = engine::evaluate(&th, &engine::Options::default())?;
-        let g = gap::mean_gap_of(&th, &ev, &engine::Options::default());
+        // the block shows a_r, the stresses and ū, not the adhesive error estimate: its
+        // three probe solves are skipped
+        let opts = engine::Options {
+            adhesion_error_estimate: false,
+            ..engine::Options::default()
+        };
+        let ev = engine::evaluate(&th, &opts)?;
+        let g = gap::mean_gap_of(&th, &ev, &opts);
         Ok((ev, g))
     }) {
         Ok((ev, g)) => (
@@ -207,11 +214,13 @@ impl Prepared {
         }
     }
 
-    /// The scene on the map's own discrete spectrum at p* = `pressure` (for the theory).
+    /// The scene on the map's own discrete spectrum at p* = `pressure` (for the theory),
+    /// its mode groups merged into shells of [`THEORY_SHELL_LN`] in ln q with the same
+    /// moments ([`crate::surface::shells`]).
     pub fn theory_scene(&self, pressure: f64) -> Result<Scene> {
         let d = self.surface.discrete_spectrum(self.q_r)?;
         Ok(Scene {
-            spectrum: Spectrum::Discrete(d),
+            spectrum: Spectrum::Discrete(d.coarse_grained(THEORY_SHELL_LN)),
             pressure,
             ..self.scene.clone()
         })

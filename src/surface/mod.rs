@@ -5,5 +5,6 @@ pub mod heightmap;
 pub mod psd;
 pub mod ranges;
 pub mod readers;
+pub mod shells;
 pub mod spectrum;
 pub mod tabulated;

@@ -4,11 +4,11 @@
 //! ```text
 //! asperity gfmd --preset NAME|PATH [--grid N] [--seed S] [--surface FILE --size L_m]
 //!               [--pressure P] [--thickness T] [--gamma G] [--tolerance TOL]
-//!               [--format json|table] [--save-surface FILE] [--raw-adhesion]
+//!               [--format json|table|csv] [--save-surface FILE] [--raw-adhesion]
 //!               [--extrapolate [--ladder 4,8,16]] [--seeds K] [--from P --to P --points N]
 //! ```
 
-use super::{emit, Format, SceneArgs};
+use super::{emit, SceneArgs};
 use asperity::error::{Error, Field, Result};
 use asperity::gfmd::ladder::{Ensemble, Extrapolated, Ladder, MeanSe};
 use asperity::gfmd::reduction::Reduction;
@@ -28,6 +28,23 @@ pub const DEFAULT_GRID: GridSpec = GridSpec {
     bandwidth: 32.0,
     points_per_short_wavelength: 8.0,
 };
+
+/// Output formats of `gfmd`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum GfmdFormat {
+    /// One JSON object.
+    Json,
+    /// Human-readable table (a load sweep: CSV).
+    Table,
+    /// CSV with [`GFMD_CSV_HEADER`]: one row per load (a single run: one row).
+    Csv,
+}
+
+/// The CSV columns of `gfmd --format csv` (single runs and sweeps): the columns of `sweep`
+/// that GFMD measures, under the same names, then GFMD's own (`iterations`, `residual`), then
+/// the theory on the same map's spectrum (`theory_…`).
+pub const GFMD_CSV_HEADER: &str = "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
+contact_stress_variance,iterations,residual,theory_a_r,theory_mean_gap_rel,theory_mean_contact_stress";
 
 /// Arguments of `gfmd`.
 #[derive(Debug, Clone, Args)]
@@ -57,8 +74,8 @@ pub struct GfmdArgs {
     #[arg(long, default_value_t = GfmdOptions::default().pr_bins, allow_hyphen_values = true, value_parser = super::count(Field::Bins))]
     pub bins: usize,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Json, allow_hyphen_values = true)]
-    pub format: Format,
+    #[arg(long, value_enum, default_value_t = GfmdFormat::Json, allow_hyphen_values = true)]
+    pub format: GfmdFormat,
     /// Minimiser: auto (pk up to 2048^2 nodes, fire above), pk (Polonsky-Keer CG for the hard
     /// wall, FIRE with adhesion) or fire (FIRE alone).
     #[arg(long, value_enum, default_value_t = MethodArg::Auto, allow_hyphen_values = true)]
@@ -238,8 +255,8 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
         }
         let sw = result?;
         match args.format {
-            Format::Json => emit(&serde_json::to_string_pretty(&sw).expect("serialisable")),
-            Format::Table => emit(&sweep_csv(&sw)),
+            GfmdFormat::Json => emit(&serde_json::to_string_pretty(&sw).expect("serialisable")),
+            GfmdFormat::Table | GfmdFormat::Csv => emit(&sweep_csv(&sw)),
         }
         return Ok(());
     }
@@ -287,11 +304,15 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
     if let (Some(path), Some(s)) = (&args.save_surface, &out.surface) {
         s.save(path)?;
     }
+    if args.format == GfmdFormat::Csv {
+        emit(&single_csv(&out));
+        return Ok(());
+    }
     let mut text = match args.format {
-        Format::Json => String::new(),
-        Format::Table => table(&out),
+        GfmdFormat::Table => table(&out),
+        GfmdFormat::Json | GfmdFormat::Csv => String::new(),
     };
-    if args.format == Format::Table {
+    if args.format == GfmdFormat::Table {
         if let Some(l) = &extrapolation {
             text.push_str(&ladder_table(l));
         }
@@ -315,34 +336,71 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
 /// A GFMD sweep as CSV: the theory sweep's columns, GFMD's extras, then the theory's a_r, ū/h_rms
 /// and σ̄_c* on the same map.
 pub fn sweep_csv(sw: &GfmdSweep) -> String {
-    let mut out = String::from(
-        "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
-         contact_stress_variance,iterations,residual,theory_a_r,theory_mean_gap_rel,theory_mean_contact_stress",
-    );
+    let mut out = String::from(GFMD_CSV_HEADER);
+    for (k, r) in sw.rows.iter().enumerate() {
+        let th = sw.theory.as_ref().and_then(|t| t.rows.get(k));
+        out.push('\n');
+        out.push_str(&csv_row(
+            [
+                r.p,
+                r.a_r,
+                r.mean_gap_rel,
+                r.mean_gap,
+                r.mean_contact_stress,
+                r.elastic_energy,
+            ],
+            r.converged,
+            (r.contact_stress_variance, r.iterations, r.residual),
+            [
+                th.map(|t| t.a_r),
+                th.map(|t| t.mean_gap_rel),
+                th.map(|t| t.mean_contact_stress),
+            ],
+        ));
+    }
+    out
+}
+
+/// A single GFMD run as CSV: [`GFMD_CSV_HEADER`] and one row. GFMD's elastic energy is
+/// not measured by a single run (a sweep's rows carry it): that cell is empty.
+pub fn single_csv(o: &GfmdResult) -> String {
+    let th = o.theory.as_ref();
+    format!(
+        "{GFMD_CSV_HEADER}\n{}",
+        csv_row(
+            [
+                o.pressure,
+                o.stats.a_r,
+                o.mean_gap_rel,
+                o.mean_gap,
+                o.stats.mean_contact_stress,
+                f64::NAN,
+            ],
+            o.converged,
+            (o.stats.contact_stress_variance, o.iterations, o.residual),
+            [
+                th.map(|t| t.stats.a_r),
+                th.and_then(|t| t.mean_gap_rel),
+                th.map(|t| t.stats.mean_contact_stress),
+            ],
+        )
+    )
+}
+
+/// One CSV row of [`GFMD_CSV_HEADER`]; a value that is not available (or not finite) is an
+/// empty cell.
+fn csv_row(first: [f64; 6], converged: bool, solver: (f64, usize, f64), theory: [Option<f64>; 3]) -> String {
     let f = |x: Option<f64>| match x {
         Some(x) if x.is_finite() => format!("{x:e}"),
         _ => String::new(),
     };
-    for (k, r) in sw.rows.iter().enumerate() {
-        let th = sw.theory.as_ref().and_then(|t| t.rows.get(k));
-        out.push_str(&format!(
-            "\n{:e},{:e},{:e},{:e},{:e},{:e},{},{:e},{},{:e},{},{},{}",
-            r.p,
-            r.a_r,
-            r.mean_gap_rel,
-            r.mean_gap,
-            r.mean_contact_stress,
-            r.elastic_energy,
-            r.converged,
-            r.contact_stress_variance,
-            r.iterations,
-            r.residual,
-            f(th.map(|t| t.a_r)),
-            f(th.map(|t| t.mean_gap_rel)),
-            f(th.map(|t| t.mean_contact_stress)),
-        ));
-    }
-    out
+    let mut cells: Vec<String> = first.iter().map(|&x| f(Some(x))).collect();
+    cells.push(converged.to_string());
+    cells.push(f(Some(solver.0)));
+    cells.push(solver.1.to_string());
+    cells.push(f(Some(solver.2)));
+    cells.extend(theory.iter().map(|&x| f(x)));
+    cells.join(",")
 }
 
 fn pm(x: &Extrapolated) -> String {
