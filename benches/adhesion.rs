@@ -22,7 +22,7 @@ fn ladder(c: &mut Criterion) {
         ("system-2 model 4", "system-2", 4u8),
     ] {
         let mut scene = Preset::resolve(preset).unwrap().scene().unwrap();
-        scene.model = Model::named(model).unwrap();
+        scene.set_model(Model::named(model).unwrap()).unwrap();
         let acc = |s: f64, p: f64| AdhesionAccuracy {
             steps_per_ln_q: s,
             points_per_width: p,
@@ -57,11 +57,19 @@ fn sweeps(c: &mut Criterion) {
     let base = Preset::resolve("system-1").unwrap().scene().unwrap();
     for (name, gamma, opts) in [
         ("system-1 adhesionless", 0.0, Options::default()),
-        ("system-1 adhesive [default]", base.gamma, Options::default()),
-        ("system-1 adhesive [chart]", base.gamma, Options::chart()),
+        (
+            "system-1 adhesive [default]",
+            base.surface_energy_j_m2(),
+            Options::default(),
+        ),
+        (
+            "system-1 adhesive [chart]",
+            base.surface_energy_j_m2(),
+            Options::chart(),
+        ),
     ] {
         let mut scene = base.clone();
-        scene.gamma = gamma;
+        scene.set_surface_energy_j_m2(gamma).unwrap();
         let spec = SweepSpec {
             from: 1e-3,
             to: 1.0,

@@ -15,9 +15,9 @@ fn bench(c: &mut Criterion) {
         ("system-2 model 4 p*=0.005 t*q_r=0.1", "system-2", 4u8, 0.1),
     ] {
         let mut scene = Preset::resolve(preset).unwrap().scene().unwrap();
-        scene.gamma = 0.0;
-        scene.model = Model::named(model).unwrap();
-        scene.thickness_qr = t;
+        scene.set_surface_energy_j_m2(0.0).unwrap();
+        scene.set_model(Model::named(model).unwrap()).unwrap();
+        scene.set_thickness_qr(t).unwrap();
         for (label, rtol) in [
             ("default", Accuracy::default().rtol),
             ("rtol=1e-6", 1e-6),

@@ -34,7 +34,11 @@ fn main() {
     let mut state: u64 = args.get(2).and_then(|a| a.parse().ok()).unwrap_or(28);
     let mut scenes = Vec::new();
     if hard {
-        let g = Preset::resolve("system-2").unwrap().scene().unwrap().gamma;
+        let g = Preset::resolve("system-2")
+            .unwrap()
+            .scene()
+            .unwrap()
+            .surface_energy_j_m2();
         for model in [3u8, 4] {
             for t in [0.08, 0.1, 0.12, 0.15, 0.2] {
                 for p in [1e-6, 1e-5, 1e-4] {
@@ -61,10 +65,10 @@ fn main() {
     let mut rows = Vec::new();
     for (i, &(system, model, t, gamma, p)) in scenes.iter().enumerate() {
         let mut scene = Preset::resolve(&format!("system-{system}")).unwrap().scene().unwrap();
-        scene.model = Model::named(model).unwrap();
-        scene.thickness_qr = t;
-        scene.gamma = gamma;
-        scene.pressure = p;
+        scene.set_model(Model::named(model).unwrap()).unwrap();
+        scene.set_thickness_qr(t).unwrap();
+        scene.set_surface_energy_j_m2(gamma).unwrap();
+        scene.set_pressure(p).unwrap();
         let c0 = cpu();
         let outcome = engine::evaluate(&scene, &opts).and_then(|ev| {
             let w = match ev.adhesive.as_deref() {

@@ -19,7 +19,8 @@
 //!
 //! ## Layout
 //!
-//! - [`input`]: the validated [`input::scene::Scene`], models [S-17], presets.
+//! - [`input`]: the validated [`input::scene::Scene`] (built once, changed by validating
+//!   setters or [`input::overrides::Overrides`]), models [S-17], presets.
 //! - [`surface`]: the height spectrum C(q) and its moments; random height maps.
 //! - [`elastic`]: the slab factor f(qt) [S-4].
 //! - [`numerics`]: FFTs, the adaptive ODE integrator.
@@ -27,6 +28,8 @@
 //!   theory, adhesion [S-5..S-9, S-14], energy and mean gap [S-11, S-12], sweeps, and the
 //!   [`theory::engine`] that evaluates one scene.
 //! - [`gfmd`]: the brute-force reference solver.
+//! - [`report`]: what a front end shows of one scene ([`report::point`]: branches, window,
+//!   per-branch gap with its bracket, error bars, timings).
 //! - [`fit`]: gauging model coefficients on reference data (weighted least squares).
 //! - [`contact`]: [`contact::ContactStats`], the statistics every result carries.
 //! - [`error`]: typed errors ([`Error`], [`Field`]); [`tolerances`]: every numerical tolerance.
@@ -39,9 +42,12 @@
 //!
 //! // System I of [S] (the contact-mechanics challenge), without adhesion, model 3, p* = 0.01.
 //! let preset = Preset::resolve("system-1").unwrap();
-//! let mut scene = preset.scene().unwrap();
-//! scene.gamma = 0.0;
-//! scene.model = asperity::input::model::Model::named(3).unwrap();
+//! let scene = preset
+//!     .scene()
+//!     .unwrap()
+//!     .without_adhesion()
+//!     .with_model(asperity::input::model::Model::named(3).unwrap())
+//!     .unwrap();
 //! let eval = engine::evaluate(&scene, &Options::default()).unwrap();
 //! // Table 1 of [S]: a_r = p*/σ̄_c* = 0.01/0.4670 = 0.0214.
 //! assert!((eval.stats.a_r - 0.0214).abs() < 2e-4);

@@ -2,6 +2,8 @@
 //! order of convergence, the self-consistent solutions of systems I and II against [S]'s
 //! findings, grid convergence, ∫Pr = a_r, the CLI fields, and hard cases.
 
+mod common;
+
 use asperity::input::model::Model;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
@@ -14,9 +16,7 @@ use asperity::Error;
 use statrs::function::erf::erf;
 
 fn system(n: u8, model: u8) -> Scene {
-    let mut s = Preset::resolve(&format!("system-{n}")).unwrap().scene().unwrap();
-    s.model = Model::named(model).unwrap();
-    s
+    common::system(n, model)
 }
 
 /// a_r(q_s) of the propagator alone with a prescribed wall (`adhesion::propagate_with_wall`).
@@ -43,7 +43,7 @@ fn constant_wall_on_the_grid_is_exact() {
     let s = system(1, 1);
     for (p, sa) in [(0.01, 0.0), (0.01, 0.3), (0.2, 0.05), (1e-4, 1.0)] {
         let mut sc = s.clone();
-        sc.pressure = p;
+        sc.set_pressure(p).unwrap();
         let (_, a) = adhesion::propagate_with_wall(&sc, &AdhesionAccuracy::default(), |_| sa, true).unwrap();
         let exact = erf((p + sa) / (2.0 * 0.25f64).sqrt());
         let got = *a.last().unwrap();
@@ -61,7 +61,7 @@ fn zero_wall_reproduces_the_adhesionless_ode() {
     // variance measure) against the adaptive Dormand–Prince ODE of the adhesionless engine
     for (model, t) in [(2, f64::INFINITY), (3, f64::INFINITY), (4, 0.5), (3, 2.0)] {
         let mut s = system(1, model);
-        s.thickness_qr = t;
+        s.set_thickness_qr(t).unwrap();
         let reference = persson::solve(&s, &Accuracy::default()).unwrap().a_r;
         let (_, a) = adhesion::propagate_with_wall(&s, &AdhesionAccuracy::default(), |_| 0.0, false).unwrap();
         let got = *a.last().unwrap();
@@ -81,7 +81,7 @@ fn moving_wall_converges_with_resolution() {
     // onset; at 6 steps per ln q (41 steps from q_L to q_s) those are half the rise and make
     // that rung better than the rate (8.2e-5 against 3.0e-5 at 2x: order 1.44)
     let s = system(1, 3);
-    let (lq, ls) = (s.spectrum.q_l().ln(), s.spectrum.q_s().ln());
+    let (lq, ls) = (s.spectrum().q_l().ln(), s.spectrum().q_s().ln());
     let wall = |q: f64| 0.6 * (q.ln() - lq) / (ls - lq);
     let run = |k: f64| {
         let acc = AdhesionAccuracy {
@@ -106,8 +106,8 @@ fn receding_wall_is_second_order_accurate() {
     // diffuses with the wall held, shifts the other half (Strang); the shift-then-hold step
     // before it was first order (1e-3 at 24 steps per ln q)
     let mut s = system(1, 1);
-    s.gamma = 0.0;
-    let (lq, ls) = (s.spectrum.q_l().ln(), s.spectrum.q_s().ln());
+    s = s.without_adhesion();
+    let (lq, ls) = (s.spectrum().q_l().ln(), s.spectrum().q_s().ln());
     let wall = |q: f64| 0.4 - 0.35 * (q.ln() - lq) / (ls - lq);
     let run = |steps: f64| {
         let acc = AdhesionAccuracy {
@@ -130,8 +130,8 @@ fn a_wall_starting_like_a_square_root_converges_spectrally() {
     // by e^{−2cy} with 2c·h up to 15 at 10 points per width, which the grid did not resolve
     // (a_r off by 2e-4, falling like h²); the grid is refined there
     let mut s = system(1, 1);
-    s.gamma = 0.0;
-    let (lq, ls) = (s.spectrum.q_l().ln(), s.spectrum.q_s().ln());
+    s = s.without_adhesion();
+    let (lq, ls) = (s.spectrum().q_l().ln(), s.spectrum().q_s().ln());
     let wall = |q: f64| {
         let t = (q.ln() - lq) / (ls - lq);
         0.7 * ((t - 0.8).max(0.0) / 0.2).sqrt()
@@ -159,7 +159,7 @@ fn system1_adhesion_adds_tens_of_percent() {
         let s = system(1, model);
         let ev = engine::evaluate(&s, &Options::default()).unwrap();
         let mut dry = s.clone();
-        dry.gamma = 0.0;
+        dry.set_surface_energy_j_m2(0.0).unwrap();
         let a0 = engine::evaluate(&dry, &Options::default()).unwrap().stats.a_r;
         let ratio = ev.stats.a_r / a0;
         assert!(
@@ -186,13 +186,13 @@ fn system2_adhesion_multiplies_contact_and_thin_slabs_jump_towards_full_contact(
     // towards full contact (t·q_r = 0.25: 0.183, 0.05: 0.859, 0.02: 0.998)
     let s = system(2, 4);
     let mut dry = s.clone();
-    dry.gamma = 0.0;
+    dry.set_surface_energy_j_m2(0.0).unwrap();
     let a0 = engine::evaluate(&dry, &quick()).unwrap().stats.a_r;
     assert!(a0 > 0.01 && a0 < 0.0115, "{a0}");
     let mut prev = 0.0;
     for t in [f64::INFINITY, 1.0, 0.5, 0.25, 0.05, 0.02] {
         let mut sc = s.clone();
-        sc.thickness_qr = t;
+        sc.set_thickness_qr(t).unwrap();
         let ev = engine::evaluate(&sc, &quick()).unwrap();
         assert!(ev.stats.a_r > prev, "t {t}: {} after {prev}", ev.stats.a_r);
         if t.is_infinite() {
@@ -235,7 +235,7 @@ fn default_accuracy_against_a_finer_solution() {
 #[test]
 fn pr_integrates_to_a_r_and_starts_at_the_wall() {
     let mut s = system(2, 4);
-    s.thickness_qr = 0.5;
+    s.set_thickness_qr(0.5).unwrap();
     let opts = Options {
         sigma_points: 4001,
         ..quick()
@@ -267,22 +267,23 @@ fn hard_cases_converge_or_say_why() {
     let glo = base.gamma_glo();
     for target in [0.01, 0.1, 1.0, 10.0] {
         let mut s = base.clone();
-        s.gamma = base.gamma * target / glo;
+        s.set_surface_energy_j_m2(base.surface_energy_j_m2() * target / glo)
+            .unwrap();
         cases.push(s);
     }
     for t in [0.01, 0.1, 1.0] {
         let mut s = system(2, 4);
-        s.thickness_qr = t;
+        s.set_thickness_qr(t).unwrap();
         cases.push(s);
     }
     for p in [1e-5, 1.0] {
         let mut s = base.clone();
-        s.pressure = p;
+        s.set_pressure(p).unwrap();
         cases.push(s);
     }
     let sa = SelfAffine::new(1e-4, 2e-5, 2e-9, 0.8, Normalisation::RmsGradient(1.0)).unwrap();
     let mut wide = base.clone();
-    wide.spectrum = Spectrum::SelfAffine(sa);
+    wide.set_spectrum(Spectrum::SelfAffine(sa)).unwrap();
     cases.push(wide);
     let mut converged = 0;
     for (i, s) in cases.iter().enumerate() {
@@ -319,9 +320,9 @@ fn tiny_loads_with_strong_adhesion_converge_and_refine() {
     // run at twice the resolution in both directions.
     for (t, frac, p) in [(0.1, 0.8, 1e-8), (0.15, 1.0, 1e-9), (0.2, 1.5, 1e-7)] {
         let mut s = system(2, 4);
-        s.thickness_qr = t;
-        s.gamma *= frac;
-        s.pressure = p;
+        s.set_thickness_qr(t).unwrap();
+        s.set_surface_energy_j_m2(s.surface_energy_j_m2() * frac).unwrap();
+        s.set_pressure(p).unwrap();
         let acc = AdhesionAccuracy::default();
         let sol = adhesion::solve(&s, &acc, None, None).unwrap();
         assert!(
@@ -354,13 +355,13 @@ fn every_branch_is_smooth_across_an_onset_threshold() {
     // unchecked, the unloading mean gap lost). Every branch meets the tolerance, and the
     // unloading a_r lies on the line through its neighbours.
     let mut s = system(2, 3);
-    s.thickness_qr = 0.1;
-    s.gamma *= 0.8;
+    s.set_thickness_qr(0.1).unwrap();
+    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * 0.8).unwrap();
     let acc = AdhesionAccuracy::default();
     let upper: Vec<f64> = [1.1e-7, 1.215e-7, 1.343e-7]
         .iter()
         .map(|&p| {
-            s.pressure = p;
+            s.set_pressure(p).unwrap();
             let sol = adhesion::solve(&s, &acc, None, None).unwrap();
             assert_eq!(sol.branches.len(), 3, "p* {p}: {:?}", sol.branches);
             for b in &sol.branches {
@@ -383,7 +384,7 @@ fn sweep_across_the_thin_slab_transition() {
     // system 2 at t·q_r = 0.15: contact jumps from ~1 % (adhesionless) to ~40 % at small load;
     // the loading branch is followed load by load with no NaN, a_r rising and ū falling
     let mut s = system(2, 4);
-    s.thickness_qr = 0.15;
+    s.set_thickness_qr(0.15).unwrap();
     let spec = asperity::theory::sweep::SweepSpec {
         from: 1e-4,
         to: 0.3,
@@ -415,7 +416,7 @@ fn the_shooting_root_is_a_fixed_point_of_the_prescribed_wall_march() {
     // system 1 (no jump): one branch; the march with the root's walls reproduces the root's
     // a_r(q) (the residual is that march against the root, computed by the solver)
     let mut s = system(1, 3);
-    s.pressure = 0.01;
+    s.set_pressure(0.01).unwrap();
     let sol = adhesion::solve(&s, &AdhesionAccuracy::default(), None, None).unwrap();
     assert_eq!(sol.branches.len(), 1, "{:?}", sol.branches);
     assert!(sol.branches[0].stable);
@@ -441,8 +442,8 @@ fn issue_grid() {
                         }
                     }
                     let mut s = system(sys, model);
-                    s.thickness_qr = t;
-                    s.pressure = p;
+                    s.set_thickness_qr(t).unwrap();
+                    s.set_pressure(p).unwrap();
                     let t0 = std::time::Instant::now();
                     let r = adhesion::solve(&s, &AdhesionAccuracy::default(), None, None);
                     let dt = t0.elapsed().as_secs_f64();
@@ -482,9 +483,9 @@ fn branch_map() {
             for frac in [0.2, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0, 1.5, 2.0] {
                 for p in [1e-6, 1e-4, 1e-2] {
                     let mut s = system(2, model);
-                    s.thickness_qr = t;
-                    s.pressure = p;
-                    s.gamma *= frac;
+                    s.set_thickness_qr(t).unwrap();
+                    s.set_pressure(p).unwrap();
+                    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * frac).unwrap();
                     let sol = adhesion::solve(&s, &AdhesionAccuracy::default(), None, None).unwrap();
                     if sol.branches.len() > 1 {
                         println!(
@@ -513,9 +514,9 @@ fn branch_census() {
             for frac in [0.4, 0.8, 1.0, 1.5] {
                 for p in [1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3] {
                     let mut s = system(2, model);
-                    s.thickness_qr = t;
-                    s.pressure = p;
-                    s.gamma *= frac;
+                    s.set_thickness_qr(t).unwrap();
+                    s.set_pressure(p).unwrap();
+                    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * frac).unwrap();
                     let t0 = std::time::Instant::now();
                     let r = adhesion::solve(&s, &AdhesionAccuracy::default(), None, None);
                     let ms = t0.elapsed().as_secs_f64() * 1e3;
@@ -550,9 +551,9 @@ fn hysteresis_window_has_three_branches_and_brackets_the_load() {
     // system 2, model 3, t·q_r = 0.1 at 0.8 γ_s: between pull-off and jump-in the loading branch
     // (small a_r), an unstable one and the unloading branch (a_r ≈ 0.42) coexist
     let mut s = system(2, 3);
-    s.thickness_qr = 0.1;
-    s.gamma *= 0.8;
-    s.pressure = 1e-5;
+    s.set_thickness_qr(0.1).unwrap();
+    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * 0.8).unwrap();
+    s.set_pressure(1e-5).unwrap();
     let acc = AdhesionAccuracy::default();
     let sol = adhesion::solve(&s, &acc, None, None).unwrap();
     let b = &sol.branches;
@@ -573,13 +574,13 @@ fn hysteresis_window_has_three_branches_and_brackets_the_load() {
     let hi = w.jump_in_pressure.unwrap();
     assert!(1e-5 < hi, "{w:?}");
     let mut t = s.clone();
-    t.pressure = asperity::input::scene::PRESSURE_RANGE.0;
+    t.set_pressure(asperity::input::scene::PRESSURE_RANGE.0).unwrap();
     let o = adhesion::solve(&t, &acc, None, None).unwrap();
     assert_eq!(o.branches.len(), 3, "{:?}", o.branches);
     assert!((o.branches[2].a_r / b[2].a_r - 1.0).abs() < 0.01, "{:?}", o.branches);
     // just above the jump-in a single stable branch is left: the upper one
     let mut t = s.clone();
-    t.pressure = hi * 1.1;
+    t.set_pressure(hi * 1.1).unwrap();
     let o = adhesion::solve(&t, &acc, None, None).unwrap();
     assert_eq!(o.branches.iter().filter(|b| b.stable).count(), 1, "{:?}", o.branches);
     assert!(o.a_r > 0.1, "{}", o.a_r);
@@ -594,8 +595,8 @@ fn the_thin_slab_grid_converges_everywhere() {
         for t in [0.08, 0.1, 0.12, 0.15] {
             for p in [1e-6, 1e-5, 1e-4] {
                 let mut s = system(2, model);
-                s.thickness_qr = t;
-                s.pressure = p;
+                s.set_thickness_qr(t).unwrap();
+                s.set_pressure(p).unwrap();
                 let sol = adhesion::solve(&s, &AdhesionAccuracy::default(), None, None)
                     .unwrap_or_else(|e| panic!("model {model}, t {t}, p {p}: {e}"));
                 assert!(sol.a_r > 0.0 && sol.a_r <= 1.0, "{}", sol.a_r);
@@ -626,7 +627,7 @@ fn ladder() {
     };
     for (n, model, t) in [(1u8, 3u8, f64::INFINITY), (2, 4, f64::INFINITY), (2, 4, 0.25)] {
         let mut s = system(n, model);
-        s.thickness_qr = t;
+        s.set_thickness_qr(t).unwrap();
         let reference = adhesion::solve(&s, &acc(192.0, 40.0), None, None).unwrap().a_r;
         for (st, pp) in [
             (8.0, 5.0),
@@ -665,8 +666,8 @@ fn a_thickness_sweep_finds_the_window_edges_in_t() {
     use asperity::theory::hysteresis::{self, EdgeKind};
     use asperity::theory::knob::{self, Knob, KnobSpec};
     let mut s = system(2, 3);
-    s.gamma *= 0.8;
-    s.pressure = 1e-5;
+    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * 0.8).unwrap();
+    s.set_pressure(1e-5).unwrap();
     let spec = KnobSpec {
         knob: Knob::Thickness,
         from: 0.06,
@@ -695,7 +696,7 @@ fn a_thickness_sweep_finds_the_window_edges_in_t() {
     let acc = AdhesionAccuracy::default();
     let stable_at = |t: f64| {
         let mut x = s.clone();
-        x.thickness_qr = t;
+        x.set_thickness_qr(t).unwrap();
         adhesion::solve(&x, &acc, None, None)
             .unwrap()
             .branches
@@ -730,8 +731,8 @@ fn a_solve_does_not_depend_on_what_its_thread_solved_before() {
         std::thread::spawn(move || {
             if warm_up {
                 let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-                s.model = Model::named(4).unwrap();
-                s.thickness_qr = 0.25;
+                s.set_model(Model::named(4).unwrap()).unwrap();
+                s.set_thickness_qr(0.25).unwrap();
                 engine::evaluate(&s, &Options::default()).unwrap();
             }
             let s = Preset::resolve("system-1").unwrap().scene().unwrap();

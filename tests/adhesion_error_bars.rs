@@ -43,11 +43,11 @@ impl Rng {
 fn random_scene(rng: &mut Rng) -> Scene {
     let n = if rng.next() < 0.5 { 1 } else { 2 };
     let mut s = Preset::resolve(&format!("system-{n}")).unwrap().scene().unwrap();
-    let Spectrum::SelfAffine(sa) = s.spectrum else {
+    let Spectrum::SelfAffine(sa) = s.spectrum() else {
         unreachable!()
     };
     let hurst = 0.5 + 0.4 * rng.next();
-    s.spectrum = Spectrum::SelfAffine(
+    s.set_spectrum(Spectrum::SelfAffine(
         SelfAffine::new(
             sa.system_size,
             sa.lambda_r,
@@ -56,15 +56,19 @@ fn random_scene(rng: &mut Rng) -> Scene {
             Normalisation::RmsGradient(1.0),
         )
         .unwrap(),
-    );
-    s.pressure = rng.log_uniform(1e-4, 0.1);
-    s.gamma *= rng.log_uniform(0.3, 3.0);
-    s.thickness_qr = if rng.next() < 1.0 / 3.0 {
+    ))
+    .unwrap();
+    s.set_pressure(rng.log_uniform(1e-4, 0.1)).unwrap();
+    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * rng.log_uniform(0.3, 3.0))
+        .unwrap();
+    s.set_thickness_qr(if rng.next() < 1.0 / 3.0 {
         f64::INFINITY
     } else {
         rng.log_uniform(0.25, 4.0)
-    };
-    s.model = Model::named(1 + (rng.next() * 4.0) as u8).unwrap();
+    })
+    .unwrap();
+    s.set_model(Model::named(1 + (rng.next() * 4.0) as u8).unwrap())
+        .unwrap();
     s
 }
 

@@ -13,8 +13,8 @@
 
 mod oracle;
 
-use asperity::input::model::Model;
-use asperity::input::preset::Preset;
+mod common;
+
 use asperity::input::scene::Scene;
 use asperity::theory::adhesion::{self, AdhesionAccuracy};
 use asperity::theory::engine::{self, Options};
@@ -29,11 +29,9 @@ use statrs::function::erf::erf;
 const INF: f64 = f64::INFINITY;
 
 fn scene(n: u8, model: u8, t: f64, p: f64) -> Scene {
-    let mut s = Preset::resolve(&format!("system-{n}")).unwrap().scene().unwrap();
-    s.model = Model::named(model).unwrap();
-    s.thickness_qr = t;
-    s.pressure = p;
-    s
+    let s = common::system(n, model);
+    let g = s.surface_energy_j_m2();
+    common::at(n, model, t, g, p)
 }
 
 fn phi(x: f64) -> f64 {
@@ -141,7 +139,7 @@ fn oracle_without_adhesion_is_the_adhesionless_theory() {
     ];
     for (n, m, t, p) in cases {
         let mut s = scene(n, m, t, p);
-        s.gamma = 0.0;
+        s = s.without_adhesion();
         let o = loading(&Physics::from_scene(&s), &default_resolution(), 6);
         let reference = if m == 1 && t.is_infinite() {
             erf(2f64.sqrt() * p)
@@ -195,10 +193,10 @@ fn agree(scenes: &[Scene], res: &Resolution, fine_too: bool) {
         let t_oracle = t0.elapsed().as_secs_f64();
         let label = format!(
             "system-{}, model {}, t·q_r {}, p* {}",
-            if s.spectrum.q_r() > 4e5 { 2 } else { 1 },
-            s.model.kind.number().unwrap(),
-            s.thickness_qr,
-            s.pressure
+            if s.spectrum().q_r() > 4e5 { 2 } else { 1 },
+            s.model().kind.number().unwrap(),
+            s.thickness_qr(),
+            s.pressure()
         );
         if o.all.len() != 1 {
             failures.push(format!("{label}: several branches {:?}", o.all));
@@ -267,7 +265,7 @@ fn every_branch_of_a_hysteresis_window_agrees_with_the_oracle() {
     // three roots of H, the middle one where H falls (unstable), and the fast solver's
     // branches match them one by one
     let mut s = scene(2, 3, 0.1, 1e-5);
-    s.gamma *= 0.8;
+    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * 0.8).unwrap();
     let ph = Physics::from_scene(&s);
     let res = default_resolution();
     let oracle = oracle::solve::branches(&ph, &res, 8, 12);
@@ -343,9 +341,9 @@ fn oracle_refinement_study() {
         let best = 2.0 * levels[4] - levels[3];
         eprintln!(
             "model {}, t·q_r {}, p* {}: levels {levels:.8?}",
-            s.model.kind.number().unwrap(),
-            s.thickness_qr,
-            s.pressure
+            s.model().kind.number().unwrap(),
+            s.thickness_qr(),
+            s.pressure()
         );
         for w in 0..4 {
             let (a1, a2) = (levels[w], levels[w + 1]);
@@ -482,7 +480,7 @@ fn fast_solver_finds_the_oracles_branches() {
             for g in [0.6, 0.8, 1.0] {
                 for p in [1e-5, 1e-3] {
                     let mut s = scene(2, m, t, p);
-                    s.gamma *= g;
+                    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * g).unwrap();
                     let found = oracle::solve::branches(&Physics::from_scene(&s), &default_resolution(), 8, 12);
                     let oracle: Vec<f64> = found.iter().map(|r| r.0).collect();
                     let bars: Vec<f64> = found.iter().map(|r| r.1).collect();

@@ -2,6 +2,8 @@
 //! form, limits, monotonicity, Persson's small-load asymptote, the system-1 values and hard
 //! cases.
 
+mod common;
+
 use asperity::input::model::Model;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
@@ -12,15 +14,12 @@ use asperity::theory::{energy, gap};
 use asperity::tolerances::*;
 
 fn system1(model: Model) -> Scene {
-    let mut s = Preset::resolve("system-1").unwrap().scene().unwrap();
-    s.gamma = 0.0;
-    s.model = model;
-    s
+    common::dry(1, model)
 }
 
 fn with_p(scene: &Scene, p: f64) -> Scene {
     let mut s = scene.clone();
-    s.pressure = p;
+    s.set_pressure(p).unwrap();
     s
 }
 
@@ -34,7 +33,7 @@ fn closed_form_agrees_with_energy_route() {
     // W only in the energy (α = 0), γ_P = 0.45: Persson's 2007 weighting
     let persson = Model::custom(0.55, 0.0, 0.0, 1.0, false).unwrap();
     let mut thin = system1(m1);
-    thin.thickness_qr = 1.0;
+    thin.set_thickness_qr(1.0).unwrap();
     for scene in [system1(m1), system1(persson), thin] {
         let ps = [1e-4, 1e-2, 0.1, 0.5];
         let cf = gap::closed_form(&scene, &ps).unwrap();
@@ -44,8 +43,8 @@ fn closed_form_agrees_with_energy_route() {
             assert!(
                 rel < GAP_CLOSED_FORM_REL,
                 "{} t = {}: p* = {p}: energy route {} vs closed form {c} (rel {rel:.1e})",
-                scene.model.label(),
-                scene.thickness_qr,
+                scene.model().label(),
+                scene.thickness_qr(),
                 er.relative
             );
             // the Richardson estimate covers the grid error (factor 3); the rest, ≤ 1e-5, is the
@@ -54,7 +53,7 @@ fn closed_form_agrees_with_energy_route() {
                 (er.relative - c).abs() <= 3.0 * er.error + 1e-5 * c,
                 "p* = {p}: {er:?} vs {c}"
             );
-            assert!((er.metres - er.relative * scene.spectrum.rms_height()).abs() < 1e-18);
+            assert!((er.metres - er.relative * scene.spectrum().rms_height()).abs() < 1e-18);
         }
     }
 }
@@ -83,7 +82,7 @@ fn energy_at_full_contact_is_u_ela_f() {
     for n in 1..=4 {
         for t in [f64::INFINITY, 0.5] {
             let mut s = system1(Model::named(n).unwrap());
-            s.thickness_qr = t;
+            s.set_thickness_qr(t).unwrap();
             let p = gap::full_contact_pressure(&s) * 1.5;
             let ev = engine::evaluate(&with_p(&s, p), &Options::default()).unwrap();
             let uf = s.full_contact_energy();
@@ -115,7 +114,7 @@ fn energy_small_load_scaling() {
     let ratio = u(&w, 1e-7) / u7;
     assert!((ratio - 0.45).abs() < 0.45 * SMALL_LOAD_ENERGY_REL, "ratio {ratio}");
     // reduced energy unit
-    assert!((energy::energy_unit(&m1) - 25e6 * m1.spectrum.rms_height()).abs() < 1e-6);
+    assert!((energy::energy_unit(&m1) - 25e6 * m1.spectrum().rms_height()).abs() < 1e-6);
 }
 
 #[test]
@@ -151,12 +150,12 @@ fn persson_small_load_asymptote() {
     // a wide spectrum: λ_r/λ_s = 1e4, L/λ_r = 5
     let sa = SelfAffine::new(5e-4, 1e-4, 1e-8, 0.8, Normalisation::RmsGradient(1.0)).unwrap();
     let mut s = system1(Model::named(1).unwrap());
-    s.spectrum = Spectrum::SelfAffine(sa);
+    s.set_spectrum(Spectrum::SelfAffine(sa)).unwrap();
     for model in [
         Model::named(1).unwrap(),
         Model::custom(0.55, 0.0, 0.0, 1.0, false).unwrap(),
     ] {
-        s.model = model;
+        s.set_model(model).unwrap();
         let u0 = gap::asymptotic_slope(&s).unwrap();
         let spec = SweepSpec {
             from: 1e-7,
@@ -182,13 +181,13 @@ fn hard_cases_give_finite_monotone_gaps() {
     let mut cases: Vec<Scene> = Vec::new();
     for t in [1e-4, 1e-2, 1.0, f64::INFINITY] {
         let mut s = system1(Model::named(4).unwrap());
-        s.thickness_qr = t;
+        s.set_thickness_qr(t).unwrap();
         cases.push(s);
     }
     for (ratio, h) in [(1e6, 0.8), (200.0, 0.05), (200.0, 0.95)] {
         let sa = SelfAffine::new(1e-4, 2e-5, 2e-5 / ratio, h, Normalisation::RmsGradient(1.0)).unwrap();
         let mut s = system1(Model::named(3).unwrap());
-        s.spectrum = Spectrum::SelfAffine(sa);
+        s.set_spectrum(Spectrum::SelfAffine(sa)).unwrap();
         cases.push(s);
     }
     let spec = SweepSpec {
@@ -198,7 +197,7 @@ fn hard_cases_give_finite_monotone_gaps() {
     };
     for s in &cases {
         let sw = sweep::sweep(s, &spec, &Options::default(), None).unwrap();
-        let label = format!("t = {}, q_s = {:e}", s.thickness_qr, s.spectrum.q_s());
+        let label = format!("t = {}, q_s = {:e}", s.thickness_qr(), s.spectrum().q_s());
         assert!(sw.monotone, "{label}");
         for r in &sw.rows {
             assert!(
@@ -208,7 +207,7 @@ fn hard_cases_give_finite_monotone_gaps() {
             assert!(r.converged);
         }
         // thin slabs are nearly conformal (ū ≪ h_rms); thick bodies are far from contact
-        let floor = if s.thickness_qr < 1.0 { 0.0 } else { 1.0 };
+        let floor = if s.thickness_qr() < 1.0 { 0.0 } else { 1.0 };
         assert!(sw.rows[0].mean_gap_rel > floor, "{label}: {:?}", sw.rows[0]);
     }
 }
@@ -218,7 +217,7 @@ fn no_gap_for_non_positive_load() {
     // the energy route is singular at p = 0: p* <= 0 is an error naming the load
     let mut s = system1(Model::named(1).unwrap());
     for p in [0.0, -0.1, f64::NAN] {
-        s.pressure = p;
+        s.set_pressure(p).unwrap();
         let e = gap::mean_gap(&s, &Options::default()).unwrap_err();
         assert!(e.to_string().contains("p* > 0"), "{e}");
     }
@@ -229,9 +228,9 @@ fn gap_at_the_top_of_the_pressure_range_is_zero() {
     // p* above full contact (up to the allowed maximum 1e3): ū = 0, no grid beyond the range
     for gamma in [0.0, 0.157] {
         let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-        s.gamma = gamma;
+        s.set_surface_energy_j_m2(gamma).unwrap();
         for p in [gap::full_contact_pressure(&s) * 1.01, 1e3] {
-            s.pressure = p;
+            s.set_pressure(p).unwrap();
             let g = gap::mean_gap(&s, &Options::default()).unwrap();
             assert_eq!(g.relative, 0.0, "gamma {gamma}, p* {p}");
             assert!(g.energy_reduced.is_finite());

@@ -4,8 +4,9 @@
 //! non-increasing in p* along a sweep and in γ_s at fixed load, and the examples. The
 //! comparison with GFMD is in `tests/gap_gfmd.rs`.
 
+mod common;
+
 use asperity::input::model::Model;
-use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use asperity::theory::engine::Options;
 use asperity::theory::gap;
@@ -14,15 +15,13 @@ use asperity::tolerances::*;
 use proptest::prelude::*;
 
 fn preset(name: &str, model: u8) -> Scene {
-    let mut s = Preset::resolve(name).unwrap().scene().unwrap();
-    s.model = Model::named(model).unwrap();
-    s
+    common::preset(name).with_model(Model::named(model).unwrap()).unwrap()
 }
 
 fn gap_with(s: &Scene, gamma: f64, p: f64, opts: &Options) -> gap::MeanGap {
     let mut s = s.clone();
-    s.gamma = gamma;
-    s.pressure = p;
+    s.set_surface_energy_j_m2(gamma).unwrap();
+    s.set_pressure(p).unwrap();
     gap::mean_gap(&s, opts).unwrap()
 }
 
@@ -88,7 +87,7 @@ fn the_gamma_to_zero_limit_is_the_adhesionless_gap() {
 #[test]
 fn a_load_of_zero_is_an_error() {
     let mut s = preset("system-2", 4);
-    s.pressure = 0.0;
+    s.set_pressure(0.0).unwrap();
     let e = gap::mean_gap(&s, &Options::default()).unwrap_err().to_string();
     assert!(e.contains("pressure") && e.contains("p* > 0"), "{e}");
 }
@@ -105,9 +104,9 @@ fn adhesion_lowers_the_gap_on_a_grid_of_scenes() {
         for t in [f64::INFINITY, 0.3, 0.15, 0.1, 0.05] {
             for p in [1e-5, 1e-3] {
                 let mut s = preset("system-2", model);
-                s.thickness_qr = t;
+                s.set_thickness_qr(t).unwrap();
                 let dry = gap_with(&s, 0.0, p, &opts).relative;
-                let g = gap_with(&s, s.gamma, p, &opts);
+                let g = gap_with(&s, s.surface_energy_j_m2(), p, &opts);
                 eprintln!(
                     "model {model} t = {t} p* = {p:e}: u = {:.4} in [{:.4}, {:.4}] (dry {dry:.4}), p_c/p = {:.3}, unloading {:?}",
                     g.relative,
@@ -138,7 +137,7 @@ fn adhesion_lowers_the_gap_on_a_grid_of_scenes() {
 #[test]
 fn the_gap_falls_with_the_surface_energy() {
     let mut s = preset("system-2", 3);
-    s.thickness_qr = 0.1;
+    s.set_thickness_qr(0.1).unwrap();
     let opts = Options::chart();
     let dry = gap_with(&s, 0.0, 1e-5, &opts).relative;
     let gaps: Vec<gap::MeanGap> = [0.079, 0.099, 0.1256, 0.157, 0.198]
@@ -159,8 +158,9 @@ fn the_gap_falls_with_the_surface_energy() {
 
 fn adhesive_scene(t: f64, gamma_scale: f64, model: u8) -> Scene {
     let mut s = preset("system-2", model);
-    s.thickness_qr = t;
-    s.gamma *= gamma_scale;
+    s.set_thickness_qr(t).unwrap();
+    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * gamma_scale)
+        .unwrap();
     s
 }
 
@@ -184,7 +184,7 @@ proptest! {
         let spec = SweepSpec { from: 10f64.powf(log_p), to: 1.0, points: 10 };
         let sw = sweep::sweep(&s, &spec, &Options::chart(), None).unwrap();
         let mut dry_scene = s.clone();
-        dry_scene.gamma = 0.0;
+        dry_scene.set_surface_energy_j_m2(0.0).unwrap();
         let dry = sweep::sweep(&dry_scene, &spec, &Options::chart(), None).unwrap();
         let with_gap: Vec<_> = sw.rows.iter().filter(|r| r.mean_gap_rel.is_finite()).collect();
         for r in &with_gap {
@@ -220,8 +220,8 @@ proptest! {
 #[test]
 fn the_unloading_branch_has_its_own_admissible_gap() {
     let mut s = preset("system-2", 3);
-    s.thickness_qr = 0.1;
-    let gamma = s.gamma * 0.8;
+    s.set_thickness_qr(0.1).unwrap();
+    let gamma = s.surface_energy_j_m2() * 0.8;
     let (g1, g2) = (gap_of(&s, gamma, 1e-5), gap_of(&s, gamma, 4e-5));
     let (u1, u2) = (
         g1.unloading.expect("a window at 1e-5"),
@@ -249,16 +249,16 @@ fn the_unloading_branch_has_its_own_admissible_gap() {
 fn the_contact_load_is_the_force_of_the_final_distribution() {
     for (t, model) in [(f64::INFINITY, 4), (0.3, 4), (0.15, 3)] {
         let mut s = preset("system-2", model);
-        s.thickness_qr = t;
-        s.pressure = 5e-3;
+        s.set_thickness_qr(t).unwrap();
+        s.set_pressure(5e-3).unwrap();
         let ev = asperity::theory::engine::evaluate(&s, &Options::default()).unwrap();
         let i = ev.branches.iter().position(|b| b.stable).unwrap();
-        let x_steps = ev.contact_loads[i] - s.pressure;
-        let x_pr = ev.stats.a_r * ev.stats.mean_contact_stress - s.pressure;
+        let x_steps = ev.contact_loads[i] - s.pressure();
+        let x_pr = ev.stats.a_r * ev.stats.mean_contact_stress - s.pressure();
         eprintln!(
             "t = {t}, model {model}: X/p* = {:.5} (steps), {:.5} (Pr)",
-            x_steps / s.pressure,
-            x_pr / s.pressure
+            x_steps / s.pressure(),
+            x_pr / s.pressure()
         );
         assert!(
             x_steps > 0.0 && (x_steps - x_pr).abs() <= GAP_CONTACT_LOAD_REL * x_pr,

@@ -54,9 +54,9 @@ fn gfmd_loading(setup: &GfmdSetup, ps: &[f64]) -> Vec<GfmdPoint> {
 fn setup(preset: &str, t: f64, gamma: Option<f64>, grid: Option<GridSpec>) -> GfmdSetup {
     let pre = Preset::resolve(preset).unwrap();
     let mut scene: Scene = pre.scene().unwrap();
-    scene.thickness_qr = t;
+    scene.set_thickness_qr(t).unwrap();
     if let Some(g) = gamma {
-        scene.gamma = g;
+        scene.set_surface_energy_j_m2(g).unwrap();
     }
     GfmdSetup {
         scene,
@@ -181,15 +181,15 @@ fn explore_mappings_by_hand() {
         let prep = gfmd::prepare(&setup(&c.preset, c.t, None, Some(MAP))).unwrap();
         let th = prep.theory_scene(c.point.p).unwrap();
         let mut th0 = th.clone();
-        th0.gamma = 0.0;
+        th0.set_surface_energy_j_m2(0.0).unwrap();
         let u0 = |p: f64| {
             let mut s = th0.clone();
-            s.pressure = p;
+            s.set_pressure(p).unwrap();
             gap::mean_gap(&s, &opts).unwrap().relative
         };
         let a0 = |p: f64| {
             let mut s = th0.clone();
-            s.pressure = p;
+            s.set_pressure(p).unwrap();
             evaluate(&s, &opts).unwrap().stats.a_r
         };
         let ev = evaluate(&th, &opts).unwrap();
@@ -300,7 +300,7 @@ fn compare(s_adh: &GfmdSetup, t: f64, dry: &[GfmdPoint], adh: &[GfmdPoint]) -> V
         .map(|(d, a)| {
             let th = prep.theory_scene(a.p).unwrap();
             let mut th0 = th.clone();
-            th0.gamma = 0.0;
+            th0.set_surface_energy_j_m2(0.0).unwrap();
             let g = gap::mean_gap(&th, &opts).unwrap();
             Compared {
                 t,

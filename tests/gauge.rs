@@ -1,20 +1,17 @@
 //! Gauging: [S]'s c₁, c₂ recovered from eq. (18), a synthetic round trip with noise of known
 //! size, and fits that cannot succeed saying why.
 
+mod common;
+
 use asperity::error::Error;
 use asperity::fit::reference::{self, Observable, Observation, Reference};
 use asperity::fit::{self, Param};
 use asperity::input::model::Model;
-use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use asperity::tolerances::*;
 
 fn half_space(model: Model) -> Scene {
-    let mut s = Preset::resolve("system-1").unwrap().scene().unwrap();
-    s.gamma = 0.0;
-    s.thickness_qr = f64::INFINITY;
-    s.model = model;
-    s
+    common::dry(1, model).half_space()
 }
 
 /// [S] §2.3: model 3's c₁ = −2/9, c₂ = 2/3 "adjusted to closely match a_r(p*)/p* from
@@ -267,7 +264,7 @@ fn gap_and_pr_observables_follow_the_theory() {
     }
     // Pr histograms: model 3's own Pr has an L1 distance ~0 from model 3, not from model 1
     let mut s1 = s.clone();
-    s1.pressure = 0.01;
+    s1.set_pressure(0.01).unwrap();
     let sol = persson::solve(&s1, &Accuracy::default()).unwrap();
     let (sig, den) = sol.sample(2.0, 101);
     let r = Reference {

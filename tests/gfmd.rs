@@ -169,8 +169,8 @@ fn johnson_sinusoid_pressure_profile_at_128_points_per_wavelength() {
 fn system1_setup(n_spec: GridSpec, pressure: f64) -> GfmdSetup {
     let preset = Preset::resolve("system-1").unwrap();
     let mut scene = preset.scene().unwrap();
-    scene.pressure = pressure;
-    scene.gamma = 0.0;
+    scene.set_pressure(pressure).unwrap();
+    scene.set_surface_energy_j_m2(0.0).unwrap();
     GfmdSetup {
         scene,
         grid: n_spec,
@@ -342,7 +342,7 @@ fn hard_case_strong_adhesion_converges_or_reports() {
     let preset = Preset::resolve("system-2").unwrap();
     for gamma in [0.157, 1.5] {
         let mut scene = preset.scene().unwrap();
-        scene.gamma = gamma;
+        scene.set_surface_energy_j_m2(gamma).unwrap();
         let setup = GfmdSetup {
             scene,
             grid: tiny(),
@@ -351,7 +351,7 @@ fn hard_case_strong_adhesion_converges_or_reports() {
             rescale: true,
         };
         let mut hard_wall = setup.clone();
-        hard_wall.scene.gamma = 0.0;
+        hard_wall.scene.set_surface_energy_j_m2(0.0).unwrap();
         let opts = GfmdOptions::default();
         match gfmd::run(&setup, &opts, &mut |_| {}, &no_cancel()) {
             Ok(r) => {
@@ -389,7 +389,7 @@ fn adhesion_increases_the_contact_area() {
     let preset = Preset::resolve("system-2").unwrap();
     let mut scene = preset.scene().unwrap();
     let mut run = |gamma: f64| {
-        scene.gamma = gamma;
+        scene.set_surface_energy_j_m2(gamma).unwrap();
         let setup = GfmdSetup {
             scene: scene.clone(),
             grid: tiny(),
@@ -414,7 +414,7 @@ fn adhesion_increases_the_contact_area() {
 #[test]
 fn hard_case_very_thin_slab() {
     let mut setup = system1_setup(tiny(), 0.01);
-    setup.scene.thickness_qr = 0.01;
+    setup.scene.set_thickness_qr(0.01).unwrap();
     match gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &no_cancel()) {
         Ok(r) => {
             assert_finite(&r);

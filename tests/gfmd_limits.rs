@@ -6,7 +6,6 @@ use asperity::gfmd::ladder::{extrapolate, run_ladder, run_seeds};
 use asperity::gfmd::sweep::run_sweep;
 use asperity::gfmd::{self, GfmdOptions, GfmdSetup, GridSpec, Method, Problem};
 use asperity::input::preset::Preset;
-use asperity::input::scene::Scene;
 use asperity::surface::heightmap::Surface;
 use asperity::theory::sweep::SweepSpec;
 use std::f64::consts::PI;
@@ -72,11 +71,7 @@ fn extrapolation_recovers_johnsons_limit() {
 
 fn small_setup(pts: f64, pressure: f64, seed: u64) -> GfmdSetup {
     let p = Preset::resolve("system-1").unwrap();
-    let scene = Scene {
-        gamma: 0.0,
-        pressure,
-        ..p.scene().unwrap()
-    };
+    let scene = p.scene().unwrap().without_adhesion().with_pressure(pressure).unwrap();
     GfmdSetup {
         scene,
         grid: GridSpec {
@@ -163,10 +158,7 @@ fn sweep_equals_single_runs() {
     for (row, p) in sw.rows.iter().zip(spec.pressures()) {
         let single = gfmd::run(
             &GfmdSetup {
-                scene: Scene {
-                    pressure: p,
-                    ..setup.scene.clone()
-                },
+                scene: setup.scene.clone().with_pressure(p).unwrap(),
                 ..setup.clone()
             },
             &o,

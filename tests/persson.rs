@@ -1,7 +1,8 @@
 //! The adhesionless theory against the paper's numbers and closed forms.
 
+mod common;
+
 use asperity::input::model::Model;
-use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use asperity::surface::spectrum::{Normalisation, SelfAffine, Spectrum};
 use asperity::theory::persson::{self, Accuracy};
@@ -10,11 +11,7 @@ use statrs::function::erf::erf;
 use std::f64::consts::PI;
 
 fn system1(model: u8, p: f64) -> Scene {
-    let mut s = Preset::resolve("system-1").unwrap().scene().unwrap();
-    s.model = Model::named(model).unwrap();
-    s.pressure = p;
-    s.gamma = 0.0;
-    s
+    common::dry(1, Model::named(model).unwrap()).with_pressure(p).unwrap()
 }
 
 fn solve(s: &Scene) -> persson::Solution {
@@ -84,7 +81,7 @@ fn model1_is_erf_sqrt2_p() {
     for (bw, h) in [(2.0, 0.3), (1e6, 0.05), (1e4, 0.95)] {
         let sa = SelfAffine::new(4e-6 * bw, 2e-6 * bw, 2e-6, h, Normalisation::RmsGradient(1.0)).unwrap();
         let mut s = system1(1, 0.05);
-        s.spectrum = Spectrum::SelfAffine(sa);
+        s.set_spectrum(Spectrum::SelfAffine(sa)).unwrap();
         let a = solve(&s).a_r;
         let exact = erf(2f64.sqrt() * 0.05);
         assert!(
@@ -135,7 +132,7 @@ fn variance_ode_matches_autonomous_oracle() {
             let s = system1(m, p);
             let sol = solve(&s);
             let v = sol.width * sol.width;
-            let vo = oracle_variance(&s.model, p);
+            let vo = oracle_variance(&s.model(), p);
             assert!((v / vo - 1.0).abs() < ORACLE_REL, "model {m} p* {p}: {v} vs {vo}");
         }
     }
@@ -147,7 +144,7 @@ fn small_pressure_rayleigh_limits() {
     for m in 1..=4u8 {
         let s = system1(m, 1e-8);
         let sol = solve(&s);
-        let d2 = s.model.broadening(0.0) / 4.0;
+        let d2 = s.model().broadening(0.0) / 4.0;
         let d = d2.sqrt();
         // a → 0 only after a tiny fraction of the gradient measure: Δ² within 1e-6 of the limit
         assert!((sol.width * sol.width / d2 - 1.0).abs() < 1e-5, "model {m}");
@@ -201,7 +198,7 @@ fn monotone_in_pressure_and_thickness() {
         let mut prev = 1.0 + 1e-15;
         for t in [1e-4, 1e-3, 0.01, 0.1, 0.5, 1.0, 3.0, 10.0, 100.0, f64::INFINITY] {
             let mut s = system1(m, 0.01);
-            s.thickness_qr = t;
+            s.set_thickness_qr(t).unwrap();
             let a = solve(&s).a_r;
             assert!(
                 a <= prev * (1.0 + DEFAULT_ACCURACY_REL),
@@ -235,7 +232,7 @@ fn default_accuracy_against_refined_solution() {
         for p in [1e-8, 1e-3, 0.01, 0.1, 1.0] {
             for t in [0.01, 1.0, f64::INFINITY] {
                 let mut s = system1(m, p);
-                s.thickness_qr = t;
+                s.set_thickness_qr(t).unwrap();
                 let a = solve(&s);
                 let r = persson::solve(&s, &fine).unwrap();
                 let rel = (a.a_r / r.a_r - 1.0).abs();
@@ -261,8 +258,8 @@ fn hard_cases_stay_finite_and_bounded() {
                 for &t in &[1e-4, 1e-2, 1.0, f64::INFINITY] {
                     for &p in &[1e-8, 1e-3, 0.1, 10.0] {
                         let mut s = system1(m, p);
-                        s.spectrum = Spectrum::SelfAffine(sa);
-                        s.thickness_qr = t;
+                        s.set_spectrum(Spectrum::SelfAffine(sa)).unwrap();
+                        s.set_thickness_qr(t).unwrap();
                         let sol = solve(&s);
                         let ok = sol.a_r.is_finite()
                             && (0.0..=1.0).contains(&sol.a_r)
@@ -318,10 +315,10 @@ fn discrete_spectrum_close_to_continuum() {
     };
     for m in [1u8, 3] {
         let mut s = system1(m, 0.05);
-        s.spectrum = Spectrum::Discrete(d.clone());
+        s.set_spectrum(Spectrum::Discrete(d.clone())).unwrap();
         let a_d = solve(&s).a_r;
         let mut s2 = s.clone();
-        s2.spectrum = Spectrum::SelfAffine(sa);
+        s2.set_spectrum(Spectrum::SelfAffine(sa)).unwrap();
         let a_c = solve(&s2).a_r;
         // semi-infinite: both depend only on the normalised measure → same a_r up to the
         // shell discretisation of W (midpoint rule over ~1000 shells)

@@ -12,15 +12,16 @@ fn scene(log_bw: f64, hurst: f64, ratio: f64, model: u8, p: f64, t: f64) -> Scen
     let ls = 1e-7;
     let lr = ls * 10f64.powf(log_bw);
     let sa = SelfAffine::new(lr * ratio, lr, ls, hurst, Normalisation::RmsGradient(1.0)).unwrap();
-    Scene {
-        spectrum: Spectrum::SelfAffine(sa),
-        modulus: 1e7,
-        thickness_qr: t,
-        model: Model::named(model).unwrap(),
-        pressure: p,
-        gamma: 0.0,
-        range: 1e-9,
-    }
+    Scene::new(
+        Spectrum::SelfAffine(sa),
+        1e7,
+        Model::named(model).unwrap(),
+        p,
+        t,
+        0.0,
+        1e-9,
+    )
+    .unwrap()
 }
 
 proptest! {

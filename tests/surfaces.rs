@@ -291,22 +291,22 @@ fn the_theory_on_an_ideal_table_equals_the_analytic_spectrum() {
     ] {
         let p = Preset::resolve(preset).unwrap();
         let mut scene = p.scene().unwrap();
-        scene.thickness_qr = thickness;
+        scene.set_thickness_qr(thickness).unwrap();
         if gamma >= 0.0 {
-            scene.gamma = gamma;
+            scene.set_surface_energy_j_m2(gamma).unwrap();
         }
-        let Spectrum::SelfAffine(sa) = scene.spectrum.clone() else {
+        let Spectrum::SelfAffine(sa) = scene.spectrum().clone() else {
             unreachable!()
         };
         let mut tab = scene.clone();
-        tab.spectrum = Spectrum::Tabulated(table_of(&sa));
-        assert_eq!(tab.spectrum.q_r(), sa.q_r());
+        tab.set_spectrum(Spectrum::Tabulated(table_of(&sa))).unwrap();
+        assert_eq!(tab.spectrum().q_r(), sa.q_r());
         let (a, b) = (
             engine::evaluate(&scene, &opts).unwrap(),
             engine::evaluate(&tab, &opts).unwrap(),
         );
         let rel = |x: f64, y: f64| (x / y - 1.0).abs();
-        let what = format!("{preset} t {thickness} gamma {}", scene.gamma);
+        let what = format!("{preset} t {thickness} gamma {}", scene.surface_energy_j_m2());
         assert!(
             rel(b.stats.a_r, a.stats.a_r) < TABULATED_THEORY_REL,
             "{what}: a_r {} vs {}",

@@ -1,6 +1,8 @@
 //! Load sweeps: rows, shared U table, refinement error, cancellation, adhesion hook,
 //! validation and the `sweep` / `run` command lines.
 
+mod common;
+
 use asperity::error::Field;
 use asperity::input::model::Model;
 use asperity::input::preset::Preset;
@@ -14,19 +16,16 @@ use asperity::Error;
 use std::sync::atomic::AtomicBool;
 
 fn system1(n: u8) -> Scene {
-    let mut s = Preset::resolve("system-1").unwrap().scene().unwrap();
-    s.gamma = 0.0;
-    s.model = Model::named(n).unwrap();
-    s
+    common::dry(1, Model::named(n).unwrap())
 }
 
 /// System 2, model 3, t·q_r = 0.1, 0.8 γ_s, and a sweep 1e-6…1e-3 that holds its hysteresis
 /// window's jump-in (three branches from below 1e-6 up to ~2.3e-4).
 fn thin_slab_window() -> (Scene, SweepSpec) {
     let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-    s.model = Model::named(3).unwrap();
-    s.thickness_qr = 0.1;
-    s.gamma *= 0.8;
+    s.set_model(Model::named(3).unwrap()).unwrap();
+    s.set_thickness_qr(0.1).unwrap();
+    s.set_surface_energy_j_m2(s.surface_energy_j_m2() * 0.8).unwrap();
     let spec = SweepSpec {
         from: 1e-6,
         to: 1e-3,
@@ -39,7 +38,7 @@ fn thin_slab_window() -> (Scene, SweepSpec) {
 /// to `tol` (relative) and its branch count.
 fn scanned_row(s: &Scene, r: &sweep::SweepRow, opts: &Options, tol: f64) -> engine::Evaluation {
     let mut one = s.clone();
-    one.pressure = r.p;
+    one.set_pressure(r.p).unwrap();
     let ev = engine::evaluate(&one, opts).unwrap();
     assert!(
         (r.a_r / ev.stats.a_r - 1.0).abs() < tol,
@@ -73,14 +72,14 @@ fn rows_match_single_evaluations() {
     assert_eq!(sw.rows.len(), 64);
     // spacing 0.11 in ln p*: no refinement, only the extension to full contact
     assert!(sw.evaluations < 64 + 20, "{}", sw.evaluations);
-    let h_rms = s.spectrum.rms_height();
+    let h_rms = s.spectrum().rms_height();
     for (r, p) in sw.rows.iter().zip(spec.pressures()) {
         assert_eq!(r.p, p);
         assert!((r.mean_gap - r.mean_gap_rel * h_rms).abs() < 1e-18);
     }
     for k in [0, 31, 63] {
         let mut one = s.clone();
-        one.pressure = sw.rows[k].p;
+        one.set_pressure(sw.rows[k].p).unwrap();
         // a sweep evaluates its loads at the energy route's tolerance
         let mut tight = Options::default();
         tight.accuracy.rtol = gap::ENERGY_RTOL;
@@ -157,8 +156,8 @@ fn adhesive_sweep_is_clean() {
     // and flags any non-monotone stretch (an adhesive jump).
     for t in [f64::INFINITY, 0.05] {
         let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-        s.thickness_qr = t;
-        assert!(s.gamma > 0.0);
+        s.set_thickness_qr(t).unwrap();
+        assert!(s.surface_energy_j_m2() > 0.0);
         let spec = SweepSpec {
             from: 1e-4,
             to: 1.0,
@@ -196,7 +195,7 @@ fn adhesive_sweeps_do_not_depend_on_the_thread_count() {
     // 40 loads (three continuation chunks) on one and on two threads give
     // the same numbers bit for bit
     let s = Preset::resolve("system-1").unwrap().scene().unwrap();
-    assert!(s.gamma > 0.0);
+    assert!(s.surface_energy_j_m2() > 0.0);
     let spec = SweepSpec {
         from: 1e-3,
         to: 0.3,
@@ -238,8 +237,8 @@ fn tracked_loads_agree_with_full_scans() {
     // a sweep scans every branch only at every ANCHOR_STRIDE-th load and tracks the root in
     // between (64 loads in about a second); every row against its own full scan
     let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-    s.model = Model::named(4).unwrap();
-    s.thickness_qr = 0.1;
+    s.set_model(Model::named(4).unwrap()).unwrap();
+    s.set_thickness_qr(0.1).unwrap();
     let spec = SweepSpec {
         from: 1e-5,
         to: 1.0,
@@ -311,11 +310,11 @@ fn run_and_sweep_agree_at_small_loads_on_a_thin_slab() {
     // rtol 1e-7 stepped from q_L to q_r in one go has a cubic interpolant that dips below
     // zero: a_r(q) = 1 over a band of q and U three times too high)
     let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-    s.gamma = 0.0;
-    s.model = Model::named(3).unwrap();
-    s.thickness_qr = 0.1;
+    s = s.without_adhesion();
+    s.set_model(Model::named(3).unwrap()).unwrap();
+    s.set_thickness_qr(0.1).unwrap();
     for p in [1e-7, 1e-5] {
-        s.pressure = p;
+        s.set_pressure(p).unwrap();
         let ev = engine::evaluate(&s, &Options::default()).unwrap();
         let sw = sweep::sweep(
             &s,

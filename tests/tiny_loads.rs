@@ -1,21 +1,16 @@
 //! Tiny loads with strong adhesion: every solve ends (converged with an error bar, or one line
 //! saying what could not be resolved) with bounded memory; the runaway wall of the march.
 
+mod common;
+
 use asperity::error::Error;
-use asperity::input::model::Model;
-use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use asperity::theory::adhesion::{self, AdhesionAccuracy};
 use asperity::theory::{engine, hysteresis};
 use asperity::tolerances::{RUNAWAY_WALL_REL, RUNAWAY_WALL_SPREAD_REL};
 
 fn scene(model: u8, t: f64, gamma: f64, p: f64) -> Scene {
-    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-    s.model = Model::named(model).unwrap();
-    s.thickness_qr = t;
-    s.gamma = gamma;
-    s.pressure = p;
-    s
+    common::at(2, model, t, gamma, p)
 }
 
 /// The scenes of the three `run` commands that aborted on a 70 GB allocation or did not end
@@ -92,7 +87,7 @@ fn the_bottom_of_the_load_range_solves_with_bounded_grids() {
 fn a_wall_that_runs_away_leaves_the_contact_as_it_was() {
     let s = scene(1, f64::INFINITY, 0.1, 1e-9);
     let acc = AdhesionAccuracy::default();
-    let q_jump = s.spectrum.breakpoints()[0] * 1.5;
+    let q_jump = s.spectrum().breakpoints()[0] * 1.5;
     let run = |height: f64| {
         let (q, a) = adhesion::propagate_with_wall(&s, &acc, |q| if q < q_jump { 0.0 } else { height }, false).unwrap();
         let k = q.partition_point(|&x| x < q_jump) + 1;

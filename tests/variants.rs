@@ -1,6 +1,8 @@
 //! The literature variants YP08 and Xu24 against their own formulas, evaluated here with
 //! methods that share no code with the solver (docs/physics.md §3.4).
 
+mod common;
+
 use asperity::error::Error;
 use asperity::input::model::{Model, ModelKind, FUDGE_GAMMA_DEFAULT};
 use asperity::input::preset::Preset;
@@ -11,11 +13,7 @@ use statrs::function::erf::erf;
 use std::f64::consts::PI;
 
 fn system1(model: Model, p: f64) -> Scene {
-    let mut s = Preset::resolve("system-1").unwrap().scene().unwrap();
-    s.gamma = 0.0;
-    s.model = model;
-    s.pressure = p;
-    s
+    common::dry(1, model).with_pressure(p).unwrap()
 }
 
 fn solve(s: &Scene) -> persson::Solution {
@@ -146,12 +144,17 @@ fn unit_fudge_gamma_is_original_persson() {
 fn variants_refuse_adhesion_and_slabs_and_bad_gamma() {
     for kind in [ModelKind::Yp08, ModelKind::Xu24] {
         let m = Model::fudge(kind, 0.42).unwrap();
+        // each setter refuses what the variant does not define, and leaves the scene as it was
         let mut s = system1(m, 0.01);
-        s.gamma = 0.05;
-        assert!(matches!(s.validate(), Err(Error::Unsupported(ref t)) if t.contains("adhesionless half-space")));
-        let mut s = system1(m, 0.01);
-        s.thickness_qr = 1.0;
-        assert!(matches!(s.validate(), Err(Error::Unsupported(_))));
+        let before = s.clone();
+        assert!(
+            matches!(s.set_surface_energy_j_m2(0.05), Err(Error::Unsupported(ref t)) if t.contains("adhesionless half-space"))
+        );
+        assert!(matches!(s.set_thickness_qr(1.0), Err(Error::Unsupported(_))));
+        assert_eq!(s, before);
+        // and so does a scene built with the variant on an adhesive slab
+        let adhesive = Preset::resolve("system-2").unwrap().scene().unwrap();
+        assert!(matches!(adhesive.with_model(m), Err(Error::Unsupported(_))));
         for g in [0.0, -0.1, 1.5, f64::NAN] {
             let e = Model::fudge(kind, g).unwrap_err().to_string();
             assert!(e.contains("model.fudge_gamma"), "{e}");

@@ -100,10 +100,10 @@ fn rel(a: f64, b: f64) -> f64 {
 
 fn scene_of(preset: &str, model: u8, p: f64, t: f64) -> Result<Scene> {
     let mut s = Preset::resolve(preset)?.scene()?;
-    s.model = Model::named(model)?;
-    s.pressure = p;
-    s.thickness_qr = t;
-    s.gamma = 0.0;
+    s.set_model(Model::named(model)?)?;
+    s.set_pressure(p)?;
+    s.set_thickness_qr(t)?;
+    s = s.without_adhesion();
     Ok(s)
 }
 
@@ -205,9 +205,9 @@ pub fn adhesionless(quick: bool) -> Result<Report> {
 
 fn adhesive_scene(preset: &str, model: u8, p: f64, t: f64) -> Result<Scene> {
     let mut s = Preset::resolve(preset)?.scene()?;
-    s.model = Model::named(model)?;
-    s.pressure = p;
-    s.thickness_qr = t;
+    s.set_model(Model::named(model)?)?;
+    s.set_pressure(p)?;
+    s.set_thickness_qr(t)?;
     Ok(s)
 }
 
@@ -271,7 +271,7 @@ pub fn adhesive(quick: bool) -> Result<Report> {
     }
     // the propagator alone against its exact case: constant wall, model 1 (a_r = erf((p+σ_a)/√(2V)))
     let mut s1 = adhesive_scene("system-1", 1, 0.01, f64::INFINITY)?;
-    s1.gamma = 0.0;
+    s1 = s1.without_adhesion();
     for (st, ppw) in [(12.0, 5.0), (24.0, 10.0)] {
         let a = acc(st, ppw);
         let run = || adhesion::propagate_with_wall(&s1, &a, |_| 0.3, true).map(|r| *r.1.last().unwrap_or(&0.0));
@@ -296,7 +296,7 @@ pub fn adhesive(quick: bool) -> Result<Report> {
     let mut hard: Vec<(String, Scene)> = Vec::new();
     for target in [0.01, 10.0] {
         let mut s = base.clone();
-        s.gamma = base.gamma * target / glo;
+        s.set_surface_energy_j_m2(base.surface_energy_j_m2() * target / glo)?;
         hard.push((format!("system-1 model 3 p*=0.01 gamma_glo={target}"), s));
     }
     for (p, t) in [
@@ -351,11 +351,23 @@ pub fn sweeps(quick: bool) -> Result<Report> {
         ..spec
     };
     let mut cases = vec![("adhesionless", 0.0, "default", Options::default(), true)];
-    cases.push(("adhesive", base.gamma, "default", Options::default(), true));
-    cases.push(("adhesive", base.gamma, "chart (explorer)", Options::chart(), false));
+    cases.push((
+        "adhesive",
+        base.surface_energy_j_m2(),
+        "default",
+        Options::default(),
+        true,
+    ));
+    cases.push((
+        "adhesive",
+        base.surface_energy_j_m2(),
+        "chart (explorer)",
+        Options::chart(),
+        false,
+    ));
     for (label, gamma, setting, opts, is_default) in cases {
         let mut scene = base.clone();
-        scene.gamma = gamma;
+        scene.set_surface_energy_j_m2(gamma)?;
         let reference = sweep::sweep(&scene, &fine, &Options::default(), None)?;
         let sw = sweep::sweep(&scene, &spec, &opts, None)?;
         let time = median_time(runs, || sweep::sweep(&scene, &spec, &opts, None).map(|s| s.rows.len()));
@@ -433,8 +445,8 @@ pub fn gfmd(quick: bool) -> Result<Report> {
             points_per_short_wavelength: ppw,
         };
         let mut scene = Preset::resolve("system-1")?.scene()?;
-        scene.gamma = 0.0;
-        scene.pressure = 0.01;
+        scene = scene.without_adhesion();
+        scene.set_pressure(0.01)?;
         let setup = GfmdSetup {
             scene,
             grid,
@@ -473,7 +485,7 @@ pub fn gfmd(quick: bool) -> Result<Report> {
             let preset = Preset::resolve("system-1")?;
             let mut scene = preset.scene()?;
             if gamma == 0.0 {
-                scene.gamma = 0.0;
+                scene = scene.without_adhesion();
             }
             let grid = preset.gfmd.as_ref().map(GridSpec::from_preset).unwrap_or(GridSpec {
                 system_size_ratio: 2.0,

@@ -2,15 +2,9 @@
 //! same scene, eq. (18) and erf(√2 p*) evaluated here, [S] Table 1), the files it writes,
 //! and its one-line errors.
 
-use std::process::{Command, Output};
+mod common;
 
-fn asperity(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap()
-}
+use common::asperity_here as asperity;
 
 fn ok(args: &[&str]) -> String {
     let out = asperity(args);

@@ -1,20 +1,9 @@
 //! `gauge`, `compare` and the named variants on the command line: what works, and bad input
 //! as one line with exit code 2.
 
-use std::process::Command;
+mod common;
 
-fn asperity(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use common::run as asperity;
 
 fn tmp(name: &str, text: &str) -> String {
     let dir = std::env::temp_dir().join(format!("asperity-cli-gauge-{}", std::process::id()));

@@ -1,22 +1,11 @@
 //! `asperity gfmd` through the binary: JSON, table, height-map files and errors.
 
+mod common;
+
 use asperity::gfmd::GfmdOptions;
-use std::process::Command;
+use common::run as asperity;
 
 // ---- the command ----
-
-fn asperity(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 #[test]
 fn cli_gfmd_json_table_surface_files_and_errors() {

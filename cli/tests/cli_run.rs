@@ -1,19 +1,8 @@
 //! The headless `run` command end to end: JSON fields, ∫Pr = a_r, errors on stderr.
 
-use std::process::Command;
+mod common;
 
-fn asperity(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use common::run as asperity;
 
 fn json(args: &[&str]) -> serde_json::Value {
     let (code, out, err) = asperity(args);

@@ -2,19 +2,13 @@
 //! self-affine (tests/fixtures/two_bands.txt: two bands of roughness, one anisotropic), and the
 //! theory on the CSV table of an ideal self-affine spectrum against the preset's analytic one.
 
+mod common;
+
 use asperity::input::preset::Preset;
 use asperity::surface::spectrum::Spectrum;
-use std::process::{Command, Output};
+use common::asperity_here as asperity;
 
 const MAP: &str = "tests/fixtures/two_bands.txt";
-
-fn asperity(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap()
-}
 
 fn ok(args: &[&str]) -> String {
     let out = asperity(args);

@@ -1,23 +1,13 @@
 //! `asperity sweep` and the gap/energy fields of `run`, through the binary.
 
+mod common;
+
 use asperity::input::model::Model;
 use asperity::input::preset::Preset;
 use asperity::theory::engine::Options;
 use asperity::theory::sweep::{self, SweepSpec};
 use asperity::tolerances::*;
-use std::process::Command;
-
-fn asperity(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use common::run as asperity;
 
 #[test]
 fn sweep_command_csv_and_json() {
@@ -80,8 +70,8 @@ fn a_sweep_keeps_going_past_loads_that_do_not_converge() {
     // the adhesive solve may not converge; the sweep still returns every other load, with empty
     // (null) rows where it failed, and no mean gap in them
     let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
-    s.model = Model::named(3).unwrap();
-    s.thickness_qr = 0.1;
+    s.set_model(Model::named(3).unwrap()).unwrap();
+    s.set_thickness_qr(0.1).unwrap();
     let spec = SweepSpec {
         from: 1e-4,
         to: 1.0,
@@ -104,7 +94,11 @@ fn a_sweep_keeps_going_past_loads_that_do_not_converge() {
     assert!(sw.rows.last().unwrap().converged);
     // printed: empty CSV fields and JSON nulls, never NaN
     use asperity_cli::cli::sweep::{csv, Row};
-    let rows: Vec<Row> = sw.rows.iter().map(|r| Row::new(*r, s.thickness_qr, s.gamma)).collect();
+    let rows: Vec<Row> = sw
+        .rows
+        .iter()
+        .map(|r| Row::new(*r, s.thickness_qr(), s.surface_energy_j_m2()))
+        .collect();
     let csv = csv(&rows);
     assert!(!csv.to_lowercase().contains("nan"), "{csv}");
     let json = serde_json::to_string(&sw).unwrap();

@@ -45,7 +45,7 @@ fn system1_adhesionless() {
     key(&mut a, KeyCode::Down);
     key(&mut a, KeyCode::Char('0'));
     key(&mut a, KeyCode::Enter);
-    assert_eq!(a.scene.gamma, 0.0);
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.0);
     compute_now(&mut a, &mut Caches::default());
     assert!(a.point.as_ref().is_some_and(|p| p.is_ok()));
     assert!(a.sweep.as_ref().is_some_and(|p| p.is_ok()));
@@ -59,7 +59,7 @@ fn system1_adhesionless() {
 fn system1_with_adhesion() {
     // the preset's own γ_s is the default
     let a = app("system-1");
-    assert_eq!(a.scene.gamma, 0.05);
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.05);
     assert!(a.point.as_ref().is_some_and(|p| p.is_ok()));
     insta::assert_snapshot!("system1_adhesion_80x24", render(&a, 80, 24));
     insta::assert_snapshot!("system1_adhesion_160x48", render(&a, 160, 48));
@@ -182,7 +182,7 @@ fn gfmd_overlay_with_a_synthetic_run() {
     a.on_reply(Reply::GfmdDone {
         id,
         result: Ok(GfmdView {
-            pressure: a.scene.pressure,
+            pressure: a.scene.pressure(),
             a_r: 0.0418,
             mean_contact_stress: 0.2434,
             gap_rel: 1.4,
@@ -280,7 +280,7 @@ fn tour_step() {
     a.start_tour(Tour::resolve("wang-muser").unwrap(), 1);
     compute_now(&mut a, &mut Caches::default());
     assert_eq!(a.charts[0], ChartKind::AreaRatio);
-    assert!(a.all_models && a.scene.gamma == 0.0);
+    assert!(a.all_models && a.scene.surface_energy_j_m2() == 0.0);
     let s = render(&a, 80, 24);
     assert!(s.contains("tour 2/11") && s.contains("How much area?"), "{s}");
     insta::assert_snapshot!("tour_step2_80x24", s);
@@ -294,9 +294,9 @@ fn tour_step() {
     assert_eq!(a.tour.as_ref().unwrap().step, 2);
     key(&mut a, KeyCode::Left);
     assert_eq!(a.tour.as_ref().unwrap().step, 1);
-    let p = a.scene.pressure;
+    let p = a.scene.pressure();
     key(&mut a, KeyCode::Char('l'));
-    assert!(a.scene.pressure > p);
+    assert!(a.scene.pressure() > p);
     key(&mut a, KeyCode::Esc);
     assert!(a.tour.is_none() && !a.quit);
     assert!(!render(&a, 80, 24).contains("tour 2/10"));

@@ -23,24 +23,23 @@ use std::sync::atomic::AtomicBool;
 fn scene_of(step: &Step, model: Option<u8>, p: Option<f64>, g: Option<f64>, t: Option<f64>) -> Scene {
     let mut s = step.scene.clone();
     if let Some(m) = model {
-        s.model = Model::named(m).unwrap();
+        s.set_model(Model::named(m).unwrap()).unwrap();
     }
     if let Some(p) = p {
-        s.pressure = p;
+        s.set_pressure(p).unwrap();
     }
     if let Some(g) = g {
-        s.gamma = g;
+        s.set_surface_energy_j_m2(g).unwrap();
     }
     if let Some(t) = t {
-        s.thickness_qr = t;
+        s.set_thickness_qr(t).unwrap();
     }
-    s.validate().unwrap();
     s
 }
 
 /// The engine's value of `quantity` at `scene` (`a_r` for `W`).
 fn quantity(step: &Step, q: &str, scene: &Scene, a_r: Option<f64>) -> f64 {
-    let p = scene.pressure;
+    let p = scene.pressure();
     if let Some(r) = q.strip_prefix("reference:") {
         let hits: Vec<f64> = step
             .preset
@@ -54,7 +53,7 @@ fn quantity(step: &Step, q: &str, scene: &Scene, a_r: Option<f64>) -> f64 {
     }
     match q {
         "eq18/p*" => return closed_form::eq18_area(p) / p,
-        "W" => return scene.model.w(a_r.unwrap()),
+        "W" => return scene.model().w(a_r.unwrap()),
         "gap_rel" | "jump_in" => {
             let spec = SweepSpec {
                 from: p / 10.0,
@@ -212,7 +211,7 @@ fn every_quoted_number_is_checked_or_sets_the_scene() {
                         || c.a_r.is_some_and(close)
                 });
                 // the scene's own knobs, the paper's model coefficients (the models' definitions)
-                let scene = close(s.pressure) || close(s.gamma) || close(s.thickness_qr);
+                let scene = close(s.pressure()) || close(s.surface_energy_j_m2()) || close(s.thickness_qr());
                 let coefficient = [0.55, 0.35, 0.65, 0.5].iter().any(|&y| close(y));
                 assert!(
                     c || scene || coefficient,
@@ -264,7 +263,8 @@ fn a_caption_citing_gfmd_shows_gfmd_data() {
             seen += 1;
             let s = &step.scene;
             let shown = step.preset.reference.iter().any(|r| {
-                r.gamma.is_none_or(|g| g == s.gamma) && step.charts.iter().any(|k| shows_reference(*k, &r.quantity))
+                r.gamma.is_none_or(|g| g == s.surface_energy_j_m2())
+                    && step.charts.iter().any(|k| shows_reference(*k, &r.quantity))
             });
             assert!(
                 shown,

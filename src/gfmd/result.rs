@@ -231,7 +231,6 @@ impl Prepared {
 /// [`super::reduction`]).
 pub fn prepare(setup: &GfmdSetup) -> Result<Prepared> {
     let scene = &setup.scene;
-    scene.validate()?;
     match &setup.surface {
         Some(s) => {
             if !s.is_square() {

@@ -11,23 +11,25 @@ use crate::surface::spectrum::Spectrum;
 use serde::Serialize;
 use std::hash::{Hash, Hasher};
 
-/// Inputs of one evaluation.
+/// Inputs of one evaluation, in range: built by [`Scene::new`] or a preset
+/// ([`crate::input::preset::Preset::scene`]) and changed by the `with_*`/`set_*` setters or
+/// [`Scene::apply`], each of which validates what it changes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
     /// Height spectrum (metres).
-    pub spectrum: Spectrum,
+    pub(crate) spectrum: Spectrum,
     /// Contact modulus E* = E/(1−ν²) in Pa.
-    pub modulus: f64,
+    pub(crate) modulus: f64,
     /// Slab thickness t·q_r (dimensionless); `f64::INFINITY` = semi-infinite.
-    pub thickness_qr: f64,
+    pub(crate) thickness_qr: f64,
     /// Model variant.
-    pub model: Model,
+    pub(crate) model: Model,
     /// Reduced nominal pressure p* = p/(E*ḡ).
-    pub pressure: f64,
+    pub(crate) pressure: f64,
     /// Surface energy γ_s (J/m²); 0 = no adhesion.
-    pub gamma: f64,
+    pub(crate) gamma: f64,
     /// Range ρ of the adhesive interaction (m).
-    pub range: f64,
+    pub(crate) range: f64,
 }
 
 /// Allowed reduced pressures (the engine works in floating point far beyond this; the bounds
@@ -135,34 +137,14 @@ impl Scene {
     /// [`Error::Invalid`] for the first of [`Field::ContactModulus`], [`Field::Pressure`],
     /// [`Field::Thickness`], [`Field::SurfaceEnergy`], [`Field::Range`] or a model field that
     /// is out of range.
-    pub fn validate(&self) -> Result<()> {
-        check_in(
-            Field::ContactModulus,
-            self.modulus,
-            MODULUS_RANGE_PA.0,
-            MODULUS_RANGE_PA.1,
-        )?;
-        check_in(Field::Pressure, self.pressure, PRESSURE_RANGE.0, PRESSURE_RANGE.1)?;
-        if !(self.thickness_qr == f64::INFINITY || (THICKNESS_RANGE.0..=THICKNESS_RANGE.1).contains(&self.thickness_qr))
-        {
-            return Err(Error::invalid(Field::Thickness, self.thickness_qr, thickness_allowed()));
-        }
-        check_in(
-            Field::SurfaceEnergy,
-            self.gamma,
-            SURFACE_ENERGY_RANGE.0,
-            SURFACE_ENERGY_RANGE.1,
-        )?;
-        check_in(Field::Range, self.range, RANGE_RANGE_M.0, RANGE_RANGE_M.1)?;
+    pub(crate) fn validate(&self) -> Result<()> {
+        check_modulus(self.modulus)?;
+        check_pressure(self.pressure)?;
+        check_thickness(self.thickness_qr)?;
+        check_surface_energy(self.gamma)?;
+        check_range(self.range)?;
         self.model.validate()?;
-        if self.model.kind.is_fudge_variant() && (self.gamma > 0.0 || self.thickness_qr.is_finite()) {
-            // the variants' papers define neither adhesion nor slabs: refuse rather than guess
-            return Err(Error::Unsupported(format!(
-                "{} is defined for the adhesionless half-space only (surface energy 0, thickness inf)",
-                self.model.label()
-            )));
-        }
-        Ok(())
+        check_combination(&self.model, self.gamma, self.thickness_qr)
     }
 
     /// Thickness in metres (∞ for a semi-infinite body).
@@ -242,6 +224,251 @@ impl Scene {
             },
         }
     }
+}
+
+/// Reading a scene's inputs (the fields are private: a scene is validated when it is built or
+/// changed, so every `Scene` in hand is in range).
+impl Scene {
+    /// Height spectrum (metres).
+    pub fn spectrum(&self) -> &Spectrum {
+        &self.spectrum
+    }
+
+    /// Contact modulus E* = E/(1−ν²) in Pa.
+    pub fn contact_modulus_pa(&self) -> f64 {
+        self.modulus
+    }
+
+    /// Slab thickness t·q_r (dimensionless); `f64::INFINITY` for a semi-infinite body.
+    pub fn thickness_qr(&self) -> f64 {
+        self.thickness_qr
+    }
+
+    /// The model variant [S-17].
+    pub fn model(&self) -> Model {
+        self.model
+    }
+
+    /// Reduced nominal pressure p* = p/(E*ḡ).
+    pub fn pressure(&self) -> f64 {
+        self.pressure
+    }
+
+    /// Surface energy γ_s (J/m²); 0 = no adhesion.
+    pub fn surface_energy_j_m2(&self) -> f64 {
+        self.gamma
+    }
+
+    /// Range ρ of the adhesive interaction (m).
+    pub fn range_m(&self) -> f64 {
+        self.range
+    }
+
+    /// Whether the scene has adhesion (γ_s > 0).
+    pub fn is_adhesive(&self) -> bool {
+        self.gamma > 0.0
+    }
+
+    /// The same scene without adhesion (γ_s = 0): the adhesionless twin every adhesive
+    /// result is compared with. Always valid.
+    pub fn without_adhesion(&self) -> Scene {
+        Scene {
+            gamma: 0.0,
+            ..self.clone()
+        }
+    }
+
+    /// The same scene on a semi-infinite body (t·q_r = ∞). Always valid.
+    pub fn half_space(&self) -> Scene {
+        Scene {
+            thickness_qr: f64::INFINITY,
+            ..self.clone()
+        }
+    }
+}
+
+/// Changing one input: each setter checks its value and the combinations it takes part in,
+/// and leaves the scene unchanged on an error. `with_*` consume and return the scene (for
+/// chains), `set_*` change it in place. Several inputs at once: [`Scene::apply`].
+impl Scene {
+    /// With the reduced nominal pressure p*.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::Pressure`] outside [`PRESSURE_RANGE`].
+    pub fn with_pressure(mut self, p: f64) -> Result<Scene> {
+        self.set_pressure(p)?;
+        Ok(self)
+    }
+
+    /// Sets the reduced nominal pressure p* (errors as [`Scene::with_pressure`]).
+    ///
+    /// # Errors
+    /// As [`Scene::with_pressure`].
+    pub fn set_pressure(&mut self, p: f64) -> Result<()> {
+        check_pressure(p)?;
+        self.pressure = p;
+        Ok(())
+    }
+
+    /// With the slab thickness t·q_r (`f64::INFINITY`: semi-infinite).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::Thickness`] outside [`THICKNESS_RANGE`] (and not ∞);
+    /// [`Error::Unsupported`] for a finite slab with a model defined on the half-space only.
+    pub fn with_thickness_qr(mut self, t: f64) -> Result<Scene> {
+        self.set_thickness_qr(t)?;
+        Ok(self)
+    }
+
+    /// Sets t·q_r.
+    ///
+    /// # Errors
+    /// As [`Scene::with_thickness_qr`].
+    pub fn set_thickness_qr(&mut self, t: f64) -> Result<()> {
+        check_thickness(t)?;
+        check_combination(&self.model, self.gamma, t)?;
+        self.thickness_qr = t;
+        Ok(())
+    }
+
+    /// With the surface energy γ_s in J/m² (0: no adhesion).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::SurfaceEnergy`] outside [`SURFACE_ENERGY_RANGE`];
+    /// [`Error::Unsupported`] for adhesion with a model that defines none.
+    pub fn with_surface_energy_j_m2(mut self, gamma: f64) -> Result<Scene> {
+        self.set_surface_energy_j_m2(gamma)?;
+        Ok(self)
+    }
+
+    /// Sets γ_s in J/m².
+    ///
+    /// # Errors
+    /// As [`Scene::with_surface_energy_j_m2`].
+    pub fn set_surface_energy_j_m2(&mut self, gamma: f64) -> Result<()> {
+        check_surface_energy(gamma)?;
+        check_combination(&self.model, gamma, self.thickness_qr)?;
+        self.gamma = gamma;
+        Ok(())
+    }
+
+    /// With the range ρ of the adhesive interaction in m.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::Range`] outside [`RANGE_RANGE_M`].
+    pub fn with_range_m(mut self, range: f64) -> Result<Scene> {
+        self.set_range_m(range)?;
+        Ok(self)
+    }
+
+    /// Sets ρ in m.
+    ///
+    /// # Errors
+    /// As [`Scene::with_range_m`].
+    pub fn set_range_m(&mut self, range: f64) -> Result<()> {
+        check_range(range)?;
+        self.range = range;
+        Ok(())
+    }
+
+    /// With the contact modulus E* in Pa.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for [`Field::ContactModulus`] outside [`MODULUS_RANGE_PA`].
+    pub fn with_contact_modulus_pa(mut self, modulus: f64) -> Result<Scene> {
+        self.set_contact_modulus_pa(modulus)?;
+        Ok(self)
+    }
+
+    /// Sets E* in Pa.
+    ///
+    /// # Errors
+    /// As [`Scene::with_contact_modulus_pa`].
+    pub fn set_contact_modulus_pa(&mut self, modulus: f64) -> Result<()> {
+        check_modulus(modulus)?;
+        self.modulus = modulus;
+        Ok(())
+    }
+
+    /// With the model variant.
+    ///
+    /// # Errors
+    /// A model field out of range; [`Error::Unsupported`] for a model defined on the
+    /// adhesionless half-space only on an adhesive or slab scene.
+    pub fn with_model(mut self, model: Model) -> Result<Scene> {
+        self.set_model(model)?;
+        Ok(self)
+    }
+
+    /// Sets the model variant.
+    ///
+    /// # Errors
+    /// As [`Scene::with_model`].
+    pub fn set_model(&mut self, model: Model) -> Result<()> {
+        model.validate()?;
+        check_combination(&model, self.gamma, self.thickness_qr)?;
+        self.model = model;
+        Ok(())
+    }
+
+    /// With the height spectrum (a spectrum is validated when it is built).
+    ///
+    /// # Errors
+    /// None today; kept a `Result` like every setter.
+    pub fn with_spectrum(mut self, spectrum: Spectrum) -> Result<Scene> {
+        self.set_spectrum(spectrum)?;
+        Ok(self)
+    }
+
+    /// Sets the height spectrum.
+    ///
+    /// # Errors
+    /// As [`Scene::with_spectrum`].
+    pub fn set_spectrum(&mut self, spectrum: Spectrum) -> Result<()> {
+        self.spectrum = spectrum;
+        Ok(())
+    }
+}
+
+fn check_pressure(p: f64) -> Result<()> {
+    check_in(Field::Pressure, p, PRESSURE_RANGE.0, PRESSURE_RANGE.1).map(|_| ())
+}
+
+fn check_thickness(t: f64) -> Result<()> {
+    if t == f64::INFINITY || (THICKNESS_RANGE.0..=THICKNESS_RANGE.1).contains(&t) {
+        Ok(())
+    } else {
+        Err(Error::invalid(Field::Thickness, t, thickness_allowed()))
+    }
+}
+
+fn check_surface_energy(gamma: f64) -> Result<()> {
+    check_in(
+        Field::SurfaceEnergy,
+        gamma,
+        SURFACE_ENERGY_RANGE.0,
+        SURFACE_ENERGY_RANGE.1,
+    )
+    .map(|_| ())
+}
+
+fn check_range(range: f64) -> Result<()> {
+    check_in(Field::Range, range, RANGE_RANGE_M.0, RANGE_RANGE_M.1).map(|_| ())
+}
+
+fn check_modulus(modulus: f64) -> Result<()> {
+    check_in(Field::ContactModulus, modulus, MODULUS_RANGE_PA.0, MODULUS_RANGE_PA.1).map(|_| ())
+}
+
+/// The variants of the literature define neither adhesion nor slabs: refuse rather than guess.
+fn check_combination(model: &Model, gamma: f64, thickness_qr: f64) -> Result<()> {
+    if model.kind.is_fudge_variant() && (gamma > 0.0 || thickness_qr.is_finite()) {
+        return Err(Error::Unsupported(format!(
+            "{} is defined for the adhesionless half-space only (surface energy 0, thickness inf)",
+            model.label()
+        )));
+    }
+    Ok(())
 }
 
 fn finite_or_none(x: f64) -> Option<f64> {

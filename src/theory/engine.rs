@@ -205,7 +205,6 @@ pub fn evaluate_continued(
     path: &[&Evaluation],
     cancel: Option<&std::sync::atomic::AtomicBool>,
 ) -> Result<Evaluation> {
-    scene.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
     if scene.gamma > 0.0 {

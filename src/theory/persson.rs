@@ -258,7 +258,6 @@ fn solve_xu24(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
 /// Solves the adhesionless theory for a scene (γ is ignored: callers route adhesive scenes
 /// to the adhesion solver).
 pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
-    scene.validate()?;
     if scene.model.kind == crate::input::model::ModelKind::Xu24 {
         return solve_xu24(scene, acc);
     }

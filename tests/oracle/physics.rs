@@ -48,7 +48,7 @@ pub struct Physics {
 impl Physics {
     /// Reads the scene's parameters (self-affine spectra only).
     pub fn from_scene(s: &Scene) -> Physics {
-        let Spectrum::SelfAffine(sa) = &s.spectrum else {
+        let Spectrum::SelfAffine(sa) = &s.spectrum() else {
             panic!("the oracle handles self-affine spectra only");
         };
         let q_r = 2.0 * PI / sa.lambda_r;
@@ -58,20 +58,20 @@ impl Physics {
             q_s: 2.0 * PI / sa.lambda_s,
             hurst: sa.hurst,
             c0: sa.c0,
-            modulus: s.modulus,
-            gamma: s.gamma,
-            range: s.range,
-            pressure: s.pressure,
-            thickness: if s.thickness_qr.is_infinite() {
+            modulus: s.contact_modulus_pa(),
+            gamma: s.surface_energy_j_m2(),
+            range: s.range_m(),
+            pressure: s.pressure(),
+            thickness: if s.thickness_qr().is_infinite() {
                 f64::INFINITY
             } else {
-                s.thickness_qr / q_r
+                s.thickness_qr() / q_r
             },
-            c1: s.model.c1,
-            c2: s.model.c2,
-            alpha: s.model.alpha,
-            k_griffith: s.model.k_griffith,
-            cap: s.model.cap,
+            c1: s.model().c1,
+            c2: s.model().c2,
+            alpha: s.model().alpha,
+            k_griffith: s.model().k_griffith,
+            cap: s.model().cap,
             gbar: 1.0,
         };
         p.gbar = p.integrate_panels(|q| q * q).sqrt();

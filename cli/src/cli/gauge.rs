@@ -101,8 +101,7 @@ pub fn resolve_reference(
     let mut r = match args.reference.as_str() {
         "eq18" => {
             // [S-18] is the adhesionless half-space
-            scene.gamma = 0.0;
-            scene.thickness_qr = f64::INFINITY;
+            *scene = scene.without_adhesion().half_space();
             reference::eq18(
                 args.from.unwrap_or(1e-3),
                 args.to.unwrap_or(1.0),
@@ -143,7 +142,7 @@ pub fn resolve_reference(
         }
         r.points.retain(|o| keep.contains(&o.observable));
     }
-    scene.validate()?;
+
     Ok((r, gfmd))
 }
 
@@ -253,17 +252,17 @@ fn table(r: &Reference, f: &Fit, saved: Option<&str>) -> String {
 /// self-affine spectrum (the reduced one of `--reference gfmd`) and `model`.
 pub fn save_preset(base: &Preset, scene: &Scene, model: &Model, path: &Path) -> Result<()> {
     let mut p = base.clone();
-    p.load.pressure = scene.pressure;
-    p.load.thickness_qr = scene.thickness_qr;
-    p.material.contact_modulus_pa = scene.modulus;
-    p.adhesion.surface_energy_j_m2 = scene.gamma;
-    p.adhesion.range_m = scene.range;
-    if let asperity::surface::spectrum::Spectrum::SelfAffine(sa) = &scene.spectrum {
+    p.load.pressure = scene.pressure();
+    p.load.thickness_qr = scene.thickness_qr();
+    p.material.contact_modulus_pa = scene.contact_modulus_pa();
+    p.adhesion.surface_energy_j_m2 = scene.surface_energy_j_m2();
+    p.adhesion.range_m = scene.range_m();
+    if let asperity::surface::spectrum::Spectrum::SelfAffine(sa) = &scene.spectrum() {
         p.surface.system_size_m = sa.system_size;
         p.surface.rolloff_wavelength_m = sa.lambda_r;
         p.surface.short_wavelength_m = sa.lambda_s;
         p.surface.hurst = sa.hurst;
-        p.surface.rms_gradient = Some(scene.spectrum.rms_gradient());
+        p.surface.rms_gradient = Some(scene.spectrum().rms_gradient());
         p.surface.rms_height_m = None;
     }
     p.model = ModelSpec::of_model(model);
@@ -429,7 +428,7 @@ pub fn compare(args: &CompareArgs) -> Result<()> {
                 "1, 2, 3, 4, yp08, xu24 (a custom model comes in with --fitted PRESET)",
             ));
         }
-        let m = Model::of_kind(kind, &scene.model)?;
+        let m = Model::of_kind(kind, &scene.model())?;
         models.push((m.label(), m));
     }
     for p in &args.fitted {

@@ -101,7 +101,7 @@ pub fn resolve(
         None if grid.n() > DEFAULT_MAX_GRID => grid = grid.with_grid(DEFAULT_MAX_GRID)?,
         None => {}
     }
-    let p = scene.pressure;
+    let p = scene.pressure();
     let spec = GfmdReferenceSpec {
         loads: SweepSpec {
             from: loads.0.unwrap_or(p / DEFAULT_SPAN),
@@ -167,8 +167,11 @@ pub fn resolve(
     }
     let out = out?;
     if let Some(path) = &args.save_reference {
-        std::fs::write(path, gfmd_reference::to_csv(&out.rows, out.scene.gamma > 0.0))
-            .map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))?;
+        std::fs::write(
+            path,
+            gfmd_reference::to_csv(&out.rows, out.scene.surface_energy_j_m2() > 0.0),
+        )
+        .map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))?;
     }
     *scene = out.scene.clone();
     Ok(out)

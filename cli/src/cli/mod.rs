@@ -13,6 +13,7 @@ pub mod gfmd;
 use asperity::error::Field;
 use asperity::error::{Error, Result};
 use asperity::input::model::{Model, ModelKind};
+use asperity::input::overrides::Overrides;
 use asperity::input::preset::{self, Preset};
 use asperity::input::scene::Scene;
 use asperity::input::scene::ThicknessQr;
@@ -172,8 +173,8 @@ impl SceneArgs {
     /// Loads the preset and applies the overrides. Returns the preset too.
     pub fn resolve(&self, pressure: Option<f64>) -> Result<(Preset, Scene)> {
         let preset = Preset::resolve(&self.preset)?;
-        let mut scene = preset.scene()?;
-        let mut model = scene.model;
+        let scene = preset.scene()?;
+        let mut model = scene.model();
         if let Some(m) = &self.model {
             model = match m.parse::<ModelKind>()? {
                 ModelKind::Custom => Model {
@@ -214,20 +215,20 @@ impl SceneArgs {
             }
             model = Model::fudge(model.kind, g)?;
         }
-        scene.model = model;
-        if let Some(t) = &self.thickness {
-            scene.thickness_qr = t.parse::<ThicknessQr>()?.0;
-        }
-        if let Some(g) = self.gamma {
-            scene.gamma = g;
-        }
-        if let Some(p) = pressure {
-            scene.pressure = p;
-        }
-        if let Some(spectrum) = self.source.spectrum()? {
-            scene.spectrum = spectrum;
-        }
-        scene.validate()?;
+        let overrides = Overrides {
+            model: Some(model),
+            thickness_qr: self
+                .thickness
+                .as_deref()
+                .map(str::parse::<ThicknessQr>)
+                .transpose()?
+                .map(|t| t.0),
+            surface_energy_j_m2: self.gamma,
+            pressure,
+            spectrum: self.source.spectrum()?,
+            ..Overrides::default()
+        };
+        let scene = scene.apply(&overrides)?;
         Ok((preset, scene))
     }
 }

@@ -206,7 +206,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
             let rows = sw
                 .rows
                 .iter()
-                .map(|r| Row::new(*r, scene.thickness_qr, scene.gamma))
+                .map(|r| Row::new(*r, scene.thickness_qr(), scene.surface_energy_j_m2()))
                 .collect();
             Ok(SweepOutput {
                 preset: preset.name.clone(),
@@ -248,7 +248,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
             let rows: Vec<Row> = points
                 .iter()
                 .map(|pt| {
-                    let mut r = SweepRow::empty(scene.pressure);
+                    let mut r = SweepRow::empty(scene.pressure());
                     match &pt.result {
                         Ok(e) => {
                             r.a_r = e.stats.a_r;
@@ -283,7 +283,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                             notes.push(format!("value {:e}: {e}", pt.value));
                         }
                     }
-                    Row::new(r, pt.scene.thickness_qr, pt.scene.gamma)
+                    Row::new(r, pt.scene.thickness_qr(), pt.scene.surface_energy_j_m2())
                 })
                 .collect();
             let note = (!notes.is_empty()).then(|| {
@@ -302,7 +302,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                 evaluations: points.len(),
                 full_contact_pressure: asperity::theory::gap::full_contact_pressure(&first),
                 monotone: true,
-                failed_loads: failed.iter().map(|_| scene.pressure).collect(),
+                failed_loads: failed.iter().map(|_| scene.pressure()).collect(),
                 failed_values: failed,
                 note,
                 jump_in_pressure: None,

@@ -119,11 +119,7 @@ fn sweep_curve(spec: &FigureSpec, scene: &Scene) -> Result<Vec<DataPoint>> {
             // each load on its own, as `run --pressure P` computes it
             let results: Vec<Result<Evaluation>> = xs
                 .par_iter()
-                .map(|&p| {
-                    let mut s = scene.clone();
-                    s.pressure = p;
-                    engine::evaluate(&s, &opts)
-                })
+                .map(|&p| engine::evaluate(&scene.clone().with_pressure(p)?, &opts))
                 .collect();
             collect_points(spec, &xs, results)
         }
@@ -151,7 +147,7 @@ fn sweep_curve(spec: &FigureSpec, scene: &Scene) -> Result<Vec<DataPoint>> {
                             pt.value,
                             y_of(
                                 spec.y,
-                                scene.pressure,
+                                scene.pressure(),
                                 s.a_r,
                                 s.mean_contact_stress,
                                 s.contact_stress_variance,
@@ -223,12 +219,11 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
         .curve
         .iter()
         .map(|c| {
-            let mut s = curve_scene(&preset, &spec.overrides(), &c.overrides())?;
-            if let Some(v) = &c.variant {
-                s.model = Model::of_kind(v.parse()?, &s.model)?;
-                s.validate()?;
+            let s = curve_scene(&preset, &spec.overrides(), &c.overrides())?;
+            match &c.variant {
+                Some(v) => s.clone().with_model(Model::of_kind(v.parse()?, &s.model())?),
+                None => Ok(s),
             }
-            Ok(s)
         })
         .collect::<Result<_>>()?;
     let mut widths: Vec<(u8, f64, f64)> = Vec::new(); // (model, p*, Δ*) for the asymptotes
@@ -240,8 +235,8 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
                         "{}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}, Δ* = {:.4}",
                         c.label, e.stats.a_r, e.stats.mean_contact_stress, e.stats.contact_stress_variance, e.width
                     ));
-                    if let Some(n) = scene.model.number() {
-                        widths.push((n, scene.pressure, e.width));
+                    if let Some(n) = scene.model().number() {
+                        widths.push((n, scene.pressure(), e.width));
                     }
                     pts
                 }
@@ -367,7 +362,7 @@ fn gfmd_series(
     if spec.x == XAxis::Stress {
         let mut done: Vec<(f64, f64, f64)> = Vec::new();
         for (c, s) in spec.curve.iter().zip(scenes) {
-            let key = (s.pressure, s.thickness_qr, s.gamma);
+            let key = (s.pressure(), s.thickness_qr(), s.surface_energy_j_m2());
             if !spec.gfmd || done.contains(&key) {
                 continue;
             }
@@ -414,22 +409,22 @@ fn gfmd_series(
     let mut grid = 0;
     let mut map_note = String::new();
     for &x in &spec.gfmd_at {
-        let mut s = base.clone();
-        match spec.x {
-            XAxis::Pressure => s.pressure = x,
-            XAxis::Thickness => s.thickness_qr = x,
-            XAxis::Gamma => s.gamma = x,
-            XAxis::Stress => {}
-        }
-        match gfmd_run(preset, &s, choice) {
-            Ok(r) => {
+        let s = match spec.x {
+            XAxis::Pressure => base.clone().with_pressure(x),
+            XAxis::Thickness => base.clone().with_thickness_qr(x),
+            XAxis::Gamma => base.clone().with_surface_energy_j_m2(x),
+            XAxis::Stress => Ok(base.clone()),
+        };
+        let run = s.and_then(|s| Ok((gfmd_run(preset, &s, choice)?, s)));
+        match run {
+            Ok((r, s)) => {
                 grid = r.grid;
                 map_note = map_description(&r);
                 let st = &r.stats;
                 let gap = Some(r.mean_gap_rel);
                 let y = y_of(
                     spec.y,
-                    s.pressure,
+                    s.pressure(),
                     st.a_r,
                     st.mean_contact_stress,
                     st.contact_stress_variance,
@@ -442,7 +437,7 @@ fn gfmd_series(
                     let st = &t.stats;
                     y_of(
                         spec.y,
-                        s.pressure,
+                        s.pressure(),
                         st.a_r,
                         st.mean_contact_stress,
                         st.contact_stress_variance,
@@ -476,7 +471,7 @@ fn gfmd_series(
     });
     if spec.y != YAxis::MeanGapRel {
         data.series.push(DataSeries {
-            name: format!("theory on the GFMD map ({})", base.model.label()),
+            name: format!("theory on the GFMD map ({})", base.model().label()),
             style: SeriesStyle::Points,
             points: on_map,
         });

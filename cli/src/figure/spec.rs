@@ -349,21 +349,17 @@ pub fn curve_scene(
     fig: &Overrides,
     curve: &Overrides,
 ) -> asperity::error::Result<asperity::input::scene::Scene> {
-    let mut s = preset.scene()?;
-    for o in [fig, curve] {
-        if let Some(m) = o.model {
-            s.model = asperity::input::model::Model::named(m)?;
-        }
-        if let Some(p) = o.pressure {
-            s.pressure = p;
-        }
-        if let Some(t) = o.thickness_qr {
-            s.thickness_qr = t;
-        }
-        if let Some(g) = o.gamma {
-            s.gamma = g;
-        }
-    }
-    s.validate()?;
-    Ok(s)
+    // the curve's values over the figure's, validated once
+    let pick = |f: fn(&Overrides) -> Option<f64>| f(curve).or(f(fig));
+    let model = match curve.model.or(fig.model) {
+        Some(m) => Some(asperity::input::model::Model::named(m)?),
+        None => None,
+    };
+    preset.scene()?.apply(&asperity::input::overrides::Overrides {
+        model,
+        pressure: pick(|o| o.pressure),
+        thickness_qr: pick(|o| o.thickness_qr),
+        surface_energy_j_m2: pick(|o| o.gamma),
+        ..Default::default()
+    })
 }

@@ -46,7 +46,7 @@ fn g_starts_and_cancels_a_gfmd_run() {
     key(&mut a, KeyCode::Char('g'));
     let (id, _, _) = a.take_gfmd_request().unwrap();
     let view = GfmdView {
-        pressure: a.scene.pressure,
+        pressure: a.scene.pressure(),
         a_r: 0.02,
         mean_contact_stress: 0.5,
         gap_rel: 1.5,
@@ -104,16 +104,16 @@ fn log_and_linear_steps_are_on_a_grid() {
 fn pressure_steps_round_trip_exactly() {
     let mut a = app();
     assert_eq!(a.selected_param(), Param::Pressure);
-    let p0 = a.scene.pressure;
+    let p0 = a.scene.pressure();
     key(&mut a, KeyCode::Right);
-    let p1 = a.scene.pressure;
+    let p1 = a.scene.pressure();
     assert!(p1 > p0 && p1 < p0 * 1.2);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.pressure, p0);
+    assert_eq!(a.scene.pressure(), p0);
     a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
-    assert!((a.scene.pressure / p0 - 10f64.powf(0.25)).abs() < 1e-12);
+    assert!((a.scene.pressure() / p0 - 10f64.powf(0.25)).abs() < 1e-12);
     key(&mut a, KeyCode::PageDown);
-    assert_eq!(a.scene.pressure, p0);
+    assert_eq!(a.scene.pressure(), p0);
 }
 
 #[test]
@@ -121,20 +121,20 @@ fn pressure_steps_return_to_the_presets_value() {
     // system-2's p* = 0.005 is not on the 10^(k/20) grid: → → ← gave 0.004467
     let p = Preset::resolve("system-2").unwrap();
     let mut a = App::new("system-2", p).unwrap();
-    assert_eq!(a.scene.pressure, 0.005);
+    assert_eq!(a.scene.pressure(), 0.005);
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Left);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.pressure, 0.005);
+    assert_eq!(a.scene.pressure(), 0.005);
     key(&mut a, KeyCode::Right);
-    assert!((a.scene.pressure / 0.005 - 10f64.powf(0.05)).abs() < 1e-12);
+    assert!((a.scene.pressure() / 0.005 - 10f64.powf(0.05)).abs() < 1e-12);
     // the coarse grid contains the preset's value too
     a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
-    assert_eq!(a.scene.pressure, 0.005);
+    assert_eq!(a.scene.pressure(), 0.005);
     a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
     a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
-    assert_eq!(a.scene.pressure, 0.005);
+    assert_eq!(a.scene.pressure(), 0.005);
 }
 
 #[test]
@@ -231,16 +231,16 @@ fn thickness_reaches_infinity_and_back() {
     let mut a = app();
     key(&mut a, KeyCode::Down); // t·q_r
     assert_eq!(a.selected_param(), Param::Thickness);
-    assert!(a.scene.thickness_qr.is_infinite());
+    assert!(a.scene.thickness_qr().is_infinite());
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.thickness_qr, THICKNESS_KEYS.1);
+    assert_eq!(a.scene.thickness_qr(), THICKNESS_KEYS.1);
     key(&mut a, KeyCode::Right);
-    assert!(a.scene.thickness_qr.is_infinite());
+    assert!(a.scene.thickness_qr().is_infinite());
     typed(&mut a, "0.5");
-    assert_eq!(a.scene.thickness_qr, 0.5);
+    assert_eq!(a.scene.thickness_qr(), 0.5);
     key(&mut a, KeyCode::Enter);
     typed(&mut a, "inf");
-    assert!(a.scene.thickness_qr.is_infinite());
+    assert!(a.scene.thickness_qr().is_infinite());
 }
 
 #[test]
@@ -250,37 +250,37 @@ fn gamma_zero_is_off() {
     key(&mut a, KeyCode::Down);
     assert_eq!(a.selected_param(), Param::Gamma);
     // the preset's own surface energy is the default
-    assert_eq!(a.scene.gamma, 0.05);
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.05);
     for _ in 0..40 {
         key(&mut a, KeyCode::Left);
     }
-    assert_eq!(a.scene.gamma, 0.0);
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.0);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.gamma, 0.0);
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.0);
     key(&mut a, KeyCode::Right);
-    assert!(a.scene.gamma > 0.0);
+    assert!(a.scene.surface_energy_j_m2() > 0.0);
 }
 
 #[test]
 fn models_cycle_and_custom_rows_appear() {
     let mut a = app();
-    assert_eq!(a.scene.model.number(), Some(3));
+    assert_eq!(a.scene.model().number(), Some(3));
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model.number(), Some(4));
+    assert_eq!(a.scene.model().number(), Some(4));
     assert_eq!(a.params().len(), 5);
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model.kind, ModelKind::Custom);
-    assert_eq!(a.scene.model.c1, 0.65);
+    assert_eq!(a.scene.model().kind, ModelKind::Custom);
+    assert_eq!(a.scene.model().c1, 0.65);
     assert_eq!(a.params().len(), 10);
     // edit c1 until W < 0 is refused with a message
     a.selected = a.params().iter().position(|p| *p == Param::C1).unwrap();
     for _ in 0..10 {
         a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
     }
-    assert!(a.scene.model.c1 <= 1.0);
+    assert!(a.scene.model().c1 <= 1.0);
     assert!(a.message.as_ref().is_some_and(|m| m.error), "{:?}", a.message);
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model.number(), Some(1));
+    assert_eq!(a.scene.model().number(), Some(1));
     assert!(a.selected < a.params().len());
 }
 
@@ -295,12 +295,12 @@ fn typing_bad_values_keeps_the_scene_and_explains() {
     typed(&mut a, "abc");
     assert_eq!(a.scene, before);
     typed(&mut a, "1e-3");
-    assert_eq!(a.scene.pressure, 1e-3);
+    assert_eq!(a.scene.pressure(), 1e-3);
     // Esc cancels typing without quitting
     key(&mut a, KeyCode::Char('5'));
     key(&mut a, KeyCode::Esc);
     assert!(!a.quit && a.edit.is_none());
-    assert_eq!(a.scene.pressure, 1e-3);
+    assert_eq!(a.scene.pressure(), 1e-3);
 }
 
 #[test]

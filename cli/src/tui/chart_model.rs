@@ -101,7 +101,7 @@ pub struct ChartModel {
 
 pub fn theory_role(app: &App) -> Role {
     if app.all_models {
-        Role::Model(slot(&app.scene.model))
+        Role::Model(slot(&app.scene.model()))
     } else {
         Role::Theory
     }
@@ -109,7 +109,7 @@ pub fn theory_role(app: &App) -> Role {
 
 pub fn theory_name(app: &App) -> String {
     if app.all_models {
-        slot_name(slot(&app.scene.model))
+        slot_name(slot(&app.scene.model()))
     } else {
         "theory".into()
     }
@@ -120,9 +120,9 @@ pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T
     if !app.all_models {
         return Vec::new();
     }
-    overlay_models(&app.scene.model)
+    overlay_models(&app.scene.model())
         .into_iter()
-        .filter(|m| slot(m) != slot(&app.scene.model))
+        .filter(|m| slot(m) != slot(&app.scene.model()))
         .filter_map(|m| get(app, &m).map(|d| (slot(&m), d)))
         .collect()
 }
@@ -191,11 +191,11 @@ pub fn references<'a>(
 pub fn reference_name(app: &App, r: &asperity::input::preset::ReferencePoint, with_thickness: bool) -> String {
     let mut cond = Vec::new();
     let gamma = r.gamma.unwrap_or(app.preset.adhesion.surface_energy_j_m2);
-    if gamma != app.scene.gamma {
+    if gamma != app.scene.surface_energy_j_m2() {
         cond.push(format!("γ_s={}", plot::format_number(gamma)));
     }
     let t = r.thickness_qr.unwrap_or(f64::INFINITY);
-    if with_thickness && t.to_bits() != app.scene.thickness_qr.to_bits() {
+    if with_thickness && t.to_bits() != app.scene.thickness_qr().to_bits() {
         cond.push(format!("t·q_r={}", plot::format_number(t)));
     }
     if let Some(n) = r.model {

@@ -41,7 +41,7 @@ pub fn build(app: &App, kind: ChartKind) -> ChartModel {
 }
 
 fn pr_linear(app: &App) -> ChartModel {
-    let title = format!("Pr(σ*) at p* = {}", super::words::sig(app.scene.pressure, 3));
+    let title = format!("Pr(σ*) at p* = {}", super::words::sig(app.scene.pressure(), 3));
     let mut m = base(ChartKind::Pr, title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, Scale::Linear);
     let Some(p) = current_point(app) else {
         m.empty = Some(empty_message(app));
@@ -121,7 +121,7 @@ fn positive(pr: &[(f64, f64)]) -> Vec<(f64, f64)> {
 }
 
 fn pr_loglog(app: &App) -> ChartModel {
-    let title = format!("Pr(σ*) log–log at p* = {}", super::words::sig(app.scene.pressure, 3));
+    let title = format!("Pr(σ*) log–log at p* = {}", super::words::sig(app.scene.pressure(), 3));
     let mut m = base(ChartKind::PrLog, title, "σ* = σ/E*ḡ", "Pr", Scale::Log10, Scale::Log10);
     m.clip_y = true;
     let Some(p) = current_point(app) else {
@@ -145,9 +145,9 @@ fn pr_loglog(app: &App) -> ChartModel {
             draw: Draw::Line,
         });
     }
-    if app.scene.gamma == 0.0 && p.width > 0.0 {
+    if app.scene.surface_energy_j_m2() == 0.0 && p.width > 0.0 {
         // [S] Fig. 3: Pr ∝ σ* for σ* → 0 and the Gaussian tail
-        let (pp, d) = (app.scene.pressure, p.width);
+        let (pp, d) = (app.scene.pressure(), p.width);
         let xs: Vec<f64> = theory.iter().map(|q| q.0).collect();
         // each where it applies: σ* below Δ, and above Δ/2 (they coincide for σ* ≪ Δ)
         m.series.push(Series {
@@ -231,7 +231,7 @@ mod tests {
             let m = build(&a, k);
             assert_eq!(m.xb, want, "{k:?}");
             // the p* marker stays
-            assert_eq!(m.vlines[0].x, a.scene.pressure, "{k:?}");
+            assert_eq!(m.vlines[0].x, a.scene.pressure(), "{k:?}");
             assert!(m.series.iter().any(|s| s.role == Role::Current), "{k:?}");
         }
     }

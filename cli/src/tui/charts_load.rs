@@ -70,7 +70,7 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
             draw: Draw::Points,
         });
     }
-    let p = app.scene.pressure;
+    let p = app.scene.pressure();
     add_current(&mut m, p, current_point(app).map(|pt| y_of(p, pt.a_r)));
     let (_, yb) = data_bounds(&m);
     m.xb = load_x(app);
@@ -185,7 +185,7 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
     } else {
         current_point(app).map(|p| p.mean_contact_stress)
     };
-    add_current(&mut m, app.scene.pressure, y);
+    add_current(&mut m, app.scene.pressure(), y);
     let (_, yb) = data_bounds(&m);
     m.xb = load_x(app);
     let yb = yb.unwrap_or([0.0, 1.0]);
@@ -199,7 +199,7 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
 }
 
 pub fn thickness(app: &App) -> ChartModel {
-    let title = format!("a_r(t·q_r) at p* = {}", super::words::sig(app.scene.pressure, 3));
+    let title = format!("a_r(t·q_r) at p* = {}", super::words::sig(app.scene.pressure(), 3));
     let mut m = base(ChartKind::Thickness, title, "t·q_r", "a_r", Scale::Log10, Scale::Linear);
     let Some(td) = app.thickness.as_ref().and_then(|r| r.as_ref().ok()) else {
         m.empty = Some(match app.thickness.as_ref() {
@@ -250,7 +250,7 @@ pub fn thickness(app: &App) -> ChartModel {
         let Some(t) = r.thickness_qr.filter(|t| t.is_finite()) else {
             continue;
         };
-        if (r.pressure / app.scene.pressure - 1.0).abs() > 1e-9 {
+        if (r.pressure / app.scene.pressure() - 1.0).abs() > 1e-9 {
             continue;
         }
         let name = reference_name(app, r, false);
@@ -265,7 +265,7 @@ pub fn thickness(app: &App) -> ChartModel {
         }
     }
     m.series.extend(refs);
-    let t = app.scene.thickness_qr;
+    let t = app.scene.thickness_qr();
     if t.is_finite() && t >= t0 && t <= t1 {
         add_current(&mut m, t, current_point(app).map(|p| p.a_r));
     }

@@ -500,7 +500,7 @@ mod tests {
             .unwrap()
             .scene()
             .unwrap();
-        scene.gamma = 0.0;
+        scene = scene.without_adhesion();
         let ev = asperity::theory::engine::evaluate(&scene, &asperity::theory::engine::Options::default()).unwrap();
         let pd = PointData::from_evaluation(&ev);
         assert_eq!(pd.a_r, ev.stats.a_r);

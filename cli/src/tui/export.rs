@@ -21,11 +21,11 @@ use std::path::Path;
 /// replaced).
 pub fn scene_preset(base: &Preset, scene: &Scene) -> Preset {
     let mut p = base.clone();
-    p.load.pressure = scene.pressure;
-    p.load.thickness_qr = scene.thickness_qr;
-    p.adhesion.surface_energy_j_m2 = scene.gamma;
-    p.adhesion.range_m = scene.range;
-    let m = scene.model;
+    p.load.pressure = scene.pressure();
+    p.load.thickness_qr = scene.thickness_qr();
+    p.adhesion.surface_energy_j_m2 = scene.surface_energy_j_m2();
+    p.adhesion.range_m = scene.range_m();
+    let m = scene.model();
     p.model = match m.kind {
         ModelKind::Custom => ModelSpec {
             variant: Variant::Name("custom".into()),
@@ -57,22 +57,22 @@ pub fn cell(x: f64) -> String {
 /// `# key: value` lines describing the scene, for the top of every exported CSV.
 pub fn scene_comment(app: &App, name: &str) -> String {
     let s = &app.scene;
-    let t = if s.thickness_qr.is_infinite() {
+    let t = if s.thickness_qr().is_infinite() {
         "inf".to_string()
     } else {
-        format!("{}", s.thickness_qr)
+        format!("{}", s.thickness_qr())
     };
     format!(
         "# asperity explorer export {name}\n# preset: {} ({})\n# model: {}\n# pressure: {}\n# thickness_qr: {t}\n\
          # gamma_j_m2: {}\n# range_m: {}\n# reduced units: stresses by E*g = {} Pa, gap by h_rms = {} m\n",
         app.preset.name,
         app.source,
-        s.model.label(),
-        s.pressure,
-        s.gamma,
-        s.range,
+        s.model().label(),
+        s.pressure(),
+        s.surface_energy_j_m2(),
+        s.range_m(),
         s.stress_unit(),
-        s.spectrum.rms_height()
+        s.spectrum().rms_height()
     )
 }
 
@@ -248,16 +248,16 @@ pub fn export_charts(app: &App) -> Result<Vec<String>> {
         })
         .ok_or_else(|| Error::Io("too many exports in this directory".into()))?;
     let sc = &app.scene;
-    let t = if sc.thickness_qr.is_infinite() {
+    let t = if sc.thickness_qr().is_infinite() {
         "∞".to_string()
     } else {
-        super::plot::format_number(sc.thickness_qr)
+        super::plot::format_number(sc.thickness_qr())
     };
     let note = format!(
         "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
         app.preset.name,
-        sc.model.label(),
-        super::plot::format_number(sc.gamma)
+        sc.model().label(),
+        super::plot::format_number(sc.surface_energy_j_m2())
     );
     let mut paths = Vec::new();
     for (k, m) in &models {
@@ -344,14 +344,15 @@ mod tests {
     fn exported_scene_loads_back() {
         let p = Preset::resolve("system-1").unwrap();
         let mut s = p.scene().unwrap();
-        s.pressure = 0.02;
-        s.thickness_qr = f64::INFINITY;
-        s.model = asperity::input::model::Model::custom(0.1, 0.2, 0.5, 1.5, true).unwrap();
+        s.set_pressure(0.02).unwrap();
+        s.set_thickness_qr(f64::INFINITY).unwrap();
+        s.set_model(asperity::input::model::Model::custom(0.1, 0.2, 0.5, 1.5, true).unwrap())
+            .unwrap();
         let text = toml::to_string(&scene_preset(&p, &s)).unwrap();
         let back = Preset::parse(&text, "export").unwrap().scene().unwrap();
         assert_eq!(back, s);
-        s.thickness_qr = 0.5;
-        s.model = asperity::input::model::Model::named(2).unwrap();
+        s.set_thickness_qr(0.5).unwrap();
+        s.set_model(asperity::input::model::Model::named(2).unwrap()).unwrap();
         let text = toml::to_string(&scene_preset(&p, &s)).unwrap();
         assert_eq!(Preset::parse(&text, "export").unwrap().scene().unwrap(), s);
     }

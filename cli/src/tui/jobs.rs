@@ -38,7 +38,7 @@ fn preview_options() -> Options {
 /// comparison when `compare`.
 pub fn evaluate_preview(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<PointData> {
     let ev = engine::evaluate_warm(scene, &preview_options(), None, Some(cancel))?;
-    let mut pd = PointData::at(&ev, scene.pressure);
+    let mut pd = PointData::at(&ev, scene.pressure());
     pd.error_estimate = f64::NAN;
     pd.preview = true;
     if compare {
@@ -49,7 +49,7 @@ pub fn evaluate_preview(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Re
 
 fn add_comparison(pd: &mut PointData, scene: &Scene) {
     let mut s0 = scene.clone();
-    s0.gamma = 0.0;
+    s0 = s0.without_adhesion();
     // the comparison curve is optional: an error only hides it
     if let Ok(ev0) = engine::evaluate(&s0, &point_options()) {
         pd.adhesionless = Some(data::pr_points(&ev0));
@@ -58,8 +58,8 @@ fn add_comparison(pd: &mut PointData, scene: &Scene) {
 
 pub fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<PointData> {
     let mut pd = match engine::evaluate_warm(scene, &point_options(), None, Some(cancel)) {
-        Ok(ev) => PointData::at(&ev, scene.pressure),
-        Err(e @ Error::NotConverged { .. }) if scene.gamma > 0.0 => {
+        Ok(ev) => PointData::at(&ev, scene.pressure()),
+        Err(e @ Error::NotConverged { .. }) if scene.surface_energy_j_m2() > 0.0 => {
             // the self-consistency may have converged while its error check did not (the edge
             // of a jump into contact): show it, without an error bar, and say why
             let opts = Options {
@@ -68,7 +68,7 @@ pub fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Resu
             };
             match engine::evaluate_warm(scene, &opts, None, Some(cancel)) {
                 Ok(ev) => {
-                    let mut pd = PointData::at(&ev, scene.pressure);
+                    let mut pd = PointData::at(&ev, scene.pressure());
                     pd.error_estimate = f64::NAN;
                     pd.branch.push_str(", no error bar");
                     pd.warning = Some(e.to_string());
@@ -80,7 +80,7 @@ pub fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Resu
         }
         Err(e) => return Err(e),
     };
-    if compare && scene.gamma > 0.0 {
+    if compare && scene.surface_energy_j_m2() > 0.0 {
         add_comparison(&mut pd, scene);
     }
     Ok(pd)
@@ -125,15 +125,15 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
     };
     let at = |th: f64, gamma: f64, warm: Option<&engine::Evaluation>| {
         let mut s = scene.clone();
-        s.thickness_qr = th;
-        s.gamma = gamma;
+        s.set_thickness_qr(th)?;
+        s.set_surface_energy_j_m2(gamma)?;
         engine::evaluate_warm(&s, &opts, warm, Some(cancel))
     };
     let mut a_r = Vec::with_capacity(t.len());
     // from thick to thin: the thick slab is the easier start
     let mut warm: Option<engine::Evaluation> = None;
     for &th in t.iter().rev() {
-        match at(th, scene.gamma, warm.as_ref()) {
+        match at(th, scene.surface_energy_j_m2(), warm.as_ref()) {
             Ok(ev) => {
                 a_r.push(ev.stats.a_r);
                 warm = Some(ev);
@@ -146,12 +146,12 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
         }
     }
     a_r.reverse();
-    let a_r_inf = match at(f64::INFINITY, scene.gamma, None) {
+    let a_r_inf = match at(f64::INFINITY, scene.surface_energy_j_m2(), None) {
         Ok(ev) => ev.stats.a_r,
         Err(Error::Cancelled) => return Err(Error::Cancelled),
         Err(_) => f64::NAN,
     };
-    let adhesionless = if scene.gamma > 0.0 {
+    let adhesionless = if scene.surface_energy_j_m2() > 0.0 {
         let mut v = Vec::with_capacity(t.len());
         for &th in &t {
             match at(th, 0.0, None) {
@@ -227,7 +227,7 @@ pub fn spawn_gfmd(
             // theory on the map's spectrum, for the a_r and ū charts
             let result = result.map(|r| {
                 let view = GfmdView::from_result(&r);
-                let p = setup.scene.pressure;
+                let p = setup.scene.pressure();
                 let spec = asperity::theory::sweep::SweepSpec {
                     from: (p / 3.0).max(1e-6),
                     to: (3.0 * p).min(1.0).max(p / 3.0 * 1.01),

@@ -14,23 +14,23 @@ use ratatui::Frame;
 
 fn param_value(app: &App, p: Param) -> String {
     let s = &app.scene;
-    let m = &s.model;
+    let m = &s.model();
     match p {
         Param::Preset => app.preset.name.clone(),
         Param::Model => m.label(),
-        Param::Pressure => sig(s.pressure, 4),
+        Param::Pressure => sig(s.pressure(), 4),
         Param::Thickness => {
-            if s.thickness_qr.is_infinite() {
+            if s.thickness_qr().is_infinite() {
                 "∞".into()
             } else {
-                sig(s.thickness_qr, 4)
+                sig(s.thickness_qr(), 4)
             }
         }
         Param::Gamma => {
-            if s.gamma == 0.0 {
+            if s.surface_energy_j_m2() == 0.0 {
                 "0 (off)".into()
             } else {
-                sig(s.gamma, 4)
+                sig(s.surface_energy_j_m2(), 4)
             }
         }
         Param::C1 => sig(m.c1, 4),
@@ -161,11 +161,11 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     let sc = &app.scene;
     lines.push(Line::from(Span::styled("─ scene ─", pal.dim())));
     for (k, v) in [
-        ("p", si(sc.pressure * sc.stress_unit(), "Pa")),
-        ("E*", si(sc.modulus, "Pa")),
-        ("h_rms", si(sc.spectrum.rms_height(), "m")),
+        ("p", si(sc.pressure() * sc.stress_unit(), "Pa")),
+        ("E*", si(sc.contact_modulus_pa(), "Pa")),
+        ("h_rms", si(sc.spectrum().rms_height(), "m")),
         ("ḡ", sig(sc.rms_gradient(), 4)),
-        ("λ_r/λ_s", sig(sc.spectrum.q_s() / sc.spectrum.q_r(), 4)),
+        ("λ_r/λ_s", sig(sc.spectrum().q_s() / sc.spectrum().q_r(), 4)),
     ] {
         lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
     }

@@ -55,7 +55,7 @@ impl Request {
     /// The scene with another model.
     pub fn with_model(&self, m: &Model) -> Scene {
         let mut s = self.scene.clone();
-        s.model = *m;
+        s.set_model(*m).unwrap();
         s
     }
 }
@@ -90,8 +90,7 @@ pub fn sweep_key(source: &str, scene: &Scene, range: (f64, f64)) -> CacheKey {
 
 /// The key of a thickness sweep: the scene without t·q_r, with p*.
 pub fn thickness_key(source: &str, scene: &Scene) -> CacheKey {
-    let mut s = scene.clone();
-    s.thickness_qr = f64::NAN;
+    let s = scene.half_space();
     key_of(source, |h| {
         2u8.hash(h);
         s.hash(h);

@@ -172,12 +172,12 @@ pub enum GfmdState {
 
 /// Whether two scenes describe the same physical system (GFMD does not depend on the model).
 pub(crate) fn same_system(a: &Scene, b: &Scene) -> bool {
-    a.spectrum == b.spectrum
-        && a.modulus == b.modulus
-        && a.pressure == b.pressure
-        && a.thickness_qr.to_bits() == b.thickness_qr.to_bits()
-        && a.gamma == b.gamma
-        && a.range == b.range
+    a.spectrum() == b.spectrum()
+        && a.contact_modulus_pa() == b.contact_modulus_pa()
+        && a.pressure() == b.pressure()
+        && a.thickness_qr().to_bits() == b.thickness_qr().to_bits()
+        && a.surface_energy_j_m2() == b.surface_energy_j_m2()
+        && a.range_m() == b.range_m()
 }
 
 impl App {
@@ -242,7 +242,7 @@ impl App {
     /// The rows of the parameter panel (the custom coefficients only for the custom model).
     pub fn params(&self) -> Vec<Param> {
         let mut v = BASIC.to_vec();
-        if self.scene.model.kind == ModelKind::Custom {
+        if self.scene.model().kind == ModelKind::Custom {
             v.extend(CUSTOM);
         }
         v
@@ -264,9 +264,9 @@ impl App {
         self.busy = true;
         self.busy_since = Some(std::time::Instant::now());
         let models = if self.all_models {
-            charts::overlay_models(&self.scene.model)
+            charts::overlay_models(&self.scene.model())
                 .into_iter()
-                .filter(|m| charts::slot(m) != charts::slot(&self.scene.model))
+                .filter(|m| charts::slot(m) != charts::slot(&self.scene.model()))
                 .collect()
         } else {
             Vec::new()
@@ -291,13 +291,13 @@ impl App {
     /// The scene with another model.
     pub(crate) fn with_model(&self, m: &Model) -> Scene {
         let mut s = self.scene.clone();
-        s.model = *m;
+        s.set_model(*m).unwrap();
         s
     }
 
     /// The point of model `m` at the current scene (the current point for the current model).
     pub fn model_point(&self, m: &Model) -> Option<&PointData> {
-        if charts::slot(m) == charts::slot(&self.scene.model) {
+        if charts::slot(m) == charts::slot(&self.scene.model()) {
             return self.point.as_ref().and_then(|r| r.as_ref().ok());
         }
         let key = point_key(&self.source, &self.with_model(m));
@@ -306,7 +306,7 @@ impl App {
 
     /// The load sweep of model `m`.
     pub fn model_sweep(&self, m: &Model) -> Option<&SweepData> {
-        if charts::slot(m) == charts::slot(&self.scene.model) {
+        if charts::slot(m) == charts::slot(&self.scene.model()) {
             return self.sweep.as_ref().and_then(|r| r.as_ref().ok());
         }
         let key = sweep_key(&self.source, &self.with_model(m), self.range());
@@ -315,7 +315,7 @@ impl App {
 
     /// The thickness sweep of model `m`.
     pub fn model_thickness(&self, m: &Model) -> Option<&ThicknessData> {
-        if charts::slot(m) == charts::slot(&self.scene.model) {
+        if charts::slot(m) == charts::slot(&self.scene.model()) {
             return self.thickness.as_ref().and_then(|r| r.as_ref().ok());
         }
         let key = thickness_key(&self.source, &self.with_model(m));
@@ -360,7 +360,7 @@ impl App {
 
     /// Whether eq. (18) describes the scene (adhesionless, semi-infinite).
     pub fn eq18_applies(&self) -> bool {
-        self.scene.gamma == 0.0 && self.scene.thickness_qr.is_infinite()
+        self.scene.surface_energy_j_m2() == 0.0 && self.scene.thickness_qr().is_infinite()
     }
 
     /// Shows `charts` in the big, lower-left and lower-right panels.
@@ -381,7 +381,7 @@ impl App {
         let mut sw = Vec::new();
         let mut t = Vec::new();
         if self.all_models {
-            for m in charts::overlay_models(&self.scene.model) {
+            for m in charts::overlay_models(&self.scene.model()) {
                 let s = self.with_model(&m);
                 p.push(point_key(&self.source, &s));
                 sw.push(sweep_key(&self.source, &s, self.range()));
@@ -398,7 +398,7 @@ impl App {
 
     /// The p* range the load charts show ([`sticky_range`] of the last request's).
     pub fn range(&self) -> (f64, f64) {
-        sticky_range(self.load_range, self.scene.pressure)
+        sticky_range(self.load_range, self.scene.pressure())
     }
 
     /// The finished GFMD result, when it was run on the scene shown now (the model only
@@ -479,7 +479,7 @@ pub(crate) fn bounded_insert<V>(map: &mut HashMap<CacheKey, V>, key: CacheKey, v
 pub fn initial_scene(p: &Preset) -> Result<Scene> {
     let mut s = p.scene()?;
     if !ADHESION_BY_DEFAULT {
-        s.gamma = 0.0;
+        s = s.without_adhesion();
     }
     Ok(s)
 }

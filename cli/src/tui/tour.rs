@@ -41,6 +41,7 @@
 use super::kinds::ChartKind;
 use asperity::error::{Error, Result};
 use asperity::input::model::Model;
+use asperity::input::overrides::Overrides;
 use asperity::input::preset::{self, Preset};
 use asperity::input::scene::Scene;
 use serde::Deserialize;
@@ -347,32 +348,36 @@ impl Tour {
                     err(None, "preset", e.to_string())
                 }
             })?;
-            let mut scene = p.scene().map_err(|e| err(at, "preset", e.to_string()))?;
-            if let Some(m) = s.model {
-                scene.model = u8::try_from(m)
-                    .ok()
-                    .filter(|m| (1..=4).contains(m))
-                    .and_then(|m| Model::named(m).ok())
-                    .ok_or_else(|| err(at, "model", format!("{m}; allowed 1, 2, 3 or 4")))?;
-            }
-            if let Some(v) = s.pressure {
-                scene.pressure = v;
-            }
-            if let Some(v) = s.thickness_qr {
-                scene.thickness_qr = v;
-            }
-            if let Some(v) = s.gamma {
-                scene.gamma = v;
-            }
-            if let Err(e) = scene.validate() {
-                let key = match e.invalid_field().map(|f| f.to_string()) {
-                    Some(f) if f.contains("thickness") => "thickness_qr",
-                    Some(f) if f.contains("gamma") => "gamma",
-                    Some(f) if f.contains("pressure") => "pressure",
-                    _ => "title",
-                };
-                return Err(err(at, key, e.to_string()));
-            }
+            let scene = p.scene().map_err(|e| err(at, "preset", e.to_string()))?;
+            let model = match s.model {
+                Some(m) => Some(
+                    u8::try_from(m)
+                        .ok()
+                        .filter(|m| (1..=4).contains(m))
+                        .and_then(|m| Model::named(m).ok())
+                        .ok_or_else(|| err(at, "model", format!("{m}; allowed 1, 2, 3 or 4")))?,
+                ),
+                None => None,
+            };
+            let overrides = Overrides {
+                model,
+                pressure: s.pressure,
+                thickness_qr: s.thickness_qr,
+                surface_energy_j_m2: s.gamma,
+                ..Overrides::default()
+            };
+            let scene = match scene.apply(&overrides) {
+                Ok(scene) => scene,
+                Err(e) => {
+                    let key = match e.invalid_field().map(|f| f.to_string()) {
+                        Some(f) if f.contains("thickness") => "thickness_qr",
+                        Some(f) if f.contains("gamma") => "gamma",
+                        Some(f) if f.contains("pressure") => "pressure",
+                        _ => "title",
+                    };
+                    return Err(err(at, key, e.to_string()));
+                }
+            };
             if s.charts.is_empty() || s.charts.len() > 3 {
                 return Err(err(at, "charts", format!("{} names; allowed 1 to 3", s.charts.len())));
             }
@@ -516,8 +521,8 @@ caption = "a\nb\nc"
         assert_eq!(t.steps[0].charts, [ChartKind::Pr, ChartKind::Area, ChartKind::Gap]);
         assert_eq!(t.steps[0].scene, Preset::resolve("system-1").unwrap().scene().unwrap());
         let s = &t.steps[1];
-        assert_eq!(s.scene.model.number(), Some(2));
-        assert_eq!((s.scene.pressure, s.scene.gamma), (0.02, 0.0));
+        assert_eq!(s.scene.model().number(), Some(2));
+        assert_eq!((s.scene.pressure(), s.scene.surface_energy_j_m2()), (0.02, 0.0));
         assert_eq!(s.charts, [ChartKind::PrLog, ChartKind::AreaRatio, ChartKind::Thickness]);
         assert!(s.models);
         assert_eq!(s.caption, ["a", "b", "c"]);

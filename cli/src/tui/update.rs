@@ -374,30 +374,26 @@ impl App {
         self.selected = self.selected.min(self.params().len() - 1);
     }
 
-    /// Applies a candidate scene if it validates; otherwise shows why not.
+    /// Applies a changed scene (each change was validated where it was made).
     pub(crate) fn try_scene(&mut self, scene: Scene) {
-        match scene.validate() {
-            Ok(()) => self.set_scene(scene),
-            Err(e) => self.fail(e),
-        }
+        self.set_scene(scene)
     }
 
     pub(crate) fn try_model(&mut self, m: Result<Model>) {
         match m {
-            Ok(m) => {
-                let mut s = self.scene.clone();
-                s.model = m;
-                self.try_scene(s);
-            }
+            Ok(m) => match self.scene.clone().with_model(m) {
+                Ok(s) => self.set_scene(s),
+                Err(e) => self.fail(e),
+            },
             Err(e) => self.fail(e),
         }
     }
 
     pub(crate) fn cycle_model(&mut self, dir: i32) {
-        let cur = self.scene.model.number().map_or(5, i32::from);
+        let cur = self.scene.model().number().map_or(5, i32::from);
         let next = (cur - 1 + dir).rem_euclid(5) + 1;
         if next == 5 {
-            let m = self.scene.model;
+            let m = self.scene.model();
             self.try_model(Model::custom(m.c1, m.c2, m.alpha, m.k_griffith, m.cap));
         } else {
             self.try_model(Model::named(next as u8));
@@ -407,7 +403,7 @@ impl App {
     pub(crate) fn step(&mut self, dir: i32, coarse: bool) {
         let pick = |s: (f64, f64)| if coarse { s.1 } else { s.0 };
         let mut s = self.scene.clone();
-        let m = s.model;
+        let m = s.model();
         match self.selected_param() {
             Param::Preset => {
                 let n = self.presets.len() as i32;
@@ -423,29 +419,33 @@ impl App {
                 return;
             }
             Param::Pressure => {
-                let p = log_step_from(s.pressure, self.base.pressure, pick(PRESSURE_STEPS), dir);
-                s.pressure = p.clamp(PRESSURE_KEYS.0, PRESSURE_KEYS.1);
+                let p = log_step_from(s.pressure(), self.base.pressure(), pick(PRESSURE_STEPS), dir);
+                if let Err(e) = s.set_pressure(p.clamp(PRESSURE_KEYS.0, PRESSURE_KEYS.1)) {
+                    return self.fail(e);
+                }
             }
             Param::Thickness => {
-                let t = s.thickness_qr;
-                s.thickness_qr = if t.is_infinite() {
+                let t = s.thickness_qr();
+                if let Err(e) = s.set_thickness_qr(if t.is_infinite() {
                     if dir > 0 {
                         t
                     } else {
                         THICKNESS_KEYS.1
                     }
                 } else {
-                    let v = log_step_from(t, self.base.thickness_qr, pick(THICKNESS_STEPS), dir);
+                    let v = log_step_from(t, self.base.thickness_qr(), pick(THICKNESS_STEPS), dir);
                     if v > THICKNESS_KEYS.1 * (1.0 + 1e-9) {
                         f64::INFINITY
                     } else {
                         v.max(THICKNESS_KEYS.0)
                     }
-                };
+                }) {
+                    return self.fail(e);
+                }
             }
             Param::Gamma => {
-                let g = s.gamma;
-                s.gamma = if g == 0.0 {
+                let g = s.surface_energy_j_m2();
+                if let Err(e) = s.set_surface_energy_j_m2(if g == 0.0 {
                     if dir > 0 {
                         let pg = self.preset.adhesion.surface_energy_j_m2;
                         if pg > 0.0 {
@@ -463,7 +463,9 @@ impl App {
                     } else {
                         v.min(GAMMA_KEYS.1)
                     }
-                };
+                }) {
+                    return self.fail(e);
+                }
             }
             Param::C1 => {
                 return self.try_model(Model::custom(
@@ -500,7 +502,7 @@ impl App {
     /// Sets a parameter from typed text.
     pub fn set_typed(&mut self, param: Param, text: &str) -> Result<()> {
         let mut s = self.scene.clone();
-        let m = s.model;
+        let m = s.model();
         let t = text.trim();
         match param {
             Param::Preset => {
@@ -511,30 +513,45 @@ impl App {
                 };
             }
             Param::Model => {
-                s.model = Model::of_kind(t.parse::<asperity::input::model::ModelKind>()?, &m)?;
+                s.set_model(Model::of_kind(t.parse::<asperity::input::model::ModelKind>()?, &m)?)?;
             }
             Param::Pressure => {
                 let p = parse_number("p*", t)?;
                 if p <= 0.0 {
                     return Err(Error::field("p*", t, "p* > 0"));
                 }
-                s.pressure = p;
+                s.set_pressure(p)?;
             }
-            Param::Thickness => s.thickness_qr = t.parse::<asperity::input::scene::ThicknessQr>()?.0,
-            Param::Gamma => {
-                s.gamma = if t.eq_ignore_ascii_case("off") {
-                    0.0
-                } else {
-                    parse_number("gamma", t)?
-                }
-            }
-            Param::C1 => s.model = Model::custom(parse_number("c1", t)?, m.c2, m.alpha, m.k_griffith, m.cap)?,
-            Param::C2 => s.model = Model::custom(m.c1, parse_number("c2", t)?, m.alpha, m.k_griffith, m.cap)?,
-            Param::Alpha => s.model = Model::custom(m.c1, m.c2, parse_number("alpha", t)?, m.k_griffith, m.cap)?,
-            Param::KGriffith => s.model = Model::custom(m.c1, m.c2, m.alpha, parse_number("k_G", t)?, m.cap)?,
-            Param::Cap => s.model = Model::custom(m.c1, m.c2, m.alpha, m.k_griffith, parse_bool("cap", t)?)?,
+            Param::Thickness => s.set_thickness_qr(t.parse::<asperity::input::scene::ThicknessQr>()?.0)?,
+            Param::Gamma => s.set_surface_energy_j_m2(if t.eq_ignore_ascii_case("off") {
+                0.0
+            } else {
+                parse_number("gamma", t)?
+            })?,
+            Param::C1 => s.set_model(Model::custom(
+                parse_number("c1", t)?,
+                m.c2,
+                m.alpha,
+                m.k_griffith,
+                m.cap,
+            )?)?,
+            Param::C2 => s.set_model(Model::custom(
+                m.c1,
+                parse_number("c2", t)?,
+                m.alpha,
+                m.k_griffith,
+                m.cap,
+            )?)?,
+            Param::Alpha => s.set_model(Model::custom(
+                m.c1,
+                m.c2,
+                parse_number("alpha", t)?,
+                m.k_griffith,
+                m.cap,
+            )?)?,
+            Param::KGriffith => s.set_model(Model::custom(m.c1, m.c2, m.alpha, parse_number("k_G", t)?, m.cap)?)?,
+            Param::Cap => s.set_model(Model::custom(m.c1, m.c2, m.alpha, m.k_griffith, parse_bool("cap", t)?)?)?,
         }
-        s.validate()?;
         self.set_scene(s);
         Ok(())
     }

@@ -126,7 +126,7 @@ fn too_small(f: &mut Frame, area: Rect) {
 fn draw_title(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     let mut spans = vec![
         Span::styled(" asperity ", Style::default().add_modifier(Modifier::BOLD)),
-        Span::raw(format!("· {} · {} ", app.preset.name, app.scene.model.label())),
+        Span::raw(format!("· {} · {} ", app.preset.name, app.scene.model().label())),
     ];
     // the spinner only once a computation has taken a while (most take milliseconds)
     if app.show_timing && app.busy_since.is_some_and(|t| t.elapsed() >= SPINNER_DELAY) {

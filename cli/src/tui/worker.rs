@@ -113,17 +113,18 @@ pub fn process(
     send: &dyn Fn(Reply),
 ) {
     let gen = req.gen;
-    let refine = if req.scene.gamma > 0.0 && caches.points.get(&point_key(&req.source, &req.scene)).is_none() {
-        if serve_preview(req, caches, cancel, send).is_none() {
-            return;
-        }
-        true
-    } else {
-        let Some(_) = serve_point(req, &req.scene, true, caches, cancel, send) else {
-            return;
+    let refine =
+        if req.scene.surface_energy_j_m2() > 0.0 && caches.points.get(&point_key(&req.source, &req.scene)).is_none() {
+            if serve_preview(req, caches, cancel, send).is_none() {
+                return;
+            }
+            true
+        } else {
+            let Some(_) = serve_point(req, &req.scene, true, caches, cancel, send) else {
+                return;
+            };
+            false
         };
-        false
-    };
     if stale() {
         return;
     }
@@ -141,13 +142,13 @@ pub fn process(
     let from_sweep = sw
         .as_ref()
         .and_then(|r| r.as_ref().ok())
-        .and_then(|sd| interpolate_gap(sd, req.scene.pressure));
+        .and_then(|sd| interpolate_gap(sd, req.scene.pressure()));
     let pkey = point_key(&req.source, &req.scene);
     let gap = match caches.gaps.get(&pkey) {
         Some(g) => g,
         None if from_sweep.is_some() => Ok(from_sweep.unwrap_or_default()),
         None => {
-            let p = req.scene.pressure;
+            let p = req.scene.pressure();
             let spec = SweepSpec {
                 from: p,
                 to: p,
@@ -270,7 +271,7 @@ fn serve_sweep(
         None => {
             // an adhesive sweep costs 0.1–0.3 s: a preview first ([`PREVIEW_POINTS`]), not
             // cached (a failed preview is left to the full sweep to report)
-            if preview && scene.gamma > 0.0 {
+            if preview && scene.surface_energy_j_m2() > 0.0 {
                 match preview_sweep(scene, req.range, cancel) {
                     Err(Error::Cancelled) => return None,
                     Ok(sd) => send(Reply::Sweep {

@@ -59,7 +59,7 @@ fn thickness_sweep_tends_to_the_semi_infinite_body() {
         thickness_sweep(&scene, &AtomicBool::new(true)),
         Err(Error::Cancelled)
     ));
-    scene.gamma = 0.0;
+    scene = scene.without_adhesion();
     assert!(thickness_sweep(&scene, &AtomicBool::new(false))
         .unwrap()
         .adhesionless
@@ -76,8 +76,8 @@ fn a_point_without_error_bar_is_shown_with_the_reason() {
         .unwrap()
         .scene()
         .unwrap();
-    scene.thickness_qr = 0.1;
-    scene.pressure = 1e-5;
+    scene.set_thickness_qr(0.1).unwrap();
+    scene.set_pressure(1e-5).unwrap();
     let pd = evaluate_point(&scene, &AtomicBool::new(false), false).unwrap();
     let Some(msg) = pd.warning.clone() else {
         eprintln!("SKIPPED: the engine now estimates this point's error");
@@ -115,8 +115,8 @@ fn request(gen: u64, p: f64) -> Request {
         .unwrap()
         .scene()
         .unwrap();
-    scene.gamma = 0.0;
-    scene.pressure = p;
+    scene = scene.without_adhesion();
+    scene.set_pressure(p).unwrap();
     Request {
         gen,
         source: "system-1".into(),
@@ -189,7 +189,7 @@ fn cancelled_or_stale_work_is_abandoned_and_cached_work_is_instant() {
 fn adhesive_error_is_reported_not_thrown() {
     let mut c = Caches::default();
     let mut req = request(1, 0.01);
-    req.scene.gamma = 0.05;
+    req.scene.set_surface_energy_j_m2(0.05).unwrap();
     let r = serve(&req, &mut c, false, false);
     // the UI gets every reply and the end; each point is a finite adhesive result with its
     // wall or the engine's error as a value (the worker never panics or drops it)
@@ -214,7 +214,7 @@ fn adhesive_error_is_reported_not_thrown() {
 fn an_adhesive_point_comes_first_at_chart_accuracy_then_refined() {
     let mut c = Caches::default();
     let mut req = request(1, 0.01);
-    req.scene.gamma = 0.05;
+    req.scene.set_surface_energy_j_m2(0.05).unwrap();
     let r = serve(&req, &mut c, false, false);
     // the load curves too come first as a preview (fewer loads), then in full
     assert_eq!(kinds(&r), ["point", "sweep", "sweep", "gap", "point", "done"]);
@@ -261,9 +261,9 @@ fn the_load_curves_carry_both_branches_and_the_jump() {
         .unwrap()
         .scene()
         .unwrap();
-    scene.model = Model::named(3).unwrap();
-    scene.thickness_qr = 0.1;
-    scene.gamma = 0.8 * 0.157;
+    scene.set_model(Model::named(3).unwrap()).unwrap();
+    scene.set_thickness_qr(0.1).unwrap();
+    scene.set_surface_energy_j_m2(0.8 * 0.157).unwrap();
     let spec = SweepSpec {
         from: 1e-4,
         to: 1e-3,
@@ -280,7 +280,7 @@ fn the_load_curves_carry_both_branches_and_the_jump() {
     // searched): two stable branches below, one above
     let stable = |p: f64| {
         let mut s = scene.clone();
-        s.pressure = p;
+        s.set_pressure(p).unwrap();
         let ev = engine::evaluate(&s, &Options::default()).unwrap();
         ev.branches.iter().filter(|b| b.stable).count()
     };
@@ -341,10 +341,10 @@ fn keys_separate_what_matters() {
         .scene()
         .unwrap();
     let mut s2 = scene.clone();
-    s2.pressure *= 2.0;
+    s2.set_pressure(s2.pressure() * 2.0).unwrap();
     assert_ne!(point_key("a", &scene), point_key("a", &s2));
     assert_eq!(sweep_key("a", &scene, (1e-3, 1.0)), sweep_key("a", &s2, (1e-3, 1.0)));
     assert_ne!(sweep_key("a", &scene, (1e-3, 1.0)), sweep_key("b", &scene, (1e-3, 1.0)));
-    s2.thickness_qr = 1.0;
+    s2.set_thickness_qr(1.0).unwrap();
     assert_ne!(sweep_key("a", &scene, (1e-3, 1.0)), sweep_key("a", &s2, (1e-3, 1.0)));
 }

@@ -292,7 +292,6 @@ pub fn propagate_with_wall(
     wall: impl Fn(f64) -> f64,
     grid_from_start: bool,
 ) -> Result<(Vec<f64>, Vec<f64>)> {
-    scene.validate()?;
     let grid = grid::build_grid(scene, acc.steps_per_ln_q);
     let walls: Vec<f64> = grid.q.iter().map(|&q| wall(q)).collect();
     // a wall that leaves zero inside a step: where (bisection in ln q)

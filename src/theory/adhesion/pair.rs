@@ -34,7 +34,6 @@ pub fn pair_at(
     rising_first: bool,
     cancel: Option<&AtomicBool>,
 ) -> Result<Option<(f64, f64)>> {
-    scene.validate()?;
     let grid = build_grid(scene, acc.steps_per_ln_q);
     let mut s = Shooter {
         m: Marcher::new(scene, &grid, *acc),

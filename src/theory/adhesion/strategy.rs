@@ -57,7 +57,6 @@ pub fn solve_continued(
     path: &[&AdhesiveSolution],
     cancel: Option<&AtomicBool>,
 ) -> Result<AdhesiveSolution> {
-    scene.validate()?;
     acc.validate()?;
     solve_checked(scene, acc, path, cancel)
 }

@@ -117,7 +117,6 @@ pub struct MeanGap {
 /// contact ([`mean_gap_of`]).
 pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<MeanGap> {
     check_load(scene.pressure)?;
-    scene.validate()?;
     let ev = crate::theory::engine::evaluate(scene, opts)?;
     mean_gap_of(scene, &ev, opts)
 }
