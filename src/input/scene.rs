@@ -87,12 +87,22 @@ pub fn thickness_allowed() -> Allowed {
     Allowed::RangeOr(Range::closed(THICKNESS_RANGE.0, THICKNESS_RANGE.1), vec!["inf".into()])
 }
 
-/// Hashes every input by bit pattern: equal scenes hash equally (the explorer's cache key).
+/// Hashes every input by bit pattern (−0 as +0): equal scenes hash equally, so `Scene` is a
+/// cache key (the explorer's).
 impl Hash for Scene {
     fn hash<H: Hasher>(&self, h: &mut H) {
         self.hash_without_pressure(h);
-        self.pressure.to_bits().hash(h);
+        canonical_bits(self.pressure).hash(h);
     }
+}
+
+/// A scene is never NaN in any input (every constructor and setter checks its ranges), so
+/// equality is an equivalence.
+impl Eq for Scene {}
+
+/// The bit pattern of `x` with −0 folded onto +0 (they compare equal).
+fn canonical_bits(x: f64) -> u64 {
+    (x + 0.0).to_bits()
 }
 
 impl Scene {
@@ -127,7 +137,7 @@ impl Scene {
         self.spectrum.hash(h);
         self.model.hash(h);
         for x in [self.modulus, self.thickness_qr, self.gamma, self.range] {
-            x.to_bits().hash(h);
+            canonical_bits(x).hash(h);
         }
     }
 

@@ -52,11 +52,10 @@ pub struct Request {
 }
 
 impl Request {
-    /// The scene with another model.
-    pub fn with_model(&self, m: &Model) -> Scene {
-        let mut s = self.scene.clone();
-        s.set_model(*m).unwrap();
-        s
+    /// The scene with another model; None where the scene does not take it (a variant
+    /// defined on the adhesionless half-space only, on an adhesive or slab scene).
+    pub fn with_model(&self, m: &Model) -> Option<Scene> {
+        self.scene.clone().with_model(*m).ok()
     }
 }
 

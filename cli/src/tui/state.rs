@@ -288,11 +288,10 @@ impl App {
         self.charts.iter().fold(Needs::default(), |n, c| n.or(c.needs()))
     }
 
-    /// The scene with another model.
-    pub(crate) fn with_model(&self, m: &Model) -> Scene {
-        let mut s = self.scene.clone();
-        s.set_model(*m).unwrap();
-        s
+    /// The scene with another model; None where the scene does not take it (a variant
+    /// defined on the adhesionless half-space only, on an adhesive or slab scene).
+    pub(crate) fn with_model(&self, m: &Model) -> Option<Scene> {
+        self.scene.clone().with_model(*m).ok()
     }
 
     /// The point of model `m` at the current scene (the current point for the current model).
@@ -300,7 +299,7 @@ impl App {
         if charts::slot(m) == charts::slot(&self.scene.model()) {
             return self.point.as_ref().and_then(|r| r.as_ref().ok());
         }
-        let key = point_key(&self.source, &self.with_model(m));
+        let key = point_key(&self.source, &self.with_model(m)?);
         self.overlay_points.get(&key).and_then(|r| r.as_ref().ok())
     }
 
@@ -309,7 +308,7 @@ impl App {
         if charts::slot(m) == charts::slot(&self.scene.model()) {
             return self.sweep.as_ref().and_then(|r| r.as_ref().ok());
         }
-        let key = sweep_key(&self.source, &self.with_model(m), self.range());
+        let key = sweep_key(&self.source, &self.with_model(m)?, self.range());
         self.overlay_sweeps.get(&key).and_then(|r| r.as_ref().ok())
     }
 
@@ -318,7 +317,7 @@ impl App {
         if charts::slot(m) == charts::slot(&self.scene.model()) {
             return self.thickness.as_ref().and_then(|r| r.as_ref().ok());
         }
-        let key = thickness_key(&self.source, &self.with_model(m));
+        let key = thickness_key(&self.source, &self.with_model(m)?);
         self.overlay_thickness.get(&key).and_then(|r| r.as_ref().ok())
     }
 
@@ -381,8 +380,10 @@ impl App {
         let mut sw = Vec::new();
         let mut t = Vec::new();
         if self.all_models {
-            for m in charts::overlay_models(&self.scene.model()) {
-                let s = self.with_model(&m);
+            for s in charts::overlay_models(&self.scene.model())
+                .iter()
+                .filter_map(|m| self.with_model(m))
+            {
                 p.push(point_key(&self.source, &s));
                 sw.push(sweep_key(&self.source, &s, self.range()));
                 t.push(thickness_key(&self.source, &s));

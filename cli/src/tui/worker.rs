@@ -185,8 +185,7 @@ pub fn process(
             return;
         }
     }
-    for m in &req.models {
-        let scene = req.with_model(m);
+    for scene in req.models.iter().filter_map(|m| req.with_model(m)) {
         for part in 0..3 {
             if stale() {
                 return;
