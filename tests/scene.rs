@@ -10,6 +10,9 @@ use asperity::input::scene::{Scene, PRESSURE_RANGE, SURFACE_ENERGY_RANGE, THICKN
 use std::collections::hash_map::DefaultHasher;
 use std::hash::{Hash, Hasher};
 
+/// A change of one input that may be refused.
+type Setter = Box<dyn Fn(&mut Scene) -> asperity::Result<()>>;
+
 fn hash(s: &Scene) -> u64 {
     let mut h = DefaultHasher::new();
     s.hash(&mut h);
@@ -19,7 +22,7 @@ fn hash(s: &Scene) -> u64 {
 #[test]
 fn each_setter_checks_its_range_and_leaves_the_scene_on_an_error() {
     let s = common::system(2, 3);
-    let bad: [(Field, Box<dyn Fn(&mut Scene) -> asperity::Result<()>>); 6] = [
+    let bad: [(Field, Setter); 6] = [
         (Field::Pressure, Box::new(|s| s.set_pressure(PRESSURE_RANGE.1 * 2.0))),
         (Field::Pressure, Box::new(|s| s.set_pressure(f64::NAN))),
         (
