@@ -44,12 +44,12 @@ fn main() {
     for (name, model, t, adhesive, p) in scenes {
         let preset = Preset::resolve(name).unwrap();
         let mut scene = preset.scene().unwrap();
-        scene.model = Model::named(model).unwrap();
-        scene.thickness_qr = t;
+        scene.set_model(Model::named(model).unwrap()).unwrap();
+        scene.set_thickness_qr(t).unwrap();
         if !adhesive {
-            scene.gamma = 0.0;
+            scene = scene.without_adhesion();
         }
-        scene.pressure = p;
+        scene.set_pressure(p).unwrap();
         let setup = GfmdSetup {
             scene,
             grid: preset.gfmd.as_ref().map(GridSpec::from_preset).unwrap(),
@@ -69,7 +69,7 @@ fn main() {
         println!(
             "{name} model {model} t*q_r {t} gamma {:.4} p* {p}: every group ({groups}): a_r {a0:.6e} \
              sigma_c {s0:.6e} gap {g0:.6e}  {t0:.3} s",
-            full_scene.gamma
+            full_scene.surface_energy_j_m2()
         );
         for &w in &widths {
             let d = full.coarse_grained(w);

@@ -16,12 +16,12 @@ use asperity::tolerances::{SHELL_MOMENT_REL, SHELL_THEORY_REL};
 fn scenes(model: u8, t: f64, gamma: Option<f64>, p: f64) -> (Scene, Scene) {
     let preset = Preset::resolve("system-2").unwrap();
     let mut scene = preset.scene().unwrap();
-    scene.model = Model::named(model).unwrap();
-    scene.thickness_qr = t;
+    scene.set_model(Model::named(model).unwrap()).unwrap();
+    scene.set_thickness_qr(t).unwrap();
     if let Some(g) = gamma {
-        scene.gamma = g;
+        scene.set_surface_energy_j_m2(g).unwrap();
     }
-    scene.pressure = p;
+    scene.set_pressure(p).unwrap();
     let setup = GfmdSetup {
         scene,
         grid: GridSpec {
@@ -49,7 +49,7 @@ fn rel(a: f64, b: f64) -> f64 {
 #[test]
 fn shells_keep_h_rms_gradient_and_curvature() {
     let (full, coarse) = scenes(4, f64::INFINITY, None, 1e-2);
-    let (Spectrum::Discrete(f), Spectrum::Discrete(c)) = (&full.spectrum, &coarse.spectrum) else {
+    let (Spectrum::Discrete(f), Spectrum::Discrete(c)) = (&full.spectrum(), &coarse.spectrum()) else {
         panic!("discrete spectra expected");
     };
     assert!(
@@ -62,7 +62,7 @@ fn shells_keep_h_rms_gradient_and_curvature() {
         let (a, b) = (f.moment(n), c.moment(n));
         assert!(rel(b, a) <= SHELL_MOMENT_REL, "{what}: {b} vs {a}");
     }
-    assert!(rel(coarse.spectrum.rms_height(), full.spectrum.rms_height()) <= SHELL_MOMENT_REL);
+    assert!(rel(coarse.spectrum().rms_height(), full.spectrum().rms_height()) <= SHELL_MOMENT_REL);
 }
 
 #[test]
