@@ -61,10 +61,7 @@ fn main() {
         let coarse = prep.theory_scene(p).unwrap();
         let full = prep.surface.discrete_spectrum(prep.q_r).unwrap();
         let groups = full.modes.len();
-        let full_scene = Scene {
-            spectrum: Spectrum::Discrete(full.clone()),
-            ..coarse.clone()
-        };
+        let full_scene = coarse.clone().with_spectrum(Spectrum::Discrete(full.clone())).unwrap();
         let (a0, s0, g0, t0) = block(&full_scene);
         println!(
             "{name} model {model} t*q_r {t} gamma {:.4} p* {p}: every group ({groups}): a_r {a0:.6e} \
@@ -73,10 +70,7 @@ fn main() {
         );
         for &w in &widths {
             let d = full.coarse_grained(w);
-            let sc = Scene {
-                spectrum: Spectrum::Discrete(d.clone()),
-                ..coarse.clone()
-            };
+            let sc = coarse.clone().with_spectrum(Spectrum::Discrete(d.clone())).unwrap();
             let (a, s, g, tt) = block(&sc);
             let rel = |x: f64, y: f64| (x / y - 1.0).abs();
             let mom = [0, 2, 4].map(|n| rel(d.moment(n), full.moment(n)));

@@ -35,10 +35,10 @@ fn scenes(model: u8, t: f64, gamma: Option<f64>, p: f64) -> (Scene, Scene) {
     };
     let prep = gfmd::prepare(&setup).unwrap();
     let coarse = prep.theory_scene(p).unwrap();
-    let full = Scene {
-        spectrum: Spectrum::Discrete(prep.surface.discrete_spectrum(prep.q_r).unwrap()),
-        ..coarse.clone()
-    };
+    let full = coarse
+        .clone()
+        .with_spectrum(Spectrum::Discrete(prep.surface.discrete_spectrum(prep.q_r).unwrap()))
+        .unwrap();
     (full, coarse)
 }
 
