@@ -501,11 +501,23 @@ fn explorer_names() {
     use asperity_cli::tui::keys::TABLE;
     use asperity_cli::tui::tour::Tour;
     let names: Vec<&str> = ChartKind::ALL.iter().map(|k| k.name()).collect();
-    for n in ["pr", "pr-loglog", "area", "area-ratio", "thickness", "stress", "gap"] {
+    for n in [
+        "pr",
+        "pr-loglog",
+        "area",
+        "area-ratio",
+        "thickness",
+        "stress",
+        "gap",
+        "scales",
+        "scales-area",
+    ] {
         assert!(names.contains(&n), "chart {n} missing");
     }
     let labels: Vec<&str> = TABLE.iter().map(|b| b.label).collect();
-    for l in ["m", "p", "r", "e", "a", "c", "g", "v", "f", "M", "t", "s"] {
+    for l in [
+        "m", "p", "r", "e", "a", "c", "g", "v", "f", "M", "t", "s", "[", "]", "Space",
+    ] {
         assert!(labels.contains(&l), "key {l} missing");
     }
     let every_key = r#"name = "n"
@@ -538,6 +550,12 @@ caption = "a\nb"
     for col in ["p", "a_r", "mean_gap_rel", "mean_contact_stress", "converged"] {
         assert!(header.split(',').any(|c| c == col), "column {col} missing: {header}");
     }
+    app.set_charts([ChartKind::Scales, ChartKind::ScalesArea, ChartKind::Area]);
+    asperity_cli::tui::worker::compute_now(&mut app, &mut Default::default());
+    let paths = asperity_cli::tui::export::export(&app).unwrap();
+    let csv = std::fs::read_to_string(paths.iter().find(|p| p.ends_with("-scales.csv")).unwrap()).unwrap();
+    let header = csv.lines().find(|l| !l.starts_with('#')).unwrap();
+    assert_eq!(header, "frame,q_over_q_l,a_r_q,sigma_a_q,sigma,density");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

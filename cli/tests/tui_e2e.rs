@@ -344,3 +344,31 @@ fn tui_and_tour_flags_are_validated_like_run() {
     assert_eq!(err.lines().count(), 1, "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The scale view in the real binary: the tour's first step opens on it and plays it to q_s
+/// (one frame per tick, without any key), `[` steps back, Space plays again.
+#[test]
+fn scale_view_plays_in_tmux() {
+    if !have_tmux() {
+        eprintln!("SKIPPED scale_view_plays_in_tmux: tmux is not installed (apt-get install tmux)");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("asperity-e2e-scales-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let t = Tmux::start("scales", &dir, "");
+    t.wait("the first frame with results", |s| s.contains("a_r(p*)") && solved(s));
+    t.keys(&["t"]);
+    t.wait("the scale view playing", |s| s.contains("Pr(σ*, q) q/q_L=") && s.contains("/48 ▶"));
+    let s = t.wait("the play to reach q_s", |s| s.contains(" 48/48 ") && !s.contains("/48 ▶"));
+    assert!(s.contains("tour 1/11"), "{s}");
+    t.keys(&["["]);
+    t.wait("one frame back", |s| s.contains(" 47/48 "));
+    t.keys(&["Space"]);
+    t.wait("playing on", |s| s.contains("/48 ▶") || s.contains(" 48/48 "));
+    t.keys(&["Escape"]);
+    t.wait("the tour to close", |s| !s.contains("tour 1/11"));
+    t.keys(&["q"]);
+    let s = t.wait("a clean exit", |s| s.contains("TTY="));
+    assert!(s.contains("EXIT=0") && s.contains("TTY=icanon"), "{s}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -70,11 +70,25 @@ fn help_custom_ratio_and_small() {
     let mut a = app("system-1");
     key(&mut a, KeyCode::Char('?'));
     let help = render(&a, 80, 24);
-    // the help is generated from the key table
-    for line in view::help_lines() {
-        assert!(help.contains(line.trim_end()), "{line}");
-    }
     insta::assert_snapshot!("help_80x24", help);
+    // the help is generated from the key table; at 80×24 it scrolls to its last row
+    let lines = view::help_lines();
+    for _ in 0..lines.len() {
+        key(&mut a, KeyCode::Char('j'));
+    }
+    let end = render(&a, 80, 24);
+    assert!(end.contains(lines.last().unwrap().trim_end()), "{end}");
+    let shown = |s: &str| lines.iter().filter(|l| s.contains(l.trim_end())).count();
+    assert!(shown(&help) + shown(&end) >= lines.len(), "every row is reachable");
+    for line in &lines {
+        assert!(
+            help.contains(line.trim_end()) || end.contains(line.trim_end()),
+            "{line}"
+        );
+    }
+    // at 160×48 it shows whole
+    let tall = render(&a, 160, 48);
+    assert!(lines.iter().all(|l| tall.contains(l.trim_end())), "{tall}");
     key(&mut a, KeyCode::Esc);
     key(&mut a, KeyCode::Char('m'));
     key(&mut a, KeyCode::Char('m'));
@@ -442,4 +456,37 @@ fn hysteresis_on_the_area_chart() {
     let text = std::fs::read_to_string(svg).unwrap();
     assert!(text.contains("unloading") && text.contains("jump-in") && text.contains("pull-off"));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The scale view ([S-5, S-7, S-8]): Pr(σ*, q) at a middle resolution with the wall −σ_a*(q)
+/// and the final Pr beside it, a_r(q) along the march; the tour's first step opens on it and
+/// plays it.
+#[test]
+fn scale_view() {
+    let mut a = app("system-1");
+    show(&mut a, [ChartKind::Scales, ChartKind::ScalesArea, ChartKind::Area]);
+    let n = a.scale_frame().map(|f| f.1).expect("frames");
+    // two steps before q_s: with γ_s = 0.05 the wall appears only at the finest scales
+    for _ in 0..2 {
+        key(&mut a, KeyCode::Char('['));
+    }
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(n - 3));
+    let s = render(&a, 160, 48);
+    for needle in ["Pr(σ*, q) q/q_L=", "q = q_s", "−σ_a*(q)", "a_r(q)=", "σ_a*(q)="] {
+        assert!(s.contains(needle), "{needle}: {s}");
+    }
+    insta::assert_snapshot!("scales_160x48", s);
+    insta::assert_snapshot!("scales_80x24", render(&a, 80, 24));
+    // the tour's first step: the adhesionless march of model 1, played from q_L
+    use asperity_cli::tui::tour::Tour;
+    let mut t = app("system-1");
+    t.start_tour(Tour::resolve("wang-muser").unwrap(), 0);
+    compute_now(&mut t, &mut Caches::default());
+    assert!(t.playing && t.scale_frame().map(|f| f.0) == Some(0));
+    let s = render(&t, 80, 24);
+    assert!(s.contains("tour 1/11") && s.contains("1/48 ▶"), "{s}");
+    insta::assert_snapshot!("tour_step1_80x24", s);
+    for (w, h) in [(60, 20), (20, 5), (1, 1)] {
+        draw_only(&t, w, h);
+    }
 }

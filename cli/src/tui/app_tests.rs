@@ -181,6 +181,10 @@ fn chart_selector_focus_and_models_ask_for_data() {
     for _ in 0..2 {
         key(&mut a, KeyCode::Char('v'));
     }
+    assert_eq!(a.charts[1], ChartKind::Scales);
+    for _ in 0..2 {
+        key(&mut a, KeyCode::Char('v'));
+    }
     assert_eq!(a.charts[1], ChartKind::Stress);
     key(&mut a, KeyCode::Char('f'));
     key(&mut a, KeyCode::Char('v'));
@@ -311,8 +315,13 @@ fn reset_help_picker_and_quit() {
     assert_eq!(a.scene, a.base);
     key(&mut a, KeyCode::Char('?'));
     assert_eq!(a.overlay, Overlay::Help);
+    // ↓↑ scroll the help, another key closes it (and forgets the scroll)
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Char('j'));
+    key(&mut a, KeyCode::Up);
+    assert_eq!((a.overlay, a.help_scroll), (Overlay::Help, 1));
     key(&mut a, KeyCode::Char('x'));
-    assert_eq!(a.overlay, Overlay::None);
+    assert_eq!((a.overlay, a.help_scroll), (Overlay::None, 0));
     key(&mut a, KeyCode::Char('p'));
     assert!(matches!(a.overlay, Overlay::Presets(0)));
     key(&mut a, KeyCode::Down);
@@ -373,4 +382,80 @@ fn chart_range_covers_p() {
     let (a, b) = chart_range(20.0);
     assert!(a == 1e-3 && b >= 20.0);
     assert_eq!(chart_range(f64::NAN), (1e-3, 1.0));
+}
+
+/// A scale view of `n` frames (synthetic: the updates do not look at the numbers).
+fn frames(n: usize) -> ScalesData {
+    ScalesData {
+        frames: (0..n)
+            .map(|i| ScaleFrame {
+                q_rel: 1.0 + i as f64,
+                a_r: 1.0 / (1.0 + i as f64),
+                sigma_a: 0.0,
+                pr: vec![(0.0, 0.0), (1.0, 1.0)],
+            })
+            .collect(),
+        area: Vec::new(),
+        wall: Vec::new(),
+    }
+}
+
+#[test]
+fn the_scale_view_scrubs_plays_to_the_end_and_pauses() {
+    let mut a = app();
+    // no scale chart shown: the keys say how to get one
+    key(&mut a, KeyCode::Char(']'));
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("scales")));
+    a.set_charts([ChartKind::Scales, ChartKind::ScalesArea, ChartKind::Area]);
+    assert!(a
+        .take_request()
+        .is_some_and(|r| r.needs.scales && r.needs.loads && !r.needs.point));
+    a.scales = Some(Ok(frames(4)));
+    // opens at q_s, the last frame
+    assert_eq!(a.scale_frame().map(|f| (f.0, f.1)), Some((3, 4)));
+    key(&mut a, KeyCode::Char('['));
+    key(&mut a, KeyCode::Char('['));
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(1));
+    key(&mut a, KeyCode::Char(']'));
+    key(&mut a, KeyCode::Char(']'));
+    key(&mut a, KeyCode::Char(']'));
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(3), "stops at the last frame");
+    // Space at the end plays from the first frame, one frame per tick, and stops at q_s
+    key(&mut a, KeyCode::Char(' '));
+    assert!(a.playing && a.animating());
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(0));
+    a.tick();
+    a.tick();
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(2));
+    key(&mut a, KeyCode::Char(' '));
+    assert!(!a.playing, "Space pauses");
+    a.tick();
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(2), "a paused view stays");
+    key(&mut a, KeyCode::Char(' '));
+    a.tick();
+    a.tick();
+    assert!(!a.playing && a.scale_frame().map(|f| f.0) == Some(3));
+    // a scrub pauses a play
+    key(&mut a, KeyCode::Char(' '));
+    key(&mut a, KeyCode::Char('['));
+    assert!(!a.playing);
+    // the charts name the frame
+    let m = super::super::charts::build(&a, ChartKind::Scales);
+    assert!(m.title.contains(" 1/4 "), "{}", m.title);
+    // a reply for another scene is dropped, one for this scene kept
+    let mut other = a.scene.clone();
+    other.pressure *= 2.0;
+    a.on_reply(Reply::Scales {
+        gen: 1,
+        key: super::super::protocol::scales_key(&a.source, &other),
+        result: Ok(frames(2)),
+    });
+    assert_eq!(a.scales_data().map(|d| d.frames.len()), Some(4));
+    a.on_reply(Reply::Scales {
+        gen: 1,
+        key: super::super::protocol::scales_key(&a.source, &a.scene),
+        result: Ok(frames(2)),
+    });
+    assert_eq!(a.scales_data().map(|d| d.frames.len()), Some(2));
+    assert!(!a.scales_is_stale());
 }

@@ -12,6 +12,8 @@
 //! | `area`       | a_r(p*) on log–log axes with eq. (18); with hysteresis the unloading branch and the jump-in / pull-off loads | [S-18] |
 //! | `area-ratio` | a_r/p* against p* with eq. (18) (and the unloading branch)     | Fig. 1     |
 //! | `thickness`  | a_r(t·q_r) at the current p*, with the adhesionless reference | Fig. 7     |
+//! | `scales`     | Pr(σ*, q) at one resolution q of the march, the wall −σ_a*(q), Pr at q_s | [S-5, S-7, S-8] |
+//! | `scales-area`| a_r(q) along the resolution, the scale view's q marked        | [S-6]      |
 //! | `stress`     | σ̄_c*(p*)                                                      | Fig. 5     |
 //! | `gap`        | ū/h_rms(p*)                                                   | Fig. 6     |
 //!
@@ -37,6 +39,8 @@ pub fn build(app: &App, kind: ChartKind) -> ChartModel {
         ChartKind::Thickness => thickness(app),
         ChartKind::Stress => loads(app, ChartKind::Stress),
         ChartKind::Gap => loads(app, ChartKind::Gap),
+        ChartKind::Scales => super::charts_scales::scales(app),
+        ChartKind::ScalesArea => super::charts_scales::scales_area(app),
     }
 }
 

@@ -199,6 +199,52 @@ pub struct ThicknessData {
     pub adhesionless: Option<Vec<f64>>,
 }
 
+/// One frame of the scale view: Pr(σ*, q) at one resolution of the march.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScaleFrame {
+    /// q/q_L.
+    pub q_rel: f64,
+    /// a_r(q).
+    pub a_r: f64,
+    /// σ_a*(q) (0 without adhesion): the wall sits at σ* = −σ_a*.
+    pub sigma_a: f64,
+    /// Pr(σ*, q) as (σ*, density), on the σ* range shared by every frame.
+    pub pr: Vec<(f64, f64)>,
+}
+
+/// The scale view of a scene ([`asperity::theory::adhesion::scales`]): frames coarse to
+/// fine (the last at q_s) and a_r(q), σ_a*(q) at every node of the march.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScalesData {
+    /// The frames.
+    pub frames: Vec<ScaleFrame>,
+    /// (q/q_L, a_r(q)) at the march's nodes.
+    pub area: Vec<(f64, f64)>,
+    /// (q/q_L, σ_a*(q)) at the march's nodes.
+    pub wall: Vec<(f64, f64)>,
+}
+
+impl ScalesData {
+    /// Copies what the scale charts need.
+    pub fn from_scales(s: &asperity::theory::adhesion::scales::Scales) -> ScalesData {
+        let q_l = s.q.first().copied().unwrap_or(1.0);
+        ScalesData {
+            frames: s
+                .frames
+                .iter()
+                .map(|f| ScaleFrame {
+                    q_rel: f.q / q_l,
+                    a_r: f.a_r,
+                    sigma_a: f.sigma_a,
+                    pr: s.sigma.iter().copied().zip(f.density.iter().copied()).collect(),
+                })
+                .collect(),
+            area: s.q.iter().zip(&s.a_q).map(|(q, a)| (q / q_l, *a)).collect(),
+            wall: s.q.iter().zip(&s.sigma_a_q).map(|(q, w)| (q / q_l, *w)).collect(),
+        }
+    }
+}
+
 /// Pr(σ*) of an evaluation as chart points.
 pub fn pr_points(ev: &Evaluation) -> Vec<(f64, f64)> {
     ev.stats.pr.points()

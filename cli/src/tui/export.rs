@@ -127,6 +127,28 @@ pub fn export(app: &App) -> Result<Vec<String>> {
         write(&path, &t)?;
         paths.push(path.display().to_string());
     }
+    if let Some(sd) = app.scales_data().filter(|_| app.shows_scales()) {
+        // the scale view: every frame's Pr(σ*, q), long format
+        let mut t = scene_comment(app, &stem);
+        t.push_str("frame,q_over_q_l,a_r_q,sigma_a_q,sigma,density\n");
+        for (i, f) in sd.frames.iter().enumerate() {
+            for (s, d) in &f.pr {
+                let _ = writeln!(
+                    t,
+                    "{},{},{},{},{},{}",
+                    i + 1,
+                    cell(f.q_rel),
+                    cell(f.a_r),
+                    cell(f.sigma_a),
+                    cell(*s),
+                    cell(*d)
+                );
+            }
+        }
+        let path = dir.join(format!("{stem}-scales.csv"));
+        write(&path, &t)?;
+        paths.push(path.display().to_string());
+    }
     Ok(paths)
 }
 

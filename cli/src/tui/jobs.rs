@@ -2,7 +2,7 @@
 //! adhesionless comparison), the load and thickness sweeps of the charts, and the GFMD run of
 //! `g` on its own thread. Each turns the engine's results into the plain data of [`super::data`].
 
-use super::data::{self, GfmdView, PointData, SweepData, ThicknessData};
+use super::data::{self, GfmdView, PointData, ScalesData, SweepData, ThicknessData};
 use super::protocol::*;
 use asperity::error::{Error, Result};
 use asperity::input::preset::Preset;
@@ -183,6 +183,22 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
 /// contact) on every step of p*.
 pub fn interpolate_gap(sd: &SweepData, p: f64) -> Option<f64> {
     sweep::interpolate_in_ln_p(&sd.p, &sd.gap_rel, p)
+}
+
+/// The scale view of `scene`: [`SCALE_FRAMES`] snapshots of Pr(σ*, q) read off the engine's
+/// march at chart accuracy ([`Options::chart`]), sampled on [`SIGMA_POINTS`] σ*.
+pub fn scale_view(scene: &Scene, cancel: &AtomicBool) -> Result<ScalesData> {
+    use asperity::theory::adhesion::scales::{snapshots, Sampling};
+    let acc = Options::chart().adhesion;
+    let s = snapshots(
+        scene,
+        &acc,
+        None,
+        SCALE_FRAMES,
+        Sampling::Points(SIGMA_POINTS),
+        Some(cancel),
+    )?;
+    Ok(ScalesData::from_scales(&s))
 }
 
 /// Loads of the GFMD sweep drawn on the a_r and ū charts (p*/3 … 3p*).

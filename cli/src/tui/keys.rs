@@ -44,6 +44,12 @@ pub enum Action {
     Tour,
     /// Save the visible charts as SVG and PNG.
     Save,
+    /// Scale view: one resolution step coarser.
+    FramePrev,
+    /// Scale view: one resolution step finer.
+    FrameNext,
+    /// Scale view: play the resolution from q_L to q_s, or pause.
+    Play,
     /// Open or close this help.
     Help,
     /// Quit.
@@ -198,6 +204,24 @@ pub const TABLE: &[Binding] = &[
         label: "s",
         action: Action::Save,
         help: "save the visible charts as SVG and PNG here",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('['), NONE)],
+        label: "[",
+        action: Action::FramePrev,
+        help: "scale view: one resolution step coarser",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char(']'), NONE)],
+        label: "]",
+        action: Action::FrameNext,
+        help: "scale view: one resolution step finer",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char(' '), NONE)],
+        label: "Space",
+        action: Action::Play,
+        help: "scale view: play q from q_L to q_s, or pause",
     },
     Binding {
         keys: &[Key(KeyCode::Char('?'), NONE), Key(KeyCode::F(1), NONE)],

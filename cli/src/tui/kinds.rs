@@ -20,6 +20,11 @@ pub enum ChartKind {
     Stress,
     /// ū/h_rms(p*).
     Gap,
+    /// Pr(σ*, q) at one resolution q of the march, with the wall −σ_a*(q): the theory built
+    /// scale by scale.
+    Scales,
+    /// a_r(q) and σ_a*(q) along the resolution, with the scale view's current q.
+    ScalesArea,
 }
 
 /// What a chart needs computed.
@@ -31,6 +36,8 @@ pub struct Needs {
     pub loads: bool,
     /// The thickness sweep.
     pub thickness: bool,
+    /// The scale-by-scale snapshots of Pr(σ*, q) at the current scene.
+    pub scales: bool,
 }
 
 impl Needs {
@@ -40,18 +47,21 @@ impl Needs {
             point: self.point || o.point,
             loads: self.loads || o.loads,
             thickness: self.thickness || o.thickness,
+            scales: self.scales || o.scales,
         }
     }
 }
 
 impl ChartKind {
     /// Every chart, in selector order.
-    pub const ALL: [ChartKind; 7] = [
+    pub const ALL: [ChartKind; 9] = [
         ChartKind::Pr,
         ChartKind::PrLog,
         ChartKind::Area,
         ChartKind::AreaRatio,
         ChartKind::Thickness,
+        ChartKind::Scales,
+        ChartKind::ScalesArea,
         ChartKind::Stress,
         ChartKind::Gap,
     ];
@@ -66,6 +76,8 @@ impl ChartKind {
             ChartKind::Thickness => "thickness",
             ChartKind::Stress => "stress",
             ChartKind::Gap => "gap",
+            ChartKind::Scales => "scales",
+            ChartKind::ScalesArea => "scales-area",
         }
     }
 
@@ -88,7 +100,7 @@ impl ChartKind {
             ChartKind::Area | ChartKind::AreaRatio | ChartKind::Thickness => Some("a_r"),
             ChartKind::Stress => Some("mean_contact_stress"),
             ChartKind::Gap => Some("mean_gap_rel"),
-            ChartKind::Pr | ChartKind::PrLog => None,
+            ChartKind::Pr | ChartKind::PrLog | ChartKind::Scales | ChartKind::ScalesArea => None,
         }
     }
 
@@ -101,6 +113,10 @@ impl ChartKind {
             },
             ChartKind::Thickness => Needs {
                 thickness: true,
+                ..Needs::default()
+            },
+            ChartKind::Scales | ChartKind::ScalesArea => Needs {
+                scales: true,
                 ..Needs::default()
             },
             _ => Needs {

@@ -36,6 +36,7 @@ pub mod app;
 pub mod chart_model;
 pub mod charts;
 pub mod charts_load;
+pub mod charts_scales;
 pub mod data;
 pub mod effects;
 pub mod export;
@@ -207,8 +208,8 @@ pub fn run_app(mut app: App) -> Result<()> {
         if app.quit {
             return Ok(());
         }
-        // block until something happens (tick only while busy)
-        let first = if app.busy {
+        // block until something happens (tick only while busy or playing)
+        let first = if app.animating() {
             match rx.recv_timeout(TICK) {
                 Ok(m) => Some(m),
                 Err(RecvTimeoutError::Timeout) => None,

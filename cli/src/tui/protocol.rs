@@ -2,7 +2,7 @@
 //! scene, what the visible charts need), the [`Reply`]s, and the cache keys that tie a reply
 //! to the scene it belongs to. Plain data, shared by the state and the worker.
 
-use super::data::{self, PointData, SweepData, ThicknessData};
+use super::data::{self, PointData, ScalesData, SweepData, ThicknessData};
 use super::kinds::Needs;
 use asperity::error::Result;
 use asperity::input::model::Model;
@@ -97,6 +97,19 @@ pub fn thickness_key(source: &str, scene: &Scene) -> CacheKey {
     })
 }
 
+/// Frames of the scale view (Pr(σ*, q) snapshots from q_L to q_s): 48 frames played at 10
+/// per second take about 5 s, and neighbouring frames differ by ~1/48 of the march in ln q.
+pub const SCALE_FRAMES: usize = 48;
+
+/// The key of the scale view: the whole scene (p* included).
+pub fn scales_key(source: &str, scene: &Scene) -> CacheKey {
+    key_of(source, |h| {
+        3u8.hash(h);
+        scene.hash(h);
+        (SCALE_FRAMES as u64, SIGMA_POINTS as u64).hash(h);
+    })
+}
+
 /// What the worker sends back.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Reply {
@@ -135,6 +148,15 @@ pub enum Reply {
         key: CacheKey,
         /// Curves, or the error.
         result: Result<ThicknessData>,
+    },
+    /// The scale view of the current scene.
+    Scales {
+        /// Generation.
+        gen: u64,
+        /// [`scales_key`].
+        key: CacheKey,
+        /// The frames, or the error.
+        result: Result<ScalesData>,
     },
     /// Progress of the background GFMD run `id`.
     GfmdProgress {

@@ -3,10 +3,10 @@
 //! results are current, what the charts need). Keys change it in [`super::update`]; work that
 //! leaves the process (engine jobs, files) is done by [`super::effects`] and the worker.
 
-use super::data::{GfmdView, PointData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
+use super::data::{GfmdView, PointData, ScaleFrame, ScalesData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
 use super::kinds::{self as charts, ChartKind, Needs};
 pub use super::knobs::*;
-use super::protocol::{point_key, sweep_key, thickness_key, CacheKey, Request};
+use super::protocol::{point_key, scales_key, sweep_key, thickness_key, CacheKey, Request};
 use super::tour::Tour;
 use asperity::error::Result;
 use asperity::input::model::{Model, ModelKind};
@@ -78,6 +78,8 @@ pub struct App {
     pub overlay: Overlay,
     /// The charts of the big panel, the lower-left and the lower-right panel.
     pub charts: [ChartKind; 3],
+    /// First row of the help shown (the help scrolls where the terminal is short).
+    pub help_scroll: usize,
     /// The panel the chart selector (`v`) changes.
     pub focus: usize,
     /// Overlay every model on the charts (`M`).
@@ -98,6 +100,14 @@ pub struct App {
     pub gap_shown: Option<CacheKey>,
     /// The key of the shown thickness sweep.
     pub thickness_shown: Option<CacheKey>,
+    /// The scale view: Pr(σ*, q) frames from q_L to q_s.
+    pub scales: Option<Result<ScalesData>>,
+    /// The key of the shown scale view.
+    pub scales_shown: Option<CacheKey>,
+    /// The scale view's frame (None: the last, at q_s).
+    pub frame: Option<usize>,
+    /// The scale view plays (one frame per tick).
+    pub playing: bool,
     /// The tour, when one is being walked.
     pub tour: Option<TourState>,
     /// Show the adhesionless comparison in the Pr chart.
@@ -205,6 +215,7 @@ impl App {
             overlay: Overlay::None,
             charts: DEFAULT_CHARTS,
             focus: 0,
+            help_scroll: 0,
             all_models: false,
             overlay_points: HashMap::new(),
             overlay_sweeps: HashMap::new(),
@@ -214,6 +225,10 @@ impl App {
             sweep_shown: None,
             gap_shown: None,
             thickness_shown: None,
+            scales: None,
+            scales_shown: None,
+            frame: None,
+            playing: false,
             tour: None,
             compare: true,
             message: None,
@@ -349,6 +364,39 @@ impl App {
             .is_some_and(|k| *k != thickness_key(&self.source, &self.scene))
     }
 
+    /// Whether the shown scale view belongs to an earlier scene.
+    pub fn scales_is_stale(&self) -> bool {
+        self.scales_shown
+            .as_ref()
+            .is_some_and(|k| *k != scales_key(&self.source, &self.scene))
+    }
+
+    /// The scale view, if computed.
+    pub fn scales_data(&self) -> Option<&ScalesData> {
+        self.scales.as_ref().and_then(|r| r.as_ref().ok())
+    }
+
+    /// The scale view's current frame: its index, the number of frames and the frame.
+    pub fn scale_frame(&self) -> Option<(usize, usize, &ScaleFrame)> {
+        let d = self.scales_data()?;
+        let n = d.frames.len();
+        let i = self.frame.unwrap_or(usize::MAX).min(n.checked_sub(1)?);
+        Some((i, n, &d.frames[i]))
+    }
+
+    /// Whether a scale chart is shown.
+    pub fn shows_scales(&self) -> bool {
+        self.charts
+            .iter()
+            .any(|c| matches!(c, ChartKind::Scales | ChartKind::ScalesArea))
+    }
+
+    /// Whether the event loop must tick without input (a computation runs, or the scale view
+    /// plays).
+    pub fn animating(&self) -> bool {
+        self.busy || (self.playing && self.shows_scales())
+    }
+
     /// ū/h_rms at the current point, if computed.
     pub fn gap_value(&self) -> Option<f64> {
         match &self.gap {
@@ -411,9 +459,53 @@ impl App {
         }
     }
 
-    /// Advances the spinner (called on ticks while busy).
+    /// Advances the spinner and, while the scale view plays, its frame (called on ticks; the
+    /// play stops at the last frame).
     pub fn tick(&mut self) {
         self.spinner = self.spinner.wrapping_add(1);
+        if self.playing {
+            match self.scale_frame() {
+                Some((i, n, _)) if i + 1 < n => self.frame = Some(i + 1),
+                Some(_) => {
+                    self.playing = false;
+                    self.frame = None;
+                }
+                None => {}
+            }
+        }
+    }
+
+    /// Moves the scale view `dir` frames (stops at the ends; pauses a play).
+    pub fn scrub(&mut self, dir: i32) {
+        self.playing = false;
+        if let Some((i, n, _)) = self.scale_frame() {
+            let j = (i as i64 + i64::from(dir)).clamp(0, n as i64 - 1) as usize;
+            self.frame = if j + 1 == n { None } else { Some(j) };
+        } else {
+            self.info("no scale view: v picks the scales chart");
+        }
+    }
+
+    /// Plays the scale view from its first frame (or from where it stands), or pauses it.
+    pub fn toggle_play(&mut self) {
+        if self.playing {
+            self.playing = false;
+            return;
+        }
+        match self.scale_frame() {
+            Some((i, n, _)) => {
+                self.playing = true;
+                if i + 1 >= n {
+                    self.frame = Some(0);
+                }
+            }
+            None if self.shows_scales() => {
+                // play as soon as the frames arrive
+                self.playing = true;
+                self.frame = Some(0);
+            }
+            None => self.info("no scale view: v picks the scales chart"),
+        }
     }
 
     /// The first error of the current results, for the status bar.
@@ -427,6 +519,11 @@ impl App {
         }
         if let Some(Err(e)) = &self.gap {
             return Some(format!("mean gap: {}", describe(e)));
+        }
+        if self.shows_scales() {
+            if let Some(Err(e)) = &self.scales {
+                return Some(format!("scale view: {}", describe(e)));
+            }
         }
         if self.charts.contains(&ChartKind::Thickness) {
             if let Some(Err(e)) = &self.thickness {

@@ -5,7 +5,7 @@
 
 use super::keys::{self, Action};
 use super::kinds::ChartKind;
-use super::protocol::{point_key, sweep_key, thickness_key, Reply};
+use super::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
 use super::state::*;
 use super::tour::Tour;
 use asperity::error::{Error, Result};
@@ -49,6 +49,12 @@ impl App {
                     self.thickness_shown = Some(key);
                 } else if self.overlay_keys().2.contains(&key) {
                     bounded_insert(&mut self.overlay_thickness, key, result);
+                }
+            }
+            Reply::Scales { key, result, .. } => {
+                if key == scales_key(&self.source, &self.scene) {
+                    self.scales = Some(result);
+                    self.scales_shown = Some(key);
                 }
             }
             Reply::GfmdProgress {
@@ -148,10 +154,18 @@ impl App {
         }
         match self.overlay {
             Overlay::Help => {
-                // any key closes the help; q still quits
-                self.overlay = Overlay::None;
-                if ev.code == KeyCode::Char('q') {
-                    self.quit = true;
+                // ↓↑ (j k, PgDn PgUp) scroll, any other key closes the help; q still quits
+                let n = super::keys::TABLE.len();
+                match ev.code {
+                    KeyCode::Down | KeyCode::Char('j') => self.help_scroll = (self.help_scroll + 1).min(n),
+                    KeyCode::PageDown => self.help_scroll = (self.help_scroll + 8).min(n),
+                    KeyCode::Up | KeyCode::Char('k') => self.help_scroll = self.help_scroll.saturating_sub(1),
+                    KeyCode::PageUp => self.help_scroll = self.help_scroll.saturating_sub(8),
+                    code => {
+                        self.overlay = Overlay::None;
+                        self.help_scroll = 0;
+                        self.quit = code == KeyCode::Char('q');
+                    }
                 }
                 return;
             }
@@ -244,6 +258,9 @@ impl App {
             Action::Save => self.effects.push(Effect::SaveCharts),
             Action::Compare => self.compare = !self.compare,
             Action::Gfmd => self.toggle_gfmd(),
+            Action::FramePrev => self.scrub(-1),
+            Action::FrameNext => self.scrub(1),
+            Action::Play => self.toggle_play(),
             Action::Help => self.overlay = Overlay::Help,
             Action::Quit => self.quit = true,
         }
@@ -341,6 +358,9 @@ impl App {
         self.set_scene(st.scene);
         self.charts = st.charts;
         self.all_models = st.models;
+        // a step that shows the scale view plays it from q_L
+        self.playing = self.shows_scales();
+        self.frame = self.playing.then_some(0);
         self.focus = 0;
         self.edit = None;
         if let Some(k) = st.select {

@@ -84,7 +84,7 @@ pub fn draw(f: &mut Frame, app: &App) {
         render_model(f, r, &m, pal, i == app.focus);
     }
     match app.overlay {
-        Overlay::Help => draw_help(f, area, pal),
+        Overlay::Help => draw_help(f, area, app.help_scroll, pal),
         Overlay::Presets(cursor) => draw_picker(f, area, app, cursor, pal),
         Overlay::None => {}
     }
@@ -361,13 +361,29 @@ pub fn help_lines() -> Vec<String> {
         .collect()
 }
 
-fn draw_help(f: &mut Frame, area: Rect, pal: Palette) {
-    let mut lines: Vec<Line> = help_lines().into_iter().map(Line::from).collect();
-    lines.push(Line::from(Span::styled("any key closes this help", pal.dim())));
-    let w = lines.iter().map(|l| l.width()).max().unwrap_or(20) as u16 + 4;
+/// The help: every row of the key table; where the terminal is too short, the rows scroll
+/// (↓/↑, j/k) and the box's bottom line says how far.
+fn draw_help(f: &mut Frame, area: Rect, scroll: usize, pal: Palette) {
+    let rows: Vec<Line> = help_lines().into_iter().map(Line::from).collect();
+    let n = rows.len();
+    let w = rows.iter().map(|l| l.width()).max().unwrap_or(20).max(40) as u16 + 4;
+    let room = (area.height.saturating_sub(3) as usize).max(1);
+    let (lines, note) = if n < room {
+        let mut lines = rows;
+        lines.push(Line::from(Span::styled("any key closes this help", pal.dim())));
+        (lines, String::new())
+    } else {
+        let top = scroll.min(n - room);
+        let note = format!(" {}–{} of {n} · ↓↑ scroll · other keys close ", top + 1, top + room);
+        (rows.into_iter().skip(top).take(room).collect(), note)
+    };
     let r = popup(area, w, lines.len() as u16 + 2);
     f.render_widget(Clear, r);
-    f.render_widget(Paragraph::new(lines).block(Block::bordered().title(" keys ")), r);
+    let mut block = Block::bordered().title(" keys ");
+    if !note.is_empty() {
+        block = block.title_bottom(Line::from(Span::styled(note, pal.dim())).right_aligned());
+    }
+    f.render_widget(Paragraph::new(lines).block(block), r);
 }
 
 fn draw_picker(f: &mut Frame, area: Rect, app: &App, cursor: usize, pal: Palette) {

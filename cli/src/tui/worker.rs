@@ -8,16 +8,19 @@
 //!   request (holding a key never queues a backlog) and skips it if `latest` has moved on.
 //! - Work is done cheapest first, each part sent as soon as it is ready: the current point
 //!   (Pr(σ*), a_r, …), then the load sweep of the charts (cancellable: `sweep` polls `cancel`),
-//!   then ū at the current p* (a one-point sweep, cancellable). Between parts the worker
+//!   then ū at the current p* (a one-point sweep, cancellable); the scale view's snapshots
+//!   (cancellable between frames) come right after the point when a visible chart needs them. Between parts the worker
 //!   checks `latest` and abandons stale work; a cancelled part is neither sent nor cached.
 //! - Results are cached in small LRUs keyed by the scene's parameters as bits (the sweep's
 //!   key leaves out p*), so stepping p* reuses the sweep and toggling back is instant.
 //! - Every reply carries its generation and its key; the UI keeps a reply only if the key is
 //!   the one its current scene needs (so stale replies are dropped).
 
-use super::data::{self, PointData, SweepData, ThicknessData};
+use super::data::{self, PointData, ScalesData, SweepData, ThicknessData};
 use super::jobs::{evaluate_point, evaluate_preview};
-pub use super::jobs::{interpolate_gap, load_sweep, preview_sweep, spawn_gfmd, thickness_sweep, PREVIEW_EDGE_REL};
+pub use super::jobs::{
+    interpolate_gap, load_sweep, preview_sweep, scale_view, spawn_gfmd, thickness_sweep, PREVIEW_EDGE_REL,
+};
 pub use super::protocol::*;
 use asperity::error::{Error, Result};
 use asperity::input::scene::Scene;
@@ -81,6 +84,7 @@ pub struct Caches {
     sweeps: Lru<Result<SweepData>>,
     gaps: Lru<Result<f64>>,
     thick: Lru<Result<ThicknessData>>,
+    scales: Lru<Result<ScalesData>>,
 }
 
 impl Default for Caches {
@@ -91,6 +95,7 @@ impl Default for Caches {
             sweeps: Lru::new(12),
             gaps: Lru::new(64),
             thick: Lru::new(24),
+            scales: Lru::new(8),
         }
     }
 }
@@ -125,6 +130,12 @@ pub fn process(
             };
             false
         };
+    if stale() {
+        return;
+    }
+    if req.needs.scales && serve_scales(req, caches, cancel, send).is_none() {
+        return;
+    }
     if stale() {
         return;
     }
@@ -301,6 +312,27 @@ fn serve_sweep(
         result: sw.clone(),
     });
     Some(sw)
+}
+
+/// The scale view of the request's scene (cached); `None` when cancelled.
+fn serve_scales(req: &Request, caches: &mut Caches, cancel: &AtomicBool, send: &dyn Fn(Reply)) -> Option<()> {
+    let key = scales_key(&req.source, &req.scene);
+    let sc = match caches.scales.get(&key) {
+        Some(s) => s,
+        None => match scale_view(&req.scene, cancel) {
+            Err(Error::Cancelled) => return None,
+            r => {
+                caches.scales.put(key.clone(), r.clone());
+                r
+            }
+        },
+    };
+    send(Reply::Scales {
+        gen: req.gen,
+        key,
+        result: sc,
+    });
+    Some(())
 }
 
 /// The thickness sweep of `scene` (cached); `None` when cancelled.

@@ -126,6 +126,7 @@ fn request(gen: u64, p: f64) -> Request {
             point: true,
             loads: true,
             thickness: false,
+            scales: false,
         },
         models: Vec::new(),
     }
@@ -153,6 +154,7 @@ fn kinds(replies: &[Reply]) -> Vec<&'static str> {
             Reply::Sweep { .. } => "sweep",
             Reply::Gap { .. } => "gap",
             Reply::Thickness { .. } => "thickness",
+            Reply::Scales { .. } => "scales",
             Reply::Done { .. } => "done",
             Reply::GfmdProgress { .. } | Reply::GfmdDone { .. } => "gfmd",
         })
@@ -322,7 +324,8 @@ fn threaded_worker_ends_on_the_newest_generation() {
             Reply::Point { gen, .. }
             | Reply::Sweep { gen, .. }
             | Reply::Gap { gen, .. }
-            | Reply::Thickness { gen, .. } => *gen,
+            | Reply::Thickness { gen, .. }
+            | Reply::Scales { gen, .. } => *gen,
             Reply::Done { gen } => *gen,
             Reply::GfmdProgress { .. } | Reply::GfmdDone { .. } => unreachable!("the theory worker runs no GFMD"),
         };
@@ -347,4 +350,37 @@ fn keys_separate_what_matters() {
     assert_ne!(sweep_key("a", &scene, (1e-3, 1.0)), sweep_key("b", &scene, (1e-3, 1.0)));
     s2.set_thickness_qr(1.0).unwrap();
     assert_ne!(sweep_key("a", &scene, (1e-3, 1.0)), sweep_key("a", &s2, (1e-3, 1.0)));
+}
+
+#[test]
+fn the_scale_view_follows_the_point_is_cached_and_a_cancelled_one_is_neither_sent_nor_kept() {
+    let mut req = request(1, 0.01);
+    req.needs = Needs {
+        point: true,
+        scales: true,
+        ..Needs::default()
+    };
+    let mut caches = Caches::default();
+    // cancelled from the start: the point is not served either, nothing is kept
+    assert!(kinds(&serve(&req, &mut caches, true, false))
+        .iter()
+        .all(|k| *k != "scales"));
+    let out = serve(&req, &mut caches, false, false);
+    assert_eq!(kinds(&out)[..2], ["point", "scales"]);
+    let Some(Reply::Scales {
+        result: Ok(sd), key, ..
+    }) = out.iter().find(|r| matches!(r, Reply::Scales { .. }))
+    else {
+        panic!("a scale view");
+    };
+    assert_eq!(*key, scales_key("system-1", &req.scene));
+    assert_eq!(sd.frames.len(), SCALE_FRAMES);
+    // a_r(q) never rises along the march, and the last frame is at q_s
+    assert!(sd.area.windows(2).all(|w| w[1].1 <= w[0].1 + 1e-12));
+    assert_eq!(sd.frames.last().map(|f| f.q_rel), sd.area.last().map(|p| p.0));
+    // served again from the cache: the same frames
+    let again = serve(&req, &mut caches, false, false);
+    assert!(again
+        .iter()
+        .any(|r| matches!(r, Reply::Scales { result: Ok(s), .. } if s == sd)));
 }

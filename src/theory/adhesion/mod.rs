@@ -87,6 +87,7 @@ mod pair;
 mod propagator;
 mod regrid;
 mod roots;
+pub mod scales;
 mod shooting;
 mod strategy;
 mod walls;

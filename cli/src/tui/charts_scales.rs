@@ -1,0 +1,133 @@
+//! The scale view: the theory built scale by scale (physics.md §4; [S-5, S-7, S-8]).
+//!
+//! `scales` draws Pr(σ*, q) at the resolution q of the current frame, the wall at −σ_a*(q)
+//! and, for comparison, the final Pr at q_s; `scales-area` draws a_r(q) along the whole
+//! march with the current frame marked (and σ_a*(q) in its title). `[`/`]` scrub the frames,
+//! Space plays them from q_L to q_s. The frames are the engine's own march
+//! ([`super::data::ScalesData`]); nothing here computes.
+
+use super::chart_model::{base, empty_message, ChartModel, Draw, Role, Series, VLine};
+use super::kinds::ChartKind;
+use super::plot::{self, Scale};
+use super::state::App;
+use super::words::sig;
+
+/// Why a scale chart is empty.
+fn empty(app: &App, m: &mut ChartModel) {
+    m.empty = Some(match &app.scales {
+        Some(Err(e)) => format!("no scale view: {}", super::words::describe(e)),
+        _ => empty_message(app),
+    });
+}
+
+/// Pr(σ*, q) at the current frame.
+pub fn scales(app: &App) -> ChartModel {
+    let mut m = base(
+        ChartKind::Scales,
+        "Pr(σ*, q) scale by scale".into(),
+        "σ* = σ/E*ḡ",
+        "Pr",
+        Scale::Linear,
+        Scale::Linear,
+    );
+    let (Some(d), Some((i, n, f))) = (app.scales_data(), app.scale_frame()) else {
+        empty(app, &mut m);
+        return m;
+    };
+    m.stale = app.scales_is_stale();
+    m.title = format!(
+        "Pr(σ*, q) q/q_L={} {}/{n}{} a_r(q)={}",
+        sig(f.q_rel, 3),
+        i + 1,
+        if app.playing { " ▶" } else { "" },
+        sig(f.a_r, 3)
+    );
+    if let Some(last) = d.frames.last().filter(|_| i + 1 < n) {
+        m.series.push(Series {
+            name: "q = q_s".into(),
+            points: last.pr.clone(),
+            role: Role::Compare,
+            draw: Draw::Line,
+        });
+    }
+    m.series.push(Series {
+        name: format!("q/q_L = {}", sig(f.q_rel, 3)),
+        points: f.pr.clone(),
+        role: Role::Theory,
+        draw: Draw::Line,
+    });
+    let lo = f.pr.first().map_or(0.0, |p| p.0);
+    let hi = f.pr.last().map_or(1.0, |p| p.0);
+    if lo < 0.0 {
+        m.vlines.push(VLine {
+            x: 0.0,
+            role: Role::Guide,
+            name: String::new(),
+        });
+    }
+    if f.sigma_a > 0.0 {
+        m.vlines.push(VLine {
+            x: -f.sigma_a,
+            role: Role::Wall,
+            name: "−σ_a*(q)".into(),
+        });
+    }
+    // the σ* axis stays put while the frames run; the density axis follows the frame (a
+    // coarse frame's peak is many times the final one's)
+    m.xb = plot::guard(lo, hi);
+    let peak = m
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1))
+        .filter(|y| y.is_finite())
+        .fold(0.0f64, f64::max);
+    m.yb = plot::guard(0.0, peak.max(1e-300) * 1.05);
+    m
+}
+
+/// a_r(q) along the march, the current frame marked.
+pub fn scales_area(app: &App) -> ChartModel {
+    let mut m = base(
+        ChartKind::ScalesArea,
+        "a_r(q) along the resolution".into(),
+        "q/q_L",
+        "a_r(q)",
+        Scale::Log10,
+        Scale::Log10,
+    );
+    let (Some(d), Some((_, _, f))) = (app.scales_data(), app.scale_frame()) else {
+        empty(app, &mut m);
+        return m;
+    };
+    m.stale = app.scales_is_stale();
+    m.title = if f.sigma_a > 0.0 {
+        format!("a_r(q)={} σ_a*(q)={}", sig(f.a_r, 3), sig(f.sigma_a, 3))
+    } else {
+        format!("a_r(q)={} no wall", sig(f.a_r, 3))
+    };
+    m.series.push(Series {
+        name: "a_r(q)".into(),
+        points: d.area.clone(),
+        role: Role::Theory,
+        draw: Draw::Line,
+    });
+    let x = f.q_rel.log10();
+    m.vlines.push(VLine {
+        x: f.q_rel,
+        role: Role::Guide,
+        name: String::new(),
+    });
+    m.series.push(Series {
+        name: "q".into(),
+        points: vec![(f.q_rel, f.a_r)],
+        role: Role::Current,
+        draw: Draw::Points,
+    });
+    // a_r(q) falls from 1 at q_L over decades: log axes, the top at a_r = 1
+    let q_hi = d.area.last().map_or(10.0, |p| p.0).max(1.0 + 1e-9);
+    m.xb = [0.0, q_hi.log10().max(x)];
+    let a_min = d.area.iter().map(|p| p.1).filter(|a| *a > 0.0).fold(1.0f64, f64::min);
+    m.yb = plot::guard(a_min.log10(), 0.0);
+    m.clip_y = true;
+    m
+}
