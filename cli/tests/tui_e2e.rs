@@ -358,8 +358,12 @@ fn scale_view_plays_in_tmux() {
     let t = Tmux::start("scales", &dir, "");
     t.wait("the first frame with results", |s| s.contains("a_r(p*)") && solved(s));
     t.keys(&["t"]);
-    t.wait("the scale view playing", |s| s.contains("Pr(σ*, q) q/q_L=") && s.contains("/48 ▶"));
-    let s = t.wait("the play to reach q_s", |s| s.contains(" 48/48 ") && !s.contains("/48 ▶"));
+    t.wait("the scale view playing", |s| {
+        s.contains("Pr(σ*, q) q/q_L=") && s.contains("/48 ▶")
+    });
+    let s = t.wait("the play to reach q_s", |s| {
+        s.contains(" 48/48 ") && !s.contains("/48 ▶")
+    });
     assert!(s.contains("tour 1/11"), "{s}");
     t.keys(&["["]);
     t.wait("one frame back", |s| s.contains(" 47/48 "));
