@@ -444,7 +444,7 @@ fn the_scale_view_scrubs_plays_to_the_end_and_pauses() {
     assert!(m.title.contains(" 1/4 "), "{}", m.title);
     // a reply for another scene is dropped, one for this scene kept
     let mut other = a.scene.clone();
-    other.pressure *= 2.0;
+    other.set_pressure(other.pressure() * 2.0).unwrap();
     a.on_reply(Reply::Scales {
         gen: 1,
         key: super::super::protocol::scales_key(&a.source, &other),
