@@ -54,6 +54,10 @@ pub fn allowed(field: &Field) -> Option<Allowed> {
         Field::SweepStep => closed(SWEEP_STEP_RANGE),
         Field::EdgeRel => closed(EDGE_REL_RANGE),
         Field::Grid => Allowed::Range(Range::whole(4.0, MAX_GRID as f64)),
+        Field::SweepPoints => Allowed::Range(Range::whole(
+            crate::theory::sweep::SWEEP_POINTS_RANGE.0 as f64,
+            crate::theory::sweep::SWEEP_POINTS_RANGE.1 as f64,
+        )),
         Field::GfmdTolerance => Allowed::Range(TOLERANCE_RANGE),
         Field::MaxIterations => Allowed::Range(MAX_ITERATIONS_RANGE),
         Field::Bins => Allowed::Range(BINS_RANGE),

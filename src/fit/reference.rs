@@ -125,12 +125,9 @@ pub fn eq18(from: f64, to: f64, points: usize) -> Result<Reference> {
     let (lo, hi) = crate::input::scene::PRESSURE_RANGE;
     crate::error::check_in(Field::SweepFrom, from, lo, hi)?;
     crate::error::check_in(Field::SweepTo, to, from, hi)?;
-    if !(2..=10_000).contains(&points) || (to == from && points > 1) {
-        return Err(Error::invalid(
-            Field::SweepPoints,
-            points as f64,
-            "2 <= points <= 10000 with from < to",
-        ));
+    crate::theory::sweep::check_points(points)?;
+    if to == from && points > 1 {
+        return Err(Error::invalid(Field::SweepTo, to, "to > from for more than one point"));
     }
     let n = points;
     let points = (0..n)

@@ -1,7 +1,7 @@
 //! Reduced grids: L/λ_r, λ_r/λ_s and λ_s/Δa of a brute-force run, the reduced spectrum, and the
 //! inputs of [`super::run()`].
 
-use crate::error::{Error, Field, Result};
+use crate::error::{Error, Field, Range, Result};
 use crate::input::scene::Scene;
 use crate::surface::heightmap::{self, Surface};
 use crate::surface::spectrum::{Normalisation, SelfAffine, Spectrum};
@@ -55,11 +55,30 @@ impl GridSpec {
     }
 
     /// The reduced spectrum: same H, λ_s and ḡ as `full`, λ_r = bandwidth·λ_s, L = ratio·λ_r.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the grid's own field ([`Field::GfmdBandwidth`] for
+    /// λ_r/λ_s ≤ 1 or beyond the spectrum's limit, [`Field::GfmdSizeRatio`] for L/λ_r < 1), never
+    /// the surface's: the surface the user set is valid, the reduction of it is what fails.
     pub fn spectrum(&self, full: &SelfAffine) -> Result<SelfAffine> {
+        if !(self.system_size_ratio >= 1.0 && self.system_size_ratio.is_finite()) {
+            return Err(Error::invalid(
+                Field::GfmdSizeRatio,
+                self.system_size_ratio,
+                Range::closed(1.0, 4096.0),
+            ));
+        }
         let lambda_r = self.bandwidth * full.lambda_s;
         let l = self.system_size_ratio * lambda_r;
         let g = Spectrum::SelfAffine(*full).rms_gradient();
-        SelfAffine::new(l, lambda_r, full.lambda_s, full.hurst, Normalisation::RmsGradient(g))
+        SelfAffine::new(l, lambda_r, full.lambda_s, full.hurst, Normalisation::RmsGradient(g)).map_err(|e| match e {
+            Error::Invalid { .. } => Error::invalid(
+                Field::GfmdBandwidth,
+                self.bandwidth,
+                "1 < bandwidth (lambda_r/lambda_s of the reduced grid) <= 1e8, with lambda_r and L in 1e-12..1e3 m",
+            ),
+            other => other,
+        })
     }
 }
 
@@ -105,5 +124,20 @@ mod tests {
         assert_eq!(h.n(), 256);
         assert!((h.bandwidth - 16.0).abs() < 1e-12);
         assert!(g.with_grid(16).is_err());
+        // a reduction that cannot be built blames the grid's field, not the surface's
+        for (bad, field) in [
+            (GridSpec { bandwidth: 1.0, ..g }, Field::GfmdBandwidth),
+            (GridSpec { bandwidth: 0.5, ..g }, Field::GfmdBandwidth),
+            (
+                GridSpec {
+                    system_size_ratio: 0.5,
+                    ..g
+                },
+                Field::GfmdSizeRatio,
+            ),
+        ] {
+            let e = bad.spectrum(&full).unwrap_err();
+            assert_eq!(e.invalid_field(), Some(&field), "{e}");
+        }
     }
 }

@@ -125,6 +125,30 @@ pub struct Ladder {
 
 /// Runs `setup` (a generated map) at every λ_s/Δa of `points` (same L/λ_r, λ_r/λ_s, seed) and
 /// extrapolates (see the module docs). `progress` gets the rung index with each report.
+///
+/// # Errors
+/// [`Error::Unsupported`] for a given map (only a generated one can be refined);
+/// [`Error::Invalid`] for fewer than two rungs or a rung whose grid cannot be built; as
+/// [`super::run()`] for each rung.
+///
+/// # Examples
+/// ```
+/// use asperity::gfmd::{ladder::run_ladder, GfmdOptions, GfmdSetup, GridSpec};
+/// use asperity::input::preset::Preset;
+/// use std::sync::atomic::AtomicBool;
+///
+/// let scene = Preset::resolve("system-1").unwrap().scene().unwrap().without_adhesion();
+/// let setup = GfmdSetup {
+///     scene: scene.with_pressure(0.05).unwrap(),
+///     grid: GridSpec { system_size_ratio: 2.0, bandwidth: 4.0, points_per_short_wavelength: 4.0 },
+///     seed: 1,
+///     surface: None,
+///     rescale: true,
+/// };
+/// let l = run_ladder(&setup, &[4.0, 8.0], &GfmdOptions::default(), &mut |_, _| {}, &AtomicBool::new(false)).unwrap();
+/// assert_eq!(l.rungs.len(), 2);
+/// assert!(l.a_r.limit > 0.0 && l.a_r.limit < 1.0 && l.a_r.error.is_finite());
+/// ```
 pub fn run_ladder(
     setup: &GfmdSetup,
     points: &[f64],

@@ -102,6 +102,32 @@ pub struct GfmdResult {
 
 /// Generates (or takes) the map, relaxes the contact, measures it and evaluates the theory on
 /// the map's discrete spectrum. See the module docs.
+///
+/// # Errors
+/// [`Error::Invalid`] for a grid or map that cannot be built (naming the grid's field);
+/// [`Error::NotConverged`] when the relaxation misses its tolerance within its step limit;
+/// [`Error::Cancelled`]. A theory that cannot be evaluated on the map is not an error: it is
+/// `theory: None` with the reason in `theory_error`.
+///
+/// # Examples
+/// ```
+/// use asperity::gfmd::{self, GfmdOptions, GfmdSetup, GridSpec};
+/// use asperity::input::preset::Preset;
+/// use std::sync::atomic::AtomicBool;
+///
+/// // a 64² map of system I's reduced spectrum without adhesion at p* = 0.05
+/// let scene = Preset::resolve("system-1").unwrap().scene().unwrap().without_adhesion();
+/// let setup = GfmdSetup {
+///     scene: scene.with_pressure(0.05).unwrap(),
+///     grid: GridSpec { system_size_ratio: 2.0, bandwidth: 4.0, points_per_short_wavelength: 8.0 },
+///     seed: 1,
+///     surface: None,
+///     rescale: true,
+/// };
+/// let r = gfmd::run(&setup, &GfmdOptions::default(), &mut |_| {}, &AtomicBool::new(false)).unwrap();
+/// assert_eq!(r.grid, 64);
+/// assert!(r.converged && r.stats.a_r > 0.0 && r.stats.a_r < 1.0);
+/// ```
 pub fn run(
     setup: &GfmdSetup,
     opts: &GfmdOptions,

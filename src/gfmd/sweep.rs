@@ -89,6 +89,30 @@ pub fn energy(problem: &Problem<'_>, sol: &Solution) -> f64 {
 
 /// Runs the loads of `spec` on the map of `setup`, warm-starting each from the previous one
 /// (see the module docs). `progress` gets the load index with each report.
+///
+/// # Errors
+/// As [`super::run()`] for any load; [`crate::Error::Invalid`] for a spec out of range.
+///
+/// # Examples
+/// ```
+/// use asperity::gfmd::{sweep::run_sweep, GfmdOptions, GfmdSetup, GridSpec};
+/// use asperity::input::preset::Preset;
+/// use asperity::theory::sweep::SweepSpec;
+/// use std::sync::atomic::AtomicBool;
+///
+/// let scene = Preset::resolve("system-1").unwrap().scene().unwrap().without_adhesion();
+/// let setup = GfmdSetup {
+///     scene,
+///     grid: GridSpec { system_size_ratio: 2.0, bandwidth: 4.0, points_per_short_wavelength: 8.0 },
+///     seed: 1,
+///     surface: None,
+///     rescale: true,
+/// };
+/// let spec = SweepSpec { from: 0.01, to: 0.1, points: 3 };
+/// let sw = run_sweep(&setup, &spec, &GfmdOptions::default(), &mut |_, _| {}, &AtomicBool::new(false)).unwrap();
+/// // more load, more contact on the same map
+/// assert!(sw.rows.windows(2).all(|w| w[1].a_r > w[0].a_r));
+/// ```
 pub fn run_sweep(
     setup: &GfmdSetup,
     spec: &SweepSpec,

@@ -6,7 +6,7 @@
 //! script or another program reads the fields. Values that may be absent are `Option`s (never
 //! NaN), and an absent value comes with the reason where there is one.
 //!
-//! - [`point`]: one scene at one load, everything `asperity run` prints.
+//! - [`mod@point`]: one scene at one load, everything `asperity run` prints.
 
 pub mod point;
 

@@ -179,7 +179,26 @@ pub struct Evaluation {
     pub adhesive: Option<Box<AdhesiveSolution>>,
 }
 
-/// Evaluates a scene.
+/// Evaluates a scene: the adhesionless closed form [S-3, S-9] without adhesion, the adhesive
+/// march [S-5..S-9, S-14] with every branch at its load otherwise, with an error estimate.
+///
+/// # Errors
+/// [`crate::Error::Invalid`] for options out of range ([`Options::validate`]);
+/// [`crate::Error::NotConverged`] with the reason when a solver misses its tolerance.
+///
+/// # Examples
+/// ```
+/// use asperity::input::preset::Preset;
+/// use asperity::theory::engine::{evaluate, Options};
+///
+/// // model 1 on the adhesionless half-space: a_r = erf(p*/√(2V)) with √V = 1/2 in these
+/// // reduced units, so a_r = erf(√2 p*) [S-18]
+/// let scene = Preset::resolve("system-1").unwrap().scene().unwrap().without_adhesion();
+/// let scene = scene.with_model(asperity::input::model::Model::named(1).unwrap()).unwrap();
+/// let ev = evaluate(&scene, &Options::default()).unwrap();
+/// let exact = statrs::function::erf::erf(2f64.sqrt() * scene.pressure());
+/// assert!((ev.stats.a_r - exact).abs() < 1e-9);
+/// ```
 pub fn evaluate(scene: &Scene, opts: &Options) -> Result<Evaluation> {
     evaluate_warm(scene, opts, None, None)
 }

@@ -77,13 +77,7 @@ impl KnobSpec {
                 return Err(Error::invalid(field, v, allowed.clone()));
             }
         }
-        if !(1..=10_000).contains(&self.points) {
-            return Err(Error::invalid(
-                Field::SweepPoints,
-                self.points as f64,
-                "1 <= points <= 10000",
-            ));
-        }
+        crate::theory::sweep::check_points(self.points)?;
         if self.points > 1 && self.to <= self.from {
             return Err(Error::invalid(
                 Field::SweepTo,
@@ -137,6 +131,26 @@ pub struct KnobPoint {
 
 /// Evaluates the scene at every value of `spec` (see the module docs); with `with_gap` the
 /// mean gap too. Cancellation (`cancel` set) ends the call with [`Error::Cancelled`].
+///
+/// # Errors
+/// [`Error::Invalid`] for a spec or options out of range, or a value that makes the scene
+/// invalid (before any work); [`Error::Cancelled`]. A value whose solve does not converge is
+/// kept in its [`KnobPoint::result`].
+///
+/// # Examples
+/// ```
+/// use asperity::input::preset::Preset;
+/// use asperity::theory::engine::Options;
+/// use asperity::theory::knob::{knob_sweep, Knob, KnobSpec};
+///
+/// // system II without adhesion: a thinner slab (traction-free far side, f(qt) → (qt)³/6
+/// // [S-4]) gives way at long wavelengths, so more of it touches at the same load
+/// let scene = Preset::resolve("system-2").unwrap().scene().unwrap().without_adhesion();
+/// let spec = KnobSpec { knob: Knob::Thickness, from: 0.1, to: 10.0, points: 3 };
+/// let pts = knob_sweep(&scene, &spec, &Options::default(), false, None).unwrap();
+/// let a: Vec<f64> = pts.iter().map(|p| p.result.as_ref().unwrap().stats.a_r).collect();
+/// assert!(a[0] > a[1] && a[1] > a[2]);
+/// ```
 pub fn knob_sweep(
     scene: &Scene,
     spec: &KnobSpec,

@@ -43,6 +43,22 @@ pub struct SweepSpec {
     pub points: usize,
 }
 
+/// Allowed number of points of any sweep (loads, a knob, a reference): one range everywhere.
+pub const SWEEP_POINTS_RANGE: (usize, usize) = (1, 100_000);
+
+/// [`Error::Invalid`] for [`Field::SweepPoints`] outside [`SWEEP_POINTS_RANGE`].
+pub(crate) fn check_points(points: usize) -> Result<()> {
+    if (SWEEP_POINTS_RANGE.0..=SWEEP_POINTS_RANGE.1).contains(&points) {
+        Ok(())
+    } else {
+        Err(Error::invalid(
+            Field::SweepPoints,
+            points as f64,
+            crate::error::Range::whole(SWEEP_POINTS_RANGE.0 as f64, SWEEP_POINTS_RANGE.1 as f64),
+        ))
+    }
+}
+
 impl SweepSpec {
     /// Checks the range against the engine's pressure range.
     pub fn validate(&self) -> Result<()> {
@@ -52,13 +68,7 @@ impl SweepSpec {
                 return Err(Error::invalid(field, v, allowed.clone()));
             }
         }
-        if !(1..=100_000).contains(&self.points) {
-            return Err(Error::invalid(
-                Field::SweepPoints,
-                self.points as f64,
-                "1 <= points <= 100000",
-            ));
-        }
+        check_points(self.points)?;
         if self.points > 1 && self.to <= self.from {
             return Err(Error::invalid(
                 Field::SweepTo,
@@ -209,6 +219,25 @@ impl Sweep {
 pub use crate::theory::loads::{energies, evaluate_node, evaluations, node_results};
 
 /// Runs a sweep (see the module docs).
+///
+/// # Errors
+/// [`Error::Invalid`] for a spec out of range ([`SweepSpec::validate`]) or options out of
+/// range; [`Error::Cancelled`] when `cancel` is set. A load whose solve does not converge is
+/// kept as a row marked unconverged (and listed in [`Sweep::failed_loads`]), not an error.
+///
+/// # Examples
+/// ```
+/// use asperity::input::preset::Preset;
+/// use asperity::theory::engine::Options;
+/// use asperity::theory::sweep::{sweep, SweepSpec};
+///
+/// let scene = Preset::resolve("system-1").unwrap().scene().unwrap().without_adhesion();
+/// let spec = SweepSpec { from: 1e-3, to: 0.1, points: 5 };
+/// let sw = sweep(&scene, &spec, &Options::default(), None).unwrap();
+/// assert_eq!(sw.rows.len(), 5);
+/// // more load, more contact and a smaller gap
+/// assert!(sw.rows.windows(2).all(|w| w[1].a_r > w[0].a_r && w[1].mean_gap_rel < w[0].mean_gap_rel));
+/// ```
 pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&AtomicBool>) -> Result<Sweep> {
     spec.validate()?;
     let mut s0 = scene.clone();

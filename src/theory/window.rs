@@ -385,7 +385,25 @@ pub const WINDOW_STEP: f64 = 4.0;
 /// else `None`: see [`window_around_from`], after a solve at p* that finds every branch.
 ///
 /// # Errors
-/// As [`adhesion::solve`].
+/// As [`adhesion::solve`]: [`crate::Error::NotConverged`] when a branch or an edge cannot
+/// be resolved, [`crate::Error::Cancelled`].
+///
+/// # Examples
+/// ```
+/// use asperity::input::preset::Preset;
+/// use asperity::theory::adhesion::AdhesionAccuracy;
+/// use asperity::theory::window::window_around;
+///
+/// // system II, model 3, a thin slab (t·q_r = 0.1) at 0.8 γ_s and p* = 1e-5: two stable
+/// // branches, between a pull-off below and a jump into contact above
+/// let s = Preset::resolve("system-2").unwrap().scene().unwrap();
+/// let s = s.with_model(asperity::input::model::Model::named(3).unwrap()).unwrap();
+/// let g = 0.8 * s.surface_energy_j_m2();
+/// let s = s.with_thickness_qr(0.1).unwrap().with_surface_energy_j_m2(g).unwrap().with_pressure(1e-5).unwrap();
+/// let w = window_around(&s, &AdhesionAccuracy::default(), None).unwrap().unwrap();
+/// assert!(w.jump_in_pressure.unwrap() > 1e-5);
+/// assert!(w.pull_off_pressure.map_or(true, |p| p < 1e-5));
+/// ```
 pub fn window_around(scene: &Scene, acc: &AdhesionAccuracy, cancel: Option<&AtomicBool>) -> Result<Option<Window>> {
     if scene.gamma == 0.0 {
         return Ok(None);

@@ -115,6 +115,22 @@ pub struct MeanGap {
 /// The mean gap at the scene's pressure, p* > 0 (an error otherwise: the energy route is
 /// singular at p = 0). Evaluates the scene once and the adhesionless scene from p* up to full
 /// contact ([`mean_gap_of`]).
+///
+/// # Errors
+/// [`crate::Error::NotConverged`] when the evaluation or the adhesionless table of ū₀ cannot
+/// be resolved.
+///
+/// # Examples
+/// ```
+/// use asperity::input::preset::Preset;
+/// use asperity::theory::{engine::Options, gap::mean_gap};
+///
+/// // adhesion pulls the surfaces together: at the same load the gap is smaller (§5.1)
+/// let wet = Preset::resolve("system-2").unwrap().scene().unwrap().with_pressure(1e-3).unwrap();
+/// let dry = wet.without_adhesion();
+/// let (g, g0) = (mean_gap(&wet, &Options::default()).unwrap(), mean_gap(&dry, &Options::default()).unwrap());
+/// assert!(g.relative <= g0.relative && g.lower <= g.relative && g.relative <= g.upper);
+/// ```
 pub fn mean_gap(scene: &Scene, opts: &crate::theory::engine::Options) -> Result<MeanGap> {
     check_load(scene.pressure)?;
     let ev = crate::theory::engine::evaluate(scene, opts)?;
