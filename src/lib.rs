@@ -28,7 +28,7 @@
 //!   theory, adhesion [S-5..S-9, S-14], energy and mean gap [S-11, S-12], sweeps, and the
 //!   [`theory::engine`] that evaluates one scene.
 //! - [`gfmd`]: the brute-force reference solver.
-//! - [`report`]: what a front end shows of one scene ([`report::point`]: branches, window,
+//! - [`report`]: what a front end shows of one scene ([`report::point()`]: branches, window,
 //!   per-branch gap with its bracket, error bars, timings).
 //! - [`fit`]: gauging model coefficients on reference data (weighted least squares).
 //! - [`contact`]: [`contact::ContactStats`], the statistics every result carries.

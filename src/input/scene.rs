@@ -109,7 +109,10 @@ impl Scene {
     /// A validated scene.
     ///
     /// # Errors
-    /// [`Error::Invalid`] naming the first field out of its range (see [`Scene::validate`]).
+    /// [`Error::Invalid`] naming the first field out of its range ([`PRESSURE_RANGE`],
+    /// [`THICKNESS_RANGE`], [`SURFACE_ENERGY_RANGE`], [`RANGE_RANGE_M`],
+    /// [`MODULUS_RANGE_PA`] or a model's); [`Error::Unsupported`] for a variant of the
+    /// literature on an adhesive or slab scene.
     pub fn new(
         spectrum: Spectrum,
         contact_modulus_pa: f64,
