@@ -7,14 +7,17 @@ use crate::surface::heightmap::Surface;
 /// The minimiser.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Method {
-    /// Polonsky–Keer where it is cheaper, FIRE elsewhere: PK for the hard wall on grids of at
-    /// most [`PK_MAX_NODES`] nodes, FIRE alone above (PK's iterations grow ∝ N^0.9, FIRE's
-    /// ∝ N^0.3: at 4096² FIRE took 107 s where PK took ≈ 150–220 s, BENCHMARKS.md) and with
-    /// adhesion.
+    /// Polonsky–Keer where it is cheaper, FIRE elsewhere: PK for the hard wall of a
+    /// semi-infinite body on grids of at most [`PK_MAX_NODES`] nodes; FIRE alone on slabs, above
+    /// that size (PK's iterations grow ∝ N^0.9, FIRE's ∝ N^0.3: at 4096² FIRE took 107 s where
+    /// PK took ≈ 150–220 s) and with adhesion (BENCHMARKS.md). On a slab PK's iterations grow as
+    /// the slab thins (system II, 256², p* = 0.009: 54 on a half-space, 342 at t·q_r = 1, 19 138
+    /// at 0.3, where FIRE needs 446–661 steps, 160× faster at 0.3).
     #[default]
     Auto,
     /// Polonsky–Keer constrained CG for the hard wall, FIRE to check and finish (FIRE alone
-    /// with adhesion). 2–5× fewer FFTs than FIRE alone up to 1024² (BENCHMARKS.md).
+    /// with adhesion). 2–5× fewer FFTs than FIRE alone up to 1024² on a half-space
+    /// (BENCHMARKS.md).
     PolonskyKeer,
     /// FIRE alone.
     Fire,
@@ -24,10 +27,11 @@ pub enum Method {
 pub const PK_MAX_NODES: usize = 2048 * 2048;
 
 impl Method {
-    /// Whether a hard-wall run (no adhesion) on `nodes` grid nodes relaxes with Polonsky–Keer.
-    pub fn uses_pk(self, nodes: usize) -> bool {
+    /// Whether a hard-wall run (no adhesion) on `nodes` grid nodes of a body that is
+    /// `semi_infinite` (else a slab) relaxes with Polonsky–Keer.
+    pub fn uses_pk(self, nodes: usize, semi_infinite: bool) -> bool {
         match self {
-            Method::Auto => nodes <= PK_MAX_NODES,
+            Method::Auto => semi_infinite && nodes <= PK_MAX_NODES,
             Method::PolonskyKeer => true,
             Method::Fire => false,
         }

@@ -283,6 +283,8 @@ pub fn prepare(setup: &GfmdSetup) -> Result<Prepared> {
                 _ => unreachable!("reduce gives a self-affine spectrum"),
             };
             let surface = heightmap::generate(&spec, setup.grid.n(), setup.seed)?;
+            let mut reduction = reduction;
+            super::reduction::check_map(&mut reduction, &red, &surface, spec.q_r())?;
             Ok(Prepared {
                 rms_gradient: surface.rms_gradient(),
                 q_r: spec.q_r(),
