@@ -238,10 +238,14 @@ fn auto_method_by_scene_class() {
     assert!(!Method::Fire.uses_pk(64 * 64, true));
     let p = Preset::resolve("system-2").unwrap();
     for (thickness, pk) in [(f64::INFINITY, true), (1.0, false)] {
-        let mut scene = p.scene().unwrap();
-        scene.gamma = 0.0;
-        scene.pressure = 0.009;
-        scene.thickness_qr = thickness;
+        let scene = p
+            .scene()
+            .unwrap()
+            .without_adhesion()
+            .with_pressure(0.009)
+            .unwrap()
+            .with_thickness_qr(thickness)
+            .unwrap();
         let setup = GfmdSetup {
             scene,
             grid: GridSpec::from_preset(p.gfmd.as_ref().unwrap()).with_grid(64).unwrap(),
