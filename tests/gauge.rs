@@ -322,3 +322,80 @@ fn data_too_noisy_to_pin_a_parameter_say_so() {
     };
     assert!(fit::fit(&half_space(Model::named(1).unwrap()), &fine, &[Param::C1]).is_ok());
 }
+
+/// `gfmd_reference` with a resolution ladder on one seed: each load's value is the Δa → 0
+/// limit of the same map's sweeps at every rung (run here one by one with `run_sweep` and
+/// extrapolated by `ladder::extrapolate`), and its error is the extrapolation error alone
+/// (no seed-to-seed term for K = 1).
+#[test]
+fn gfmd_reference_with_a_ladder_is_the_extrapolated_sweeps() {
+    use asperity::fit::gfmd_reference::{gfmd_reference, GfmdReferenceSpec};
+    use asperity::gfmd::ladder::extrapolate;
+    use asperity::gfmd::sweep::run_sweep;
+    use asperity::gfmd::{GfmdOptions, GfmdSetup, GridSpec};
+    use asperity::input::preset::Preset;
+    use asperity::theory::sweep::SweepSpec;
+    use std::sync::atomic::AtomicBool;
+    let scene = Preset::resolve("system-2").unwrap().scene().unwrap().without_adhesion();
+    let grid = GridSpec {
+        system_size_ratio: 2.0,
+        bandwidth: 4.0,
+        points_per_short_wavelength: 4.0,
+    };
+    let setup = GfmdSetup {
+        scene,
+        grid,
+        seed: 3,
+        surface: None,
+        rescale: true,
+    };
+    let loads = SweepSpec {
+        from: 0.01,
+        to: 0.04,
+        points: 2,
+    };
+    let rungs = [4.0, 8.0];
+    let opts = GfmdOptions::default();
+    let cancel = AtomicBool::new(false);
+    let spec = GfmdReferenceSpec {
+        loads,
+        seeds: 1,
+        ladder: Some(rungs.to_vec()),
+    };
+    let g = gfmd_reference(&setup, &spec, &opts, &mut |_, _| {}, &cancel).unwrap();
+    let sweeps: Vec<_> = rungs
+        .iter()
+        .map(|&pts| {
+            let s = GfmdSetup {
+                grid: GridSpec {
+                    points_per_short_wavelength: pts,
+                    ..grid
+                },
+                ..setup.clone()
+            };
+            run_sweep(&s, &loads, &opts, &mut |_, _| {}, &cancel).unwrap()
+        })
+        .collect();
+    // Δa at fixed λ_s: the grids' own spacings
+    let h: Vec<f64> = sweeps.iter().map(|s| 1.0 / s.grid as f64).collect();
+    assert_eq!(g.rows.len(), 2);
+    for (k, row) in g.rows.iter().enumerate() {
+        let a: Vec<f64> = sweeps.iter().map(|s| s.rows[k].a_r).collect();
+        let u: Vec<f64> = sweeps.iter().map(|s| s.rows[k].mean_gap_rel).collect();
+        let (ea, eu) = (extrapolate(&h, &a).unwrap(), extrapolate(&h, &u).unwrap());
+        for (what, got, want) in [
+            ("a_r", row.a_r, ea.limit),
+            ("a_r_err", row.a_r_err.unwrap(), ea.error),
+            ("mean_gap_rel", row.mean_gap_rel, eu.limit),
+            ("mean_gap_rel_err", row.mean_gap_rel_err.unwrap(), eu.error),
+        ] {
+            assert!(
+                (got / want - 1.0).abs() < GFMD_REFERENCE_ROWS_REL,
+                "load {k} {what}: {got} vs {want}"
+            );
+        }
+    }
+    // without adhesion: a_r and ū/h_rms, σ̄_c* = p*/a_r left out
+    let obs = g.reference.observables();
+    assert_eq!(obs, vec![Observable::Area, Observable::MeanGapRel]);
+}
