@@ -357,6 +357,24 @@ fn scale_view_plays_in_tmux() {
     std::fs::create_dir_all(&dir).unwrap();
     let t = Tmux::start("scales", &dir, "");
     t.wait("the first frame with results", |s| s.contains("a_r(p*)") && solved(s));
+    // pin two thicknesses (Fig. 8): t·q_r = 0.1, P, t·q_r = 0.4, P, back to ∞
+    t.keys(&["Down"]);
+    for (v, n) in [("0.1", 1), ("0.4", 2)] {
+        let mut k: Vec<&str> = v.split("").filter(|c| !c.is_empty()).collect();
+        k.push("Enter");
+        t.keys(&k);
+        t.wait("the thin slab solved", |s| {
+            s.contains(&format!("t·q_r    {v}")) && solved(s)
+        });
+        std::thread::sleep(Duration::from_millis(300));
+        t.keys(&["P"]);
+        t.wait("the pin", |s| s.contains(&format!("pinned ({n} of 6)")));
+    }
+    t.keys(&["Enter", "i", "n", "f", "Enter"]);
+    let s = t.wait("both pins drawn at t = ∞", |s| {
+        s.contains("t·q_r=0.1") && s.contains("t·q_r=0.4") && s.contains("t·q_r    ∞") && solved(s)
+    });
+    assert!(s.contains("t·q_r=∞"), "the current curve named too: {s}");
     t.keys(&["t"]);
     t.wait("the scale view playing", |s| {
         s.contains("Pr(σ*, q) q/q_L=") && s.contains("/48 ▶")

@@ -41,6 +41,8 @@ pub enum Role {
     JumpIn,
     /// The pull-off load: below it the unloading branch no longer exists.
     PullOff,
+    /// A pinned curve (`P`), the pin's index.
+    Pin(usize),
 }
 
 /// One series, in data units (NaN marks a gap).

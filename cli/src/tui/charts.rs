@@ -28,10 +28,38 @@ pub use super::chart_model::{ChartModel, Draw, Role, Series, VLine};
 use super::charts_load::{area, loads, thickness};
 use super::data::{self, PointData};
 pub use super::kinds::{overlay_models, slot, slot_name, ChartKind, Needs};
+use super::pins::{self, Pin};
 use super::plot::{self, Scale};
 use super::state::App;
+use asperity::input::scene::Scene;
 /// Builds the chart `kind` from the app's results.
 pub fn build(app: &App, kind: ChartKind) -> ChartModel {
+    let mut m = build_own(app, kind);
+    draw_pins(&mut m, &app.pins, &app.scene);
+    m
+}
+
+/// The theory curve of every visible chart that has one (what `P` pins).
+pub fn pin_curves(app: &App) -> Vec<(ChartKind, Vec<(f64, f64)>)> {
+    let theory = theory_role(app);
+    let mut curves: Vec<(ChartKind, Vec<(f64, f64)>)> = Vec::new();
+    for k in app.charts {
+        if curves.iter().any(|(c, _)| *c == k) {
+            continue;
+        }
+        let m = build_own(app, k);
+        if m.empty.is_some() || m.stale {
+            continue;
+        }
+        if let Some(s) = m.series.iter().rev().find(|s| s.role == theory && s.points.len() > 1) {
+            curves.push((k, s.points.clone()));
+        }
+    }
+    curves
+}
+
+/// The chart without the pins.
+pub fn build_own(app: &App, kind: ChartKind) -> ChartModel {
     match kind {
         ChartKind::Pr => pr_linear(app),
         ChartKind::PrLog => pr_loglog(app),
@@ -204,6 +232,52 @@ fn pr_loglog(app: &App) -> ChartModel {
     let top = plot::bounds(&refs, false, 0.0).map_or(0.0, |b| b[1]);
     m.yb = [top - 6.0, top + 0.3];
     m
+}
+
+/// Draws the pins that have a curve of this chart's kind under its series (before them), and
+/// widens the chart's plane bounds to show them.
+fn draw_pins(m: &mut ChartModel, pins: &[Pin], now: &Scene) {
+    if m.empty.is_some() {
+        return;
+    }
+    let mut added = Vec::new();
+    for (i, p) in pins.iter().enumerate() {
+        if let Some((_, pts)) = p.curves.iter().find(|(k, _)| *k == m.kind) {
+            added.push(Series {
+                name: pins::label(&p.scene, now),
+                points: pts.clone(),
+                role: Role::Pin(i),
+                draw: Draw::Line,
+            });
+        }
+    }
+    if added.is_empty() {
+        return;
+    }
+    for s in &added {
+        for &(x, y) in &s.points {
+            let (Some(px), Some(py)) = (m.xs.forward(x), m.ys.forward(y)) else {
+                continue;
+            };
+            if !(px.is_finite() && py.is_finite()) || (m.clip_y && py < m.yb[0]) {
+                continue;
+            }
+            // Pr charts: the flat tails do not widen the σ* axis
+            let tail = matches!(m.kind, ChartKind::Pr) && y <= 1e-3 * m.ys.inverse(m.yb[1]);
+            if !tail {
+                m.xb = [m.xb[0].min(px), m.xb[1].max(px)];
+            }
+            m.yb = [m.yb[0].min(py), m.yb[1].max(py)];
+        }
+    }
+    // the current curve is named the same way, by what differs from the first pin
+    if let Some(first) = pins.first() {
+        let now_name = pins::label(now, &first.scene);
+        for s in m.series.iter_mut().filter(|s| s.role == Role::Theory) {
+            s.name = now_name.clone();
+        }
+    }
+    m.series.splice(0..0, added);
 }
 
 #[cfg(test)]

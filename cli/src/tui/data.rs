@@ -232,11 +232,22 @@ impl ScalesData {
             frames: s
                 .frames
                 .iter()
-                .map(|f| ScaleFrame {
-                    q_rel: f.q / q_l,
-                    a_r: f.a_r,
-                    sigma_a: f.sigma_a,
-                    pr: s.sigma.iter().copied().zip(f.density.iter().copied()).collect(),
+                .map(|f| {
+                    // the march's round-off far from the distribution (|Pr| < 1e-12 of the
+                    // peak) is drawn as the zero it is
+                    let peak = f.density.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+                    let pr = s
+                        .sigma
+                        .iter()
+                        .zip(&f.density)
+                        .map(|(&x, &d)| (x, if d.abs() < 1e-12 * peak { 0.0 } else { d }))
+                        .collect();
+                    ScaleFrame {
+                        q_rel: f.q / q_l,
+                        a_r: f.a_r,
+                        sigma_a: f.sigma_a,
+                        pr,
+                    }
                 })
                 .collect(),
             area: s.q.iter().zip(&s.a_q).map(|(q, a)| (q / q_l, *a)).collect(),

@@ -84,9 +84,7 @@ fn write(path: &Path, text: &str) -> Result<()> {
 pub fn export(app: &App) -> Result<Vec<String>> {
     let name = safe_name(app);
     let dir = &app.export_dir;
-    let n = (1..10_000)
-        .find(|n| !dir.join(format!("asperity-{name}-{n}.toml")).exists())
-        .ok_or_else(|| Error::Io("too many exports in this directory".into()))?;
+    let n = next_number(dir, &name)?;
     let stem = format!("asperity-{name}-{n}");
     let mut paths = Vec::new();
 
@@ -124,6 +122,22 @@ pub fn export(app: &App) -> Result<Vec<String>> {
             );
         }
         let path = dir.join(format!("{stem}-loads.csv"));
+        write(&path, &t)?;
+        paths.push(path.display().to_string());
+    }
+    if !app.pins.is_empty() {
+        // the pinned curves, each named by what differs from the exported scene
+        let mut t = scene_comment(app, &stem);
+        t.push_str("pin,label,chart,x,y\n");
+        for (i, p) in app.pins.iter().enumerate() {
+            let label = super::pins::label(&p.scene, &app.scene).replace(',', ";");
+            for (k, pts) in &p.curves {
+                for (x, y) in pts {
+                    let _ = writeln!(t, "{},{label},{},{},{}", i + 1, k.name(), cell(*x), cell(*y));
+                }
+            }
+        }
+        let path = dir.join(format!("{stem}-pins.csv"));
         write(&path, &t)?;
         paths.push(path.display().to_string());
     }
@@ -229,6 +243,31 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
     }
 }
 
+/// The file number of the next `e` or `s`: one past the highest number of any
+/// `asperity-NAME-N…` file in `dir`, so the two keys share one sequence and never overwrite.
+fn next_number(dir: &Path, name: &str) -> Result<u32> {
+    let prefix = format!("asperity-{name}-");
+    let highest = std::fs::read_dir(dir)
+        .map_err(|e| Error::Io(format!("cannot read {}: {e}", dir.display())))?
+        .filter_map(|e| e.ok())
+        .filter_map(|e| {
+            let f = e.file_name().to_string_lossy().into_owned();
+            let rest = f.strip_prefix(&prefix)?;
+            let digits: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
+            let after = rest[digits.len()..].chars().next();
+            // NAME-N.ext or NAME-N-part.ext (a preset named like NAME-2 does not count)
+            matches!(after, Some('.') | Some('-'))
+                .then(|| digits.parse::<u32>().ok())
+                .flatten()
+        })
+        .max()
+        .unwrap_or(0);
+    if highest >= 9_999 {
+        return Err(Error::Io("too many exports in this directory".into()));
+    }
+    Ok(highest + 1)
+}
+
 fn safe_name(app: &App) -> String {
     app.preset
         .name
@@ -262,13 +301,7 @@ pub fn export_charts(app: &App) -> Result<Vec<String>> {
     }
     let name = safe_name(app);
     let dir = &app.export_dir;
-    let n = (1..10_000)
-        .find(|n| {
-            models
-                .iter()
-                .all(|(k, _)| !dir.join(format!("asperity-{name}-{n}-{}.svg", k.name())).exists())
-        })
-        .ok_or_else(|| Error::Io("too many exports in this directory".into()))?;
+    let n = next_number(dir, &name)?;
     let sc = &app.scene;
     let t = if sc.thickness_qr().is_infinite() {
         "∞".to_string()

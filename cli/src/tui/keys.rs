@@ -44,6 +44,12 @@ pub enum Action {
     Tour,
     /// Save the visible charts as SVG and PNG.
     Save,
+    /// Pin the theory curves of the visible charts.
+    Pin,
+    /// Remove the newest pin.
+    Unpin,
+    /// Remove every pin.
+    UnpinAll,
     /// Scale view: one resolution step coarser.
     FramePrev,
     /// Scale view: one resolution step finer.
@@ -204,6 +210,24 @@ pub const TABLE: &[Binding] = &[
         label: "s",
         action: Action::Save,
         help: "save the visible charts as SVG and PNG here",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('P'), NONE)],
+        label: "P",
+        action: Action::Pin,
+        help: "pin the visible curves (kept while the scene changes)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('u'), NONE)],
+        label: "u",
+        action: Action::Unpin,
+        help: "unpin the newest pin",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('U'), NONE)],
+        label: "U",
+        action: Action::UnpinAll,
+        help: "unpin all",
     },
     Binding {
         keys: &[Key(KeyCode::Char('['), NONE)],

@@ -4,6 +4,7 @@
 //!
 //! - state: [`state`] (the scene, the knobs, the charts, the results shown: plain data),
 //!   [`knobs`] (the panel's parameters and their pure stepping), [`kinds`] (the chart kinds),
+//!   [`pins`] (pinned curves and their names),
 //!   [`protocol`] (requests, replies and cache keys of the worker), [`tour`] (teaching tours,
 //!   TOML files in `tours/`), [`data`] (the plain data of engine results).
 //! - update: [`update`] (a key or a reply → the next state plus effects), [`keys`] (the key
@@ -46,6 +47,7 @@ pub mod kinds;
 pub mod knobs;
 pub mod palette;
 pub mod panel;
+pub mod pins;
 pub mod plot;
 pub mod protocol;
 pub mod state;

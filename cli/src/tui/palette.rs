@@ -44,6 +44,19 @@ impl Palette {
     pub fn gfmd(&self) -> Style {
         self.fg(240, 228, 66)
     }
+    /// Pin `i` (greys and earth tones, apart from the roles' Okabe–Ito colours).
+    pub fn pin(&self, i: usize) -> Style {
+        const PINS: [(u8, u8, u8); 6] = [
+            (150, 150, 150),
+            (140, 86, 75),
+            (127, 60, 141),
+            (17, 119, 51),
+            (68, 68, 68),
+            (170, 170, 0),
+        ];
+        let (r, g, b) = PINS[i % PINS.len()];
+        self.fg(r, g, b)
+    }
     /// Errors.
     pub fn error(&self) -> Style {
         self.fg(213, 94, 0).add_modifier(Modifier::BOLD)

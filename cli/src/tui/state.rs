@@ -104,6 +104,8 @@ pub struct App {
     pub scales: Option<Result<ScalesData>>,
     /// The key of the shown scale view.
     pub scales_shown: Option<CacheKey>,
+    /// Pinned curves (`P`), oldest first.
+    pub pins: Vec<super::pins::Pin>,
     /// The scale view's frame (None: the last, at q_s).
     pub frame: Option<usize>,
     /// The scale view plays (one frame per tick).
@@ -229,6 +231,7 @@ impl App {
             scales_shown: None,
             frame: None,
             playing: false,
+            pins: Vec::new(),
             tour: None,
             compare: true,
             message: None,
@@ -296,6 +299,12 @@ impl App {
             needs: self.needs(),
             models,
         })
+    }
+
+    /// The GFMD run to start, if `g` asked for one: its id, scene and cancel flag (the event
+    /// loop builds the setup, `jobs::gfmd_setup`, and starts the thread).
+    pub fn take_gfmd_request(&mut self) -> Option<(u64, Scene, Arc<AtomicBool>)> {
+        self.gfmd_request.take()
     }
 
     /// What the visible charts need computed.

@@ -109,6 +109,25 @@ impl App {
         }
     }
 
+    /// `P`: pins the theory curve of every visible chart that has one (the oldest pin goes
+    /// beyond [`super::pins::MAX_PINS`]).
+    pub fn pin(&mut self) {
+        let curves = super::charts::pin_curves(self);
+        if curves.is_empty() {
+            return self.info("nothing to pin yet (no current curve)");
+        }
+        if self.pins.len() >= super::pins::MAX_PINS {
+            self.pins.remove(0);
+        }
+        let scene = self.scene.clone();
+        self.pins.push(super::pins::Pin { scene, curves });
+        let n = self.pins.len();
+        self.info(format!(
+            "pinned ({n} of {}): u unpins the newest, U all",
+            super::pins::MAX_PINS
+        ));
+    }
+
     /// `g`: asks for a GFMD run of the current scene on the preset's reduced grid, or cancels
     /// the running one.
     pub fn toggle_gfmd(&mut self) {
@@ -133,12 +152,6 @@ impl App {
             residual: f64::NAN,
         };
         self.info("GFMD started on the preset's reduced grid (g cancels)");
-    }
-
-    /// The GFMD run to start, if `g` asked for one: its id, scene and cancel flag (the event
-    /// loop builds the setup, `jobs::gfmd_setup`, and starts the thread).
-    pub fn take_gfmd_request(&mut self) -> Option<(u64, Scene, Arc<AtomicBool>)> {
-        self.gfmd_request.take()
     }
 
     /// Handles one key press.
@@ -258,6 +271,11 @@ impl App {
             Action::Save => self.effects.push(Effect::SaveCharts),
             Action::Compare => self.compare = !self.compare,
             Action::Gfmd => self.toggle_gfmd(),
+            Action::Pin => self.pin(),
+            Action::Unpin | Action::UnpinAll => {
+                let text = super::pins::unpin(&mut self.pins, action == Action::UnpinAll, &self.scene);
+                self.info(text);
+            }
             Action::FramePrev => self.scrub(-1),
             Action::FrameNext => self.scrub(1),
             Action::Play => self.toggle_play(),

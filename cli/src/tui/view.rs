@@ -191,6 +191,9 @@ const MODEL_MARKERS: [Marker; 5] = [
     Marker::HalfBlock,
 ];
 
+/// Markers of the pins (with the pin colours, told apart without colour by the name).
+const PIN_MARKERS: [Marker; 2] = [Marker::Braille, Marker::Dot];
+
 /// The legend symbol of a marker.
 fn marker_symbol(m: Marker) -> &'static str {
     match m {
@@ -227,6 +230,7 @@ fn look(pal: Palette, role: Role, draw: Draw) -> (Style, Marker, GraphType) {
         Role::Unloading => (pal.wall(), Marker::Dot, GraphType::Line),
         Role::JumpIn => (pal.current(), Marker::Bar, GraphType::Line),
         Role::PullOff => (pal.wall(), Marker::Bar, GraphType::Line),
+        Role::Pin(i) => (pal.pin(i), PIN_MARKERS[i % PIN_MARKERS.len()], GraphType::Line),
     }
 }
 
