@@ -11,8 +11,7 @@ use super::plot::Scale;
 use super::state::App;
 use crate::chart::{self, ChartSpec, Series, SeriesStyle};
 use asperity::error::{Error, Result};
-use asperity::input::model::ModelKind;
-use asperity::input::preset::{ModelSpec, Preset, Variant};
+use asperity::input::preset::{ModelSpec, Preset};
 use asperity::input::scene::Scene;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -25,22 +24,8 @@ pub fn scene_preset(base: &Preset, scene: &Scene) -> Preset {
     p.load.thickness_qr = scene.thickness_qr();
     p.adhesion.surface_energy_j_m2 = scene.surface_energy_j_m2();
     p.adhesion.range_m = scene.range_m();
-    let m = scene.model();
-    p.model = match m.kind {
-        ModelKind::Custom => ModelSpec {
-            variant: Variant::Name("custom".into()),
-            c1: Some(m.c1),
-            c2: Some(m.c2),
-            alpha: Some(m.alpha),
-            k_griffith: Some(m.k_griffith),
-            cap: Some(m.cap),
-            fudge_gamma: None,
-        },
-        _ => ModelSpec {
-            variant: Variant::Number(i64::from(m.number().unwrap_or(3))),
-            ..ModelSpec::default()
-        },
-    };
+    // the preset's own spelling of the model (custom coefficients, YP08/Xu24 with γ_f)
+    p.model = ModelSpec::of_model(&scene.model());
     p.description = format!("{} (exported from the explorer)", base.description);
     p
 }
@@ -385,6 +370,18 @@ mod tests {
         let again = export_charts(&app).unwrap();
         assert!(again[0].ends_with("asperity-system-1-2-pr-loglog.svg"), "{again:?}");
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_named_variant_exports_as_itself() {
+        use asperity::input::model::{Model, ModelKind};
+        let base = Preset::resolve("system-1").unwrap();
+        let mut scene = base.scene().unwrap();
+        scene.set_surface_energy_j_m2(0.0).unwrap();
+        let m = Model::fudge(ModelKind::Yp08, 0.42).unwrap();
+        scene.set_model(m).unwrap();
+        let back = scene_preset(&base, &scene).scene().unwrap();
+        assert_eq!(back.model(), m);
     }
 
     #[test]
