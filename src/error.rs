@@ -410,19 +410,111 @@ pub enum Error {
     /// A numerical method did not reach its tolerance.
     NotConverged {
         /// Which solver.
-        solver: String,
+        solver: Solver,
         /// Why, with the numbers (iterations, residual).
         reason: String,
     },
     /// The requested combination is not (yet) supported.
     Unsupported(String),
-    /// I/O failure (file not found, cannot write), with the path.
-    Io(String),
+    /// I/O failure: what was being done (with the file where there is one) and why.
+    Io {
+        /// What was being done, e.g. "read preset presets/x.toml" or "start the worker thread".
+        action: String,
+        /// The system's error kind (`Other` where there is none).
+        kind: std::io::ErrorKind,
+        /// The system's message.
+        message: String,
+    },
     /// The caller cancelled a long computation (e.g. a sweep the explorer no longer needs).
     Cancelled,
 }
 
+/// The numerical method behind an [`Error::NotConverged`]; displayed as the name a message
+/// gives it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Solver {
+    /// The adaptive ODE of the adhesionless variance (Dormand–Prince).
+    VarianceOde,
+    /// The adhesionless theory as a whole.
+    AdhesionlessTheory,
+    /// The adhesive theory as a whole (root search over branches).
+    AdhesiveTheory,
+    /// One march of the adhesive propagator through the resolution.
+    AdhesiveMarch,
+    /// The adhesive propagator with a prescribed wall.
+    AdhesivePropagation,
+    /// The self-consistency of γ(q) at q_s [S-14].
+    AdhesiveSelfConsistency,
+    /// The theory evaluated for a fit or a comparison.
+    Theory,
+    /// The mean gap.
+    MeanGap,
+    /// The energy route of the mean gap [S-12].
+    MeanGapEnergyRoute,
+    /// A load sweep.
+    LoadSweep,
+    /// A thickness sweep.
+    ThicknessSweep,
+    /// GFMD's FIRE relaxation.
+    Gfmd,
+    /// GFMD's Polonsky–Keer conjugate gradients.
+    GfmdPolonskyKeer,
+    /// A least-squares fit.
+    Gauge,
+    /// The Levenberg–Marquardt iteration of a fit.
+    GaugeLevenbergMarquardt,
+    /// The scale-by-scale snapshots of the march (the explorer's scale view).
+    ScaleSnapshots,
+    /// A benchmark's reference.
+    Bench,
+}
+
+impl fmt::Display for Solver {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Solver::VarianceOde => "variance ODE (Dormand-Prince)",
+            Solver::AdhesionlessTheory => "adhesionless theory",
+            Solver::AdhesiveTheory => "adhesive theory",
+            Solver::AdhesiveMarch => "adhesive march",
+            Solver::AdhesivePropagation => "adhesive propagation",
+            Solver::AdhesiveSelfConsistency => "adhesive self-consistency",
+            Solver::Theory => "theory",
+            Solver::MeanGap => "mean gap",
+            Solver::MeanGapEnergyRoute => "mean gap (energy route)",
+            Solver::LoadSweep => "load sweep",
+            Solver::ThicknessSweep => "thickness sweep",
+            Solver::Gfmd => "GFMD",
+            Solver::GfmdPolonskyKeer => "GFMD (Polonsky-Keer)",
+            Solver::Gauge => "gauge",
+            Solver::GaugeLevenbergMarquardt => "gauge (Levenberg-Marquardt)",
+            Solver::ScaleSnapshots => "scale snapshots",
+            Solver::Bench => "bench",
+        })
+    }
+}
+
 impl Error {
+    /// An [`Error::Io`] of a file operation: `verb` ("read", "write") `what` ("preset",
+    /// "surface", "" for a plain file) at `path`, failing with `e`.
+    pub fn io_file(verb: &str, what: &str, path: &std::path::Path, e: &std::io::Error) -> Self {
+        let sep = if what.is_empty() { "" } else { " " };
+        Error::Io {
+            action: format!("{verb} {what}{sep}{}", path.display()),
+            kind: e.kind(),
+            message: e.to_string(),
+        }
+    }
+
+    /// An [`Error::Io`] of something other than a file (a thread, the terminal, an encoder).
+    pub fn io(action: impl Into<String>, message: impl fmt::Display) -> Self {
+        Error::Io {
+            action: action.into(),
+            kind: std::io::ErrorKind::Other,
+            message: message.to_string(),
+        }
+    }
+
     /// An [`Error::Invalid`] for `field`: `value` is formatted with [`fmt_value`] when it is a
     /// number (use [`Error::invalid_text`] for non-numeric values).
     pub fn invalid(field: Field, value: f64, allowed: impl Into<Allowed>) -> Self {
@@ -480,7 +572,7 @@ impl fmt::Display for Error {
             }
             Error::NotConverged { solver, reason } => write!(f, "{solver} did not converge: {reason}"),
             Error::Unsupported(what) => write!(f, "not supported: {what}"),
-            Error::Io(what) => write!(f, "i/o error: {what}"),
+            Error::Io { action, message, .. } => write!(f, "i/o error: cannot {action}: {message}"),
             Error::Cancelled => write!(f, "cancelled"),
         }
     }

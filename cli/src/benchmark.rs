@@ -165,7 +165,7 @@ pub fn adhesionless(quick: bool) -> Result<Report> {
             }
             let is_default = rtol == default_rtol;
             rep.rungs.push(Rung {
-                solver: "adhesionless theory".into(),
+                solver: asperity::error::Solver::AdhesionlessTheory.to_string(),
                 case: format!("{preset} model {model} p*={p} t*q_r={}", fmt_t(t)),
                 setting: format!("rtol={rtol:.0e} ({} rhs evals)", sol.evaluations),
                 default: is_default,
@@ -189,7 +189,7 @@ pub fn adhesionless(quick: bool) -> Result<Report> {
         let r = persson::solve(&scene, &Accuracy::default());
         let time_s = t0.elapsed().as_secs_f64();
         rep.hard_cases.push(HardCase {
-            solver: "adhesionless theory".into(),
+            solver: asperity::error::Solver::AdhesionlessTheory.to_string(),
             case: format!("{preset} model {model} p*={p:e} t*q_r={}", fmt_t(t)),
             outcome: match &r {
                 Ok(_) => "converged".into(),
@@ -251,7 +251,7 @@ pub fn adhesive(quick: bool) -> Result<Report> {
             let is_default = st == def.steps_per_ln_q && ppw == def.points_per_width;
             let cells = sol.sigma.len() as u64;
             rep.rungs.push(Rung {
-                solver: "adhesive theory".into(),
+                solver: asperity::error::Solver::AdhesiveTheory.to_string(),
                 case: format!("{preset} model {model} p*={p} t*q_r={}", fmt_t(t)),
                 setting: format!("{st} steps/ln q, {ppw} points/width ({} it)", sol.iterations),
                 default: is_default,
@@ -279,7 +279,7 @@ pub fn adhesive(quick: bool) -> Result<Report> {
         let exact = erf((0.01 + 0.3) / 0.5f64.sqrt());
         let time = median_time(runs, run);
         rep.rungs.push(Rung {
-            solver: "adhesive theory".into(),
+            solver: asperity::error::Solver::AdhesiveTheory.to_string(),
             case: "propagator, constant wall sigma_a*=0.3, system-1 model 1 p*=0.01".into(),
             setting: format!("{st} steps/ln q, {ppw} points/width"),
             default: st == def.steps_per_ln_q,
@@ -317,7 +317,7 @@ pub fn adhesive(quick: bool) -> Result<Report> {
         let t0 = Instant::now();
         let r = adhesion::solve(&scene, &def, None, None);
         rep.hard_cases.push(HardCase {
-            solver: "adhesive theory".into(),
+            solver: asperity::error::Solver::AdhesiveTheory.to_string(),
             case,
             outcome: match &r {
                 Ok(s) if s.unloading_a_r.is_some() => format!("converged ({}), unloading branch too", s.branch),
@@ -373,7 +373,7 @@ pub fn sweeps(quick: bool) -> Result<Report> {
         let time = median_time(runs, || sweep::sweep(&scene, &spec, &opts, None).map(|s| s.rows.len()));
         let (ea, eg) = sw.max_errors_against(&reference, 4);
         rep.rungs.push(Rung {
-            solver: "load sweep".into(),
+            solver: asperity::error::Solver::LoadSweep.to_string(),
             case: format!("system-1 model 3 {label}, 64 loads p*=1e-3..1"),
             setting: format!("{setting} ({} evaluations)", sw.evaluations),
             default: is_default,
@@ -424,7 +424,7 @@ pub fn gfmd(quick: bool) -> Result<Report> {
         let c_exact = lambda / std::f64::consts::PI * 0.3f64.sqrt().asin();
         let time = median_time(runs, || g::solve(&pr, &opts, &mut |_| {}, &no).map(|s| s.iterations));
         rep.rungs.push(Rung {
-            solver: "GFMD".into(),
+            solver: asperity::error::Solver::Gfmd.to_string(),
             case: "Johnson sinusoid, p = 0.3 p_full".into(),
             setting: format!("lambda/da = {nx} ({} steps)", sol.iterations),
             default: nx == 512,
@@ -465,7 +465,7 @@ pub fn gfmd(quick: bool) -> Result<Report> {
     let u_inf = extrap(&|r| r.mean_gap_rel);
     for (ppw, nn, r, time) in &results {
         rep.rungs.push(Rung {
-            solver: "GFMD".into(),
+            solver: asperity::error::Solver::Gfmd.to_string(),
             case: "system-1 reduced (L/lambda_r = 2, lambda_r/lambda_s = 8) p*=0.01, seed 7".into(),
             setting: format!("lambda_s/da = {ppw}, N = {nn} ({} steps)", r.iterations),
             default: *ppw == 8.0,
@@ -501,7 +501,7 @@ pub fn gfmd(quick: bool) -> Result<Report> {
             };
             let r = g::run(&setup, &opts, &mut |_| {}, &no)?;
             rep.rungs.push(Rung {
-                solver: "GFMD".into(),
+                solver: asperity::error::Solver::Gfmd.to_string(),
                 case: format!("system-1 preset grid {label} p*=0.01"),
                 setting: format!("N = {} ({} steps, a_r = {:.5})", r.grid, r.iterations, r.stats.a_r),
                 default: false,

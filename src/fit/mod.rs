@@ -404,13 +404,13 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
             ),
         };
         return Err(Error::NotConverged {
-            solver: "gauge (Levenberg-Marquardt)".into(),
+            solver: crate::error::Solver::GaugeLevenbergMarquardt,
             reason: why,
         });
     }
     let model = problem.model_at(&x);
     model.validate().map_err(|e| Error::NotConverged {
-        solver: "gauge".into(),
+        solver: crate::error::Solver::Gauge,
         reason: format!(
             "the best fit leaves the model's range ({e}): the reference lies outside what the model can reach"
         ),
@@ -418,7 +418,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
     if model.w_min() < EDGE_W || model.alpha <= EDGE_ALPHA || model.alpha >= 4.0 - EDGE_ALPHA {
         let rms = (r.norm_squared() / n as f64).sqrt();
         return Err(Error::NotConverged {
-            solver: "gauge".into(),
+            solver: crate::error::Solver::Gauge,
             reason: format!(
                 "the best fit runs into the edge of the model's range (min W = {:.2e}, alpha = {}) with an rms misfit of {:.3}: the reference lies outside what the model can reach within its range",
                 model.w_min(),
@@ -437,7 +437,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
             .map(|(p, w)| format!("{w:+.3}·{}", p.key()))
             .collect();
         return Err(Error::NotConverged {
-            solver: "gauge".into(),
+            solver: crate::error::Solver::Gauge,
             reason: format!(
                 "the data cannot identify the parameters: condition number {} > {MAX_CONDITION:e}; unconstrained combination (scaled) {}",
                 crate::error::fmt_value(cond),
@@ -451,7 +451,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
     let s2 = if with_errors { 1.0 } else { chi2 / dof };
     let jtj = j.transpose() * &j;
     let cov = jtj.try_inverse().ok_or_else(|| Error::NotConverged {
-        solver: "gauge".into(),
+        solver: crate::error::Solver::Gauge,
         reason: "JᵀJ is singular at the optimum: the data cannot identify the parameters".into(),
     })? * s2;
     let fitted: Vec<FittedParam> = params
@@ -469,7 +469,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
         .find(|p: &&FittedParam| p.std_error.is_nan() || p.std_error > WEAK_SE_FACTOR * p.value.abs().max(0.1))
     {
         return Err(Error::NotConverged {
-            solver: "gauge".into(),
+            solver: crate::error::Solver::Gauge,
             reason: format!(
                 "the data cannot pin down {}: {} ± {} (a standard error above {WEAK_SE_FACTOR} × max(|value|, 0.1)); hold it fixed or add observables that depend on it",
                 p.name,

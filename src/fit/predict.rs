@@ -113,7 +113,7 @@ pub fn predict(scene: &Scene, model: &Model, reference: &Reference) -> Result<Ve
                 Ok(v)
             } else {
                 Err(Error::NotConverged {
-                    solver: "theory".into(),
+                    solver: crate::error::Solver::Theory,
                     reason: format!("no finite {} at p* = {:e}", o.observable.key(), o.p),
                 })
             }

@@ -352,7 +352,7 @@ pub fn solve_from(
         };
         if !r.is_finite() || !sums.ff.is_finite() {
             return Err(Error::NotConverged {
-                solver: "gfmd".into(),
+                solver: crate::error::Solver::Gfmd,
                 reason: format!("non-finite force after {it} steps (diverged)"),
             });
         }
@@ -372,7 +372,7 @@ pub fn solve_from(
         }
         if it >= opts.max_iterations {
             return Err(Error::NotConverged {
-                solver: "gfmd".into(),
+                solver: crate::error::Solver::Gfmd,
                 reason: format!(
                     "relative force residual {r:.3e} > tolerance {:.1e} after {it} steps (max iterations)",
                     opts.tolerance

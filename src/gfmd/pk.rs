@@ -84,7 +84,7 @@ pub fn relax(
         let gg = b[0];
         if !gg.is_finite() {
             return Err(Error::NotConverged {
-                solver: "gfmd (Polonsky-Keer)".into(),
+                solver: crate::error::Solver::GfmdPolonskyKeer,
                 reason: format!("non-finite gap after {it} iterations"),
             });
         }

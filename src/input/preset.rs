@@ -270,8 +270,7 @@ impl Preset {
         if len > MAX_TOML_BYTES {
             return Err(too_large(&path.display().to_string(), len));
         }
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::Io(format!("cannot read preset {}: {e}", path.display())))?;
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "preset", path, &e))?;
         Preset::parse(&text, &path.display().to_string())
     }
 

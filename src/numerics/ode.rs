@@ -95,7 +95,7 @@ impl Trajectory {
             count += 1;
             if count > ctl.max_steps {
                 return Err(Error::NotConverged {
-                    solver: "variance ODE (Dormand-Prince)".into(),
+                    solver: crate::error::Solver::VarianceOde,
                     reason: format!("more than {} steps at s = {s:.6}, step {h:.3e}", ctl.max_steps),
                 });
             }
@@ -114,7 +114,7 @@ impl Trajectory {
             self.evaluations += 6;
             if !(y_new.is_finite() && k7.is_finite()) {
                 return Err(Error::NotConverged {
-                    solver: "variance ODE (Dormand-Prince)".into(),
+                    solver: crate::error::Solver::VarianceOde,
                     reason: format!("non-finite value at s = {s:.6}"),
                 });
             }

@@ -249,8 +249,7 @@ impl Surface {
 
     /// Reads a map from a file (text format); `size` is the side L (m).
     pub fn load(path: &Path, size: f64) -> Result<Surface> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::Io(format!("cannot read surface {}: {e}", path.display())))?;
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "surface", path, &e))?;
         Surface::parse(&text, &path.display().to_string(), size)
     }
 
@@ -271,8 +270,7 @@ impl Surface {
 
     /// Writes the map in the text format.
     pub fn save(&self, path: &Path) -> Result<()> {
-        std::fs::write(path, self.to_text())
-            .map_err(|e| Error::Io(format!("cannot write surface {}: {e}", path.display())))
+        std::fs::write(path, self.to_text()).map_err(|e| Error::io_file("write", "surface", path, &e))
     }
 }
 

@@ -114,7 +114,7 @@ fn bad(source: &str, at: String, what: impl std::fmt::Display, allowed: &str) ->
 /// and the fault otherwise.
 pub fn read(path: &Path, opts: &ReadOptions) -> Result<Surface> {
     let format = format_of(path)?;
-    let bytes = std::fs::read(path).map_err(|e| Error::Io(format!("cannot read surface {}: {e}", path.display())))?;
+    let bytes = std::fs::read(path).map_err(|e| Error::io_file("read", "surface", path, &e))?;
     parse(&bytes, format, &path.display().to_string(), opts)
 }
 
@@ -582,7 +582,7 @@ fn parse_gsf(bytes: &[u8], source: &str) -> Result<Raw> {
 /// [`Error::Invalid`] for an unknown extension, [`Error::Io`] when writing fails.
 pub fn write(s: &Surface, path: &Path) -> Result<()> {
     let bytes = encode(s, format_of(path)?)?;
-    std::fs::write(path, bytes).map_err(|e| Error::Io(format!("cannot write surface {}: {e}", path.display())))
+    std::fs::write(path, bytes).map_err(|e| Error::io_file("write", "surface", path, &e))
 }
 
 /// The bytes of a map in `format` (see [`write()`]).
@@ -616,7 +616,7 @@ pub fn encode(s: &Surface, format: Format) -> Result<Vec<u8>> {
             } else {
                 vec![s.ny as u64, s.nx as u64]
             };
-            let io = |e: std::io::Error| Error::Io(format!("cannot encode a NumPy array: {e}"));
+            let io = |e: std::io::Error| Error::io("encode a NumPy array", e);
             let mut w = npyz::WriteOptions::new()
                 .default_dtype()
                 .shape(&shape)

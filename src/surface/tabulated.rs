@@ -271,8 +271,7 @@ impl Tabulated {
     /// # Errors
     /// [`Error::Io`] when the file cannot be read; the parse errors otherwise.
     pub fn load_csv(path: &std::path::Path, q_min: Option<f64>, q_max: Option<f64>) -> Result<Self> {
-        let text =
-            std::fs::read_to_string(path).map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))?;
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "", path, &e))?;
         Tabulated::parse_csv(&text, &path.display().to_string(), q_min, q_max)
     }
 }

@@ -335,7 +335,7 @@ fn evaluate_adhesive(
     };
     if !error_estimate.is_finite() {
         return Err(Error::NotConverged {
-            solver: "adhesive theory".into(),
+            solver: crate::error::Solver::AdhesiveTheory,
             reason: format!(
                 "the self-consistency converged (a_r = {:.6}, {} branch) but neither resolution \
                  check did, so its discretisation error cannot be estimated: the state sits on the \

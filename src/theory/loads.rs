@@ -80,8 +80,8 @@ pub fn node_results(scene: &Scene, ps: &[f64], opts: &Options, cancel: Option<&A
         match r {
             Ok(ev) => Ok(Ok(ev)),
             Err(Error::NotConverged { solver, reason }) => Ok(Err(Error::NotConverged {
-                solver: format!("{solver} at p* = {p:.6e}"),
-                reason,
+                solver,
+                reason: format!("at p* = {p:.6e}: {reason}"),
             })),
             Err(e) => Err(e),
         }

@@ -67,7 +67,8 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             doc.push('\n');
             doc.push_str(&k);
         }
-        std::fs::write(&args.output, doc).map_err(|e| Error::Io(format!("cannot write {}: {e}", args.output)))?;
+        std::fs::write(&args.output, doc)
+            .map_err(|e| Error::io_file("write", "", std::path::Path::new(&args.output), &e))?;
         eprintln!("asperity bench: wrote {}", args.output);
     }
     let failed: Vec<String> = rep
@@ -89,7 +90,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         Ok(())
     } else {
         Err(Error::NotConverged {
-            solver: "bench".into(),
+            solver: asperity::error::Solver::Bench,
             reason: format!(
                 "{} default setting(s) exceed their error bound: {}",
                 failed.len(),

@@ -173,7 +173,7 @@ pub fn run(args: &FigureArgs) -> Result<()> {
             } else {
                 chart::write_svg(&spec, p)
             };
-            r.map_err(|e| Error::Io(format!("cannot write {}: {e}", p.display())))?;
+            r.map_err(|e| Error::io_file("write", "", p, &e))?;
             eprintln!("asperity figure: wrote {}", p.display());
         }
     }

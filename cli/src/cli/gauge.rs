@@ -83,7 +83,7 @@ pub struct GaugeArgs {
 }
 
 fn read(path: &Path) -> Result<String> {
-    std::fs::read_to_string(path).map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))
+    std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "", path, &e))
 }
 
 /// The reference and the scene it is compared on (for `gfmd`, the scene GFMD runs), with the
@@ -270,10 +270,10 @@ pub fn save_preset(base: &Preset, scene: &Scene, model: &Model, path: &Path) -> 
         .file_stem()
         .map_or("gauged".into(), |s| s.to_string_lossy().into_owned());
     p.description = format!("{} (model gauged by asperity gauge)", base.description);
-    let text = toml::to_string(&p).map_err(|e| Error::Io(format!("cannot write preset: {e}")))?;
+    let text = toml::to_string(&p).map_err(|e| Error::io("write preset", e))?;
     // the preset must read back as written
     Preset::parse(&text, &path.display().to_string())?;
-    std::fs::write(path, text).map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))
+    std::fs::write(path, text).map_err(|e| Error::io_file("write", "", path, &e))
 }
 
 fn y_of(o: Observable, p: f64, v: f64) -> f64 {
@@ -351,10 +351,10 @@ pub fn overlay(scene: &Scene, r: &Reference, models: &[(&str, Model)], what: &st
 /// Writes the chart files asked for.
 pub fn write_charts(spec: &ChartSpec, svg: Option<&Path>, png: Option<&Path>) -> Result<()> {
     if let Some(p) = svg {
-        chart::write_svg(spec, p).map_err(|e| Error::Io(format!("cannot write {}: {e}", p.display())))?;
+        chart::write_svg(spec, p).map_err(|e| Error::io_file("write", "", p, &e))?;
     }
     if let Some(p) = png {
-        chart::write_png(spec, p).map_err(|e| Error::Io(format!("cannot write {}: {e}", p.display())))?;
+        chart::write_png(spec, p).map_err(|e| Error::io_file("write", "", p, &e))?;
     }
     Ok(())
 }

@@ -171,7 +171,7 @@ pub fn resolve(
             path,
             gfmd_reference::to_csv(&out.rows, out.scene.surface_energy_j_m2() > 0.0),
         )
-        .map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))?;
+        .map_err(|e| Error::io_file("write", "", path, &e))?;
     }
     *scene = out.scene.clone();
     Ok(out)

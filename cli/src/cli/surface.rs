@@ -298,7 +298,7 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
             } else {
                 crate::chart::write_svg(&spec, p)
             };
-            r.map_err(|e| Error::Io(format!("cannot write {}: {e}", p.display())))?;
+            r.map_err(|e| Error::io_file("write", "", p, &e))?;
             eprintln!("asperity psd: wrote {}", p.display());
         }
     }

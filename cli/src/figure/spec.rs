@@ -249,8 +249,7 @@ impl FigureSpec {
 
     /// Reads a figure file.
     pub fn load(path: &Path) -> Result<FigureSpec> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::Io(format!("cannot read figure {}: {e}", path.display())))?;
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "figure", path, &e))?;
         FigureSpec::parse(&text, &path.display().to_string())
     }
 

@@ -147,7 +147,7 @@ fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
         gen: a.gen,
         key: key_now,
         result: Err(Error::NotConverged {
-            solver: "adhesive self-consistency".into(),
+            solver: asperity::error::Solver::AdhesiveSelfConsistency,
             reason: "test".into(),
         }),
     });
@@ -164,7 +164,7 @@ fn the_gfmd_start_message_goes_when_the_run_ends() {
     let (id, _, _) = a.take_gfmd_request().unwrap();
     a.on_reply(Reply::GfmdDone {
         id,
-        result: Err(Error::Io("test".into())),
+        result: Err(Error::io("export", "test")),
     });
     assert!(a.message.is_none());
 }

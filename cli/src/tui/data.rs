@@ -369,7 +369,7 @@ pub fn gap_of_sweep(s: &Sweep) -> asperity::Result<f64> {
     match s.rows.first() {
         Some(r) if r.mean_gap_rel.is_finite() => Ok(r.mean_gap_rel),
         _ => Err(asperity::Error::NotConverged {
-            solver: "mean gap".into(),
+            solver: asperity::error::Solver::MeanGap,
             reason: s.note.clone().unwrap_or_else(|| "no load converged".into()),
         }),
     }

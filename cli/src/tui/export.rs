@@ -62,7 +62,7 @@ pub fn scene_comment(app: &App, name: &str) -> String {
 }
 
 fn write(path: &Path, text: &str) -> Result<()> {
-    std::fs::write(path, text).map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))
+    std::fs::write(path, text).map_err(|e| Error::io_file("write", "", path, &e))
 }
 
 /// Writes the files; returns their paths.
@@ -75,7 +75,7 @@ pub fn export(app: &App) -> Result<Vec<String>> {
 
     let mut preset = scene_preset(&app.preset, &app.scene);
     preset.name = stem.clone();
-    let toml_text = toml::to_string(&preset).map_err(|e| Error::Io(format!("cannot serialise the scene: {e}")))?;
+    let toml_text = toml::to_string(&preset).map_err(|e| Error::io("serialise the scene", e))?;
     let header =
         format!("# Scene exported by the asperity explorer; open it with `asperity tui --preset {stem}.toml`.\n");
     let path = dir.join(format!("{stem}.toml"));
@@ -233,7 +233,7 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
 fn next_number(dir: &Path, name: &str) -> Result<u32> {
     let prefix = format!("asperity-{name}-");
     let highest = std::fs::read_dir(dir)
-        .map_err(|e| Error::Io(format!("cannot read {}: {e}", dir.display())))?
+        .map_err(|e| Error::io_file("read", "", dir, &e))?
         .filter_map(|e| e.ok())
         .filter_map(|e| {
             let f = e.file_name().to_string_lossy().into_owned();
@@ -248,7 +248,7 @@ fn next_number(dir: &Path, name: &str) -> Result<u32> {
         .max()
         .unwrap_or(0);
     if highest >= 9_999 {
-        return Err(Error::Io("too many exports in this directory".into()));
+        return Err(Error::io("export", "too many exports in this directory"));
     }
     Ok(highest + 1)
 }
@@ -307,7 +307,7 @@ pub fn export_charts(app: &App) -> Result<Vec<String>> {
             ("png", chart::write_png),
         ] {
             let path = dir.join(format!("asperity-{name}-{n}-{}.{ext}", k.name()));
-            write(&spec, &path).map_err(|e| Error::Io(format!("cannot write {}: {e}", path.display())))?;
+            write(&spec, &path).map_err(|e| Error::io_file("write", "", &path, &e))?;
             paths.push(path.display().to_string());
         }
     }

@@ -166,7 +166,7 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
     };
     if a_r.iter().all(|a| !a.is_finite()) {
         return Err(Error::NotConverged {
-            solver: "thickness sweep".into(),
+            solver: asperity::error::Solver::ThicknessSweep,
             reason: "no thickness converged".into(),
         });
     }

@@ -156,10 +156,10 @@ pub fn run_app(mut app: App) -> Result<()> {
     let worker = Worker::spawn(move |r| {
         let _ = reply_tx.send(Msg::Reply(Box::new(r)));
     })
-    .map_err(|e| Error::Io(format!("cannot start the worker thread: {e}")))?;
+    .map_err(|e| Error::io("start the worker thread", e))?;
 
     let _guard = TerminalGuard;
-    let mut terminal = ratatui::try_init().map_err(|e| Error::Io(format!("cannot open the terminal: {e}")))?;
+    let mut terminal = ratatui::try_init().map_err(|e| Error::io("open the terminal", e))?;
     std::thread::Builder::new()
         .name("asperity-input".into())
         .spawn(move || loop {
@@ -175,7 +175,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                 }
             }
         })
-        .map_err(|e| Error::Io(format!("cannot start the input thread: {e}")))?;
+        .map_err(|e| Error::io("start the input thread", e))?;
 
     let gfmd_tx = reply_tx_for_gfmd;
     let mut trace = Trace::new();
@@ -201,11 +201,11 @@ pub fn run_app(mut app: App) -> Result<()> {
             jobs::spawn_gfmd(id, setup, cancel, move |r| {
                 let _ = tx.send(Msg::Reply(Box::new(r)));
             })
-            .map_err(|e| Error::Io(format!("cannot start the GFMD thread: {e}")))?;
+            .map_err(|e| Error::io("start the GFMD thread", e))?;
         }
         terminal
             .draw(|f| view::draw(f, &app))
-            .map_err(|e| Error::Io(format!("cannot draw: {e}")))?;
+            .map_err(|e| Error::io("draw", e))?;
         trace.after_draw(&app);
         if app.quit {
             return Ok(());

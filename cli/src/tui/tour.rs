@@ -455,8 +455,7 @@ impl Tour {
 
     /// Reads a tour file.
     pub fn load(path: &Path) -> Result<Tour> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::Io(format!("cannot read tour {}: {e}", path.display())))?;
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "tour", path, &e))?;
         Tour::parse(&text, &path.display().to_string())
     }
 

@@ -330,7 +330,7 @@ pub fn propagate_with_wall(
     let a = m.march(&walls, &onsets);
     if m.overflow {
         return Err(crate::error::Error::NotConverged {
-            solver: "adhesive march".into(),
+            solver: crate::error::Solver::AdhesiveMarch,
             reason: format!("the prescribed wall needs more than {} grid nodes", m.max_nodes()),
         });
     }

@@ -99,7 +99,7 @@ impl<'a> Shooter<'a> {
 pub(super) fn check_bounded(s: &Shooter<'_>) -> Result<()> {
     if s.m.overflow {
         Err(crate::error::Error::NotConverged {
-            solver: "adhesive march".into(),
+            solver: crate::error::Solver::AdhesiveMarch,
             reason: format!(
                 "the stress distribution would need more than {} grid nodes at p* = {:.3e} \
                  (the adhesive wall ran further from it in one resolution step than the grid can \

@@ -101,7 +101,7 @@ pub fn snapshots(
         };
         if sol.q.len() != grid.q.len() {
             return Err(Error::NotConverged {
-                solver: "scale snapshots".into(),
+                solver: crate::error::Solver::ScaleSnapshots,
                 reason: format!(
                     "the solution has {} resolution nodes, the accuracy's grid {}",
                     sol.q.len(),
@@ -124,7 +124,7 @@ pub fn snapshots(
             let mut m = Marcher::new(scene, &part, *acc);
             let shot = m.shoot(&coef, c, true);
             let rec = shot.record.ok_or_else(|| Error::NotConverged {
-                solver: "scale snapshots".into(),
+                solver: crate::error::Solver::ScaleSnapshots,
                 reason: "the march kept no record".into(),
             })?;
             let wall = sigma_at(scene, grid.q[k], rec.gamma_nodes.last().copied().unwrap_or(0.0));

@@ -111,7 +111,7 @@ pub(crate) fn solve_checked(
     // an error
     if root.h_rel.is_nan() || root.h_rel > (acc.tol * 1e3).max(COLLAPSED) {
         return Err(Error::NotConverged {
-            solver: "adhesive self-consistency".into(),
+            solver: crate::error::Solver::AdhesiveSelfConsistency,
             reason: format!(
                 "the energy balance at q_s is off by {:.1e} (relative) at the best root after \
                  {shots} marches (tolerance {:.0e})",
@@ -217,7 +217,7 @@ fn finish(scene: &Scene, grid: &Grid, root: &Root, iterations: usize) -> Result<
             Some(t) => t,
             None => {
                 return Err(Error::NotConverged {
-                    solver: "adhesive propagation".into(),
+                    solver: crate::error::Solver::AdhesivePropagation,
                     reason: "the stress distribution vanished".into(),
                 })
             }

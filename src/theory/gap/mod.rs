@@ -198,7 +198,7 @@ pub fn branch_gaps(dry: &DryGap, p: f64, ev: &Evaluation) -> Result<(BranchGap, 
         }
     };
     let loading = of(Branch::Loading)?.ok_or_else(|| Error::NotConverged {
-        solver: "mean gap".into(),
+        solver: crate::error::Solver::MeanGap,
         reason: "the evaluation has no stable loading branch".into(),
     })?;
     Ok((loading, of(Branch::Unloading)?))

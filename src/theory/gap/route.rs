@@ -119,14 +119,14 @@ impl GapTable {
             .position(|(u, v)| !u.is_finite() || !v.is_finite())
         {
             return Err(Error::NotConverged {
-                solver: "mean gap (energy route)".into(),
+                solver: crate::error::Solver::MeanGapEnergyRoute,
                 reason: format!("U is not finite at p* = {:e}", p_at(i)),
             });
         }
         let noise = noise_level(&stored);
         if let Some(j) = last_decrease(&stored) {
             return Err(Error::NotConverged {
-                solver: "mean gap (energy route)".into(),
+                solver: crate::error::Solver::MeanGapEnergyRoute,
                 reason: format!(
                     "the stored elastic energy falls from p* = {:.4e} to {:.4e} (by {:.2e} of its range): \
                      the loads are not one stable branch, whose contact only grows with the load",

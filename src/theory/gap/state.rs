@@ -157,7 +157,7 @@ impl DryGap {
     pub fn branch(&self, p0: f64, a_r: f64, load: f64) -> Result<BranchGap> {
         if !(load.is_finite() && a_r.is_finite()) {
             return Err(Error::NotConverged {
-                solver: "mean gap".into(),
+                solver: crate::error::Solver::MeanGap,
                 reason: format!("the branch's contact load ({load:e}) or a_r ({a_r:e}) is not finite"),
             });
         }
