@@ -141,7 +141,7 @@ pub(super) fn find_roots(
     };
     let gs = scene.gamma;
     let i_full = fine.m.full_energy();
-    let e0 = grid.steps.first().map(|s| s.e).unwrap_or(i_full).max(1e-300);
+    let e0 = if grid.e_scale > 0.0 { grid.e_scale } else { i_full }.max(1e-300);
     let scale = Scale { c0: 1e-3 * e0.min(gs) };
     let (w_lo, w_hi) = (scale.w(-i_full), scale.w(gs));
     let tol = acc.tol * gs;
