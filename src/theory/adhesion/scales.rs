@@ -119,6 +119,7 @@ pub fn snapshots(
             let part = Grid {
                 q: grid.q[..=k].to_vec(),
                 steps: grid.steps[..k].to_vec(),
+                e_scale: grid.e_scale,
             };
             let coef = WallCoefficients::new(scene, &part);
             let mut m = Marcher::new(scene, &part, *acc);
