@@ -289,6 +289,52 @@ fn models_cycle_and_custom_rows_appear() {
 }
 
 #[test]
+fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() {
+    // system 1 opens adhesive: from custom, m skips YP08 and Xu24 and says why
+    let mut a = app();
+    key(&mut a, KeyCode::Char('m'));
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().kind, ModelKind::Custom);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().number(), Some(1));
+    let m = a.message.clone().expect("the skip is explained");
+    assert!(!m.error && m.text.contains("YP08 and Xu24 skipped"), "{}", m.text);
+    // on the adhesionless half-space they take their turn, with γ_f = 0.42, and M draws them
+    let mut a = app();
+    a.set_typed(Param::Gamma, "0").unwrap();
+    for _ in 0..2 {
+        key(&mut a, KeyCode::Char('m'));
+    }
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().kind, ModelKind::Yp08);
+    assert!((a.scene.model().fudge_gamma().unwrap() - 0.42).abs() < 1e-12);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().kind, ModelKind::Xu24);
+    // with a variant current, M draws both variants beside models 1–4
+    let kinds: Vec<ModelKind> = super::super::kinds::overlay_models(&a.scene.model())
+        .iter()
+        .filter_map(|m| a.scene.clone().with_model(*m).ok())
+        .map(|s| s.model().kind)
+        .collect();
+    assert!(
+        kinds.contains(&ModelKind::Yp08) && kinds.contains(&ModelKind::Xu24),
+        "{kinds:?}"
+    );
+    assert_eq!(kinds.len(), 6);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().number(), Some(1));
+    assert_eq!(super::super::kinds::overlay_models(&a.scene.model()).len(), 4);
+    // a slab is refused while a variant is current, and the scene stays as it was
+    for _ in 0..5 {
+        key(&mut a, KeyCode::Char('m'));
+    }
+    assert_eq!(a.scene.model().kind, ModelKind::Yp08);
+    let before = a.scene.clone();
+    assert!(a.set_typed(Param::Thickness, "1").is_err());
+    assert_eq!(a.scene, before);
+}
+
+#[test]
 fn typing_bad_values_keeps_the_scene_and_explains() {
     let mut a = app();
     let before = a.scene.clone();

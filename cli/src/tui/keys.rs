@@ -143,7 +143,7 @@ pub const TABLE: &[Binding] = &[
         keys: &[Key(KeyCode::Char('m'), NONE)],
         label: "m",
         action: Action::CycleModel,
-        help: "cycle model 1, 2, 3, 4, custom",
+        help: "cycle model 1, 2, 3, 4, custom, YP08, Xu24",
     },
     Binding {
         keys: &[Key(KeyCode::Char('p'), NONE)],

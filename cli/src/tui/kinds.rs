@@ -1,7 +1,7 @@
 //! The chart selector's kinds and what each needs computed, and the model slots of `M`: plain
 //! data shared by the state, the worker and the charts (a leaf module: it imports none of them).
 
-use asperity::input::model::{Model, ModelKind};
+use asperity::input::model::{Model, ModelKind, FUDGE_GAMMA_DEFAULT};
 
 /// One chart of the selector.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -131,24 +131,44 @@ impl ChartKind {
 pub fn slot(m: &Model) -> usize {
     match m.kind {
         ModelKind::Custom => 4,
+        ModelKind::Yp08 => 5,
+        ModelKind::Xu24 => 6,
         _ => m.number().map_or(4, |n| usize::from(n) - 1),
     }
 }
 
 /// Legend name of a model slot.
 pub fn slot_name(i: usize) -> String {
-    if i < 4 {
-        format!("model {}", i + 1)
-    } else {
-        "custom".into()
+    match i {
+        0..=3 => format!("model {}", i + 1),
+        5 => "YP08".into(),
+        6 => "Xu24".into(),
+        _ => "custom".into(),
     }
 }
 
-/// The models drawn with `M`: 1–4, and the current one when it is custom.
+/// The named variants of the literature with a fudge parameter γ_f: the current one's γ_f
+/// when it is that variant, else the default.
+pub fn variants(current: &Model) -> [Model; 2] {
+    [ModelKind::Yp08, ModelKind::Xu24].map(|k| {
+        if current.kind == k {
+            *current
+        } else {
+            Model::fudge(k, FUDGE_GAMMA_DEFAULT).expect("the default fudge parameter is valid")
+        }
+    })
+}
+
+/// The models drawn with `M`: 1–4, the current one when it is custom, and, when the current
+/// one is YP08 or Xu24, both variants (the explorer skips any the scene does not take:
+/// adhesion or a slab). The paper's four stay uncluttered where no variant is looked at.
 pub fn overlay_models(current: &Model) -> Vec<Model> {
     let mut v: Vec<Model> = (1..=4).filter_map(|n| Model::named(n).ok()).collect();
     if current.kind == ModelKind::Custom {
         v.push(*current);
+    }
+    if current.kind.is_fudge_variant() {
+        v.extend(variants(current));
     }
     v
 }

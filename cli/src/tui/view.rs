@@ -178,17 +178,22 @@ fn model_style(pal: Palette, i: usize) -> Style {
         1 => pal.compare(),
         2 => pal.theory(),
         3 => pal.current(),
+        5 => pal.pin(1),
+        6 => pal.pin(2),
         _ => pal.wall(),
     }
 }
 
-/// Marker of model slot `i`: told apart without colour too.
-const MODEL_MARKERS: [Marker; 5] = [
+/// Marker of model slot `i`: told apart without colour too (YP08 and Xu24, slots 5 and 6,
+/// reuse the dot and the bar in their own colours and are named in the legend).
+const MODEL_MARKERS: [Marker; 7] = [
     Marker::Dot,
     Marker::Bar,
     Marker::Braille,
     Marker::Block,
     Marker::HalfBlock,
+    Marker::Dot,
+    Marker::Bar,
 ];
 
 /// Markers of the pins (with the pin colours, told apart without colour by the name).
@@ -214,7 +219,11 @@ fn look(pal: Palette, role: Role, draw: Draw) -> (Style, Marker, GraphType) {
     };
     match role {
         Role::Theory => (pal.theory(), Marker::Braille, graph),
-        Role::Model(i) => (model_style(pal, i), MODEL_MARKERS[i.min(4)], graph),
+        Role::Model(i) => (
+            model_style(pal, i),
+            MODEL_MARKERS[i.min(MODEL_MARKERS.len() - 1)],
+            graph,
+        ),
         Role::Compare => (pal.compare(), Marker::Dot, graph),
         Role::Closed => (pal.reference(), Marker::Dot, graph),
         Role::Closed2 => (pal.guide(), Marker::Dot, graph),
