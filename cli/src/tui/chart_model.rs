@@ -43,6 +43,8 @@ pub enum Role {
     PullOff,
     /// A pinned curve (`P`), the pin's index.
     Pin(usize),
+    /// A shaded range (the bracket of the mean gap): drawn as a fill of points.
+    Band,
 }
 
 /// One series, in data units (NaN marks a gap).

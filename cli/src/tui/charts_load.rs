@@ -125,6 +125,29 @@ fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64
     }
 }
 
+/// Rows of points per load filling the gap's bracket (enough to shade a braille column).
+const BAND_ROWS: usize = 12;
+
+/// The bracket [lower, upper] of the loading branch's ū/h_rms as a shaded band: at each load,
+/// [`BAND_ROWS`] + 1 points from the lower to the upper end; None without a bracket.
+pub fn gap_band(sw: &SweepData) -> Option<Series> {
+    if sw.gap_lower.len() != sw.p.len() || sw.gap_upper.len() != sw.p.len() {
+        return None;
+    }
+    let mut points = Vec::new();
+    for ((&p, &lo), &hi) in sw.p.iter().zip(&sw.gap_lower).zip(&sw.gap_upper) {
+        if lo.is_finite() && hi.is_finite() && hi >= lo {
+            points.extend((0..=BAND_ROWS).map(|k| (p, lo + (hi - lo) * k as f64 / BAND_ROWS as f64)));
+        }
+    }
+    (!points.is_empty()).then(|| Series {
+        name: "bracket (same a_r … same load)".into(),
+        points,
+        role: Role::Band,
+        draw: Draw::Points,
+    })
+}
+
 pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
     let gap = kind == ChartKind::Gap;
     let (title, ylab) = if gap {
@@ -144,6 +167,12 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
     };
     m.stale = app.sweep_is_stale();
     mark_preview(&mut m, sw);
+    if gap {
+        // the bracket of the loading branch's gap, shaded under the curves (§5.1)
+        if let Some(band) = gap_band(sw) {
+            m.series.push(band);
+        }
+    }
     for (i, o) in others(app, App::model_sweep) {
         m.series.push(Series {
             name: slot_name(i),
@@ -158,6 +187,14 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
         role: theory_role(app),
         draw: Draw::Line,
     });
+    if gap && sw.gap_unloading.len() == sw.p.len() {
+        m.series.push(Series {
+            name: "unloading".into(),
+            points: sw.p.iter().copied().zip(sw.gap_unloading.iter().copied()).collect(),
+            role: Role::Unloading,
+            draw: Draw::Dashed,
+        });
+    }
     m.series.extend(reference_series(app, quantity, |_, v| v));
     if let Some(g) = app.gfmd_for_scene() {
         let y = if gap { g.gap_rel } else { g.mean_contact_stress };

@@ -268,8 +268,17 @@ pub struct SweepData {
     pub p: Vec<f64>,
     /// a_r(p*).
     pub a_r: Vec<f64>,
-    /// ū/h_rms.
+    /// ū/h_rms (the loading branch's).
     pub gap_rel: Vec<f64>,
+    /// The bracket of ū/h_rms on the loading branch: the adhesionless gap at the load with the
+    /// same a_r (lower) and at the same load (upper), docs/physics.md §5.1; empty without
+    /// adhesion (the bracket is the value itself).
+    pub gap_lower: Vec<f64>,
+    /// Upper end of the bracket (see [`SweepData::gap_lower`]).
+    pub gap_upper: Vec<f64>,
+    /// ū/h_rms of the unloading branch inside a hysteresis window (NaN elsewhere; empty: no
+    /// hysteresis).
+    pub gap_unloading: Vec<f64>,
     /// σ̄_c*(p*).
     pub mean_contact_stress: Vec<f64>,
     /// Whether each load converged.
@@ -296,6 +305,22 @@ impl SweepData {
             p: s.rows.iter().map(|r| r.p).collect(),
             a_r: s.rows.iter().map(|r| r.a_r).collect(),
             gap_rel: s.rows.iter().map(|r| r.mean_gap_rel).collect(),
+            // a bracket only where it is one (with adhesion the ends differ)
+            gap_lower: if s.rows.iter().any(|r| r.mean_gap_upper_rel > r.mean_gap_lower_rel) {
+                s.rows.iter().map(|r| r.mean_gap_lower_rel).collect()
+            } else {
+                Vec::new()
+            },
+            gap_upper: if s.rows.iter().any(|r| r.mean_gap_upper_rel > r.mean_gap_lower_rel) {
+                s.rows.iter().map(|r| r.mean_gap_upper_rel).collect()
+            } else {
+                Vec::new()
+            },
+            gap_unloading: if s.rows.iter().any(|r| r.mean_gap_unloading_rel.is_finite()) {
+                s.rows.iter().map(|r| r.mean_gap_unloading_rel).collect()
+            } else {
+                Vec::new()
+            },
             mean_contact_stress: s.rows.iter().map(|r| r.mean_contact_stress).collect(),
             converged: s.rows.iter().map(|r| r.converged).collect(),
             // empty without a hysteresis (nothing to draw)
@@ -319,6 +344,17 @@ impl SweepData {
         self.jump_in = jump;
         self.pull_off = pull;
         self
+    }
+
+    /// The bracket of the loading branch's ū/h_rms at `p` (interpolated in ln p* like the gap
+    /// itself), where the sweep has one.
+    pub fn gap_bracket_at(&self, p: f64) -> Option<(f64, f64)> {
+        if self.gap_lower.len() != self.p.len() || self.gap_upper.len() != self.p.len() {
+            return None;
+        }
+        let lo = asperity::theory::sweep::interpolate_in_ln_p(&self.p, &self.gap_lower, p)?;
+        let hi = asperity::theory::sweep::interpolate_in_ln_p(&self.p, &self.gap_upper, p)?;
+        (lo.is_finite() && hi.is_finite()).then_some((lo.min(hi), hi.max(lo)))
     }
 
     /// Whether there is anything of a second branch to draw.

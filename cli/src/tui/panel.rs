@@ -82,6 +82,18 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         _ => dash(),
     };
     row_styled("ū/h_rms", gap, stale_gap && app.gap.is_some());
+    // with adhesion: which branch the gap is of, and its bracket (docs/physics.md §5.1)
+    if app.scene.is_adhesive() {
+        let bracket = app
+            .sweep
+            .as_ref()
+            .and_then(|r| r.as_ref().ok())
+            .and_then(|sw| sw.gap_bracket_at(app.scene.pressure()));
+        if let Some((lo, hi)) = bracket {
+            // the loading branch's bracket (same a_r … same load)
+            row_styled("ū load", format!("{}–{}", sig(lo, 3), sig(hi, 3)), stale_gap);
+        }
+    }
     row_styled("γ̃_glo", sig(app.scene.gamma_glo(), 3), false);
     let state = match &app.point {
         _ if stale_point || (app.busy && app.point.is_none()) => "computing…".to_string(),

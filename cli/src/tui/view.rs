@@ -235,6 +235,7 @@ fn look(pal: Palette, role: Role, draw: Draw) -> (Style, Marker, GraphType) {
         Role::Gfmd => (pal.gfmd(), Marker::HalfBlock, GraphType::Scatter),
         Role::Current => (pal.current(), Marker::Block, GraphType::Scatter),
         Role::Guide => (pal.guide(), Marker::Braille, GraphType::Line),
+        Role::Band => (pal.guide(), Marker::Braille, GraphType::Scatter),
         Role::Wall => (pal.wall(), Marker::Bar, GraphType::Line),
         Role::Unloading => (pal.wall(), Marker::Dot, GraphType::Line),
         Role::JumpIn => (pal.current(), Marker::Bar, GraphType::Line),
