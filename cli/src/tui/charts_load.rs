@@ -129,7 +129,7 @@ fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64
 const BAND_ROWS: usize = 12;
 
 /// The bracket [lower, upper] of the loading branch's ū/h_rms as a shaded band: at each load,
-/// [`BAND_ROWS`] + 1 points from the lower to the upper end; None without a bracket.
+/// BAND_ROWS + 1 points from the lower to the upper end; None without a bracket.
 pub fn gap_band(sw: &SweepData) -> Option<Series> {
     if sw.gap_lower.len() != sw.p.len() || sw.gap_upper.len() != sw.p.len() {
         return None;
