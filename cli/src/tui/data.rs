@@ -301,21 +301,21 @@ impl SweepData {
     /// where a hysteresis window makes it distinct, and the window's edges (the library refines
     /// them by bisection, [`asperity::theory::hysteresis`]).
     pub fn from_sweep(s: &Sweep) -> SweepData {
+        let bracket = s.rows.iter().any(|r| r.mean_gap_upper_rel > r.mean_gap_lower_rel);
+        let col = |f: &dyn Fn(&asperity::theory::sweep::SweepRow) -> f64| -> Vec<f64> {
+            if bracket {
+                s.rows.iter().map(f).collect()
+            } else {
+                Vec::new()
+            }
+        };
         SweepData {
             p: s.rows.iter().map(|r| r.p).collect(),
             a_r: s.rows.iter().map(|r| r.a_r).collect(),
             gap_rel: s.rows.iter().map(|r| r.mean_gap_rel).collect(),
             // a bracket only where it is one (with adhesion the ends differ)
-            gap_lower: if s.rows.iter().any(|r| r.mean_gap_upper_rel > r.mean_gap_lower_rel) {
-                s.rows.iter().map(|r| r.mean_gap_lower_rel).collect()
-            } else {
-                Vec::new()
-            },
-            gap_upper: if s.rows.iter().any(|r| r.mean_gap_upper_rel > r.mean_gap_lower_rel) {
-                s.rows.iter().map(|r| r.mean_gap_upper_rel).collect()
-            } else {
-                Vec::new()
-            },
+            gap_lower: col(&|r| r.mean_gap_lower_rel),
+            gap_upper: col(&|r| r.mean_gap_upper_rel),
             gap_unloading: if s.rows.iter().any(|r| r.mean_gap_unloading_rel.is_finite()) {
                 s.rows.iter().map(|r| r.mean_gap_unloading_rel).collect()
             } else {
@@ -344,17 +344,6 @@ impl SweepData {
         self.jump_in = jump;
         self.pull_off = pull;
         self
-    }
-
-    /// The bracket of the loading branch's ū/h_rms at `p` (interpolated in ln p* like the gap
-    /// itself), where the sweep has one.
-    pub fn gap_bracket_at(&self, p: f64) -> Option<(f64, f64)> {
-        if self.gap_lower.len() != self.p.len() || self.gap_upper.len() != self.p.len() {
-            return None;
-        }
-        let lo = asperity::theory::sweep::interpolate_in_ln_p(&self.p, &self.gap_lower, p)?;
-        let hi = asperity::theory::sweep::interpolate_in_ln_p(&self.p, &self.gap_upper, p)?;
-        (lo.is_finite() && hi.is_finite()).then_some((lo.min(hi), hi.max(lo)))
     }
 
     /// Whether there is anything of a second branch to draw.

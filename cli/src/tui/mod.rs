@@ -45,6 +45,7 @@ pub mod jobs;
 pub mod keys;
 pub mod kinds;
 pub mod knobs;
+pub mod models;
 pub mod palette;
 pub mod panel;
 pub mod pins;
