@@ -5,16 +5,7 @@
 mod common;
 
 use common::asperity_here as asperity;
-
-fn ok(args: &[&str]) -> String {
-    let out = asperity(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
+use common::asperity_here_ok as ok;
 
 /// (series, x, y) rows of a figure's CSV; y None for an empty cell.
 fn rows(csv: &str) -> Vec<(String, f64, Option<f64>, String)> {

@@ -7,18 +7,9 @@ mod common;
 use asperity::input::preset::Preset;
 use asperity::surface::spectrum::Spectrum;
 use common::asperity_here as asperity;
+use common::asperity_here_ok as ok;
 
 const MAP: &str = "tests/fixtures/two_bands.txt";
-
-fn ok(args: &[&str]) -> String {
-    let out = asperity(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
 
 fn json(args: &[&str]) -> serde_json::Value {
     serde_json::from_str(&ok(args)).unwrap()

@@ -49,3 +49,15 @@ pub fn run(args: &[&str]) -> (i32, String, String) {
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
 }
+
+/// Runs `asperity` as [`asperity_here`] and returns its stdout, failing the test (with
+/// stderr) unless it succeeds.
+pub fn asperity_here_ok(args: &[&str]) -> String {
+    let out = asperity_here(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("utf-8 output")
+}
