@@ -511,6 +511,7 @@ fn explorer_names() {
         "gap",
         "scales",
         "scales-area",
+        "psd",
     ] {
         assert!(names.contains(&n), "chart {n} missing");
     }

@@ -304,6 +304,29 @@ fn tui_takes_the_scene_flags_in_tmux() {
     t.wait("a clean exit", |s| s.contains("EXIT=0"));
 }
 
+/// `asperity tui --surface FILE`: the theory on the map's spectrum, the file named in the
+/// panel, the `psd` chart reachable with `v`.
+#[test]
+fn tui_on_a_measured_surface_in_tmux() {
+    if !have_tmux() {
+        eprintln!("SKIPPED tui_on_a_measured_surface_in_tmux: tmux is not installed");
+        return;
+    }
+    let t = Tmux::start_with(
+        "surface",
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")),
+        "",
+        "tui --surface tests/fixtures/two_bands.txt --periodic --gamma 0",
+    );
+    let s = t.wait("the scene of the map", solved);
+    assert!(s.contains("surface  two_bands.txt"), "{s}");
+    // the focused panel shows `pr`: nine steps of the selector reach `psd`
+    t.keys(&["v", "v", "v", "v", "v", "v", "v", "v", "v"]);
+    t.wait("the psd chart", |s| s.contains("C(q) of two_bands.txt"));
+    t.keys(&["q"]);
+    t.wait("a clean exit", |s| s.contains("EXIT=0"));
+}
+
 #[test]
 fn tui_and_tour_flags_are_validated_like_run() {
     let out = Command::new(BIN).args(["tui", "--pressure", "-1"]).output().unwrap();

@@ -187,11 +187,9 @@ fn chart_selector_focus_and_models_ask_for_data() {
     }
     assert_eq!(a.charts[1], ChartKind::Stress);
     key(&mut a, KeyCode::Char('f'));
-    key(&mut a, KeyCode::Char('v'));
-    key(&mut a, KeyCode::Char('v'));
-    key(&mut a, KeyCode::Char('v'));
-    key(&mut a, KeyCode::Char('v'));
-    key(&mut a, KeyCode::Char('v'));
+    for _ in 0..6 {
+        key(&mut a, KeyCode::Char('v'));
+    }
     assert_eq!(a.charts[2], ChartKind::Thickness);
     let r = a.take_request().expect("a new chart asks for its data");
     assert!(r.needs.thickness && r.needs.loads && r.needs.point);

@@ -16,6 +16,7 @@
 //! | `scales-area`| a_r(q) along the resolution, the scale view's q marked        | [S-6]      |
 //! | `stress`     | σ̄_c*(p*)                                                      | Fig. 5     |
 //! | `gap`        | ū/h_rms(p*)                                                   | Fig. 6     |
+//! | `psd`        | C(q) of the scene's spectrum (a preset's or a measured one), cut-offs, self-affine fit | §1 |
 //!
 //! Stresses and pressures are reduced by E*ḡ (σ* = σ/E*ḡ, p* = p/E*ḡ), the gap by h_rms;
 //! Pr(σ*) is a density in σ* (∫Pr dσ* = a_r). With `M` every model (1–4, and the custom one
@@ -69,6 +70,7 @@ pub fn build_own(app: &App, kind: ChartKind) -> ChartModel {
         ChartKind::Gap => loads(app, ChartKind::Gap),
         ChartKind::Scales => super::charts_scales::scales(app),
         ChartKind::ScalesArea => super::charts_scales::scales_area(app),
+        ChartKind::Psd => super::charts_psd::psd(app),
     }
 }
 
@@ -350,7 +352,8 @@ mod tests {
             assert_eq!(ChartKind::parse(k.name()), Some(k));
             assert_eq!(k.cycle(1).cycle(-1), k);
         }
-        assert_eq!(ChartKind::Gap.cycle(1), ChartKind::Pr);
+        assert_eq!(ChartKind::Gap.cycle(1), ChartKind::Psd);
+        assert_eq!(ChartKind::Psd.cycle(1), ChartKind::Pr);
         assert_eq!(ChartKind::parse("nope"), None);
     }
 }

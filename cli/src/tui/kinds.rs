@@ -25,6 +25,8 @@ pub enum ChartKind {
     Scales,
     /// a_r(q) and σ_a*(q) along the resolution, with the scale view's current q.
     ScalesArea,
+    /// The power spectrum C(q), log–log, with its cut-offs and self-affine fit.
+    Psd,
 }
 
 /// What a chart needs computed.
@@ -54,7 +56,7 @@ impl Needs {
 
 impl ChartKind {
     /// Every chart, in selector order.
-    pub const ALL: [ChartKind; 9] = [
+    pub const ALL: [ChartKind; 10] = [
         ChartKind::Pr,
         ChartKind::PrLog,
         ChartKind::Area,
@@ -64,6 +66,7 @@ impl ChartKind {
         ChartKind::ScalesArea,
         ChartKind::Stress,
         ChartKind::Gap,
+        ChartKind::Psd,
     ];
 
     /// The name used in tours and file names.
@@ -78,6 +81,7 @@ impl ChartKind {
             ChartKind::Gap => "gap",
             ChartKind::Scales => "scales",
             ChartKind::ScalesArea => "scales-area",
+            ChartKind::Psd => "psd",
         }
     }
 
@@ -100,7 +104,7 @@ impl ChartKind {
             ChartKind::Area | ChartKind::AreaRatio | ChartKind::Thickness => Some("a_r"),
             ChartKind::Stress => Some("mean_contact_stress"),
             ChartKind::Gap => Some("mean_gap_rel"),
-            ChartKind::Pr | ChartKind::PrLog | ChartKind::Scales | ChartKind::ScalesArea => None,
+            ChartKind::Pr | ChartKind::PrLog | ChartKind::Scales | ChartKind::ScalesArea | ChartKind::Psd => None,
         }
     }
 
@@ -119,6 +123,7 @@ impl ChartKind {
                 scales: true,
                 ..Needs::default()
             },
+            ChartKind::Psd => Needs::default(),
             _ => Needs {
                 loads: true,
                 ..Needs::default()

@@ -37,6 +37,7 @@ pub mod app;
 pub mod chart_model;
 pub mod charts;
 pub mod charts_load;
+pub mod charts_psd;
 pub mod charts_scales;
 pub mod data;
 pub mod effects;

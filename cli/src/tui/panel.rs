@@ -58,6 +58,9 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         };
         lines.push(Line::from(Span::styled(text, style)));
     }
+    if let Some(name) = surface_name(&app.scene) {
+        lines.push(Line::from(format!(" {}{name}", pad("surface", 9))));
+    }
     lines.push(Line::from(Span::styled("─ results ─", pal.dim())));
     let pt = app.point.as_ref().and_then(|r| r.as_ref().ok());
     let dash = || "–".to_string();
@@ -183,6 +186,22 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     }
     let block = Block::bordered().title(" parameters ");
     f.render_widget(Paragraph::new(lines).block(block), area);
+}
+
+/// The file a measured spectrum came from (its name, without the directories), or None for
+/// the preset's own spectrum.
+pub fn surface_name(scene: &asperity::input::scene::Scene) -> Option<String> {
+    match scene.spectrum() {
+        asperity::surface::spectrum::Spectrum::Tabulated(t) => Some(surface_name_of(t)),
+        _ => None,
+    }
+}
+
+/// A table's file name without the directories.
+pub fn surface_name_of(t: &asperity::surface::tabulated::Tabulated) -> String {
+    std::path::Path::new(&t.source)
+        .file_name()
+        .map_or_else(|| t.source.clone(), |n| n.to_string_lossy().into_owned())
 }
 
 /// A value with an SI prefix: 250.0 kPa, 0.7766 µm.

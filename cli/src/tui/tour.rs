@@ -542,7 +542,7 @@ caption = "a\nb\nc"
         assert_eq!(
             e,
             "preset bad.toml: line 18: step[1].charts: unknown chart \"area-ration\"; allowed pr, \
-             pr-loglog, area, area-ratio, thickness, scales, scales-area, stress, gap"
+             pr-loglog, area, area-ratio, thickness, scales, scales-area, stress, gap, psd"
         );
         let e = error(&GOOD.replace("model = 2", "model = 7"));
         assert_eq!(e, "preset bad.toml: line 15: step[1].model: 7; allowed 1, 2, 3 or 4");
