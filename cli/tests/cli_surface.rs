@@ -35,6 +35,11 @@ fn psd_of_the_two_band_map() {
     let c: Vec<f64> = t.iter().map(|r| r["psd"].as_f64().unwrap()).collect();
     let peak = c.iter().cloned().fold(0.0, f64::max);
     assert!(c.iter().any(|&x| x < 1e-3 * peak), "a gap between the bands: {c:?}");
+    // two bands are not self-affine: the fit's H is outside (0, 1] and the output says so
+    let hurst = v["hurst"].as_f64().unwrap_or(f64::NAN);
+    assert_eq!(v["self_affine"], false, "H = {hurst}");
+    let table = ok(&["psd", MAP, "--periodic"]);
+    assert!(table.lines().any(|l| l.starts_with("self_affine")), "{table}");
     let csv = ok(&["psd", MAP, "--periodic", "--format", "csv"]);
     assert!(csv.starts_with("q,psd\n"));
     assert_eq!(csv.lines().count(), q.len() + 1);
@@ -47,6 +52,25 @@ fn psd_of_the_two_band_map() {
     ] {
         assert!(v.get(k).is_some(), "{k}");
     }
+}
+
+/// A generated self-affine map (H = 0.8, L = 4 λ_r) is recognised as self-affine, with its H.
+#[test]
+fn psd_of_a_self_affine_map_says_so() {
+    use asperity::surface::heightmap::generate;
+    use asperity::surface::spectrum::{Normalisation, SelfAffine};
+    let sa = SelfAffine::new(4e-6, 1e-6, 1e-6 / 16.0, 0.8, Normalisation::RmsGradient(0.1)).unwrap();
+    let path = tmp("self_affine.txt");
+    generate(&sa, 128, 7)
+        .unwrap()
+        .save(std::path::Path::new(&path))
+        .unwrap();
+    let v = json(&["psd", &path, "--size", "4e-6", "--periodic", "--format", "json"]);
+    assert_eq!(v["self_affine"], true);
+    let h = v["hurst"].as_f64().unwrap();
+    assert!((h - 0.8).abs() < asperity::tolerances::PSD_HURST_ABS, "H = {h}");
+    let table = ok(&["psd", &path, "--size", "4e-6", "--periodic"]);
+    assert!(!table.lines().any(|l| l.starts_with("self_affine")), "{table}");
 }
 
 #[test]

@@ -128,6 +128,7 @@ fn psd_keys_and_columns() {
             "rolloff_wavelength_range_m",
             "short_wavelength_m",
             "short_wavelength_range_m",
+            "self_affine",
             "line_scan",
             "window",
             "detrend",

@@ -8,7 +8,7 @@ use asperity::error::{Error, Field, Result};
 use asperity::surface::heightmap::Surface;
 use asperity::surface::psd::{self, PsdAnalysis, PsdOptions};
 use asperity::surface::readers::{self, ReadOptions, Unit};
-use asperity::surface::spectrum::{Spectrum, Tabulated};
+use asperity::surface::spectrum::{Spectrum, Tabulated, HURST_RANGE};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::path::PathBuf;
@@ -221,6 +221,9 @@ pub struct PsdOutput {
     pub short_wavelength_m: Option<f64>,
     /// [low, high] of λ_s (m).
     pub short_wavelength_range_m: Option<[f64; 2]>,
+    /// Whether the fit describes the map: a fit exists and its H lies in the self-affine range
+    /// (0, 1]; false for e.g. two separate bands of roughness, whose "H" means nothing.
+    pub self_affine: bool,
     /// Whether the map was a line scan (1-D PSD converted to 2-D).
     pub line_scan: bool,
     /// The window ("hann" or "none").
@@ -249,12 +252,19 @@ fn output(file: &str, s: &Surface, a: &PsdAnalysis, elapsed: f64) -> PsdOutput {
         rolloff_wavelength_range_m: f.map(|f| [two_pi / f.q_r_high, two_pi / f.q_r_low]),
         short_wavelength_m: f.map(|f| two_pi / f.q_s),
         short_wavelength_range_m: f.map(|f| [two_pi / f.q_s_high, two_pi / f.q_s]),
+        self_affine: is_self_affine(a),
         line_scan: a.line_scan,
         window: a.window.to_string(),
         detrend: a.detrend.to_string(),
         elapsed_s: elapsed,
         table: a.bins.clone(),
     }
+}
+
+/// Whether the analysis has a fit with H in the self-affine range.
+fn is_self_affine(a: &PsdAnalysis) -> bool {
+    a.fit
+        .is_some_and(|f| (HURST_RANGE.0..=HURST_RANGE.1).contains(&f.hurst))
 }
 
 /// Runs `asperity psd`.
@@ -312,7 +322,7 @@ fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::ChartSpec {
         points: a.bins.iter().map(|b| (b.q, b.psd)).collect(),
         style: SeriesStyle::Points,
     }];
-    if let (Some(f), Some(first)) = (&a.fit, a.bins.first()) {
+    if let (Some(f), Some(first), true) = (&a.fit, a.bins.first(), is_self_affine(a)) {
         // the fitted law through the bins: plateau to q_r, power law to q_s
         let c_r = a
             .bins
@@ -368,6 +378,12 @@ fn table(o: &PsdOutput) -> String {
     ) {
         (Some(h), Some(e), Some(r), Some(s)) => {
             line("hurst", format!("{h:.4} +- {e:.4}"));
+            if !o.self_affine {
+                line(
+                    "self_affine",
+                    "no: H outside (0, 1], the fit does not describe the map".into(),
+                );
+            }
             line(
                 "rolloff_wavelength_m",
                 format!(
