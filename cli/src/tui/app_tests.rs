@@ -503,3 +503,53 @@ fn the_scale_view_scrubs_plays_to_the_end_and_pauses() {
     assert_eq!(a.scales_data().map(|d| d.frames.len()), Some(2));
     assert!(!a.scales_is_stale());
 }
+
+#[test]
+fn typed_values_stay_on_their_own_grid_until_the_next_typed_value() {
+    let mut a = app();
+    key(&mut a, KeyCode::Down); // t·q_r
+    assert_eq!(a.selected_param(), Param::Thickness);
+    typed(&mut a, "0.123");
+    key(&mut a, KeyCode::Right);
+    let up = a.scene.thickness_qr();
+    assert!((up / (0.123 * 10f64.powf(0.1)) - 1.0).abs() < 1e-12, "{up}");
+    key(&mut a, KeyCode::Left);
+    assert_eq!(
+        a.scene.thickness_qr(),
+        0.123,
+        "back to the typed value, not to the preset's grid"
+    );
+    key(&mut a, KeyCode::Left);
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.scene.thickness_qr(), 0.123);
+    // γ_s: its own anchor, the thickness keeps its own
+    key(&mut a, KeyCode::Down);
+    assert_eq!(a.selected_param(), Param::Gamma);
+    typed(&mut a, "0.1256");
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.1256);
+    key(&mut a, KeyCode::Up);
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.scene.thickness_qr(), 0.123);
+    // the next typed value anchors anew
+    typed(&mut a, "0.2");
+    key(&mut a, KeyCode::Left);
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.scene.thickness_qr(), 0.2);
+    // a reset returns to the preset's grids
+    key(&mut a, KeyCode::Char('r'));
+    assert_eq!(a.anchors, Anchors::default());
+    // the custom model's coefficients step on a grid through the typed value too
+    let mut c = app();
+    c.set_typed(Param::Model, "custom").unwrap();
+    let row = c.params().iter().position(|p| *p == Param::C1).unwrap();
+    c.selected = row;
+    key(&mut c, KeyCode::Enter);
+    typed(&mut c, "-0.123");
+    key(&mut c, KeyCode::Right);
+    assert!((c.scene.model().c1 - (-0.113)).abs() < 1e-12, "{}", c.scene.model().c1);
+    key(&mut c, KeyCode::Left);
+    assert_eq!(c.scene.model().c1, -0.123);
+}

@@ -1,6 +1,7 @@
 //! The knobs of the parameter panel ([`Param`]) and their pure stepping: log grids anchored
 //! at the preset's value (so stepping away and back returns to it exactly), the linear grids of
-//! the custom model's coefficients, typed numbers, and the load charts' p* range.
+//! the custom model's coefficients, typed numbers (a typed value anchors its knob's grid until
+//! the next typed value, see [`Anchors`]), and the load charts' p* range.
 
 use asperity::error::{Error, Result};
 
@@ -126,18 +127,73 @@ pub fn log_step_from(x: f64, anchor: f64, per_decade: f64, steps: i32) -> f64 {
 
 /// An additive step on a grid of `step` (values snap to the grid, so toggling back is exact).
 pub fn lin_step(x: f64, step: f64, steps: i32) -> f64 {
-    let u = x / step;
+    lin_step_from(x, 0.0, step, steps)
+}
+
+/// [`lin_step`] on the grid anchor + k·step, which contains `anchor` (a typed value).
+pub fn lin_step_from(x: f64, anchor: f64, step: f64, steps: i32) -> f64 {
+    let anchor = if anchor.is_finite() { anchor } else { 0.0 };
+    let u = (x - anchor) / step;
     let k = if steps > 0 {
         (u + 1e-9).floor() + steps as f64
     } else {
         (u - 1e-9).ceil() + steps as f64
     };
-    let v = k * step;
+    let v = if k == 0.0 { anchor } else { anchor + k * step };
     // −0 → 0
     if v == 0.0 {
         0.0
     } else {
         v
+    }
+}
+
+/// The typed values that anchor their knob's grid: after typing t·q_r = 0.123 the arrows step
+/// 0.123 → 0.155 → 0.123 on the grid 0.123·10^(k/10), not on the preset's grid (which would
+/// lose the typed value at the first step). A new typed value replaces its knob's anchor; a
+/// preset, a reset or a tour step clears them all (the preset's grids again).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Anchors {
+    /// p*.
+    pub pressure: Option<f64>,
+    /// t·q_r (finite).
+    pub thickness: Option<f64>,
+    /// γ_s (> 0).
+    pub gamma: Option<f64>,
+    /// The custom model's c₁, c₂, α, k_G.
+    pub coefficients: [Option<f64>; 4],
+}
+
+impl Anchors {
+    /// The anchor of `param`'s grid, if a value was typed for it.
+    pub fn get(&self, param: Param) -> Option<f64> {
+        match param {
+            Param::Pressure => self.pressure,
+            Param::Thickness => self.thickness,
+            Param::Gamma => self.gamma,
+            Param::C1 => self.coefficients[0],
+            Param::C2 => self.coefficients[1],
+            Param::Alpha => self.coefficients[2],
+            Param::KGriffith => self.coefficients[3],
+            Param::Preset | Param::Model | Param::Cap => None,
+        }
+    }
+
+    /// Records a typed value of `param`; a value that is no grid point (t·q_r = ∞, γ_s = 0:
+    /// the ends of the arrows' range) anchors nothing.
+    pub fn typed(&mut self, param: Param, v: f64) {
+        let usable = v.is_finite() && (v > 0.0 || !matches!(param, Param::Pressure | Param::Thickness | Param::Gamma));
+        let v = usable.then_some(v);
+        match param {
+            Param::Pressure => self.pressure = v,
+            Param::Thickness => self.thickness = v,
+            Param::Gamma => self.gamma = v,
+            Param::C1 => self.coefficients[0] = v,
+            Param::C2 => self.coefficients[1] = v,
+            Param::Alpha => self.coefficients[2] = v,
+            Param::KGriffith => self.coefficients[3] = v,
+            Param::Preset | Param::Model | Param::Cap => {}
+        }
     }
 }
 

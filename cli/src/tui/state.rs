@@ -74,6 +74,8 @@ pub struct App {
     pub selected: usize,
     /// The value being typed, if any.
     pub edit: Option<String>,
+    /// Typed values that anchor their knob's grid (see [`Anchors`]).
+    pub anchors: Anchors,
     /// Overlay.
     pub overlay: Overlay,
     /// The charts of the big panel, the lower-left and the lower-right panel.
@@ -218,6 +220,7 @@ impl App {
             charts: DEFAULT_CHARTS,
             focus: 0,
             help_scroll: 0,
+            anchors: Anchors::default(),
             all_models: false,
             overlay_points: HashMap::new(),
             overlay_sweeps: HashMap::new(),

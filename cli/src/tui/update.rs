@@ -230,6 +230,7 @@ impl App {
                 self.overlay = Overlay::Presets(cur);
             }
             Action::Reset => {
+                self.anchors = Anchors::default();
                 self.set_scene(self.base.clone());
                 self.info(format!("reset to preset {}", self.preset.name));
             }
@@ -371,8 +372,9 @@ impl App {
                 });
             }
         }
-        // `r` goes back to the step's scene
+        // `r` goes back to the step's scene; the arrows step on its grids
         self.base = st.scene.clone();
+        self.anchors = Anchors::default();
         self.set_scene(st.scene);
         self.charts = st.charts;
         self.all_models = st.models;
@@ -397,6 +399,7 @@ impl App {
                 self.source = source.to_string();
                 self.preset = p;
                 self.base = s.clone();
+                self.anchors = Anchors::default();
                 self.set_scene(s);
                 self.info(format!("preset {}", self.preset.name));
             }
@@ -421,7 +424,11 @@ impl App {
         let pick = |s: (f64, f64)| if coarse { s.1 } else { s.0 };
         let mut s = self.scene.clone();
         let m = s.model();
-        match self.selected_param() {
+        // a typed value anchors its knob's grid; else the preset's value does
+        let param = self.selected_param();
+        let typed = self.anchors.get(param);
+        let lin = |x: f64, step: (f64, f64)| lin_step_from(x, typed.unwrap_or(0.0), pick(step), dir);
+        match param {
             Param::Preset => {
                 let n = self.presets.len() as i32;
                 if n > 0 {
@@ -436,7 +443,12 @@ impl App {
                 return;
             }
             Param::Pressure => {
-                let p = log_step_from(s.pressure(), self.base.pressure(), pick(PRESSURE_STEPS), dir);
+                let p = log_step_from(
+                    s.pressure(),
+                    typed.unwrap_or(self.base.pressure()),
+                    pick(PRESSURE_STEPS),
+                    dir,
+                );
                 if let Err(e) = s.set_pressure(p.clamp(PRESSURE_KEYS.0, PRESSURE_KEYS.1)) {
                     return self.fail(e);
                 }
@@ -450,7 +462,7 @@ impl App {
                         THICKNESS_KEYS.1
                     }
                 } else {
-                    let v = log_step_from(t, self.base.thickness_qr(), pick(THICKNESS_STEPS), dir);
+                    let v = log_step_from(t, typed.unwrap_or(self.base.thickness_qr()), pick(THICKNESS_STEPS), dir);
                     if v > THICKNESS_KEYS.1 * (1.0 + 1e-9) {
                         f64::INFINITY
                     } else {
@@ -474,7 +486,12 @@ impl App {
                         0.0
                     }
                 } else {
-                    let v = log_step_from(g, self.preset.adhesion.surface_energy_j_m2, pick(GAMMA_STEPS), dir);
+                    let v = log_step_from(
+                        g,
+                        typed.unwrap_or(self.preset.adhesion.surface_energy_j_m2),
+                        pick(GAMMA_STEPS),
+                        dir,
+                    );
                     if v < GAMMA_KEYS.0 * (1.0 - 1e-9) {
                         0.0
                     } else {
@@ -486,7 +503,7 @@ impl App {
             }
             Param::C1 => {
                 return self.try_model(Model::custom(
-                    lin_step(m.c1, pick((0.01, 0.1)), dir),
+                    lin(m.c1, (0.01, 0.1)),
                     m.c2,
                     m.alpha,
                     m.k_griffith,
@@ -496,18 +513,18 @@ impl App {
             Param::C2 => {
                 return self.try_model(Model::custom(
                     m.c1,
-                    lin_step(m.c2, pick((0.01, 0.1)), dir),
+                    lin(m.c2, (0.01, 0.1)),
                     m.alpha,
                     m.k_griffith,
                     m.cap,
                 ))
             }
             Param::Alpha => {
-                let a = lin_step(m.alpha, pick((0.05, 0.25)), dir).clamp(0.0, 4.0);
+                let a = lin(m.alpha, (0.05, 0.25)).clamp(0.0, 4.0);
                 return self.try_model(Model::custom(m.c1, m.c2, a, m.k_griffith, m.cap));
             }
             Param::KGriffith => {
-                let k = lin_step(m.k_griffith, pick((0.1, 1.0)), dir);
+                let k = lin(m.k_griffith, (0.1, 1.0));
                 let k = if k <= 0.0 { m.k_griffith.min(0.1) } else { k };
                 return self.try_model(Model::custom(m.c1, m.c2, m.alpha, k, m.cap));
             }
@@ -569,6 +586,19 @@ impl App {
             Param::KGriffith => s.set_model(Model::custom(m.c1, m.c2, m.alpha, parse_number("k_G", t)?, m.cap)?)?,
             Param::Cap => s.set_model(Model::custom(m.c1, m.c2, m.alpha, m.k_griffith, parse_bool("cap", t)?)?)?,
         }
+        // the typed value anchors its knob's grid (the arrows step from it)
+        let nm = s.model();
+        let v = match param {
+            Param::Pressure => s.pressure(),
+            Param::Thickness => s.thickness_qr(),
+            Param::Gamma => s.surface_energy_j_m2(),
+            Param::C1 => nm.c1,
+            Param::C2 => nm.c2,
+            Param::Alpha => nm.alpha,
+            Param::KGriffith => nm.k_griffith,
+            _ => f64::NAN,
+        };
+        self.anchors.typed(param, v);
         self.set_scene(s);
         Ok(())
     }
