@@ -318,3 +318,10 @@ pub const SHELL_THEORY_REL: f64 = 1e-3;
 /// quadrature of q·f(qt) and its first moment at t = ∞ (round-off), hence 0.06 percentage
 /// points.
 pub const MAP_MOMENT_REPORT_ABS: f64 = 0.06;
+
+// Front ends
+
+/// A value the explorer computes at chart accuracy (`engine::Options::chart()`: the adhesive
+/// march at half resolution, a_r to ~1e-3 relative) against the default-accuracy evaluation
+/// of the same scene, relative: well inside a pixel (~1 % of an axis).
+pub const CHART_ACCURACY_REL: f64 = 1e-2;

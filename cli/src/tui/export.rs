@@ -1,12 +1,16 @@
 //! `e`: writes the current curves as CSV and the scene as a preset TOML (loadable again with
 //! `--preset PATH`) into the export directory, under names that never overwrite:
-//! `asperity-NAME-N-pr.csv`, `asperity-NAME-N-loads.csv`, `asperity-NAME-N.toml`.
-//! The CSVs start with `#` lines describing the scene; unavailable values are empty cells.
+//! `asperity-NAME-N-pr.csv`, `asperity-NAME-N-loads.csv` (both branches of a hysteresis and
+//! its edges, [`loads_csv`]), `asperity-NAME-N-gfmd.csv` (after `g`, [`gfmd_csv`]),
+//! `asperity-NAME-N-pins.csv` (pinned curves), `asperity-NAME-N-scales.csv` (the scale view)
+//! and `asperity-NAME-N.toml`. The CSVs start with `#` lines describing the scene;
+//! unavailable values are empty cells.
 //!
 //! `s`: writes the visible charts as SVG and PNG (`asperity-NAME-N-CHART.svg|png`) through
 //! the chart renderer ([`crate::chart`]), from the same [`ChartModel`]s the screen shows.
 
 use super::charts::{self, ChartKind, ChartModel, Role};
+use super::data::{GfmdView, SweepData};
 use super::plot::Scale;
 use super::state::App;
 use crate::chart::{self, ChartSpec, Series, SeriesStyle};
@@ -93,21 +97,16 @@ pub fn export(app: &App) -> Result<Vec<String>> {
         paths.push(path.display().to_string());
     }
     if let Some(Ok(sw)) = &app.sweep {
-        let mut t = scene_comment(app, &stem);
-        t.push_str("p,a_r,mean_gap_rel,mean_contact_stress,converged\n");
-        for i in 0..sw.p.len() {
-            let _ = writeln!(
-                t,
-                "{},{},{},{},{}",
-                cell(sw.p[i]),
-                cell(sw.a_r[i]),
-                cell(sw.gap_rel[i]),
-                cell(sw.mean_contact_stress[i]),
-                sw.converged.get(i).copied().unwrap_or(false)
-            );
-        }
         let path = dir.join(format!("{stem}-loads.csv"));
-        write(&path, &t)?;
+        write(&path, &(scene_comment(app, &stem) + &loads_csv(sw)))?;
+        paths.push(path.display().to_string());
+    }
+    if let Some(g) = app
+        .gfmd_for_scene()
+        .filter(|g| !g.sweep.is_empty() || g.a_r.is_finite())
+    {
+        let path = dir.join(format!("{stem}-gfmd.csv"));
+        write(&path, &(scene_comment(app, &stem) + &gfmd_csv(g)))?;
         paths.push(path.display().to_string());
     }
     if !app.pins.is_empty() {
@@ -149,6 +148,79 @@ pub fn export(app: &App) -> Result<Vec<String>> {
         paths.push(path.display().to_string());
     }
     Ok(paths)
+}
+
+/// Column at `i` of a per-load column that may be empty (no such curve): an empty cell then.
+fn at(v: &[f64], i: usize) -> f64 {
+    v.get(i).copied().unwrap_or(f64::NAN)
+}
+
+/// The load curves as CSV: the loading branch (a_r, ū/h_rms with its bracket, σ̄_c*), the
+/// unloading branch inside a hysteresis window (empty cells elsewhere), and the window's
+/// edges as `#` lines (`# jump_in_pressure: …`: above it the loading branch no longer
+/// exists; `# pull_off_pressure: …`: below it the unloading branch no longer exists). The
+/// column names are `asperity sweep`'s.
+pub fn loads_csv(sw: &SweepData) -> String {
+    let mut t = String::new();
+    let edge = |x: Option<f64>| x.map_or_else(|| "none in the range".to_string(), |v| format!("{v:e}"));
+    let _ = writeln!(t, "# jump_in_pressure: {}", edge(sw.jump_in));
+    let _ = writeln!(t, "# pull_off_pressure: {}", edge(sw.pull_off));
+    t.push_str(
+        "p,a_r,mean_gap_rel,mean_contact_stress,converged,mean_gap_lower_rel,mean_gap_upper_rel,\
+         a_r_unloading,mean_gap_unloading_rel\n",
+    );
+    for i in 0..sw.p.len() {
+        let _ = writeln!(
+            t,
+            "{},{},{},{},{},{},{},{},{}",
+            cell(sw.p[i]),
+            cell(sw.a_r[i]),
+            cell(sw.gap_rel[i]),
+            cell(sw.mean_contact_stress[i]),
+            sw.converged.get(i).copied().unwrap_or(false),
+            cell(at(&sw.gap_lower, i)),
+            cell(at(&sw.gap_upper, i)),
+            cell(at(&sw.a_r_unloading, i)),
+            cell(at(&sw.gap_unloading, i)),
+        );
+    }
+    t
+}
+
+/// The GFMD results of the scene as CSV, long format: `source` is `gfmd` (the run at p* and
+/// the loads of its sweep) or `theory_on_map` (the theory on the map's own discrete spectrum
+/// at the same loads: the like-for-like comparison).
+pub fn gfmd_csv(g: &GfmdView) -> String {
+    let mut t = format!(
+        "# GFMD on a {n}x{n} grid, {it} steps at p* = {p:e}\n",
+        n = g.grid,
+        it = g.iterations,
+        p = g.pressure
+    );
+    t.push_str("source,p,a_r,mean_gap_rel,mean_contact_stress\n");
+    let mut rows: Vec<(&str, f64, f64, f64, f64)> = vec![("gfmd", g.pressure, g.a_r, g.gap_rel, g.mean_contact_stress)];
+    // the sweep's middle load is the run itself
+    let other = |p: f64| (p / g.pressure - 1.0).abs() > 1e-9;
+    rows.extend(
+        g.sweep
+            .iter()
+            .filter(|r| other(r.0))
+            .map(|r| ("gfmd", r.0, r.1, r.2, f64::NAN)),
+    );
+    if let Some(a) = g.theory_a_r {
+        rows.push(("theory_on_map", g.pressure, a, f64::NAN, f64::NAN));
+    }
+    rows.extend(
+        g.theory_sweep
+            .iter()
+            .filter(|r| other(r.0) || g.theory_a_r.is_none())
+            .map(|r| ("theory_on_map", r.0, r.1, r.2, f64::NAN)),
+    );
+    rows.sort_by(|a, b| a.0.cmp(b.0).then(a.1.total_cmp(&b.1)));
+    for (src, p, a, u, s) in rows {
+        let _ = writeln!(t, "{src},{},{},{},{}", cell(p), cell(a), cell(u), cell(s));
+    }
+    t
 }
 
 /// The chart of the renderer ([`crate::chart`]) for a chart model, as drawn on screen: the
