@@ -325,3 +325,7 @@ pub const MAP_MOMENT_REPORT_ABS: f64 = 0.06;
 /// march at half resolution, a_r to ~1e-3 relative) against the default-accuracy evaluation
 /// of the same scene, relative: well inside a pixel (~1 % of an axis).
 pub const CHART_ACCURACY_REL: f64 = 1e-2;
+/// A figure's polyline against the engine evaluated on its own between two of its points, in
+/// pixels of the default chart (800 × 560): refinement aims at half a pixel from three
+/// neighbours' curvature, so a pixel bounds what it leaves.
+pub const FIGURE_CHORD_PX: f64 = 1.0;

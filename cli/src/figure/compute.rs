@@ -1,6 +1,7 @@
 //! Computing a figure's data: the theory curves (the engine, each point as `run` computes
 //! it), the closed forms, the values \[S\] states, and with `--gfmd` the brute-force points.
 
+use super::refine::{self, Axes, Refined, Sample};
 use super::spec::{ClosedFormKind, FigureSpec, Overrides, XAxis, YAxis};
 use super::{DataPoint, DataSeries, FigureData};
 use crate::chart::SeriesStyle;
@@ -11,7 +12,8 @@ use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use asperity::theory::closed_form;
 use asperity::theory::engine::{self, Evaluation, Options};
-use asperity::theory::knob::{self, Knob, KnobSpec};
+use asperity::theory::gap;
+use asperity::theory::knob::{Knob, KnobSpec};
 use asperity::theory::sweep::{self, SweepSpec};
 use rayon::prelude::*;
 use std::sync::atomic::AtomicBool;
@@ -72,6 +74,16 @@ pub fn x_values(spec: &FigureSpec) -> Vec<f64> {
     }
 }
 
+/// The x axis's quantity in notes.
+fn x_name(x: XAxis) -> &'static str {
+    match x {
+        XAxis::Pressure => "p*",
+        XAxis::Thickness => "t·q_r",
+        XAxis::Gamma => "γ_s",
+        XAxis::Stress => "σ*",
+    }
+}
+
 /// (a_r, σ̄_c*, ⟨δσ_c²⟩*) of an evaluation.
 fn y_of(y: YAxis, p: f64, a_r: f64, mean: f64, var: f64, gap: Option<f64>) -> Option<f64> {
     let v = match y {
@@ -89,98 +101,199 @@ fn point(x: f64, y: Option<f64>, note: Option<String>) -> DataPoint {
     DataPoint { x, y, note }
 }
 
-/// One theory curve of a sweep figure.
-fn sweep_curve(spec: &FigureSpec, scene: &Scene) -> Result<Vec<DataPoint>> {
-    let opts = Options::default();
-    let xs = x_values(spec);
-    match spec.x {
-        XAxis::Pressure if spec.y == YAxis::MeanGapRel => {
-            // the gap needs the load sweep's shared table
-            let sw = sweep::sweep(
-                scene,
-                &SweepSpec {
-                    from: xs[0],
-                    to: *xs.last().expect("points >= 2"),
-                    points: xs.len(),
-                },
-                &opts,
-                None,
-            )?;
-            Ok(sw
-                .rows
-                .iter()
-                .map(|r| {
-                    let y = r.mean_gap_rel.is_finite().then_some(r.mean_gap_rel);
-                    point(r.p, y, (!r.converged).then(|| "did not converge".to_string()))
-                })
-                .collect())
+/// The evaluation of one theory curve at x: the loading branch's value, the unloading
+/// branch's where a hysteresis window makes it distinct (a_r, a_r/p*, ū), and the number of
+/// stable branches.
+fn sample_at(spec: &FigureSpec, scene: &Scene, x: f64) -> Sample {
+    // the value `run` computes; a figure draws no error bar, so none is estimated
+    let opts = Options {
+        adhesion_error_estimate: false,
+        ..Options::default()
+    };
+    let none = |note: String| Sample {
+        x,
+        y: None,
+        y_unloading: None,
+        stable: 0,
+        note: Some(note),
+    };
+    let s = match spec.x {
+        XAxis::Pressure => scene.clone().with_pressure(x),
+        XAxis::Thickness => scene.clone().with_thickness_qr(x),
+        XAxis::Gamma => scene.clone().with_surface_energy_j_m2(x),
+        XAxis::Stress => Ok(scene.clone()),
+    };
+    let s = match s {
+        Ok(s) => s,
+        Err(e) => return none(e.to_string()),
+    };
+    let e = match engine::evaluate(&s, &opts) {
+        Ok(e) => e,
+        Err(e) => return none(e.to_string()),
+    };
+    let p = s.pressure();
+    let (gap, gap_unloading) = if spec.y == YAxis::MeanGapRel {
+        match gap::mean_gap_of(&s, &e, &opts) {
+            Ok(g) => (Some(g.relative), g.unloading.map(|u| u.relative)),
+            Err(err) => return none(err.to_string()),
         }
-        XAxis::Pressure => {
-            // each load on its own, as `run --pressure P` computes it
-            let results: Vec<Result<Evaluation>> = xs
-                .par_iter()
-                .map(|&p| engine::evaluate(&scene.clone().with_pressure(p)?, &opts))
-                .collect();
-            collect_points(spec, &xs, results)
-        }
-        XAxis::Thickness | XAxis::Gamma => {
-            let knob = if spec.x == XAxis::Thickness {
-                Knob::Thickness
-            } else {
-                Knob::Gamma
-            };
-            let ks = KnobSpec {
-                knob,
-                from: xs[0],
-                to: *xs.last().expect("points >= 2"),
-                points: xs.len(),
-            };
-            let with_gap = spec.y == YAxis::MeanGapRel;
-            let pts = knob::knob_sweep(scene, &ks, &opts, with_gap, None)?;
-            Ok(pts
-                .into_iter()
-                .map(|pt| match pt.result {
-                    Ok(e) => {
-                        let gap = pt.gap.ok().flatten().map(|g| g.relative);
-                        let s = &e.stats;
-                        point(
-                            pt.value,
-                            y_of(
-                                spec.y,
-                                scene.pressure(),
-                                s.a_r,
-                                s.mean_contact_stress,
-                                s.contact_stress_variance,
-                                gap,
-                            ),
-                            None,
-                        )
-                    }
-                    Err(e) => point(pt.value, None, Some(e.to_string())),
-                })
-                .collect())
-        }
-        XAxis::Stress => unreachable!("stress figures are not sweeps"),
+    } else {
+        (None, None)
+    };
+    let st = &e.stats;
+    let y = y_of(
+        spec.y,
+        p,
+        st.a_r,
+        st.mean_contact_stress,
+        st.contact_stress_variance,
+        gap,
+    );
+    let y_unloading = match spec.y {
+        YAxis::AR => e.unloading_a_r,
+        YAxis::AROverP => e.unloading_a_r.map(|a| a / p),
+        YAxis::MeanGapRel => gap_unloading,
+        _ => None,
+    }
+    .filter(|v| v.is_finite());
+    Sample {
+        x,
+        y,
+        y_unloading,
+        stable: e.branches.iter().filter(|b| b.stable).count().max(1),
+        note: y.is_none().then(|| "no value".to_string()),
     }
 }
 
-fn collect_points(spec: &FigureSpec, xs: &[f64], results: Vec<Result<Evaluation>>) -> Result<Vec<DataPoint>> {
-    let mut out = Vec::with_capacity(xs.len());
-    for (&x, r) in xs.iter().zip(results) {
-        match r {
-            Ok(e) => {
-                let s = &e.stats;
-                out.push(point(
-                    x,
-                    y_of(spec.y, x, s.a_r, s.mean_contact_stress, s.contact_stress_variance, None),
-                    None,
-                ))
-            }
-            Err(e @ Error::NotConverged { .. }) => out.push(point(x, None, Some(e.to_string()))),
-            Err(e) => return Err(e),
+/// The scene at every x of the figure file, checked before any work (a value out of range is
+/// an error of the figure, not a gap in a curve).
+fn check_values(spec: &FigureSpec, scene: &Scene, xs: &[f64]) -> Result<()> {
+    for &x in xs {
+        match spec.x {
+            XAxis::Pressure => scene.clone().with_pressure(x).map(|_| ())?,
+            XAxis::Thickness => scene.clone().with_thickness_qr(x).map(|_| ())?,
+            XAxis::Gamma => scene.clone().with_surface_energy_j_m2(x).map(|_| ())?,
+            XAxis::Stress => {}
         }
     }
-    Ok(out)
+    Ok(())
+}
+
+/// A theory curve of a sweep figure before refinement: the load sweep for ū against p* (it
+/// needs the sweep's shared energy table), else every x on its own, as `run` computes it.
+fn sweep_curve(spec: &FigureSpec, scene: &Scene) -> Result<Vec<Sample>> {
+    let xs = x_values(spec);
+    check_values(spec, scene, &xs)?;
+    if spec.x == XAxis::Pressure && spec.y == YAxis::MeanGapRel {
+        let sw = sweep::sweep(
+            scene,
+            &SweepSpec {
+                from: xs[0],
+                to: *xs.last().expect("points >= 2"),
+                points: xs.len(),
+            },
+            &Options::default(),
+            None,
+        )?;
+        return Ok(sw
+            .rows
+            .iter()
+            .map(|r| {
+                let y = r.mean_gap_rel.is_finite().then_some(r.mean_gap_rel);
+                Sample {
+                    x: r.p,
+                    y,
+                    y_unloading: r.mean_gap_unloading_rel.is_finite().then_some(r.mean_gap_unloading_rel),
+                    stable: 1,
+                    note: (!r.converged).then(|| "did not converge".to_string()),
+                }
+            })
+            .collect());
+    }
+    Ok(xs.par_iter().map(|&x| sample_at(spec, scene, x)).collect())
+}
+
+/// The axes of a sweep figure for refinement: x over the file's range, y over every theory
+/// curve's values.
+fn refine_axes(spec: &FigureSpec, curves: &[Vec<Sample>]) -> Axes {
+    let xs = x_values(spec);
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for s in curves.iter().flatten() {
+        for v in [s.y, s.y_unloading].into_iter().flatten() {
+            if v.is_finite() && (!spec.y_log || v > 0.0) {
+                lo = lo.min(v);
+                hi = hi.max(v);
+            }
+        }
+    }
+    let (w, h) = crate::chart::SVG_SIZE;
+    Axes {
+        x_log: spec.x_log,
+        y_log: spec.y_log,
+        x_range: (xs[0], *xs.last().unwrap_or(&xs[0])),
+        y_range: (lo, hi),
+        px: (f64::from(w), f64::from(h)),
+    }
+}
+
+/// The series of a refined curve: the loading branch (broken where it ends at a window's
+/// edge) and, where a hysteresis window makes it distinct, the unloading branch; notes on the
+/// edges.
+fn branch_series(label: &str, r: &Refined, axes: &Axes, x_name: &str, notes: &mut Vec<String>) -> Vec<DataSeries> {
+    let mut loading = Vec::with_capacity(r.samples.len() + r.breaks.len());
+    for (i, s) in r.samples.iter().enumerate() {
+        loading.push(point(s.x, s.y, s.note.clone()));
+        if r.breaks.contains(&i) {
+            let next = &r.samples[i + 1];
+            let x = if axes.x_log {
+                (s.x * next.x).sqrt()
+            } else {
+                0.5 * (s.x + next.x)
+            };
+            let note = format!(
+                "{label}: the branch ends between {x_name} = {:.4e} and {:.4e}",
+                s.x, next.x
+            );
+            loading.push(point(x, None, Some(note.clone())));
+            notes.push(format!(
+                "{note} (a hysteresis window's edge: the contact jumps there, the line is broken)"
+            ));
+        }
+    }
+    let mut out = vec![DataSeries {
+        name: label.to_string(),
+        style: SeriesStyle::Line,
+        points: loading,
+    }];
+    if r.samples.iter().any(|s| s.y_unloading.is_some()) {
+        let mut pts: Vec<DataPoint> = Vec::new();
+        for s in &r.samples {
+            match s.y_unloading {
+                Some(u) => pts.push(point(s.x, Some(u), None)),
+                // a break between two separate windows
+                None if pts.last().is_some_and(|p| p.y.is_some()) => {
+                    pts.push(point(s.x, None, Some("outside the hysteresis window".into())))
+                }
+                None => {}
+            }
+        }
+        while pts.last().is_some_and(|p| p.y.is_none()) {
+            pts.pop();
+        }
+        let inside: Vec<f64> = pts.iter().filter(|p| p.y.is_some()).map(|p| p.x).collect();
+        notes.push(format!(
+            "{label}: two stable branches (a hysteresis window) for {x_name} in [{:.4e}, {:.4e}]; the unloading \
+             branch is drawn dashed",
+            inside[0],
+            inside[inside.len() - 1]
+        ));
+        out.push(DataSeries {
+            name: format!("{label} (unloading)"),
+            style: SeriesStyle::Dashed,
+            points: pts,
+        });
+    }
+    out
 }
 
 /// Pr(σ*) of one curve: the engine's sample on [0 or −σ_a*, `to`] with `points` values.
@@ -227,9 +340,9 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
         })
         .collect::<Result<_>>()?;
     let mut widths: Vec<(u8, f64, f64)> = Vec::new(); // (model, p*, Δ*) for the asymptotes
-    for (c, scene) in spec.curve.iter().zip(&scenes) {
-        let points = if spec.x == XAxis::Stress {
-            match stress_curve(spec, scene) {
+    if spec.x == XAxis::Stress {
+        for (c, scene) in spec.curve.iter().zip(&scenes) {
+            let points = match stress_curve(spec, scene) {
                 Ok((pts, e)) => {
                     data.notes.push(format!(
                         "{}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}, Δ* = {:.4}",
@@ -245,23 +358,41 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
                     Vec::new()
                 }
                 Err(e) => return Err(e),
-            }
-        } else {
-            sweep_curve(spec, scene)?
-        };
-        for p in points.iter().filter(|p| p.y.is_none()) {
-            data.notes.push(format!(
-                "{} at x = {:e}: no value ({})",
-                c.label,
-                p.x,
-                p.note.as_deref().unwrap_or("unavailable")
-            ));
+            };
+            data.series.push(DataSeries {
+                name: c.label.clone(),
+                style: SeriesStyle::Line,
+                points,
+            });
         }
-        data.series.push(DataSeries {
-            name: c.label.clone(),
-            style: SeriesStyle::Line,
-            points,
-        });
+    } else {
+        // every curve on the file's x values, then each refined where it bends on the axes
+        // they share
+        let base: Vec<Vec<Sample>> = spec
+            .curve
+            .iter()
+            .zip(&scenes)
+            .map(|(_, scene)| sweep_curve(spec, scene))
+            .collect::<Result<_>>()?;
+        let axes = refine_axes(spec, &base);
+        let x_name = x_name(spec.x);
+        let refined: Vec<Refined> = scenes
+            .par_iter()
+            .zip(base)
+            .map(|(scene, first)| refine::refine_from(first, &axes, &|x| sample_at(spec, scene, x)))
+            .collect();
+        for (c, refined) in spec.curve.iter().zip(refined) {
+            for s in refined.samples.iter().filter(|s| s.y.is_none()) {
+                data.notes.push(format!(
+                    "{} at x = {:e}: no value ({})",
+                    c.label,
+                    s.x,
+                    s.note.as_deref().unwrap_or("unavailable")
+                ));
+            }
+            let series = branch_series(&c.label, &refined, &axes, x_name, &mut data.notes);
+            data.series.extend(series);
+        }
     }
     for cf in &spec.closed_form {
         let points: Vec<DataPoint> = match cf.kind {
