@@ -6,6 +6,7 @@
 //! holds the result and turns into a [`crate::chart::ChartSpec`].
 
 pub mod compute;
+mod curves;
 pub mod refine;
 pub mod spec;
 pub mod table1;

@@ -7,7 +7,8 @@
 //!   [`pins`] (pinned curves and their names),
 //!   [`protocol`] (requests, replies and cache keys of the worker), [`tour`] (teaching tours,
 //!   TOML files in `tours/`), [`data`] (the plain data of engine results).
-//! - update: [`update`] (a key or a reply → the next state plus effects), [`keys`] (the key
+//! - update: [`update`] (a key or a reply → the next state plus effects), [`turn`] (a knob
+//!   stepped on its grid or typed), [`models`] (the model picked or cycled), [`keys`] (the key
 //!   table, used for dispatch and for the `?` help).
 //! - effects: [`worker`] (the compute thread: generations, cancellation, caches), [`jobs`]
 //!   (the engine jobs: point, sweeps, GFMD), [`effects`] (the files of `e` and `s`),
@@ -54,6 +55,7 @@ pub mod plot;
 pub mod protocol;
 pub mod state;
 pub mod tour;
+pub mod turn;
 pub mod update;
 pub mod view;
 pub mod words;
