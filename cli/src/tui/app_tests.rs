@@ -553,3 +553,22 @@ fn typed_values_stay_on_their_own_grid_until_the_next_typed_value() {
     key(&mut c, KeyCode::Left);
     assert_eq!(c.scene.model().c1, -0.123);
 }
+
+#[test]
+fn j_and_k_scroll_a_cut_caption_and_a_new_step_starts_at_its_top() {
+    let mut a = app();
+    a.start_tour(Tour::resolve("wang-muser").unwrap(), 1);
+    let most = super::super::layout::caption_rows_at_most(&a.tour.as_ref().unwrap().tour.steps[1].caption);
+    for _ in 0..50 {
+        key(&mut a, KeyCode::Char('J'));
+    }
+    assert_eq!(
+        a.caption_scroll,
+        most - 1,
+        "bounded by the caption's rows at the narrowest width"
+    );
+    key(&mut a, KeyCode::Char('K'));
+    assert_eq!(a.caption_scroll, most - 2);
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.caption_scroll, 0);
+}

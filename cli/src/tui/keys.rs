@@ -56,6 +56,10 @@ pub enum Action {
     FrameNext,
     /// Scale view: play the resolution from q_L to q_s, or pause.
     Play,
+    /// Scroll the tour's caption down one line (where it is cut).
+    CaptionDown,
+    /// Scroll the tour's caption up one line.
+    CaptionUp,
     /// Open or close this help.
     Help,
     /// Quit.
@@ -246,6 +250,18 @@ pub const TABLE: &[Binding] = &[
         label: "Space",
         action: Action::Play,
         help: "scale view: play q from q_L to q_s, or pause",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('J'), NONE)],
+        label: "J",
+        action: Action::CaptionDown,
+        help: "tour: scroll a cut caption down",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('K'), NONE)],
+        label: "K",
+        action: Action::CaptionUp,
+        help: "tour: scroll the caption up",
     },
     Binding {
         keys: &[Key(KeyCode::Char('?'), NONE), Key(KeyCode::F(1), NONE)],

@@ -14,7 +14,7 @@
 //!   (the engine jobs: point, sweeps, GFMD), [`effects`] (the files of `e` and `s`),
 //!   [`export`] (CSV + TOML, SVG + PNG).
 //! - drawing: [`charts`], [`chart_model`], [`charts_load`] (the charts as plain data, drawn by
-//!   [`view`] and saved by `s`), [`view`], [`panel`], [`palette`], [`plot`] (the chart
+//!   [`view`] and saved by `s`), [`layout`] (where the panels go), [`view`], [`panel`], [`palette`], [`plot`] (the chart
 //!   workarounds: log axes, NaN, labels, bounds), [`words`] (numbers and errors in words).
 //! - [`app`]: the state under the name the front ends use.
 //!
@@ -47,6 +47,7 @@ pub mod jobs;
 pub mod keys;
 pub mod kinds;
 pub mod knobs;
+pub mod layout;
 pub mod models;
 pub mod palette;
 pub mod panel;

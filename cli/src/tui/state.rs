@@ -82,6 +82,8 @@ pub struct App {
     pub charts: [ChartKind; 3],
     /// First row of the help shown (the help scrolls where the terminal is short).
     pub help_scroll: usize,
+    /// First line of the tour's caption shown (it scrolls where the terminal is short).
+    pub caption_scroll: usize,
     /// The panel the chart selector (`v`) changes.
     pub focus: usize,
     /// Overlay every model on the charts (`M`).
@@ -220,6 +222,7 @@ impl App {
             charts: DEFAULT_CHARTS,
             focus: 0,
             help_scroll: 0,
+            caption_scroll: 0,
             anchors: Anchors::default(),
             all_models: false,
             overlay_points: HashMap::new(),

@@ -279,6 +279,13 @@ impl App {
             Action::FramePrev => self.scrub(-1),
             Action::FrameNext => self.scrub(1),
             Action::Play => self.toggle_play(),
+            Action::CaptionDown => {
+                let most = self.tour.as_ref().map_or(0, |t| {
+                    super::layout::caption_rows_at_most(&t.tour.steps[t.step].caption)
+                });
+                self.caption_scroll = (self.caption_scroll + 1).min(most.saturating_sub(1));
+            }
+            Action::CaptionUp => self.caption_scroll = self.caption_scroll.saturating_sub(1),
             Action::Help => self.overlay = Overlay::Help,
             Action::Quit => self.quit = true,
         }
@@ -381,6 +388,7 @@ impl App {
         self.playing = self.shows_scales();
         self.frame = self.playing.then_some(0);
         self.focus = 0;
+        self.caption_scroll = 0;
         self.edit = None;
         if let Some(k) = st.select {
             let want = knob_param(k);

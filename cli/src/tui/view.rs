@@ -4,19 +4,19 @@
 
 use super::charts::{self, ChartModel, Draw, Role, Series};
 use super::keys;
+use super::layout;
+pub use super::layout::MIN_SIZE;
 pub use super::palette::{Palette, SPINNER, SPINNER_DELAY};
 use super::panel::draw_panel;
 use super::plot;
 use super::state::{App, Overlay};
 pub use super::words::sig;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Block, Chart, Clear, Dataset, GraphType, Paragraph, Wrap};
 use ratatui::Frame;
-/// Smallest usable terminal.
-pub const MIN_SIZE: (u16, u16) = (60, 20);
 
 /// Draws the whole screen.
 pub fn draw(f: &mut Frame, app: &App) {
@@ -35,26 +35,28 @@ pub fn draw(f: &mut Frame, app: &App) {
     } else {
         wrapped_rows(status_line.width(), area.width).clamp(1, STATUS_ROWS)
     };
-    let caption = caption_lines(app);
-    let caption_rows = if caption.is_empty() {
-        0
-    } else {
-        let w = area.width.saturating_sub(2);
-        let rows: u16 = caption.iter().map(|l| wrapped_rows(l.width(), w)).sum();
-        (rows + 2).min(area.height / 3)
+    let caption = caption_text(app);
+    let panel_w = match area.width {
+        120.. => 34,
+        80.. => 28,
+        _ => 24,
     };
-    let [title, body, cap, status] = Layout::vertical([
-        Constraint::Length(1),
-        Constraint::Fill(1),
-        Constraint::Length(caption_rows),
-        Constraint::Length(status_rows),
-    ])
-    .areas(area);
-    draw_title(f, title, app, pal);
-    f.render_widget(Paragraph::new(status_line).wrap(Wrap { trim: false }), status);
-    if caption_rows > 0 {
+    let scr = layout::screen(area, &caption, app.caption_scroll, status_rows, panel_w, app.focus);
+    draw_title(f, scr.title, app, pal);
+    f.render_widget(Paragraph::new(status_line).wrap(Wrap { trim: false }), scr.status);
+    if scr.caption.height > 0 {
         let mut block = Block::bordered();
         if let Some(t) = &app.tour {
+            let keys = if scr.caption_scrolls() {
+                format!(
+                    " J K scroll {}–{} of {} · ←→ steps · Esc leaves ",
+                    scr.caption_top + 1,
+                    scr.caption_top + scr.caption_visible().len(),
+                    scr.caption_lines.len()
+                )
+            } else {
+                " ←→ steps · h l knobs · Esc leaves ".to_string()
+            };
             block = block
                 .title(Line::from(vec![
                     Span::raw(format!(" tour {}/{} · ", t.step + 1, t.tour.steps.len())),
@@ -64,24 +66,20 @@ pub fn draw(f: &mut Frame, app: &App) {
                     ),
                     Span::raw(" "),
                 ]))
-                .title_bottom(
-                    Line::from(Span::styled(" ←→ steps · h l knobs · Esc leaves ", pal.dim())).right_aligned(),
-                );
+                .title_bottom(Line::from(Span::styled(keys, pal.dim())).right_aligned());
         }
-        f.render_widget(Paragraph::new(caption).wrap(Wrap { trim: true }).block(block), cap);
+        let lines: Vec<Line> = scr.caption_visible().iter().map(|l| Line::from(l.clone())).collect();
+        f.render_widget(Paragraph::new(lines).block(block), scr.caption);
     }
-    let panel_w = match area.width {
-        120.. => 34,
-        80.. => 28,
-        _ => 24,
-    };
-    let [panel, charts] = Layout::horizontal([Constraint::Length(panel_w), Constraint::Fill(1)]).areas(body);
-    draw_panel(f, panel, app, pal);
-    let [top, bottom] = Layout::vertical([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(charts);
-    let [left, right] = Layout::horizontal([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(bottom);
-    for (i, r) in [top, left, right].into_iter().enumerate() {
-        let m = charts::build(app, app.charts[i]);
-        render_model(f, r, &m, pal, i == app.focus);
+    draw_panel(f, scr.panel, app, pal);
+    let shown = scr.charts.len();
+    for (r, i) in &scr.charts {
+        let mut m = charts::build(app, app.charts[*i]);
+        if shown == 1 {
+            // one chart at a time on a small terminal: which one, and how to see the others
+            m.title = format!("{}/3 (f next) · {}", i + 1, m.title);
+        }
+        render_model(f, *r, &m, pal, *i == app.focus && shown > 1);
     }
     match app.overlay {
         Overlay::Help => draw_help(f, area, app.help_scroll, pal),
@@ -99,14 +97,12 @@ fn wrapped_rows(width: usize, cols: u16) -> u16 {
     width.div_ceil(cols).max(1) as u16
 }
 
-/// The tour's caption lines (the step's title and the keys are in the box's border).
-fn caption_lines(app: &App) -> Vec<Line<'static>> {
-    let Some(t) = &app.tour else { return Vec::new() };
-    t.tour.steps[t.step]
-        .caption
-        .iter()
-        .map(|c| Line::from(c.clone()))
-        .collect()
+/// The tour's caption (the step's title and the keys are in the box's border).
+fn caption_text(app: &App) -> Vec<String> {
+    app.tour
+        .as_ref()
+        .map(|t| t.tour.steps[t.step].caption.clone())
+        .unwrap_or_default()
 }
 
 fn too_small(f: &mut Frame, area: Rect) {
