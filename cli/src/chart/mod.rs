@@ -17,6 +17,7 @@ mod draw;
 mod font;
 mod text;
 
+pub use font::{has_glyph, png_text, COMPOSED};
 pub use text::render_text;
 
 /// How a series is drawn.
@@ -70,11 +71,26 @@ pub fn write_svg(spec: &ChartSpec, path: &std::path::Path) -> std::io::Result<()
     draw::draw(root, spec, 1.0)
 }
 
-/// Writes `spec` as a PNG file.
+/// Writes `spec` as a PNG file (its text with the composite glyphs of [`png_text`]).
 pub fn write_png(spec: &ChartSpec, path: &std::path::Path) -> std::io::Result<()> {
     font::register();
+    let text = |s: &String| png_text(s).into_owned();
+    let spec = ChartSpec {
+        title: text(&spec.title),
+        x_label: text(&spec.x_label),
+        y_label: text(&spec.y_label),
+        series: spec
+            .series
+            .iter()
+            .map(|s| Series {
+                name: text(&s.name),
+                ..s.clone()
+            })
+            .collect(),
+        ..spec.clone()
+    };
     let root = plotters::prelude::BitMapBackend::new(path, PNG_SIZE);
-    draw::draw(root, spec, PNG_SIZE.0 as f64 / SVG_SIZE.0 as f64)
+    draw::draw(root, &spec, PNG_SIZE.0 as f64 / SVG_SIZE.0 as f64)
 }
 
 /// The points of a series that can be drawn on the given axes: finite, and > 0 on a log axis.
