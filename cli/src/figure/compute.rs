@@ -3,7 +3,8 @@
 
 use super::spec::{ClosedFormKind, FigureSpec, Overrides, XAxis, YAxis};
 use super::{DataPoint, DataSeries, FigureData};
-use crate::chart::SeriesStyle;
+use crate::chart::{Rgb, SeriesStyle, Shape};
+use crate::looks::{look, model_colour, model_slot, Role, REFERENCE_MARKS};
 use asperity::error::{Error, Result};
 use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec};
 use asperity::input::model::Model;
@@ -261,6 +262,8 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
             name: c.label.clone(),
             style: SeriesStyle::Line,
             points,
+            colour: model_colour(model_slot(&scene.model())),
+            shape: Shape::Circle,
         });
     }
     for cf in &spec.closed_form {
@@ -295,10 +298,17 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
                     .collect()
             }
         };
+        let role = if cf.kind == ClosedFormKind::PrLargeStress {
+            Role::Closed2
+        } else {
+            Role::Closed
+        };
         data.series.push(DataSeries {
             name: cf.label.clone(),
             style: SeriesStyle::Dashed,
             points,
+            colour: role_colour(role),
+            shape: Shape::Circle,
         });
     }
     let mut labels: Vec<&str> = Vec::new();
@@ -307,22 +317,30 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
             labels.push(&pp.label);
         }
     }
-    for l in labels {
+    for (k, l) in labels.into_iter().enumerate() {
+        // a value of a model in the model's colour, the others in the text colour
+        let of = spec.paper.iter().filter(|p| p.label == l);
+        let colour = of
+            .clone()
+            .find_map(|p| p.model)
+            .map_or(role_colour(Role::Reference), |m| model_colour(usize::from(m) - 1));
         data.series.push(DataSeries {
             name: l.to_string(),
             style: SeriesStyle::Points,
-            points: spec
-                .paper
-                .iter()
-                .filter(|p| p.label == l)
-                .map(|p| point(p.x, Some(p.y), None))
-                .collect(),
+            points: of.map(|p| point(p.x, Some(p.y), None)).collect(),
+            colour,
+            shape: REFERENCE_MARKS[k % REFERENCE_MARKS.len()].1,
         });
     }
     if let Some(choice) = gfmd {
         gfmd_series(spec, &preset, &scenes, choice, &mut data)?;
     }
     Ok(data)
+}
+
+/// The file colour of a role ([`crate::looks`]).
+fn role_colour(role: Role) -> Rgb {
+    look(role, 0, 0).ink.rgb()
 }
 
 /// One GFMD run of `scene` on the chosen grid.
@@ -390,6 +408,8 @@ fn gfmd_series(
                     data.series.push(DataSeries {
                         name: format!("{name} ({}²)", r.grid),
                         style: SeriesStyle::Points,
+                        colour: role_colour(Role::Gfmd),
+                        shape: look(Role::Gfmd, 0, 0).shape,
                         points: r
                             .stats
                             .pr
@@ -468,12 +488,16 @@ fn gfmd_series(
         },
         style: SeriesStyle::Points,
         points,
+        colour: role_colour(Role::Gfmd),
+        shape: look(Role::Gfmd, 0, 0).shape,
     });
     if spec.y != YAxis::MeanGapRel {
         data.series.push(DataSeries {
             name: format!("theory on the GFMD map ({})", base.model().label()),
             style: SeriesStyle::Points,
             points: on_map,
+            colour: role_colour(Role::GfmdTheory),
+            shape: look(Role::GfmdTheory, 0, 0).shape,
         });
     }
     Ok(())
