@@ -6,5 +6,6 @@ pub mod benchmark;
 pub mod chart;
 pub mod cli;
 pub mod figure;
+pub mod looks;
 pub mod report;
 pub mod tui;

@@ -1,7 +1,8 @@
 //! The chart renderer's files: SVG parses as XML and names every series; PNG is a PNG of the
 //! promised size; empty and gappy series do not break either.
 
-use asperity_cli::chart::{write_png, write_svg, ChartSpec, Series, SeriesStyle, PNG_SIZE};
+use asperity_cli::chart::{write_png, write_svg, ChartSpec, Rgb, Series, SeriesStyle, Shape, PNG_SIZE};
+use asperity_cli::looks::{look, model_colour, Role};
 
 fn spec(x_log: bool, y_log: bool) -> ChartSpec {
     let curve: Vec<(f64, f64)> = (0..50)
@@ -13,7 +14,7 @@ fn spec(x_log: bool, y_log: bool) -> ChartSpec {
     ChartSpec {
         title: "a_r/p* against p*".into(),
         x_label: "p* = p/(E*ḡ)".into(),
-        y_label: "a_r/p*".into(),
+        y_label: "σ̄_c* ū/h_rms γ̃".into(),
         x_log,
         y_log,
         series: vec![
@@ -21,21 +22,29 @@ fn spec(x_log: bool, y_log: bool) -> ChartSpec {
                 name: "model 3".into(),
                 points: curve.clone(),
                 style: SeriesStyle::Line,
+                colour: model_colour(2),
+                shape: Shape::Circle,
             },
             Series {
                 name: "eq. (18)".into(),
                 points: curve.iter().map(|&(x, y)| (x, 0.9 * y)).collect(),
                 style: SeriesStyle::Dashed,
+                colour: look(Role::Closed, 0, 0).ink.rgb(),
+                shape: Shape::Circle,
             },
             Series {
                 name: "GFMD (512²)".into(),
                 points: vec![(1e-2, 1.9), (f64::NAN, 1.0), (1e-1, -1.0), (0.5, 1.5)],
                 style: SeriesStyle::Points,
+                colour: look(Role::Gfmd, 0, 0).ink.rgb(),
+                shape: Shape::Diamond,
             },
             Series {
                 name: "failed series".into(),
                 points: vec![],
-                style: SeriesStyle::Line,
+                style: SeriesStyle::Dotted,
+                colour: Rgb(0, 0, 0),
+                shape: Shape::Circle,
             },
         ],
     }
@@ -67,9 +76,12 @@ fn svg_is_xml_and_names_every_series() {
             "failed series",
             "a_r/p* against p*",
             "p* = p/(E*ḡ)",
+            "σ\u{304}_c* ū/h_rms γ\u{303}",
         ] {
             assert!(texts.iter().any(|t| t == name), "{name} missing from {texts:?}");
         }
+        // the text stays Unicode: the PNG's composite glyphs are the PNG's own
+        assert!(!text.chars().any(|c| ('\u{E000}'..='\u{F8FF}').contains(&c)), "{text}");
     }
 }
 

@@ -250,7 +250,9 @@ fn tour_in_tmux() {
     let s = t.wait("the last step solved", |s| s.contains("Jump into contact") && solved(s));
     assert!(s.contains("system-2") && s.contains("a_r(t·q_r)"), "{s}");
     // s: the visible charts as SVG (and PNG) next to the CSV export, paths in the status line
-    t.wait("every chart of the step", |s| s.contains("t=∞") && s.contains("█ p*"));
+    t.wait("every chart of the step", |s| {
+        s.contains("t=∞") && (s.contains("● p*") || s.contains("●p*"))
+    });
     t.keys(&["s"]);
     let s = t.wait("the saved charts", |s| s.contains("saved"));
     assert!(s.contains("asperity-system-2-1-pr.svg"), "{s}");

@@ -215,7 +215,7 @@ fn gfmd_overlay_with_a_synthetic_run() {
     });
     let screen = render(&a, 80, 24);
     assert!(screen.contains("GFMD a_r 0.04180"), "{screen}");
-    assert!(screen.contains("▀ GFMD"), "{screen}");
+    assert!(screen.contains("× GFMD"), "{screen}");
     insta::assert_snapshot!("gfmd_done_80x24", screen);
 }
 
@@ -359,7 +359,7 @@ fn defects_gap_axis_stale_values_long_messages_hints() {
 }
 
 /// A hysteresis on the a_r(p*) chart — the loading curve jumping into contact, the
-/// unloading curve (dotted, in the key) over the window, the jump-in and pull-off loads as
+/// unloading curve (dashed, in the key) over the window, the jump-in and pull-off loads as
 /// vertical markers named with their p*, and the branches at the current load in the panel;
 /// the same in the SVG export. Synthetic sweep (the engine's is tested in the library).
 #[test]
@@ -423,7 +423,7 @@ fn hysteresis_on_the_area_chart() {
     assert!(m.vlines.iter().any(|v| v.role == Role::PullOff && v.x == pull));
     let s = render(&a, 160, 48);
     for needle in [
-        "• unloading",
+        "◦╌ unloading",
         "jump-in 0.030",
         "pull-off 0.0050",
         "loading   0.008000 ◀",

@@ -2,28 +2,10 @@
 //! backend and the (linear or logarithmic) axis types.
 
 use super::font::FAMILY;
-use super::{axis_range, drawable, tick_label, ChartSpec, SeriesStyle};
+use super::{axis_range, dashes, drawable, tick_label, ChartSpec, SeriesStyle, Shape};
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
-
-/// Series colours (Okabe–Ito, readable by colour-blind readers and in greyscale print),
-/// then repeated.
-const COLOURS: [RGBColor; 8] = [
-    RGBColor(0, 0, 0),
-    RGBColor(0, 114, 178),
-    RGBColor(213, 94, 0),
-    RGBColor(0, 158, 115),
-    RGBColor(204, 121, 167),
-    RGBColor(230, 159, 0),
-    RGBColor(86, 180, 233),
-    RGBColor(120, 120, 120),
-];
-
-/// Colour of series `i`.
-pub(crate) fn colour(i: usize) -> RGBColor {
-    COLOURS[i % COLOURS.len()]
-}
 
 fn io_err<E: std::fmt::Display>(e: E) -> std::io::Error {
     std::io::Error::other(format!("chart: {e}"))
@@ -135,88 +117,75 @@ where
         .map_err(io_err)?;
     let width = px(2.0).max(1) as u32;
     let marker = px(4.0).max(2);
-    let mut point_series = 0usize;
-    for (i, s) in spec.series.iter().enumerate() {
-        let c = colour(i);
-        let style = ShapeStyle::from(&c).stroke_width(width);
+    // one unit of a dash pattern: about a line's width
+    let unit = 2.5 * scale;
+    let half = px(10.0);
+    for s in &spec.series {
+        let c = RGBColor(s.colour.0, s.colour.1, s.colour.2);
+        let line = ShapeStyle::from(&c).stroke_width(width);
         let runs = runs(&s.points, spec.x_log, spec.y_log);
         let name = s.name.clone();
-        match s.style {
-            SeriesStyle::Line | SeriesStyle::Dashed => {
-                let dashed = s.style == SeriesStyle::Dashed;
-                let (dash, gap) = (px(7.0), px(5.0));
-                let mut first = true;
-                // an empty series still gets its legend entry
-                let runs = if runs.is_empty() { vec![Vec::new()] } else { runs };
-                for run in runs {
-                    let anno = if dashed {
-                        chart.draw_series(DashedLineSeries::new(run, dash, gap, style))
-                    } else {
-                        chart.draw_series(LineSeries::new(run, style))
-                    }
-                    .map_err(io_err)?;
-                    if first {
-                        let half = px(10.0);
-                        let anno = anno.label(name.clone());
-                        if dashed {
-                            anno.legend(move |(lx, ly)| {
-                                EmptyElement::at((lx, ly))
-                                    + PathElement::new(vec![(0, 0), (half * 2 / 5, 0)], style)
-                                    + PathElement::new(vec![(half * 3 / 5, 0), (half, 0)], style)
-                                    + PathElement::new(vec![(half * 7 / 5, 0), (half * 2, 0)], style)
-                            });
-                        } else {
-                            anno.legend(move |(lx, ly)| {
-                                EmptyElement::at((lx, ly)) + PathElement::new(vec![(0, 0), (half * 2, 0)], style)
-                            });
-                        }
-                        first = false;
-                    }
-                }
+        if s.style == SeriesStyle::Points {
+            let pts: Vec<(f64, f64)> = runs.into_iter().flatten().collect();
+            let lp = move |(lx, ly): (i32, i32)| (lx + half, ly);
+            let open = ShapeStyle::from(&c).stroke_width(width);
+            let filled = ShapeStyle::from(&c).filled();
+            let (m, t) = (marker, marker + 1);
+            let h = t * 3 / 4;
+            // the shape at every point and in the legend (offsets in pixels)
+            macro_rules! marks {
+                ($shape:expr) => {{
+                    chart
+                        .draw_series(pts.into_iter().map(|p| EmptyElement::at(p) + $shape))
+                        .map_err(io_err)?
+                        .label(name)
+                        .legend(move |p| EmptyElement::at(lp(p)) + $shape);
+                }};
             }
-            SeriesStyle::Points => {
-                let shape = point_series % 4;
-                point_series += 1;
-                let pts: Vec<(f64, f64)> = runs.into_iter().flatten().collect();
-                let open = ShapeStyle::from(&c).stroke_width(width);
-                let filled = ShapeStyle::from(&c).filled();
-                let m = marker;
-                let lp = move |(lx, ly): (i32, i32)| (lx + px(10.0), ly);
-                match shape {
-                    0 => {
-                        chart
-                            .draw_series(pts.into_iter().map(|p| Circle::new(p, m, filled)))
-                            .map_err(io_err)?
-                            .label(name)
-                            .legend(move |c| Circle::new(lp(c), m, filled));
-                    }
-                    1 => {
-                        chart
-                            .draw_series(pts.into_iter().map(|p| TriangleMarker::new(p, m + 1, filled)))
-                            .map_err(io_err)?
-                            .label(name)
-                            .legend(move |c| TriangleMarker::new(lp(c), m + 1, filled));
-                    }
-                    2 => {
-                        chart
-                            .draw_series(
-                                pts.into_iter()
-                                    .map(|p| EmptyElement::at(p) + Rectangle::new([(-m, -m), (m, m)], open)),
-                            )
-                            .map_err(io_err)?
-                            .label(name)
-                            .legend(move |c| EmptyElement::at(lp(c)) + Rectangle::new([(-m, -m), (m, m)], open));
-                    }
-                    _ => {
-                        chart
-                            .draw_series(pts.into_iter().map(|p| Cross::new(p, m + 1, open)))
-                            .map_err(io_err)?
-                            .label(name)
-                            .legend(move |c| Cross::new(lp(c), m + 1, open));
-                    }
-                }
+            match s.shape {
+                Shape::Circle => marks!(Circle::new((0, 0), m, filled)),
+                Shape::Square => marks!(Rectangle::new([(-m, -m), (m, m)], open)),
+                Shape::Diamond => marks!(Polygon::new(vec![(0, -t), (t, 0), (0, t), (-t, 0)], filled)),
+                Shape::Triangle => marks!(Polygon::new(vec![(0, -t), (t, h), (-t, h)], filled)),
+                Shape::TriangleDown => marks!(Polygon::new(vec![(0, t), (t, -h), (-t, -h)], filled)),
+                // both strokes as one path through the centre
+                Shape::Cross => marks!(PathElement::new(vec![(-t, -t), (t, t), (0, 0), (-t, t), (t, -t)], open)),
+                Shape::Plus => marks!(PathElement::new(vec![(-t, 0), (t, 0), (0, 0), (0, -t), (0, t)], open)),
+            }
+            continue;
+        }
+        let pattern: Vec<f64> = s.style.pattern().unwrap_or(&[]).iter().map(|l| l * unit).collect();
+        // the strokes in pixels, so a dash is as long on a log axis as on a linear one
+        for run in &runs {
+            let pixels: Vec<(f64, f64)> = run
+                .iter()
+                .map(|p| {
+                    let b = chart.backend_coord(p);
+                    (f64::from(b.0), f64::from(b.1))
+                })
+                .collect();
+            for stroke in dashes(&pixels, &pattern, (1.0, 1.0)) {
+                root.draw(&PathElement::new(pixel_path(&stroke), line))
+                    .map_err(io_err)?;
             }
         }
+        // the legend's sample: the pattern over 2·half pixels (at most four strokes)
+        let sample = dashes(&[(0.0, 0.0), (f64::from(2 * half), 0.0)], &pattern, (1.0, 1.0));
+        let stroke = |k: usize| pixel_path(sample.get(k).or(sample.last()).map_or(&[][..], |v| v.as_slice()));
+        let strokes = [stroke(0), stroke(1), stroke(2), stroke(3)];
+        // an empty series still gets its legend entry
+        chart
+            .draw_series(Vec::<PathElement<(f64, f64)>>::new())
+            .map_err(io_err)?
+            .label(name)
+            .legend(move |(lx, ly)| {
+                let at = |k: usize| strokes[k].iter().map(|q| (q.0, q.1)).collect::<Vec<_>>();
+                EmptyElement::at((lx, ly))
+                    + PathElement::new(at(0), line)
+                    + PathElement::new(at(1), line)
+                    + PathElement::new(at(2), line)
+                    + PathElement::new(at(3), line)
+            });
     }
     chart
         .configure_series_labels()
@@ -228,4 +197,12 @@ where
         .draw()
         .map_err(io_err)?;
     Ok(())
+}
+
+/// A stroke's points rounded to pixels.
+fn pixel_path(stroke: &[(f64, f64)]) -> Vec<(i32, i32)> {
+    stroke
+        .iter()
+        .map(|q| (q.0.round() as i32, q.1.round() as i32))
+        .collect()
 }

@@ -10,17 +10,19 @@
 //!   is not a terminal).
 //!
 //! Points with a non-finite coordinate (a load that did not converge), and on a log axis
-//! points ≤ 0, are left out; a line is broken where they were. Series are told apart by
-//! colour and, for points, by marker shape; every series gets a legend entry with its name.
+//! points ≤ 0, are left out; a line is broken where they were. Every series carries its
+//! colour, line style and point shape (set by the caller from [`crate::looks`], so a model
+//! has the same colour in every file); every series gets a legend entry with its name.
 
 mod draw;
 mod font;
 mod text;
 
+pub use font::{has_glyph, png_text, COMPOSED};
 pub use text::render_text;
 
 /// How a series is drawn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum SeriesStyle {
     /// A solid line through the points (a model curve).
     Line,
@@ -28,6 +30,78 @@ pub enum SeriesStyle {
     Points,
     /// A dashed line (a closed form, an asymptote, a reference curve).
     Dashed,
+    /// A dotted line (a pinned curve of an earlier scene).
+    Dotted,
+    /// A dash-dotted line (a further curve of a model already drawn).
+    DashDot,
+}
+
+impl SeriesStyle {
+    /// The line styles, solid first.
+    pub const LINES: [SeriesStyle; 4] = [
+        SeriesStyle::Line,
+        SeriesStyle::Dashed,
+        SeriesStyle::Dotted,
+        SeriesStyle::DashDot,
+    ];
+
+    /// The on/off lengths of a broken line, starting with a stroke, in units of about a
+    /// line's width (a terminal cell, 2.5 px of a file); `None` for a solid line or points.
+    pub fn pattern(self) -> Option<&'static [f64]> {
+        match self {
+            SeriesStyle::Line | SeriesStyle::Points => None,
+            SeriesStyle::Dashed => Some(&[3.0, 2.0]),
+            SeriesStyle::Dotted => Some(&[1.0, 2.0]),
+            SeriesStyle::DashDot => Some(&[3.0, 1.5, 1.0, 1.5]),
+        }
+    }
+
+    /// Its name in figure files and text charts.
+    pub fn name(self) -> &'static str {
+        match self {
+            SeriesStyle::Line => "line",
+            SeriesStyle::Points => "points",
+            SeriesStyle::Dashed => "dashed",
+            SeriesStyle::Dotted => "dotted",
+            SeriesStyle::DashDot => "dash-dot",
+        }
+    }
+}
+
+/// A colour (sRGB).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Rgb(pub u8, pub u8, pub u8);
+
+/// The marker of a series of points.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Shape {
+    /// A filled disc.
+    Circle,
+    /// An open square.
+    Square,
+    /// A filled diamond.
+    Diamond,
+    /// A filled triangle, point up.
+    Triangle,
+    /// A filled triangle, point down.
+    TriangleDown,
+    /// A diagonal cross.
+    Cross,
+    /// An upright cross.
+    Plus,
+}
+
+impl Shape {
+    /// Every shape.
+    pub const ALL: [Shape; 7] = [
+        Shape::Circle,
+        Shape::Square,
+        Shape::Diamond,
+        Shape::Triangle,
+        Shape::TriangleDown,
+        Shape::Cross,
+        Shape::Plus,
+    ];
 }
 
 /// One named series.
@@ -37,8 +111,90 @@ pub struct Series {
     pub name: String,
     /// (x, y) in data units; non-finite points are gaps.
     pub points: Vec<(f64, f64)>,
-    /// Line, points or dashed line.
+    /// Line (solid, dashed, dotted, dash-dotted) or points.
     pub style: SeriesStyle,
+    /// Colour (a model has one colour in every file: see [`crate::looks`]).
+    pub colour: Rgb,
+    /// Marker of a [`SeriesStyle::Points`] series.
+    pub shape: Shape,
+}
+
+/// Tells apart the series that share a colour, the colour kept (a model has one colour in
+/// every figure): a line with the colour and style of an earlier one takes the next free line
+/// style (solid, dashed, dotted, dash-dotted), points with the colour and shape of earlier
+/// ones the next free shape.
+pub fn tell_apart(series: &mut [Series]) {
+    for i in 1..series.len() {
+        let (before, rest) = series.split_at_mut(i);
+        let s = &mut rest[0];
+        let colour = s.colour;
+        let clash = |style: SeriesStyle, shape: Shape| {
+            before
+                .iter()
+                .any(|e| e.colour == colour && e.style == style && (style != SeriesStyle::Points || e.shape == shape))
+        };
+        if !clash(s.style, s.shape) {
+            continue;
+        }
+        let free = if s.style == SeriesStyle::Points {
+            Shape::ALL
+                .into_iter()
+                .find(|&shape| !clash(SeriesStyle::Points, shape))
+                .map(|shape| (SeriesStyle::Points, shape))
+        } else {
+            SeriesStyle::LINES
+                .into_iter()
+                .find(|&style| !clash(style, s.shape))
+                .map(|style| (style, s.shape))
+        };
+        if let Some((style, shape)) = free {
+            (s.style, s.shape) = (style, shape);
+        }
+    }
+}
+
+/// Breaks a polyline into the strokes of an on/off `pattern` (lengths measured after scaling
+/// x by `scale.0` and y by `scale.1`, so a pattern in pixels or cells follows the drawing):
+/// the runs of points to draw as solid lines.
+pub fn dashes(run: &[(f64, f64)], pattern: &[f64], scale: (f64, f64)) -> Vec<Vec<(f64, f64)>> {
+    let Some(&first) = run.first() else {
+        return Vec::new();
+    };
+    if pattern.is_empty() || pattern.iter().any(|l| !(l.is_finite() && *l > 0.0)) {
+        return vec![run.to_vec()];
+    }
+    let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut stroke = vec![first];
+    let (mut k, mut left) = (0usize, pattern[0]);
+    for w in run.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let len = ((b.0 - a.0) * scale.0).hypot((b.1 - a.1) * scale.1);
+        if !len.is_finite() {
+            continue;
+        }
+        let mut t = 0.0;
+        while len - t > left {
+            t += left;
+            let f = t / len;
+            let p = (a.0 + f * (b.0 - a.0), a.1 + f * (b.1 - a.1));
+            if k % 2 == 0 {
+                stroke.push(p);
+                out.push(std::mem::take(&mut stroke));
+            } else {
+                stroke = vec![p];
+            }
+            k = (k + 1) % pattern.len();
+            left = pattern[k];
+        }
+        left -= len - t;
+        if k % 2 == 0 {
+            stroke.push(b);
+        }
+    }
+    if k % 2 == 0 && !stroke.is_empty() {
+        out.push(stroke);
+    }
+    out
 }
 
 /// What to draw.
@@ -70,11 +226,26 @@ pub fn write_svg(spec: &ChartSpec, path: &std::path::Path) -> std::io::Result<()
     draw::draw(root, spec, 1.0)
 }
 
-/// Writes `spec` as a PNG file.
+/// Writes `spec` as a PNG file (its text with the composite glyphs of [`png_text`]).
 pub fn write_png(spec: &ChartSpec, path: &std::path::Path) -> std::io::Result<()> {
     font::register();
+    let text = |s: &String| png_text(s).into_owned();
+    let spec = ChartSpec {
+        title: text(&spec.title),
+        x_label: text(&spec.x_label),
+        y_label: text(&spec.y_label),
+        series: spec
+            .series
+            .iter()
+            .map(|s| Series {
+                name: text(&s.name),
+                ..s.clone()
+            })
+            .collect(),
+        ..spec.clone()
+    };
     let root = plotters::prelude::BitMapBackend::new(path, PNG_SIZE);
-    draw::draw(root, spec, PNG_SIZE.0 as f64 / SVG_SIZE.0 as f64)
+    draw::draw(root, &spec, PNG_SIZE.0 as f64 / SVG_SIZE.0 as f64)
 }
 
 /// The points of a series that can be drawn on the given axes: finite, and > 0 on a log axis.
@@ -167,11 +338,32 @@ mod tests {
                 name: "a".into(),
                 points: vec![(0.0, 5.0), (1e-3, f64::NAN), (1e-2, 1.0), (1.0, 3.0)],
                 style: SeriesStyle::Line,
+                colour: Rgb(0, 0, 0),
+                shape: Shape::Circle,
             }],
         };
         let (x0, x1) = axis_range(&spec, true);
         assert!(x0 < 1e-2 && x0 > 5e-3 && x1 > 1.0 && x1 < 1.3, "{x0} {x1}");
         let (y0, y1) = axis_range(&spec, false);
         assert!((y0 - 0.9).abs() < 1e-12 && (y1 - 3.1).abs() < 1e-12, "{y0} {y1}");
+    }
+
+    #[test]
+    fn dashes_follow_the_pattern_along_the_line() {
+        let line = [(0.0, 0.0), (10.0, 0.0), (10.0, 4.0)];
+        let d = dashes(&line, &[3.0, 2.0], (1.0, 1.0));
+        // strokes of 3 every 5 along a path of length 14: [0,3] [5,8] [10,13]
+        assert_eq!(d.len(), 3, "{d:?}");
+        assert_eq!(d[0], vec![(0.0, 0.0), (3.0, 0.0)]);
+        assert_eq!(d[1], vec![(5.0, 0.0), (8.0, 0.0)]);
+        // the third starts at the corner and runs up it
+        assert_eq!(d[2], vec![(10.0, 0.0), (10.0, 3.0)]);
+        // scaled: y counts double, so the vertical leg holds more of the pattern
+        let d = dashes(&line, &[3.0, 2.0], (1.0, 2.0));
+        assert_eq!(d.len(), 4, "{d:?}");
+        // a solid pattern or a single point
+        assert_eq!(dashes(&line, &[], (1.0, 1.0)), vec![line.to_vec()]);
+        assert_eq!(dashes(&line[..1], &[1.0, 1.0], (1.0, 1.0)), vec![vec![(0.0, 0.0)]]);
+        assert!(dashes(&[], &[1.0, 1.0], (1.0, 1.0)).is_empty());
     }
 }

@@ -23,12 +23,7 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
     // legend lines
     let mut legend: Vec<String> = vec![String::new()];
     for (i, s) in spec.series.iter().enumerate() {
-        let kind = match s.style {
-            SeriesStyle::Line => "line",
-            SeriesStyle::Dashed => "dashed",
-            SeriesStyle::Points => "points",
-        };
-        let entry = format!("{} {} ({kind})", GLYPHS[i % GLYPHS.len()], s.name);
+        let entry = format!("{} {} ({})", GLYPHS[i % GLYPHS.len()], s.name, s.style.name());
         let last = legend.last_mut().expect("non-empty");
         if !last.is_empty() && last.chars().count() + 3 + entry.chars().count() > width {
             legend.push(entry);
@@ -87,10 +82,19 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
                     Some(a) => {
                         let steps = ((c.0 - a.0).abs().max((c.1 - a.1).abs()) * 2.0).ceil().max(1.0) as usize;
                         for k in 1..=steps {
-                            // a dashed line leaves every other stretch of two cells empty
+                            // a broken line leaves columns empty: a dashed one every other
+                            // stretch of two, a dotted one two of three, a dash-dotted one
+                            // columns 3 and 5 of six
                             let t = k as f64 / steps as f64;
                             let q = (a.0 + t * (c.0 - a.0), a.1 + t * (c.1 - a.1));
-                            if s.style == SeriesStyle::Dashed && (q.0.round() as i64 / 2) % 2 == 1 {
+                            let col = q.0.round() as i64;
+                            let gap = match s.style {
+                                SeriesStyle::Dashed => (col / 2) % 2 == 1,
+                                SeriesStyle::Dotted => col % 3 != 0,
+                                SeriesStyle::DashDot => matches!(col % 6, 3 | 5),
+                                _ => false,
+                            };
+                            if gap {
                                 continue;
                             }
                             put(&mut grid, q, g);
@@ -209,7 +213,7 @@ fn round_sig(v: f64, digits: i32) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chart::Series;
+    use crate::chart::{Rgb, Series, Shape};
 
     #[test]
     fn ticks_are_round() {
@@ -231,11 +235,15 @@ mod tests {
                     name: "up".into(),
                     points: vec![(0.0, 0.0), (1.0, 1.0)],
                     style: SeriesStyle::Line,
+                    colour: Rgb(0, 0, 0),
+                    shape: Shape::Circle,
                 },
                 Series {
                     name: "dots".into(),
                     points: vec![(0.5, f64::NAN), (1.0, 0.0)],
                     style: SeriesStyle::Points,
+                    colour: Rgb(0, 0, 0),
+                    shape: Shape::Circle,
                 },
             ],
         };

@@ -16,6 +16,7 @@
 use super::gauge_gfmd::{self, GfmdRefArgs};
 use super::{emit, Format, SceneArgs};
 use crate::chart::{self, ChartSpec, Series, SeriesStyle};
+use crate::looks;
 use asperity::error::{Error, Field, Result};
 use asperity::fit::gfmd_reference::GfmdReference;
 use asperity::fit::reference::{self, Observable, Reference};
@@ -323,6 +324,8 @@ pub fn overlay(scene: &Scene, r: &Reference, models: &[(&str, Model)], what: &st
             .map(|o| (o.p, y_of(first, o.p, o.value)))
             .collect(),
         style: SeriesStyle::Points,
+        colour: looks::look(looks::Role::Reference, 0, 0).ink.rgb(),
+        shape: looks::REFERENCE_MARKS[0].1,
     }];
     for (label, m) in models {
         let y = fit::predict(scene, m, &dense)?;
@@ -330,8 +333,12 @@ pub fn overlay(scene: &Scene, r: &Reference, models: &[(&str, Model)], what: &st
             name: (*label).to_string(),
             points: grid.iter().zip(&y).map(|(&p, &v)| (p, y_of(first, p, v))).collect(),
             style: SeriesStyle::Line,
+            colour: looks::model_colour(looks::model_slot(m)),
+            shape: chart::Shape::Circle,
         });
     }
+    // two custom models (the start and the fit) share a colour: the second is dashed
+    chart::tell_apart(&mut series);
     let y_label = match first {
         Observable::Area => "a_r / p*",
         Observable::MeanContactStress => "mean contact stress / (E* g)",

@@ -317,10 +317,15 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
 
 fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::ChartSpec {
     use crate::chart::{ChartSpec, Series, SeriesStyle};
+    use crate::looks::{look, Role};
+    // the explorer's psd chart's looks: the table as reference points, the fit as a closed form
+    let (table, fit) = (look(Role::Reference, 0, 0), look(Role::Closed, 0, 0));
     let mut series = vec![Series {
         name: "C(q), radial average".into(),
         points: a.bins.iter().map(|b| (b.q, b.psd)).collect(),
         style: SeriesStyle::Points,
+        colour: table.ink.rgb(),
+        shape: table.shape,
     }];
     if let (Some(f), Some(first), true) = (&a.fit, a.bins.first(), is_self_affine(a)) {
         // the fitted law through the bins: plateau to q_r, power law to q_s
@@ -336,6 +341,8 @@ fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::ChartSpec {
             name: format!("self-affine fit, H = {:.3}", f.hurst),
             points: vec![(first.q, law(first.q)), (f.q_r, law(f.q_r)), (f.q_s, law(f.q_s))],
             style: SeriesStyle::Dashed,
+            colour: fit.ink.rgb(),
+            shape: fit.shape,
         });
     }
     ChartSpec {

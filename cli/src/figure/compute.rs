@@ -6,7 +6,8 @@ use super::curves::{branch_series, point, refine_axes, sample_at, sweep_curve, x
 use super::refine::{self, Refined, Sample};
 use super::spec::{ClosedFormKind, FigureSpec, Overrides, XAxis, YAxis};
 use super::{DataPoint, DataSeries, FigureData};
-use crate::chart::SeriesStyle;
+use crate::chart::{Rgb, SeriesStyle, Shape};
+use crate::looks::{look, model_colour, model_slot, Role, REFERENCE_MARKS};
 use asperity::error::{Error, Result};
 use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec};
 use asperity::input::model::Model;
@@ -115,6 +116,8 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
                 name: c.label.clone(),
                 style: SeriesStyle::Line,
                 points,
+                colour: model_colour(model_slot(&scene.model())),
+                shape: Shape::Circle,
             });
         }
     } else {
@@ -133,7 +136,7 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
             .zip(base)
             .map(|(scene, first)| refine::refine_from(first, &axes, &|x| sample_at(spec, scene, x)))
             .collect();
-        for (c, refined) in spec.curve.iter().zip(refined) {
+        for ((c, scene), refined) in spec.curve.iter().zip(&scenes).zip(refined) {
             for s in refined.samples.iter().filter(|s| s.y.is_none()) {
                 data.notes.push(format!(
                     "{} at x = {:e}: no value ({})",
@@ -142,7 +145,8 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
                     s.note.as_deref().unwrap_or("unavailable")
                 ));
             }
-            let series = branch_series(&c.label, &refined, &axes, x_name, &mut data.notes);
+            let colour = model_colour(model_slot(&scene.model()));
+            let series = branch_series(&c.label, colour, &refined, &axes, x_name, &mut data.notes);
             data.series.extend(series);
         }
     }
@@ -178,10 +182,17 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
                     .collect()
             }
         };
+        let role = if cf.kind == ClosedFormKind::PrLargeStress {
+            Role::Closed2
+        } else {
+            Role::Closed
+        };
         data.series.push(DataSeries {
             name: cf.label.clone(),
             style: SeriesStyle::Dashed,
             points,
+            colour: role_colour(role),
+            shape: Shape::Circle,
         });
     }
     let mut labels: Vec<&str> = Vec::new();
@@ -190,22 +201,30 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
             labels.push(&pp.label);
         }
     }
-    for l in labels {
+    for (k, l) in labels.into_iter().enumerate() {
+        // a value of a model in the model's colour, the others in the text colour
+        let of = spec.paper.iter().filter(|p| p.label == l);
+        let colour = of
+            .clone()
+            .find_map(|p| p.model)
+            .map_or(role_colour(Role::Reference), |m| model_colour(usize::from(m) - 1));
         data.series.push(DataSeries {
             name: l.to_string(),
             style: SeriesStyle::Points,
-            points: spec
-                .paper
-                .iter()
-                .filter(|p| p.label == l)
-                .map(|p| point(p.x, Some(p.y), None))
-                .collect(),
+            points: of.map(|p| point(p.x, Some(p.y), None)).collect(),
+            colour,
+            shape: REFERENCE_MARKS[k % REFERENCE_MARKS.len()].1,
         });
     }
     if let Some(choice) = gfmd {
         gfmd_series(spec, &preset, &scenes, choice, &mut data)?;
     }
     Ok(data)
+}
+
+/// The file colour of a role ([`crate::looks`]).
+fn role_colour(role: Role) -> Rgb {
+    look(role, 0, 0).ink.rgb()
 }
 
 /// One GFMD run of `scene` on the chosen grid.
@@ -273,6 +292,8 @@ fn gfmd_series(
                     data.series.push(DataSeries {
                         name: format!("{name} ({}²)", r.grid),
                         style: SeriesStyle::Points,
+                        colour: role_colour(Role::Gfmd),
+                        shape: look(Role::Gfmd, 0, 0).shape,
                         points: r
                             .stats
                             .pr
@@ -351,12 +372,16 @@ fn gfmd_series(
         },
         style: SeriesStyle::Points,
         points,
+        colour: role_colour(Role::Gfmd),
+        shape: look(Role::Gfmd, 0, 0).shape,
     });
     if spec.y != YAxis::MeanGapRel {
         data.series.push(DataSeries {
             name: format!("theory on the GFMD map ({})", base.model().label()),
             style: SeriesStyle::Points,
             points: on_map,
+            colour: role_colour(Role::GfmdTheory),
+            shape: look(Role::GfmdTheory, 0, 0).shape,
         });
     }
     Ok(())

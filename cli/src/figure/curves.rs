@@ -5,7 +5,7 @@
 use super::refine::{Axes, Refined, Sample};
 use super::spec::{FigureSpec, XAxis, YAxis};
 use super::{DataPoint, DataSeries};
-use crate::chart::SeriesStyle;
+use crate::chart::{Rgb, SeriesStyle, Shape};
 use asperity::error::Result;
 use asperity::input::scene::Scene;
 use asperity::theory::engine::{self, Options};
@@ -206,6 +206,7 @@ pub(super) fn refine_axes(spec: &FigureSpec, curves: &[Vec<Sample>]) -> Axes {
 /// edges.
 pub(super) fn branch_series(
     label: &str,
+    colour: Rgb,
     r: &Refined,
     axes: &Axes,
     x_name: &str,
@@ -235,6 +236,8 @@ pub(super) fn branch_series(
         name: label.to_string(),
         style: SeriesStyle::Line,
         points: loading,
+        colour,
+        shape: Shape::Circle,
     }];
     if r.samples.iter().any(|s| s.y_unloading.is_some()) {
         let mut pts: Vec<DataPoint> = Vec::new();
@@ -258,10 +261,13 @@ pub(super) fn branch_series(
             inside[0],
             inside[inside.len() - 1]
         ));
+        // the same model's colour, dashed: one model, two branches
         out.push(DataSeries {
             name: format!("{label} (unloading)"),
             style: SeriesStyle::Dashed,
             points: pts,
+            colour,
+            shape: Shape::Circle,
         });
     }
     out

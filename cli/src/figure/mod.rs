@@ -11,7 +11,7 @@ pub mod refine;
 pub mod spec;
 pub mod table1;
 
-use crate::chart::{ChartSpec, Series, SeriesStyle};
+use crate::chart::{tell_apart, ChartSpec, Rgb, Series, SeriesStyle, Shape};
 use serde::Serialize;
 
 /// One point of a series; `y` is None where the solver did not converge (with the reason).
@@ -36,14 +36,16 @@ pub struct DataSeries {
     pub style: SeriesStyle,
     /// The points.
     pub points: Vec<DataPoint>,
+    /// Colour in SVG/PNG (a model's from [`crate::looks`]).
+    #[serde(skip)]
+    pub colour: Rgb,
+    /// Marker of points in SVG/PNG.
+    #[serde(skip)]
+    pub shape: Shape,
 }
 
 fn style_name<S: serde::Serializer>(s: &SeriesStyle, ser: S) -> Result<S::Ok, S::Error> {
-    ser.serialize_str(match s {
-        SeriesStyle::Line => "line",
-        SeriesStyle::Points => "points",
-        SeriesStyle::Dashed => "dashed",
-    })
+    ser.serialize_str(s.name())
 }
 
 /// A computed figure (the JSON of `asperity figure ID --format json`).
@@ -70,23 +72,29 @@ pub struct FigureData {
 }
 
 impl FigureData {
-    /// The chart of this figure.
+    /// The chart of this figure: each series in its colour; a series that would look like
+    /// an earlier one (a second curve of one model) gets the next line style or shape
+    /// ([`crate::chart::tell_apart`]).
     pub fn chart(&self) -> ChartSpec {
+        let mut series: Vec<Series> = self
+            .series
+            .iter()
+            .map(|s| Series {
+                name: s.name.clone(),
+                points: s.points.iter().map(|p| (p.x, p.y.unwrap_or(f64::NAN))).collect(),
+                style: s.style,
+                colour: s.colour,
+                shape: s.shape,
+            })
+            .collect();
+        tell_apart(&mut series);
         ChartSpec {
             title: self.title.clone(),
             x_label: self.x_label.clone(),
             y_label: self.y_label.clone(),
             x_log: self.x_log,
             y_log: self.y_log,
-            series: self
-                .series
-                .iter()
-                .map(|s| Series {
-                    name: s.name.clone(),
-                    points: s.points.iter().map(|p| (p.x, p.y.unwrap_or(f64::NAN))).collect(),
-                    style: s.style,
-                })
-                .collect(),
+            series,
         }
     }
 
@@ -166,6 +174,8 @@ mod tests {
             series: vec![DataSeries {
                 name: "model 4".into(),
                 style: SeriesStyle::Line,
+                colour: crate::looks::model_colour(3),
+                shape: Shape::Circle,
                 points: vec![
                     DataPoint {
                         x: 0.01,

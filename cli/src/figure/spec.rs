@@ -35,6 +35,7 @@
 //! label = "[S] Table 1: GFMD"
 //! x = 0.01
 //! y = 0.4963
+//! model = 1                     # (optional) the model it is of: drawn in that model's colour
 //! ```
 
 use asperity::error::{Error, Result};
@@ -166,6 +167,9 @@ pub struct PaperPoint {
     pub x: f64,
     /// y.
     pub y: f64,
+    /// The model the value is of (drawn in its colour), if any.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model: Option<u8>,
 }
 
 /// A parsed, validated figure file.
@@ -289,6 +293,9 @@ impl FigureSpec {
         check_model("model", self.model)?;
         for (i, c) in self.curve.iter().enumerate() {
             check_model(&format!("curve[{}].model", i + 1), c.model)?;
+        }
+        for (i, p) in self.paper.iter().enumerate() {
+            check_model(&format!("paper[{}].model", i + 1), p.model)?;
         }
         for (i, c) in self.closed_form.iter().enumerate() {
             check_model(&format!("closed_form[{}].model", i + 1), c.model)?;

@@ -4,7 +4,8 @@
 use super::compute::{curve_scene, gfmd_run, GfmdChoice};
 use super::spec::Overrides;
 use super::{DataPoint, DataSeries, FigureData};
-use crate::chart::SeriesStyle;
+use crate::chart::{SeriesStyle, Shape};
+use crate::looks::{look, Role};
 use asperity::error::Result;
 use asperity::input::preset::Preset;
 use asperity::theory::engine::{self, Options};
@@ -191,9 +192,16 @@ impl Table1 {
         ]
         .into_iter()
         .map(|(n, p)| DataSeries {
+            // asperity's values in the theory's colour (model 3's), [S]'s in the text colour
+            colour: if n.contains("[S]") {
+                look(Role::Reference, 0, 0).ink.rgb()
+            } else {
+                look(Role::Theory, 2, 0).ink.rgb()
+            },
             name: n.into(),
             style: SeriesStyle::Points,
             points: p,
+            shape: Shape::Circle,
         })
         .collect();
         FigureData {

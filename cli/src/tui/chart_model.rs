@@ -6,46 +6,16 @@ use super::data::{PointData, SweepData};
 use super::kinds::{overlay_models, slot, slot_name, ChartKind};
 use super::plot::{self, Scale};
 use super::state::App;
+use crate::looks::{look, Look};
 use asperity::input::model::Model;
 
 /// How a series is drawn: the file renderer's style, so the screen and the `s` export agree
 /// by construction.
 pub use crate::chart::SeriesStyle as Draw;
 
-/// What a series is (the view picks colour and marker from it).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Role {
-    /// The theory of the current scene.
-    Theory,
-    /// Model slot 0–3 (models 1–4) or 4 (custom), with `M`.
-    Model(usize),
-    /// The adhesionless comparison.
-    Compare,
-    /// A closed form (eq. (18), the small-stress asymptote, t = ∞).
-    Closed,
-    /// A second closed form (the large-stress asymptote).
-    Closed2,
-    /// The preset's reference points.
-    Reference,
-    /// GFMD.
-    Gfmd,
-    /// The current point.
-    Current,
-    /// A guide line (σ* = 0, current p*).
-    Guide,
-    /// The −σ_a* wall.
-    Wall,
-    /// The unloading branch of a hysteresis (a_r charts).
-    Unloading,
-    /// The jump-in load: above it the loading branch no longer exists.
-    JumpIn,
-    /// The pull-off load: below it the unloading branch no longer exists.
-    PullOff,
-    /// A pinned curve (`P`), the pin's index.
-    Pin(usize),
-    /// A shaded range (the bracket of the mean gap): drawn as a fill of points.
-    Band,
-}
+/// What a series is (the view and the `s` export take its colour and marker from
+/// [`crate::looks`]).
+pub use crate::looks::Role;
 
 /// One series, in data units (NaN marks a gap).
 #[derive(Debug, Clone, PartialEq)]
@@ -101,6 +71,43 @@ pub struct ChartModel {
     /// Points of the y data outside [`ChartModel::yb`] are dropped (log axes spanning many
     /// decades).
     pub clip_y: bool,
+    /// Model slot of the current scene (the theory's colour).
+    pub model: usize,
+}
+
+impl ChartModel {
+    /// The look of series `i`: its role's, the k-th reference source of the chart its k-th
+    /// marker.
+    pub fn series_look(&self, i: usize) -> Look {
+        let role = self.series[i].role;
+        let nth = self.series[..i].iter().filter(|s| s.role == role).count();
+        look(role, self.model, nth)
+    }
+
+    /// The look of a vertical marker.
+    pub fn vline_look(&self, v: &VLine) -> Look {
+        look(v.role, self.model, 0)
+    }
+
+    /// Plane points of series `s` drawn with y bounds `yb`, split at gaps, y outside `yb`
+    /// dropped when clipping, decimated to about `max_points`.
+    pub fn runs(&self, s: &Series, yb: [f64; 2], max_points: usize) -> Vec<Vec<(f64, f64)>> {
+        let pts: Vec<(f64, f64)> = if self.clip_y {
+            s.points
+                .iter()
+                .map(|&(x, y)| match self.ys.forward(y) {
+                    Some(v) if v >= yb[0] && v <= yb[1] => (x, y),
+                    _ => (x, f64::NAN),
+                })
+                .collect()
+        } else {
+            s.points.clone()
+        };
+        plot::segments(&pts, self.xs, self.ys)
+            .into_iter()
+            .map(|r| plot::decimate(&r, max_points))
+            .collect()
+    }
 }
 
 pub fn theory_role(app: &App) -> Role {
@@ -156,6 +163,7 @@ pub fn base(kind: ChartKind, title: String, x: &str, y: &str, xs: Scale, ys: Sca
         empty: None,
         stale: false,
         clip_y: false,
+        model: 2,
     }
 }
 

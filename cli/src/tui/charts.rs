@@ -36,6 +36,7 @@ use asperity::input::scene::Scene;
 /// Builds the chart `kind` from the app's results.
 pub fn build(app: &App, kind: ChartKind) -> ChartModel {
     let mut m = build_own(app, kind);
+    m.model = slot(&app.scene.model());
     draw_pins(&mut m, &app.pins, &app.scene);
     m
 }
@@ -249,7 +250,7 @@ fn draw_pins(m: &mut ChartModel, pins: &[Pin], now: &Scene) {
                 name: pins::label(&p.scene, now),
                 points: pts.clone(),
                 role: Role::Pin(i),
-                draw: Draw::Line,
+                draw: Draw::Dotted,
             });
         }
     }

@@ -56,7 +56,7 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
             m.series.push(Series {
                 name: "theory on the GFMD map".into(),
                 points: g.theory_sweep.iter().map(|&(p, a, _)| (p, y_of(p, a))).collect(),
-                role: Role::Gfmd,
+                role: Role::GfmdTheory,
                 draw: Draw::Dashed,
             });
         }
@@ -204,7 +204,7 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
                 m.series.push(Series {
                     name: "theory on the GFMD map".into(),
                     points: g.theory_sweep.iter().map(|&(p, _, u)| (p, u)).collect(),
-                    role: Role::Gfmd,
+                    role: Role::GfmdTheory,
                     draw: Draw::Dashed,
                 });
             }

@@ -224,7 +224,7 @@ pub fn gfmd_csv(g: &GfmdView) -> String {
 }
 
 /// The chart of the renderer ([`crate::chart`]) for a chart model, as drawn on screen: the
-/// same series and names; the −σ_a* wall becomes a dashed vertical line, the current point a
+/// same series, names and colours ([`crate::looks`]); the −σ_a* wall becomes a dashed vertical line, the current point a
 /// point; guide lines (σ* = 0, the p* line) are left out; on a clipped log axis the points
 /// below the chart's range are gaps, as on screen.
 pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
@@ -243,35 +243,49 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
         }
         (lo, hi)
     };
+    // vertical markers span the data's y range (> 0 on a log axis); the markers of one role
+    // (the two cut-offs of a spectrum) are one series, one legend entry
+    let lo = if m.ys == Scale::Log10 {
+        m.series
+            .iter()
+            .flat_map(|s| s.points.iter())
+            .map(|q| q.1)
+            .filter(|y| y.is_finite() && *y > 0.0)
+            .fold(f64::INFINITY, f64::min)
+    } else {
+        y0.min(0.0)
+    };
+    let mut marked: Vec<(Role, usize)> = Vec::new();
     for v in &m.vlines {
-        if v.role == Role::Wall && y0.is_finite() {
-            series.push(Series {
-                name: v.name.clone(),
-                points: vec![(v.x, y0.min(0.0)), (v.x, y1)],
-                style: SeriesStyle::Dashed,
-            });
+        let marked_role = matches!(v.role, Role::Wall | Role::JumpIn | Role::PullOff);
+        if !(marked_role && lo.is_finite() && y1.is_finite()) {
+            continue;
         }
-        // the jump of a hysteresis: a dashed vertical line over the data's y range (> 0 on a
-        // log axis)
-        if matches!(v.role, Role::JumpIn | Role::PullOff) && y0.is_finite() {
-            let lo = if m.ys == Scale::Log10 {
-                m.series
-                    .iter()
-                    .flat_map(|s| s.points.iter())
-                    .map(|q| q.1)
-                    .filter(|y| y.is_finite() && *y > 0.0)
-                    .fold(f64::INFINITY, f64::min)
-            } else {
-                y0.min(0.0)
-            };
-            series.push(Series {
-                name: v.name.clone(),
-                points: vec![(v.x, lo), (v.x, y1)],
-                style: SeriesStyle::Dashed,
-            });
+        let line = [(v.x, lo), (v.x, y1)];
+        match marked.iter().find(|(r, _)| *r == v.role) {
+            Some(&(_, i)) => {
+                let s: &mut Series = &mut series[i];
+                s.points.push((f64::NAN, f64::NAN));
+                s.points.extend(line);
+                if s.name.is_empty() {
+                    s.name = v.name.clone();
+                }
+            }
+            None => {
+                let look = m.vline_look(v);
+                marked.push((v.role, series.len()));
+                series.push(Series {
+                    name: v.name.clone(),
+                    points: line.to_vec(),
+                    style: SeriesStyle::Dashed,
+                    colour: look.ink.rgb(),
+                    shape: look.shape,
+                });
+            }
         }
     }
-    for s in &m.series {
+    for (i, s) in m.series.iter().enumerate() {
+        let look = m.series_look(i);
         let points = if m.clip_y {
             s.points
                 .iter()
@@ -288,6 +302,8 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
             },
             points,
             style: s.draw,
+            colour: look.ink.rgb(),
+            shape: look.shape,
         });
     }
     ChartSpec {

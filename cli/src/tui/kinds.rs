@@ -1,5 +1,6 @@
 //! The chart selector's kinds and what each needs computed, and the model slots of `M`: plain
-//! data shared by the state, the worker and the charts (a leaf module: it imports none of them).
+//! data shared by the state, the worker and the charts (a leaf module: it imports none of them;
+//! the model slots are [`crate::looks`]'s).
 
 use asperity::input::model::{Model, ModelKind, FUDGE_GAMMA_DEFAULT};
 
@@ -132,14 +133,9 @@ impl ChartKind {
     }
 }
 
-/// Model slot of a model: 0–3 for models 1–4, 4 for custom.
+/// Model slot of a model: 0–3 for models 1–4, 4 for custom, 5 YP08, 6 Xu24.
 pub fn slot(m: &Model) -> usize {
-    match m.kind {
-        ModelKind::Custom => 4,
-        ModelKind::Yp08 => 5,
-        ModelKind::Xu24 => 6,
-        _ => m.number().map_or(4, |n| usize::from(n) - 1),
-    }
+    crate::looks::model_slot(m)
 }
 
 /// Legend name of a model slot.

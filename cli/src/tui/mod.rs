@@ -14,8 +14,9 @@
 //!   (the engine jobs: point, sweeps, GFMD), [`effects`] (the files of `e` and `s`),
 //!   [`export`] (CSV + TOML, SVG + PNG).
 //! - drawing: [`charts`], [`chart_model`], [`charts_load`] (the charts as plain data, drawn by
-//!   [`view`] and saved by `s`), [`layout`] (where the panels go), [`view`], [`panel`], [`palette`], [`plot`] (the chart
-//!   workarounds: log axes, NaN, labels, bounds), [`words`] (numbers and errors in words).
+//!   [`view`] and saved by `s`), [`layout`] (where the panels go), [`view`], [`legend`] (a chart's
+//!   key), [`panel`], [`palette`] (the terminal styles of [`crate::looks`]' table), [`plot`] (the
+//!   chart workarounds: log axes, NaN, labels, bounds), [`words`] (numbers and errors in words).
 //! - [`app`]: the state under the name the front ends use.
 //!
 //! Only [`worker`], [`jobs`] and [`data`] call the engine (`cli/tests/architecture.rs`).
@@ -48,6 +49,7 @@ pub mod keys;
 pub mod kinds;
 pub mod knobs;
 pub mod layout;
+pub mod legend;
 pub mod models;
 pub mod palette;
 pub mod panel;

@@ -1,8 +1,10 @@
-//! The explorer's colours (none under `NO_COLOR`): one style per role of a series.
+//! The explorer's styles: the colours of [`crate::looks`]' table (none under `NO_COLOR`) and
+//! the few the text uses.
 
+use crate::looks::{Ink, Look};
 use ratatui::style::{Color, Modifier, Style};
 
-/// Colours (Okabe–Ito, colour-blind safe) or plain styles under `NO_COLOR`.
+/// Colours, or plain styles under `NO_COLOR`.
 #[derive(Debug, Clone, Copy)]
 pub struct Palette {
     pub color: bool,
@@ -16,54 +18,26 @@ impl Palette {
             Style::default()
         }
     }
-    /// The theory curve (blue).
-    pub fn theory(&self) -> Style {
-        self.fg(0, 114, 178)
+    /// The style of a series' look: its colour (the text colour for [`Ink::Text`]), bold
+    /// where the look says so.
+    pub fn look(&self, look: Look) -> Style {
+        let s = match look.ink {
+            Ink::Rgb(c) => self.fg(c.0, c.1, c.2),
+            Ink::Text => Style::default(),
+        };
+        if look.bold {
+            s.add_modifier(Modifier::BOLD)
+        } else {
+            s
+        }
     }
-    /// Reference curves (orange).
-    pub fn reference(&self) -> Style {
-        self.fg(230, 159, 0)
-    }
-    /// The current point (vermillion).
-    pub fn current(&self) -> Style {
-        self.fg(213, 94, 0)
-    }
-    /// The adhesionless comparison (bluish green).
-    pub fn compare(&self) -> Style {
-        self.fg(0, 158, 115)
-    }
-    /// The −σ_a* wall (reddish purple).
-    pub fn wall(&self) -> Style {
-        self.fg(204, 121, 167)
-    }
-    /// Guide lines (sky blue).
-    pub fn guide(&self) -> Style {
+    /// The spinner (sky blue).
+    pub fn busy(&self) -> Style {
         self.fg(86, 180, 233)
-    }
-    /// GFMD results (yellow; also told apart by the ▀ marker).
-    pub fn gfmd(&self) -> Style {
-        self.fg(240, 228, 66)
-    }
-    /// Pin `i` (greys and earth tones, apart from the roles' Okabe–Ito colours).
-    pub fn pin(&self, i: usize) -> Style {
-        const PINS: [(u8, u8, u8); 6] = [
-            (150, 150, 150),
-            (140, 86, 75),
-            (127, 60, 141),
-            (17, 119, 51),
-            (68, 68, 68),
-            (170, 170, 0),
-        ];
-        let (r, g, b) = PINS[i % PINS.len()];
-        self.fg(r, g, b)
     }
     /// Errors.
     pub fn error(&self) -> Style {
         self.fg(213, 94, 0).add_modifier(Modifier::BOLD)
-    }
-    /// Plain text (the reference points).
-    pub fn text(&self) -> Style {
-        Style::default()
     }
     /// Dim text.
     pub fn dim(&self) -> Style {

@@ -2,15 +2,18 @@
 //! ū(p*)) and a status bar; the help and preset overlays; a "terminal too small" screen.
 //! Pure function of the [`App`]; every chart goes through [`super::plot`].
 
-use super::charts::{self, ChartModel, Draw, Role, Series};
+use super::charts::{self, ChartModel, Draw};
 use super::keys;
 use super::layout;
 pub use super::layout::MIN_SIZE;
+use super::legend;
 pub use super::palette::{Palette, SPINNER, SPINNER_DELAY};
 use super::panel::draw_panel;
 use super::plot;
 use super::state::{App, Overlay};
 pub use super::words::sig;
+use crate::chart::dashes;
+use crate::looks::Glyph;
 use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
 use ratatui::symbols::Marker;
@@ -128,7 +131,7 @@ fn draw_title(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     if app.show_timing && app.busy_since.is_some_and(|t| t.elapsed() >= SPINNER_DELAY) {
         spans.push(Span::styled(
             format!("{} computing", SPINNER[app.spinner % SPINNER.len()]),
-            pal.guide(),
+            pal.busy(),
         ));
     }
     f.render_widget(Paragraph::new(Line::from(spans)), area);
@@ -166,102 +169,17 @@ fn status_line(app: &App, pal: Palette) -> Line<'static> {
     }
 }
 
-/// Colour of model slot `i` (Okabe–Ito: orange, bluish green, blue, vermillion, reddish
-/// purple for models 1–4 and custom).
-fn model_style(pal: Palette, i: usize) -> Style {
-    match i {
-        0 => pal.reference(),
-        1 => pal.compare(),
-        2 => pal.theory(),
-        3 => pal.current(),
-        5 => pal.pin(1),
-        6 => pal.pin(2),
-        _ => pal.wall(),
+/// ratatui's marker of a glyph.
+fn marker(g: Glyph) -> Marker {
+    match g {
+        Glyph::Braille => Marker::Braille,
+        Glyph::Dot => Marker::Dot,
+        Glyph::Bar => Marker::Bar,
+        Glyph::Block => Marker::Block,
+        Glyph::HalfBlock => Marker::HalfBlock,
+        Glyph::Quadrant => Marker::Quadrant,
+        Glyph::Char(c) => Marker::Custom(c),
     }
-}
-
-/// Marker of model slot `i`: told apart without colour too (YP08 and Xu24, slots 5 and 6,
-/// reuse the dot and the bar in their own colours and are named in the legend).
-const MODEL_MARKERS: [Marker; 7] = [
-    Marker::Dot,
-    Marker::Bar,
-    Marker::Braille,
-    Marker::Block,
-    Marker::HalfBlock,
-    Marker::Dot,
-    Marker::Bar,
-];
-
-/// Markers of the pins (with the pin colours, told apart without colour by the name).
-const PIN_MARKERS: [Marker; 2] = [Marker::Braille, Marker::Dot];
-
-/// The legend symbol of a marker.
-fn marker_symbol(m: Marker) -> &'static str {
-    match m {
-        Marker::Dot => "•",
-        Marker::Bar => "▄",
-        Marker::Block => "█",
-        Marker::HalfBlock => "▀",
-        _ => "⣿",
-    }
-}
-
-/// Style, marker and graph type of a series role.
-fn look(pal: Palette, role: Role, draw: Draw) -> (Style, Marker, GraphType) {
-    let graph = if draw == Draw::Points {
-        GraphType::Scatter
-    } else {
-        GraphType::Line
-    };
-    match role {
-        Role::Theory => (pal.theory(), Marker::Braille, graph),
-        Role::Model(i) => (
-            model_style(pal, i),
-            MODEL_MARKERS[i.min(MODEL_MARKERS.len() - 1)],
-            graph,
-        ),
-        Role::Compare => (pal.compare(), Marker::Dot, graph),
-        Role::Closed => (pal.reference(), Marker::Dot, graph),
-        Role::Closed2 => (pal.guide(), Marker::Dot, graph),
-        Role::Reference => (
-            pal.text().add_modifier(Modifier::BOLD),
-            Marker::Block,
-            GraphType::Scatter,
-        ),
-        Role::Gfmd => (pal.gfmd(), Marker::HalfBlock, GraphType::Scatter),
-        Role::Current => (pal.current(), Marker::Block, GraphType::Scatter),
-        Role::Guide => (pal.guide(), Marker::Braille, GraphType::Line),
-        Role::Band => (pal.guide(), Marker::Braille, GraphType::Scatter),
-        Role::Wall => (pal.wall(), Marker::Bar, GraphType::Line),
-        Role::Unloading => (pal.wall(), Marker::Dot, GraphType::Line),
-        Role::JumpIn => (pal.current(), Marker::Bar, GraphType::Line),
-        Role::PullOff => (pal.wall(), Marker::Bar, GraphType::Line),
-        Role::Pin(i) => (pal.pin(i), PIN_MARKERS[i % PIN_MARKERS.len()], GraphType::Line),
-    }
-}
-
-/// A key entry for a chart title.
-fn legend(sym: &str, name: &str, style: Style) -> Vec<Span<'static>> {
-    vec![Span::styled(sym.to_string(), style), Span::raw(format!(" {name} "))]
-}
-
-/// Plane points of a series, split at gaps, y outside `yb` dropped when clipping, decimated.
-fn runs_of(m: &ChartModel, s: &Series, yb: [f64; 2], max_points: usize) -> Vec<Vec<(f64, f64)>> {
-    let pts: Vec<(f64, f64)> = if m.clip_y {
-        s.points
-            .iter()
-            .map(|&(x, y)| match m.ys.forward(y) {
-                Some(v) if v >= yb[0] && v <= yb[1] => (x, y),
-                _ => (x, f64::NAN),
-            })
-            .collect()
-    } else {
-        s.points.clone()
-    };
-    plot::segments(&pts, m.xs, m.ys)
-        .into_iter()
-        .map(|r| plot::decimate(&r, max_points))
-        .collect()
 }
 
 /// One drawable run: plane points, style, marker, graph type.
@@ -296,38 +214,54 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
     let (xb, xl) = plot::ticks(m.xb, m.xs, three_x);
     let (yb, yl) = plot::ticks(m.yb, m.ys, three_y);
     let max_points = 4 * area.width as usize;
+    // a broken line's pattern is in cells: plane units per cell of the plot (about)
+    let label_w = yl.iter().map(|l| l.chars().count()).max().unwrap_or(1) as f64 + 1.0;
+    let cols = (f64::from(area.width) - 2.0 - label_w).max(4.0);
+    let rows = (f64::from(area.height) - 4.0).max(2.0);
+    let cell = (cols / (xb[1] - xb[0]), rows / (yb[1] - yb[0]));
     let mut drawn: Vec<Drawn> = Vec::new();
-    let mut key: Vec<Span<'static>> = Vec::new();
-    // the jump markers of a hysteresis are named after the curves (a narrow panel cuts the key)
-    let mut key_last: Vec<Span<'static>> = Vec::new();
     for v in &m.vlines {
-        let (style, marker, graph) = look(pal, v.role, Draw::Line);
+        let lk = m.vline_look(v);
         if let Some(x) = m.xs.forward(v.x) {
-            drawn.push((plot::vertical(x, yb), style, marker, graph));
-            if !v.name.is_empty() {
-                let entry = legend(marker_symbol(marker), &v.name, style);
-                if matches!(v.role, Role::JumpIn | Role::PullOff) {
-                    key_last.extend(entry);
-                } else {
-                    key.extend(entry);
-                }
+            drawn.push((plot::vertical(x, yb), pal.look(lk), marker(lk.glyph), GraphType::Line));
+        }
+    }
+    for (i, s) in m.series.iter().enumerate() {
+        let lk = m.series_look(i);
+        let (style, mk) = (pal.look(lk), marker(lk.glyph));
+        for r in m.runs(s, yb, max_points) {
+            if s.draw == Draw::Points {
+                drawn.push((r, style, mk, GraphType::Scatter));
+            } else if let Some(p) = s.draw.pattern() {
+                // a broken line as its strokes, each a line of its own
+                drawn.extend(dashes(&r, p, cell).into_iter().map(|d| (d, style, mk, GraphType::Line)));
+            } else {
+                drawn.push((r, style, mk, GraphType::Line));
             }
         }
     }
-    for s in &m.series {
-        let (style, marker, graph) = look(pal, s.role, s.draw);
-        let runs = runs_of(m, s, yb, max_points);
-        if runs.is_empty() {
-            continue;
+    // the key: one line in the bottom border, the rest (a long key) on the chart's top rows,
+    // leaving the plot at least three
+    let inner = block.inner(area);
+    let max_rows = 1 + usize::from(inner.height.saturating_sub(3));
+    let key = legend::lines(
+        &legend::entries(m, yb),
+        usize::from(area.width.saturating_sub(2)),
+        max_rows,
+        pal,
+    );
+    let mut plot_area = area;
+    if let Some((first, more)) = key.split_first() {
+        block = block.title_bottom(first.clone());
+        if !more.is_empty() {
+            let n = more.len() as u16;
+            f.render_widget(block.clone(), area);
+            f.render_widget(
+                Paragraph::new(more.to_vec()),
+                Rect::new(inner.x, inner.y, inner.width, n),
+            );
+            plot_area = Rect::new(inner.x, inner.y + n, inner.width, inner.height - n);
         }
-        for r in runs {
-            drawn.push((r, style, marker, graph));
-        }
-        key.extend(legend(marker_symbol(marker), &s.name, style));
-    }
-    key.extend(key_last);
-    if !key.is_empty() {
-        block = block.title_bottom(Line::from(key));
     }
     let datasets: Vec<Dataset> = drawn
         .iter()
@@ -339,8 +273,7 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
                 .graph_type(*graph)
         })
         .collect();
-    let chart = Chart::new(datasets)
-        .block(block)
+    let mut chart = Chart::new(datasets)
         .x_axis(
             Axis::default()
                 .title(Span::styled(m.x_label.clone(), pal.dim()))
@@ -354,7 +287,10 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
                 .labels(yl),
         )
         .legend_position(None);
-    f.render_widget(chart, area);
+    if plot_area == area {
+        chart = chart.block(block);
+    }
+    f.render_widget(chart, plot_area);
 }
 
 fn popup(area: Rect, w: u16, h: u16) -> Rect {
