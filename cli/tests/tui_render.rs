@@ -180,13 +180,26 @@ fn adhesive_view_with_a_synthetic_point() {
 fn gfmd_overlay_with_a_synthetic_run() {
     use asperity_cli::tui::data::GfmdView;
     use asperity_cli::tui::worker::Reply;
+    use asperity_cli::tui::{jobs, progress};
     let mut a = app("system-1");
     key(&mut a, KeyCode::Char('g'));
     let (id, _, _) = a.take_gfmd_request().expect("g starts a run");
+    let plan = progress::plan(
+        a.scene.pressure(),
+        &jobs::gfmd_sweep_spec(a.scene.pressure()).pressures(),
+    );
     a.on_reply(Reply::GfmdProgress {
         id,
-        iteration: 250,
-        residual: 3e-4,
+        progress: progress::GfmdProgress {
+            phase: plan[0],
+            index: 0,
+            phases: plan.len(),
+            grid: 512,
+            iteration: 250,
+            residual: 3e-4,
+            elapsed_s: 1.0,
+            eta_s: None,
+        },
     });
     insta::assert_snapshot!("gfmd_running_80x24", render(&a, 80, 24));
     // a histogram shaped like the theory, a little wider
@@ -211,7 +224,9 @@ fn gfmd_overlay_with_a_synthetic_run() {
             sweep: vec![(0.0033, 0.015, 2.0), (0.03, 0.11, 0.9)],
             theory_sweep: vec![(0.0033, 0.011, 2.1), (0.01, 0.03, 1.5), (0.03, 0.09, 0.95)],
             invariants: vec![("GFMD γ̃".into(), "0.024 (full 0.024)".into())],
+            sweep_error: None,
         }),
+        elapsed_s: 49.8,
     });
     let screen = render(&a, 80, 24);
     assert!(screen.contains("GFMD a_r 0.04180"), "{screen}");

@@ -284,7 +284,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
     // the mean gap (physics.md §5.1): without adhesion the energy route on this grid's own
     // table; with adhesion the load each branch's contact carries on the adhesionless table of the scene
     let (gaps, gap_note) = if scene.gamma > 0.0 {
-        match gap::DryGap::new(scene, spec.from, opts) {
+        match gap::DryGap::new_cancellable(scene, spec.from, opts, cancel) {
             Ok(dry) => {
                 let gaps = (0..n)
                     .map(|i| match &evs[i] {

@@ -218,56 +218,96 @@ pub const GFMD_SWEEP_POINTS: usize = 5;
 /// Bins of the GFMD Pr(σ*) histogram drawn in the explorer.
 pub const GFMD_CHART_BINS: usize = 80;
 
-/// Runs GFMD on its own thread (the theory worker stays responsive), reporting progress at
-/// most every 100 ms and the result at the end; `cancel` stops it between FIRE steps.
+/// Least time between two progress reports of the GFMD job within a phase (a new phase is
+/// reported at once).
+pub const GFMD_REPORT_EVERY: std::time::Duration = std::time::Duration::from_millis(100);
+
+/// The loads of the GFMD sweep at p*: [`GFMD_SWEEP_POINTS`] log-spaced from p*/3 to 3p*
+/// (within the allowed loads).
+pub fn gfmd_sweep_spec(p: f64) -> SweepSpec {
+    SweepSpec {
+        from: (p / 3.0).max(1e-6),
+        to: (3.0 * p).min(1.0).max(p / 3.0 * 1.01),
+        points: GFMD_SWEEP_POINTS,
+    }
+}
+
+/// The GFMD job of `g` ([`super::progress::plan`]): the relaxation at p* from first touch and
+/// the theory on the map's spectrum ([`asperity::gfmd::run`]), then the same map over the
+/// loads of [`gfmd_sweep_spec`], each warm-started from the one below, and the theory's
+/// sweep on the map ([`asperity::gfmd::sweep::run_sweep`]). `report` gets the progress: at
+/// once when a phase begins, then at most every [`GFMD_REPORT_EVERY`]. `cancel` ends it with
+/// [`Error::Cancelled`] within one solver step or one march of the theory's adhesive solver.
+/// A sweep that fails otherwise leaves the run at p* with the reason
+/// ([`GfmdView::sweep_error`]).
+pub fn gfmd_job(
+    setup: &asperity::gfmd::GfmdSetup,
+    cancel: &AtomicBool,
+    report: &mut dyn FnMut(super::progress::GfmdProgress),
+) -> Result<GfmdView> {
+    use asperity::gfmd::{Progress, Stage};
+    // a chart-sized histogram: ~10⁴ contact nodes on 512² give ~100 per bin
+    let opts = asperity::gfmd::GfmdOptions {
+        pr_bins: GFMD_CHART_BINS,
+        ..asperity::gfmd::GfmdOptions::default()
+    };
+    let spec = gfmd_sweep_spec(setup.scene.pressure());
+    let plan = super::progress::plan(setup.scene.pressure(), &spec.pressures());
+    let mut clock = super::progress::Timeline::new(plan, setup.grid.n());
+    let mut last: Option<std::time::Instant> = None;
+    let mut on = |index: usize, p: &Progress| {
+        let new_phase = clock.enter(index);
+        if new_phase || last.is_none_or(|t| t.elapsed() >= GFMD_REPORT_EVERY) {
+            last = Some(std::time::Instant::now());
+            report(clock.report(p.iteration, p.residual));
+        }
+    };
+    on(
+        0,
+        &Progress {
+            stage: Stage::Relax,
+            iteration: 0,
+            residual: f64::NAN,
+            contact_fraction: 0.0,
+        },
+    );
+    let r = asperity::gfmd::run(
+        setup,
+        &opts,
+        &mut |p| on(if p.stage == Stage::Theory { 1 } else { 0 }, &p),
+        cancel,
+    )?;
+    let view = GfmdView::from_result(&r);
+    // the theory's sweep is reported with the index one past the last load
+    match asperity::gfmd::sweep::run_sweep(setup, &spec, &opts, &mut |k, p| on(2 + k, &p), cancel) {
+        Ok(sw) => Ok(view.with_sweep(&sw)),
+        Err(Error::Cancelled) => Err(Error::Cancelled),
+        Err(e) => Ok(GfmdView {
+            sweep_error: Some(e.to_string()),
+            ..view
+        }),
+    }
+}
+
+/// Runs [`gfmd_job`] on its own thread (the theory worker stays responsive), sending the
+/// progress and, at the end, the result and the job's wall time.
 pub fn spawn_gfmd(
     id: u64,
     setup: asperity::gfmd::GfmdSetup,
     cancel: Arc<AtomicBool>,
     send: impl Fn(Reply) + Send + 'static,
-) -> std::io::Result<()> {
-    std::thread::Builder::new()
-        .name("asperity-gfmd".into())
-        .spawn(move || {
-            let mut last = std::time::Instant::now();
-            // a chart-sized histogram: ~10⁴ contact nodes on 512² give ~100 per bin
-            let opts = asperity::gfmd::GfmdOptions {
-                pr_bins: GFMD_CHART_BINS,
-                ..asperity::gfmd::GfmdOptions::default()
-            };
-            let result = asperity::gfmd::run(
-                &setup,
-                &opts,
-                &mut |p: asperity::gfmd::Progress| {
-                    if last.elapsed() >= std::time::Duration::from_millis(100) {
-                        last = std::time::Instant::now();
-                        send(Reply::GfmdProgress {
-                            id,
-                            iteration: p.iteration,
-                            residual: p.residual,
-                        });
-                    }
-                },
-                &cancel,
-            );
-            // then the same map over a decade of loads around p* (warm-started), with the
-            // theory on the map's spectrum, for the a_r and ū charts
-            let result = result.map(|r| {
-                let view = GfmdView::from_result(&r);
-                let p = setup.scene.pressure();
-                let spec = asperity::theory::sweep::SweepSpec {
-                    from: (p / 3.0).max(1e-6),
-                    to: (3.0 * p).min(1.0).max(p / 3.0 * 1.01),
-                    points: GFMD_SWEEP_POINTS,
-                };
-                match asperity::gfmd::sweep::run_sweep(&setup, &spec, &opts, &mut |_, _| {}, &cancel) {
-                    Ok(sw) => view.with_sweep(&sw),
-                    Err(_) => view,
-                }
-            });
-            send(Reply::GfmdDone { id, result });
-        })?;
-    Ok(())
+) -> std::io::Result<std::thread::JoinHandle<()>> {
+    std::thread::Builder::new().name("asperity-gfmd".into()).spawn(move || {
+        let t0 = std::time::Instant::now();
+        let result = gfmd_job(&setup, &cancel, &mut |progress| {
+            send(Reply::GfmdProgress { id, progress })
+        });
+        send(Reply::GfmdDone {
+            id,
+            result,
+            elapsed_s: t0.elapsed().as_secs_f64(),
+        });
+    })
 }
 
 /// The GFMD setup of `g`: the scene on the preset's reduced grid (a 512² default).
@@ -289,3 +329,7 @@ pub fn gfmd_setup(preset: &Preset, scene: &Scene) -> asperity::gfmd::GfmdSetup {
         rescale: true,
     }
 }
+
+#[cfg(test)]
+#[path = "jobs_tests.rs"]
+mod tests;

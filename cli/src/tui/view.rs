@@ -28,8 +28,11 @@ pub fn draw(f: &mut Frame, app: &App) {
     }
     let status_line = status_line(app, pal);
     // messages wrap onto up to STATUS_ROWS rows; the key hint is cut instead
-    let is_hint =
-        app.edit.is_none() && app.message.is_none() && app.compute_error().is_none() && app.compute_warning().is_none();
+    let is_hint = app.edit.is_none()
+        && app.message.is_none()
+        && app.compute_error().is_none()
+        && app.compute_warning().is_none()
+        && app.gfmd_status().is_none();
     let status_rows = if is_hint {
         1
     } else {
@@ -156,6 +159,8 @@ fn status_line(app: &App, pal: Palette) -> Line<'static> {
         Line::from(Span::styled(format!(" {e}"), pal.error()))
     } else if let Some(w) = app.compute_warning() {
         Line::from(Span::raw(format!(" {w}")))
+    } else if let Some(g) = app.gfmd_status() {
+        Line::from(Span::raw(format!(" {g}")))
     } else if app.tour.is_some() {
         Line::from(Span::styled(
             " ←→ step  h l change  ↑↓ pick  v chart  f focus  M models  s save  Esc leaves tour",
