@@ -197,6 +197,16 @@ pub struct ThicknessData {
     pub a_r_inf: f64,
     /// a_r(t) without adhesion (the reference curve of Fig. 7), when γ_s > 0.
     pub adhesionless: Option<Vec<f64>>,
+    /// a_r of the unloading branch where p* lies inside a hysteresis window at that t (NaN
+    /// elsewhere; empty: no window). `a_r` is then the loading branch's, as on the a_r(p*)
+    /// chart.
+    pub a_r_unloading: Vec<f64>,
+    /// t·q_r of the windows' edges where the loading branch (small contact) ends: thinner,
+    /// only the large contact is left (a jump into contact).
+    pub jump_in: Vec<f64>,
+    /// t·q_r of the windows' edges where the unloading branch (large contact) ends: thicker,
+    /// only the small contact is left (pull-off).
+    pub pull_off: Vec<f64>,
 }
 
 /// One frame of the scale view: Pr(σ*, q) at one resolution of the march.
@@ -294,6 +304,8 @@ pub struct SweepData {
     /// The quick first sweep of an adhesive scene (fewer loads, see
     /// `worker::PREVIEW_POINTS`), drawn while the full one runs.
     pub preview: bool,
+    /// Why loads with a_r have no ū/h_rms (the mean gap failed on its own), if so.
+    pub gap_note: Option<String>,
 }
 
 impl SweepData {
@@ -332,6 +344,7 @@ impl SweepData {
             jump_in: s.jump_in_pressure,
             pull_off: s.pull_off_pressure,
             preview: false,
+            gap_note: s.gap_note.clone(),
         }
     }
 

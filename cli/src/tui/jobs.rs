@@ -116,66 +116,158 @@ pub fn preview_sweep(scene: &Scene, range: (f64, f64), cancel: &AtomicBool) -> R
 
 /// a_r at [`THICKNESS_POINTS`] log-spaced t·q_r in [`THICKNESS_RANGE`] and at t = ∞ (chart
 /// accuracy, each solve warm-started from the neighbouring thickness); a thickness where the
-/// solver fails is a gap (NaN), not an error. With adhesion also the adhesionless curve.
+/// solver fails is a gap (NaN), not an error. With adhesion also the adhesionless curve, and
+/// the hysteresis windows in t·q_r at this p*: every branch is found at each thickness (a_r of
+/// the loading branch, and of the unloading one where two are stable), a jump between two
+/// neighbours (a_r changing by more than [`JUMP_FACTOR`]) is searched for a thickness inside a
+/// window ([`window_between`], added to the curve), and each window's edges are found by
+/// bisection ([`asperity::theory::hysteresis::knob_edges`]).
 pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessData> {
-    let t = data::log_grid(THICKNESS_RANGE.0, THICKNESS_RANGE.1, THICKNESS_POINTS);
-    let opts = Options {
+    use asperity::theory::hysteresis::{knob_edges, EdgeKind};
+    use asperity::theory::knob::{Knob, KnobPoint};
+    let grid = data::log_grid(THICKNESS_RANGE.0, THICKNESS_RANGE.1, THICKNESS_POINTS);
+    let gamma = scene.surface_energy_j_m2();
+    let mut opts = Options {
         sigma_points: 2,
         ..Options::chart()
     };
+    // every branch at each thickness: the windows' two stable ones
+    opts.adhesion.explore_branches = gamma > 0.0;
     let at = |th: f64, gamma: f64, warm: Option<&engine::Evaluation>| {
         let mut s = scene.clone();
         s.set_thickness_qr(th)?;
         s.set_surface_energy_j_m2(gamma)?;
         engine::evaluate_warm(&s, &opts, warm, Some(cancel))
     };
-    let mut a_r = Vec::with_capacity(t.len());
+    // a solve that fails leaves a gap; cancelling ends the sweep
+    let keep = |r: Result<engine::Evaluation>| match r {
+        Err(Error::Cancelled) => Err(Error::Cancelled),
+        r => Ok(r),
+    };
     // from thick to thin: the thick slab is the easier start
-    let mut warm: Option<engine::Evaluation> = None;
-    for &th in t.iter().rev() {
-        match at(th, scene.surface_energy_j_m2(), warm.as_ref()) {
-            Ok(ev) => {
-                a_r.push(ev.stats.a_r);
-                warm = Some(ev);
+    let mut evs: Vec<(f64, Result<engine::Evaluation>)> = Vec::with_capacity(grid.len());
+    for &th in grid.iter().rev() {
+        let warm = evs.last().and_then(|(_, e)| e.as_ref().ok());
+        let ev = keep(at(th, gamma, warm))?;
+        evs.push((th, ev));
+    }
+    evs.reverse();
+    if gamma > 0.0 {
+        let probe = |th: f64| keep(at(th, gamma, None)).map(|r| r.ok());
+        let mut k = 0;
+        while k + 1 < evs.len() {
+            let inside = match (&evs[k], &evs[k + 1]) {
+                ((t0, Ok(lo)), (t1, Ok(hi))) => window_between(&probe, (*t0, lo), (*t1, hi))?,
+                _ => None,
+            };
+            if let Some((th, ev)) = inside {
+                evs.insert(k + 1, (th, Ok(ev)));
             }
-            Err(Error::Cancelled) => return Err(Error::Cancelled),
-            Err(_) => {
-                a_r.push(f64::NAN);
-                warm = None;
-            }
+            k += 1;
         }
     }
-    a_r.reverse();
-    let a_r_inf = match at(f64::INFINITY, scene.surface_energy_j_m2(), None) {
-        Ok(ev) => ev.stats.a_r,
-        Err(Error::Cancelled) => return Err(Error::Cancelled),
-        Err(_) => f64::NAN,
-    };
-    let adhesionless = if scene.surface_energy_j_m2() > 0.0 {
-        let mut v = Vec::with_capacity(t.len());
-        for &th in &t {
-            match at(th, 0.0, None) {
-                Ok(ev) => v.push(ev.stats.a_r),
-                Err(Error::Cancelled) => return Err(Error::Cancelled),
-                Err(_) => v.push(f64::NAN),
-            }
-        }
-        Some(v)
-    } else {
-        None
-    };
+    let t: Vec<f64> = evs.iter().map(|(t, _)| *t).collect();
+    let a_r: Vec<f64> = evs
+        .iter()
+        .map(|(_, e)| e.as_ref().map_or(f64::NAN, |e| e.stats.a_r))
+        .collect();
     if a_r.iter().all(|a| !a.is_finite()) {
         return Err(Error::NotConverged {
             solver: asperity::error::Solver::ThicknessSweep,
             reason: "no thickness converged".into(),
         });
     }
+    let unloading: Vec<f64> = evs
+        .iter()
+        .map(|(_, e)| e.as_ref().ok().and_then(|e| e.unloading_a_r).unwrap_or(f64::NAN))
+        .collect();
+    let (mut jump_in, mut pull_off) = (Vec::new(), Vec::new());
+    if gamma > 0.0 && evs.len() > 1 {
+        let points: Vec<KnobPoint> = evs
+            .into_iter()
+            .map(|(value, e)| KnobPoint {
+                value,
+                scene: Knob::Thickness.apply(scene, value),
+                result: e,
+                gap: Ok(None),
+            })
+            .collect();
+        for e in knob_edges(scene, Knob::Thickness, &points, &opts.adhesion, Some(cancel))? {
+            match e.kind {
+                EdgeKind::JumpIn => jump_in.push(e.value),
+                EdgeKind::PullOff => pull_off.push(e.value),
+            }
+        }
+    }
+    let a_r_inf = keep(at(f64::INFINITY, gamma, None))?.map_or(f64::NAN, |e| e.stats.a_r);
+    let adhesionless = if gamma > 0.0 {
+        let mut v = Vec::with_capacity(t.len());
+        for &th in &t {
+            v.push(keep(at(th, 0.0, None))?.map_or(f64::NAN, |e| e.stats.a_r));
+        }
+        Some(v)
+    } else {
+        None
+    };
     Ok(ThicknessData {
+        a_r_unloading: if unloading.iter().any(|u| u.is_finite()) {
+            unloading
+        } else {
+            Vec::new()
+        },
         t,
         a_r,
         a_r_inf,
         adhesionless,
+        jump_in,
+        pull_off,
     })
+}
+
+/// Neighbouring thicknesses whose a_r differ by more than this factor (both with one stable
+/// branch) are searched for a hysteresis window between them. A jump into contact changes a_r
+/// by orders of magnitude (system II, model 3, γ_s = 0.126–0.157 J/m²: 0.7 → 1e-4 across
+/// t·q_r ≈ 0.1–0.15), a smooth stretch of the chart by tens of percent per grid step; a
+/// steep stretch without a window (model 1 there: a_r falls 100-fold within 7 % of t·q_r on
+/// one branch) costs [`WINDOW_PROBES`] solves and marks nothing.
+pub const JUMP_FACTOR: f64 = 3.0;
+
+/// Most solves spent searching one jump for a window (bisections in ln t·q_r: the window is
+/// found where it is wider than 1/64 of a grid step, ~1 % in t·q_r).
+pub const WINDOW_PROBES: usize = 6;
+
+/// A thickness inside a hysteresis window between `lo` and `hi` (t·q_r and its evaluation,
+/// one stable branch each) whose a_r differ by more than [`JUMP_FACTOR`], and its evaluation:
+/// bisection in ln t·q_r, each step towards the side where a_r changes more, until a thickness
+/// has two stable branches (at most [`WINDOW_PROBES`] solves by `eval`, None where a solve
+/// fails). None without such a jump, or where no window was found.
+pub fn window_between(
+    eval: &dyn Fn(f64) -> Result<Option<engine::Evaluation>>,
+    lo: (f64, &engine::Evaluation),
+    hi: (f64, &engine::Evaluation),
+) -> Result<Option<(f64, engine::Evaluation)>> {
+    let two = |e: &engine::Evaluation| e.branches.iter().filter(|b| b.stable).count() >= 2;
+    let jump = |a: f64, b: f64| (a.max(b) / a.min(b).max(f64::MIN_POSITIVE)).ln();
+    if two(lo.1) || two(hi.1) || jump(lo.1.stats.a_r, hi.1.stats.a_r) <= JUMP_FACTOR.ln() {
+        return Ok(None);
+    }
+    let ((mut t0, mut a0), (mut t1, mut a1)) = ((lo.0, lo.1.stats.a_r), (hi.0, hi.1.stats.a_r));
+    for _ in 0..WINDOW_PROBES {
+        let tm = (t0 * t1).sqrt();
+        let Some(e) = eval(tm)? else {
+            return Ok(None);
+        };
+        if two(&e) {
+            return Ok(Some((tm, e)));
+        }
+        let am = e.stats.a_r;
+        if jump(a0, am) >= jump(am, a1) {
+            (t1, a1) = (tm, am);
+        } else {
+            (t0, a0) = (tm, am);
+        }
+    }
+    Ok(None)
 }
 
 /// ū/h_rms at p* from the chart sweep's rows ([`sweep::interpolate_in_ln_p`]), when p* lies

@@ -291,11 +291,14 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
         let inner = block.inner(area);
         f.render_widget(block, area);
         if inner.height > 0 {
-            let y = inner.y + inner.height / 2;
-            let h = (inner.y + inner.height - y).min(3);
+            // centred, over as many rows as the reason needs (a failure's whole message)
+            let rows = wrapped_rows(Span::raw(msg.as_str()).width(), inner.width);
+            // a row to spare where words wrap early
+            let h = if rows > 1 { rows + 1 } else { rows }.min(inner.height);
+            let y = inner.y + (inner.height - h) / 2;
             f.render_widget(
                 Paragraph::new(msg.clone()).centered().wrap(Wrap { trim: true }),
-                Rect::new(inner.x, y.saturating_sub(h / 2), inner.width, h),
+                Rect::new(inner.x, y, inner.width, h),
             );
         }
         return;
