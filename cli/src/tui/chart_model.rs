@@ -141,7 +141,7 @@ pub fn set_empty<T>(m: &mut ChartModel, app: &App, own: Option<&asperity::error:
     }
 }
 
-/// A chart whose quantity failed: " · failed: <gist>" in the title and the whole reason in
+/// A chart whose quantity failed: `" · failed: <gist>"` in the title and the whole reason in
 /// the body.
 pub fn mark_failed(m: &mut ChartModel, why: &str) {
     m.title.push_str(&format!(" · failed: {}", super::words::brief(why)));
