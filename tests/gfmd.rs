@@ -455,6 +455,65 @@ fn cancellation_and_iteration_limit_are_reported() {
 }
 
 #[test]
+fn the_theory_on_the_map_is_announced_and_cancellable() {
+    use asperity::gfmd::Stage;
+    use asperity::theory::sweep::SweepSpec;
+    use std::sync::atomic::Ordering;
+    for gamma in [0.0, 0.05] {
+        let mut setup = system1_setup(tiny(), 0.01);
+        setup.scene.set_surface_energy_j_m2(gamma).unwrap();
+        // one Theory report, the last, after the relaxation's
+        let mut stages = Vec::new();
+        let r = gfmd::run(
+            &setup,
+            &GfmdOptions::default(),
+            &mut |p| stages.push(p.stage),
+            &no_cancel(),
+        )
+        .unwrap();
+        assert_eq!(stages.last(), Some(&Stage::Theory), "γ_s {gamma}");
+        assert_eq!(stages.iter().filter(|s| **s == Stage::Theory).count(), 1);
+        assert!(r.theory.is_some() && stages.len() >= 2);
+        // the flag raised when the theory begins ends the run, which is not a result
+        let cancel = AtomicBool::new(false);
+        let e = gfmd::run(
+            &setup,
+            &GfmdOptions::default(),
+            &mut |p| {
+                if p.stage == Stage::Theory {
+                    cancel.store(true, Ordering::Relaxed);
+                }
+            },
+            &cancel,
+        )
+        .unwrap_err();
+        assert_eq!(e, Error::Cancelled, "γ_s {gamma}");
+        // the same for the theory's sweep of a GFMD sweep, announced with the number of loads
+        let spec = SweepSpec {
+            from: 0.005,
+            to: 0.02,
+            points: 3,
+        };
+        let cancel = AtomicBool::new(false);
+        let mut announced = None;
+        let e = gfmd::sweep::run_sweep(
+            &setup,
+            &spec,
+            &GfmdOptions::default(),
+            &mut |k, p| {
+                if p.stage == Stage::Theory {
+                    announced = Some(k);
+                    cancel.store(true, Ordering::Relaxed);
+                }
+            },
+            &cancel,
+        )
+        .unwrap_err();
+        assert_eq!((e, announced), (Error::Cancelled, Some(3)), "γ_s {gamma}");
+    }
+}
+
+#[test]
 fn bad_inputs_name_the_field() {
     let s = sinusoid(16, 16, 1e-8, 1, 1e-9);
     let mut pr = problem(&s, f64::INFINITY, -1.0);

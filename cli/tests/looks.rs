@@ -68,6 +68,7 @@ fn with_gfmd(a: &mut App) {
         .collect();
     a.on_reply(Reply::GfmdDone {
         id,
+        elapsed_s: 1.0,
         result: Ok(GfmdView {
             pressure: a.scene.pressure(),
             a_r: 0.0418,
@@ -81,6 +82,7 @@ fn with_gfmd(a: &mut App) {
             sweep: vec![(0.0033, 0.015, 2.0), (0.03, 0.11, 0.9)],
             theory_sweep: vec![(0.0033, 0.011, 2.1), (0.01, 0.03, 1.5), (0.03, 0.09, 0.95)],
             invariants: vec![],
+            sweep_error: None,
         }),
     });
     assert!(a.gfmd_for_scene().is_some());

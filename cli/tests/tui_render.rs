@@ -125,6 +125,16 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         jump_in: Some(f64::NAN),
         pull_off: Some(0.0),
         preview: false,
+        gap_note: None,
+    }));
+    a.thickness = Some(Ok(asperity_cli::tui::data::ThicknessData {
+        t: vec![f64::NAN, 0.0, 1e-2, 1e-1, f64::INFINITY, 1.0],
+        a_r: vec![1.0, f64::NAN, 0.0, -1.0, 0.5, 0.5],
+        a_r_inf: f64::NAN,
+        adhesionless: Some(vec![f64::NAN; 6]),
+        a_r_unloading: vec![f64::NAN, 0.9, f64::INFINITY, -1.0, 0.7],
+        jump_in: vec![f64::NAN, 0.0, -1.0],
+        pull_off: vec![f64::INFINITY],
     }));
     if let Some(Ok(p)) = a.point.as_mut() {
         p.pr = vec![(0.0, 0.0), (f64::NAN, 1.0), (1.0, f64::INFINITY)];
@@ -180,13 +190,26 @@ fn adhesive_view_with_a_synthetic_point() {
 fn gfmd_overlay_with_a_synthetic_run() {
     use asperity_cli::tui::data::GfmdView;
     use asperity_cli::tui::worker::Reply;
+    use asperity_cli::tui::{jobs, progress};
     let mut a = app("system-1");
     key(&mut a, KeyCode::Char('g'));
     let (id, _, _) = a.take_gfmd_request().expect("g starts a run");
+    let plan = progress::plan(
+        a.scene.pressure(),
+        &jobs::gfmd_sweep_spec(a.scene.pressure()).pressures(),
+    );
     a.on_reply(Reply::GfmdProgress {
         id,
-        iteration: 250,
-        residual: 3e-4,
+        progress: progress::GfmdProgress {
+            phase: plan[0],
+            index: 0,
+            phases: plan.len(),
+            grid: 512,
+            iteration: 250,
+            residual: 3e-4,
+            elapsed_s: 1.0,
+            eta_s: None,
+        },
     });
     insta::assert_snapshot!("gfmd_running_80x24", render(&a, 80, 24));
     // a histogram shaped like the theory, a little wider
@@ -211,7 +234,9 @@ fn gfmd_overlay_with_a_synthetic_run() {
             sweep: vec![(0.0033, 0.015, 2.0), (0.03, 0.11, 0.9)],
             theory_sweep: vec![(0.0033, 0.011, 2.1), (0.01, 0.03, 1.5), (0.03, 0.09, 0.95)],
             invariants: vec![("GFMD γ̃".into(), "0.024 (full 0.024)".into())],
+            sweep_error: None,
         }),
+        elapsed_s: 49.8,
     });
     let screen = render(&a, 80, 24);
     assert!(screen.contains("GFMD a_r 0.04180"), "{screen}");
@@ -491,5 +516,142 @@ fn scale_view() {
     insta::assert_snapshot!("tour_step1_80x24", s);
     for (w, h) in [(60, 20), (20, 5), (1, 1)] {
         draw_only(&t, w, h);
+    }
+}
+
+/// A quantity that fails blanks only its own chart and says why in its title: the custom
+/// model with c2 = −1 on system I has a_r and σ̄_c* at every load of the chart but no mean gap
+/// (the stored elastic energy falls: not one stable branch), so the ū chart is empty with the
+/// reason while the a_r and σ̄_c* charts draw; the status line names the error once.
+#[test]
+fn a_failed_mean_gap_blanks_only_its_own_chart() {
+    use asperity_cli::tui::app::Param;
+    use asperity_cli::tui::charts::{build, Role};
+    let mut a = app("system-1");
+    a.set_typed(Param::Model, "custom").unwrap();
+    a.set_typed(Param::C2, "-1").unwrap();
+    a.set_charts([ChartKind::Gap, ChartKind::Area, ChartKind::Stress]);
+    compute_now(&mut a, &mut Caches::default());
+    assert!(
+        a.sweep.as_ref().is_some_and(|s| s.is_ok()),
+        "the load sweep itself converged"
+    );
+    let gap = build(&a, ChartKind::Gap);
+    assert!(
+        gap.title.contains("· failed: the stored elastic energy falls"),
+        "{}",
+        gap.title
+    );
+    let body = gap.empty.as_deref().expect("the gap chart is empty");
+    assert!(body.starts_with("no data: ") && body.contains("mean gap"), "{body}");
+    for kind in [ChartKind::Area, ChartKind::AreaRatio, ChartKind::Stress] {
+        let m = build(&a, kind);
+        assert!(m.empty.is_none() && !m.title.contains("failed"), "{kind:?}: {m:?}");
+        let theory = m
+            .series
+            .iter()
+            .find(|s| s.role == Role::Theory)
+            .expect("a theory curve");
+        assert!(
+            theory.points.iter().filter(|p| p.1.is_finite()).count() > 10,
+            "{kind:?}"
+        );
+    }
+    // the Pr chart of the converged point draws too
+    assert!(build(&a, ChartKind::Pr).empty.is_none());
+    let status = a.compute_error().expect("the status line names the error");
+    assert!(status.starts_with("mean gap: "), "{status}");
+    let s = render(&a, 160, 48);
+    assert_eq!(s.matches("mean gap: ").count(), 1, "{s}");
+    assert!(s.contains("ū/h_rms(p*) · failed"), "{s}");
+}
+
+/// The thickness chart of a scene with a hysteresis window across t·q_r (system II, model 3,
+/// γ_s = 0.1256 J/m², p* = 1e-5: two stable branches near t·q_r = 0.1) draws the unloading
+/// branch there and marks the window's edges; checked against the engine called directly.
+#[test]
+fn the_thickness_chart_marks_the_hysteresis_window() {
+    use asperity::theory::engine::{evaluate, Options};
+    use asperity_cli::tui::app::Param;
+    use asperity_cli::tui::charts::{build, Role};
+    let mut a = app("system-2");
+    a.set_typed(Param::Model, "3").unwrap();
+    a.set_typed(Param::Gamma, "0.1256").unwrap();
+    a.set_typed(Param::Pressure, "1e-5").unwrap();
+    a.set_charts([ChartKind::Thickness, ChartKind::Area, ChartKind::Gap]);
+    compute_now(&mut a, &mut Caches::default());
+    let td = a.thickness.as_ref().unwrap().as_ref().unwrap().clone();
+    let m = build(&a, ChartKind::Thickness);
+    let un = m
+        .series
+        .iter()
+        .find(|s| s.role == Role::Unloading && s.name == "unloading")
+        .expect("the unloading branch is drawn");
+    let jump = m
+        .vlines
+        .iter()
+        .find(|v| v.role == Role::JumpIn)
+        .expect("a jump-in edge");
+    let pull = m
+        .vlines
+        .iter()
+        .find(|v| v.role == Role::PullOff)
+        .expect("a pull-off edge");
+    eprintln!("window t·q_r {} … {}; unloading {:?}", jump.x, pull.x, un.points);
+    // thinning the slab adds contact: the small contact ends on the thin side
+    assert!(
+        jump.x < pull.x && jump.name.starts_with("jump-in t·q_r "),
+        "{jump:?} {pull:?}"
+    );
+    let scene = |t: f64| a.scene.clone().with_thickness_qr(t).unwrap();
+    let engine = |t: f64| evaluate(&scene(t), &Options::default()).unwrap();
+    // inside the window (the chart's thickness with an unloading point): both branches agree
+    // with the engine's
+    let k = td
+        .a_r_unloading
+        .iter()
+        .position(|u| u.is_finite())
+        .expect("a thickness inside");
+    let (t_in, ev) = (td.t[k], engine(td.t[k]));
+    assert!(jump.x < t_in && t_in < pull.x);
+    let u = ev
+        .unloading_a_r
+        .expect("two stable branches at the engine's accuracy too");
+    assert!(
+        (td.a_r_unloading[k] / u - 1.0).abs() < 1e-2,
+        "{} vs {u}",
+        td.a_r_unloading[k]
+    );
+    assert!(
+        (td.a_r[k] / ev.stats.a_r - 1.0).abs() < 1e-2,
+        "{} vs {}",
+        td.a_r[k],
+        ev.stats.a_r
+    );
+    assert!(un.points.contains(&(t_in, td.a_r_unloading[k])));
+    // outside, a decade thicker: one branch, the chart's a_r, no unloading point
+    let k = td.t.iter().position(|&t| t >= 10.0 * pull.x).unwrap();
+    let ev = engine(td.t[k]);
+    assert_eq!(ev.unloading_a_r, None);
+    assert!(td.a_r_unloading[k].is_nan());
+    assert!(
+        (td.a_r[k] / ev.stats.a_r - 1.0).abs() < 1e-2,
+        "{} vs {}",
+        td.a_r[k],
+        ev.stats.a_r
+    );
+    // just past each edge only one stable branch is left: the large contact on the thin side,
+    // the small one on the thick side
+    let (thin, thick) = (engine(jump.x * 0.95), engine(pull.x * 1.05));
+    assert_eq!((thin.unloading_a_r, thick.unloading_a_r), (None, None));
+    assert!(
+        thin.stats.a_r > 10.0 * thick.stats.a_r,
+        "{} {}",
+        thin.stats.a_r,
+        thick.stats.a_r
+    );
+    let s = render(&a, 160, 48);
+    for needle in ["unloading", "jump-in t·q_r", "pull-off t·q_r"] {
+        assert!(s.contains(needle), "{needle}: {s}");
     }
 }

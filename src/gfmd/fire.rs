@@ -32,7 +32,7 @@
 //! bounds the relative error of the load balance and of every non-contact node's stress.
 //!
 
-use super::{GfmdOptions, Problem, Progress, Solution};
+use super::{GfmdOptions, Problem, Progress, Solution, Stage};
 use crate::error::{Error, Result};
 use crate::numerics::fft2::RealFft2;
 use crate::surface::heightmap::wave_number_sq;
@@ -309,6 +309,7 @@ pub fn solve_from(
             &mut |it, err, frac| {
                 if it % opts.progress_every.max(1) == 0 {
                     progress(Progress {
+                        stage: Stage::Relax,
                         iteration: it,
                         residual: err / h_rms,
                         contact_fraction: frac,
@@ -358,6 +359,7 @@ pub fn solve_from(
         }
         if it.is_multiple_of(opts.progress_every.max(1)) {
             progress(Progress {
+                stage: Stage::Relax,
                 iteration: it,
                 residual: r,
                 contact_fraction: sums.wall as f64 / n as f64,
@@ -400,6 +402,7 @@ pub fn solve_from(
     let stress: Vec<f64> = st.conv.iter().map(|c| (st.p0 + c) * e).collect();
     let on_wall: Vec<bool> = st.w.iter().zip(&st.h).map(|(w, h)| w <= h).collect();
     progress(Progress {
+        stage: Stage::Relax,
         iteration: it,
         residual,
         contact_fraction: on_wall.iter().filter(|&&b| b).count() as f64 / n as f64,

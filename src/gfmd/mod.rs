@@ -43,9 +43,11 @@
 //!   on the map's own discrete spectrum for a like-for-like comparison (theory `None` with the
 //!   reason when the engine cannot evaluate the scene).
 //!
-//! `progress` is called every [`GfmdOptions::progress_every`] steps with a [`Progress`];
-//! setting `cancel` makes the solver return
-//! [`Error::Cancelled`](crate::error::Error::Cancelled) within one step.
+//! `progress` is called every [`GfmdOptions::progress_every`] steps with a [`Progress`], and
+//! once more ([`Stage::Theory`]) when the relaxation is done and the theory on the map
+//! begins; setting `cancel` makes the solver return
+//! [`Error::Cancelled`](crate::error::Error::Cancelled) within one step, and the theory within
+//! one march of its adhesive solver.
 
 pub mod fire;
 pub mod grid;
@@ -60,5 +62,5 @@ pub mod sweep;
 pub use fire::{solve, solve_from, DT_MAX};
 pub use grid::{GfmdSetup, GridSpec};
 pub use measure::{measure, Measurements};
-pub use problem::{GfmdOptions, Method, Problem, Progress, Solution};
+pub use problem::{GfmdOptions, Method, Problem, Progress, Solution, Stage};
 pub use result::{prepare, run, GfmdResult, Prepared, TheoryComparison};

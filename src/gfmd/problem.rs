@@ -158,9 +158,24 @@ impl Problem<'_> {
     }
 }
 
+/// What a run is doing when it reports progress.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Stage {
+    /// Relaxing the contact (Polonsky–Keer, then FIRE): the report's step and residual move.
+    #[default]
+    Relax,
+    /// The relaxation is done and the theory on the map's spectrum is being evaluated (one
+    /// report, with the relaxation's last step and residual): [`super::run()`] and
+    /// [`super::sweep::run_sweep`] say so before their theory, which reports nothing while it
+    /// runs.
+    Theory,
+}
+
 /// A progress report.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Progress {
+    /// What the run is doing.
+    pub stage: Stage,
     /// FIRE steps so far.
     pub iteration: usize,
     /// Current relative force residual (while Polonsky–Keer runs: its largest gap error on the

@@ -2,7 +2,7 @@
 //! on the map's own discrete spectrum.
 
 use super::reduction::{reduce, Reduction};
-use super::{measure, solve_from, GfmdOptions, GfmdSetup, GridSpec, Problem, Progress};
+use super::{measure, solve_from, GfmdOptions, GfmdSetup, GridSpec, Problem, Progress, Stage};
 use crate::contact::ContactStats;
 use crate::error::{Error, Field, Result};
 use crate::input::scene::Scene;
@@ -106,8 +106,12 @@ pub struct GfmdResult {
 /// # Errors
 /// [`Error::Invalid`] for a grid or map that cannot be built (naming the grid's field);
 /// [`Error::NotConverged`] when the relaxation misses its tolerance within its step limit;
-/// [`Error::Cancelled`]. A theory that cannot be evaluated on the map is not an error: it is
-/// `theory: None` with the reason in `theory_error`.
+/// [`Error::Cancelled`] when `cancel` is set, in the relaxation or in the theory. A theory
+/// that cannot be evaluated on the map is not an error: it is `theory: None` with the reason
+/// in `theory_error`.
+///
+/// `progress` gets the relaxation's reports ([`super::Stage::Relax`]), then one
+/// [`super::Stage::Theory`] report before the theory on the map.
 ///
 /// # Examples
 /// ```
@@ -142,6 +146,12 @@ pub fn run(
     let problem = prep.problem(scene.pressure);
     let sol = solve_from(&problem, opts, None, progress, cancel)?;
     let m = measure(&problem, &sol, opts);
+    progress(Progress {
+        stage: Stage::Theory,
+        iteration: sol.iterations,
+        residual: sol.residual,
+        contact_fraction: m.stats.a_r,
+    });
     // theory on the same realisation
     let t_theory = Instant::now();
     let (theory, theory_error) = match prep.theory_scene(scene.pressure).and_then(|th| {
@@ -151,10 +161,14 @@ pub fn run(
             adhesion_error_estimate: false,
             ..engine::Options::default()
         };
-        let ev = engine::evaluate(&th, &opts)?;
-        let g = gap::mean_gap_of(&th, &ev, &opts);
+        let ev = engine::evaluate_warm(&th, &opts, None, Some(cancel))?;
+        let g = gap::mean_gap_of_cancellable(&th, &ev, &opts, Some(cancel));
+        if matches!(g, Err(Error::Cancelled)) {
+            return Err(Error::Cancelled);
+        }
         Ok((ev, g))
     }) {
+        Err(Error::Cancelled) => return Err(Error::Cancelled),
         Ok((ev, g)) => (
             Some(TheoryComparison {
                 stats: ev.stats,

@@ -13,8 +13,8 @@
 //! as the theory's U = Σ u_ela − a_rγ_s [S-11] counts it. The elastic part is
 //! ½⟨(w − w̄)(σ − p₀)⟩ over the nodes (Parseval; σ − p₀ = φ⋆w).
 
-use super::{measure, prepare, solve_from, GfmdOptions, GfmdSetup, Prepared, Problem, Progress, Solution};
-use crate::error::Result;
+use super::{measure, prepare, solve_from, GfmdOptions, GfmdSetup, Prepared, Problem, Progress, Solution, Stage};
+use crate::error::{Error, Result};
 use crate::theory::engine::Options;
 use crate::theory::sweep::{self, Sweep, SweepSpec};
 use serde::Serialize;
@@ -88,10 +88,13 @@ pub fn energy(problem: &Problem<'_>, sol: &Solution) -> f64 {
 }
 
 /// Runs the loads of `spec` on the map of `setup`, warm-starting each from the previous one
-/// (see the module docs). `progress` gets the load index with each report.
+/// (see the module docs), then the theory's sweep on the map. `progress` gets the load index
+/// with each report, and the number of loads with the one [`Stage::Theory`] report before the
+/// theory's sweep.
 ///
 /// # Errors
-/// As [`super::run()`] for any load; [`crate::Error::Invalid`] for a spec out of range.
+/// As [`super::run()`] for any load; [`crate::Error::Invalid`] for a spec out of range;
+/// [`crate::Error::Cancelled`] when `cancel` is set, in a load or in the theory's sweep.
 ///
 /// # Examples
 /// ```
@@ -122,10 +125,22 @@ pub fn run_sweep(
 ) -> Result<GfmdSweep> {
     let t0 = Instant::now();
     let (prep, rows, iterations) = run_loads(setup, spec, opts, progress, cancel)?;
+    if let Some(last) = rows.last() {
+        progress(
+            rows.len(),
+            Progress {
+                stage: Stage::Theory,
+                iteration: last.iterations,
+                residual: last.residual,
+                contact_fraction: last.a_r,
+            },
+        );
+    }
     let (theory, theory_error) = match prep
         .theory_scene(spec.from)
         .and_then(|sc| sweep::sweep(&sc, spec, &Options::default(), Some(cancel)))
     {
+        Err(Error::Cancelled) => return Err(Error::Cancelled),
         Ok(s) => (Some(s), None),
         Err(e) => (None, Some(e.to_string())),
     };

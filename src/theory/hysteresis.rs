@@ -49,7 +49,25 @@ pub fn knob_edges(
     acc: &AdhesionAccuracy,
     cancel: Option<&AtomicBool>,
 ) -> Result<Vec<KnobEdge>> {
+    knob_edges_to(scene, knob, points, acc, EDGE_REL, cancel)
+}
+
+/// [`knob_edges`] to the relative precision `rel` in the knob (a chart needs less than
+/// [`EDGE_REL`]); the edges are bisected side by side (rayon), each the same whatever the
+/// number of threads.
+///
+/// # Errors
+/// As [`crate::theory::adhesion::solve`].
+pub fn knob_edges_to(
+    scene: &Scene,
+    knob: crate::theory::knob::Knob,
+    points: &[crate::theory::knob::KnobPoint],
+    acc: &AdhesionAccuracy,
+    rel: f64,
+    cancel: Option<&AtomicBool>,
+) -> Result<Vec<KnobEdge>> {
     use crate::theory::knob::Knob;
+    use rayon::prelude::*;
     let stable = |e: &crate::theory::engine::Evaluation| -> Vec<f64> {
         e.branches.iter().filter(|b| b.stable).map(|b| b.a_r).collect()
     };
@@ -57,7 +75,8 @@ pub fn knob_edges(
         explore_branches: true,
         ..*acc
     };
-    let mut edges = Vec::new();
+    // the neighbours with two or more stable branches on one side only, inside first
+    let mut pairs = Vec::new();
     for w in points.windows(2) {
         let (Ok(e0), Ok(e1)) = (&w[0].result, &w[1].result) else {
             continue;
@@ -66,23 +85,27 @@ pub fn knob_edges(
         if (s0.len() >= 2) == (s1.len() >= 2) {
             continue;
         }
-        let ((x_in, b_in), (x_out, b_out)) = if s0.len() >= 2 {
-            ((w[0].value, &s0), (w[1].value, &s1))
+        pairs.push(if s0.len() >= 2 {
+            ((w[0].value, s0), (w[1].value, s1))
         } else {
-            ((w[1].value, &s1), (w[0].value, &s0))
-        };
-        let value = bisect(x_in, x_out, knob == Knob::Thickness, EDGE_REL, |x| {
-            let s = knob.apply(scene, x);
-            stable_branches(&s, s.pressure, &acc, cancel)
-        })?;
-        let (lo, hi) = (b_in[0], b_in[b_in.len() - 1]);
-        let out = b_out.first().copied().unwrap_or(f64::NAN);
-        let kind = if (out - hi).abs() < (out - lo).abs() {
-            EdgeKind::JumpIn
-        } else {
-            EdgeKind::PullOff
-        };
-        edges.push(KnobEdge { value, kind });
+            ((w[1].value, s1), (w[0].value, s0))
+        });
     }
-    Ok(edges)
+    pairs
+        .par_iter()
+        .map(|((x_in, b_in), (x_out, b_out))| {
+            let value = bisect(*x_in, *x_out, knob == Knob::Thickness, rel, |x| {
+                let s = knob.apply(scene, x);
+                stable_branches(&s, s.pressure, &acc, cancel)
+            })?;
+            let (lo, hi) = (b_in[0], b_in[b_in.len() - 1]);
+            let out = b_out.first().copied().unwrap_or(f64::NAN);
+            let kind = if (out - hi).abs() < (out - lo).abs() {
+                EdgeKind::JumpIn
+            } else {
+                EdgeKind::PullOff
+            };
+            Ok(KnobEdge { value, kind })
+        })
+        .collect()
 }

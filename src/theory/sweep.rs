@@ -190,6 +190,11 @@ pub struct Sweep {
     /// What failed and what it means for the other rows; absent when every load converged.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// The part of `note` that concerns the mean gap alone: why rows with a_r have no ū (a gap
+    /// table that cannot be built, loads that are not one stable branch); None when every
+    /// converged row has its gap.
+    #[serde(skip)]
+    pub gap_note: Option<String>,
     /// p* above which the loading branch no longer exists (the jump into contact on loading),
     /// where the sweep's range holds a hysteresis window's upper edge; to
     /// the options' `edge_rel` ([`crate::theory::window::EDGE_REL`] by default).
@@ -284,7 +289,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
     // the mean gap (physics.md §5.1): without adhesion the energy route on this grid's own
     // table; with adhesion the load each branch's contact carries on the adhesionless table of the scene
     let (gaps, gap_note) = if scene.gamma > 0.0 {
-        match gap::DryGap::new(scene, spec.from, opts) {
+        match gap::DryGap::new_cancellable(scene, spec.from, opts, cancel) {
             Ok(dry) => {
                 let gaps = (0..n)
                     .map(|i| match &evs[i] {
@@ -368,7 +373,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
             n,
         )
     });
-    let note = match (note, gap_note) {
+    let note = match (note, gap_note.clone()) {
         (Some(a), Some(b)) => Some(format!("{a}; {b}")),
         (a, b) => a.or(b),
     };
@@ -387,6 +392,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         monotone,
         failed_loads,
         note,
+        gap_note,
         jump_in_pressure,
         pull_off_pressure,
     })

@@ -13,7 +13,7 @@ use asperity::error::{Error, Field, Result};
 use asperity::gfmd::ladder::{Ensemble, Extrapolated, Ladder, MeanSe};
 use asperity::gfmd::reduction::Reduction;
 use asperity::gfmd::sweep::GfmdSweep;
-use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec, Progress};
+use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec, Progress, Stage};
 use asperity::theory::sweep::SweepSpec;
 use clap::Args;
 use serde::Serialize;
@@ -227,19 +227,33 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
     let mut last = Instant::now();
     let mut shown = false;
     let mut bar = |p: Progress| {
-        if tty && start.elapsed() > Duration::from_millis(500) && last.elapsed() > Duration::from_millis(100) {
+        let theory = p.stage == Stage::Theory;
+        if tty
+            && start.elapsed() > Duration::from_millis(500)
+            && (theory || last.elapsed() > Duration::from_millis(100))
+        {
             last = Instant::now();
             shown = true;
             let mut e = std::io::stderr().lock();
-            let _ = write!(
-                e,
-                "\rgfmd: step {:>7}  residual {:.2e} (target {:.0e})  contact {:.4}  {:.1} s ",
-                p.iteration,
-                p.residual,
-                opts.tolerance,
-                p.contact_fraction,
-                start.elapsed().as_secs_f64()
-            );
+            let _ = if theory {
+                // the theory reports nothing while it runs: say what the wait is for
+                write!(
+                    e,
+                    "\rgfmd: relaxed in {} steps; the theory on the map's spectrum ({:.1} s)          ",
+                    p.iteration,
+                    start.elapsed().as_secs_f64()
+                )
+            } else {
+                write!(
+                    e,
+                    "\rgfmd: step {:>7}  residual {:.2e} (target {:.0e})  contact {:.4}  {:.1} s ",
+                    p.iteration,
+                    p.residual,
+                    opts.tolerance,
+                    p.contact_fraction,
+                    start.elapsed().as_secs_f64()
+                )
+            };
             let _ = e.flush();
         }
     };

@@ -15,56 +15,6 @@ use asperity::input::scene::Scene;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::sync::atomic::Ordering;
 
-#[test]
-fn g_starts_and_cancels_a_gfmd_run() {
-    let mut a = app();
-    key(&mut a, KeyCode::Char('g'));
-    assert!(matches!(a.gfmd, GfmdState::Running { .. }));
-    let (id, scene, cancel) = a.take_gfmd_request().expect("a run to start");
-    assert_eq!(scene, a.scene);
-    let setup = jobs::gfmd_setup(&a.preset, &scene);
-    assert_eq!(setup.grid.n(), 512);
-    // progress of this run is shown; a stale run's is not
-    a.on_reply(Reply::GfmdProgress {
-        id,
-        iteration: 120,
-        residual: 1e-3,
-    });
-    assert!(matches!(a.gfmd, GfmdState::Running { iteration: 120, .. }));
-    a.on_reply(Reply::GfmdProgress {
-        id: id + 7,
-        iteration: 999,
-        residual: 1.0,
-    });
-    assert!(matches!(a.gfmd, GfmdState::Running { iteration: 120, .. }));
-    // g again cancels
-    key(&mut a, KeyCode::Char('g'));
-    assert!(cancel.load(Ordering::Relaxed));
-    assert_eq!(a.gfmd, GfmdState::Idle);
-    assert!(a.take_gfmd_request().is_none());
-    // a finished run is shown for its own scene only
-    key(&mut a, KeyCode::Char('g'));
-    let (id, _, _) = a.take_gfmd_request().unwrap();
-    let view = GfmdView {
-        pressure: a.scene.pressure(),
-        a_r: 0.02,
-        mean_contact_stress: 0.5,
-        gap_rel: 1.5,
-        pr: vec![(0.1, 0.01), (0.2, 0.02)],
-        grid: 512,
-        iterations: 400,
-        elapsed_s: 0.5,
-        theory_a_r: Some(0.021),
-        ..GfmdView::default()
-    };
-    a.on_reply(Reply::GfmdDone {
-        id,
-        result: Ok(view.clone()),
-    });
-    assert_eq!(a.gfmd_for_scene(), Some(&view));
-    key(&mut a, KeyCode::Right); // p* changes: the result belongs to another scene
-    assert_eq!(a.gfmd_for_scene(), None);
-}
 use ratatui::crossterm::event::KeyModifiers as M;
 
 fn app() -> App {
@@ -154,19 +104,6 @@ fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
     assert!(a.sweep.as_ref().is_some_and(|s| s.is_ok()), "the load charts stay");
     assert!(a.gap.is_some());
     assert!(a.compute_error().unwrap().contains("did not converge"));
-}
-
-#[test]
-fn the_gfmd_start_message_goes_when_the_run_ends() {
-    let mut a = app();
-    key(&mut a, KeyCode::Char('g'));
-    assert!(a.message.as_ref().unwrap().text.starts_with("GFMD started"));
-    let (id, _, _) = a.take_gfmd_request().unwrap();
-    a.on_reply(Reply::GfmdDone {
-        id,
-        result: Err(Error::io("export", "test")),
-    });
-    assert!(a.message.is_none());
 }
 
 #[test]

@@ -138,14 +138,21 @@ pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T
         .collect()
 }
 
-pub fn empty_message(app: &App) -> String {
-    if app.busy {
-        "computing…".into()
-    } else if app.compute_error().is_some() {
-        "no data: see the status line".into()
-    } else {
-        "no data".into()
+/// Marks a chart with nothing to draw: where the result it draws failed, its title says why in
+/// brief and its body in full (another quantity's failure does not concern it); else
+/// "computing…" while the worker runs, or "no data".
+pub fn set_empty<T>(m: &mut ChartModel, app: &App, own: Option<&asperity::error::Result<T>>) {
+    match own {
+        Some(Err(e)) => mark_failed(m, &super::words::describe(e)),
+        _ => m.empty = Some(if app.busy { "computing…" } else { "no data" }.into()),
     }
+}
+
+/// A chart whose quantity failed: `" · failed: <gist>"` in the title and the whole reason in
+/// the body.
+pub fn mark_failed(m: &mut ChartModel, why: &str) {
+    m.title.push_str(&format!(" · failed: {}", super::words::brief(why)));
+    m.empty = Some(format!("no data: {why}"));
 }
 
 pub fn base(kind: ChartKind, title: String, x: &str, y: &str, xs: Scale, ys: Scale) -> ChartModel {

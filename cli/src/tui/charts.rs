@@ -24,7 +24,7 @@
 //! points are drawn as points named by their source (and the conditions, where they differ
 //! from the scene's).
 
-use super::chart_model::{base, current_point, data_bounds, empty_message, others, theory_name, theory_role};
+use super::chart_model::{base, current_point, data_bounds, others, set_empty, theory_name, theory_role};
 pub use super::chart_model::{ChartModel, Draw, Role, Series, VLine};
 use super::charts_load::{area, loads, thickness};
 use super::data::{self, PointData};
@@ -79,7 +79,7 @@ fn pr_linear(app: &App) -> ChartModel {
     let title = format!("Pr(σ*) at p* = {}", super::words::sig(app.scene.pressure(), 3));
     let mut m = base(ChartKind::Pr, title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, Scale::Linear);
     let Some(p) = current_point(app) else {
-        m.empty = Some(empty_message(app));
+        set_empty(&mut m, app, app.point.as_ref());
         return m;
     };
     m.stale = app.point_is_stale();
@@ -160,7 +160,7 @@ fn pr_loglog(app: &App) -> ChartModel {
     let mut m = base(ChartKind::PrLog, title, "σ* = σ/E*ḡ", "Pr", Scale::Log10, Scale::Log10);
     m.clip_y = true;
     let Some(p) = current_point(app) else {
-        m.empty = Some(empty_message(app));
+        set_empty(&mut m, app, app.point.as_ref());
         return m;
     };
     m.stale = app.point_is_stale();

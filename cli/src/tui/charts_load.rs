@@ -18,7 +18,7 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
     let curve =
         |sw: &SweepData| -> Vec<(f64, f64)> { sw.p.iter().zip(&sw.a_r).map(|(&p, &a)| (p, y_of(p, a))).collect() };
     let Some(sw) = sweep_of(app) else {
-        m.empty = Some(empty_message(app));
+        set_empty(&mut m, app, app.sweep.as_ref());
         return m;
     };
     m.stale = app.sweep_is_stale();
@@ -125,6 +125,55 @@ fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64
     }
 }
 
+/// The hysteresis windows of the thickness chart, as on the a_r(p*) chart: the unloading
+/// branch's a_r (dashed) where p* lies inside a window, joined at the window's end to the
+/// neighbour where it goes on as the only branch (the one nearer in ln a_r), and the edges as
+/// vertical markers named with their t·q_r: jump-in where the loading branch (small contact)
+/// ends, pull-off where the unloading branch ends.
+fn thickness_window(m: &mut ChartModel, td: &ThicknessData) {
+    let n = td.t.len().min(td.a_r_unloading.len()).min(td.a_r.len());
+    let u = &td.a_r_unloading;
+    let near = |a: f64, b: f64| (a.ln() - b.ln()).abs();
+    let mut points: Vec<(f64, f64)> = Vec::new();
+    for k in 0..n {
+        if !u[k].is_finite() {
+            continue;
+        }
+        let first = k == 0 || !u[k - 1].is_finite();
+        let last = k + 1 == n || !u[k + 1].is_finite();
+        if first && k > 0 && near(td.a_r[k - 1], u[k]) < near(td.a_r[k - 1], td.a_r[k]) {
+            points.push((td.t[k - 1], td.a_r[k - 1]));
+        }
+        points.push((td.t[k], u[k]));
+        if last && k + 1 < n && near(td.a_r[k + 1], u[k]) < near(td.a_r[k + 1], td.a_r[k]) {
+            points.push((td.t[k + 1], td.a_r[k + 1]));
+        }
+        if last {
+            points.push((f64::NAN, f64::NAN));
+        }
+    }
+    if points.iter().any(|q| q.0.is_finite()) {
+        m.series.push(Series {
+            name: "unloading".into(),
+            points,
+            role: Role::Unloading,
+            draw: Draw::Dashed,
+        });
+    }
+    for (xs, role, what) in [
+        (&td.jump_in, Role::JumpIn, "jump-in"),
+        (&td.pull_off, Role::PullOff, "pull-off"),
+    ] {
+        for &x in xs.iter().filter(|x| x.is_finite() && **x > 0.0) {
+            m.vlines.push(VLine {
+                x,
+                role,
+                name: format!("{what} t·q_r {}", super::words::sig(x, 2)),
+            });
+        }
+    }
+}
+
 /// Rows of points per load filling the gap's bracket (enough to shade a braille column).
 const BAND_ROWS: usize = 12;
 
@@ -162,11 +211,16 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
         sw.p.iter().copied().zip(ys.iter().copied()).collect()
     };
     let Some(sw) = sweep_of(app) else {
-        m.empty = Some(empty_message(app));
+        set_empty(&mut m, app, app.sweep.as_ref());
         return m;
     };
     m.stale = app.sweep_is_stale();
     mark_preview(&mut m, sw);
+    // the mean gap can fail where a_r and σ̄_c* did not: this chart alone says so
+    let gap_failed = gap.then(|| gap_failure(app, sw)).flatten();
+    if let Some(why) = &gap_failed {
+        m.title.push_str(&format!(" · failed: {}", super::words::brief(why)));
+    }
     if gap {
         // the bracket of the loading branch's gap, shaded under the curves (§5.1)
         if let Some(band) = gap_band(sw) {
@@ -225,6 +279,10 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
     add_current(&mut m, app.scene.pressure(), y);
     let (_, yb) = data_bounds(&m);
     m.xb = load_x(app);
+    if let (Some(why), None) = (&gap_failed, yb) {
+        // nothing else (GFMD, reference points) to draw: the body gives the whole reason
+        m.empty = Some(format!("no data: {why}"));
+    }
     let yb = yb.unwrap_or([0.0, 1.0]);
     m.yb = if gap {
         // the gap may be negative with adhesion: show what comes, and 0 for scale
@@ -235,14 +293,29 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
     m
 }
 
+/// Why the theory's ū/h_rms is missing from every load of the sweep `sw` (the sweep's own
+/// reason, else the current point's gap error), None where some load has it.
+fn gap_failure(app: &App, sw: &SweepData) -> Option<String> {
+    if sw.gap_rel.iter().any(|g| g.is_finite()) {
+        return None;
+    }
+    let point = match &app.gap {
+        Some(Err(e)) => Some(super::words::describe(e)),
+        _ => None,
+    };
+    Some(
+        sw.gap_note
+            .clone()
+            .or(point)
+            .unwrap_or_else(|| "no load of the sweep has a mean gap".into()),
+    )
+}
+
 pub fn thickness(app: &App) -> ChartModel {
     let title = format!("a_r(t·q_r) at p* = {}", super::words::sig(app.scene.pressure(), 3));
     let mut m = base(ChartKind::Thickness, title, "t·q_r", "a_r", Scale::Log10, Scale::Linear);
     let Some(td) = app.thickness.as_ref().and_then(|r| r.as_ref().ok()) else {
-        m.empty = Some(match app.thickness.as_ref() {
-            Some(Err(e)) => format!("no data: {e}"),
-            _ => empty_message(app),
-        });
+        set_empty(&mut m, app, app.thickness.as_ref());
         return m;
     };
     m.stale = app.thickness_is_stale();
@@ -274,6 +347,9 @@ pub fn thickness(app: &App) -> ChartModel {
             role: Role::Model(i),
             draw: Draw::Line,
         });
+    }
+    if !app.all_models {
+        thickness_window(&mut m, td);
     }
     m.series.push(Series {
         name: theory_name(app),

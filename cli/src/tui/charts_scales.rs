@@ -6,7 +6,7 @@
 //! Space plays them from q_L to q_s. The frames are the engine's own march
 //! ([`super::data::ScalesData`]); nothing here computes.
 
-use super::chart_model::{base, empty_message, ChartModel, Draw, Role, Series, VLine};
+use super::chart_model::{base, set_empty, ChartModel, Draw, Role, Series, VLine};
 use super::kinds::ChartKind;
 use super::plot::{self, Scale};
 use super::state::App;
@@ -14,10 +14,7 @@ use super::words::sig;
 
 /// Why a scale chart is empty.
 fn empty(app: &App, m: &mut ChartModel) {
-    m.empty = Some(match &app.scales {
-        Some(Err(e)) => format!("no scale view: {}", super::words::describe(e)),
-        _ => empty_message(app),
-    });
+    set_empty(m, app, app.scales.as_ref());
 }
 
 /// Pr(σ*, q) at the current frame.

@@ -6,10 +6,12 @@
 //!   [`knobs`] (the panel's parameters and their pure stepping), [`kinds`] (the chart kinds),
 //!   [`pins`] (pinned curves and their names),
 //!   [`protocol`] (requests, replies and cache keys of the worker), [`tour`] (teaching tours,
-//!   TOML files in `tours/`), [`data`] (the plain data of engine results).
+//!   TOML files in `tours/`), [`data`] (the plain data of engine results), [`progress`] (the
+//!   GFMD job's phases, progress reports and the estimate of the time left).
 //! - update: [`update`] (a key or a reply → the next state plus effects), [`turn`] (a knob
-//!   stepped on its grid or typed), [`models`] (the model picked or cycled), [`keys`] (the key
-//!   table, used for dispatch and for the `?` help).
+//!   stepped on its grid or typed), [`models`] (the model picked or cycled), [`update_gfmd`]
+//!   (`g` and the GFMD job's replies), [`keys`] (the key table, used for dispatch and for the
+//!   `?` help).
 //! - effects: [`worker`] (the compute thread: generations, cancellation, caches), [`jobs`]
 //!   (the engine jobs: point, sweeps, GFMD), [`effects`] (the files of `e` and `s`),
 //!   [`export`] (CSV + TOML, SVG + PNG).
@@ -23,7 +25,8 @@
 //!
 //! The event loop blocks on one channel that carries key/resize events (from an input
 //! thread) and worker replies; it redraws after each batch of messages, and ticks (for the
-//! spinner) only while the worker is busy, so an idle explorer uses no CPU. The terminal is
+//! spinner, and the GFMD job's clock) only while the worker is busy or GFMD runs, so an idle
+//! explorer uses no CPU. The terminal is
 //! restored on every exit path: a drop guard on return, ratatui's panic hook on panic.
 //!
 //! `ASPERITY_PANIC_KEY=C` makes the key C panic (for the test that the terminal is restored
@@ -55,11 +58,13 @@ pub mod palette;
 pub mod panel;
 pub mod pins;
 pub mod plot;
+pub mod progress;
 pub mod protocol;
 pub mod state;
 pub mod tour;
 pub mod turn;
 pub mod update;
+pub mod update_gfmd;
 pub mod view;
 pub mod words;
 pub mod worker;

@@ -4,6 +4,7 @@
 
 use super::palette::{Palette, SPINNER};
 use super::plot;
+use super::progress::format_secs;
 use super::state::{App, GfmdState, Param};
 use super::words::sig;
 use ratatui::layout::Rect;
@@ -134,35 +135,8 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
             }
         }),
     );
-    match &app.gfmd {
-        GfmdState::Idle => {}
-        GfmdState::Running {
-            iteration, residual, ..
-        } => {
-            let res = if residual.is_finite() {
-                format!(", res {residual:.0e}")
-            } else {
-                String::new()
-            };
-            row(
-                "GFMD",
-                format!("{} {iteration} it{res}", SPINNER[app.spinner % SPINNER.len()]),
-            );
-        }
-        GfmdState::Done { result: Err(e), .. } => row("GFMD", format!("failed: {e}")),
-        GfmdState::Done { result: Ok(v), .. } => {
-            if app.gfmd_for_scene().is_some() {
-                row("GFMD a_r", sig(v.a_r, 4));
-                row("GFMD σ̄c", sig(v.mean_contact_stress, 4));
-                let th = v.theory_a_r.map_or("–".into(), |t| sig(t, 4));
-                row("map th.", format!("{th} (N={})", v.grid));
-                for (k, val) in &v.invariants {
-                    row(k, val.clone());
-                }
-            } else {
-                row("GFMD", "other scene (g reruns)".into());
-            }
-        }
+    for (k, v) in gfmd_rows(app) {
+        row(&k, v);
     }
     row(
         "time",
@@ -186,6 +160,66 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     }
     let block = Block::bordered().title(" parameters ");
     f.render_widget(Paragraph::new(lines).block(block), area);
+}
+
+/// The panel's GFMD rows: while it runs the phase, the solver's steps and residual, the time
+/// and the time left; when done its time and numbers (for the scene shown), or why it failed.
+fn gfmd_rows(app: &App) -> Vec<(String, String)> {
+    let mut v: Vec<(String, String)> = Vec::new();
+    let mut row = |k: &str, val: String| v.push((k.to_string(), val));
+    match &app.gfmd {
+        GfmdState::Idle => {}
+        GfmdState::Running { progress, started, .. } => {
+            row(
+                "GFMD",
+                format!("{} {}", SPINNER[app.spinner % SPINNER.len()], progress.phase.label()),
+            );
+            if let Some(p) = progress.phase.load() {
+                row("  at p*", sig(p, 3));
+            }
+            if let Some(st) = progress.steps_text() {
+                row("  steps", st);
+            }
+            if app.show_timing {
+                let t = started.elapsed().as_secs_f64();
+                row("  time", format_secs(t));
+                row(
+                    "  left",
+                    progress
+                        .left_at(t)
+                        .map_or_else(|| "estimating".into(), |l| format!("about {}", format_secs(l))),
+                );
+            }
+        }
+        GfmdState::Done { result, elapsed_s, .. } => {
+            let took = if app.show_timing {
+                format!(" in {}", format_secs(*elapsed_s))
+            } else {
+                String::new()
+            };
+            match result {
+                Err(e) => row("GFMD", format!("failed: {e}")),
+                Ok(r) => {
+                    row("GFMD", format!("done{took}"));
+                    if app.gfmd_for_scene().is_some() {
+                        row("GFMD a_r", sig(r.a_r, 4));
+                        row("GFMD σ̄c", sig(r.mean_contact_stress, 4));
+                        let th = r.theory_a_r.map_or("–".into(), |t| sig(t, 4));
+                        row("map th.", format!("{th} (N={})", r.grid));
+                        for (k, val) in &r.invariants {
+                            row(k, val.clone());
+                        }
+                        if let Some(e) = &r.sweep_error {
+                            row("sweep", format!("failed: {e}"));
+                        }
+                    } else {
+                        row("  ", "other scene (g reruns)".into());
+                    }
+                }
+            }
+        }
+    }
+    v
 }
 
 /// The file a measured spectrum came from (its name, without the directories), or None for

@@ -4,6 +4,7 @@
 
 use super::data::{self, PointData, ScalesData, SweepData, ThicknessData};
 use super::kinds::Needs;
+pub use super::progress::GfmdProgress;
 use asperity::error::Result;
 use asperity::input::model::Model;
 use asperity::input::scene::Scene;
@@ -158,14 +159,12 @@ pub enum Reply {
         /// The frames, or the error.
         result: Result<ScalesData>,
     },
-    /// Progress of the background GFMD run `id`.
+    /// Progress of the background GFMD run `id`: its phase, solver steps, residual, time.
     GfmdProgress {
         /// Run id.
         id: u64,
-        /// FIRE steps so far.
-        iteration: usize,
-        /// Current relative force residual.
-        residual: f64,
+        /// The report.
+        progress: GfmdProgress,
     },
     /// The background GFMD run `id` finished (or failed, or was cancelled).
     GfmdDone {
@@ -173,6 +172,8 @@ pub enum Reply {
         id: u64,
         /// The run, or its error.
         result: Result<data::GfmdView>,
+        /// Seconds the whole job took.
+        elapsed_s: f64,
     },
     /// Everything of this generation has been sent.
     Done {

@@ -6,6 +6,7 @@
 use super::data::{GfmdView, PointData, ScaleFrame, ScalesData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
 use super::kinds::{self as charts, ChartKind, Needs};
 pub use super::knobs::*;
+use super::progress::GfmdProgress;
 use super::protocol::{point_key, scales_key, sweep_key, thickness_key, CacheKey, Request};
 use super::tour::Tour;
 use asperity::error::Result;
@@ -148,7 +149,6 @@ pub struct App {
     pub export_dir: PathBuf,
     /// The background GFMD run (started with `g`).
     pub gfmd: GfmdState,
-    /// A GFMD run to start (taken by the event loop).
     /// A GFMD run to start (taken by the event loop): run id, scene, cancel flag.
     pub(crate) gfmd_request: Option<(u64, Scene, Arc<AtomicBool>)>,
     pub(crate) gfmd_cancel: Option<Arc<AtomicBool>>,
@@ -166,23 +166,25 @@ pub enum GfmdState {
     /// None started (or the last was cancelled).
     #[default]
     Idle,
-    /// Running: id, the scene it runs, FIRE steps and residual so far.
+    /// Running: id, the scene it runs, its last progress report, when it started.
     Running {
         /// Run id.
         id: u64,
         /// The scene it runs.
         scene: Scene,
-        /// FIRE steps so far.
-        iteration: usize,
-        /// Residual so far.
-        residual: f64,
+        /// The last report: phase, solver steps, residual, time left.
+        progress: GfmdProgress,
+        /// When `g` started it (the panel's clock runs between reports).
+        started: std::time::Instant,
     },
-    /// Finished: the scene it ran and its outcome.
+    /// Finished: the scene it ran, its outcome and how long it took.
     Done {
         /// The scene it ran.
         scene: Scene,
         /// The result, or the error.
         result: std::result::Result<GfmdView, String>,
+        /// Seconds the whole job took (relaxation, sweep and the theory on the map).
+        elapsed_s: f64,
     },
 }
 
@@ -406,10 +408,10 @@ impl App {
             .any(|c| matches!(c, ChartKind::Scales | ChartKind::ScalesArea))
     }
 
-    /// Whether the event loop must tick without input (a computation runs, or the scale view
-    /// plays).
+    /// Whether the event loop must tick without input (a computation runs, GFMD runs: its
+    /// clock, or the scale view plays).
     pub fn animating(&self) -> bool {
-        self.busy || (self.playing && self.shows_scales())
+        self.busy || matches!(self.gfmd, GfmdState::Running { .. }) || (self.playing && self.shows_scales())
     }
 
     /// ū/h_rms at the current point, if computed.
@@ -469,7 +471,9 @@ impl App {
     /// matters for the theory, so it is not compared).
     pub fn gfmd_for_scene(&self) -> Option<&GfmdView> {
         match &self.gfmd {
-            GfmdState::Done { scene, result: Ok(v) } if same_system(scene, &self.scene) => Some(v),
+            GfmdState::Done {
+                scene, result: Ok(v), ..
+            } if same_system(scene, &self.scene) => Some(v),
             _ => None,
         }
     }

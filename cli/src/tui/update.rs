@@ -8,12 +8,9 @@ use super::kinds::ChartKind;
 use super::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
 use super::state::*;
 use super::tour::Tour;
-use asperity::error::Error;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
 
 impl App {
     /// Takes a worker reply: kept only if it belongs to the current scene.
@@ -56,49 +53,8 @@ impl App {
                     self.scales_shown = Some(key);
                 }
             }
-            Reply::GfmdProgress {
-                id,
-                iteration,
-                residual,
-            } => {
-                if let GfmdState::Running {
-                    id: cur,
-                    iteration: it,
-                    residual: res,
-                    ..
-                } = &mut self.gfmd
-                {
-                    if *cur == id {
-                        *it = iteration;
-                        *res = residual;
-                        self.spinner = self.spinner.wrapping_add(1);
-                    }
-                }
-            }
-            Reply::GfmdDone { id, result } => {
-                if let GfmdState::Running { id: cur, scene, .. } = &self.gfmd {
-                    if *cur == id {
-                        let scene = scene.clone();
-                        self.gfmd_cancel = None;
-                        if self
-                            .message
-                            .as_ref()
-                            .is_some_and(|m| m.text.starts_with("GFMD started"))
-                        {
-                            self.message = None;
-                        }
-                        match result {
-                            Err(Error::Cancelled) => self.gfmd = GfmdState::Idle,
-                            r => {
-                                self.gfmd = GfmdState::Done {
-                                    scene,
-                                    result: r.map_err(|e| e.to_string()),
-                                }
-                            }
-                        }
-                    }
-                }
-            }
+            Reply::GfmdProgress { id, progress } => self.on_gfmd_progress(id, progress),
+            Reply::GfmdDone { id, result, elapsed_s } => self.on_gfmd_done(id, result, elapsed_s),
             Reply::Done { gen } => {
                 if gen == self.gen {
                     self.busy = false;
@@ -125,32 +81,6 @@ impl App {
             "pinned ({n} of {}): u unpins the newest, U all",
             super::pins::MAX_PINS
         ));
-    }
-
-    /// `g`: asks for a GFMD run of the current scene on the preset's reduced grid, or cancels
-    /// the running one.
-    pub fn toggle_gfmd(&mut self) {
-        if let GfmdState::Running { .. } = self.gfmd {
-            if let Some(c) = self.gfmd_cancel.take() {
-                c.store(true, Ordering::Relaxed);
-            }
-            self.gfmd = GfmdState::Idle;
-            self.gfmd_request = None;
-            self.info("GFMD cancelled");
-            return;
-        }
-        self.gfmd_next += 1;
-        let id = self.gfmd_next;
-        let cancel = Arc::new(AtomicBool::new(false));
-        self.gfmd_cancel = Some(cancel.clone());
-        self.gfmd_request = Some((id, self.scene.clone(), cancel));
-        self.gfmd = GfmdState::Running {
-            id,
-            scene: self.scene.clone(),
-            iteration: 0,
-            residual: f64::NAN,
-        };
-        self.info("GFMD started on the preset's reduced grid (g cancels)");
     }
 
     /// Handles one key press.

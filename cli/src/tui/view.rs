@@ -31,8 +31,11 @@ pub fn draw(f: &mut Frame, app: &App) {
     }
     let status_line = status_line(app, pal);
     // messages wrap onto up to STATUS_ROWS rows; the key hint is cut instead
-    let is_hint =
-        app.edit.is_none() && app.message.is_none() && app.compute_error().is_none() && app.compute_warning().is_none();
+    let is_hint = app.edit.is_none()
+        && app.message.is_none()
+        && app.compute_error().is_none()
+        && app.compute_warning().is_none()
+        && app.gfmd_status().is_none();
     let status_rows = if is_hint {
         1
     } else {
@@ -155,6 +158,8 @@ fn status_line(app: &App, pal: Palette) -> Line<'static> {
         Line::from(Span::styled(format!(" {e}"), pal.error()))
     } else if let Some(w) = app.compute_warning() {
         Line::from(Span::raw(format!(" {w}")))
+    } else if let Some(g) = app.gfmd_status() {
+        Line::from(Span::raw(format!(" {g}")))
     } else if app.tour.is_some() {
         Line::from(Span::styled(
             " ←→ step  h l change  ↑↓ pick  v chart  f focus  M models  s save  Esc leaves tour",
@@ -200,11 +205,14 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
         let inner = block.inner(area);
         f.render_widget(block, area);
         if inner.height > 0 {
-            let y = inner.y + inner.height / 2;
-            let h = (inner.y + inner.height - y).min(3);
+            // centred, over as many rows as the reason needs (a failure's whole message)
+            let rows = wrapped_rows(Span::raw(msg.as_str()).width(), inner.width);
+            // a row to spare where words wrap early
+            let h = if rows > 1 { rows + 1 } else { rows }.min(inner.height);
+            let y = inner.y + (inner.height - h) / 2;
             f.render_widget(
                 Paragraph::new(msg.clone()).centered().wrap(Wrap { trim: true }),
-                Rect::new(inner.x, y.saturating_sub(h / 2), inner.width, h),
+                Rect::new(inner.x, y, inner.width, h),
             );
         }
         return;

@@ -31,6 +31,22 @@ pub fn describe(e: &Error) -> String {
     }
 }
 
+/// The gist of an engine message, for a chart's title: its innermost reason (what follows
+/// the last "did not converge: " or "unavailable: ") up to the first parenthesis, colon or
+/// semicolon. The chart's body and the status line carry the whole message.
+pub fn brief(msg: &str) -> String {
+    let mut s = msg;
+    while let Some((i, n)) = ["did not converge: ", "unavailable: "]
+        .iter()
+        .filter_map(|m| s.find(m).map(|i| (i, m.len())))
+        .min()
+    {
+        s = &s[i + n..];
+    }
+    let cut = s.find([';', ':', '(']).unwrap_or(s.len());
+    s[..cut].trim().trim_end_matches(',').to_string()
+}
+
 /// A value with `n` significant digits, compact.
 pub fn sig(x: f64, n: usize) -> String {
     if !x.is_finite() {
@@ -64,5 +80,18 @@ mod tests {
         assert!(!s.contains("--") && !s.contains("load.thickness_qr"), "{s}");
         assert_eq!(describe(&Error::Cancelled), "cancelled");
         assert_eq!(field_label(&Field::Hurst), "preset surface.hurst");
+    }
+
+    #[test]
+    fn the_gist_of_a_message_is_its_innermost_reason() {
+        let gap = "mean gap did not converge: 16 of 62 loads did not converge (the first: x); their rows are \
+                   empty (null); mean gap unavailable: mean gap (energy route) did not converge: the stored \
+                   elastic energy falls from p* = 1.4250e0 to 1.5735e0 (by 1.23e-4 of its range): the loads";
+        assert_eq!(
+            brief(gap),
+            "the stored elastic energy falls from p* = 1.4250e0 to 1.5735e0"
+        );
+        assert_eq!(brief("invalid p* = -1: allowed p* > 0"), "invalid p* = -1");
+        assert_eq!(brief("cancelled"), "cancelled");
     }
 }

@@ -36,8 +36,18 @@ fn thickness_sweep_tends_to_the_semi_infinite_body() {
         .unwrap();
     let t0 = std::time::Instant::now();
     let td = thickness_sweep(&scene, &AtomicBool::new(false)).unwrap();
-    eprintln!("system-2 thickness sweep: {:.2} s", t0.elapsed().as_secs_f64());
-    assert_eq!(td.t.len(), THICKNESS_POINTS);
+    eprintln!(
+        "system-2 thickness sweep: {:.2} s, {} thicknesses, window edges {:?} {:?}",
+        t0.elapsed().as_secs_f64(),
+        td.t.len(),
+        td.jump_in,
+        td.pull_off
+    );
+    // the chart's grid, and any thickness found inside a window between two of its points
+    let grid = super::data::log_grid(THICKNESS_RANGE.0, THICKNESS_RANGE.1, THICKNESS_POINTS);
+    assert!(grid.iter().all(|g| td.t.contains(g)), "{:?}", td.t);
+    assert!(td.t.len() >= THICKNESS_POINTS && td.t.windows(2).all(|w| w[0] < w[1]));
+    assert_eq!(td.adhesionless.as_ref().map(|v| v.len()), Some(td.t.len()));
     assert!((td.t[0] / THICKNESS_RANGE.0 - 1.0).abs() < 1e-12);
     // the thickest slab (t·q_r = 100) is the semi-infinite body to chart accuracy
     let last = *td.a_r.last().unwrap();

@@ -153,6 +153,17 @@ fn check_load(p: f64) -> Result<()> {
 /// used; nothing adhesive is solved again): the adhesionless table of the scene from p* up to
 /// full contact and the load each stable branch's contact carries ([`state`]).
 pub fn mean_gap_of(scene: &Scene, ev: &Evaluation, opts: &crate::theory::engine::Options) -> Result<MeanGap> {
+    mean_gap_of_cancellable(scene, ev, opts, None)
+}
+
+/// [`mean_gap_of`], abandoned with [`crate::Error::Cancelled`] between the loads of its
+/// adhesionless table when `cancel` is set.
+pub fn mean_gap_of_cancellable(
+    scene: &Scene,
+    ev: &Evaluation,
+    opts: &crate::theory::engine::Options,
+    cancel: Option<&std::sync::atomic::AtomicBool>,
+) -> Result<MeanGap> {
     let p = scene.pressure;
     check_load(p)?;
     let unit = crate::theory::energy::energy_unit(scene);
@@ -170,7 +181,7 @@ pub fn mean_gap_of(scene: &Scene, ev: &Evaluation, opts: &crate::theory::engine:
         };
         return Ok(assemble(zero, None, h_rms, energy_reduced, stored_energy_reduced));
     }
-    let dry = DryGap::new(scene, p, opts)?;
+    let dry = DryGap::new_cancellable(scene, p, opts, cancel)?;
     let (loading, unloading) = branch_gaps(&dry, p, ev)?;
     Ok(assemble(
         loading,

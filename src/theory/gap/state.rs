@@ -65,13 +65,24 @@ pub struct BranchGap {
 impl DryGap {
     /// The adhesionless table of `scene` (its γ_s set to 0) from `p_lo` to full contact.
     pub fn new(scene: &Scene, p_lo: f64, opts: &Options) -> Result<DryGap> {
+        DryGap::new_cancellable(scene, p_lo, opts, None)
+    }
+
+    /// [`DryGap::new`], abandoned with [`crate::Error::Cancelled`] between its loads when
+    /// `cancel` is set.
+    pub fn new_cancellable(
+        scene: &Scene,
+        p_lo: f64,
+        opts: &Options,
+        cancel: Option<&std::sync::atomic::AtomicBool>,
+    ) -> Result<DryGap> {
         let mut dry = scene.clone();
         dry.gamma = 0.0;
         dry.pressure = p_lo;
         dry.validate()?;
         let (x0, h, n) = super::grid_from(&dry, p_lo, super::GAP_STEP_LN);
         let ps: Vec<f64> = (0..n).map(|i| (x0 + i as f64 * h).exp()).collect();
-        let evs = crate::theory::loads::evaluations(&dry, &ps, opts, None)?;
+        let evs = crate::theory::loads::evaluations(&dry, &ps, opts, cancel)?;
         DryGap::from_evaluations(&dry, x0, h, &evs)
     }
 
