@@ -1,6 +1,7 @@
 //! The GFMD job of `g` as plain data: its phases (the relaxation at p*, the theory on the map,
 //! each load of the sweep, the theory's sweep on the map), a progress report, the estimate of
-//! the time left, and the words the panel and the status line show.
+//! the time left, the job's state in the explorer ([`GfmdState`]), and the words the panel and
+//! the status line show.
 //!
 //! Estimate of the time left ([`eta_s`]): each phase still to run is given the duration of
 //! finished phases like it (a load: the mean of the finished loads, or the relaxation's before
@@ -9,6 +10,8 @@
 //! what it has run. Until the relaxation and the theory at p* have both finished there is no
 //! estimate ("estimating").
 
+use super::data::GfmdView;
+use asperity::input::scene::Scene;
 use std::time::Instant;
 
 /// One phase of the GFMD job, in the order the job runs them ([`plan`]).
@@ -252,6 +255,44 @@ impl Timeline {
             eta_s: eta_s(&self.plan, &self.done, self.phase_start.elapsed().as_secs_f64()),
         }
     }
+}
+
+/// The state of the background GFMD run.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum GfmdState {
+    /// None started (or the last was cancelled).
+    #[default]
+    Idle,
+    /// Running: id, the scene it runs, its last progress report, when it started.
+    Running {
+        /// Run id.
+        id: u64,
+        /// The scene it runs.
+        scene: Scene,
+        /// The last report: phase, solver steps, residual, time left.
+        progress: GfmdProgress,
+        /// When `g` started it (the panel's clock runs between reports).
+        started: std::time::Instant,
+    },
+    /// Finished: the scene it ran, its outcome and how long it took.
+    Done {
+        /// The scene it ran.
+        scene: Scene,
+        /// The result, or the error.
+        result: std::result::Result<GfmdView, String>,
+        /// Seconds the whole job took (relaxation, sweep and the theory on the map).
+        elapsed_s: f64,
+    },
+}
+
+/// Whether two scenes describe the same physical system (GFMD does not depend on the model).
+pub(crate) fn same_system(a: &Scene, b: &Scene) -> bool {
+    a.spectrum() == b.spectrum()
+        && a.contact_modulus_pa() == b.contact_modulus_pa()
+        && a.pressure() == b.pressure()
+        && a.thickness_qr().to_bits() == b.thickness_qr().to_bits()
+        && a.surface_energy_j_m2() == b.surface_energy_j_m2()
+        && a.range_m() == b.range_m()
 }
 
 #[cfg(test)]

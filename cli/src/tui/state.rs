@@ -6,7 +6,8 @@
 use super::data::{GfmdView, PointData, ScaleFrame, ScalesData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
 use super::kinds::{self as charts, ChartKind, Needs};
 pub use super::knobs::*;
-use super::progress::GfmdProgress;
+use super::progress::same_system;
+pub use super::progress::GfmdState;
 use super::protocol::{point_key, scales_key, sweep_key, thickness_key, CacheKey, Request};
 use super::tour::Tour;
 use asperity::error::Result;
@@ -158,44 +159,6 @@ pub struct App {
     /// Work the last keys asked for that touches the outside world (files), done by
     /// [`super::effects::apply`].
     pub effects: Vec<Effect>,
-}
-
-/// The state of the background GFMD run.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub enum GfmdState {
-    /// None started (or the last was cancelled).
-    #[default]
-    Idle,
-    /// Running: id, the scene it runs, its last progress report, when it started.
-    Running {
-        /// Run id.
-        id: u64,
-        /// The scene it runs.
-        scene: Scene,
-        /// The last report: phase, solver steps, residual, time left.
-        progress: GfmdProgress,
-        /// When `g` started it (the panel's clock runs between reports).
-        started: std::time::Instant,
-    },
-    /// Finished: the scene it ran, its outcome and how long it took.
-    Done {
-        /// The scene it ran.
-        scene: Scene,
-        /// The result, or the error.
-        result: std::result::Result<GfmdView, String>,
-        /// Seconds the whole job took (relaxation, sweep and the theory on the map).
-        elapsed_s: f64,
-    },
-}
-
-/// Whether two scenes describe the same physical system (GFMD does not depend on the model).
-pub(crate) fn same_system(a: &Scene, b: &Scene) -> bool {
-    a.spectrum() == b.spectrum()
-        && a.contact_modulus_pa() == b.contact_modulus_pa()
-        && a.pressure() == b.pressure()
-        && a.thickness_qr().to_bits() == b.thickness_qr().to_bits()
-        && a.surface_energy_j_m2() == b.surface_energy_j_m2()
-        && a.range_m() == b.range_m()
 }
 
 impl App {
