@@ -133,3 +133,64 @@ fn the_gfmd_csv_lists_the_run_its_sweep_and_the_theory_on_the_map() {
     let run = rows.iter().find(|r| r[0] == "gfmd" && num(&r[1]) == Some(p)).unwrap();
     assert_eq!(num(&run[4]), Some(0.5));
 }
+
+#[test]
+fn the_thickness_csv_has_the_window_its_edges_and_the_reference() {
+    use asperity::theory::engine::CHART_EDGE_REL;
+    use asperity::theory::hysteresis::{knob_edges, EdgeKind};
+    use asperity::theory::knob::{knob_sweep, Knob, KnobSpec};
+    let dir = std::env::temp_dir().join(format!("asperity-export-thickness-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut app = App::new("system-2", Preset::resolve("system-2").unwrap()).unwrap();
+    app.export_dir = dir.clone();
+    app.set_typed(Param::Model, "3").unwrap();
+    app.set_typed(Param::Gamma, "0.1256").unwrap();
+    app.set_typed(Param::Pressure, "1e-5").unwrap();
+    app.set_charts([ChartKind::Thickness, ChartKind::Pr, ChartKind::Area]);
+    asperity_cli::tui::worker::compute_now(&mut app, &mut Default::default());
+    let paths = export(&app).unwrap();
+    let csv = std::fs::read_to_string(paths.iter().find(|p| p.ends_with("-thickness.csv")).unwrap()).unwrap();
+    let (header, rows, comments) = parse(&csv);
+    assert_eq!(header, ["thickness_qr", "a_r", "a_r_unloading", "a_r_adhesionless"]);
+    let edge = |k: &str| -> f64 {
+        let v = &comments
+            .iter()
+            .find(|(key, _)| key == k)
+            .unwrap_or_else(|| panic!("{k}"))
+            .1;
+        v.split(' ')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap_or_else(|_| panic!("{k}: {v}"))
+    };
+    let (jump_in, pull_off) = (edge("jump_in_thickness_qr"), edge("pull_off_thickness_qr"));
+    // the library's own edges, bisected to its default precision from a sweep of its own
+    // (around the chart's window, fine enough to land inside it)
+    let scene = app.scene.clone();
+    let spec = KnobSpec {
+        knob: Knob::Thickness,
+        from: 0.9 * jump_in,
+        to: 1.1 * pull_off,
+        points: 24,
+    };
+    let pts = knob_sweep(&scene, &spec, &Options::default(), false, None).unwrap();
+    let edges = knob_edges(&scene, Knob::Thickness, &pts, &Options::default().adhesion, None).unwrap();
+    let want = |kind: EdgeKind| edges.iter().find(|e| e.kind == kind).unwrap().value;
+    for (got, w) in [(jump_in, want(EdgeKind::JumpIn)), (pull_off, want(EdgeKind::PullOff))] {
+        assert!((got / w - 1.0).abs() < 2.0 * CHART_EDGE_REL, "edge {got} vs {w}");
+    }
+    // the unloading branch only inside the window, above the loading one; the adhesionless
+    // reference below both
+    for r in &rows {
+        let t = num(&r[0]).unwrap();
+        if let Some(u) = num(&r[2]) {
+            assert!(t > jump_in * 0.97 && t < pull_off * 1.03, "unloading at t·q_r {t}");
+            assert!(u > num(&r[1]).unwrap(), "{r:?}");
+        }
+        if let (Some(a), Some(d)) = (num(&r[1]), num(&r[3])) {
+            assert!(d <= a * (1.0 + CHART_ACCURACY_REL), "adhesion adds contact: {r:?}");
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -2,6 +2,7 @@
 //! `--preset PATH`) into the export directory, under names that never overwrite:
 //! `asperity-NAME-N-pr.csv`, `asperity-NAME-N-loads.csv` (both branches of a hysteresis and
 //! its edges, [`loads_csv`]), `asperity-NAME-N-gfmd.csv` (after `g`, [`gfmd_csv`]),
+//! `asperity-NAME-N-thickness.csv` (with the thickness chart shown, [`thickness_csv`]),
 //! `asperity-NAME-N-pins.csv` (pinned curves), `asperity-NAME-N-scales.csv` (the scale view)
 //! and `asperity-NAME-N.toml`. The CSVs start with `#` lines describing the scene;
 //! unavailable values are empty cells.
@@ -10,7 +11,7 @@
 //! the chart renderer ([`crate::chart`]), from the same [`ChartModel`]s the screen shows.
 
 use super::charts::{self, ChartKind, ChartModel, Role};
-use super::data::{GfmdView, SweepData};
+use super::data::{GfmdView, SweepData, ThicknessData};
 use super::plot::Scale;
 use super::state::App;
 use crate::chart::{self, ChartSpec, Series, SeriesStyle};
@@ -101,6 +102,15 @@ pub fn export(app: &App) -> Result<Vec<String>> {
         write(&path, &(scene_comment(app, &stem) + &loads_csv(sw)))?;
         paths.push(path.display().to_string());
     }
+    if let Some(Ok(th)) = app
+        .thickness
+        .as_ref()
+        .filter(|_| app.charts.contains(&ChartKind::Thickness))
+    {
+        let path = dir.join(format!("{stem}-thickness.csv"));
+        write(&path, &(scene_comment(app, &stem) + &thickness_csv(th)))?;
+        paths.push(path.display().to_string());
+    }
     if let Some(g) = app
         .gfmd_for_scene()
         .filter(|g| !g.sweep.is_empty() || g.a_r.is_finite())
@@ -182,6 +192,38 @@ pub fn loads_csv(sw: &SweepData) -> String {
             cell(at(&sw.gap_upper, i)),
             cell(at(&sw.a_r_unloading, i)),
             cell(at(&sw.gap_unloading, i)),
+        );
+    }
+    t
+}
+
+/// The thickness chart as CSV (with the thickness chart shown): a_r against t·q_r at the
+/// scene's p* — the loading branch, the unloading branch inside a hysteresis window (empty
+/// cells elsewhere), the adhesionless reference — and the windows' edges as `#` lines
+/// (`# jump_in_thickness_qr: …` where the small contact ends, thinner; `#
+/// pull_off_thickness_qr: …` where the large one ends, thicker); `# a_r_half_space:` is t = ∞.
+pub fn thickness_csv(th: &ThicknessData) -> String {
+    let list = |v: &[f64]| {
+        if v.is_empty() {
+            "none in the range".to_string()
+        } else {
+            v.iter().map(|x| format!("{x:e}")).collect::<Vec<_>>().join(" ")
+        }
+    };
+    let mut t = String::new();
+    let _ = writeln!(t, "# a_r_half_space: {}", cell(th.a_r_inf));
+    let _ = writeln!(t, "# jump_in_thickness_qr: {}", list(&th.jump_in));
+    let _ = writeln!(t, "# pull_off_thickness_qr: {}", list(&th.pull_off));
+    t.push_str("thickness_qr,a_r,a_r_unloading,a_r_adhesionless\n");
+    for i in 0..th.t.len() {
+        let dry = th.adhesionless.as_deref().map_or(f64::NAN, |d| at(d, i));
+        let _ = writeln!(
+            t,
+            "{},{},{},{}",
+            cell(th.t[i]),
+            cell(th.a_r[i]),
+            cell(at(&th.a_r_unloading, i)),
+            cell(dry)
         );
     }
     t
