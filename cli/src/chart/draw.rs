@@ -83,6 +83,15 @@ fn legend_corner(spec: &ChartSpec) -> SeriesLabelPosition {
         .unwrap_or(SeriesLabelPosition::UpperRight)
 }
 
+/// `v` as 0 where it is zero up to round-off on a linear axis of length `span`.
+pub(crate) fn snap_zero(v: f64, span: f64, log: bool) -> f64 {
+    if !log && v.abs() <= 1e-9 * span.abs() {
+        0.0
+    } else {
+        v
+    }
+}
+
 fn plot<DB, X, Y>(root: &DrawingArea<DB, Shift>, spec: &ChartSpec, scale: f64, x: X, y: Y) -> std::io::Result<()>
 where
     DB: DrawingBackend,
@@ -100,15 +109,19 @@ where
         .y_label_area_size(px(74.0))
         .build_cartesian_2d(x, y)
         .map_err(io_err)?;
-    let fmt = |v: &f64| tick_label(*v);
+    // a tick at zero on a linear axis comes out of the tick arithmetic as ±1e-18 or so
+    let (x0, x1) = axis_range(spec, true);
+    let (y0, y1) = axis_range(spec, false);
+    let fmt_x = |v: &f64| tick_label(snap_zero(*v, x1 - x0, spec.x_log));
+    let fmt_y = |v: &f64| tick_label(snap_zero(*v, y1 - y0, spec.y_log));
     chart
         .configure_mesh()
         .x_desc(spec.x_label.as_str())
         .y_desc(spec.y_label.as_str())
         .x_labels(8)
         .y_labels(8)
-        .x_label_formatter(&fmt)
-        .y_label_formatter(&fmt)
+        .x_label_formatter(&fmt_x)
+        .y_label_formatter(&fmt_y)
         .label_style(font(14.0))
         .axis_desc_style(font(16.0))
         .light_line_style(RGBColor(244, 244, 244))

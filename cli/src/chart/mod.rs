@@ -324,6 +324,10 @@ mod tests {
         assert_eq!(tick_label(1e-5), "1e-5");
         assert_eq!(tick_label(2.5e-5), "2.5e-5");
         assert_eq!(tick_label(-0.25), "-0.25");
+        // a zero tick off by round-off reads 0 on a linear axis, not 1.73e-18
+        assert_eq!(tick_label(draw::snap_zero(1.73e-18, 0.045, false)), "0");
+        assert_eq!(tick_label(draw::snap_zero(1e-5, 0.045, false)), "1e-5");
+        assert_eq!(tick_label(draw::snap_zero(1e-18, 1.0, true)), "1e-18");
     }
 
     #[test]

@@ -337,8 +337,9 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
             s.points.clone()
         };
         series.push(Series {
+            // the current point is p* on the load charts, q on the scale view's
             name: if s.role == Role::Current {
-                "current p*".into()
+                format!("current {}", s.name)
             } else {
                 s.name.clone()
             },
