@@ -12,6 +12,8 @@
 //! And `asperity figure`: every figure's series are told apart the same way, and a model has
 //! one colour in every figure.
 
+mod common;
+
 use asperity::input::model::ModelKind;
 use asperity::input::preset::{Preset, ReferencePoint};
 use asperity::surface::spectrum::Spectrum;
@@ -20,7 +22,7 @@ use asperity_cli::chart::{ChartSpec, SeriesStyle};
 use asperity_cli::looks::{model_colour, Ink, Role};
 use asperity_cli::tui::app::{App, Param};
 use asperity_cli::tui::charts::{self, ChartKind, ChartModel};
-use asperity_cli::tui::data::{GfmdView, SweepData};
+use asperity_cli::tui::data::SweepData;
 use asperity_cli::tui::export::chart_spec;
 use asperity_cli::tui::legend::{self, Entry};
 use asperity_cli::tui::pins::{Pin, MAX_PINS};
@@ -60,30 +62,10 @@ fn compute_all(a: &mut App) {
 fn with_gfmd(a: &mut App) {
     key(a, 'g');
     let (id, _, _) = a.take_gfmd_request().expect("g starts a run");
-    let pr: Vec<(f64, f64)> = (0..60)
-        .map(|i| {
-            let s = -0.5 + 2.2 * (i as f64 + 0.5) / 60.0;
-            (s, 0.04 * (-(s - 0.3) * (s - 0.3) / 0.3).exp())
-        })
-        .collect();
     a.on_reply(Reply::GfmdDone {
         id,
         elapsed_s: 1.0,
-        result: Ok(GfmdView {
-            pressure: a.scene.pressure(),
-            a_r: 0.0418,
-            mean_contact_stress: 0.2434,
-            gap_rel: 1.4,
-            pr,
-            grid: 512,
-            iterations: 475,
-            elapsed_s: 1.0,
-            theory_a_r: Some(0.0299),
-            sweep: vec![(0.0033, 0.015, 2.0), (0.03, 0.11, 0.9)],
-            theory_sweep: vec![(0.0033, 0.011, 2.1), (0.01, 0.03, 1.5), (0.03, 0.09, 0.95)],
-            invariants: vec![],
-            sweep_error: None,
-        }),
+        result: Ok(common::synthetic_gfmd(a.scene.pressure())),
     });
     assert!(a.gfmd_for_scene().is_some());
 }

@@ -2,6 +2,8 @@
 //! comfortable size (80×24) and a large one (160×48), plus overlays, tiny sizes and bad data.
 //! Rendering is deterministic: results are computed synchronously and timings are hidden.
 
+mod common;
+
 use asperity::input::preset::Preset;
 use asperity_cli::tui::app::App;
 use asperity_cli::tui::charts::ChartKind;
@@ -212,29 +214,11 @@ fn gfmd_overlay_with_a_synthetic_run() {
         },
     });
     insta::assert_snapshot!("gfmd_running_80x24", render(&a, 80, 24));
-    // a histogram shaped like the theory, a little wider
-    let pr: Vec<(f64, f64)> = (0..60)
-        .map(|i| {
-            let s = -0.5 + 2.2 * (i as f64 + 0.5) / 60.0;
-            (s, 0.04 * (-(s - 0.3) * (s - 0.3) / 0.3).exp())
-        })
-        .collect();
     a.on_reply(Reply::GfmdDone {
         id,
         result: Ok(GfmdView {
-            pressure: a.scene.pressure(),
-            a_r: 0.0418,
-            mean_contact_stress: 0.2434,
-            gap_rel: 1.4,
-            pr,
-            grid: 512,
-            iterations: 475,
-            elapsed_s: 1.0,
-            theory_a_r: Some(0.0299),
-            sweep: vec![(0.0033, 0.015, 2.0), (0.03, 0.11, 0.9)],
-            theory_sweep: vec![(0.0033, 0.011, 2.1), (0.01, 0.03, 1.5), (0.03, 0.09, 0.95)],
             invariants: vec![("GFMD γ̃".into(), "0.024 (full 0.024)".into())],
-            sweep_error: None,
+            ..common::synthetic_gfmd(a.scene.pressure())
         }),
         elapsed_s: 49.8,
     });

@@ -1,5 +1,6 @@
-//! Rendering: a title bar, the parameter panel with read-outs, three charts (Pr(σ*), a_r(p*),
-//! ū(p*)) and a status bar; the help and preset overlays; a "terminal too small" screen.
+//! Rendering: a title bar, the parameter panel with read-outs, the chart panels (three, or
+//! fewer where the terminal is short: [`super::layout`]), the tour's caption and a status bar;
+//! the help and preset overlays; a "terminal too small" screen.
 //! Pure function of the [`App`]; every chart goes through [`super::plot`].
 
 use super::charts::{self, ChartModel, Draw};

@@ -61,3 +61,30 @@ pub fn asperity_here_ok(args: &[&str]) -> String {
     );
     String::from_utf8(out.stdout).expect("utf-8 output")
 }
+
+/// A finished GFMD run for the explorer's tests at load `p`: a histogram shaped like the
+/// theory of system 1 at p* = 0.01 and a little wider, a 512² grid, two sweep loads and the
+/// theory on the map at three.
+pub fn synthetic_gfmd(p: f64) -> asperity_cli::tui::data::GfmdView {
+    let pr: Vec<(f64, f64)> = (0..60)
+        .map(|i| {
+            let s = -0.5 + 2.2 * (i as f64 + 0.5) / 60.0;
+            (s, 0.04 * (-(s - 0.3) * (s - 0.3) / 0.3).exp())
+        })
+        .collect();
+    asperity_cli::tui::data::GfmdView {
+        pressure: p,
+        a_r: 0.0418,
+        mean_contact_stress: 0.2434,
+        gap_rel: 1.4,
+        pr,
+        grid: 512,
+        iterations: 475,
+        elapsed_s: 1.0,
+        theory_a_r: Some(0.0299),
+        sweep: vec![(0.0033, 0.015, 2.0), (0.03, 0.11, 0.9)],
+        theory_sweep: vec![(0.0033, 0.011, 2.1), (0.01, 0.03, 1.5), (0.03, 0.09, 0.95)],
+        invariants: vec![],
+        sweep_error: None,
+    }
+}
