@@ -680,6 +680,14 @@ fn a_thickness_sweep_finds_the_window_edges_in_t() {
     };
     let pts = knob::knob_sweep(&s, &spec, &opts, false, None).unwrap();
     let edges = hysteresis::knob_edges(&s, Knob::Thickness, &pts, &opts.adhesion, None).unwrap();
+    // a precision outside the engine's range is refused before any bisection
+    for rel in [0.0, -0.1, f64::NAN, 0.9] {
+        let r = hysteresis::knob_edges_to(&s, Knob::Thickness, &pts, &opts.adhesion, rel, None);
+        assert!(
+            matches!(r, Err(asperity::error::Error::Invalid { .. })),
+            "rel {rel}: {r:?}"
+        );
+    }
     for p in &pts {
         let e = p.result.as_ref().unwrap();
         eprintln!(

@@ -57,7 +57,8 @@ pub fn knob_edges(
 /// number of threads.
 ///
 /// # Errors
-/// As [`crate::theory::adhesion::solve`].
+/// [`crate::error::Error::Invalid`] for `rel` outside
+/// [`crate::theory::engine::EDGE_REL_RANGE`]; else as [`crate::theory::adhesion::solve`].
 pub fn knob_edges_to(
     scene: &Scene,
     knob: crate::theory::knob::Knob,
@@ -68,6 +69,8 @@ pub fn knob_edges_to(
 ) -> Result<Vec<KnobEdge>> {
     use crate::theory::knob::Knob;
     use rayon::prelude::*;
+    let (lo, hi) = crate::theory::engine::EDGE_REL_RANGE;
+    crate::error::check_in(crate::error::Field::EdgeRel, rel, lo, hi)?;
     let stable = |e: &crate::theory::engine::Evaluation| -> Vec<f64> {
         e.branches.iter().filter(|b| b.stable).map(|b| b.a_r).collect()
     };
