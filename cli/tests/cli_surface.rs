@@ -1,6 +1,7 @@
 //! Measured surfaces end to end: `psd`, and `run`, `sweep`, `gfmd` on a shipped map that is not
 //! self-affine (tests/fixtures/two_bands.txt: two bands of roughness, one anisotropic), and the
-//! theory on the CSV table of an ideal self-affine spectrum against the preset's analytic one.
+//! theory on the CSV table of an ideal self-affine spectrum against the preset's analytic one;
+//! `figure` on the map against `run` and `gfmd` on it.
 
 mod common;
 
@@ -183,6 +184,12 @@ fn bad_surface_input_is_one_line_and_exit_2() {
         (vec!["run", "--size", "1e-6"], "missing --surface"),
         (vec!["gfmd", "--psd", csv.as_str()], "none for gfmd"),
         (vec!["run", "--surface", MAP, "--qmin", "1e20"], "--qmin"),
+        (vec!["figure", "2", "--psd", csv.as_str(), "--gfmd"], "--psd"),
+        (
+            vec!["figure", "2", "--surface", MAP, "--gfmd", "--grid", "64"],
+            "--grid",
+        ),
+        (vec!["figure", "table-1", "--surface", MAP], "none for table-1"),
     ] {
         let out = asperity(&args);
         let err = String::from_utf8_lossy(&out.stderr);
@@ -190,4 +197,97 @@ fn bad_surface_input_is_one_line_and_exit_2() {
         assert!(err.contains(needle), "{args:?}: {err}");
         assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
     }
+}
+
+/// `figure --surface`: every curve is `run` on the map at the figure's x values, the paper's
+/// values (of its surfaces) are left out, and `--gfmd` runs on the map as `gfmd --surface` does.
+#[test]
+fn figures_on_the_two_band_map_are_run_on_it() {
+    let on = ["--surface", MAP, "--periodic"];
+    let mut args = vec!["figure", "7", "--format", "csv", "--points", "4"];
+    args.extend(on);
+    let csv = ok(&args);
+    let mut checked = 0;
+    for (series, model, gamma) in [
+        ("model 3", "3", None),
+        ("model 4", "4", None),
+        ("adhesionless (model 4)", "4", Some("0")),
+    ] {
+        for line in csv.lines().skip(1).filter(|l| l.starts_with(&format!("{series},"))) {
+            let c: Vec<&str> = line.splitn(4, ',').collect();
+            let t: f64 = c[1].parse().unwrap();
+            // the file's thicknesses 0.01, 0.1, 1, 10 among the points refinement added
+            if ((t.log10() * 1e6).round() / 1e6).fract() != 0.0 || c[2].is_empty() {
+                continue;
+            }
+            let y: f64 = c[2].parse().unwrap();
+            let mut run = vec![
+                "run",
+                "--preset",
+                "system-2",
+                "--pressure",
+                "0.005",
+                "--model",
+                model,
+                "--thickness",
+                c[1],
+            ];
+            run.extend(on);
+            if let Some(g) = gamma {
+                run.extend(["--gamma", g]);
+            }
+            let want = json(&run)["a_r"].as_f64().unwrap();
+            assert!((y - want).abs() <= 1e-9, "{series} t = {t}: figure {y} run {want}");
+            checked += 1;
+        }
+    }
+    assert!(checked >= 9, "too few points compared: {checked}\n{csv}");
+    // the adhesionless curve on this map is not the preset's
+    let preset = ok(&["figure", "7", "--format", "csv", "--points", "4"]);
+    let at = |csv: &str| {
+        csv.lines()
+            .filter_map(|l| l.strip_prefix("adhesionless (model 4),"))
+            .map(|l| {
+                l.split(',')
+                    .map(|c| c.parse::<f64>().unwrap_or(f64::NAN))
+                    .collect::<Vec<_>>()
+            })
+            .find(|c| (c[0] / 0.1 - 1.0).abs() < 1e-9)
+            .map(|c| c[1])
+            .expect("a point at t·q_r = 0.1")
+    };
+    let (mine, theirs) = (at(&csv), at(&preset));
+    assert!(
+        (mine / theirs - 1.0).abs() > 0.01,
+        "the map's spectrum was not used: {mine} {theirs}"
+    );
+
+    let mut args = vec!["figure", "5", "--gfmd", "--format", "json", "--points", "3"];
+    args.extend(on);
+    let v = json(&args);
+    assert_eq!(v["spectrum_source"], MAP);
+    assert!(v["title"].as_str().unwrap().ends_with(&format!("on {MAP}")));
+    let series = v["series"].as_array().unwrap();
+    assert!(
+        series.iter().all(|s| !s["name"].as_str().unwrap().starts_with("[S]")),
+        "the paper's values drawn on a measured map"
+    );
+    let notes = v["notes"].to_string();
+    assert!(notes.contains("not drawn on"), "{notes}");
+    let find = |prefix: &str| {
+        series
+            .iter()
+            .find(|s| s["name"].as_str().unwrap().starts_with(prefix))
+            .unwrap_or_else(|| panic!("{prefix}: {series:?}"))["points"]
+            .as_array()
+            .unwrap()
+            .clone()
+    };
+    let (g, t) = (find("GFMD"), find("theory on the GFMD map"));
+    let p = format!("{:e}", g[1]["x"].as_f64().unwrap());
+    let mut run = vec!["gfmd", "--preset", "system-1", "--gamma", "0", "--pressure", &p];
+    run.extend(on);
+    let want = json(&run);
+    assert_eq!(g[1]["y"].as_f64(), want["mean_contact_stress"].as_f64());
+    assert_eq!(t[1]["y"].as_f64(), want["theory"]["mean_contact_stress"].as_f64());
 }

@@ -1,5 +1,5 @@
-//! The public interface: the JSON keys of `run`, `sweep`, `gfmd` and the bench report's rungs,
-//! and the CSV columns of `sweep` and `gfmd`, as first published. Scripts
+//! The public interface: the JSON keys of `run`, `sweep`, `gfmd`, `figure` and the bench report's rungs,
+//! and the CSV columns of `sweep`, `gfmd` and `figure`, as first published. Scripts
 //! depend on them: a change may add keys, never remove or rename one.
 
 use std::collections::BTreeSet;
@@ -683,4 +683,39 @@ fn gauge_gfmd_reference_keys() {
     ] {
         assert!(r.contains(k), "gauge gfmd.rows.{k}");
     }
+}
+
+#[test]
+fn figure_keys_and_columns() {
+    let v = json(&["figure", "2", "--format", "json", "--points", "5"]);
+    assert_has(
+        &v,
+        &[
+            "id", "title", "preset", "x_label", "y_label", "x_log", "y_log", "series", "notes",
+        ],
+        "figure",
+    );
+    assert!(element_keys(&v, "series").is_superset(&["name", "points", "style"].map(String::from).into()));
+    let points = element_keys(&v["series"][0], "points");
+    assert!(points.is_superset(&["x", "y"].map(String::from).into()), "{points:?}");
+    // on a measured surface the figure names it
+    let w = json(&[
+        "figure",
+        "2",
+        "--format",
+        "json",
+        "--points",
+        "5",
+        "--surface",
+        "tests/fixtures/two_bands.txt",
+        "--periodic",
+    ]);
+    assert_has(&w, &["spectrum_source"], "figure --surface");
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(["figure", "2", "--format", "csv", "--points", "5"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let csv = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(csv.lines().next(), Some("series,x,y,note"));
 }

@@ -6,11 +6,17 @@
 //! asperity figure 1|2|...|8|table-1|FILE.toml [--format chart|table|csv|json]
 //!                 [--svg FILE] [--png FILE] [--gfmd [--grid N] [--seed S]] [--points N]
 //!                 [--model 1,2,3,4,yp08,xu24]
+//!                 [--surface FILE [--size L] [--height-unit U] [--periodic] | --psd FILE.csv]
+//!                 [--qmin Q] [--qmax Q]
 //! ```
+//!
+//! With `--surface` or `--psd` every curve of the figure is computed on the measured spectrum
+//! instead of the preset's (its material, adhesion, pressures and thicknesses kept), and
+//! `--gfmd` runs on the measured map.
 
 use super::emit;
 use crate::chart;
-use crate::figure::compute::{self, GfmdChoice};
+use crate::figure::compute::{self, GfmdChoice, Measured};
 use crate::figure::{self, spec, table1};
 use asperity::error::{Error, Result};
 use clap::{Args, ValueEnum};
@@ -69,6 +75,33 @@ pub struct FigureArgs {
     /// (e.g. figure 1 --model yp08,xu24; the variants need an adhesionless half-space figure).
     #[arg(long, value_delimiter = ',')]
     pub model: Vec<String>,
+    /// A measured surface or PSD table instead of the preset's spectrum.
+    #[command(flatten)]
+    pub source: super::surface::SurfaceArgs,
+}
+
+/// The measured surface of `--surface`/`--psd` (None: the figure's preset spectrum).
+fn measured(args: &FigureArgs) -> Result<Option<Measured>> {
+    let (Some(spectrum), map) = args.source.spectrum_and_map()? else {
+        return Ok(None);
+    };
+    if args.gfmd {
+        if let Some(p) = &args.source.psd {
+            return Err(Error::field(
+                "--psd",
+                p.display(),
+                "none with --gfmd: GFMD needs a height map (--surface FILE)",
+            ));
+        }
+        if let Some(n) = args.grid {
+            return Err(Error::field(
+                "--grid",
+                n,
+                "none with --surface: GFMD runs on the map's own grid",
+            ));
+        }
+    }
+    Ok(Some(Measured { spectrum, map }))
 }
 
 /// Runs `asperity figure`.
@@ -102,7 +135,19 @@ pub fn run(args: &FigureArgs) -> Result<()> {
     if !(10..=1000).contains(&args.height) {
         return Err(Error::field("--height", args.height, "10 <= height <= 1000"));
     }
+    let on = measured(args)?;
     let data = if id == "table-1" {
+        if let Some(m) = &on {
+            return Err(Error::field(
+                if args.source.psd.is_some() {
+                    "--psd"
+                } else {
+                    "--surface"
+                },
+                m.name(),
+                "none for table-1 (its rows are the paper's systems)",
+            ));
+        }
         if args.points.is_some() {
             return Err(Error::field("--points", args.points.unwrap_or(0), "none for table-1"));
         }
@@ -151,7 +196,7 @@ pub fn run(args: &FigureArgs) -> Result<()> {
                 variant: kind.number().is_none().then(|| kind.name().to_string()),
             });
         }
-        let data = compute::compute(&s, gfmd)?;
+        let data = compute::compute_on(&s, gfmd, on.as_ref())?;
         match args.format {
             FigureFormat::Chart => {
                 emit(chart::render_text(&data.chart(), args.width, args.height).trim_end());

@@ -97,6 +97,12 @@ impl SurfaceArgs {
 
     /// The tabulated spectrum of --psd or of the --surface map's PSD (None: the preset's).
     pub fn spectrum(&self) -> Result<Option<Spectrum>> {
+        Ok(self.spectrum_and_map()?.0)
+    }
+
+    /// The tabulated spectrum (as [`Self::spectrum`]) and the --surface map it came from, the
+    /// file read once.
+    pub fn spectrum_and_map(&self) -> Result<(Option<Spectrum>, Option<Surface>)> {
         for (flag, v) in [("--qmin", self.qmin), ("--qmax", self.qmax)] {
             if let Some(x) = v {
                 if !(x.is_finite() && x > 0.0) {
@@ -104,12 +110,12 @@ impl SurfaceArgs {
                 }
             }
         }
+        let map = self.map()?;
         let table = if let Some(p) = &self.psd {
-            self.map()?;
             Tabulated::load_csv(p, self.qmin, self.qmax)
-        } else if let Some(s) = self.map()? {
+        } else if let Some(s) = &map {
             s.check_rough()?;
-            let a = psd::analyse(&s, &self.psd_options())?;
+            let a = psd::analyse(s, &self.psd_options())?;
             let (q, c): (Vec<f64>, Vec<f64>) = a.bins.iter().map(|b| (b.q, b.psd)).unzip();
             let name = self
                 .surface
@@ -121,9 +127,10 @@ impl SurfaceArgs {
             if self.qmin.is_some() || self.qmax.is_some() {
                 return Err(Error::field("--qmin/--qmax", "given", "only with --psd or --surface"));
             }
-            return Ok(None);
+            return Ok((None, None));
         };
-        table.map(|t| Some(Spectrum::Tabulated(t))).map_err(rename_table_fields)
+        let spectrum = table.map(Spectrum::Tabulated).map_err(rename_table_fields)?;
+        Ok((Some(spectrum), map))
     }
 
     /// The PSD options of --periodic.

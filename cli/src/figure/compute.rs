@@ -13,12 +13,43 @@ use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec};
 use asperity::input::model::Model;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
+use asperity::surface::heightmap::Surface;
+use asperity::surface::spectrum::Spectrum;
 use asperity::theory::closed_form;
 use asperity::theory::engine::{self, Evaluation, Options};
 use rayon::prelude::*;
 use std::sync::atomic::AtomicBool;
 
 pub use super::spec::curve_scene;
+
+/// A measured surface a figure is drawn for instead of its preset's self-affine spectrum
+/// (`figure --surface FILE` or `--psd FILE`): every theory curve uses `spectrum`; GFMD runs on
+/// `map`, which a PSD table does not have.
+#[derive(Debug, Clone)]
+pub struct Measured {
+    /// The tabulated C(q) of the map or of the PSD file.
+    pub spectrum: Spectrum,
+    /// The height map (None for a PSD table).
+    pub map: Option<Surface>,
+}
+
+impl Measured {
+    /// The name the figure gives the surface: the file the table came from.
+    pub fn name(&self) -> String {
+        match &self.spectrum {
+            Spectrum::Tabulated(t) => t.source.clone(),
+            other => other.kind().to_string(),
+        }
+    }
+}
+
+/// The scene on the measured surface's spectrum (unchanged without one).
+fn on_surface(scene: Scene, on: Option<&Measured>) -> Result<Scene> {
+    match on {
+        Some(m) => scene.with_spectrum(m.spectrum.clone()),
+        None => Ok(scene),
+    }
+}
 
 /// Brute-force runs: grid side and seed.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -69,10 +100,28 @@ fn stress_curve(spec: &FigureSpec, scene: &Scene) -> Result<(Vec<DataPoint>, Eva
 
 /// Computes the figure's data (theory, closed forms, \[S\] values; GFMD when `gfmd` is given).
 pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData> {
+    compute_on(spec, gfmd, None)
+}
+
+/// Computes the figure's data on a measured surface when `on` is given: the theory curves and
+/// closed forms of its spectrum, GFMD on its map; the values \[S\] states are of the paper's
+/// surfaces and are left out (with a note).
+pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measured>) -> Result<FigureData> {
     let preset = Preset::resolve(&spec.preset)?;
+    if gfmd.is_some() && on.is_some_and(|m| m.map.is_none()) {
+        return Err(Error::field(
+            "gfmd",
+            "on a PSD table",
+            "GFMD on a height map only (a measured surface, not its spectrum)",
+        ));
+    }
     let mut data = FigureData {
         id: spec.id.clone(),
-        title: spec.title.clone(),
+        title: match on {
+            Some(m) => format!("{} — on {}", spec.title, m.name()),
+            None => spec.title.clone(),
+        },
+        spectrum_source: on.map(Measured::name),
         preset: preset.name.clone(),
         x_label: x_label(spec.x).to_string(),
         y_label: y_label(spec.y).to_string(),
@@ -85,7 +134,7 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
         .curve
         .iter()
         .map(|c| {
-            let s = curve_scene(&preset, &spec.overrides(), &c.overrides())?;
+            let s = on_surface(curve_scene(&preset, &spec.overrides(), &c.overrides())?, on)?;
             match &c.variant {
                 Some(v) => s.clone().with_model(Model::of_kind(v.parse()?, &s.model())?),
                 None => Ok(s),
@@ -196,7 +245,13 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
         });
     }
     let mut labels: Vec<&str> = Vec::new();
-    for pp in &spec.paper {
+    if let (Some(m), false) = (on, spec.paper.is_empty()) {
+        data.notes.push(format!(
+            "the values [S] states are of the paper's surfaces: not drawn on {}",
+            m.name()
+        ));
+    }
+    for pp in spec.paper.iter().filter(|_| on.is_none()) {
         if !labels.contains(&pp.label.as_str()) {
             labels.push(&pp.label);
         }
@@ -217,7 +272,7 @@ pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData
         });
     }
     if let Some(choice) = gfmd {
-        gfmd_series(spec, &preset, &scenes, choice, &mut data)?;
+        gfmd_series(spec, &preset, &scenes, choice, on, &mut data)?;
     }
     Ok(data)
 }
@@ -227,8 +282,8 @@ fn role_colour(role: Role) -> Rgb {
     look(role, 0, 0).ink.rgb()
 }
 
-/// One GFMD run of `scene` on the chosen grid.
-pub fn gfmd_run(preset: &Preset, scene: &Scene, choice: GfmdChoice) -> Result<GfmdResult> {
+/// One GFMD run of `scene` on the chosen grid, or on `map` where one is given.
+pub fn gfmd_run(preset: &Preset, scene: &Scene, choice: GfmdChoice, map: Option<&Surface>) -> Result<GfmdResult> {
     let mut grid = preset
         .gfmd
         .as_ref()
@@ -241,7 +296,7 @@ pub fn gfmd_run(preset: &Preset, scene: &Scene, choice: GfmdChoice) -> Result<Gf
         scene: scene.clone(),
         grid,
         seed: choice.seed,
-        surface: None,
+        surface: map.cloned(),
         // the reduced grid keeps the full system's gamma_glo and Tabor parameter
         rescale: true,
     };
@@ -257,10 +312,12 @@ fn gfmd_series(
     preset: &Preset,
     scenes: &[Scene],
     choice: GfmdChoice,
+    on: Option<&Measured>,
     data: &mut FigureData,
 ) -> Result<()> {
     // GFMD does not depend on the model: the figure's scene without the curves' models
-    let base = curve_scene(preset, &spec.overrides(), &Overrides::default())?;
+    let base = on_surface(curve_scene(preset, &spec.overrides(), &Overrides::default())?, on)?;
+    let map = on.and_then(|m| m.map.as_ref());
     if spec.x == XAxis::Stress {
         let mut done: Vec<(f64, f64, f64)> = Vec::new();
         for (c, s) in spec.curve.iter().zip(scenes) {
@@ -274,13 +331,15 @@ fn gfmd_series(
             } else {
                 format!("GFMD, {}", c.label)
             };
-            match gfmd_run(preset, s, choice) {
+            match gfmd_run(preset, s, choice, map) {
                 Ok(r) => {
+                    let map_words = match on {
+                        Some(m) => format!("on {}", m.name()),
+                        None => format!("{}, seed {}", map_description(&r), choice.seed),
+                    };
                     data.notes.push(format!(
-                        "{name}: {}² grid, {}, seed {}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}{}",
+                        "{name}: {}² grid, {map_words}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}{}",
                         r.grid,
-                        map_description(&r),
-                        choice.seed,
                         r.stats.a_r,
                         r.stats.mean_contact_stress,
                         r.stats.contact_stress_variance,
@@ -319,7 +378,7 @@ fn gfmd_series(
             XAxis::Gamma => base.clone().with_surface_energy_j_m2(x),
             XAxis::Stress => Ok(base.clone()),
         };
-        let run = s.and_then(|s| Ok((gfmd_run(preset, &s, choice)?, s)));
+        let run = s.and_then(|s| Ok((gfmd_run(preset, &s, choice, map)?, s)));
         match run {
             Ok((r, s)) => {
                 grid = r.grid;
@@ -358,11 +417,18 @@ fn gfmd_series(
         }
     }
     if grid > 0 {
-        data.notes.push(format!(
-            "GFMD: {grid}² grid, {map_note} (the preset's reduced grid unless --grid), seed {}; the theory \
-             curves are of the full spectrum, the \"theory on the GFMD map\" points of the map's own",
-            choice.seed
-        ));
+        data.notes.push(match on {
+            Some(m) => format!(
+                "GFMD: on {} ({grid}² grid); the theory curves are of its tabulated spectrum, the \
+                 \"theory on the GFMD map\" points of the map's own discrete one",
+                m.name()
+            ),
+            None => format!(
+                "GFMD: {grid}² grid, {map_note} (the preset's reduced grid unless --grid), seed {}; the theory \
+                 curves are of the full spectrum, the \"theory on the GFMD map\" points of the map's own",
+                choice.seed
+            ),
+        });
     }
     data.series.push(DataSeries {
         name: if grid > 0 {

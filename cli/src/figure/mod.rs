@@ -57,6 +57,9 @@ pub struct FigureData {
     pub title: String,
     /// Preset (system) name.
     pub preset: String,
+    /// The measured surface or PSD table the curves are of (absent: the preset's spectrum).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spectrum_source: Option<String>,
     /// x-axis title with units.
     pub x_label: String,
     /// y-axis title with units.
@@ -167,6 +170,7 @@ mod tests {
             id: "x".into(),
             title: "t".into(),
             preset: "system-2".into(),
+            spectrum_source: None,
             x_label: "x".into(),
             y_label: "y".into(),
             x_log: true,

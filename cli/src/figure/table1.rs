@@ -76,7 +76,7 @@ pub fn compute(gfmd: Option<GfmdChoice>) -> Result<Table1> {
     };
     if let Some(choice) = gfmd {
         let scene = curve_scene(&preset, &fig, &Overrides::default())?;
-        match gfmd_run(&preset, &scene, choice) {
+        match gfmd_run(&preset, &scene, choice, None) {
             Ok(r) => {
                 g.column = format!("{name} ({}²)", r.grid);
                 g.mean_contact_stress = Some(r.stats.mean_contact_stress);
@@ -208,6 +208,7 @@ impl Table1 {
             id: "table-1".into(),
             title: "[S] Table 1: moments of the contact stress, system I, p* = 0.01 (x: 0 = GFMD, 1-3 = model)".into(),
             preset: "system-1".into(),
+            spectrum_source: None,
             x_label: "column (0 = GFMD, 1, 2, 3 = model)".into(),
             y_label: "σ̄_c* and ⟨δσ_c²⟩* (reduced by E*ḡ, (E*ḡ)²)".into(),
             x_log: false,
