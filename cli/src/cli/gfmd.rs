@@ -146,7 +146,8 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
             "none for gfmd: it needs a height map (--surface FILE)",
         ));
     }
-    let (preset, scene) = args.scene.resolve(args.pressure)?;
+    // the --surface map (its roughness checked with its spectrum)
+    let (preset, scene, surface) = args.scene.resolve_with_map(args.pressure)?;
     let mut grid = preset.gfmd.as_ref().map(GridSpec::from_preset).unwrap_or(DEFAULT_GRID);
     if let Some(n) = args.grid {
         if n < 4 {
@@ -154,13 +155,6 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
         }
         grid = grid.with_grid(n as usize)?;
     }
-    let surface = match args.scene.source.map()? {
-        Some(s) => {
-            s.check_rough()?;
-            Some(s)
-        }
-        None => None,
-    };
     let opts = GfmdOptions {
         tolerance: args.tolerance,
         max_iterations: args.max_iterations,

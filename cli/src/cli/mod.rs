@@ -17,6 +17,7 @@ use asperity::input::overrides::Overrides;
 use asperity::input::preset::{self, Preset};
 use asperity::input::scene::Scene;
 use asperity::input::scene::ThicknessQr;
+use asperity::surface::heightmap::Surface;
 use asperity::theory::persson::Accuracy;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::io::IsTerminal;
@@ -172,6 +173,13 @@ pub struct RunArgs {
 impl SceneArgs {
     /// Loads the preset and applies the overrides. Returns the preset too.
     pub fn resolve(&self, pressure: Option<f64>) -> Result<(Preset, Scene)> {
+        self.resolve_with_map(pressure)
+            .map(|(preset, scene, _)| (preset, scene))
+    }
+
+    /// As [`Self::resolve`], with the --surface map the scene's spectrum came from (the file
+    /// read once).
+    pub fn resolve_with_map(&self, pressure: Option<f64>) -> Result<(Preset, Scene, Option<Surface>)> {
         let preset = Preset::resolve(&self.preset)?;
         let scene = preset.scene()?;
         let mut model = scene.model();
@@ -215,6 +223,7 @@ impl SceneArgs {
             }
             model = Model::fudge(model.kind, g)?;
         }
+        let (spectrum, map) = self.source.spectrum_and_map()?;
         let overrides = Overrides {
             model: Some(model),
             thickness_qr: self
@@ -225,11 +234,11 @@ impl SceneArgs {
                 .map(|t| t.0),
             surface_energy_j_m2: self.gamma,
             pressure,
-            spectrum: self.source.spectrum()?,
+            spectrum,
             ..Overrides::default()
         };
         let scene = scene.apply(&overrides)?;
-        Ok((preset, scene))
+        Ok((preset, scene, map))
     }
 }
 
