@@ -24,54 +24,9 @@ fn rows(csv: &str) -> Vec<(String, f64, Option<f64>, String)> {
         .collect()
 }
 
-fn run_a_r(args: &[&str]) -> f64 {
-    let mut a = vec!["run", "--format", "json"];
-    a.extend_from_slice(args);
-    let v: serde_json::Value = serde_json::from_str(&ok(&a)).unwrap();
-    v["a_r"].as_f64().unwrap()
-}
-
 #[test]
 fn figure_7_is_run_at_the_same_thicknesses() {
-    let csv = ok(&["figure", "7", "--format", "csv", "--points", "4"]);
-    let rows = rows(&csv);
-    let mut checked = 0;
-    for (series, model, gamma) in [
-        ("model 3", "3", None),
-        ("model 4", "4", None),
-        ("adhesionless (model 4)", "4", Some("0")),
-    ] {
-        // the file's four thicknesses (0.01, 0.1, 1, 10), among the points refinement added
-        let pts: Vec<_> = rows
-            .iter()
-            .filter(|r| r.0 == series && ((r.1.log10() * 1e6).round() / 1e6).fract() == 0.0)
-            .collect();
-        assert_eq!(pts.len(), 4, "{series}: {csv}");
-        for (_, t, y, note) in pts {
-            let Some(y) = y else {
-                // a thin-slab adhesive point may not converge: it is reported, not invented
-                assert!(!note.is_empty(), "{series} t = {t}: empty without a note");
-                continue;
-            };
-            let tt = format!("{t:e}");
-            let mut args = vec![
-                "--preset",
-                "system-2",
-                "--pressure",
-                "0.005",
-                "--model",
-                model,
-                "--thickness",
-                &tt,
-            ];
-            if let Some(g) = gamma {
-                args.extend(["--gamma", g]);
-            }
-            let want = run_a_r(&args);
-            assert!((y - want).abs() <= 1e-9, "{series} t = {t}: figure {y} run {want}");
-            checked += 1;
-        }
-    }
+    let (checked, _) = common::figure_7_against_run(&[]);
     assert!(checked >= 9, "too few converged points to compare: {checked}");
 }
 

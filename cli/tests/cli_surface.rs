@@ -204,43 +204,7 @@ fn bad_surface_input_is_one_line_and_exit_2() {
 #[test]
 fn figures_on_the_two_band_map_are_run_on_it() {
     let on = ["--surface", MAP, "--periodic"];
-    let mut args = vec!["figure", "7", "--format", "csv", "--points", "4"];
-    args.extend(on);
-    let csv = ok(&args);
-    let mut checked = 0;
-    for (series, model, gamma) in [
-        ("model 3", "3", None),
-        ("model 4", "4", None),
-        ("adhesionless (model 4)", "4", Some("0")),
-    ] {
-        for line in csv.lines().skip(1).filter(|l| l.starts_with(&format!("{series},"))) {
-            let c: Vec<&str> = line.splitn(4, ',').collect();
-            let t: f64 = c[1].parse().unwrap();
-            // the file's thicknesses 0.01, 0.1, 1, 10 among the points refinement added
-            if ((t.log10() * 1e6).round() / 1e6).fract() != 0.0 || c[2].is_empty() {
-                continue;
-            }
-            let y: f64 = c[2].parse().unwrap();
-            let mut run = vec![
-                "run",
-                "--preset",
-                "system-2",
-                "--pressure",
-                "0.005",
-                "--model",
-                model,
-                "--thickness",
-                c[1],
-            ];
-            run.extend(on);
-            if let Some(g) = gamma {
-                run.extend(["--gamma", g]);
-            }
-            let want = json(&run)["a_r"].as_f64().unwrap();
-            assert!((y - want).abs() <= 1e-9, "{series} t = {t}: figure {y} run {want}");
-            checked += 1;
-        }
-    }
+    let (checked, csv) = common::figure_7_against_run(&on);
     assert!(checked >= 9, "too few points compared: {checked}\n{csv}");
     // the adhesionless curve on this map is not the preset's
     let preset = ok(&["figure", "7", "--format", "csv", "--points", "4"]);
