@@ -118,19 +118,8 @@ fn hysteresis(a: &App) -> Option<(SweepData, SweepData)> {
     };
     let (jump, pull) = (0.03, 0.005);
     let mut h = sw.clone();
-    h.a_r_unloading =
-        h.p.iter()
-            .map(|&p| {
-                if (pull..jump).contains(&p) {
-                    0.45 + 0.3 * p
-                } else {
-                    f64::NAN
-                }
-            })
-            .collect();
+    common::add_hysteresis(&mut h, jump, pull);
     h.gap_unloading = h.gap_rel.iter().map(|g| g - 0.2).collect();
-    h.jump_in = Some(jump);
-    h.pull_off = Some(pull);
     Some((sw.clone(), h))
 }
 
@@ -161,10 +150,7 @@ fn scenes() -> Vec<(&'static str, App)> {
     let Spectrum::SelfAffine(sa) = a.scene.spectrum().clone() else {
         unreachable!()
     };
-    let q: Vec<f64> = (0..=40)
-        .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / 40.0))
-        .collect();
-    let c: Vec<f64> = q.iter().map(|&x| sa.psd(x.clamp(sa.q_l(), sa.q_s()))).collect();
+    let (q, c) = common::ideal_table(&sa, 40);
     let t = Tabulated::new(q, c, "measured.csv", None, None).unwrap();
     a.scene.set_spectrum(Spectrum::Tabulated(t)).unwrap();
     out.push(("measured spectrum", a));

@@ -4,6 +4,8 @@
 //! self-affine fit that recovers the H and q_r the table was written from; the panel names
 //! the file.
 
+mod common;
+
 use asperity::input::preset::Preset;
 use asperity::surface::spectrum::Spectrum;
 use asperity::surface::tabulated::{to_csv, Tabulated};
@@ -76,10 +78,7 @@ fn a_measured_table_is_drawn_with_its_fit_and_named_in_the_panel() {
         unreachable!()
     };
     // the ideal law sampled at 41 log-spaced points from q_L to q_s (q_r among them)
-    let q: Vec<f64> = (0..=40)
-        .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / 40.0))
-        .collect();
-    let c: Vec<f64> = q.iter().map(|&x| sa.psd(x.clamp(sa.q_l(), sa.q_s()))).collect();
+    let (q, c) = common::ideal_table(&sa, 40);
     let path = std::env::temp_dir().join(format!("asperity-tui-psd-{}.csv", std::process::id()));
     std::fs::write(&path, to_csv(&q, &c)).unwrap();
     let t = Tabulated::load_csv(&path, None, None).unwrap();

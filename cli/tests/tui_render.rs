@@ -384,18 +384,7 @@ fn hysteresis_on_the_area_chart() {
             sw.p.iter()
                 .map(|&p| if p < jump { 0.8 * p } else { (0.5 + 0.3 * p).min(1.0) })
                 .collect();
-        sw.a_r_unloading =
-            sw.p.iter()
-                .map(|&p| {
-                    if (pull..jump).contains(&p) {
-                        0.45 + 0.3 * p
-                    } else {
-                        f64::NAN
-                    }
-                })
-                .collect();
-        sw.jump_in = Some(jump);
-        sw.pull_off = Some(pull);
+        common::add_hysteresis(sw, jump, pull);
         assert_eq!(sw.a_r_unloading.len(), n);
     }
     if let Some(Ok(p)) = a.point.as_mut() {

@@ -123,6 +123,33 @@ pub fn figure_7_against_run(extra: &[&str]) -> (usize, String) {
     (checked, csv)
 }
 
+/// A synthetic hysteresis on a load sweep: the unloading branch a_r = 0.45 + 0.3 p* between
+/// the pull-off load `pull` and the jump-in load `jump` (none elsewhere), and both loads.
+pub fn add_hysteresis(sw: &mut asperity_cli::tui::data::SweepData, jump: f64, pull: f64) {
+    sw.a_r_unloading =
+        sw.p.iter()
+            .map(|&p| {
+                if (pull..jump).contains(&p) {
+                    0.45 + 0.3 * p
+                } else {
+                    f64::NAN
+                }
+            })
+            .collect();
+    sw.jump_in = Some(jump);
+    sw.pull_off = Some(pull);
+}
+
+/// The self-affine C(q) of `sa` sampled at `n + 1` log-spaced q from q_L to q_s: a measured
+/// table of an ideal surface, (q in 1/m, C in m⁴).
+pub fn ideal_table(sa: &asperity::surface::spectrum::SelfAffine, n: usize) -> (Vec<f64>, Vec<f64>) {
+    let q: Vec<f64> = (0..=n)
+        .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / n as f64))
+        .collect();
+    let c = q.iter().map(|&x| sa.psd(x.clamp(sa.q_l(), sa.q_s()))).collect();
+    (q, c)
+}
+
 /// A finished GFMD run for the explorer's tests at load `p`: a histogram shaped like the
 /// theory of system 1 at p* = 0.01 and a little wider, a 512² grid, two sweep loads and the
 /// theory on the map at three.
