@@ -103,3 +103,63 @@ fn an_unwritable_path_is_an_io_error_not_a_panic() {
     assert!(write_svg(&spec(false, false), bad).is_err());
     assert!(write_png(&spec(false, false), std::path::Path::new("/nonexistent-dir/x/y.png")).is_err());
 }
+
+/// On the white page a colour too light to read (the GFMD yellow) draws its lines and its
+/// markers' edges in a darker shade of its hue that reaches the least contrast; the markers
+/// keep the colour inside, so it stays the colour of the explorer. A colour that reads on
+/// white is drawn as it is.
+#[test]
+fn light_colours_are_drawn_darker_on_white() {
+    use asperity_cli::chart::contrast::{contrast_with_white, MIN_CONTRAST_ON_WHITE};
+    use asperity_cli::chart::on_white;
+    let yellow = look(Role::Gfmd, 0, 0).ink.rgb();
+    let ink = on_white(yellow);
+    assert!(contrast_with_white(yellow) < MIN_CONTRAST_ON_WHITE);
+    assert!(contrast_with_white(ink) >= MIN_CONTRAST_ON_WHITE);
+    let blue = model_colour(2);
+    assert_eq!(on_white(blue), blue);
+    let pts = vec![(0.1, 0.2), (0.5, 0.6), (0.9, 0.4)];
+    let series = |name: &str, style, colour| Series {
+        name: name.into(),
+        points: pts.clone(),
+        style,
+        colour,
+        shape: Shape::Circle,
+    };
+    let spec = ChartSpec {
+        title: "t".into(),
+        x_label: "x".into(),
+        y_label: "y".into(),
+        x_log: false,
+        y_log: false,
+        series: vec![
+            series("a light line", SeriesStyle::Line, yellow),
+            series("light points", SeriesStyle::Points, yellow),
+            series("a dark line", SeriesStyle::Line, blue),
+        ],
+    };
+    let path = tmp("light.svg");
+    write_svg(&spec, &path).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let hex = |c: Rgb| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
+    let attrs = |name: &str| -> std::collections::BTreeSet<String> {
+        doc.descendants()
+            .filter_map(|n| n.attribute(name))
+            .map(str::to_uppercase)
+            .collect()
+    };
+    let (strokes, fills) = (attrs("stroke"), attrs("fill"));
+    assert!(
+        strokes.contains(&hex(ink)),
+        "no line or edge in {}: {strokes:?}",
+        hex(ink)
+    );
+    assert!(
+        !strokes.contains(&hex(yellow)),
+        "a light stroke {} on white",
+        hex(yellow)
+    );
+    assert!(fills.contains(&hex(yellow)), "the markers lost their colour: {fills:?}");
+    assert!(strokes.contains(&hex(blue)), "a readable colour changed: {strokes:?}");
+}

@@ -5,7 +5,8 @@
 //!
 //! - no two entries of a chart's key share a colour and glyph, and no two share a glyph and
 //!   line style (what tells them apart under `NO_COLOR`);
-//! - the SVG/PNG series of the chart (`s`) share no colour and line style (points: shape);
+//! - the SVG/PNG series of the chart (`s`) share no colour and line style (points: shape),
+//!   nor in the shades they are drawn in on white;
 //! - a model is drawn in its colour, on screen and in the files;
 //! - at 80×24 no key entry is lost.
 //!
@@ -18,7 +19,7 @@ use asperity::input::model::ModelKind;
 use asperity::input::preset::{Preset, ReferencePoint};
 use asperity::surface::spectrum::Spectrum;
 use asperity::surface::tabulated::Tabulated;
-use asperity_cli::chart::{ChartSpec, SeriesStyle};
+use asperity_cli::chart::{on_white, ChartSpec, SeriesStyle};
 use asperity_cli::looks::{model_colour, Ink, Role};
 use asperity_cli::tui::app::{App, Param};
 use asperity_cli::tui::charts::{self, ChartKind, ChartModel};
@@ -183,14 +184,18 @@ fn clashes(entries: &[Entry]) -> Vec<String> {
     out
 }
 
-/// The clashes of a file chart: colour and line style, points also shape.
+/// The clashes of a file chart: colour and line style, points also shape; and the same with
+/// the shade a colour is drawn in on the white page.
 fn file_clashes(spec: &ChartSpec) -> Vec<String> {
-    let mut seen = HashSet::new();
+    let (mut seen, mut inked) = (HashSet::new(), HashSet::new());
     let mut out = Vec::new();
     for s in &spec.series {
         let shape = (s.style == SeriesStyle::Points).then_some(s.shape);
         if !seen.insert((s.colour, s.style, shape)) {
             out.push(format!("{:?} looks like an earlier series", s.name));
+        }
+        if !inked.insert((on_white(s.colour), s.style, shape)) {
+            out.push(format!("{:?} looks like an earlier series on white", s.name));
         }
     }
     out

@@ -2,7 +2,7 @@
 //! backend and the (linear or logarithmic) axis types.
 
 use super::font::FAMILY;
-use super::{axis_range, dashes, drawable, tick_label, ChartSpec, SeriesStyle, Shape};
+use super::{axis_range, dashes, drawable, on_white, tick_label, ChartSpec, SeriesStyle, Shape};
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -134,7 +134,10 @@ where
     let unit = 2.5 * scale;
     let half = px(10.0);
     for s in &spec.series {
-        let c = RGBColor(s.colour.0, s.colour.1, s.colour.2);
+        // lines, edges and open markers in a shade that reads on white; fills in the colour
+        let ink = on_white(s.colour);
+        let c = RGBColor(ink.0, ink.1, ink.2);
+        let fill = RGBColor(s.colour.0, s.colour.1, s.colour.2);
         let line = ShapeStyle::from(&c).stroke_width(width);
         let runs = runs(&s.points, spec.x_log, spec.y_log);
         let name = s.name.clone();
@@ -142,7 +145,8 @@ where
             let pts: Vec<(f64, f64)> = runs.into_iter().flatten().collect();
             let lp = move |(lx, ly): (i32, i32)| (lx + half, ly);
             let open = ShapeStyle::from(&c).stroke_width(width);
-            let filled = ShapeStyle::from(&c).filled();
+            let filled = ShapeStyle::from(&fill).filled();
+            let edge = ShapeStyle::from(&c).stroke_width((width / 2).max(1));
             let (m, t) = (marker, marker + 1);
             let h = t * 3 / 4;
             // the shape at every point and in the legend (offsets in pixels)
@@ -154,13 +158,27 @@ where
                         .label(name)
                         .legend(move |p| EmptyElement::at(lp(p)) + $shape);
                 }};
+                // a filled shape inside its edge (the same outline in the edge's style)
+                ($fill:expr, $edge:expr) => {{
+                    chart
+                        .draw_series(pts.into_iter().map(|p| EmptyElement::at(p) + $fill + $edge))
+                        .map_err(io_err)?
+                        .label(name)
+                        .legend(move |p| EmptyElement::at(lp(p)) + $fill + $edge);
+                }};
             }
+            let diamond = vec![(0, -t), (t, 0), (0, t), (-t, 0), (0, -t)];
+            let up = vec![(0, -t), (t, h), (-t, h), (0, -t)];
+            let down = vec![(0, t), (t, -h), (-t, -h), (0, t)];
             match s.shape {
-                Shape::Circle => marks!(Circle::new((0, 0), m, filled)),
+                Shape::Circle => marks!(Circle::new((0, 0), m, filled), Circle::new((0, 0), m, edge)),
                 Shape::Square => marks!(Rectangle::new([(-m, -m), (m, m)], open)),
-                Shape::Diamond => marks!(Polygon::new(vec![(0, -t), (t, 0), (0, t), (-t, 0)], filled)),
-                Shape::Triangle => marks!(Polygon::new(vec![(0, -t), (t, h), (-t, h)], filled)),
-                Shape::TriangleDown => marks!(Polygon::new(vec![(0, t), (t, -h), (-t, -h)], filled)),
+                Shape::Diamond => marks!(
+                    Polygon::new(diamond.clone(), filled),
+                    PathElement::new(diamond.clone(), edge)
+                ),
+                Shape::Triangle => marks!(Polygon::new(up.clone(), filled), PathElement::new(up.clone(), edge)),
+                Shape::TriangleDown => marks!(Polygon::new(down.clone(), filled), PathElement::new(down.clone(), edge)),
                 // both strokes as one path through the centre
                 Shape::Cross => marks!(PathElement::new(vec![(-t, -t), (t, t), (0, 0), (-t, t), (t, -t)], open)),
                 Shape::Plus => marks!(PathElement::new(vec![(-t, 0), (t, 0), (0, 0), (0, -t), (0, t)], open)),

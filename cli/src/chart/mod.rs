@@ -12,12 +12,15 @@
 //! Points with a non-finite coordinate (a load that did not converge), and on a log axis
 //! points ≤ 0, are left out; a line is broken where they were. Every series carries its
 //! colour, line style and point shape (set by the caller from [`crate::looks`], so a model
-//! has the same colour in every file); every series gets a legend entry with its name.
+//! has the same colour in every file); every series gets a legend entry with its name. On the
+//! white page of a file a colour too light to read is drawn darker ([`contrast`]).
 
+pub mod contrast;
 mod draw;
 mod font;
 mod text;
 
+pub use contrast::on_white;
 pub use font::{has_glyph, png_text, COMPOSED};
 pub use text::render_text;
 
