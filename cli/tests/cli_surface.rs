@@ -170,6 +170,9 @@ fn the_theory_on_the_csv_of_an_ideal_spectrum_equals_the_preset() {
 fn bad_surface_input_is_one_line_and_exit_2() {
     let bad = tmp("bad.txt");
     std::fs::write(&bad, "1 2 3\n4 x 6\n").unwrap();
+    let line = tmp("line.txt");
+    let row: Vec<String> = (0..16).map(|k| format!("{}", (k as f64).sin())).collect();
+    std::fs::write(&line, format!("{}\n", row.join(" "))).unwrap();
     let csv = tmp("bad.csv");
     std::fs::write(&csv, "q,psd\n1e6,1e-30\n2e6,-1\n").unwrap();
     for (args, needle) in [
@@ -190,6 +193,20 @@ fn bad_surface_input_is_one_line_and_exit_2() {
             "--grid",
         ),
         (vec!["figure", "table-1", "--surface", MAP], "none for table-1"),
+        (
+            vec![
+                "figure",
+                "5",
+                "--surface",
+                line.as_str(),
+                "--size",
+                "1e-5",
+                "--height-unit",
+                "nm",
+                "--gfmd",
+            ],
+            "a 16 x 1 map",
+        ),
     ] {
         let out = asperity(&args);
         let err = String::from_utf8_lossy(&out.stderr);

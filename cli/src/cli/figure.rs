@@ -100,6 +100,13 @@ fn measured(args: &FigureArgs) -> Result<Option<Measured>> {
                 "none with --surface: GFMD runs on the map's own grid",
             ));
         }
+        if let Some(m) = map.as_ref().filter(|m| !m.is_square()) {
+            return Err(Error::field(
+                "--surface",
+                format!("a {} x {} map", m.nx, m.ny),
+                "an N x N map with --gfmd (GFMD runs on a square map)",
+            ));
+        }
     }
     Ok(Some(Measured { spectrum, map }))
 }
