@@ -322,6 +322,35 @@ fn tui_on_a_measured_surface_in_tmux() {
     );
     let s = t.wait("the scene of the map", solved);
     assert!(s.contains("surface  two_bands.txt"), "{s}");
+    // `g` runs GFMD on the map itself: the a_r of `gfmd --surface` on the same scene
+    t.keys(&["g"]);
+    let s = t.wait("GFMD on the map", |s| s.contains("GFMD a_r"));
+    let shown: f64 = s
+        .lines()
+        .find_map(|l| l.split("GFMD a_r").nth(1))
+        .and_then(|r| r.split_whitespace().next())
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("no GFMD a_r in {s}"));
+    let out = Command::new(BIN)
+        .args([
+            "gfmd",
+            "--surface",
+            "tests/fixtures/two_bands.txt",
+            "--periodic",
+            "--gamma",
+            "0",
+        ])
+        .args(["--format", "json"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let want = v["a_r"].as_f64().unwrap();
+    assert!(
+        (shown / want - 1.0).abs() < 1e-3,
+        "explorer {shown}, gfmd --surface {want}"
+    );
+    assert!(s.contains("(N=32)"), "the map's own grid: {s}");
     // the focused panel shows `pr`: nine steps of the selector reach `psd`
     t.keys(&["v", "v", "v", "v", "v", "v", "v", "v", "v"]);
     t.wait("the psd chart", |s| s.contains("C(q) of two_bands.txt"));

@@ -291,8 +291,8 @@ pub fn main() -> i32 {
         None => tui_entry(preset::DEFAULT_PRESET, None, None),
         Some(Command::Tui(args)) => args
             .scene
-            .resolve(args.pressure)
-            .and_then(|(_, scene)| tui_entry(&args.scene.preset, Some(scene), None)),
+            .resolve_with_map(args.pressure)
+            .and_then(|(_, scene, map)| tui_entry(&args.scene.preset, Some((scene, map)), None)),
         Some(Command::Tour(args)) => tour_entry(&args),
         Some(Command::Presets) => {
             for (name, place) in preset::list_available() {
@@ -356,9 +356,11 @@ fn tour_entry(args: &TourArgs) -> Result<()> {
     tui_entry(&source, None, Some((t, args.step as usize - 1)))
 }
 
+/// Opens the explorer on the preset, on `scene` where one is given (with the measured map
+/// its spectrum came from, for GFMD), walking `tour` from a step where one is given.
 fn tui_entry(
     preset_name: &str,
-    scene: Option<asperity::input::scene::Scene>,
+    scene: Option<(Scene, Option<Surface>)>,
     tour: Option<(crate::tui::tour::Tour, usize)>,
 ) -> Result<()> {
     // Validate the preset first so a bad one gives the same error as the CLI.
@@ -374,7 +376,10 @@ fn tui_entry(
         return Err(Error::Unsupported("the terminal explorer needs a terminal".into()));
     }
     let mut app = crate::tui::app::App::new(preset_name, preset)?;
-    if let Some(s) = scene {
+    if let Some((s, map)) = scene {
+        if let (asperity::surface::spectrum::Spectrum::Tabulated(t), Some(m)) = (s.spectrum(), map) {
+            app.map = Some((t.source.clone(), std::sync::Arc::new(m)));
+        }
         app.base = s.clone();
         app.scene = s;
     }

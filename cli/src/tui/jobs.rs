@@ -7,6 +7,7 @@ use super::protocol::*;
 use asperity::error::{Error, Result};
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
+use asperity::surface::heightmap::Surface;
 use asperity::theory::engine::{self, Options};
 use asperity::theory::sweep::{self, SweepSpec};
 use std::sync::atomic::AtomicBool;
@@ -348,7 +349,7 @@ pub fn gfmd_job(
     };
     let spec = gfmd_sweep_spec(setup.scene.pressure());
     let plan = super::progress::plan(setup.scene.pressure(), &spec.pressures());
-    let mut clock = super::progress::Timeline::new(plan, setup.grid.n());
+    let mut clock = super::progress::Timeline::new(plan, grid_side(setup));
     let mut last: Option<std::time::Instant> = None;
     let mut on = |index: usize, p: &Progress| {
         let new_phase = clock.enter(index);
@@ -405,8 +406,9 @@ pub fn spawn_gfmd(
     })
 }
 
-/// The GFMD setup of `g`: the scene on the preset's reduced grid (a 512² default).
-pub fn gfmd_setup(preset: &Preset, scene: &Scene) -> asperity::gfmd::GfmdSetup {
+/// The GFMD setup of `g`: the scene on the preset's reduced grid (a 512² default), or on the
+/// measured `map` where one is given.
+pub fn gfmd_setup(preset: &Preset, scene: &Scene, map: Option<&Surface>) -> asperity::gfmd::GfmdSetup {
     let grid = preset
         .gfmd
         .as_ref()
@@ -420,9 +422,14 @@ pub fn gfmd_setup(preset: &Preset, scene: &Scene) -> asperity::gfmd::GfmdSetup {
         scene: scene.clone(),
         grid,
         seed: 1,
-        surface: None,
+        surface: map.cloned(),
         rescale: true,
     }
+}
+
+/// The side N of the N×N grid GFMD runs on: the map's where one is given, else the grid's.
+pub fn grid_side(setup: &asperity::gfmd::GfmdSetup) -> usize {
+    setup.surface.as_ref().map_or(setup.grid.n(), |s| s.nx)
 }
 
 #[cfg(test)]

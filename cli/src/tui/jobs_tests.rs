@@ -15,7 +15,7 @@ const CANCEL_LATENCY_S: f64 = 0.5;
 fn setup(n: usize) -> asperity::gfmd::GfmdSetup {
     let preset = Preset::resolve("system-1").unwrap();
     let scene = super::super::state::initial_scene(&preset).unwrap();
-    let mut s = gfmd_setup(&preset, &scene);
+    let mut s = gfmd_setup(&preset, &scene, None);
     s.grid = s.grid.with_grid(n).unwrap();
     s
 }
@@ -72,7 +72,9 @@ fn cancel_during_the_relaxation_on_the_default_grid_ends_the_job_promptly() {
     let s = setup(512);
     assert_eq!(
         s.grid.n(),
-        gfmd_setup(&Preset::resolve("system-1").unwrap(), &s.scene).grid.n()
+        gfmd_setup(&Preset::resolve("system-1").unwrap(), &s.scene, None)
+            .grid
+            .n()
     );
     assert_prompt("the relaxation", &s, &|p| {
         matches!(p.phase, GfmdPhase::Relax { .. }) && p.iteration >= 100

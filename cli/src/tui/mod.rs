@@ -205,9 +205,9 @@ pub fn run_app(mut app: App) -> Result<()> {
         }
         if let Some((id, scene, cancel)) = app.take_gfmd_request() {
             let tx = gfmd_tx.clone();
-            let setup = jobs::gfmd_setup(&app.preset, &scene);
+            let setup = jobs::gfmd_setup(&app.preset, &scene, app.map_of(&scene));
             app.message = Some(app::Message {
-                text: format!("GFMD started on a {0}x{0} grid (g cancels)", setup.grid.n()),
+                text: format!("GFMD started on a {0}x{0} grid (g cancels)", jobs::grid_side(&setup)),
                 error: false,
             });
             jobs::spawn_gfmd(id, setup, cancel, move |r| {

@@ -14,6 +14,8 @@ use asperity::error::Result;
 use asperity::input::model::{Model, ModelKind};
 use asperity::input::preset::{self, Preset};
 use asperity::input::scene::Scene;
+use asperity::surface::heightmap::Surface;
+use asperity::surface::spectrum::Spectrum;
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
@@ -148,6 +150,9 @@ pub struct App {
     pub color: bool,
     /// Where `e` writes.
     pub export_dir: PathBuf,
+    /// The measured height map of `tui --surface` (its file name, as the tabulated spectrum
+    /// names it, and the map): `g` runs GFMD on it while the scene is on its spectrum.
+    pub map: Option<(String, Arc<Surface>)>,
     /// The background GFMD run (started with `g`).
     pub gfmd: GfmdState,
     /// A GFMD run to start (taken by the event loop): run id, scene, cancel flag.
@@ -219,6 +224,7 @@ impl App {
             show_timing: true,
             color: true,
             export_dir: PathBuf::from("."),
+            map: None,
             gfmd: GfmdState::Idle,
             gfmd_request: None,
             gfmd_cancel: None,
@@ -276,6 +282,15 @@ impl App {
     /// loop builds the setup, `jobs::gfmd_setup`, and starts the thread).
     pub fn take_gfmd_request(&mut self) -> Option<(u64, Scene, Arc<AtomicBool>)> {
         self.gfmd_request.take()
+    }
+
+    /// The measured map GFMD runs on for `scene`: [`App::map`] while the scene's spectrum is
+    /// the one tabulated from it (None on a preset's spectrum or a PSD table).
+    pub fn map_of(&self, scene: &Scene) -> Option<&Surface> {
+        match (scene.spectrum(), &self.map) {
+            (Spectrum::Tabulated(t), Some((name, map))) if t.source == *name => Some(map),
+            _ => None,
+        }
     }
 
     /// What the visible charts need computed.

@@ -48,7 +48,7 @@ fn g_starts_and_cancels_a_gfmd_run() {
     assert!(a.animating(), "the panel's clock ticks while GFMD runs");
     let (id, scene, cancel) = a.take_gfmd_request().expect("a run to start");
     assert_eq!(scene, a.scene);
-    let setup = jobs::gfmd_setup(&a.preset, &scene);
+    let setup = jobs::gfmd_setup(&a.preset, &scene, None);
     assert_eq!(setup.grid.n(), 512);
     // progress of this run is shown; a stale run's is not
     a.on_reply(Reply::GfmdProgress {
@@ -187,4 +187,46 @@ fn the_gfmd_start_message_goes_when_the_run_ends() {
         elapsed_s: 1.0,
     });
     assert!(a.message.is_none());
+}
+
+/// `tui --surface FILE`: `g` runs GFMD on the measured map while the scene is on the map's
+/// spectrum, and on a generated map once the scene is back on the preset's.
+#[test]
+fn g_on_a_measured_surface_runs_on_its_map() {
+    use asperity::surface::psd::{analyse, PsdOptions};
+    use asperity::surface::readers::{read, ReadOptions};
+    use asperity::surface::spectrum::{Spectrum, Tabulated};
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/two_bands.txt");
+    let map = read(std::path::Path::new(path), &ReadOptions::default()).unwrap();
+    let psd = analyse(
+        &map,
+        &PsdOptions {
+            periodic: true,
+            ..PsdOptions::default()
+        },
+    )
+    .unwrap();
+    let (q, c): (Vec<f64>, Vec<f64>) = psd.bins.iter().map(|b| (b.q, b.psd)).unzip();
+    let table = Tabulated::new(q, c, path, None, None).unwrap();
+    let mut a = app();
+    a.scene = a
+        .scene
+        .clone()
+        .with_spectrum(Spectrum::Tabulated(table.clone()))
+        .unwrap();
+    a.map = Some((path.to_string(), std::sync::Arc::new(map)));
+    key(&mut a, KeyCode::Char('g'));
+    let (_, scene, _) = a.take_gfmd_request().expect("a run to start");
+    let setup = jobs::gfmd_setup(&a.preset, &scene, a.map_of(&scene));
+    assert_eq!(setup.surface.as_ref().map(|s| (s.nx, s.ny)), Some((32, 32)));
+    assert_eq!(jobs::grid_side(&setup), 32);
+    // a table of another name is not this map's spectrum
+    let mut other = table;
+    other.source = "other.csv".into();
+    let s = scene.clone().with_spectrum(Spectrum::Tabulated(other)).unwrap();
+    assert!(a.map_of(&s).is_none());
+    // the preset's spectrum: a generated map
+    let s = scene.with_spectrum(a.preset.spectrum().unwrap()).unwrap();
+    assert!(a.map_of(&s).is_none());
+    assert_eq!(jobs::grid_side(&jobs::gfmd_setup(&a.preset, &s, a.map_of(&s))), 512);
 }
