@@ -182,12 +182,14 @@ pub fn eta_s(plan: &[GfmdPhase], done: &[f64], current_elapsed: f64) -> Option<f
     Some(current + rest.map(estimate).sum::<f64>())
 }
 
-/// A duration: "0.4 s", "12 s", "2 min 05 s".
+/// A duration: "12 ms", "0.4 s", "12 s", "2 min 05 s".
 pub fn format_secs(s: f64) -> String {
     if !s.is_finite() || s < 0.0 {
         return "–".into();
     }
-    if s < 10.0 {
+    if s < 0.1 {
+        format!("{:.0} ms", s * 1e3)
+    } else if s < 10.0 {
         format!("{s:.1} s")
     } else if s < 60.0 {
         format!("{s:.0} s")
@@ -342,6 +344,7 @@ mod tests {
 
     #[test]
     fn durations_and_times_in_words() {
+        assert_eq!(format_secs(0.012), "12 ms");
         assert_eq!(format_secs(0.42), "0.4 s");
         assert_eq!(format_secs(12.4), "12 s");
         assert_eq!(format_secs(125.0), "2 min 05 s");
