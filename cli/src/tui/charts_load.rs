@@ -102,6 +102,14 @@ fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64
             points.push((f64::NAN, f64::NAN));
         }
     }
+    // the edges named with their p* (the x axis says p*)
+    let edges = |x: Option<f64>| x.into_iter().collect::<Vec<f64>>();
+    push_window(m, points, [edges(sw.jump_in), edges(sw.pull_off)], "");
+}
+
+/// A hysteresis window on a chart: the unloading branch (dashed, where it has a point) and
+/// the jump-in and pull-off edges as vertical markers named `jump-in {unit}x`.
+fn push_window(m: &mut ChartModel, points: Vec<(f64, f64)>, [jump_in, pull_off]: [Vec<f64>; 2], unit: &str) {
     if points.iter().any(|q| q.0.is_finite() && q.1.is_finite()) {
         m.series.push(Series {
             name: "unloading".into(),
@@ -110,16 +118,15 @@ fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64
             draw: Draw::Dashed,
         });
     }
-    // named with their p* (the x axis says p*)
-    for (x, role, what) in [
-        (sw.jump_in, Role::JumpIn, "jump-in"),
-        (sw.pull_off, Role::PullOff, "pull-off"),
+    for (xs, role, what) in [
+        (jump_in, Role::JumpIn, "jump-in"),
+        (pull_off, Role::PullOff, "pull-off"),
     ] {
-        if let Some(x) = x.filter(|x| x.is_finite() && *x > 0.0) {
+        for x in xs.into_iter().filter(|x| x.is_finite() && *x > 0.0) {
             m.vlines.push(VLine {
                 x,
                 role,
-                name: format!("{what} {}", super::words::sig(x, 2)),
+                name: format!("{what} {unit}{}", super::words::sig(x, 2)),
             });
         }
     }
@@ -152,26 +159,7 @@ fn thickness_window(m: &mut ChartModel, td: &ThicknessData) {
             points.push((f64::NAN, f64::NAN));
         }
     }
-    if points.iter().any(|q| q.0.is_finite()) {
-        m.series.push(Series {
-            name: "unloading".into(),
-            points,
-            role: Role::Unloading,
-            draw: Draw::Dashed,
-        });
-    }
-    for (xs, role, what) in [
-        (&td.jump_in, Role::JumpIn, "jump-in"),
-        (&td.pull_off, Role::PullOff, "pull-off"),
-    ] {
-        for &x in xs.iter().filter(|x| x.is_finite() && **x > 0.0) {
-            m.vlines.push(VLine {
-                x,
-                role,
-                name: format!("{what} t·q_r {}", super::words::sig(x, 2)),
-            });
-        }
-    }
+    push_window(m, points, [td.jump_in.clone(), td.pull_off.clone()], "t·q_r ");
 }
 
 /// Rows of points per load filling the gap's bracket (enough to shade a braille column).
