@@ -111,6 +111,20 @@ pub const ADHESION_ESTIMATE_REL: f64 = 5e-3;
 pub const ADHESIVE_PR_INTEGRAL_REL: f64 = 2e-3;
 // GFMD
 
+/// A GFMD load cycle without adhesion: a_r on unloading against loading at the same load
+/// (absolute). The minimum is unique, so only nodes whose contact is decided within the
+/// force residual (1e-8) can differ; two nodes of a 64² grid is 5e-4.
+pub const GFMD_RETRACE_A_R: f64 = 5e-4;
+
+/// The reference set's CI subset (tests/reference_set.rs): a recomputed value against the
+/// stored one of the same seed may differ by this many seed-to-seed standard errors of the set
+/// at that load: the same code and seed reproduce it to round-off on one machine (FFT
+/// round-off differs between processors and can flip a node at the edge of contact).
+pub const REFERENCE_SET_SE: f64 = 1.0;
+/// … and, where the set has a single seed or an error of 0, by this relative amount (two
+/// contact nodes of 256² at the smallest a_r ≈ 1e-3 of the set are 3e-5 absolute, 3 %).
+pub const REFERENCE_SET_FLOOR: f64 = 0.03;
+
 /// Relative force residual the GFMD tests relax to (tighter than the 1e-8 default, so the
 /// closed-form comparisons below are limited by their physics, not by the solver).
 pub const GFMD_TEST_RESIDUAL: f64 = 1e-10;

@@ -719,3 +719,100 @@ fn figure_keys_and_columns() {
     let csv = String::from_utf8_lossy(&out.stdout);
     assert_eq!(csv.lines().next(), Some("series,x,y,note"));
 }
+
+/// `gfmd --cycle`: the sweep's keys, each row's `branch`, the pull-off and the jump-in; the
+/// CSV has the sweep's columns then `branch`, after `#` lines.
+#[test]
+fn gfmd_cycle_keys_and_columns() {
+    let args = [
+        "gfmd", "--grid", "32", "--from", "0.005", "--to", "0.02", "--points", "2", "--cycle",
+    ];
+    let c = json(&args);
+    assert_has(
+        &c,
+        &[
+            "rows",
+            "pull_off_pressure",
+            "pull_off_bracket",
+            "jump_in_pressure",
+            "jump_in_bracket",
+            "note",
+            "grid",
+            "seed",
+            "reduction",
+            "theory",
+            "theory_error",
+            "iterations",
+            "elapsed_s",
+        ],
+        "gfmd --cycle",
+    );
+    assert_has(
+        &c["rows"][0],
+        &[
+            "branch",
+            "p",
+            "a_r",
+            "mean_gap_rel",
+            "mean_contact_stress",
+            "contact_stress_variance",
+            "residual",
+        ],
+        "gfmd --cycle row",
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(args)
+        .args(["--format", "csv"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
+    assert_eq!(header, format!("{},branch", asperity_cli::cli::gfmd::GFMD_CSV_HEADER));
+    assert!(text.contains("# pull_off_pressure: "), "{text}");
+}
+
+/// `sweep --cycle`: the load sweep's keys and `cycle` (rows with `branch`); the CSV's columns.
+#[test]
+fn sweep_cycle_keys_and_columns() {
+    let args = [
+        "sweep", "--preset", "system-2", "--from", "0.001", "--to", "0.01", "--points", "3", "--cycle",
+    ];
+    let mut json_args = args.to_vec();
+    json_args.extend(["--format", "json"]);
+    let v = json(&json_args);
+    assert_has(
+        &v,
+        &[
+            "rows",
+            "pull_off_pressure",
+            "jump_in_pressure",
+            "cycle",
+            "cycle.rows",
+            "cycle.note",
+            "cycle.unloading_branch_ends",
+        ],
+        "sweep --cycle",
+    );
+    assert_has(
+        &v["cycle"]["rows"][0],
+        &[
+            "branch",
+            "p",
+            "a_r",
+            "mean_gap_rel",
+            "mean_contact_stress",
+            "on_unloading_branch",
+        ],
+        "sweep --cycle row",
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
+    assert_eq!(header, asperity_cli::cli::sweep::CYCLE_CSV_HEADER);
+    assert_eq!(text.lines().filter(|l| !l.starts_with('#')).count(), 1 + 5);
+}

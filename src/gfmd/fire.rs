@@ -64,14 +64,36 @@ const PARALLEL_MIN_NODES: usize = 1 << 15;
 /// this × tolerance × h_rms; FIRE then checks the force residual.
 pub const PK_GAP_TOL: f64 = 0.1;
 
-/// Per-chunk partial sums of the node loop.
-#[derive(Debug, Clone, Copy, Default)]
+/// Under tension with no node on the wall, contact is taken as lost once the largest possible
+/// attraction (γ/ρ)e^{−g_min/ρ} has stayed below this fraction of |p₀| for [`DETACH_STEPS`]
+/// steps: the mean force −p₀ − ⟨v′(g)⟩ then lifts the body, and lifting only weakens the
+/// attraction (no equilibrium remains: past pull-off).
+const DETACH_FRACTION: f64 = 0.5;
+/// Consecutive steps the detachment condition must hold (see [`DETACH_FRACTION`]).
+const DETACH_STEPS: usize = 20;
+
+/// Per-chunk partial sums of the node loop (`gmin`: the smallest gap, in Δa).
+#[derive(Debug, Clone, Copy)]
 struct Sums {
     ff: f64,
     ss: f64,
     fv: f64,
     vv: f64,
     wall: usize,
+    gmin: f64,
+}
+
+impl Default for Sums {
+    fn default() -> Self {
+        Sums {
+            ff: 0.0,
+            ss: 0.0,
+            fv: 0.0,
+            vv: 0.0,
+            wall: 0,
+            gmin: f64::INFINITY,
+        }
+    }
 }
 
 impl Sums {
@@ -82,8 +104,22 @@ impl Sums {
             fv: self.fv + o.fv,
             vv: self.vv + o.vv,
             wall: self.wall + o.wall,
+            gmin: self.gmin.min(o.gmin),
         }
     }
+}
+
+/// What a relaxation under load control ends in.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Relaxation {
+    /// An equilibrium within the tolerance.
+    Equilibrium(Solution),
+    /// Under a tensile load (p₀ < 0, with adhesion) the body left the substrate: no
+    /// equilibrium with contact exists at this load (past pull-off).
+    ContactLost {
+        /// Steps taken until detachment was certain.
+        iterations: usize,
+    },
 }
 
 /// The solver state in internal units: lengths in Δa, stresses in E*.
@@ -117,6 +153,7 @@ impl State {
             for i in 0..f.len() {
                 let sigma = p0 + c[i];
                 let g = w[i] - h[i];
+                s.gmin = s.gmin.min(g);
                 let mut fi = -sigma;
                 // e^{−g/ρ} < 1e-17 beyond g = 40ρ: below round-off of every stress here
                 if a > 0.0 && g * ir < EXP_CUTOFF {
@@ -231,6 +268,26 @@ pub fn solve_from(
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
 ) -> Result<Solution> {
+    match relax_from(problem, opts, start_gap, progress, cancel)? {
+        Relaxation::Equilibrium(sol) => Ok(sol),
+        Relaxation::ContactLost { iterations } => Err(Error::NotConverged {
+            solver: crate::error::Solver::Gfmd,
+            reason: format!(
+                "contact lost after {iterations} steps: the tensile load is beyond what adhesion holds (past pull-off)"
+            ),
+        }),
+    }
+}
+
+/// [`solve_from`], telling a loss of contact under tension ([`Relaxation::ContactLost`])
+/// apart from an equilibrium; the load cycle ([`super::cycle`]) steps into tension with it.
+pub fn relax_from(
+    problem: &Problem<'_>,
+    opts: &GfmdOptions,
+    start_gap: Option<&[f64]>,
+    progress: &mut dyn FnMut(Progress),
+    cancel: &AtomicBool,
+) -> Result<Relaxation> {
     problem.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
@@ -343,6 +400,7 @@ pub fn solve_from(
     let mut alpha = ALPHA_START;
     let mut n_pos = 0usize;
     let mut it = pk_steps;
+    let mut detaching = 0usize;
     let residual;
     loop {
         let sums = st.forces();
@@ -381,6 +439,13 @@ pub fn solve_from(
                 ),
             });
         }
+        let lifting = st.p0 < 0.0
+            && sums.wall == 0
+            && st.adh_stress * (-sums.gmin * st.inv_range).exp() < -DETACH_FRACTION * st.p0;
+        detaching = if lifting { detaching + 1 } else { 0 };
+        if detaching >= DETACH_STEPS {
+            return Ok(Relaxation::ContactLost { iterations: it });
+        }
         let vv = if sums.fv > 0.0 {
             n_pos += 1;
             if n_pos > N_DELAY {
@@ -407,7 +472,7 @@ pub fn solve_from(
         residual,
         contact_fraction: on_wall.iter().filter(|&&b| b).count() as f64 / n as f64,
     });
-    Ok(Solution {
+    Ok(Relaxation::Equilibrium(Solution {
         gap,
         stress,
         on_wall,
@@ -415,5 +480,5 @@ pub fn solve_from(
         pk_iterations: pk_steps,
         residual,
         elapsed_s: t0.elapsed().as_secs_f64(),
-    })
+    }))
 }

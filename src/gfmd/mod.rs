@@ -32,7 +32,8 @@
 //!   system keeps γ̃_glo and the Tabor parameter of the full one (the invariants side by side);
 //! - [`result`]: one run of a scene with the theory on the same map;
 //! - [`ladder`]: the Δa → 0 limit with an error bar, and ensembles over seeds;
-//! - [`sweep`]: warm-started load sweeps beside the theory's sweep on the same map.
+//! - [`sweep`]: warm-started load sweeps beside the theory's sweep on the same map;
+//! - [`cycle`]: loading, unloading and tension to pull-off on one map (physics.md §6.1).
 //!
 //! ## Library API (what the TUI calls from a worker thread)
 //!
@@ -49,6 +50,7 @@
 //! [`Error::Cancelled`](crate::error::Error::Cancelled) within one step, and the theory within
 //! one march of its adhesive solver.
 
+pub mod cycle;
 pub mod fire;
 pub mod grid;
 pub mod ladder;

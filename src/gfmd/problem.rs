@@ -109,7 +109,7 @@ pub struct Problem<'a> {
     pub modulus: f64,
     /// Slab thickness t (m); `f64::INFINITY` = semi-infinite.
     pub thickness: f64,
-    /// Nominal pressure p₀ (Pa), > 0.
+    /// Nominal pressure p₀ (Pa): > 0, or ≤ 0 (tension) with adhesion.
     pub pressure: f64,
     /// Surface energy γ (J/m²); 0 = hard wall only.
     pub gamma: f64,
@@ -134,11 +134,16 @@ impl Problem<'_> {
                 "a thickness t > 0 (m), or inf",
             ));
         }
-        if !(self.pressure.is_finite() && self.pressure > 0.0) {
+        let tension_allowed = self.gamma > 0.0;
+        if !(self.pressure.is_finite() && (self.pressure > 0.0 || tension_allowed)) {
             return Err(Error::invalid(
                 Field::PressurePa,
                 self.pressure,
-                "a finite pressure p > 0 (Pa)",
+                if tension_allowed {
+                    "a finite pressure (Pa)"
+                } else {
+                    "a finite pressure p > 0 (Pa); tension needs adhesion"
+                },
             ));
         }
         if !(self.gamma.is_finite() && self.gamma >= 0.0) {

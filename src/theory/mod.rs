@@ -5,6 +5,7 @@
 
 pub mod adhesion;
 pub mod closed_form;
+pub mod cycle;
 pub mod energy;
 pub mod engine;
 pub mod gap;

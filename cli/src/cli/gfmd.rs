@@ -10,6 +10,7 @@
 
 use super::{emit, SceneArgs};
 use asperity::error::{Error, Field, Result};
+use asperity::gfmd::cycle::CycleSpec;
 use asperity::gfmd::ladder::{Ensemble, Extrapolated, Ladder, MeanSe};
 use asperity::gfmd::reduction::Reduction;
 use asperity::gfmd::sweep::GfmdSweep;
@@ -102,6 +103,10 @@ pub struct GfmdArgs {
     /// Load sweep: number of log-spaced loads.
     #[arg(long, default_value_t = 8, allow_hyphen_values = true, value_parser = super::parse::count_in("points", 1, 100_000))]
     pub points: usize,
+    /// Load cycle: load from --from up to --to, unload back down and on into tension until the
+    /// contact is lost (pull-off, with adhesion); rows carry their branch.
+    #[arg(long, requires = "from")]
+    pub cycle: bool,
 }
 
 /// `--method`.
@@ -252,6 +257,24 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
         }
     };
     if let (Some(from), Some(to)) = (args.from, args.to) {
+        if args.cycle || to < from {
+            let spec = CycleSpec {
+                from,
+                to,
+                points: args.points,
+                cycle: args.cycle,
+            };
+            let result = gfmd::cycle::run_cycle(&setup, &spec, &opts, &mut |_, p| bar(p), &cancel);
+            if shown {
+                eprintln!();
+            }
+            let c = result?;
+            match args.format {
+                GfmdFormat::Json => emit(&serde_json::to_string_pretty(&c).expect("serialisable")),
+                GfmdFormat::Table | GfmdFormat::Csv => emit(&super::gfmd_cycle::cycle_csv(&c)),
+            }
+            return Ok(());
+        }
         let spec = SweepSpec {
             from,
             to,
@@ -397,7 +420,7 @@ pub fn single_csv(o: &GfmdResult) -> String {
 
 /// One CSV row of [`GFMD_CSV_HEADER`]; a value that is not available (or not finite) is an
 /// empty cell.
-fn csv_row(first: [f64; 6], converged: bool, solver: (f64, usize, f64), theory: [Option<f64>; 3]) -> String {
+pub(crate) fn csv_row(first: [f64; 6], converged: bool, solver: (f64, usize, f64), theory: [Option<f64>; 3]) -> String {
     let f = |x: Option<f64>| match x {
         Some(x) if x.is_finite() => format!("{x:e}"),
         _ => String::new(),

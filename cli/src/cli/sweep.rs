@@ -60,6 +60,10 @@ pub struct SweepArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = SweepFormat::Csv, allow_hyphen_values = true)]
     pub format: SweepFormat,
+    /// Load sweeps: the theory along a load cycle (up on the loading branch, back down on the
+    /// unloading branch while it exists), as `gfmd --cycle` walks it.
+    #[arg(long)]
+    pub cycle: bool,
 }
 
 /// The CSV header (the first nine columns are the public interface of the load sweep; the
@@ -135,6 +139,10 @@ pub struct SweepOutput {
     /// thickness and gamma sweeps: every edge between two neighbouring values that differ in
     /// the number of stable branches, refined by bisection.
     pub window_edges: Vec<asperity::theory::hysteresis::KnobEdge>,
+    /// With `--cycle`: the theory's path up and back down (rows with `branch`), where the
+    /// unloading branch ends, and why the path stops at the smallest load.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cycle: Option<asperity::theory::cycle::TheoryCycle>,
 }
 
 /// The edges of a load sweep's window as [`SweepOutput::window_edges`] (ascending p*).
@@ -186,6 +194,13 @@ pub fn csv(rows: &[Row]) -> String {
 
 /// Runs the sweep `args` asks for; returns the JSON object (rows included).
 pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
+    if args.cycle && args.over != Over::Pressure {
+        return Err(Error::field(
+            "--cycle",
+            "set",
+            "only with --over pressure (a load cycle runs over p*)",
+        ));
+    }
     match args.over {
         Over::Pressure => {
             if let Some(p) = args.pressure {
@@ -203,6 +218,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
             spec.validate()?;
             let (preset, scene) = args.scene.resolve(Some(args.from))?;
             let sw: Sweep = sweep::sweep(&scene, &spec, &Options::default(), None)?;
+            let cycle = args.cycle.then(|| asperity::theory::cycle::path(&sw));
             let rows = sw
                 .rows
                 .iter()
@@ -222,6 +238,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                 window_edges: load_edges(sw.pull_off_pressure, sw.jump_in_pressure),
                 jump_in_pressure: sw.jump_in_pressure,
                 pull_off_pressure: sw.pull_off_pressure,
+                cycle,
             })
         }
         Over::Thickness | Over::Gamma => {
@@ -308,6 +325,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                 jump_in_pressure: None,
                 pull_off_pressure: None,
                 window_edges,
+                cycle: None,
             })
         }
     }
@@ -319,8 +337,39 @@ pub fn run(args: &SweepArgs) -> Result<String> {
     if let Some(note) = &out.note {
         eprintln!("asperity sweep: {note}");
     }
-    Ok(match args.format {
-        SweepFormat::Csv => csv(&out.rows),
-        SweepFormat::Json => serde_json::to_string_pretty(&out).expect("serialisable"),
+    Ok(match (args.format, &out.cycle) {
+        (SweepFormat::Csv, Some(c)) => cycle_csv(c),
+        (SweepFormat::Csv, None) => csv(&out.rows),
+        (SweepFormat::Json, _) => serde_json::to_string_pretty(&out).expect("serialisable"),
     })
 }
+
+/// The CSV of `sweep --cycle`: `#` lines (where the unloading branch ends, the jump-in, why the
+/// path stops), then `branch,p,a_r,mean_gap_rel,mean_contact_stress,on_unloading_branch`.
+pub fn cycle_csv(c: &asperity::theory::cycle::TheoryCycle) -> String {
+    let f = |x: f64| if x.is_finite() { format!("{x:e}") } else { String::new() };
+    let mut out = String::new();
+    if let Some(p) = c.unloading_branch_ends {
+        out.push_str(&format!("# unloading_branch_ends: {}\n", f(p)));
+    }
+    if let Some(p) = c.jump_in_pressure {
+        out.push_str(&format!("# jump_in_pressure: {}\n", f(p)));
+    }
+    out.push_str(&format!("# note: {}\n", c.note));
+    out.push_str(CYCLE_CSV_HEADER);
+    for r in &c.rows {
+        out.push_str(&format!(
+            "\n{},{},{},{},{},{}",
+            r.branch.name(),
+            f(r.p),
+            f(r.a_r),
+            f(r.mean_gap_rel),
+            f(r.mean_contact_stress),
+            r.on_unloading_branch
+        ));
+    }
+    out
+}
+
+/// The columns of `sweep --cycle --format csv`.
+pub const CYCLE_CSV_HEADER: &str = "branch,p,a_r,mean_gap_rel,mean_contact_stress,on_unloading_branch";

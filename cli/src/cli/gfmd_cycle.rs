@@ -1,0 +1,60 @@
+//! `asperity gfmd --cycle` (and a sweep downwards) as CSV: the columns of a GFMD sweep
+//! ([`super::gfmd::GFMD_CSV_HEADER`]) and `branch`, after `#` lines giving the pull-off and the
+//! jump-in. The theory's columns are its branch at the same load: the unloading branch where
+//! the theory has two (inside a hysteresis window) on unloading rows, empty on tensile rows
+//! (the theory's sweep covers the positive loads).
+
+use super::gfmd::{csv_row, GFMD_CSV_HEADER};
+use asperity::gfmd::cycle::{GfmdCycle, PathBranch};
+
+/// The CSV of a GFMD load path (see the module docs).
+pub fn cycle_csv(c: &GfmdCycle) -> String {
+    let f = |x: f64| format!("{x:e}");
+    let mut out = String::new();
+    if let Some(p) = c.pull_off_pressure {
+        out.push_str(&format!("# pull_off_pressure: {}\n", f(p)));
+    }
+    if let Some([lost, held]) = c.pull_off_bracket {
+        out.push_str(&format!("# pull_off_bracket: {} {}\n", f(lost), f(held)));
+    }
+    if let Some(p) = c.jump_in_pressure {
+        out.push_str(&format!("# jump_in_pressure: {}\n", f(p)));
+    }
+    if let Some(n) = &c.note {
+        out.push_str(&format!("# note: {n}\n"));
+    }
+    out.push_str(GFMD_CSV_HEADER);
+    out.push_str(",branch");
+    for r in &c.rows {
+        let g = &r.row;
+        let th = c
+            .theory
+            .as_ref()
+            .and_then(|t| t.rows.iter().find(|t| (t.p / g.p - 1.0).abs() < 1e-12));
+        let unloading = r.branch == PathBranch::Unloading;
+        let pick = |load: f64, unload: f64| if unloading && unload.is_finite() { unload } else { load };
+        let theory = [
+            th.map(|t| pick(t.a_r, t.a_r_unloading)),
+            th.map(|t| pick(t.mean_gap_rel, t.mean_gap_unloading_rel)),
+            th.filter(|t| !(unloading && t.a_r_unloading.is_finite()))
+                .map(|t| t.mean_contact_stress),
+        ];
+        out.push('\n');
+        out.push_str(&csv_row(
+            [
+                g.p,
+                g.a_r,
+                g.mean_gap_rel,
+                g.mean_gap,
+                g.mean_contact_stress,
+                g.elastic_energy,
+            ],
+            g.converged,
+            (g.contact_stress_variance, g.iterations, g.residual),
+            theory,
+        ));
+        out.push(',');
+        out.push_str(r.branch.name());
+    }
+    out
+}

@@ -1,0 +1,392 @@
+//! GFMD through the adhesive cycle: quasi-static loading, unloading, and tension to pull-off.
+//!
+//! One map, load control, every load warm-started from the relaxed gap of the previous one
+//! (the path is what a slow experiment does):
+//!
+//! 1. **loading**: from first touch at p*₁ = `from`, log-spaced up to `to` (as
+//!    [`super::sweep::run_sweep`]);
+//! 2. **unloading**: the same loads back down to `from` (a plain unloading sweep, `from > to`,
+//!    relaxes at `from` from first touch and steps down to `to`);
+//! 3. **tension** (a cycle with adhesion): p* = 0, then −p*₁, −2p*₁, −4p*₁, … until the body
+//!    leaves the substrate ([`Relaxation::ContactLost`]: no equilibrium with contact at that
+//!    load), then bisections between the last load held and the first one lost, each
+//!    warm-started from the last state held (so the path stays monotone), until the bracket is
+//!    [`PULL_OFF_REL`] of the pull-off wide (at most [`PULL_OFF_BISECTIONS`]).
+//!
+//! The pull-off pressure is the most tensile mean pressure the contact sustained, with the
+//! bracket (first load lost, last load held). Without adhesion a rough contact holds no
+//! tension: the cycle stops at the smallest load, and the pull-off pressure is 0 (a note
+//! says so). Under load control a contact can also jump: on loading, the largest
+//! d ln a_r / d ln p* between neighbouring loads above [`JUMP_SLOPE`] is reported as the
+//! jump-in load, with its bracket (a smooth adhesionless contact has a slope ≤ ≈ 1.1, [S-18]).
+//!
+//! Without adhesion the minimum at every load is unique, so unloading retraces loading to the
+//! solver tolerance (tested); with adhesion unloading keeps more contact than loading at the
+//! same load (contact hysteresis; tested).
+
+use super::fire::{relax_from, Relaxation};
+use super::sweep::{energy, GfmdSweepRow};
+use super::{measure, prepare, GfmdOptions, GfmdSetup, Prepared, Progress, Stage};
+use crate::error::{Error, Field, Result};
+pub use crate::theory::cycle::PathBranch;
+use crate::theory::engine::Options;
+use crate::theory::sweep::{self, Sweep, SweepSpec};
+use serde::Serialize;
+use std::sync::atomic::AtomicBool;
+use std::time::Instant;
+
+/// The pull-off bracket is bisected until its width is at most this fraction of the pull-off
+/// pressure (or [`PULL_OFF_BISECTIONS`] bisections).
+pub const PULL_OFF_REL: f64 = 0.03;
+/// Most bisections of the pull-off bracket after the first load lost.
+pub const PULL_OFF_BISECTIONS: usize = 12;
+/// A loading step whose d ln a_r / d ln p* exceeds this is a jump-in.
+pub const JUMP_SLOPE: f64 = 3.0;
+/// The tensile steps stop (contact lost for certain) once |p| exceeds this × the theoretical
+/// strength γ/ρ of the interaction; the limit is never reached in practice.
+const TENSION_LIMIT: f64 = 2.0;
+
+/// The path of a cycle or a one-way sweep.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CycleSpec {
+    /// First load p* (> 0).
+    pub from: f64,
+    /// Turning load p* (> 0): above `from` for a cycle or a loading sweep, below it for an
+    /// unloading sweep.
+    pub to: f64,
+    /// Log-spaced loads between them (≥ 2, or 1 for a cycle at one load).
+    pub points: usize,
+    /// Load to `to`, unload back to `from` and on into tension until pull-off.
+    pub cycle: bool,
+}
+
+impl CycleSpec {
+    /// Checks the loads as a sweep's (p* range, points); a cycle needs `to ≥ from`.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming [`Field::SweepFrom`], [`Field::SweepTo`] or
+    /// [`Field::SweepPoints`].
+    pub fn validate(&self) -> Result<()> {
+        self.rising().validate()?;
+        if self.cycle && self.to < self.from {
+            return Err(Error::invalid(
+                Field::SweepTo,
+                self.to,
+                format!(
+                    "a turning load p* >= the first load {} for a cycle",
+                    crate::error::fmt_value(self.from)
+                ),
+            ));
+        }
+        if !self.cycle && self.points > 1 && self.to == self.from {
+            return Err(Error::invalid(
+                Field::SweepTo,
+                self.to,
+                "a p* other than the first load (or a single point)",
+            ));
+        }
+        Ok(())
+    }
+
+    /// The loads in increasing order.
+    fn rising(&self) -> SweepSpec {
+        let (lo, hi) = if self.from <= self.to {
+            (self.from, self.to)
+        } else {
+            (self.to, self.from)
+        };
+        SweepSpec {
+            from: lo,
+            to: hi,
+            points: if lo == hi { 1 } else { self.points },
+        }
+    }
+}
+
+/// One measured load of a path.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CycleRow {
+    /// `loading` or `unloading`.
+    pub branch: PathBranch,
+    /// The load's measurements (the columns of a GFMD sweep).
+    #[serde(flatten)]
+    pub row: GfmdSweepRow,
+}
+
+/// A GFMD load path on one map, with its pull-off and jump-in, and the theory's sweep on the
+/// same map over the positive loads (both branches inside a hysteresis window).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GfmdCycle {
+    /// The loads in the order visited (tensile loads lost are not rows).
+    pub rows: Vec<CycleRow>,
+    /// The most tensile p* the contact sustained (0 without adhesion; null when the path had
+    /// no tensile part).
+    pub pull_off_pressure: Option<f64>,
+    /// (the first p* lost, the last p* held): the pull-off lies between them.
+    pub pull_off_bracket: Option<[f64; 2]>,
+    /// The load at which loading jumped into more contact (null: no jump).
+    pub jump_in_pressure: Option<f64>,
+    /// (the load before the jump, the load after it).
+    pub jump_in_bracket: Option<[f64; 2]>,
+    /// Why the pull-off is as reported (no adhesion, or the tension limit).
+    pub note: Option<String>,
+    /// Grid side N.
+    pub grid: usize,
+    /// Seed (null for a loaded map).
+    pub seed: Option<u64>,
+    /// The reduced system's invariants (null for a loaded map).
+    pub reduction: Option<super::reduction::Reduction>,
+    /// The theory's sweep on the map's discrete spectrum over the positive loads.
+    pub theory: Option<Sweep>,
+    /// Why `theory` is null.
+    pub theory_error: Option<String>,
+    /// Total solver steps (tensile loads lost included).
+    pub iterations: usize,
+    /// Wall time (s).
+    pub elapsed_s: f64,
+}
+
+/// The walker along a path: the map, the last relaxed gap and the step count.
+struct Walker<'a> {
+    prep: Prepared,
+    opts: &'a GfmdOptions,
+    gap: Option<Vec<f64>>,
+    iterations: usize,
+}
+
+impl Walker<'_> {
+    /// Relaxes at `p` from the current state; `None` when contact is lost (the state is kept).
+    fn step(
+        &mut self,
+        p: f64,
+        k: usize,
+        progress: &mut dyn FnMut(usize, Progress),
+        cancel: &AtomicBool,
+    ) -> Result<Option<GfmdSweepRow>> {
+        let problem = self.prep.problem(p);
+        let out = relax_from(
+            &problem,
+            self.opts,
+            self.gap.as_deref(),
+            &mut |pr| progress(k, pr),
+            cancel,
+        )?;
+        let sol = match out {
+            Relaxation::Equilibrium(sol) => sol,
+            Relaxation::ContactLost { iterations } => {
+                self.iterations += iterations;
+                return Ok(None);
+            }
+        };
+        let m = measure(&problem, &sol, self.opts);
+        self.iterations += sol.iterations;
+        let row = GfmdSweepRow {
+            p,
+            a_r: m.stats.a_r,
+            mean_gap_rel: m.mean_gap_rel,
+            mean_gap: m.mean_gap,
+            mean_contact_stress: m.stats.mean_contact_stress,
+            elastic_energy: energy(&problem, &sol),
+            converged: true,
+            contact_stress_variance: m.stats.contact_stress_variance,
+            iterations: sol.iterations,
+            residual: sol.residual,
+        };
+        self.gap = Some(sol.gap);
+        Ok(Some(row))
+    }
+}
+
+/// Runs the path of `spec` on the map of `setup` (see the module docs), then the theory's sweep
+/// on the same map over the positive loads. `progress` gets the row index with each report.
+///
+/// # Errors
+/// [`Error::Invalid`] for a spec out of range; as [`super::run()`] for a load that does not
+/// converge; [`Error::Cancelled`] when `cancel` is set.
+pub fn run_cycle(
+    setup: &GfmdSetup,
+    spec: &CycleSpec,
+    opts: &GfmdOptions,
+    progress: &mut dyn FnMut(usize, Progress),
+    cancel: &AtomicBool,
+) -> Result<GfmdCycle> {
+    spec.validate()?;
+    opts.validate()?;
+    let t0 = Instant::now();
+    let mut walker = Walker {
+        prep: prepare(setup)?,
+        opts,
+        gap: None,
+        iterations: 0,
+    };
+    let loads = spec.rising().pressures();
+    let mut rows: Vec<CycleRow> = Vec::new();
+    let push = |rows: &mut Vec<CycleRow>, branch, row| rows.push(CycleRow { branch, row });
+    let held = |r: Option<GfmdSweepRow>, p: f64| {
+        r.ok_or_else(|| Error::NotConverged {
+            solver: crate::error::Solver::Gfmd,
+            reason: format!("contact lost at the compressive load p* = {p:e}"),
+        })
+    };
+    if spec.cycle || spec.from <= spec.to {
+        for &p in &loads {
+            let row = held(walker.step(p, rows.len(), progress, cancel)?, p)?;
+            push(&mut rows, PathBranch::Loading, row);
+        }
+    } else {
+        let top = *loads.last().expect("at least one load");
+        let row = held(walker.step(top, 0, progress, cancel)?, top)?;
+        push(&mut rows, PathBranch::Loading, row);
+    }
+    let unloading = spec.cycle || spec.from > spec.to;
+    if unloading {
+        for &p in loads.iter().rev().skip(1) {
+            let row = held(walker.step(p, rows.len(), progress, cancel)?, p)?;
+            push(&mut rows, PathBranch::Unloading, row);
+        }
+    }
+    let (jump_in_pressure, jump_in_bracket) = jump_in(&rows);
+    let mut pull_off = PullOff::default();
+    if spec.cycle {
+        pull_off = tension(&mut walker, loads[0], &mut rows, progress, cancel)?;
+    }
+    let last = rows.last().map(|r| r.row);
+    if let Some(last) = last {
+        progress(
+            rows.len(),
+            Progress {
+                stage: Stage::Theory,
+                iteration: last.iterations,
+                residual: last.residual,
+                contact_fraction: last.a_r,
+            },
+        );
+    }
+    let rising = spec.rising();
+    let (theory, theory_error) = match walker
+        .prep
+        .theory_scene(rising.from)
+        .and_then(|sc| sweep::sweep(&sc, &rising, &Options::default(), Some(cancel)))
+    {
+        Err(Error::Cancelled) => return Err(Error::Cancelled),
+        Ok(s) => (Some(s), None),
+        Err(e) => (None, Some(e.to_string())),
+    };
+    Ok(GfmdCycle {
+        rows,
+        pull_off_pressure: pull_off.pressure,
+        pull_off_bracket: pull_off.bracket,
+        jump_in_pressure,
+        jump_in_bracket,
+        note: pull_off.note,
+        grid: walker.prep.surface.nx,
+        seed: setup.surface.is_none().then_some(setup.seed),
+        reduction: walker.prep.reduction.clone(),
+        theory,
+        theory_error,
+        iterations: walker.iterations,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// The pull-off found by [`tension`].
+#[derive(Debug, Default)]
+struct PullOff {
+    pressure: Option<f64>,
+    bracket: Option<[f64; 2]>,
+    note: Option<String>,
+}
+
+/// Steps from the smallest load `p1` into tension until contact is lost, then bisects the
+/// bracket (module docs, step 3); appends the loads held to `rows`.
+fn tension(
+    walker: &mut Walker<'_>,
+    p1: f64,
+    rows: &mut Vec<CycleRow>,
+    progress: &mut dyn FnMut(usize, Progress),
+    cancel: &AtomicBool,
+) -> Result<PullOff> {
+    let sc = &walker.prep.scene;
+    if sc.gamma <= 0.0 {
+        return Ok(PullOff {
+            pressure: Some(0.0),
+            bracket: None,
+            note: Some("no adhesion: a rough contact holds no tension (pull-off at p* = 0)".into()),
+        });
+    }
+    // the theoretical strength γ/ρ in p* (by the map's ḡ): no contact holds beyond it
+    let strength = sc.gamma / sc.range / (sc.modulus * walker.prep.rms_gradient);
+    let mut held = p1;
+    let mut lost = None;
+    let mut p = 0.0;
+    while p >= -TENSION_LIMIT * strength {
+        match walker.step(p, rows.len(), progress, cancel)? {
+            Some(row) => {
+                rows.push(CycleRow {
+                    branch: PathBranch::Unloading,
+                    row,
+                });
+                held = p;
+                p = if p == 0.0 { -p1 } else { 2.0 * p };
+            }
+            None => {
+                lost = Some(p);
+                break;
+            }
+        }
+    }
+    let Some(mut lost) = lost else {
+        return Ok(PullOff {
+            pressure: Some(held),
+            bracket: None,
+            note: Some(format!(
+                "contact held up to {TENSION_LIMIT} x the interaction's strength gamma/rho: no pull-off found"
+            )),
+        });
+    };
+    for _ in 0..PULL_OFF_BISECTIONS {
+        if held - lost <= PULL_OFF_REL * held.abs() {
+            break;
+        }
+        let mid = 0.5 * (held + lost);
+        match walker.step(mid, rows.len(), progress, cancel)? {
+            Some(row) => {
+                rows.push(CycleRow {
+                    branch: PathBranch::Unloading,
+                    row,
+                });
+                held = mid;
+            }
+            None => lost = mid,
+        }
+    }
+    Ok(PullOff {
+        pressure: Some(held),
+        bracket: Some([lost, held]),
+        note: None,
+    })
+}
+
+/// The steepest loading step above [`JUMP_SLOPE`]: its upper load and its bracket.
+fn jump_in(rows: &[CycleRow]) -> (Option<f64>, Option<[f64; 2]>) {
+    let loading: Vec<&GfmdSweepRow> = rows
+        .iter()
+        .filter(|r| r.branch == PathBranch::Loading)
+        .map(|r| &r.row)
+        .collect();
+    let mut best: Option<(f64, [f64; 2])> = None;
+    for w in loading.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        if a.a_r <= 0.0 || b.a_r <= 0.0 || b.p <= a.p {
+            continue;
+        }
+        let slope = (b.a_r / a.a_r).ln() / (b.p / a.p).ln();
+        if slope > JUMP_SLOPE && best.is_none_or(|(s, _)| slope > s) {
+            best = Some((slope, [a.p, b.p]));
+        }
+    }
+    match best {
+        Some((_, br)) => (Some(br[1]), Some(br)),
+        None => (None, None),
+    }
+}

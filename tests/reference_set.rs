@@ -1,0 +1,115 @@
+//! asperity's own GFMD reference set (data/reference, docs/reference-set.md): a fast subset is
+//! recomputed and must reproduce the stored values within their error bars. The subset is
+//! one seed of one adhesive case (system II, half-space, the preset's γ_s: a load cycle on the
+//! set's 256² grid), compared row by row with the stored rows of the same seed; each quantity
+//! within the seed-to-seed standard error of the set at that load (or the floor of
+//! [`REFERENCE_SET_FLOOR`] where the set has one seed), and the pull-off within its bracket.
+
+use asperity::gfmd::cycle::{run_cycle, CycleSpec, PathBranch};
+use asperity::gfmd::{GfmdOptions, GfmdSetup, GridSpec};
+use asperity::input::preset::Preset;
+use asperity::tolerances::{REFERENCE_SET_FLOOR, REFERENCE_SET_SE};
+use std::collections::HashMap;
+use std::sync::atomic::AtomicBool;
+
+const GRID: usize = 256;
+const RUNS: &str = include_str!("../data/reference/runs-256.csv");
+const SET: &str = include_str!("../data/reference/reference-set-256.csv");
+
+/// The rows of a CSV with a header, as maps from column to cell.
+fn table(text: &str) -> Vec<HashMap<String, String>> {
+    let mut lines = text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty());
+    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+    lines
+        .map(|l| header.iter().cloned().zip(l.split(',').map(String::from)).collect())
+        .collect()
+}
+
+fn num(row: &HashMap<String, String>, key: &str) -> Option<f64> {
+    row.get(key).and_then(|s| s.parse().ok())
+}
+
+#[test]
+fn a_subset_of_the_reference_set_is_reproduced_within_its_error_bars() {
+    let (t, f, seed) = ("inf", "1", 1u64);
+    let of_case =
+        |r: &&HashMap<String, String>| r["system"] == "system-2" && r["thickness_qr"] == t && r["gamma_factor"] == f;
+    let runs = table(RUNS);
+    let stored: Vec<_> = runs
+        .iter()
+        .filter(of_case)
+        .filter(|r| r["seed"] == seed.to_string())
+        .collect();
+    assert!(stored.len() > 10, "the stored case has {} rows", stored.len());
+    let set = table(SET);
+    let set: Vec<_> = set.iter().filter(of_case).collect();
+
+    let preset = Preset::resolve("system-2").unwrap();
+    let scene = preset.scene().unwrap();
+    let grid = GridSpec::from_preset(preset.gfmd.as_ref().unwrap())
+        .with_grid(GRID)
+        .unwrap();
+    let setup = GfmdSetup {
+        scene,
+        grid,
+        seed,
+        surface: None,
+        rescale: true,
+    };
+    let spec = CycleSpec {
+        from: 1e-4,
+        to: 1e-2,
+        points: 7,
+        cycle: true,
+    };
+    let c = run_cycle(
+        &setup,
+        &spec,
+        &GfmdOptions::default(),
+        &mut |_, _| {},
+        &AtomicBool::new(false),
+    )
+    .unwrap();
+
+    let rows: Vec<_> = stored.iter().filter(|r| r["branch"] != "pull_off").collect();
+    assert_eq!(c.rows.len(), rows.len(), "the path has as many loads as stored");
+    for (got, want) in c.rows.iter().zip(&rows) {
+        let branch = match got.branch {
+            PathBranch::Loading => "loading",
+            PathBranch::Unloading => "unloading",
+        };
+        let p = num(want, "p").unwrap();
+        assert_eq!(branch, want["branch"]);
+        assert!(
+            (got.row.p - p).abs() <= 1e-9 * p.abs().max(1e-12),
+            "{} against {p}",
+            got.row.p
+        );
+        let bar = set
+            .iter()
+            .find(|s| s["branch"] == branch && num(s, "p").is_some_and(|q| (q - p).abs() <= 1e-9 * p.abs()));
+        for (key, value) in [
+            ("a_r", got.row.a_r),
+            ("mean_gap_rel", got.row.mean_gap_rel),
+            ("mean_contact_stress", got.row.mean_contact_stress),
+        ] {
+            let want_v = num(want, key).unwrap();
+            let se = bar.and_then(|s| num(s, &format!("{key}_err"))).unwrap_or(0.0);
+            let allowed = (REFERENCE_SET_SE * se).max(REFERENCE_SET_FLOOR * want_v.abs().max(1e-3));
+            assert!(
+                (value - want_v).abs() <= allowed,
+                "{branch} p* {p:e} {key}: {value} against the stored {want_v} (allowed ±{allowed:e})"
+            );
+        }
+    }
+    let pull_off = stored
+        .iter()
+        .find(|r| r["branch"] == "pull_off")
+        .map(|r| num(r, "p").unwrap());
+    let (got, want) = (c.pull_off_pressure.unwrap(), pull_off.unwrap());
+    let [lost, held] = c.pull_off_bracket.unwrap();
+    assert!(
+        (got - want).abs() <= (held - lost).abs(),
+        "pull-off {got} against {want}"
+    );
+}
