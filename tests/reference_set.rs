@@ -113,3 +113,60 @@ fn a_subset_of_the_reference_set_is_reproduced_within_its_error_bars() {
         "pull-off {got} against {want}"
     );
 }
+
+mod trust {
+    use super::{num, table, SET};
+    use asperity::fit::trust::assess;
+    use asperity::input::preset::Preset;
+
+    fn system2(t: f64, gamma: f64, p: f64) -> asperity::input::scene::Scene {
+        Preset::resolve("system-2")
+            .unwrap()
+            .scene()
+            .unwrap()
+            .with_thickness_qr(t)
+            .unwrap()
+            .with_surface_energy_j_m2(gamma)
+            .unwrap()
+            .with_pressure(p)
+            .unwrap()
+    }
+
+    #[test]
+    fn at_a_stored_point_the_read_out_is_that_points_measured_error() {
+        // system II, half-space, the preset's γ_s, p* = 1e-3: a stored loading point
+        let set = table(SET);
+        let row = set
+            .iter()
+            .find(|r| {
+                r["system"] == "system-2"
+                    && r["thickness_qr"] == "inf"
+                    && r["gamma_factor"] == "1"
+                    && r["branch"] == "loading"
+                    && (num(r, "p").unwrap() / 1e-3 - 1.0).abs() < 1e-9
+            })
+            .expect("the stored point");
+        let p = num(row, "p").unwrap();
+        let tr = assess(&system2(f64::INFINITY, 0.157, p));
+        assert!(tr.inside, "{:?}", tr.outside);
+        let first = tr.nearest[0];
+        assert!(first.distance < 1e-3, "{first:?}");
+        let want = (num(row, "theory_a_r").unwrap() / num(row, "a_r").unwrap()).ln().abs();
+        let got = (first.a_r_theory / first.a_r_gfmd).ln().abs();
+        assert!((got - want).abs() < 1e-9, "{got} against {want}");
+        assert_eq!(tr.measured_model, 4);
+        assert!(tr.same_model);
+        assert!(tr.a_r_worst_ratio >= (tr.a_r_log_error).exp() - 1e-12);
+        assert!(tr.summary.starts_with("inside"), "{}", tr.summary);
+    }
+
+    #[test]
+    fn outside_the_set_each_excess_is_named() {
+        let tr = assess(&system2(f64::INFINITY, 0.157, 1e-6));
+        assert!(!tr.inside);
+        assert!(tr.outside[0].contains("2.0 decades below"), "{:?}", tr.outside);
+        let tr = assess(&system2(0.05, 0.157, 1e-3));
+        assert!(tr.outside.iter().any(|o| o.contains("thinner")), "{:?}", tr.outside);
+        assert!(tr.summary.starts_with("outside"), "{}", tr.summary);
+    }
+}

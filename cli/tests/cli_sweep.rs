@@ -94,11 +94,7 @@ fn a_sweep_keeps_going_past_loads_that_do_not_converge() {
     assert!(sw.rows.last().unwrap().converged);
     // printed: empty CSV fields and JSON nulls, never NaN
     use asperity_cli::cli::sweep::{csv, Row};
-    let rows: Vec<Row> = sw
-        .rows
-        .iter()
-        .map(|r| Row::new(*r, s.thickness_qr(), s.surface_energy_j_m2()))
-        .collect();
+    let rows: Vec<Row> = sw.rows.iter().map(|r| Row::new(*r, &s)).collect();
     let csv = csv(&rows);
     assert!(!csv.to_lowercase().contains("nan"), "{csv}");
     let json = serde_json::to_string(&sw).unwrap();

@@ -152,6 +152,23 @@ fn run_keys() {
         let v = json(&["run", "--preset", "system-1", "--gamma", gamma]);
         assert_has(&v, RUN, "run");
         assert_has(&v, SCENE, "run");
+        assert_has(
+            &v,
+            &[
+                "trust",
+                "trust.inside",
+                "trust.outside",
+                "trust.set",
+                "trust.nearest",
+                "trust.measured_model",
+                "trust.same_model",
+                "trust.a_r_log_error",
+                "trust.a_r_worst_ratio",
+                "trust.mean_gap_log_error",
+                "trust.summary",
+            ],
+            "run trust",
+        );
         if gamma != "0" {
             assert_has(
                 &v["branches"][0],
@@ -245,12 +262,13 @@ fn sweep_keys_and_columns() {
         .to_string();
     assert!(header.contains(",a_r_unloading,branches"), "{header}");
     assert!(
-        header.ends_with(
+        header.contains(
             ",mean_gap_lower_rel,mean_gap_upper_rel,contact_load,mean_gap_unloading_rel,\
              mean_gap_unloading_error,mean_gap_unloading_lower_rel,contact_load_unloading"
         ),
         "{header}"
     );
+    assert!(header.ends_with(",trust_inside,trust_a_r_log_error"), "{header}");
     assert!(
         header.starts_with(
             "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error,\

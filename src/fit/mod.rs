@@ -22,6 +22,8 @@ pub mod compare;
 pub mod gfmd_reference;
 pub mod predict;
 pub mod reference;
+pub mod reference_set;
+pub mod trust;
 
 use crate::error::{Error, Field, Result};
 use crate::input::model::{Model, ModelKind};

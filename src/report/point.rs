@@ -90,6 +90,9 @@ pub struct PointReport {
     /// Inside a hysteresis window: p* below which the unloading branch no longer exists
     /// (pull-off); None outside a window or when it runs past the allowed range.
     pub pull_off_pressure: Option<f64>,
+    /// Where the scene lies relative to asperity's GFMD reference set and how far the theory
+    /// was measured from GFMD at the nearest stored points ([`crate::fit::trust`]).
+    pub trust: crate::fit::trust::Trust,
     /// γ(q)/γ_s along `resolution.q` (empty without adhesion).
     pub gamma_q: Vec<f64>,
     /// σ_a*(q) along `resolution.q` (empty without adhesion).
@@ -251,6 +254,7 @@ fn assemble(
         branches: branches(ev, gap.as_ref()),
         jump_in_pressure: window.and_then(|w| w.jump_in_pressure),
         pull_off_pressure: window.and_then(|w| w.pull_off_pressure),
+        trust: crate::fit::trust::assess(scene),
         gamma_q: ev.gamma_q.clone(),
         sigma_a_q: ev.sigma_a_q.clone(),
         elapsed_s,

@@ -1,10 +1,10 @@
 //! `asperity gfmd --cycle` (and a sweep downwards) as CSV: the columns of a GFMD sweep
-//! ([`super::gfmd::GFMD_CSV_HEADER`]) and `branch`, after `#` lines giving the pull-off and the
+//! ([`super::gfmd_csv::GFMD_CSV_HEADER`]) and `branch`, after `#` lines giving the pull-off and the
 //! jump-in. The theory's columns are its branch at the same load: the unloading branch where
 //! the theory has two (inside a hysteresis window) on unloading rows, empty on tensile rows
 //! (the theory's sweep covers the positive loads).
 
-use super::gfmd::{csv_row, GFMD_CSV_HEADER};
+use super::gfmd_csv::{csv_row, GFMD_CSV_HEADER};
 use asperity::gfmd::cycle::{GfmdCycle, PathBranch};
 
 /// The CSV of a GFMD load path (see the module docs).

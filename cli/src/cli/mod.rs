@@ -9,6 +9,7 @@ pub mod figure;
 pub mod gauge;
 pub mod gauge_gfmd;
 pub mod gfmd;
+pub mod gfmd_csv;
 pub mod gfmd_cycle;
 
 use asperity::error::Field;

@@ -71,7 +71,7 @@ pub struct SweepArgs {
 pub const CSV_HEADER: &str = "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
 elastic_energy_reduced,mean_gap_error,contact_stress_variance,a_r_over_p,a_r_eq18,thickness_qr,gamma,\
 a_r_unloading,branches,mean_gap_lower_rel,mean_gap_upper_rel,contact_load,mean_gap_unloading_rel,\
-mean_gap_unloading_error,mean_gap_unloading_lower_rel,contact_load_unloading";
+mean_gap_unloading_error,mean_gap_unloading_lower_rel,contact_load_unloading,trust_inside,trust_a_r_log_error";
 
 /// One row of `sweep` (CSV columns and JSON keys). Unavailable numbers are null (empty cells).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -87,18 +87,29 @@ pub struct Row {
     pub thickness_qr: Option<f64>,
     /// γ_s (J/m²).
     pub gamma: f64,
+    /// Whether this row's scene lies inside asperity's GFMD reference set
+    /// ([`asperity::fit::trust`]).
+    pub trust_inside: bool,
+    /// Mean |ln(theory/GFMD)| of a_r measured at the reference set's nearest points.
+    pub trust_a_r_log_error: f64,
 }
 
 impl Row {
-    /// The row of `row` for a scene with this t·q_r and γ_s (adds a_r/p* and [S-18]).
-    pub fn new(row: SweepRow, thickness_qr: f64, gamma: f64) -> Row {
+    /// The row of `row` for `scene` at the row's load (adds a_r/p*, [S-18] and the trust
+    /// read-out).
+    pub fn new(row: SweepRow, scene: &asperity::input::scene::Scene) -> Row {
+        let (thickness_qr, gamma) = (scene.thickness_qr(), scene.surface_energy_j_m2());
         let eq18 = (gamma == 0.0 && thickness_qr.is_infinite()).then(|| eq18_area(row.p));
+        let at = scene.clone().with_pressure(row.p).unwrap_or_else(|_| scene.clone());
+        let trust = asperity::fit::trust::assess(&at);
         Row {
             row,
             a_r_over_p: row.a_r / row.p,
             a_r_eq18: eq18,
             thickness_qr: thickness_qr.is_finite().then_some(thickness_qr),
             gamma,
+            trust_inside: trust.inside,
+            trust_a_r_log_error: trust.a_r_log_error,
         }
     }
 }
@@ -163,7 +174,7 @@ pub fn csv(rows: &[Row]) -> String {
     for row in rows {
         let r = &row.row;
         out.push_str(&format!(
-            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.p,
             f(r.a_r),
             f(r.mean_gap_rel),
@@ -187,6 +198,8 @@ pub fn csv(rows: &[Row]) -> String {
             f(r.mean_gap_unloading_error),
             f(r.mean_gap_unloading_lower_rel),
             f(r.contact_load_unloading),
+            row.trust_inside,
+            f(row.trust_a_r_log_error),
         ));
     }
     out
@@ -219,11 +232,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
             let (preset, scene) = args.scene.resolve(Some(args.from))?;
             let sw: Sweep = sweep::sweep(&scene, &spec, &Options::default(), None)?;
             let cycle = args.cycle.then(|| asperity::theory::cycle::path(&sw));
-            let rows = sw
-                .rows
-                .iter()
-                .map(|r| Row::new(*r, scene.thickness_qr(), scene.surface_energy_j_m2()))
-                .collect();
+            let rows = sw.rows.iter().map(|r| Row::new(*r, &scene)).collect();
             Ok(SweepOutput {
                 preset: preset.name.clone(),
                 over: Over::Pressure,
@@ -300,7 +309,7 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                             notes.push(format!("value {:e}: {e}", pt.value));
                         }
                     }
-                    Row::new(r, pt.scene.thickness_qr(), pt.scene.surface_energy_j_m2())
+                    Row::new(r, &pt.scene)
                 })
                 .collect();
             let note = (!notes.is_empty()).then(|| {

@@ -100,6 +100,7 @@ pub fn point_table(preset: &str, out: &PointReport) -> String {
         );
     }
     line("elastic_energy", format!("{:.6e} J/m^2", out.elastic_energy));
+    line("trust", out.trust.summary.clone());
     line("converged", format!("{}", out.converged));
     line(
         "elapsed_s",

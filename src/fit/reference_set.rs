@@ -1,0 +1,114 @@
+//! asperity's own GFMD reference set (docs/reference-set.md), built into the library: load
+//! cycles of system II over t·q_r ∈ {∞, 1, 0.5, 0.3, 0.2, 0.15, 0.1} and γ_s ∈ {0, ½, 1, 2} ×
+//! 0.157 J/m², and of system I at its adhesion, on 256² reduced maps (γ̃_glo and the Tabor
+//! parameter of the full systems kept), mean ± standard error over seeds, with the theory
+//! (the preset's model: 4 for system II, 3 for system I) on the same maps' spectra beside
+//! each point.
+//!
+//! The data are `data/reference/reference-set-256.csv` (one row per case, branch and load) and
+//! `data/reference/pull-off-256.csv` (per case: γ̃_glo, the pull-off), read once.
+
+use crate::theory::cycle::PathBranch;
+use std::collections::HashMap;
+use std::sync::OnceLock;
+
+const SET_CSV: &str = include_str!("../../data/reference/reference-set-256.csv");
+const CASES_CSV: &str = include_str!("../../data/reference/pull-off-256.csv");
+/// Grid side of the stored set.
+pub const SET_GRID: usize = 256;
+
+/// One stored load of one case (mean over the seeds; `…_err` the standard error, NaN where the
+/// set has one seed).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ReferencePoint {
+    /// 1 (the contact-mechanics challenge) or 2 (the adhesive slab system).
+    pub system: u8,
+    /// t·q_r (∞ for a half-space).
+    pub thickness_qr: f64,
+    /// γ_s as a multiple of the preset's.
+    pub gamma_factor: f64,
+    /// γ̃_glo of the case [S-24].
+    pub gamma_glo: f64,
+    /// The path's direction at this load.
+    pub branch: PathBranch,
+    /// p* (negative: tension).
+    pub p: f64,
+    /// Maps averaged.
+    pub seeds: usize,
+    /// GFMD's a_r and its standard error.
+    pub a_r: (f64, f64),
+    /// GFMD's ū/h_rms and its standard error.
+    pub mean_gap_rel: (f64, f64),
+    /// GFMD's σ̄_c* and its standard error.
+    pub mean_contact_stress: (f64, f64),
+    /// The model of the theory columns: the preset's (4 for system II, 3 for system I).
+    pub theory_model: u8,
+    /// The theory's a_r on the same maps (the branch the path is on); NaN under tension.
+    pub theory_a_r: f64,
+    /// The theory's ū/h_rms on the same maps; NaN where it has none.
+    pub theory_mean_gap_rel: f64,
+}
+
+/// The cells of a CSV with a header, row by row.
+fn rows(text: &str) -> Vec<HashMap<&str, &str>> {
+    let mut lines = text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty());
+    let header: Vec<&str> = lines.next().map(|h| h.split(',').collect()).unwrap_or_default();
+    lines
+        .map(|l| header.iter().copied().zip(l.split(',')).collect())
+        .collect()
+}
+
+fn num(row: &HashMap<&str, &str>, key: &str) -> f64 {
+    match row.get(key).copied() {
+        Some("inf") => f64::INFINITY,
+        Some(s) => s.parse().unwrap_or(f64::NAN),
+        None => f64::NAN,
+    }
+}
+
+fn system_of(row: &HashMap<&str, &str>) -> u8 {
+    row.get("system")
+        .and_then(|s| s.strip_prefix("system-"))
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0)
+}
+
+/// The stored set, parsed once.
+pub fn reference_set() -> &'static [ReferencePoint] {
+    static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
+    SET.get_or_init(|| {
+        let cases = rows(CASES_CSV);
+        let glo = |sys: u8, t: f64, f: f64| {
+            cases
+                .iter()
+                .find(|c| system_of(c) == sys && num(c, "thickness_qr") == t && num(c, "gamma_factor") == f)
+                .map_or(f64::NAN, |c| num(c, "gamma_glo"))
+        };
+        rows(SET_CSV)
+            .iter()
+            .map(|r| {
+                let (system, t, f) = (system_of(r), num(r, "thickness_qr"), num(r, "gamma_factor"));
+                let pair = |k: &str| (num(r, k), num(r, &format!("{k}_err")));
+                ReferencePoint {
+                    system,
+                    thickness_qr: t,
+                    gamma_factor: f,
+                    gamma_glo: glo(system, t, f),
+                    branch: if r.get("branch") == Some(&"unloading") {
+                        PathBranch::Unloading
+                    } else {
+                        PathBranch::Loading
+                    },
+                    p: num(r, "p"),
+                    seeds: num(r, "seeds") as usize,
+                    a_r: pair("a_r"),
+                    mean_gap_rel: pair("mean_gap_rel"),
+                    mean_contact_stress: pair("mean_contact_stress"),
+                    theory_model: if system == 1 { 3 } else { 4 },
+                    theory_a_r: num(r, "theory_a_r"),
+                    theory_mean_gap_rel: num(r, "theory_mean_gap_rel"),
+                }
+            })
+            .collect()
+    })
+}
