@@ -41,7 +41,7 @@ pub struct SetRange {
 /// One stored point near the scene, with the theory's error there.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct NearPoint {
-    /// System of [S] (1 or 2).
+    /// System of \[S\] (1 or 2).
     pub system: u8,
     /// t·q_r (null: a half-space).
     pub thickness_qr: Option<f64>,
