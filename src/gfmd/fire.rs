@@ -231,6 +231,7 @@ pub fn solve_from(
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
 ) -> Result<Solution> {
+    crate::work::start();
     problem.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
