@@ -254,7 +254,7 @@ fn file(dir: &Path, name: &str, bytes: &[u8]) -> String {
 /// A NumPy file: the header (dict text) and `data`, as version 1.0.
 fn npy(header: &str, data: &[u8]) -> Vec<u8> {
     let mut h = header.to_string();
-    while (10 + h.len() + 1) % 64 != 0 {
+    while !(10 + h.len() + 1).is_multiple_of(64) {
         h.push(' ');
     }
     h.push('\n');
@@ -272,7 +272,7 @@ fn every_hard_surface_file_is_refused_in_one_line_naming_the_file() {
     let f8 = |n: usize| vec![0u8; 8 * n];
     let gsf_huge = {
         let mut b = b"Gwyddion Simple Field 1.0\nXRes = 31623\nYRes = 31623\nXReal = 1e-6\nYReal = 1e-6\n".to_vec();
-        while b.len() % 4 != 0 {
+        while !b.len().is_multiple_of(4) {
             b.push(0);
         }
         b.extend([0u8; 16]);

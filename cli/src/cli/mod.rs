@@ -24,6 +24,7 @@ use std::io::IsTerminal;
 use std::io::Write;
 
 pub mod flags;
+pub mod heartbeat;
 pub mod parse;
 pub mod surface;
 pub mod sweep;
@@ -338,14 +339,22 @@ fn run_cli() -> i32 {
             Ok(())
         }
         Some(Command::Bench(args)) => bench::run(&args),
-        Some(Command::Sweep(args)) => sweep::run(&args).map(|text| emit(&text)),
+        Some(Command::Sweep(args)) => {
+            let beat = heartbeat::start("sweep");
+            let text = sweep::run(&args);
+            drop(beat);
+            text.map(|text| emit(&text))
+        }
         Some(Command::Gfmd(args)) => gfmd::run(&args),
         Some(Command::Figure(args)) => figure::run(&args),
         Some(Command::Gauge(args)) => gauge::run(&args),
         Some(Command::Compare(args)) => gauge::compare(&args),
         Some(Command::Psd(args)) => surface::run_psd(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
-            let out = asperity::report::point(&scene, &run_options(&args))?;
+            let beat = heartbeat::start("run");
+            let out = asperity::report::point(&scene, &run_options(&args));
+            drop(beat);
+            let out = out?;
             match args.format {
                 Format::Json => emit(&crate::report::point_json(&preset.name, &out)),
                 Format::Table => emit(&crate::report::point_table(&preset.name, &out)),
