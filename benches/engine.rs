@@ -1,5 +1,8 @@
 //! One adhesionless evaluation: time at the default accuracy, with the relative
-//! error of a_r against a refined solution (rtol = 1e-13) printed beside it.
+//! error of a_r against a refined solution (rtol = 1e-13) printed beside it; and the same
+//! evaluation on a tabulated PSD (a `--psd` table) of 10³ and of 10⁶ rows, table included:
+//! a long table is resampled once (`surface::tabulated::MAX_TABLE_ROWS`), so the second
+//! should take about the first's time plus one pass over the rows.
 
 use asperity::input::model::Model;
 use asperity::input::preset::Preset;
@@ -44,5 +47,29 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+fn bench_table_rows(c: &mut Criterion) {
+    use asperity::surface::spectrum::{Spectrum, Tabulated};
+    let mut g = c.benchmark_group("psd table");
+    g.sample_size(10);
+    let scene = Preset::resolve("system-1").unwrap().scene().unwrap().without_adhesion();
+    let Spectrum::SelfAffine(sa) = scene.spectrum().clone() else {
+        panic!("system-1 has a self-affine spectrum")
+    };
+    for rows in [1_000usize, 1_000_000] {
+        let q: Vec<f64> = (0..rows)
+            .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / (rows - 1) as f64))
+            .collect();
+        let psd: Vec<f64> = q.iter().map(|&x| sa.psd(x)).collect();
+        g.bench_function(format!("system-1 adhesionless, {rows} rows"), |b| {
+            b.iter(|| {
+                let t = Tabulated::new(q.clone(), psd.clone(), "bench", None, None).unwrap();
+                let s = scene.clone().with_spectrum(Spectrum::Tabulated(t)).unwrap();
+                persson::solve(black_box(&s), &Accuracy::default()).unwrap().a_r
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench, bench_table_rows);
 criterion_main!(benches);

@@ -65,5 +65,6 @@ pub mod report;
 pub mod surface;
 pub mod theory;
 pub mod tolerances;
+pub mod work;
 
 pub use error::{Error, Field, Result};

@@ -343,3 +343,8 @@ pub const CHART_ACCURACY_REL: f64 = 1e-2;
 /// pixels of the default chart (800 × 560): refinement aims at half a pixel from three
 /// neighbours' curvature, so a pixel bounds what it leaves.
 pub const FIGURE_CHORD_PX: f64 = 1.0;
+
+/// Moments of a self-affine table of more than `MAX_TABLE_ROWS` rows after its resampling
+/// onto 200 log bins per decade, against the closed form (only the bin holding the roll-off
+/// kink is not an exact power law).
+pub const RESAMPLED_TABLE_REL: f64 = 1e-3;

@@ -25,7 +25,7 @@ fn map(nx: usize, ny: usize) -> Surface {
 fn every_reader_reads_back_what_its_writer_wrote() {
     for s in [map(12, 12), map(16, 9), map(40, 1)] {
         for f in [Format::Text, Format::Xyz, Format::Npy, Format::Gsf] {
-            let bytes = readers::encode(&s, f).unwrap();
+            let bytes = asperity::surface::writers::encode(&s, f).unwrap();
             // npy carries no lateral size
             let opts = ReadOptions {
                 size: (f == Format::Npy).then(|| s.size_x()),
@@ -80,8 +80,8 @@ fn height_units_and_sizes() {
 
 #[test]
 fn bad_files_give_one_line_naming_the_file_the_place_and_the_fault() {
-    let gsf_ok = readers::encode(&map(4, 4), Format::Gsf).unwrap();
-    let npy_ok = readers::encode(&map(4, 4), Format::Npy).unwrap();
+    let gsf_ok = asperity::surface::writers::encode(&map(4, 4), Format::Gsf).unwrap();
+    let npy_ok = asperity::surface::writers::encode(&map(4, 4), Format::Npy).unwrap();
     let no_size = ReadOptions::default();
     let cases: Vec<(Format, Vec<u8>, &str)> = vec![
         (

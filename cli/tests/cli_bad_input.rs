@@ -91,12 +91,18 @@ fn values_that_would_break_a_solver_are_refused_up_front() {
 fn numbers_print_compactly_and_files_are_named_for_what_they_are() {
     let huge = format!("1{}", "0".repeat(300));
     fails(&["run", "--pressure", &huge], &["--pressure = 1e300"]);
-    fails(&["run", "--preset", "/dev/zero"], &["/dev/zero", "not a regular file"]);
+    fails(
+        &["run", "--preset", "/dev/zero"],
+        &["--preset = /dev/zero", "or a preset TOML file"],
+    );
     fails(
         &["run", "--preset", std::env::temp_dir().to_str().unwrap()],
-        &["is a directory"],
+        &["--preset = ", "or a preset TOML file"],
     );
-    fails(&["run", "--preset", "no-such-system"], &["known presets"]);
+    fails(
+        &["run", "--preset", "no-such-system"],
+        &["--preset = no-such-system", "system-1, system-2"],
+    );
 }
 
 #[test]
@@ -113,7 +119,7 @@ fn gfmd_blames_the_map_not_the_pressure() {
     let ok = write("ok.txt", &["1e-8 0 -1e-8 0", "0 0 0 0", "1e-8 0 -1e-8 0", "0 0 0 0"]);
     fails(
         &["gfmd", "--surface", &flat, "--size", "1e-6"],
-        &["--surface = a flat map"],
+        &["--surface = flat.txt: a flat map"],
     );
     fails(
         &["gfmd", "--surface", &huge, "--size", "1e-6"],

@@ -89,13 +89,13 @@ const CASES: &[Case] = &[
         &["sweep", "--to", "0.1"],
         "--from",
         &["abc", ""],
-        "1e-12 <= p* <= 1000 (--over pressure)",
+        "1e-12 <= p* <= 1000 for --over pressure",
     ),
     (
         &["sweep", "--from", "0.01"],
         "--to",
         &["abc", ""],
-        "1e-12 <= p* <= 1000 (--over pressure)",
+        "1e-12 <= p* <= 1000 for --over pressure",
     ),
     (
         &["sweep", "--from", "0.01", "--to", "0.1"],
@@ -165,7 +165,7 @@ const CASES: &[Case] = &[
     ),
     (&["gfmd", "--size", "1e-6"], "--surface", &[""], "a file name"),
     (
-        &["gfmd", "--surface", "x.txt"],
+        &["gfmd", "--surface", "cli/tests/fixtures/two_bands.txt"],
         "--size",
         &["abc", "-1", "1e300"],
         "1e-12 <= system_size_m <= 1000",
@@ -346,7 +346,7 @@ fn other_bad_input_is_one_line_too() {
             vec!["run", "--no-such-flag"],
             vec!["--no-such-flag".into(), "asperity run --help".into()],
         ),
-        (vec!["tour", "-1"], vec!["-1".into(), "known tours".into()]),
+        (vec!["tour", "-1"], vec!["tour = -1".into(), "wang-muser".into()]),
         (vec!["figure", "-1"], vec!["figure = -1".into(), "table-1".into()]),
         (vec!["gfmd", "--size", "1e-5"], vec!["missing --surface".into()]),
     ];

@@ -534,9 +534,14 @@ pub fn fmt_value(x: f64) -> String {
     }
 }
 
+/// The longest value text an error shows; longer texts (a 300-character file name) are cut
+/// in the middle with `…`, so an error stays one short line.
+pub const MAX_SHOWN_CHARS: usize = 80;
+
 /// Formats user text for a message: a number as [`fmt_value`] does (so `1e300` typed as 301
-/// digits prints as `1e300`), anything else as given, cut to 120 characters (room for a file
-/// name, a line number and what is wrong with it).
+/// digits prints as `1e300`), anything else as given, cut in the middle to
+/// [`MAX_SHOWN_CHARS`] (its start and its end: a file name's beginning, and the line number
+/// and what is wrong with it).
 pub fn fmt_text(s: &str) -> String {
     let t = s.trim();
     if t.is_empty() {
@@ -547,9 +552,13 @@ pub fn fmt_text(s: &str) -> String {
             return fmt_value(x);
         }
     }
-    if t.chars().count() > 120 {
-        let cut: String = t.chars().take(117).collect();
-        return format!("{cut}...");
+    let n = t.chars().count();
+    if n > MAX_SHOWN_CHARS {
+        let head = MAX_SHOWN_CHARS / 4;
+        let tail = MAX_SHOWN_CHARS - head - 1;
+        let start: String = t.chars().take(head).collect();
+        let end: String = t.chars().skip(n - tail).collect();
+        return format!("{start}…{end}");
     }
     t.to_string()
 }

@@ -359,6 +359,7 @@ pub fn custom_start(m: &Model) -> Result<Model> {
 /// [`Error::Invalid`] when there are no more points than parameters or the best fit leaves
 /// the model's range (W < 0 on [0, 1], α outside [0, 4]); the solvers' errors.
 pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit> {
+    crate::work::start();
     let t0 = Instant::now();
     let start = custom_start(&scene.model)?;
     let n = reference.points.len();

@@ -288,6 +288,7 @@ pub fn relax_from(
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
 ) -> Result<Relaxation> {
+    crate::work::start();
     problem.validate()?;
     opts.validate()?;
     let t0 = Instant::now();

@@ -40,6 +40,7 @@ pub fn relax(
     progress: &mut dyn FnMut(usize, f64, f64),
     cancel: &AtomicBool,
 ) -> Result<(Vec<f64>, usize)> {
+    crate::work::start();
     let n = h.len();
     let comp: Vec<f64> = phi
         .iter()

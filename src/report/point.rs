@@ -40,6 +40,10 @@ pub struct PointReport {
     /// and with adhesion every stable branch's self-consistency residual within the
     /// adhesive tolerance.
     pub converged: bool,
+    /// Why `converged` is false, in one line (which check failed, with its numbers); absent
+    /// when it is true.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub converged_note: Option<String>,
     /// Estimated absolute error of a_r.
     pub error_estimate: f64,
     /// Mean gap ū (m) of the loading branch: the adhesionless gap [S-12] at the load the
@@ -207,18 +211,41 @@ pub fn point(scene: &Scene, opts: &Options) -> Result<PointReport> {
     ))
 }
 
-/// Whether an evaluation meets the accuracy `opts` asked for (see [`PointReport::converged`]).
-fn converged(scene: &Scene, ev: &Evaluation, opts: &Options) -> bool {
-    let bar = ev.error_estimate.is_finite() && ev.error_estimate >= 0.0;
-    let area = (0.0..=1.0).contains(&ev.stats.a_r);
-    let balanced = scene.gamma == 0.0
-        || (ev.residual <= opts.adhesion.tol
-            && ev
-                .branches
-                .iter()
-                .filter(|b| b.stable)
-                .all(|b| b.residual <= opts.adhesion.tol));
-    bar && area && balanced
+/// Whether an evaluation meets the accuracy `opts` asked for (see [`PointReport::converged`]):
+/// None when it does, else the reason in one line.
+fn unconverged_reason(scene: &Scene, ev: &Evaluation, opts: &Options) -> Option<String> {
+    use crate::error::fmt_value;
+    if !(ev.error_estimate.is_finite() && ev.error_estimate >= 0.0) {
+        return Some(format!(
+            "the error estimate of a_r is {} (not a finite bar)",
+            fmt_value(ev.error_estimate)
+        ));
+    }
+    if !(0.0..=1.0).contains(&ev.stats.a_r) {
+        return Some(format!("a_r = {} lies outside [0, 1]", fmt_value(ev.stats.a_r)));
+    }
+    if scene.gamma == 0.0 {
+        return None;
+    }
+    let tol = opts.adhesion.tol;
+    if ev.residual > tol {
+        return Some(format!(
+            "the adhesive self-consistency residual |gamma(q_s)/gamma_s - 1| = {} is above the tolerance {} \
+             (accuracy.adhesion_tol; finer adhesion steps or points may reach it)",
+            fmt_value(ev.residual),
+            fmt_value(tol)
+        ));
+    }
+    ev.branches.iter().find(|b| b.stable && b.residual > tol).map(|b| {
+        format!(
+            "the stable {} branch (a_r = {}) has self-consistency residual {} above the tolerance {} \
+                 (accuracy.adhesion_tol)",
+            b.branch,
+            fmt_value(b.a_r),
+            fmt_value(b.residual),
+            fmt_value(tol)
+        )
+    })
 }
 
 fn assemble(
@@ -230,10 +257,12 @@ fn assemble(
     mean_gap_note: Option<String>,
     [elapsed_s, t_solve, t_window]: [f64; 3],
 ) -> PointReport {
+    let note = unconverged_reason(scene, ev, opts);
     PointReport {
         stats: ev.stats.clone(),
         width: ev.width,
-        converged: converged(scene, ev, opts),
+        converged: note.is_none(),
+        converged_note: note,
         error_estimate: ev.error_estimate,
         mean_gap: gap.as_ref().map(|g| g.metres),
         mean_gap_rel: gap.as_ref().map(|g| g.relative),
@@ -297,4 +326,35 @@ fn branches(ev: &Evaluation, gap: Option<&MeanGap>) -> Vec<BranchReport> {
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::preset::Preset;
+
+    #[test]
+    fn an_unconverged_evaluation_says_which_check_failed() {
+        let scene = Preset::resolve("system-2").unwrap().scene().unwrap();
+        let opts = Options::default();
+        let ev = engine::evaluate(&scene, &opts).unwrap();
+        assert_eq!(unconverged_reason(&scene, &ev, &opts), None);
+        let mut off = ev.clone();
+        off.residual = 10.0 * opts.adhesion.tol;
+        let why = unconverged_reason(&scene, &off, &opts).unwrap();
+        assert!(
+            why.contains("residual") && why.contains("tolerance") && !why.contains('\n'),
+            "{why}"
+        );
+        let mut bar = ev.clone();
+        bar.error_estimate = f64::NAN;
+        assert!(unconverged_reason(&scene, &bar, &opts)
+            .unwrap()
+            .contains("error estimate"));
+        let mut area = ev;
+        area.stats.a_r = 1.5;
+        assert!(unconverged_reason(&scene, &area, &opts)
+            .unwrap()
+            .contains("outside [0, 1]"));
+    }
 }

@@ -286,6 +286,7 @@ pub fn wave_number_sq(kx: usize, ky: usize, nx: usize, ny: usize, da: f64) -> f6
 /// see the module docs. Needs at least two points per λ_s (q_s below the Nyquist wave
 /// number π/Δa).
 pub fn generate(spec: &SelfAffine, n: usize, seed: u64) -> Result<Surface> {
+    crate::work::start();
     let l = spec.system_size;
     if !(4..=MAX_GRID).contains(&n) {
         return Err(Error::invalid(Field::Grid, n as f64, format!("4 <= N <= {MAX_GRID}")));

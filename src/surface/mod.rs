@@ -8,3 +8,4 @@ pub mod readers;
 pub mod shells;
 pub mod spectrum;
 pub mod tabulated;
+pub mod writers;

@@ -94,6 +94,7 @@ pub struct PsdAnalysis {
 /// # Errors
 /// [`Error::Invalid`] for a flat map or bins per decade outside [`BINS_PER_DECADE_RANGE`].
 pub fn analyse(s: &Surface, opts: &PsdOptions) -> Result<PsdAnalysis> {
+    crate::work::start();
     crate::error::check_in(
         Field::Other("bins_per_decade".into()),
         opts.bins_per_decade,

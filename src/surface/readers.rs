@@ -2,7 +2,7 @@
 //!
 //! | extension | format | lateral size | height unit |
 //! |---|---|---|---|
-//! | `.txt` `.asc` `.dat` | text matrix: one row (fixed y) per line, whitespace-separated; `#` lines are comments, where Gwyddion's text export's `# Width: 10.0 µm` and `# Value units: m` are read | `# Width:` line, else the caller's | `# Value units:`, else the caller's, else m |
+//! | `.txt` `.asc` `.dat` | text matrix: one row (fixed y) per line, whitespace-separated; `#` lines are comments, where Gwyddion's text export's `# Width: 10.0 µm` and `# Value units: m` are read, and asperity's own `# asperity height map: … spacing Δa m` | `# Width:` line, else nx·Δa of asperity's header, else the caller's | `# Value units:`, else the caller's, else m |
 //! | `.xyz` | columns `x y z` (or `x z` for a line scan), whitespace, comma or semicolon separated, on a regular grid in any order | n·Δx from the coordinates, in the heights' unit | the caller's, else m |
 //! | `.npy` | NumPy array, 2-D (rows = y) or 1-D (a line scan); f64, f32, i64, i32, i16 | the caller's | the caller's, else m |
 //! | `.gsf` | Gwyddion simple field: `Gwyddion Simple Field 1.0`, `Key = Value` lines (XRes, YRes, XReal, YReal, XYUnits, ZUnits), NUL padding to a multiple of 4 bytes, XRes·YRes little-endian f32 | XReal | ZUnits, else the caller's, else m |
@@ -115,7 +115,12 @@ fn bad(source: &str, at: String, what: impl std::fmt::Display, allowed: &str) ->
 pub fn read(path: &Path, opts: &ReadOptions) -> Result<Surface> {
     let format = format_of(path)?;
     let bytes = std::fs::read(path).map_err(|e| Error::io_file("read", "surface", path, &e))?;
-    parse(&bytes, format, &path.display().to_string(), opts)
+    // errors name the file by its name (the folder is the caller's, and a long one would
+    // crowd out what is wrong)
+    let name = path
+        .file_name()
+        .map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
+    parse(&bytes, format, &name, opts)
 }
 
 /// Parses a height map held in memory; `source` names it in errors.
@@ -180,7 +185,21 @@ impl Raw {
                 ))
             }
         };
-        crate::error::check_in(Field::SystemSize, size, LENGTH_RANGE_M.0, LENGTH_RANGE_M.1)?;
+        if opts.size.is_some() {
+            crate::error::check_in(Field::SystemSize, size, LENGTH_RANGE_M.0, LENGTH_RANGE_M.1)?;
+        } else if !(LENGTH_RANGE_M.0..=LENGTH_RANGE_M.1).contains(&size) {
+            // the file's own size: blame the file, not a flag the caller never gave
+            return Err(bad(
+                source,
+                "size".into(),
+                format!("a lateral side of {} m", fmt_value(size)),
+                &format!(
+                    "a side {} m <= L <= {} m",
+                    fmt_value(LENGTH_RANGE_M.0),
+                    fmt_value(LENGTH_RANGE_M.1)
+                ),
+            ));
+        }
         let spacing = size / nx as f64;
         if let (None, Some(sy), true) = (opts.size, self.size_y, ny > 1) {
             let dy = sy * lu.metres() / ny as f64;
@@ -210,6 +229,7 @@ fn length_with_unit(s: &str) -> Option<(f64, Option<Unit>)> {
 fn parse_text(text: &str, source: &str) -> Result<Raw> {
     let mut rows: Vec<Vec<f64>> = Vec::new();
     let (mut width, mut height, mut zunit) = (None, None, None);
+    let mut spacing: Option<(f64, Option<Unit>)> = None;
     for (i, line) in text.lines().enumerate() {
         let t = line.trim();
         if let Some(c) = t.strip_prefix('#') {
@@ -217,6 +237,12 @@ fn parse_text(text: &str, source: &str) -> Result<Raw> {
             let c = c.trim();
             if let Some(v) = c.strip_prefix("Width:") {
                 width = length_with_unit(v);
+            } else if let Some(v) = c.strip_prefix("asperity height map:") {
+                // the header `Surface::to_text` writes: `N x M points, spacing Δa m, ...`
+                spacing = v
+                    .split(',')
+                    .find_map(|part| part.trim().strip_prefix("spacing"))
+                    .and_then(length_with_unit);
             } else if let Some(v) = c.strip_prefix("Height:") {
                 height = length_with_unit(v);
             } else if let Some(v) = c.strip_prefix("Value units:") {
@@ -278,6 +304,8 @@ fn parse_text(text: &str, source: &str) -> Result<Raw> {
         (nx, ny) = (ny, 1);
     }
     let values = rows.concat();
+    // without a `# Width:` line, asperity's own header gives the side as nx spacings
+    let width = width.or_else(|| spacing.map(|(da, u)| (da * nx as f64, u)));
     Ok(Raw {
         nx,
         ny,
@@ -472,7 +500,8 @@ fn parse_npy(bytes: &[u8], source: &str) -> Result<Raw> {
     })
 }
 
-const GSF_MAGIC: &str = "Gwyddion Simple Field 1.0";
+/// The first line of a Gwyddion simple field.
+pub(crate) const GSF_MAGIC: &str = "Gwyddion Simple Field 1.0";
 
 fn parse_gsf(bytes: &[u8], source: &str) -> Result<Raw> {
     const ALLOWED: &str = "a Gwyddion simple field (header, NUL padding, little-endian f32 data)";
@@ -572,76 +601,5 @@ fn parse_gsf(bytes: &[u8], source: &str) -> Result<Raw> {
         size_y: num("YReal")?,
         size_unit: Some(unit("XYUnits")?.unwrap_or(Unit::M)),
         height_unit: unit("ZUnits")?,
-    })
-}
-
-/// Writes a map in the format of `path`'s extension (heights and lengths in metres; `.gsf`
-/// stores f32, the others every digit).
-///
-/// # Errors
-/// [`Error::Invalid`] for an unknown extension, [`Error::Io`] when writing fails.
-pub fn write(s: &Surface, path: &Path) -> Result<()> {
-    let bytes = encode(s, format_of(path)?)?;
-    std::fs::write(path, bytes).map_err(|e| Error::io_file("write", "surface", path, &e))
-}
-
-/// The bytes of a map in `format` (see [`write()`]).
-///
-/// # Errors
-/// [`Error::Io`] if the NumPy encoder fails.
-pub fn encode(s: &Surface, format: Format) -> Result<Vec<u8>> {
-    Ok(match format {
-        Format::Text => {
-            let mut t = format!("# Width: {:e} m\n# Value units: m\n", s.size_x());
-            t.push_str(&s.to_text());
-            t.into_bytes()
-        }
-        Format::Xyz => {
-            let mut t = String::new();
-            for (k, h) in s.heights.iter().enumerate() {
-                let (x, y) = ((k % s.nx) as f64 * s.spacing, (k / s.nx) as f64 * s.spacing);
-                if s.ny == 1 {
-                    t.push_str(&format!("{x:e} {h:e}\n"));
-                } else {
-                    t.push_str(&format!("{x:e} {y:e} {h:e}\n"));
-                }
-            }
-            t.into_bytes()
-        }
-        Format::Npy => {
-            use npyz::WriterBuilder;
-            let mut buf = Vec::new();
-            let shape: Vec<u64> = if s.ny == 1 {
-                vec![s.nx as u64]
-            } else {
-                vec![s.ny as u64, s.nx as u64]
-            };
-            let io = |e: std::io::Error| Error::io("encode a NumPy array", e);
-            let mut w = npyz::WriteOptions::new()
-                .default_dtype()
-                .shape(&shape)
-                .writer(&mut buf)
-                .begin_nd()
-                .map_err(io)?;
-            w.extend(s.heights.iter().copied()).map_err(io)?;
-            w.finish().map_err(io)?;
-            buf
-        }
-        Format::Gsf => {
-            let mut b = format!(
-                "{GSF_MAGIC}\nXRes = {}\nYRes = {}\nXReal = {:e}\nYReal = {:e}\nXYUnits = m\nZUnits = m\n",
-                s.nx,
-                s.ny,
-                s.size_x(),
-                s.size_y()
-            )
-            .into_bytes();
-            let pad = 4 - b.len() % 4;
-            b.extend(std::iter::repeat_n(0u8, pad));
-            for h in &s.heights {
-                b.extend((*h as f32).to_le_bytes());
-            }
-            b
-        }
     })
 }

@@ -24,6 +24,12 @@ use std::f64::consts::PI;
 pub const KINK_SLOPE: f64 = 0.25;
 /// Largest q_max/q_min of a table (as λ_r/λ_s of a self-affine spectrum).
 pub const MAX_TABLE_BANDWIDTH: f64 = 1e8;
+/// A table of more rows than this is resampled once onto [`RESAMPLE_PER_DECADE`] log-spaced
+/// bins per decade of q (at most 1 601 nodes over the largest bandwidth), so that the cost of
+/// every quadrature after it does not grow with the number of rows.
+pub const MAX_TABLE_ROWS: usize = 4096;
+/// Bins per decade of q of a resampled table.
+pub const RESAMPLE_PER_DECADE: f64 = 200.0;
 
 /// A tabulated PSD (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
@@ -40,6 +46,9 @@ pub struct Tabulated {
     pub q_r: f64,
     /// Where the table came from (a file name), for output.
     pub source: String,
+    /// The number of rows of a table resampled onto log-spaced bins ([`MAX_TABLE_ROWS`]);
+    /// None when the rows are used as given.
+    pub resampled_from: Option<usize>,
     /// Quadrature breakpoints: q_min, the kinks inside, q_max.
     kinks: Vec<f64>,
 }
@@ -86,6 +95,12 @@ impl Tabulated {
                 )));
             }
         }
+        let rows = q.len();
+        let (q, psd) = if rows > MAX_TABLE_ROWS {
+            resample(&q, &psd)
+        } else {
+            (q, psd)
+        };
         let (lo, hi) = (q[0], q[q.len() - 1]);
         let q_min = q_min.unwrap_or(lo);
         let q_max = q_max.unwrap_or(hi);
@@ -122,6 +137,7 @@ impl Tabulated {
             q_max,
             q_r: q_min,
             source: source.to_string(),
+            resampled_from: (rows > MAX_TABLE_ROWS).then_some(rows),
             kinks: Vec::new(),
         };
         t.kinks = t.find_kinks();
@@ -276,6 +292,48 @@ impl Tabulated {
     }
 }
 
+/// A long table (ascending q, C > 0) on log-spaced bins of width ln 10/[`RESAMPLE_PER_DECADE`]:
+/// each bin's rows become one node at the mean of their ln q with the mean of their ln C
+/// (exact for a power law inside the bin; a noisy table is averaged, not aliased), the first
+/// and the last row kept as the cut-offs. One pass over the rows.
+fn resample(q: &[f64], psd: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let n = q.len();
+    let (l0, width) = (q[0].ln(), std::f64::consts::LN_10 / RESAMPLE_PER_DECADE);
+    let (mut qs, mut cs) = (vec![q[0]], vec![psd[0]]);
+    let (mut bin, mut sum_q, mut sum_c, mut count) = (usize::MAX, 0.0, 0.0, 0.0);
+    fn flush(sum_q: f64, sum_c: f64, count: f64, qs: &mut Vec<f64>, cs: &mut Vec<f64>) {
+        if count > 0.0 {
+            qs.push((sum_q / count).exp());
+            cs.push((sum_c / count).exp());
+        }
+    }
+    for i in 1..n - 1 {
+        let (lq, lc) = (q[i].ln(), psd[i].ln());
+        let b = ((lq - l0) / width) as usize;
+        if b != bin {
+            flush(sum_q, sum_c, count, &mut qs, &mut cs);
+            (bin, sum_q, sum_c, count) = (b, 0.0, 0.0, 0.0);
+        }
+        sum_q += lq;
+        sum_c += lc;
+        count += 1.0;
+    }
+    flush(sum_q, sum_c, count, &mut qs, &mut cs);
+    qs.push(q[n - 1]);
+    cs.push(psd[n - 1]);
+    // a bin's mean lies strictly inside its ends: the nodes ascend (an equal neighbour, from
+    // rounding at the ends, is dropped)
+    let mut keep_q = Vec::with_capacity(qs.len());
+    let mut keep_c = Vec::with_capacity(qs.len());
+    for (x, c) in qs.into_iter().zip(cs) {
+        if keep_q.last().is_none_or(|&p| x > p) {
+            keep_q.push(x);
+            keep_c.push(c);
+        }
+    }
+    (keep_q, keep_c)
+}
+
 /// A table as CSV: header `q,psd`, then one row per point, shortest round-trip decimals (a
 /// written table reads back bit for bit).
 pub fn to_csv(q: &[f64], psd: &[f64]) -> String {
@@ -313,6 +371,33 @@ mod tests {
             assert!((t.psd_at(x) / sa.psd(x) - 1.0).abs() < 1e-12);
         }
         assert_eq!(t.psd_at(sa.q_s() * 1.01), 0.0);
+    }
+
+    #[test]
+    fn a_long_table_is_resampled_once_and_keeps_its_moments() {
+        let sa = SelfAffine::new(100e-6, 20e-6, 0.1e-6, 0.8, Normalisation::RmsGradient(1.0)).unwrap();
+        let exact = Spectrum::SelfAffine(sa);
+        for rows in [MAX_TABLE_ROWS + 1, 100_000] {
+            let q: Vec<f64> = (0..rows)
+                .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / (rows - 1) as f64))
+                .collect();
+            let c: Vec<f64> = q.iter().map(|&x| sa.psd(x)).collect();
+            let t = Tabulated::new(q, c, "mem", None, None).unwrap();
+            assert_eq!(t.resampled_from, Some(rows));
+            let decades = (sa.q_s() / sa.q_l()).log10();
+            assert!(t.q.len() as f64 <= RESAMPLE_PER_DECADE * decades + 3.0, "{}", t.q.len());
+            assert_eq!((t.q_min, t.q_max), (sa.q_l(), sa.q_s()));
+            // the power law is exact inside each bin; the bin around the kink q_r is off
+            for n in [0, 2, 4] {
+                let rel = (t.moment(n) / exact.moment(n) - 1.0).abs();
+                assert!(
+                    rel < crate::tolerances::RESAMPLED_TABLE_REL,
+                    "rows {rows}, n = {n}: {rel:e}"
+                );
+            }
+        }
+        let short = Tabulated::new(vec![1e4, 1e5, 1e6], vec![1e-30, 1e-32, 1e-34], "mem", None, None).unwrap();
+        assert_eq!(short.resampled_from, None);
     }
 
     #[test]

@@ -224,6 +224,7 @@ pub fn evaluate_continued(
     path: &[&Evaluation],
     cancel: Option<&std::sync::atomic::AtomicBool>,
 ) -> Result<Evaluation> {
+    crate::work::start();
     opts.validate()?;
     let t0 = Instant::now();
     if scene.gamma > 0.0 {

@@ -244,6 +244,7 @@ pub use crate::theory::loads::{energies, evaluate_node, evaluations, node_result
 /// assert!(sw.rows.windows(2).all(|w| w[1].a_r > w[0].a_r && w[1].mean_gap_rel < w[0].mean_gap_rel));
 /// ```
 pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&AtomicBool>) -> Result<Sweep> {
+    crate::work::start();
     spec.validate()?;
     let mut s0 = scene.clone();
     s0.pressure = spec.from;

@@ -167,6 +167,7 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
         ..GfmdOptions::default()
     };
     opts.validate()?;
+    super::gauge_gfmd::refuse_pk_on_slab(args.method, &scene)?;
     if !(1..=MAX_SEEDS).contains(&args.seeds) {
         return Err(Error::invalid(
             Field::Seeds,
@@ -481,8 +482,12 @@ fn table(o: &GfmdResult) -> String {
     line("gamma_s", format!("{} J/m^2", o.gamma));
     let th = o.theory.as_ref();
     let both = |g: f64, t: Option<f64>| match t {
-        Some(t) => format!("{g:<14.6}theory {t:.6}"),
-        None => format!("{g:.6}"),
+        Some(t) => format!(
+            "{:<14}theory {}",
+            crate::report::fixed(g, 6),
+            crate::report::fixed(t, 6)
+        ),
+        None => crate::report::fixed(g, 6),
     };
     line("a_r", both(o.stats.a_r, th.map(|t| t.stats.a_r)));
     line(

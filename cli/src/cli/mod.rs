@@ -25,6 +25,8 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::io::IsTerminal;
 use std::io::Write;
 
+pub mod flags;
+pub mod heartbeat;
 pub mod parse;
 pub mod surface;
 pub mod sweep;
@@ -47,7 +49,8 @@ pub enum Command {
     Tui(TuiArgs),
     /// Open the explorer in a teaching tour (tours/NAME.toml or built in).
     Tour(TourArgs),
-    /// Evaluate the theory for one scene and print the result.
+    /// Evaluate the theory for one scene and print the result (exit status 0; 3 when it is
+    /// printed but not converged, the reason in `converged_note` and on stderr; 2 bad input).
     Run(RunArgs),
     /// List the available presets.
     Presets,
@@ -269,9 +272,40 @@ pub fn emit(text: &str) {
     let _ = writeln!(out, "{text}");
 }
 
+/// Exit status of `run` when the result is printed in full but does not meet the requested
+/// accuracy (`converged: false`, with `converged_note` saying why): 0 is a converged result,
+/// 2 bad input or a failed computation (one line on stderr), 3 this.
+pub const EXIT_NOT_CONVERGED: i32 = 3;
+
 /// Runs the CLI; returns the process exit code.
 pub fn main() -> i32 {
-    let cli = match Cli::try_parse() {
+    if std::env::var_os(FORBID_WORK_ENV).is_some() {
+        asperity::work::forbid();
+    }
+    let code = run_cli();
+    if let Some(path) = std::env::var_os(WORK_LOG_ENV) {
+        // how many computations started: 0 for input refused up front (checked by the tests)
+        let line = format!("work started: {}\n", asperity::work::started());
+        let _ = std::fs::write(path, line);
+    }
+    code
+}
+
+/// An environment variable naming a file where the binary writes, on exit, how many
+/// computations (theory, GFMD, PSD, surface generation) it started: the tests check that
+/// refused input started none.
+pub const WORK_LOG_ENV: &str = "ASPERITY_WORK_LOG";
+
+/// An environment variable that, when set, makes any computation panic as it starts (the
+/// tests that feed bad input: it must be refused before any work).
+pub const FORBID_WORK_ENV: &str = "ASPERITY_FORBID_WORK";
+
+fn run_cli() -> i32 {
+    use clap::FromArgMatches;
+    let cli = match flags::command()
+        .try_get_matches()
+        .and_then(|m| Cli::from_arg_matches(&m))
+    {
         Ok(cli) => cli,
         Err(e) => {
             use clap::error::ErrorKind;
@@ -289,6 +323,7 @@ pub fn main() -> i32 {
             return 2;
         }
     };
+    let mut unconverged = false;
     let result = match cli.command {
         None => tui_entry(preset::DEFAULT_PRESET, None, None),
         Some(Command::Tui(args)) => args
@@ -306,22 +341,35 @@ pub fn main() -> i32 {
             Ok(())
         }
         Some(Command::Bench(args)) => bench::run(&args),
-        Some(Command::Sweep(args)) => sweep::run(&args).map(|text| emit(&text)),
+        Some(Command::Sweep(args)) => {
+            let beat = heartbeat::start("sweep");
+            let text = sweep::run(&args);
+            drop(beat);
+            text.map(|text| emit(&text))
+        }
         Some(Command::Gfmd(args)) => gfmd::run(&args),
         Some(Command::Figure(args)) => figure::run(&args),
         Some(Command::Gauge(args)) => gauge::run(&args),
         Some(Command::Compare(args)) => gauge::compare(&args),
         Some(Command::Psd(args)) => surface::run_psd(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
-            let out = asperity::report::point(&scene, &run_options(&args))?;
+            let beat = heartbeat::start("run");
+            let out = asperity::report::point(&scene, &run_options(&args));
+            drop(beat);
+            let out = out?;
             match args.format {
                 Format::Json => emit(&crate::report::point_json(&preset.name, &out)),
                 Format::Table => emit(&crate::report::point_table(&preset.name, &out)),
+            }
+            if let Some(why) = out.converged_note.as_deref().filter(|_| !out.converged) {
+                eprintln!("asperity run: not converged: {why}");
+                unconverged = true;
             }
             Ok(())
         }),
     };
     match result {
+        Ok(()) if unconverged => EXIT_NOT_CONVERGED,
         Ok(()) => 0,
         Err(e) => {
             eprintln!("asperity: {}", render_error(&e));

@@ -97,7 +97,14 @@ pub fn count(field: Field) -> impl Fn(&str) -> std::result::Result<usize, String
             Some(r) => r.contains(x),
             None => x >= 0.0 && x.fract() == 0.0,
         };
-        if !ok || x > usize::MAX as f64 {
+        if x > usize::MAX as f64 {
+            return Err(format!(
+                "{}, at most {}",
+                allowed(),
+                asperity::error::fmt_value(usize::MAX as f64)
+            ));
+        }
+        if !ok {
             return Err(allowed());
         }
         Ok(x as usize)
@@ -147,10 +154,8 @@ pub fn sweep_end(s: &str) -> std::result::Result<f64, String> {
     s.trim().parse::<f64>().map_err(|_| {
         let d = |f: Field, name: &str| limits::allowed(&f).map(|a| a.describe(name)).unwrap_or_default();
         format!(
-            "a number: {} (--over pressure), {} (thickness), {} (gamma)",
-            d(Field::Pressure, "p*"),
-            d(Field::Thickness, "t·q_r"),
-            d(Field::SurfaceEnergy, "gamma_s")
+            "a number in the range of the swept knob ({} for --over pressure; see --help)",
+            d(Field::Pressure, "p*")
         )
     })
 }
@@ -210,6 +215,13 @@ pub fn clap_error_line(e: &clap::Error) -> String {
     };
     if let (Some(arg), Some(value)) = (text(ContextKind::InvalidArg), text(ContextKind::InvalidValue)) {
         let flag = arg.split_whitespace().next().unwrap_or(&arg).to_string();
+        // a positional argument, `[FIGURE]` or `<FILE>`: by its name, `figure`, `file`
+        let flag = if flag.starts_with(['[', '<']) {
+            flag.trim_matches(|c| matches!(c, '[' | ']' | '<' | '>' | '.'))
+                .to_ascii_lowercase()
+        } else {
+            flag
+        };
         let allowed = match e.get(ContextKind::ValidValue) {
             Some(ContextValue::Strings(v)) => v.join(", "),
             _ => std::error::Error::source(e)

@@ -114,7 +114,7 @@ impl SurfaceArgs {
         let table = if let Some(p) = &self.psd {
             Tabulated::load_csv(p, self.qmin, self.qmax)
         } else if let Some(s) = &map {
-            s.check_rough()?;
+            s.check_rough().map_err(|e| self.name_the_map(e))?;
             let a = psd::analyse(s, &self.psd_options())?;
             let (q, c): (Vec<f64>, Vec<f64>) = a.bins.iter().map(|b| (b.q, b.psd)).unzip();
             let name = self
@@ -129,8 +129,42 @@ impl SurfaceArgs {
             }
             return Ok((None, None));
         };
+        if let Ok(t) = &table {
+            if let Some(rows) = t.resampled_from {
+                eprintln!(
+                    "asperity: {}: {rows} rows resampled once onto {} log-spaced q ({} per decade)",
+                    t.source,
+                    t.q.len(),
+                    asperity::surface::tabulated::RESAMPLE_PER_DECADE
+                );
+            }
+        }
         let spectrum = table.map(Spectrum::Tabulated).map_err(rename_table_fields)?;
         Ok((Some(spectrum), map))
+    }
+
+    /// A check of the map's values, with the map's file name in front of what it says.
+    pub fn name_the_map(&self, e: Error) -> Error {
+        let name = self
+            .surface
+            .as_ref()
+            .and_then(|p| p.file_name())
+            .map(|n| n.to_string_lossy().into_owned());
+        match (e, name) {
+            (
+                Error::Invalid {
+                    field: Field::HeightMap,
+                    value,
+                    allowed,
+                },
+                Some(n),
+            ) if !value.contains(&n) => Error::Invalid {
+                field: Field::HeightMap,
+                value: asperity::error::fmt_text(&format!("{n}: {value}")),
+                allowed,
+            },
+            (e, _) => e,
+        }
     }
 
     /// The PSD options of --periodic.
@@ -284,7 +318,8 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
         ..SurfaceArgs::default()
     };
     let start = std::time::Instant::now();
-    let s = sa.map()?.expect("a file is given");
+    let s = sa.map().map_err(name_the_file)?.expect("a file is given");
+    check_measurable(&s, &args.file)?;
     let opts = PsdOptions {
         bins_per_decade: args.bins_per_decade,
         ..sa.psd_options()
@@ -320,6 +355,50 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// `psd` names its map by the positional FILE, not by `--surface` (which it has not).
+fn name_the_file(e: Error) -> Error {
+    match e {
+        Error::Invalid {
+            field: Field::HeightMap,
+            value,
+            allowed,
+        } => Error::Invalid {
+            field: Field::Other("FILE".into()),
+            value,
+            allowed,
+        },
+        e => e,
+    }
+}
+
+/// Refuses a map whose moments overflow (heights of 1e200 m: h² is infinite), so that `psd`
+/// does not print inf or null where `run` refuses the same map.
+fn check_measurable(s: &Surface, file: &std::path::Path) -> Result<()> {
+    let name = file
+        .file_name()
+        .map_or_else(|| file.display().to_string(), |n| n.to_string_lossy().into_owned());
+    if s.heights.iter().all(|&h| h == s.heights[0]) {
+        return Err(Error::invalid_text(
+            Field::Other("FILE".into()),
+            format!("{name}: a flat map"),
+            "a height map with some roughness (a flat map has no spectrum)",
+        ));
+    }
+    let (h, g) = (s.rms_height(), s.rms_gradient());
+    if h.is_finite() && g.is_finite() {
+        return Ok(());
+    }
+    Err(Error::invalid_text(
+        Field::Other("FILE".into()),
+        format!(
+            "{name}: a map of rms height {} m, rms gradient {}",
+            asperity::error::fmt_value(h),
+            asperity::error::fmt_value(g)
+        ),
+        "a map whose heights' squares are finite (|h| below about 1e150; check the heights' unit)",
+    ))
 }
 
 fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::ChartSpec {
@@ -382,7 +461,7 @@ fn table(o: &PsdOutput) -> String {
     line("system_size_m", format!("{:.6e}", o.system_size_m));
     line("detrend / window", format!("{} / {}", o.detrend, o.window));
     line("rms_height_m", format!("{:.6e}", o.rms_height_m));
-    line("rms_gradient", format!("{:.6}", o.rms_gradient));
+    line("rms_gradient", crate::report::fixed(o.rms_gradient, 6));
     line("rms_curvature", format!("{:.6e} 1/m", o.rms_curvature));
     match (
         o.hurst,

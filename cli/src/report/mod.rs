@@ -17,6 +17,26 @@ pub fn point_json(preset: &str, out: &PointReport) -> String {
     serde_json::to_string_pretty(&Run { preset, report: out }).expect("serialisable")
 }
 
+/// `x` with `decimals` digits after the point, or in scientific notation with as many
+/// significant digits where the fixed form would hide it (a nonzero value that would print
+/// as 0.000…, or one of 10⁷ and above): a table never shows a small contact area as zero.
+///
+/// # Examples
+/// ```
+/// use asperity_cli::report::fixed;
+/// assert_eq!(fixed(0.25, 4), "0.2500");
+/// assert_eq!(fixed(4.46e-9, 8), "4.46000000e-9");
+/// assert_eq!(fixed(0.0, 6), "0.000000");
+/// ```
+pub fn fixed(x: f64, decimals: usize) -> String {
+    let hidden = x != 0.0 && x.abs() < 10f64.powi(-(decimals.min(300) as i32 / 2).max(1));
+    if x.is_finite() && (hidden || x.abs() >= 1e7) {
+        format!("{x:.decimals$e}")
+    } else {
+        format!("{x:.decimals$}")
+    }
+}
+
 /// `run --format table`: one line per quantity, names padded to a column.
 pub fn point_table(preset: &str, out: &PointReport) -> String {
     let s = &out.scene;
@@ -35,18 +55,18 @@ pub fn point_table(preset: &str, out: &PointReport) -> String {
             None => "inf (semi-infinite)".into(),
         },
     );
-    line("gamma_s", format!("{} J/m^2 (gamma_glo = {:.4})", s.gamma, s.gamma_glo));
-    line("a_r", format!("{:.8}", out.stats.a_r));
-    line("mean_contact_stress*", format!("{:.6}", out.stats.mean_contact_stress));
     line(
-        "contact_stress_variance*",
-        format!("{:.6}", out.stats.contact_stress_variance),
+        "gamma_s",
+        format!("{} J/m^2 (gamma_glo = {})", s.gamma, fixed(s.gamma_glo, 4)),
     );
-    line("width*", format!("{:.6}", out.width));
+    line("a_r", fixed(out.stats.a_r, 8));
+    line("mean_contact_stress*", fixed(out.stats.mean_contact_stress, 6));
+    line("contact_stress_variance*", fixed(out.stats.contact_stress_variance, 6));
+    line("width*", fixed(out.width, 6));
     line("error_estimate (a_r)", format!("{:.2e}", out.error_estimate));
     if let (Some(g), Some(r)) = (out.mean_gap, out.mean_gap_rel) {
         let err = out.mean_gap_error.map_or(String::new(), |e| format!(" +- {e:.1e}"));
-        line("mean_gap", format!("{g:.6e} m (u/h_rms = {r:.6}{err})"));
+        line("mean_gap", format!("{g:.6e} m (u/h_rms = {}{err})", fixed(r, 6)));
         if let (Some(lo), Some(hi), true) = (
             out.mean_gap_lower_rel,
             out.mean_gap_upper_rel,
@@ -55,7 +75,9 @@ pub fn point_table(preset: &str, out: &PointReport) -> String {
             line(
                 "mean_gap bracket",
                 format!(
-                    "{lo:.6} <= u/h_rms <= {hi:.6} (same a_r / same load without adhesion); contact load p_c* = {:.4e}",
+                    "{} <= u/h_rms <= {} (same a_r / same load without adhesion); contact load p_c* = {:.4e}",
+                    fixed(lo, 6),
+                    fixed(hi, 6),
                     out.contact_load.unwrap_or(f64::NAN)
                 ),
             );
@@ -65,21 +87,28 @@ pub fn point_table(preset: &str, out: &PointReport) -> String {
         line("mean_gap", n.clone());
     }
     if out.branch != Branch::Adhesionless {
-        line("sigma_a*", format!("{:.6} (wall at sigma* = -sigma_a*)", out.sigma_a));
+        line(
+            "sigma_a*",
+            format!("{} (wall at sigma* = -sigma_a*)", fixed(out.sigma_a, 6)),
+        );
         line("tensile_area", format!("{:.6e}", out.tensile_area));
         line("branch", out.branch.to_string());
         if let Some(u) = out.unloading_a_r {
-            line("unloading_a_r", format!("{u:.8} (a second, unloading branch)"));
+            line("unloading_a_r", format!("{} (a second, unloading branch)", fixed(u, 8)));
         }
         if out.branches.len() > 1 {
             let list: Vec<String> = out
                 .branches
                 .iter()
                 .map(|b| {
-                    let gap = b.mean_gap_rel.map_or(String::new(), |g| format!(" u/h_rms = {g:.4}"));
+                    let gap = b
+                        .mean_gap_rel
+                        .map_or(String::new(), |g| format!(" u/h_rms = {}", fixed(g, 4)));
                     format!(
-                        "{} a_r = {:.6} sigma_a* = {:.4}{gap}",
-                        b.state.branch, b.state.a_r, b.state.sigma_a
+                        "{} a_r = {} sigma_a* = {}{gap}",
+                        b.state.branch,
+                        fixed(b.state.a_r, 6),
+                        fixed(b.state.sigma_a, 4)
                     )
                 })
                 .collect();
@@ -101,7 +130,10 @@ pub fn point_table(preset: &str, out: &PointReport) -> String {
     }
     line("elastic_energy", format!("{:.6e} J/m^2", out.elastic_energy));
     line("trust", out.trust.summary.clone());
-    line("converged", format!("{}", out.converged));
+    match &out.converged_note {
+        Some(why) if !out.converged => line("converged", format!("false: {why}")),
+        _ => line("converged", format!("{}", out.converged)),
+    }
     line(
         "elapsed_s",
         format!(

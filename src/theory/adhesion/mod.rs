@@ -346,10 +346,12 @@ pub fn interpolate(sol: &AdhesiveSolution, q: f64, values: &[f64]) -> f64 {
     if i >= sol.q.len() {
         return *values.last().unwrap_or(&0.0);
     }
-    let (q0, q1) = (sol.q[i - 1], sol.q[i]);
-    if q1 <= q0 {
-        return values[i];
+    let (l, l0, l1) = (q.ln(), sol.q[i - 1].ln(), sol.q[i].ln());
+    // a q within rounding of a node is that node (at q_L the grid's first nodes can differ by
+    // an ulp, where ln q − ln q₀ = 0 and ln q₁ − ln q₀ = 0 would give 0/0)
+    if l <= l0 || l1 <= l0 {
+        return values[i - 1];
     }
-    let t = (q.ln() - q0.ln()) / (q1.ln() - q0.ln());
+    let t = ((l - l0) / (l1 - l0)).min(1.0);
     values[i - 1] + t * (values[i] - values[i - 1])
 }

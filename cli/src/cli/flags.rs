@@ -1,0 +1,466 @@
+//! Every flag of every command in one declarative table ([`table`]): what it takes (its
+//! [`Kind`]: a number of a library field, a count, a choice, a file to read or to write…),
+//! its unit, and so its allowed values, taken from the library's ranges
+//! ([`asperity::limits`]) and never restated here. [`command`] drives the clap parser from
+//! it: each flag's value parser and `allow_hyphen_values` come from its row, so a value is
+//! refused in one line naming the flag, the value and what is allowed while the command line
+//! is parsed, before any work starts; and a flag without a row is caught by the test that
+//! walks the parser (`cli/tests/cli_every_flag.rs`).
+//!
+//! Files to write (`--svg`, `--png`, `--save-preset`, `--save-reference`, `--save-surface`,
+//! `--output`) are checked at the same time: their extension (the format written), that the
+//! path is not a folder, that its folder exists and that a file can be created there.
+
+use super::parse;
+use asperity::error::{Field, Range};
+use asperity::limits;
+use clap::builder::ValueParser;
+use std::path::{Path, PathBuf};
+
+/// What a flag takes, and so how its value is parsed and checked.
+#[derive(Debug, Clone)]
+pub enum Kind {
+    /// A number in the library's range of `Field` (an `f64`).
+    Number(Field),
+    /// A finite number `> 0` in `unit` (a wave-number cut-off).
+    Positive,
+    /// A number in a range of the front end's own (an `f64`).
+    NumberIn(Range),
+    /// A whole number in the library's range of `Field` (a `usize`).
+    Count(Field),
+    /// A whole number in a range of the front end's own (a `usize`).
+    CountIn(usize, usize),
+    /// A whole number in the library's range of `Field`, kept as an `i64` (a grid side).
+    Whole(Field),
+    /// A seed: any whole number 0 ..= 2⁶⁴−1 (a `u64`).
+    Seed,
+    /// `tour --step`: a whole number ≥ 1 (its upper end is the tour's length).
+    Step,
+    /// An end of `sweep --from/--to`: a number; its range depends on `--over`.
+    SweepEnd,
+    /// `--thickness`: a number in its range, or `inf` (kept as text).
+    Thickness,
+    /// `--model` of the scene: one of the variants (kept as text).
+    Model,
+    /// A rung of `--ladder` (λ_s/Δa).
+    Ladder,
+    /// One of the names clap lists (a `ValueEnum` or true/false): clap's own parser.
+    Choice,
+    /// A switch: no value.
+    Switch,
+    /// A name checked here by `check`: a preset, tour, figure or reference (a built-in name or
+    /// a file), a comma-separated list of coefficients, … (a `String`).
+    Text(fn(&str) -> Result<(), String>),
+    /// A file to read: it exists and is not a folder (a `PathBuf`).
+    InFile,
+    /// A file to write, ending in one of these extensions (none: any name; a `PathBuf`).
+    OutFile(&'static [&'static str]),
+    /// As [`Kind::OutFile`], kept as text (`bench --output`).
+    OutText(&'static [&'static str]),
+}
+
+/// One row of the table: the commands that have the flag (empty: every command with a flag
+/// of that name, unless a row names the command), the flag, its kind and unit.
+#[derive(Debug, Clone)]
+pub struct Flag {
+    /// The commands this row is for; empty for every command without a row of its own.
+    pub commands: &'static [&'static str],
+    /// The flag (`--pressure`) or, for a positional argument, its clap id (`file`).
+    pub name: &'static str,
+    /// What it takes.
+    pub kind: Kind,
+    /// The unit of its value ("" for a pure number or a name).
+    pub unit: &'static str,
+}
+
+const fn row(name: &'static str, kind: Kind, unit: &'static str) -> Flag {
+    Flag {
+        commands: &[],
+        name,
+        kind,
+        unit,
+    }
+}
+
+const fn only(commands: &'static [&'static str], name: &'static str, kind: Kind, unit: &'static str) -> Flag {
+    Flag {
+        commands,
+        name,
+        kind,
+        unit,
+    }
+}
+
+const SVG: &[&str] = &["svg"];
+const PNG: &[&str] = &["png"];
+/// The text formats a map is saved in (and read back from).
+const MAP_TEXT: &[&str] = &["txt", "asc", "dat"];
+
+/// The whole table: every flag of every command.
+pub fn table() -> Vec<Flag> {
+    use Kind::*;
+    vec![
+        // the scene (run, sweep, gfmd, tui, gauge, compare)
+        row("--preset", Text(check_preset), ""),
+        row("--model", Model, ""),
+        row(
+            "--fudge-gamma",
+            NumberIn(Range::open_closed(
+                asperity::input::model::FUDGE_GAMMA_RANGE.0,
+                asperity::input::model::FUDGE_GAMMA_RANGE.1,
+            )),
+            "",
+        ),
+        row("--c1", Number(Field::C1), ""),
+        row("--c2", Number(Field::C2), ""),
+        row("--alpha", Number(Field::Alpha), ""),
+        row("--k-griffith", Number(Field::KGriffith), ""),
+        row("--cap", Choice, ""),
+        row("--thickness", Thickness, "1/q_r"),
+        row("--gamma", Number(Field::SurfaceEnergy), "J/m^2"),
+        row("--pressure", Number(Field::Pressure), "E* g"),
+        // a measured surface (the scene's commands, figure, psd)
+        row("--surface", InFile, ""),
+        row("--psd", InFile, ""),
+        row("--size", Number(Field::SystemSize), "m"),
+        row("--height-unit", Choice, ""),
+        row("--periodic", Switch, ""),
+        row("--qmin", Positive, "1/m"),
+        row("--qmax", Positive, "1/m"),
+        // run's accuracy knobs
+        row("--sigma-points", Count(Field::SigmaPoints), ""),
+        row("--sigma-max", Number(Field::SigmaMax), "E* g"),
+        row("--rtol", Number(Field::Rtol), ""),
+        row("--adhesion-steps", Number(Field::AdhesionSteps), "per ln q"),
+        row("--adhesion-points", Number(Field::AdhesionPoints), "per width"),
+        row("--adhesion-tol", Number(Field::AdhesionTol), ""),
+        row("--format", Choice, ""),
+        // tour
+        only(&["tour"], "tour", Text(check_tour), ""),
+        row("--step", Step, ""),
+        row("--list", Switch, ""),
+        // bench
+        row("--quick", Switch, ""),
+        row("--output", OutText(&["md"]), ""),
+        // sweep
+        row("--over", Choice, ""),
+        only(&["sweep"], "--from", SweepEnd, ""),
+        only(&["sweep"], "--to", SweepEnd, ""),
+        only(
+            &["sweep", "gfmd", "gauge", "compare"],
+            "--points",
+            Count(Field::SweepPoints),
+            "",
+        ),
+        // gfmd (and gauge --reference gfmd, figure --gfmd)
+        row("--grid", Whole(Field::Grid), "points"),
+        row("--seed", Seed, ""),
+        row("--save-surface", OutFile(MAP_TEXT), ""),
+        row("--tolerance", Number(Field::GfmdTolerance), ""),
+        row("--max-iterations", Count(Field::MaxIterations), ""),
+        row("--bins", Count(Field::Bins), ""),
+        row("--method", Choice, ""),
+        row("--raw-adhesion", Switch, ""),
+        row("--extrapolate", Switch, ""),
+        row("--ladder", Ladder, "lambda_s/da"),
+        row("--seeds", CountIn(1, super::gfmd::MAX_SEEDS), ""),
+        only(&["gfmd", "gauge", "compare"], "--from", Number(Field::Pressure), "E* g"),
+        only(&["gfmd", "gauge", "compare"], "--to", Number(Field::Pressure), "E* g"),
+        // figure
+        only(&["figure"], "id", Text(check_figure), ""),
+        row("--gfmd", Switch, ""),
+        only(&["figure"], "--points", CountIn(2, 100_000), ""),
+        row("--width", CountIn(20, 1000), "characters"),
+        row("--height", CountIn(10, 1000), "lines"),
+        only(&["figure"], "--model", Text(check_figure_models), ""),
+        row("--svg", OutFile(SVG), ""),
+        row("--png", OutFile(PNG), ""),
+        // gauge and compare
+        row("--fit", Text(check_fit), ""),
+        row("--reference", Text(check_reference), ""),
+        row("--pr", InFile, ""),
+        row("--observables", Text(check_observables), ""),
+        row("--save-reference", OutFile(&["csv"]), ""),
+        row("--save-preset", OutFile(&["toml"]), ""),
+        row("--models", Text(check_models), ""),
+        row("--fitted", InFile, ""),
+        // psd
+        only(&["psd"], "file", InFile, ""),
+        row(
+            "--bins-per-decade",
+            NumberIn(Range::closed(
+                asperity::surface::psd::BINS_PER_DECADE_RANGE.0,
+                asperity::surface::psd::BINS_PER_DECADE_RANGE.1,
+            )),
+            "per decade",
+        ),
+    ]
+}
+
+/// The row of flag `name` of `command`: the command's own row, else the shared one.
+pub fn lookup(command: &str, name: &str) -> Option<Flag> {
+    let t = table();
+    t.iter()
+        .find(|f| f.name == name && f.commands.contains(&command))
+        .or_else(|| t.iter().find(|f| f.name == name && f.commands.is_empty()))
+        .cloned()
+}
+
+/// The name a row is looked up by: `--long` for a flag, the clap id for a positional.
+pub fn name_of(arg: &clap::Arg) -> String {
+    match arg.get_long() {
+        Some(l) => format!("--{l}"),
+        None => arg.get_id().to_string(),
+    }
+}
+
+impl Kind {
+    /// What the flag accepts, in the words of its messages.
+    pub fn allowed(&self, name: &str) -> String {
+        let bare = name.trim_start_matches('-').replace('-', "_");
+        match self {
+            Kind::Number(f) | Kind::Count(f) | Kind::Whole(f) => describe(f, &bare),
+            Kind::Positive => format!("a number {bare} > 0"),
+            Kind::NumberIn(r) => r.describe(&bare),
+            Kind::CountIn(lo, hi) => Range::whole(*lo as f64, *hi as f64).describe(&bare),
+            Kind::Seed => format!("a whole number 0 <= seed <= {}", u64::MAX),
+            Kind::Step => "a whole number 1 <= step <= the tour's number of steps".into(),
+            Kind::SweepEnd => parse::sweep_end("").unwrap_err(),
+            Kind::Thickness => describe(&Field::Thickness, "t·q_r"),
+            Kind::Model => describe(&Field::Model, "model"),
+            Kind::Ladder => {
+                let (lo, hi) = super::gfmd::LADDER_RANGE;
+                format!(
+                    "a comma-separated list of {}",
+                    Range::closed(lo, hi).describe("lambda_s/da")
+                )
+            }
+            Kind::Choice => "one of the names `--help` lists".into(),
+            Kind::Switch => "no value".into(),
+            Kind::Text(check) => check("").unwrap_err(),
+            Kind::InFile => "an existing file".into(),
+            Kind::OutFile(exts) | Kind::OutText(exts) => out_allowed(exts),
+        }
+    }
+
+    /// The value parser of this kind for the flag shown as `shown` in its range (e.g.
+    /// `points`), or None where clap's own one stays (choices, switches).
+    fn parser(&self, shown: String) -> Option<ValueParser> {
+        Some(match self.clone() {
+            Kind::Number(f) => ValueParser::new(parse::number(f)),
+            Kind::Positive => ValueParser::new(move |s: &str| match s.trim().parse::<f64>() {
+                Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
+                _ => Err(format!("a number {shown} > 0")),
+            }),
+            Kind::NumberIn(r) => ValueParser::new(move |s: &str| match s.trim().parse::<f64>() {
+                Ok(x) if r.contains(x) => Ok(x),
+                _ => Err(r.describe(&shown)),
+            }),
+            Kind::Count(f) => ValueParser::new(parse::count(f)),
+            Kind::CountIn(lo, hi) => ValueParser::new(move |s: &str| {
+                let r = Range::whole(lo as f64, hi as f64);
+                match s.trim().parse::<f64>() {
+                    Ok(x) if r.contains(x) => Ok(x as usize),
+                    _ => Err(r.describe(&shown)),
+                }
+            }),
+            Kind::Whole(f) => ValueParser::new(parse::whole(f)),
+            Kind::Seed => ValueParser::new(parse::whole_number_u64),
+            Kind::Step => ValueParser::new(parse::step),
+            Kind::SweepEnd => ValueParser::new(parse::sweep_end),
+            Kind::Thickness => ValueParser::new(parse::thickness),
+            Kind::Model => ValueParser::new(parse::model),
+            Kind::Ladder => ValueParser::new(super::gfmd::ladder_rung),
+            Kind::Choice | Kind::Switch => return None,
+            Kind::Text(check) => ValueParser::new(move |s: &str| check(s).map(|()| s.to_string())),
+            Kind::InFile => ValueParser::new(in_file),
+            Kind::OutFile(exts) => ValueParser::new(move |s: &str| out_file(s, exts)),
+            Kind::OutText(exts) => ValueParser::new(move |s: &str| out_file(s, exts).map(|_| s.to_string())),
+        })
+    }
+}
+
+/// A field's library range described with `name`.
+fn describe(field: &Field, name: &str) -> String {
+    limits::allowed(field).map_or_else(|| "a number".into(), |a| a.describe(name))
+}
+
+fn out_allowed(exts: &[&str]) -> String {
+    match exts {
+        [] => "a file name in an existing, writable folder".into(),
+        [e] => format!("a file name ending in .{e}, in an existing, writable folder"),
+        _ => format!(
+            "a file name ending in .{}, in an existing, writable folder",
+            exts.join(", .")
+        ),
+    }
+}
+
+/// A file to read: it exists and is not a folder.
+pub fn in_file(s: &str) -> Result<PathBuf, String> {
+    let p = PathBuf::from(s);
+    if s.trim().is_empty() {
+        return Err("a file name".into());
+    }
+    if p.is_dir() {
+        return Err("a file, not a folder".into());
+    }
+    if !p.exists() {
+        return Err("an existing file (no such file)".into());
+    }
+    Ok(p)
+}
+
+/// A file to write: the extension `exts` asks for, not a folder, in an existing folder where
+/// a file can be created (tried with a probe file, removed at once).
+pub fn out_file(s: &str, exts: &[&str]) -> Result<PathBuf, String> {
+    let p = PathBuf::from(s);
+    let ext_ok = exts.is_empty()
+        || p.extension()
+            .and_then(|x| x.to_str())
+            .is_some_and(|x| exts.iter().any(|e| x.eq_ignore_ascii_case(e)));
+    if s.trim().is_empty() || !ext_ok || p.is_dir() {
+        return Err(out_allowed(exts));
+    }
+    let dir = match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    if !dir.is_dir() {
+        return Err(format!("{} (no such folder)", out_allowed(exts)));
+    }
+    if !writable(&dir) {
+        return Err(format!("{} (the folder is not writable)", out_allowed(exts)));
+    }
+    Ok(p)
+}
+
+/// Whether a file can be created in `dir`.
+fn writable(dir: &Path) -> bool {
+    let probe = dir.join(format!(".asperity-probe-{}", std::process::id()));
+    match std::fs::OpenOptions::new().write(true).create_new(true).open(&probe) {
+        Ok(_) => {
+            let _ = std::fs::remove_file(&probe);
+            true
+        }
+        // a probe left by an earlier run of this process id still shows a writable folder
+        Err(e) => e.kind() == std::io::ErrorKind::AlreadyExists,
+    }
+}
+
+fn check_fit(s: &str) -> Result<(), String> {
+    asperity::fit::Param::parse_list(s)
+        .map(|_| ())
+        .map_err(|_| "a comma-separated list of c1, c2, alpha, k_griffith, w0".into())
+}
+
+/// A built-in or local name among `names`, or a file that exists.
+fn name_or_file(s: &str, names: Vec<(String, String)>, what: &str) -> Result<(), String> {
+    let t = s.trim();
+    if !t.is_empty() && (names.iter().any(|(n, _)| n == t) || Path::new(t).is_file()) {
+        return Ok(());
+    }
+    let list: Vec<String> = names.into_iter().map(|(n, _)| n).collect();
+    Err(format!("{} or a {what} TOML file", list.join(", ")))
+}
+
+/// `--preset`: a preset's name or a preset file (its keys are checked when it is read).
+fn check_preset(s: &str) -> Result<(), String> {
+    name_or_file(s, asperity::input::preset::list_available(), "preset")
+}
+
+/// `tour NAME`: a tour's name or a tour file.
+fn check_tour(s: &str) -> Result<(), String> {
+    name_or_file(s, crate::tui::tour::list_available(), "tour")
+}
+
+/// `figure ID`: a figure of the paper or a figure file.
+fn check_figure(s: &str) -> Result<(), String> {
+    name_or_file(s, crate::figure::list(), "figure")
+}
+
+/// `--reference`: eq18, gfmd or a CSV file that exists.
+fn check_reference(s: &str) -> Result<(), String> {
+    let t = s.trim();
+    if t == "eq18" || t == "gfmd" || in_file(t).is_ok_and(|p| p.is_file()) {
+        Ok(())
+    } else {
+        Err("eq18, gfmd or an existing CSV file (p, a_r, ...)".into())
+    }
+}
+
+fn check_observables(s: &str) -> Result<(), String> {
+    let ok = s.split(',').map(str::trim).all(|t| {
+        asperity::fit::reference::Observable::ALL
+            .into_iter()
+            .any(|o| o.key() == t)
+    });
+    if ok && !s.trim().is_empty() {
+        Ok(())
+    } else {
+        Err("a comma-separated list of a_r, mean_contact_stress, mean_gap_rel, pr".into())
+    }
+}
+
+/// `compare --models`: 1–4, yp08, xu24 (a custom model comes in with --fitted).
+fn check_models(s: &str) -> Result<(), String> {
+    let allowed = "a comma-separated list of 1, 2, 3, 4, yp08, xu24";
+    let mut any = false;
+    for t in s.split(',').map(str::trim).filter(|t| !t.is_empty()) {
+        match t.parse::<asperity::input::model::ModelKind>() {
+            Ok(k) if k != asperity::input::model::ModelKind::Custom => any = true,
+            _ => return Err(allowed.into()),
+        }
+    }
+    if any {
+        Ok(())
+    } else {
+        Err(allowed.into())
+    }
+}
+
+/// One name of `figure --model` (a comma-separated list, split by clap).
+fn check_figure_models(s: &str) -> Result<(), String> {
+    check_models(s).map_err(|_| "a comma-separated list of 1, 2, 3, 4, yp08, xu24".into())
+}
+
+/// The parser of the whole command line: the derived [`super::Cli`] with every flag's value
+/// parser and `allow_hyphen_values` set from its row of the table (a value that starts with
+/// `-` is the flag's value, refused by its range, not an unknown option).
+pub fn command() -> clap::Command {
+    use clap::CommandFactory;
+    let mut cmd = super::Cli::command();
+    let names: Vec<String> = cmd.get_subcommands().map(|s| s.get_name().to_string()).collect();
+    for sub in names {
+        cmd = cmd.mut_subcommand(&sub, |s| {
+            let name = s.get_name().to_string();
+            s.mut_args(|a| drive(&name, a))
+        });
+    }
+    cmd
+}
+
+/// Sets one argument's parsing from its row.
+fn drive(command: &str, arg: clap::Arg) -> clap::Arg {
+    let name = name_of(&arg);
+    let Some(flag) = lookup(command, &name) else {
+        return arg;
+    };
+    let takes_value = arg.get_action().takes_values();
+    let arg = if takes_value {
+        arg.allow_hyphen_values(true)
+    } else {
+        arg
+    };
+    // a positional argument is named in messages by what it is (`invalid figure = 9`)
+    let arg = if arg.get_long().is_none() && command == "figure" {
+        arg.value_name("FIGURE")
+    } else {
+        arg
+    };
+    let shown = name.trim_start_matches('-').replace('-', "_");
+    match flag.kind.parser(shown) {
+        Some(p) if takes_value => arg.value_parser(p),
+        _ => arg,
+    }
+}
