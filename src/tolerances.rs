@@ -329,3 +329,8 @@ pub const CHART_ACCURACY_REL: f64 = 1e-2;
 /// pixels of the default chart (800 × 560): refinement aims at half a pixel from three
 /// neighbours' curvature, so a pixel bounds what it leaves.
 pub const FIGURE_CHORD_PX: f64 = 1.0;
+
+/// The Python package against the CLI's JSON for the same scene (python/tests): both call the
+/// same library functions on the same inputs, so the numbers agree to the last bits; 1e-12
+/// relative allows for the one decimal round trip of the JSON text.
+pub const PYTHON_CLI_REL: f64 = 1e-12;
