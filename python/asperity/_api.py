@@ -83,14 +83,30 @@ def _values(values: Any, field: str) -> List[float]:
     return [float(x) for x in arr]
 
 
-def sweep(scene: Scene, values: Any, *, over: str = "pressure", progress: Progress = None) -> SweepResult:
+_OVER = {
+    "pressure": "pressure",
+    "thickness": "thickness",
+    "thickness_qr": "thickness",
+    "gamma": "gamma",
+    "surface_energy_j_m2": "gamma",
+}
+
+
+def sweep(
+    scene: Scene,
+    pressures: Any = None,
+    *,
+    over: str = "pressure",
+    values: Any = None,
+    progress: Progress = None,
+) -> SweepResult:
     """A sweep of the theory over p* (``over="pressure"``, library
     ``asperity::theory::sweep::sweep``: continuation in the load, one shared energy table for
     the mean gap [S-12]), over t·q_r (``"thickness"``) or over γ_s in J/m² (``"gamma"``,
     library ``asperity::theory::knob::knob_sweep``: each value its own scene at the scene's
     p*, exactly what :func:`evaluate` gives for it).
 
-    ``values``: ascending; evenly spaced ones (``np.geomspace`` for p* and t·q_r,
+    ``pressures`` (or ``values``, the name for any knob): ascending; evenly spaced ones (``np.geomspace`` for p* and t·q_r,
     ``np.linspace`` for γ_s) run as one sweep like the CLI's ``--from --to --points``, any
     other list one value at a time.
 
@@ -101,25 +117,29 @@ def sweep(scene: Scene, values: Any, *, over: str = "pressure", progress: Progre
     ``reasons`` beside them; ``window_edges``, ``jump_in_pressure``, ``pull_off_pressure``;
     ``to_dict()`` has the keys of ``asperity sweep --format json``.
     """
-    if over not in ("pressure", "thickness", "gamma"):
+    knob = _OVER.get(over)
+    if knob is None:
         raise InputError(
             f"invalid over = {over!r}: allowed pressure, thickness or gamma",
             field="over",
             value=repr(over),
-            allowed="pressure, thickness or gamma",
+            allowed="pressure, thickness (thickness_qr) or gamma (surface_energy_j_m2)",
         )
-    field = {"pressure": "pressures", "thickness": "thickness_qr", "gamma": "surface_energy_j_m2"}[over]
-    return SweepResult(_native.sweep(_scene(scene), _values(values, field), over, progress))
+    if (pressures is None) == (values is None):
+        raise TypeError("sweep() takes the values to sweep once: as `pressures` (positional) or as `values`")
+    field = {"pressure": "pressures", "thickness": "thickness_qr", "gamma": "surface_energy_j_m2"}[knob]
+    given = pressures if values is None else values
+    return SweepResult(_native.sweep(_scene(scene), _values(given, field), knob, progress))
 
 
 def sweep_thickness(scene: Scene, thickness_qr: Any, *, progress: Progress = None) -> SweepResult:
     """:func:`sweep` over t·q_r (finite values, ascending) at the scene's p* ([S] Fig. 7)."""
-    return sweep(scene, thickness_qr, over="thickness", progress=progress)
+    return sweep(scene, over="thickness", values=thickness_qr, progress=progress)
 
 
 def sweep_gamma(scene: Scene, surface_energy_j_m2: Any, *, progress: Progress = None) -> SweepResult:
     """:func:`sweep` over γ_s in J/m² (ascending, from 0 allowed) at the scene's p*."""
-    return sweep(scene, surface_energy_j_m2, over="gamma", progress=progress)
+    return sweep(scene, over="gamma", values=surface_energy_j_m2, progress=progress)
 
 
 def gfmd(

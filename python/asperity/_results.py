@@ -102,6 +102,16 @@ class Report(Result):
         return (_num(self._data.get("pull_off_pressure")), _num(self._data.get("jump_in_pressure")))
 
     @property
+    def variance(self) -> float:
+        """⟨δσ_c²⟩*, the contact stress variance (reduced by (E*ḡ)²): ``contact_stress_variance``."""
+        return float(self._data["contact_stress_variance"])
+
+    @property
+    def timings(self) -> Dict[str, float]:
+        """Wall times in s: ``elapsed_s`` (all), ``elapsed_solve_s``, ``elapsed_window_s``, ``elapsed_gap_s``."""
+        return {k: float(v) for k, v in self._data.items() if k.startswith("elapsed")}
+
+    @property
     def gap_bracket(self) -> Tuple[float, float]:
         """(lower, upper) ends of ū/h_rms's bracket (NaN where the gap is unavailable)."""
         return (_num(self._data.get("mean_gap_lower_rel")), _num(self._data.get("mean_gap_upper_rel")))
