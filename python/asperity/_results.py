@@ -117,6 +117,13 @@ class Report(Result):
         return (_num(self._data.get("mean_gap_lower_rel")), _num(self._data.get("mean_gap_upper_rel")))
 
 
+    def __repr__(self) -> str:
+        d = self._data
+        keys = ("a_r", "mean_contact_stress", "contact_stress_variance", "mean_gap_rel", "branch", "converged")
+        shown = ", ".join(f"{k}={d.get(k)!r}" for k in keys)
+        return f"Report(preset={d.get('preset')!r}, {shown}, ...)"
+
+
 class SweepResult(Result):
     """A sweep (:func:`asperity.sweep`): the object of ``asperity sweep --format json``.
 

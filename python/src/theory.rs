@@ -101,9 +101,7 @@ pub fn evaluate<'py>(
     );
     let s = scene.scene.clone();
     let report = work::run(py, progress.as_ref(), move |_| asperity::report::point(&s, &opts))?;
-    let d = value::ser(py, &report)?;
-    d.set_item("preset", &scene.preset.name)?;
-    Ok(d)
+    value::ser_with_preset(py, &scene.preset.name, &report)
 }
 
 /// One row of a sweep (the CLI's `sweep` row: the engine's row, a_r/p*, [S-18], t·q_r, γ_s).

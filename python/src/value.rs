@@ -41,3 +41,14 @@ pub fn ser<'py, T: serde::Serialize>(py: Python<'py>, x: &T) -> PyResult<Bound<'
     let v = serde_json::to_value(x).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
     to_py(py, &v)
 }
+
+/// A serialisable object as a dict with `preset` first (as the CLI writes `run`'s JSON).
+pub fn ser_with_preset<'py, T: serde::Serialize>(py: Python<'py>, preset: &str, x: &T) -> PyResult<Bound<'py, PyAny>> {
+    let v = serde_json::to_value(x).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+    let mut m = serde_json::Map::new();
+    m.insert("preset".into(), Value::String(preset.to_string()));
+    if let Value::Object(o) = v {
+        m.extend(o);
+    }
+    to_py(py, &Value::Object(m))
+}
