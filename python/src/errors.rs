@@ -22,7 +22,10 @@ pub fn python_name(field: &Field) -> String {
         Field::Model => "model".into(),
         Field::HeightMap => "heights".into(),
         Field::SystemSize => "system_size_m".into(),
-        Field::Other(k) => k.trim_start_matches('-').replace('-', "_"),
+        Field::Other(k) => {
+            let k = k.trim_start_matches('-').replace('-', "_");
+            k.rsplit('.').next().unwrap_or(&k).to_string()
+        }
         f => f.short().to_string(),
     }
 }
