@@ -110,3 +110,25 @@ def test_results_do_not_depend_on_threads():
         env = dict(os.environ, RAYON_NUM_THREADS=n)
         outs.append(subprocess.run([sys.executable, "-c", code], env=env, check=True, capture_output=True, text=True).stdout)
     assert outs[0] == outs[1]
+
+
+def test_gauge_on_columns_equals_gauge_on_the_same_csv(tmp_path):
+    ps = np.geomspace(1e-3, 0.3, 6)
+    a_r = np.array([asperity.evaluate(asperity.Scene.preset("system-1").replace(surface_energy_j_m2=0.0, pressure=float(p))).a_r for p in ps])
+    cols = {"p": ps, "a_r": a_r * 1.05}
+    path = tmp_path / "ref.csv"
+    path.write_text("p,a_r\n" + "".join(f"{float(p)!r},{float(a)!r}\n" for p, a in zip(ps, cols["a_r"])))
+    s = asperity.Scene.preset("system-1").replace(surface_energy_j_m2=0.0)
+    a = asperity.gauge(s, "c1", cols).to_dict()
+    b = asperity.gauge(s, ["c1"], path).to_dict()
+    assert a["params"][0]["value"] == b["params"][0]["value"]
+    assert b["reference"] == "ref.csv"
+
+
+def test_sweep_takes_its_values_once():
+    s = asperity.Scene.preset("system-1")
+    with pytest.raises(TypeError):
+        asperity.sweep(s)
+    with pytest.raises(TypeError):
+        asperity.sweep(s, [0.01], values=[0.02])
+    assert asperity.sweep(s, values=[0.01]).p.tolist() == [0.01]
