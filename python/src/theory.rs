@@ -332,6 +332,13 @@ fn knob_sweep(core: &SceneCore, kn: Knob, values: &[f64], opts: &Options, ctx: &
         points: n,
     };
     // every value valid before any work (the error names the scene's field)
+    if let Some(&v) = values.iter().find(|v| kn == Knob::Thickness && !v.is_finite()) {
+        return Err(Error::invalid(
+            Field::Thickness,
+            v,
+            "a finite t*q_r in a sweep (the half-space: evaluate the scene with thickness_qr = inf)",
+        ));
+    }
     for &v in values {
         let ok = match kn {
             Knob::Thickness => scene.clone().with_thickness_qr(v).map(|_| ()),

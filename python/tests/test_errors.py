@@ -123,6 +123,9 @@ def test_function_arguments_are_checked():
         asperity.sweep_thickness(s, [0.0, 1.0])
     assert e.value.field == "thickness_qr"
     with pytest.raises(asperity.InputError) as e:
+        asperity.sweep_thickness(s, [1.0, math.inf])
+    assert e.value.field == "thickness_qr" and "finite" in str(e.value)
+    with pytest.raises(asperity.InputError) as e:
         asperity.gfmd(s, grid=2)
     assert e.value.field == "grid"
     with pytest.raises(asperity.InputError) as e:
