@@ -348,3 +348,8 @@ pub const FIGURE_CHORD_PX: f64 = 1.0;
 /// onto 200 log bins per decade, against the closed form (only the bin holding the roll-off
 /// kink is not an exact power law).
 pub const RESAMPLED_TABLE_REL: f64 = 1e-3;
+
+/// The Python package against the CLI's JSON for the same scene (python/tests): both call the
+/// same library functions on the same inputs, so the numbers agree to the last bits; 1e-12
+/// relative allows for the one decimal round trip of the JSON text.
+pub const PYTHON_CLI_REL: f64 = 1e-12;

@@ -1,0 +1,55 @@
+"""The exceptions of asperity: the library's typed errors, raised by every function.
+
+- :class:`InputError` (a :class:`ValueError`): bad input, raised before any work starts. It
+  names the argument (``.field``, the keyword of :class:`asperity.Scene` or of the function),
+  the value as given (``.value``) and what is allowed (``.allowed``, in words), e.g.
+  ``invalid thickness_qr = -1: allowed 1e-6 <= thickness_qr <= 1e12, or inf``.
+- :class:`NotConverged` (a :class:`RuntimeError`): a solver missed its tolerance; ``.solver``
+  names it and ``.reason`` gives the numbers.
+- :class:`InternalError` (a :class:`RuntimeError`): a bug (a Rust panic); please report it.
+
+A computation interrupted with Ctrl-C raises :class:`KeyboardInterrupt`; an exception raised by
+a ``progress`` callback stops the computation and propagates unchanged.
+"""
+
+from __future__ import annotations
+
+from typing import Optional
+
+__all__ = ["InputError", "NotConverged", "InternalError"]
+
+
+class InputError(ValueError):
+    """Bad input: ``field`` (the argument's name), ``value`` (as given), ``allowed`` (in words).
+
+    ``key`` is the library's canonical key of the field (the preset's dotted path, e.g.
+    ``load.thickness_qr``). Fields are None where the error concerns a combination (e.g. a
+    model of the literature on an adhesive scene).
+    """
+
+    def __init__(
+        self,
+        message: str,
+        field: Optional[str] = None,
+        value: Optional[str] = None,
+        allowed: Optional[str] = None,
+        key: Optional[str] = None,
+    ) -> None:
+        super().__init__(message)
+        self.field = field
+        self.value = value
+        self.allowed = allowed
+        self.key = key
+
+
+class NotConverged(RuntimeError):
+    """A numerical method did not reach its tolerance: ``solver`` and ``reason``."""
+
+    def __init__(self, message: str, solver: Optional[str] = None, reason: Optional[str] = None) -> None:
+        super().__init__(message)
+        self.solver = solver
+        self.reason = reason
+
+
+class InternalError(RuntimeError):
+    """A Rust panic inside asperity (a bug), with its message."""

@@ -1,0 +1,190 @@
+"""Result objects: the library's results with the keys of the CLI's JSON.
+
+Every result holds the plain dict the library produced (``to_dict()``: the keys and numbers of
+``asperity run|sweep|gfmd|psd --format json``, JSON-serialisable, unavailable values None) and
+reads it as attributes: a nested object becomes a result (``report.pr.sigma``), a list of
+numbers a numpy array (None becomes NaN), a list of objects a list of results.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from typing import Any, Dict, Iterator, List, Tuple
+
+import numpy as np
+
+__all__ = ["Result", "Report", "SweepResult", "GfmdResult", "PsdResult"]
+
+
+def _is_number(x: Any) -> bool:
+    return x is None or (isinstance(x, (int, float)) and not isinstance(x, bool))
+
+
+def _num(x: Any) -> float:
+    return math.nan if x is None else float(x)
+
+
+def _wrap(v: Any) -> Any:
+    if isinstance(v, dict):
+        return Result(v)
+    if isinstance(v, list):
+        if v and all(isinstance(x, dict) for x in v):
+            return [Result(x) for x in v]
+        if all(_is_number(x) for x in v):
+            return np.array([math.nan if x is None else x for x in v], dtype=float)
+    return v
+
+
+class Result:
+    """A result read as attributes; ``to_dict()`` gives the plain dict (the CLI's JSON keys)."""
+
+    def __init__(self, data: Dict[str, Any]) -> None:
+        object.__setattr__(self, "_data", data)
+
+    def __getattr__(self, name: str) -> Any:
+        data = object.__getattribute__(self, "_data")
+        try:
+            return _wrap(data[name])
+        except KeyError:
+            raise AttributeError(f"{type(self).__name__} has no field {name!r} (fields: {', '.join(sorted(data))})") from None
+
+    def __getitem__(self, key: str) -> Any:
+        return self._data[key]
+
+    def __contains__(self, key: object) -> bool:
+        return key in self._data
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._data)
+
+    def keys(self) -> List[str]:
+        """The field names (the JSON keys)."""
+        return list(self._data)
+
+    def to_dict(self) -> Dict[str, Any]:
+        """A deep copy of the plain dict: JSON types only, unavailable values None."""
+        return copy.deepcopy(self._data)
+
+    def __dir__(self) -> List[str]:
+        return sorted(set(super().__dir__()) | set(self._data))
+
+    def __repr__(self) -> str:
+        shown = []
+        for k, v in self._data.items():
+            if isinstance(v, (int, float, str, bool)) or v is None:
+                shown.append(f"{k}={v!r}")
+            if len(shown) == 8:
+                break
+        return f"{type(self).__name__}({', '.join(shown)}, ...)"
+
+
+class Report(Result):
+    """One scene at one load (:func:`asperity.evaluate`): the fields of ``asperity run``.
+
+    Main fields (stresses reduced by E*ḡ, gaps by h_rms where ``_rel``):
+
+    - ``a_r``: relative contact area [S-3]; ``mean_contact_stress`` σ̄_c*;
+      ``contact_stress_variance`` ⟨δσ_c²⟩*; ``pr.sigma``, ``pr.density``: Pr(σ*) with
+      ∫Pr dσ* = a_r [S-9, S-14];
+    - ``mean_gap`` (m), ``mean_gap_rel`` with its bracket ``mean_gap_lower_rel`` ..
+      ``mean_gap_upper_rel`` and ``mean_gap_error`` [S-11, S-12];
+    - ``branch``, ``branches`` (every branch at this load), ``unloading_a_r``,
+      ``jump_in_pressure``, ``pull_off_pressure`` (the hysteresis window);
+    - ``error_estimate`` (absolute error of a_r), ``converged``;
+    - ``elapsed_s``, ``elapsed_solve_s``, ``elapsed_window_s``, ``elapsed_gap_s`` (timings, s);
+    - ``scene`` (the resolved inputs), ``resolution`` (a_r(q)).
+    """
+
+    @property
+    def window(self) -> Tuple[float, float]:
+        """(pull-off p*, jump-in p*) of the hysteresis window around the load (NaN: none)."""
+        return (_num(self._data.get("pull_off_pressure")), _num(self._data.get("jump_in_pressure")))
+
+    @property
+    def variance(self) -> float:
+        """⟨δσ_c²⟩*, the contact stress variance (reduced by (E*ḡ)²): ``contact_stress_variance``."""
+        return float(self._data["contact_stress_variance"])
+
+    @property
+    def timings(self) -> Dict[str, float]:
+        """Wall times in s: ``elapsed_s`` (all), ``elapsed_solve_s``, ``elapsed_window_s``, ``elapsed_gap_s``."""
+        return {k: float(v) for k, v in self._data.items() if k.startswith("elapsed")}
+
+    @property
+    def gap_bracket(self) -> Tuple[float, float]:
+        """(lower, upper) ends of ū/h_rms's bracket (NaN where the gap is unavailable)."""
+        return (_num(self._data.get("mean_gap_lower_rel")), _num(self._data.get("mean_gap_upper_rel")))
+
+
+    def __repr__(self) -> str:
+        d = self._data
+        keys = ("a_r", "mean_contact_stress", "contact_stress_variance", "mean_gap_rel", "branch", "converged")
+        shown = ", ".join(f"{k}={d.get(k)!r}" for k in keys)
+        return f"Report(preset={d.get('preset')!r}, {shown}, ...)"
+
+
+class SweepResult(Result):
+    """A sweep (:func:`asperity.sweep`): the object of ``asperity sweep --format json``.
+
+    Column arrays by the row keys (``res.p``, ``res.a_r``, ``res.a_r_unloading``,
+    ``res.mean_gap_rel``, ``res.mean_contact_stress``, ``res.thickness_qr``, ``res.gamma``, ...;
+    NaN where a row has no number), ``res.values`` (the swept knob's values), ``res.reasons``
+    (None where a row converged, else why not), ``res.rows`` (the rows as results).
+    """
+
+    def __getattr__(self, name: str) -> Any:
+        data = object.__getattribute__(self, "_data")
+        if name in data:
+            return _wrap(data[name])
+        rows = data.get("rows", [])
+        if rows and name in rows[0]:
+            col = [r[name] for r in rows]
+            if all(isinstance(x, bool) for x in col):
+                return np.array(col, dtype=bool)
+            return np.array([math.nan if x is None else x for x in col], dtype=float)
+        raise AttributeError(f"SweepResult has no field or column {name!r}")
+
+    @property
+    def values(self) -> np.ndarray:
+        """The swept knob's values: p* (pressure), t·q_r (thickness) or γ_s in J/m² (gamma)."""
+        key = {"pressure": "p", "thickness": "thickness_qr", "gamma": "gamma"}[self._data["over"]]
+        col = [r[key] for r in self._data["rows"]]
+        return np.array([math.inf if x is None else x for x in col], dtype=float)
+
+    @property
+    def reasons(self) -> List[Any]:
+        """Per row: None where it converged, else the reason it has no numbers."""
+        return list(self._data.get("reasons", []))
+
+    def __len__(self) -> int:
+        return len(self._data.get("rows", []))
+
+
+class GfmdResult(Result):
+    """A GFMD run (:func:`asperity.gfmd`): the object of ``asperity gfmd --format json``
+    (``a_r``, ``mean_contact_stress``, ``contact_stress_variance``, ``pr``, ``mean_gap``,
+    ``mean_gap_rel``, ``iterations``, ``residual``, ``converged``, ``grid``, ``theory`` on the
+    same map, ``reduction``, timings) and ``heights``, the map it ran on (m, rows along y)."""
+
+    def __init__(self, data: Dict[str, Any]) -> None:
+        heights = data.pop("heights", None)
+        super().__init__(data)
+        object.__setattr__(self, "heights", heights)
+
+
+class PsdResult(Result):
+    """The PSD of a map (:func:`asperity.psd`): the object of ``asperity psd --format json``
+    and the table as arrays ``q`` (1/m), ``psd`` (C(q), m⁴, isotropic 2-D [S-2]), ``modes``."""
+
+    @property
+    def q(self) -> np.ndarray:
+        return np.array([b["q"] for b in self._data["table"]], dtype=float)
+
+    @property
+    def psd(self) -> np.ndarray:
+        return np.array([b["psd"] for b in self._data["table"]], dtype=float)
+
+    @property
+    def modes(self) -> np.ndarray:
+        return np.array([b["modes"] for b in self._data["table"]], dtype=int)

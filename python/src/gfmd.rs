@@ -1,0 +1,119 @@
+//! GFMD from Python: one brute-force run ([`asperity::gfmd::run`]) of a scene on a generated
+//! reduced grid (the preset's `[gfmd]` grid or N×N keeping L/λ_r and λ_s/Δa) or on a given
+//! map, with the theory on the same map's discrete spectrum beside it; the keys of
+//! `asperity gfmd --format json`, and the map itself (`heights`, m, rows along y). The
+//! relaxation runs on a worker thread without the GIL and stops within one step on Ctrl-C
+//! ([`crate::work`]).
+
+use crate::errors;
+use crate::scene::SceneCore;
+use crate::surface::{heights_of, map_of};
+use crate::value;
+use crate::work::{self, Info};
+use asperity::error::{Error, Field};
+use asperity::gfmd::{self, GfmdOptions, GfmdSetup, GridSpec, Method, Progress, Stage};
+use numpy::PyReadonlyArray2;
+use pyo3::prelude::*;
+
+/// The reduced grid of a preset without a `[gfmd]` table (as `asperity gfmd`).
+pub const DEFAULT_GRID: GridSpec = GridSpec {
+    system_size_ratio: 2.0,
+    bandwidth: 32.0,
+    points_per_short_wavelength: 8.0,
+};
+
+/// `gfmd(scene, heights=None, size_m=None, grid=None, seed=1, ...)`: see the module docs.
+#[pyfunction]
+#[pyo3(name = "gfmd", signature = (scene, heights = None, size_m = None, grid = None, seed = 1, tolerance = 1e-8, max_iterations = None, bins = None, method = "auto", rescale = true, progress = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn run_gfmd<'py>(
+    py: Python<'py>,
+    scene: &SceneCore,
+    heights: Option<PyReadonlyArray2<'py, f64>>,
+    size_m: Option<f64>,
+    grid: Option<i64>,
+    seed: u64,
+    tolerance: f64,
+    max_iterations: Option<usize>,
+    bins: Option<usize>,
+    method: &str,
+    rescale: bool,
+    progress: Option<Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let surface = match (&heights, size_m) {
+        (Some(h), Some(l)) => Some(map_of(py, h, l)?),
+        (Some(_), None) => {
+            return Err(errors::input(
+                py,
+                "size",
+                "None",
+                "the map's x side in metres with heights",
+            ))
+        }
+        (None, Some(_)) => return Err(errors::input(py, "heights", "None", "a map when size is given")),
+        (None, None) => scene.map.as_deref().cloned(),
+    };
+    if surface.is_some() && grid.is_some() {
+        return Err(errors::input(
+            py,
+            "grid",
+            &format!("{grid:?}"),
+            "None with a given map (its own grid)",
+        ));
+    }
+    let method = match method {
+        "auto" => Method::Auto,
+        "pk" => Method::PolonskyKeer,
+        "fire" => Method::Fire,
+        m => return Err(errors::input(py, "method", m, "auto, pk or fire")),
+    };
+    let d = GfmdOptions::default();
+    let opts = GfmdOptions {
+        tolerance,
+        max_iterations: max_iterations.unwrap_or(d.max_iterations),
+        pr_bins: bins.unwrap_or(d.pr_bins),
+        method,
+        ..d
+    };
+    let mut spec = scene
+        .preset
+        .gfmd
+        .as_ref()
+        .map(GridSpec::from_preset)
+        .unwrap_or(DEFAULT_GRID);
+    let setup = errors::guard(py, || {
+        opts.validate()?;
+        if let Some(n) = grid {
+            if n < 4 {
+                return Err(Error::invalid(Field::Grid, n as f64, "an integer N >= 4"));
+            }
+            spec = spec.with_grid(n as usize)?;
+        }
+        Ok(GfmdSetup {
+            scene: scene.scene.clone(),
+            grid: spec,
+            seed,
+            surface,
+            rescale,
+        })
+    })?;
+    let total = opts.max_iterations;
+    let mut r = work::run(py, progress.as_ref(), move |ctx| {
+        let mut report = |p: Progress| {
+            ctx.report(Info {
+                stage: if p.stage == Stage::Theory { "theory" } else { "relax" },
+                done: p.iteration,
+                total,
+                residual: p.residual,
+                contact_fraction: p.contact_fraction,
+            })
+        };
+        gfmd::run(&setup, &opts, &mut report, &ctx.cancel)
+    })?;
+    let map = r.surface.take();
+    let d = value::ser(py, &r)?;
+    if let Some(m) = map {
+        d.set_item("heights", heights_of(py, &m)?)?;
+    }
+    Ok(d)
+}

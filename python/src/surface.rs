@@ -1,0 +1,150 @@
+//! Height maps in and out: a numpy array (rows along y, heights in m) and the x side L in m
+//! as a library [`Surface`] (Δa = L/n_x, square pixels), `read_surface` (the library's
+//! readers: .txt .asc .dat .xyz .npy .gsf) and `psd` (the radial average of the map's PSD
+//! [S-2] with h_rms, ḡ, the rms curvature and the self-affine fit, the keys of
+//! `asperity psd --format json`).
+
+use crate::errors;
+use crate::value;
+use asperity::surface::heightmap::Surface;
+use asperity::surface::psd::{self, PsdAnalysis, PsdOptions};
+use asperity::surface::readers::{self, ReadOptions, Unit};
+use asperity::surface::spectrum::HURST_RANGE;
+use numpy::{PyArray2, PyReadonlyArray2};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// The map of `heights` (shape (n_y, n_x), m) with x side `size_m` (m).
+pub fn map_of(py: Python<'_>, heights: &PyReadonlyArray2<'_, f64>, size_m: f64) -> PyResult<Surface> {
+    let a = heights.as_array();
+    let (ny, nx) = a.dim();
+    if !(size_m.is_finite() && size_m > 0.0) {
+        return Err(errors::input(
+            py,
+            "size",
+            &asperity::error::fmt_value(size_m),
+            "a length > 0 in metres (the map's x side)",
+        ));
+    }
+    let values: Vec<f64> = a.iter().copied().collect();
+    errors::guard(py, || Surface::new(nx, ny, size_m / nx as f64, values))
+}
+
+/// The heights of `s` as a numpy array of shape (n_y, n_x).
+pub fn heights_of<'py>(py: Python<'py>, s: &Surface) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let rows: Vec<Vec<f64>> = s.heights.chunks(s.nx).map(<[f64]>::to_vec).collect();
+    PyArray2::from_vec2(py, &rows).map_err(|e| pyo3::exceptions::PyValueError::new_err(e.to_string()))
+}
+
+/// `read_surface(path, size=None, height_unit=None)`: the map as a dict (`heights` (n_y, n_x)
+/// in m, `size_m` the x side, `spacing_m`).
+#[pyfunction]
+#[pyo3(signature = (path, size = None, height_unit = None))]
+pub fn read_surface<'py>(
+    py: Python<'py>,
+    path: std::path::PathBuf,
+    size: Option<f64>,
+    height_unit: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let unit = match height_unit {
+        None => None,
+        Some(u) => Some(Unit::parse(u).ok_or_else(|| errors::input(py, "height_unit", u, "m, mm, um, nm or pm"))?),
+    };
+    if let Some(l) = size {
+        if !(l.is_finite() && l > 0.0) {
+            return Err(errors::input(
+                py,
+                "size",
+                &asperity::error::fmt_value(l),
+                "a length > 0 in metres",
+            ));
+        }
+    }
+    let opts = ReadOptions {
+        size,
+        height_unit: unit,
+    };
+    let s = py.detach(|| readers::read(&path, &opts));
+    let s = s.map_err(|e| errors::to_py(py, e))?;
+    let d = PyDict::new(py);
+    d.set_item("heights", heights_of(py, &s)?)?;
+    d.set_item("size_m", s.size_x())?;
+    d.set_item("spacing_m", s.spacing)?;
+    d.set_item("source", path.display().to_string())?;
+    Ok(d)
+}
+
+/// The keys of `asperity psd --format json` for the analysis `a` of `s`.
+fn output<'py>(
+    py: Python<'py>,
+    file: &str,
+    s: &Surface,
+    a: &PsdAnalysis,
+    elapsed: f64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let two_pi = 2.0 * std::f64::consts::PI;
+    let f = a.fit.as_ref();
+    let d = PyDict::new(py);
+    d.set_item("file", file)?;
+    d.set_item("points", vec![s.nx, s.ny])?;
+    d.set_item("system_size_m", s.size_x())?;
+    d.set_item("rms_height_m", a.rms_height)?;
+    d.set_item("rms_gradient", a.rms_gradient)?;
+    d.set_item("rms_curvature", a.rms_curvature)?;
+    d.set_item("hurst", f.map(|f| f.hurst))?;
+    d.set_item("hurst_error", f.map(|f| f.hurst_error))?;
+    d.set_item("rolloff_wavelength_m", f.map(|f| two_pi / f.q_r))?;
+    d.set_item(
+        "rolloff_wavelength_range_m",
+        f.map(|f| vec![two_pi / f.q_r_high, two_pi / f.q_r_low]),
+    )?;
+    d.set_item("short_wavelength_m", f.map(|f| two_pi / f.q_s))?;
+    d.set_item(
+        "short_wavelength_range_m",
+        f.map(|f| vec![two_pi / f.q_s_high, two_pi / f.q_s]),
+    )?;
+    d.set_item(
+        "self_affine",
+        f.is_some_and(|f| (HURST_RANGE.0..=HURST_RANGE.1).contains(&f.hurst)),
+    )?;
+    d.set_item("line_scan", a.line_scan)?;
+    d.set_item("window", a.window)?;
+    d.set_item("detrend", a.detrend)?;
+    d.set_item("elapsed_s", elapsed)?;
+    d.set_item("table", value::ser(py, &a.bins)?)?;
+    Ok(d)
+}
+
+/// `psd(heights, size_m, periodic, bins_per_decade)`: the PSD of a map (module docs).
+#[pyfunction]
+#[pyo3(name = "psd", signature = (heights, size_m, periodic = false, bins_per_decade = 10.0, source = "heights".to_string()))]
+pub fn map_psd<'py>(
+    py: Python<'py>,
+    heights: PyReadonlyArray2<'py, f64>,
+    size_m: f64,
+    periodic: bool,
+    bins_per_decade: f64,
+    source: String,
+) -> PyResult<Bound<'py, PyDict>> {
+    let s = map_of(py, &heights, size_m)?;
+    let (lo, hi) = psd::BINS_PER_DECADE_RANGE;
+    if !(lo..=hi).contains(&bins_per_decade) {
+        return Err(errors::input(
+            py,
+            "bins_per_decade",
+            &asperity::error::fmt_value(bins_per_decade),
+            &format!("{lo} <= bins_per_decade <= {hi}"),
+        ));
+    }
+    let opts = PsdOptions {
+        periodic,
+        bins_per_decade,
+    };
+    let t0 = std::time::Instant::now();
+    let a = py.detach(|| std::panic::catch_unwind(|| psd::analyse(&s, &opts)));
+    let a = match a {
+        Ok(r) => r.map_err(|e| errors::to_py(py, e))?,
+        Err(p) => return Err(errors::panic(py, p)),
+    };
+    output(py, &source, &s, &a, t0.elapsed().as_secs_f64())
+}

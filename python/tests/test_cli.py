@@ -1,0 +1,80 @@
+"""The Python package against the CLI's JSON for the same scene, key by key (timings aside), to
+PYTHON_CLI_REL: `evaluate` against `asperity run`, `sweep` against `asperity sweep`, `gfmd`
+against `asperity gfmd`, `psd` against `asperity psd` (both call the same library functions)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import asperity
+from conftest import compare, tolerance
+
+REL = tolerance("PYTHON_CLI_REL")
+
+
+@pytest.mark.parametrize(
+    "preset,flags,changes",
+    [
+        ("system-1", [], {}),
+        ("system-1", ["--model", "1", "--pressure", "0.05"], {"model": 1, "pressure": 0.05}),
+        ("system-2", [], {}),
+        ("system-2", ["--thickness", "0.5", "--pressure", "0.003"], {"thickness_qr": 0.5, "pressure": 0.003}),
+        ("system-2", ["--model", "3", "--gamma", "0.05"], {"model": "3", "surface_energy_j_m2": 0.05}),
+    ],
+)
+def test_evaluate_equals_run(cli, preset, flags, changes):
+    scene = asperity.Scene.preset(preset).replace(**changes)
+    py = asperity.evaluate(scene).to_dict()
+    ref = cli("run", "--preset", preset, "--format", "json", *flags)
+    assert set(py) >= set(ref)
+    assert compare(py, ref, REL) == []
+
+
+def test_pressure_sweep_equals_cli(cli):
+    scene = asperity.Scene.preset("system-2").replace(thickness_qr=1.0)
+    ps = np.geomspace(1e-3, 0.05, 6)
+    py = asperity.sweep(scene, ps).to_dict()
+    ref = cli("sweep", "--preset", "system-2", "--thickness", "1", "--from", "1e-3", "--to", "0.05", "--points", "6", "--format", "json")
+    assert compare(py, ref, REL) == []
+
+
+def test_thickness_sweep_equals_cli(cli):
+    scene = asperity.Scene.preset("system-2")
+    ts = np.geomspace(0.1, 10.0, 4)
+    py = asperity.sweep_thickness(scene, ts).to_dict()
+    ref = cli("sweep", "--preset", "system-2", "--over", "thickness", "--from", "0.1", "--to", "10", "--points", "4", "--format", "json")
+    assert compare(py, ref, REL) == []
+
+
+def test_gfmd_equals_cli(cli):
+    scene = asperity.Scene.preset("system-1").replace(pressure=0.05)
+    py = asperity.gfmd(scene, grid=32)
+    ref = cli("gfmd", "--preset", "system-1", "--pressure", "0.05", "--grid", "32", "--format", "json")
+    assert compare(py.to_dict(), ref, REL) == []
+    assert py.heights.shape == (32, 32)
+
+
+def test_gfmd_on_a_map_equals_cli(cli, tmp_path: Path):
+    scene = asperity.Scene.preset("system-1").replace(pressure=0.05)
+    gen = asperity.gfmd(scene, grid=32)
+    path = tmp_path / "map.npy"
+    np.save(path, gen.heights)
+    size = gen.system_size_m
+    py = asperity.gfmd(scene, gen.heights, size)
+    ref = cli("gfmd", "--preset", "system-1", "--pressure", "0.05", "--surface", str(path), "--size", repr(size), "--format", "json")
+    assert compare(py.to_dict(), ref, REL) == []
+
+
+def test_psd_equals_cli(cli, tmp_path: Path):
+    scene = asperity.Scene.preset("system-1")
+    h = asperity.gfmd(scene.replace(pressure=0.05), grid=32).heights
+    path = tmp_path / "map.npy"
+    np.save(path, h)
+    py = asperity.psd(h, 1e-4).to_dict()
+    ref = cli("psd", str(path), "--size", "1e-4", "--format", "json")
+    ref.pop("file")
+    assert compare(py, ref, REL) == []

@@ -1,0 +1,134 @@
+"""The theory through Python against closed forms and its own invariants."""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import asperity
+from conftest import REPO, tolerance
+
+
+@pytest.mark.parametrize("p", [1e-4, 0.01, 0.1, 0.5])
+def test_model1_half_space_is_erf_sqrt2_p(p):
+    """With W = f = 1 the stress variance at q_s is (E*ḡ/2)², so a_r = erf(√2 p*) [S-22]."""
+    scene = asperity.Scene.preset("system-1").replace(model=1, surface_energy_j_m2=0.0, thickness_qr=math.inf, pressure=p)
+    r = asperity.evaluate(scene)
+    assert abs(r.a_r / math.erf(math.sqrt(2.0) * p) - 1.0) < tolerance("MODEL1_ERF_REL")
+
+
+def test_report_fields_and_arrays():
+    r = asperity.evaluate(asperity.Scene.preset("system-2"))
+    assert isinstance(r.pr.sigma, np.ndarray) and isinstance(r.pr.density, np.ndarray)
+    assert r.pr.sigma.shape == r.pr.density.shape == (201,)
+    # ∫Pr dσ* = a_r (trapezoid on the report's own grid)
+    area = float(np.sum(0.5 * (r.pr.density[1:] + r.pr.density[:-1]) * np.diff(r.pr.sigma)))
+    assert abs(area / r.a_r - 1.0) < tolerance("ADHESIVE_PR_INTEGRAL_REL")
+    lo, hi = r.gap_bracket
+    assert lo <= r.mean_gap_rel <= hi
+    assert r.elapsed_s >= r.elapsed_solve_s >= 0.0
+    assert json.loads(json.dumps(r.to_dict())) == r.to_dict()
+    assert r.branches and r.branches[0].a_r >= 0.0
+
+
+def test_replace_returns_a_validated_copy():
+    s = asperity.Scene.preset("system-2")
+    t = s.replace(thickness_qr=0.3, pressure=1e-3)
+    assert (t.thickness_qr, t.pressure) == (0.3, 1e-3)
+    assert s.thickness_qr == math.inf and s.pressure == 0.005
+    assert s.replace(thickness_qr="inf").thickness_qr == math.inf
+    assert s.replace() == s
+    c = s.replace(c1=0.5)
+    assert c.model == "custom" and c.fields()["c1"] == 0.5
+
+
+def test_keyword_scene_equals_the_preset():
+    kw = asperity.Scene(
+        system_size_m=25.6e-6,
+        rolloff_wavelength_m=12.8e-6,
+        short_wavelength_m=0.1e-6,
+        hurst=0.8,
+        rms_gradient=1.0,
+        contact_modulus_pa=25e6,
+        surface_energy_j_m2=0.157,
+        range_m=14.2e-9,
+        pressure=0.005,
+        model=4,
+    )
+    a = asperity.evaluate(kw).to_dict()
+    b = asperity.evaluate(asperity.Scene.preset("system-2")).to_dict()
+    for k in ("a_r", "mean_contact_stress", "contact_stress_variance", "mean_gap_rel"):
+        assert a[k] == b[k]
+
+
+def test_sweep_arrays_and_branches():
+    s = asperity.Scene.preset("system-1").replace(surface_energy_j_m2=0.0)
+    sw = asperity.sweep(s, np.geomspace(1e-3, 0.1, 5))
+    assert len(sw) == 5 and sw.a_r.shape == (5,)
+    assert np.all(np.diff(sw.a_r) > 0) and np.all(np.diff(sw.mean_gap_rel) < 0)
+    np.testing.assert_allclose(sw.values, np.geomspace(1e-3, 0.1, 5), rtol=1e-12)
+    assert sw.reasons == [None] * 5
+    # an uneven list: one sweep per value, each row the same as the single-value sweep's
+    odd = asperity.sweep(s, [1e-3, 2e-3, 0.1])
+    one = asperity.sweep(s, [2e-3])
+    assert odd.a_r[1] == one.a_r[0]
+    # the adhesive slab: both branches as columns
+    a = asperity.sweep(asperity.Scene.preset("system-2").replace(thickness_qr=0.1), np.geomspace(1e-4, 1e-2, 5))
+    assert a.a_r_unloading.shape == (5,) and a.branches.shape == (5,)
+
+
+def test_knob_sweeps():
+    s = asperity.Scene.preset("system-2").replace(surface_energy_j_m2=0.0)
+    t = asperity.sweep_thickness(s, [0.1, 1.0, 10.0])
+    assert np.all(np.diff(t.a_r) < 0)  # thinner slabs give way: more contact
+    g = asperity.sweep_gamma(asperity.Scene.preset("system-2"), np.linspace(0.0, 0.1, 3))
+    assert g.gamma.tolist() == [0.0, 0.05, 0.1]
+    assert asperity.sweep(s, [0.1, 1.0], over="thickness").to_dict()["over"] == "thickness"
+
+
+def test_gauge_eq18():
+    g = asperity.gauge(asperity.Scene.preset("system-1"), ["c1", "c2"], "eq18", from_=1e-3, to=0.3, points=6)
+    d = g.to_dict()
+    assert d["reference"] == "eq18" and len(d["params"]) == 2
+    assert d["chi2"] >= 0.0
+
+
+def test_results_do_not_depend_on_threads():
+    code = (
+        "import asperity, json; s = asperity.Scene.preset('system-2').replace(thickness_qr=0.5);"
+        "r = asperity.evaluate(s).to_dict(); print(json.dumps({k: r[k] for k in "
+        "('a_r', 'mean_contact_stress', 'mean_gap_rel', 'pr')}))"
+    )
+    outs = []
+    for n in ("1", "2"):
+        env = dict(os.environ, RAYON_NUM_THREADS=n)
+        outs.append(subprocess.run([sys.executable, "-c", code], env=env, check=True, capture_output=True, text=True).stdout)
+    assert outs[0] == outs[1]
+
+
+def test_gauge_on_columns_equals_gauge_on_the_same_csv(tmp_path):
+    ps = np.geomspace(1e-3, 0.3, 6)
+    a_r = np.array([asperity.evaluate(asperity.Scene.preset("system-1").replace(surface_energy_j_m2=0.0, pressure=float(p))).a_r for p in ps])
+    cols = {"p": ps, "a_r": a_r * 1.05}
+    path = tmp_path / "ref.csv"
+    path.write_text("p,a_r\n" + "".join(f"{float(p)!r},{float(a)!r}\n" for p, a in zip(ps, cols["a_r"])))
+    s = asperity.Scene.preset("system-1").replace(surface_energy_j_m2=0.0)
+    a = asperity.gauge(s, "c1", cols).to_dict()
+    b = asperity.gauge(s, ["c1"], path).to_dict()
+    assert a["params"][0]["value"] == b["params"][0]["value"]
+    assert b["reference"] == "ref.csv"
+
+
+def test_sweep_takes_its_values_once():
+    s = asperity.Scene.preset("system-1")
+    with pytest.raises(TypeError):
+        asperity.sweep(s)
+    with pytest.raises(TypeError):
+        asperity.sweep(s, [0.01], values=[0.02])
+    assert asperity.sweep(s, values=[0.01]).p.tolist() == [0.01]
