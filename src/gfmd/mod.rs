@@ -49,6 +49,7 @@
 //! [`Error::Cancelled`](crate::error::Error::Cancelled) within one step, and the theory within
 //! one march of its adhesive solver.
 
+pub mod distributed;
 pub mod fire;
 pub mod grid;
 pub mod ladder;
