@@ -9,6 +9,7 @@ pub mod figure;
 pub mod gauge;
 pub mod gauge_gfmd;
 pub mod gfmd;
+pub mod gfmd_mpi;
 
 use asperity::error::Field;
 use asperity::error::{Error, Result};
