@@ -148,10 +148,13 @@ fn a_load_sweep_over_ranks_equals_the_serial_sweep_bit_for_bit() {
     };
     for adh in [false, true] {
         let s = setup("system-2", 64, 0.01, adh, f64::INFINITY);
-        let mut serial = serde_json::to_value(gfmd::sweep::run_sweep(&s, &spec, &opts, &mut |_, _| {}, &no).unwrap()).unwrap();
+        let mut serial =
+            serde_json::to_value(gfmd::sweep::run_sweep(&s, &spec, &opts, &mut |_, _| {}, &no).unwrap()).unwrap();
         serial.as_object_mut().unwrap().remove("elapsed_s");
         for ranks in [2, 3] {
-            let got = ThreadComm::run(ranks, |c| run_sweep_slab(c, &s, &spec, &opts, &mut |_, _| {}, &no).unwrap());
+            let got = ThreadComm::run(ranks, |c| {
+                run_sweep_slab(c, &s, &spec, &opts, &mut |_, _| {}, &no).unwrap()
+            });
             let mut v = serde_json::to_value(&got[0]).unwrap();
             v.as_object_mut().unwrap().remove("elapsed_s");
             assert_eq!(v, serial, "adhesive {adh} on {ranks} ranks");

@@ -52,7 +52,9 @@ mod distributed {
             (
                 "--save-surface",
                 args.save_surface.is_some(),
-                args.save_surface.as_ref().map_or(String::new(), |p| p.display().to_string()),
+                args.save_surface
+                    .as_ref()
+                    .map_or(String::new(), |p| p.display().to_string()),
             ),
         ] {
             if on {
@@ -64,7 +66,7 @@ mod distributed {
             }
         }
         let (setup, opts) = setup(args)?;
-        if root && setup.scene.gamma == 0.0 && args.method == MethodArg::Auto {
+        if root && setup.scene.surface_energy_j_m2() == 0.0 && args.method == MethodArg::Auto {
             eprintln!(
                 "asperity gfmd: note: on {} ranks the hard wall relaxes with FIRE (Polonsky-Keer is not distributed)",
                 comm.size()

@@ -92,7 +92,7 @@ pub fn generate(comm: &dyn Comm, spec: &SelfAffine, n: usize, seed: u64) -> Resu
             i as i64 - n as i64
         }
     };
-    let mine = |i: usize| i >= y0 && i < y1;
+    let mine = |i: usize| (y0..y1).contains(&i);
     let mut rng = SplitMix64::new(seed);
     let mut ht = vec![Complex64::new(0.0, 0.0); (y1 - y0) * n];
     let mut g2 = 0.0;

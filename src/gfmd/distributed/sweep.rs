@@ -19,12 +19,13 @@ pub fn energy_slab(comm: &dyn Comm, problem: &SlabProblem<'_>, sol: &Solution) -
     let n = problem.slab.nodes() as f64;
     let w: Vec<f64> = sol.gap.iter().zip(h).map(|(g, h)| g + h).collect();
     let wbar = chain_sum(comm, w.iter().copied()) / n;
-    let el = 0.5
-        * chain_sum(
+    let el =
+        0.5 * chain_sum(
             comm,
-            w.iter().zip(&sol.stress).map(|(w, s)| (w - wbar) * (s - problem.pressure)),
-        )
-        / n;
+            w.iter()
+                .zip(&sol.stress)
+                .map(|(w, s)| (w - wbar) * (s - problem.pressure)),
+        ) / n;
     let inter = if problem.gamma > 0.0 {
         -problem.gamma * chain_sum(comm, sol.gap.iter().map(|g| (-g / problem.range).exp())) / n
     } else {
@@ -54,8 +55,23 @@ pub fn run_loads_slab(
     let nodes = prep.slab.nodes();
     for (k, &p) in spec.pressures().iter().enumerate() {
         let problem = prep.problem(p);
-        let sol = solve_slab(comm, &problem, opts, start.as_deref(), &mut |pr| progress(k, pr), cancel)?;
-        let m = measure_slab(comm, &sol, opts, nodes, problem.modulus, prep.rms_gradient, prep.rms_height);
+        let sol = solve_slab(
+            comm,
+            &problem,
+            opts,
+            start.as_deref(),
+            &mut |pr| progress(k, pr),
+            cancel,
+        )?;
+        let m = measure_slab(
+            comm,
+            &sol,
+            opts,
+            nodes,
+            problem.modulus,
+            prep.rms_gradient,
+            prep.rms_height,
+        );
         iterations += sol.iterations;
         rows.push(GfmdSweepRow {
             p,

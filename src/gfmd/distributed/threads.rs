@@ -19,27 +19,20 @@ impl ThreadComm {
     /// The `size` ends of a new world (give each to its own thread).
     pub fn world(size: usize) -> Vec<ThreadComm> {
         assert!(size >= 1, "ThreadComm: at least one rank");
-        // chan[from][to]
-        let mut senders: Vec<Vec<Option<Sender<Vec<f64>>>>> =
-            (0..size).map(|_| (0..size).map(|_| None).collect()).collect();
-        let mut receivers: Vec<Vec<Option<Receiver<Vec<f64>>>>> =
-            (0..size).map(|_| (0..size).map(|_| None).collect()).collect();
-        for (a, row) in senders.iter_mut().enumerate() {
-            for (b, slot) in row.iter_mut().enumerate() {
+        // one channel per ordered pair (a → b)
+        let mut to: Vec<Vec<Sender<Vec<f64>>>> = (0..size).map(|_| Vec::with_capacity(size)).collect();
+        let mut from: Vec<Vec<Receiver<Vec<f64>>>> = (0..size).map(|_| Vec::with_capacity(size)).collect();
+        for row in to.iter_mut() {
+            for inbox in from.iter_mut() {
                 let (tx, rx) = channel();
-                *slot = Some(tx);
-                receivers[b][a] = Some(rx);
+                row.push(tx);
+                inbox.push(rx);
             }
         }
-        senders
-            .into_iter()
-            .zip(receivers)
+        to.into_iter()
+            .zip(from)
             .enumerate()
-            .map(|(rank, (to, from))| ThreadComm {
-                rank,
-                to: to.into_iter().map(|s| s.expect("built")).collect(),
-                from: from.into_iter().map(|r| r.expect("built")).collect(),
-            })
+            .map(|(rank, (to, from))| ThreadComm { rank, to, from })
             .collect()
     }
 
