@@ -45,21 +45,21 @@ use std::time::Instant;
 /// fewest steps on system I/II test grids, 1.0 about 10 % more, 1.9 several times more).
 pub const DT_MAX: f64 = 1.3;
 /// FIRE: steps with positive power before dt grows and α shrinks (Bitzek N_min).
-const N_DELAY: usize = 5;
+pub(crate) const N_DELAY: usize = 5;
 /// FIRE: dt growth factor.
-const F_INC: f64 = 1.1;
+pub(crate) const F_INC: f64 = 1.1;
 /// FIRE: dt shrink factor after an uphill step.
-const F_DEC: f64 = 0.5;
+pub(crate) const F_DEC: f64 = 0.5;
 /// FIRE: initial mixing α.
-const ALPHA_START: f64 = 0.1;
+pub(crate) const ALPHA_START: f64 = 0.1;
 /// FIRE: α decay factor.
-const F_ALPHA: f64 = 0.99;
+pub(crate) const F_ALPHA: f64 = 0.99;
 /// Beyond g/ρ = this the attraction is dropped (e^{−40} ≈ 4e-18).
-const EXP_CUTOFF: f64 = 40.0;
+pub(crate) const EXP_CUTOFF: f64 = 40.0;
 /// Node-loop chunk (fixed, so that partial sums are added in the same order every run).
-const CHUNK: usize = 4096;
+pub(crate) const CHUNK: usize = 4096;
 /// Grids with at least this many nodes run their node loops on rayon.
-const PARALLEL_MIN_NODES: usize = 1 << 15;
+pub(crate) const PARALLEL_MIN_NODES: usize = 1 << 15;
 /// Polonsky–Keer stops when the gap on the contact set and the overlap elsewhere are below
 /// this × tolerance × h_rms; FIRE then checks the force residual.
 pub const PK_GAP_TOL: f64 = 0.1;

@@ -51,6 +51,7 @@
 //! one march of its adhesive solver.
 
 pub mod cycle;
+pub mod distributed;
 pub mod fire;
 pub mod grid;
 pub mod ladder;

@@ -120,38 +120,7 @@ pub struct Problem<'a> {
 impl Problem<'_> {
     /// Checks every field.
     pub fn validate(&self) -> Result<()> {
-        if !(self.modulus.is_finite() && self.modulus > 0.0) {
-            return Err(Error::invalid(
-                Field::ContactModulus,
-                self.modulus,
-                "a finite modulus > 0 (Pa)",
-            ));
-        }
-        if self.thickness.is_nan() || self.thickness <= 0.0 {
-            return Err(Error::invalid(
-                Field::Thickness,
-                self.thickness,
-                "a thickness t > 0 (m), or inf",
-            ));
-        }
-        let tension_allowed = self.gamma > 0.0;
-        if !(self.pressure.is_finite() && (self.pressure > 0.0 || tension_allowed)) {
-            return Err(Error::invalid(
-                Field::PressurePa,
-                self.pressure,
-                if tension_allowed {
-                    "a finite pressure (Pa)"
-                } else {
-                    "a finite pressure p > 0 (Pa); tension needs adhesion"
-                },
-            ));
-        }
-        if !(self.gamma.is_finite() && self.gamma >= 0.0) {
-            return Err(Error::invalid(Field::SurfaceEnergy, self.gamma, "gamma >= 0 (J/m^2)"));
-        }
-        if self.gamma > 0.0 && !(self.range.is_finite() && self.range > 0.0) {
-            return Err(Error::invalid(Field::Range, self.range, "a finite length > 0 (m)"));
-        }
+        check_loads(self.modulus, self.thickness, self.pressure, self.gamma, self.range)?;
         if self.surface.heights.iter().all(|&h| h == self.surface.heights[0]) {
             return Err(Error::invalid_text(
                 Field::HeightMap,
@@ -161,6 +130,44 @@ impl Problem<'_> {
         }
         Ok(())
     }
+}
+
+/// Checks the fields of a [`Problem`] other than the map: E*, t, p₀, γ and ρ.
+pub fn check_loads(modulus: f64, thickness: f64, pressure: f64, gamma: f64, range: f64) -> Result<()> {
+    if !(modulus.is_finite() && modulus > 0.0) {
+        return Err(Error::invalid(
+            Field::ContactModulus,
+            modulus,
+            "a finite modulus > 0 (Pa)",
+        ));
+    }
+    if thickness.is_nan() || thickness <= 0.0 {
+        return Err(Error::invalid(
+            Field::Thickness,
+            thickness,
+            "a thickness t > 0 (m), or inf",
+        ));
+    }
+    // tension (p ≤ 0) is held by adhesion alone: allowed only with it (the load cycle)
+    let tension_allowed = gamma > 0.0;
+    if !(pressure.is_finite() && (pressure > 0.0 || tension_allowed)) {
+        return Err(Error::invalid(
+            Field::PressurePa,
+            pressure,
+            if tension_allowed {
+                "a finite pressure (Pa)"
+            } else {
+                "a finite pressure p > 0 (Pa); tension needs adhesion"
+            },
+        ));
+    }
+    if !(gamma.is_finite() && gamma >= 0.0) {
+        return Err(Error::invalid(Field::SurfaceEnergy, gamma, "gamma >= 0 (J/m^2)"));
+    }
+    if gamma > 0.0 && !(range.is_finite() && range > 0.0) {
+        return Err(Error::invalid(Field::Range, range, "a finite length > 0 (m)"));
+    }
+    Ok(())
 }
 
 /// What a run is doing when it reports progress.

@@ -219,18 +219,27 @@ pub fn reduce(full: &Scene, grid: &GridSpec, rescale: bool) -> Result<(Scene, Re
 /// # Errors
 /// Those of the map's discrete spectrum (a non-square map).
 pub fn check_map(red: &mut Reduction, scene: &Scene, map: &crate::surface::heightmap::Surface, q_r: f64) -> Result<()> {
+    let d = map.discrete_spectrum(q_r)?;
+    check_map_moments(red, scene, map.rms_height(), map.rms_gradient(), d);
+    Ok(())
+}
+
+/// [`check_map`] from the map's h_rms (m), ḡ and discrete spectrum (for a map that no one
+/// process holds whole: [`super::distributed`]).
+pub fn check_map_moments(
+    red: &mut Reduction,
+    scene: &Scene,
+    rms_height: f64,
+    rms_gradient: f64,
+    spectrum: crate::surface::spectrum::Discrete,
+) {
     let discrete = Scene {
-        spectrum: Spectrum::Discrete(map.discrete_spectrum(q_r)?),
+        spectrum: Spectrum::Discrete(spectrum),
         ..scene.clone()
     };
     for (key, cont, got, unit) in [
-        ("map_rms_height", scene.spectrum.rms_height(), map.rms_height(), " m"),
-        (
-            "map_rms_gradient",
-            scene.spectrum.rms_gradient(),
-            map.rms_gradient(),
-            "",
-        ),
+        ("map_rms_height", scene.spectrum.rms_height(), rms_height, " m"),
+        ("map_rms_gradient", scene.spectrum.rms_gradient(), rms_gradient, ""),
         (
             "map_full_contact_energy",
             scene.full_contact_energy(),
@@ -248,7 +257,6 @@ pub fn check_map(red: &mut Reduction, scene: &Scene, map: &crate::surface::heigh
             ));
         }
     }
-    Ok(())
 }
 
 #[cfg(test)]

@@ -154,33 +154,7 @@ pub fn run(
     });
     // theory on the same realisation
     let t_theory = Instant::now();
-    let (theory, theory_error) = match prep.theory_scene(scene.pressure).and_then(|th| {
-        // the block shows a_r, the stresses and ū, not the adhesive error estimate: its
-        // three probe solves are skipped
-        let opts = engine::Options {
-            adhesion_error_estimate: false,
-            ..engine::Options::default()
-        };
-        let ev = engine::evaluate_warm(&th, &opts, None, Some(cancel))?;
-        let g = gap::mean_gap_of_cancellable(&th, &ev, &opts, Some(cancel));
-        if matches!(g, Err(Error::Cancelled)) {
-            return Err(Error::Cancelled);
-        }
-        Ok((ev, g))
-    }) {
-        Err(Error::Cancelled) => return Err(Error::Cancelled),
-        Ok((ev, g)) => (
-            Some(TheoryComparison {
-                stats: ev.stats,
-                width: ev.width,
-                model: scene.model.label(),
-                mean_gap: g.as_ref().ok().map(|g| g.metres),
-                mean_gap_rel: g.as_ref().ok().map(|g| g.relative),
-            }),
-            None,
-        ),
-        Err(e) => (None, Some(e.to_string())),
-    };
+    let (theory, theory_error) = theory_comparison(prep.theory_scene(scene.pressure), scene, cancel)?;
     let grid_spec = setup.surface.is_none().then_some(setup.grid);
     let theory_elapsed_s = t_theory.elapsed().as_secs_f64();
     Ok(GfmdResult {
@@ -308,4 +282,45 @@ pub fn prepare(setup: &GfmdSetup) -> Result<Prepared> {
             })
         }
     }
+}
+
+/// The theory beside GFMD: the scene `th` on the map's spectrum evaluated (a_r, the stresses,
+/// ū), or the reason it could not be (`scene` gives the model label).
+///
+/// # Errors
+/// Only [`Error::Cancelled`]; every other failure is the returned reason.
+pub fn theory_comparison(
+    th: Result<Scene>,
+    scene: &Scene,
+    cancel: &AtomicBool,
+) -> Result<(Option<TheoryComparison>, Option<String>)> {
+    Ok(
+        match th.and_then(|th| {
+            // the block shows a_r, the stresses and ū, not the adhesive error estimate: its
+            // three probe solves are skipped
+            let opts = engine::Options {
+                adhesion_error_estimate: false,
+                ..engine::Options::default()
+            };
+            let ev = engine::evaluate_warm(&th, &opts, None, Some(cancel))?;
+            let g = gap::mean_gap_of_cancellable(&th, &ev, &opts, Some(cancel));
+            if matches!(g, Err(Error::Cancelled)) {
+                return Err(Error::Cancelled);
+            }
+            Ok((ev, g))
+        }) {
+            Err(Error::Cancelled) => return Err(Error::Cancelled),
+            Ok((ev, g)) => (
+                Some(TheoryComparison {
+                    stats: ev.stats,
+                    width: ev.width,
+                    model: scene.model.label(),
+                    mean_gap: g.as_ref().ok().map(|g| g.metres),
+                    mean_gap_rel: g.as_ref().ok().map(|g| g.relative),
+                }),
+                None,
+            ),
+            Err(e) => (None, Some(e.to_string())),
+        },
+    )
 }

@@ -234,6 +234,12 @@ impl Discrete {
                 *by_k2.entry(k2).or_insert(0.0) += c.norm_sqr();
             }
         }
+        Discrete::from_mode_sums(by_k2, system_size, q_r)
+    }
+
+    /// The spectrum from Σ|h̃|² per |k|² = m_x² + m_y² (integer wave vectors of an N×N map of side
+    /// `system_size`, k = 0 excluded), as [`Discrete::from_height_map`] groups them.
+    pub fn from_mode_sums(by_k2: std::collections::BTreeMap<i64, f64>, system_size: f64, q_r: f64) -> Result<Self> {
         let ql = 2.0 * PI / system_size;
         // drop FFT round-off (|h̃|² at ~1e-32 of the total is numerical zero)
         let total: f64 = by_k2.values().sum();

@@ -215,6 +215,9 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
 
 /// Runs `asperity gfmd`.
 pub fn run(args: &GfmdArgs) -> Result<()> {
+    if let Some(on_ranks) = super::gfmd_mpi::on_ranks(args) {
+        return on_ranks;
+    }
     let (setup, opts) = setup(args)?;
     let cancel = AtomicBool::new(false);
     let tty = std::io::stderr().is_terminal();
@@ -463,7 +466,8 @@ pub fn reduction_table(r: &Reduction) -> String {
     t
 }
 
-fn table(o: &GfmdResult) -> String {
+/// The human-readable table of one run.
+pub fn table(o: &GfmdResult) -> String {
     let mut t = String::new();
     let mut line = |k: &str, v: String| t.push_str(&format!("{k:<28}{v}\n"));
     line(

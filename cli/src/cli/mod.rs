@@ -11,6 +11,7 @@ pub mod gauge_gfmd;
 pub mod gfmd;
 pub mod gfmd_csv;
 pub mod gfmd_cycle;
+pub mod gfmd_mpi;
 
 use asperity::error::Field;
 use asperity::error::{Error, Result};

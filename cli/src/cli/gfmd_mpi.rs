@@ -1,0 +1,101 @@
+//! `mpirun -np N asperity gfmd …` (feature `mpi`): the run or load sweep on N MPI ranks
+//! ([`asperity::gfmd::distributed`]), rank 0 printing what the serial run prints.
+//!
+//! Built without the feature, or started as one process, `gfmd` runs serially as always. On
+//! N > 1 ranks: single runs and load sweeps (`--from/--to`), generated or `--surface` maps,
+//! every output format; `--extrapolate`, `--seeds K > 1` and `--save-surface` run on one
+//! process only (no rank holds the map). The hard wall relaxes with FIRE on ranks
+//! (Polonsky–Keer is not distributed): the output equals the serial `--method fire` run, and
+//! with adhesion the serial run whatever the method.
+
+use super::gfmd::GfmdArgs;
+use asperity::error::Result;
+
+/// Runs `gfmd` on the MPI ranks when there are several: `Some(result)` (rank 0's; the other
+/// ranks print nothing and return Ok), `None` to run serially.
+#[cfg(not(feature = "mpi"))]
+pub fn on_ranks(_args: &GfmdArgs) -> Option<Result<()>> {
+    None
+}
+
+/// Runs `gfmd` on the MPI ranks when there are several: `Some(result)` (rank 0's; the other
+/// ranks print nothing and return Ok), `None` to run serially.
+#[cfg(feature = "mpi")]
+pub fn on_ranks(args: &GfmdArgs) -> Option<Result<()>> {
+    use asperity::gfmd::distributed::mpi_comm::MpiComm;
+    use asperity::gfmd::distributed::Comm;
+    let comm = MpiComm::init()?;
+    if comm.size() == 1 {
+        return None;
+    }
+    let root = comm.rank() == 0;
+    let result = distributed::run(&comm, args);
+    // MPI is finalised here, before the process exits
+    drop(comm);
+    Some(if root { result } else { Ok(()) })
+}
+
+#[cfg(feature = "mpi")]
+mod distributed {
+    use super::super::emit;
+    use super::super::gfmd::{setup, single_csv, sweep_csv, table, GfmdArgs, GfmdFormat, MethodArg};
+    use asperity::error::{Error, Result};
+    use asperity::gfmd::distributed::{run_slab, run_sweep_slab, Comm};
+    use asperity::theory::sweep::SweepSpec;
+    use std::sync::atomic::AtomicBool;
+
+    pub fn run(comm: &dyn Comm, args: &GfmdArgs) -> Result<()> {
+        let root = comm.rank() == 0;
+        for (flag, on, value) in [
+            ("--extrapolate", args.extrapolate, "set".to_string()),
+            ("--seeds", args.seeds > 1, args.seeds.to_string()),
+            (
+                "--save-surface",
+                args.save_surface.is_some(),
+                args.save_surface
+                    .as_ref()
+                    .map_or(String::new(), |p| p.display().to_string()),
+            ),
+        ] {
+            if on {
+                return Err(Error::field(
+                    flag,
+                    value,
+                    format!("unset on {} MPI ranks (it runs on one process)", comm.size()),
+                ));
+            }
+        }
+        let (setup, opts) = setup(args)?;
+        if root && setup.scene.surface_energy_j_m2() == 0.0 && args.method == MethodArg::Auto {
+            eprintln!(
+                "asperity gfmd: note: on {} ranks the hard wall relaxes with FIRE (Polonsky-Keer is not distributed)",
+                comm.size()
+            );
+        }
+        let cancel = AtomicBool::new(false);
+        if let (Some(from), Some(to)) = (args.from, args.to) {
+            let spec = SweepSpec {
+                from,
+                to,
+                points: args.points,
+            };
+            let sw = run_sweep_slab(comm, &setup, &spec, &opts, &mut |_, _| {}, &cancel)?;
+            if root {
+                match args.format {
+                    GfmdFormat::Json => emit(&serde_json::to_string_pretty(&sw).expect("serialisable")),
+                    GfmdFormat::Table | GfmdFormat::Csv => emit(&sweep_csv(&sw)),
+                }
+            }
+            return Ok(());
+        }
+        let out = run_slab(comm, &setup, &opts, &mut |_| {}, &cancel)?;
+        if root {
+            match args.format {
+                GfmdFormat::Json => emit(&serde_json::to_string_pretty(&out).expect("serialisable")),
+                GfmdFormat::Table => emit(&table(&out)),
+                GfmdFormat::Csv => emit(&single_csv(&out)),
+            }
+        }
+        Ok(())
+    }
+}

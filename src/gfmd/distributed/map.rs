@@ -1,0 +1,258 @@
+//! The height map by slabs: every rank generates only its rows, and the map's moments (h_rms,
+//! ḡ, the discrete spectrum for the theory) are computed without any rank holding the map.
+//!
+//! Generation is [`heightmap::generate`]'s Fourier filtering ([`crate::surface::heightmap`]
+//! module docs) step for step: every rank walks the modes in the serial order and draws the
+//! same SplitMix64 numbers (a draw costs a few integer operations), keeping the modes of its
+//! rows and the conjugates that land in them; the rescaling to the target ḡ uses the same
+//! ordered sum (it depends on the amplitudes only, not on the random phases); the inverse 2-D
+//! transform is the serial one's row and column transforms with an all-to-all transpose in
+//! between ([`super::slab_fft`]). The slab equals the serial map's rows bit for bit.
+
+use super::comm::{chain_fold, chain_fold_var, chain_sum, share, Comm};
+use super::slab_fft::{transpose_cols_to_rows, transpose_rows_to_cols, SlabFft};
+use crate::error::{Error, Field, Result};
+use crate::surface::heightmap::{wave_number_sq, SplitMix64, MAX_GRID};
+use crate::surface::spectrum::{Discrete, SelfAffine};
+use rustfft::num_complex::Complex64;
+use std::collections::BTreeMap;
+use std::f64::consts::PI;
+
+/// Rows [y₀, y₁) of an nx × ny periodic height map (metres, row-major).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Slab {
+    /// Points per row.
+    pub nx: usize,
+    /// Rows of the whole map.
+    pub ny: usize,
+    /// Lattice spacing Δa (m).
+    pub spacing: f64,
+    /// First row held.
+    pub y0: usize,
+    /// One past the last row held.
+    pub y1: usize,
+    /// Heights of rows y₀..y₁ (m), `heights[(y − y₀)·nx + x]`.
+    pub heights: Vec<f64>,
+}
+
+impl Slab {
+    /// Rows `[y0, y1)` of a whole map (to hand a loaded map to the ranks).
+    pub fn of_map(s: &crate::surface::heightmap::Surface, y0: usize, y1: usize) -> Slab {
+        Slab {
+            nx: s.nx,
+            ny: s.ny,
+            spacing: s.spacing,
+            y0,
+            y1,
+            heights: s.heights[y0 * s.nx..y1 * s.nx].to_vec(),
+        }
+    }
+    /// Global index of the first node held.
+    pub fn offset(&self) -> usize {
+        self.y0 * self.nx
+    }
+    /// Number of nodes of the whole map.
+    pub fn nodes(&self) -> usize {
+        self.nx * self.ny
+    }
+}
+
+/// This rank's rows of [`heightmap::generate`]`(spec, n, seed)`, bit for bit (module docs).
+///
+/// # Errors
+/// As [`heightmap::generate`].
+///
+/// [`heightmap::generate`]: crate::surface::heightmap::generate
+pub fn generate(comm: &dyn Comm, spec: &SelfAffine, n: usize, seed: u64) -> Result<Slab> {
+    let l = spec.system_size;
+    if !(4..=MAX_GRID).contains(&n) {
+        return Err(Error::invalid(Field::Grid, n as f64, format!("4 <= N <= {MAX_GRID}")));
+    }
+    let da = l / n as f64;
+    if spec.lambda_s < 2.0 * da * (1.0 - 1e-12) {
+        return Err(Error::invalid(
+            Field::Grid,
+            n as f64,
+            format!(
+                "N >= 2 L/lambda_s = {} (at least two points per short wavelength)",
+                (2.0 * l / spec.lambda_s).ceil()
+            ),
+        ));
+    }
+    let size = comm.size();
+    let rows: Vec<_> = (0..size).map(|r| share(n, size, r)).collect();
+    let (y0, y1) = rows[comm.rank()];
+    let area = l * l;
+    let qs = spec.q_s();
+    let ql = 2.0 * PI / l;
+    let wrap = |i: usize| -> i64 {
+        if i <= n / 2 {
+            i as i64
+        } else {
+            i as i64 - n as i64
+        }
+    };
+    let mine = |i: usize| (y0..y1).contains(&i);
+    let mut rng = SplitMix64::new(seed);
+    let mut ht = vec![Complex64::new(0.0, 0.0); (y1 - y0) * n];
+    let mut g2 = 0.0;
+    for i in 0..n {
+        for j in 0..n {
+            let (ci, cj) = ((n - i) % n, (n - j) % n);
+            let (k, ck) = (i * n + j, ci * n + cj);
+            if ck < k {
+                continue;
+            }
+            let (mi, mj) = (wrap(i) as f64, wrap(j) as f64);
+            let q = ql * (mi * mi + mj * mj).sqrt();
+            if q == 0.0 || q > qs * (1.0 + 1e-12) {
+                continue;
+            }
+            let amp = (spec.psd(q.min(qs)) * (2.0 * PI).powi(2) / area).sqrt();
+            if ck == k {
+                let sign = if rng.next_u64() >> 63 == 0 { 1.0 } else { -1.0 };
+                if mine(i) {
+                    ht[(i - y0) * n + j] = Complex64::new(sign * amp, 0.0);
+                }
+                g2 += q * q * amp * amp;
+            } else {
+                let phase = 2.0 * PI * rng.next_f64();
+                let c = Complex64::from_polar(amp, phase);
+                if mine(i) {
+                    ht[(i - y0) * n + j] = c;
+                }
+                if mine(ci) {
+                    ht[(ci - y0) * n + cj] = c.conj();
+                }
+                g2 += 2.0 * q * q * amp * amp;
+            }
+        }
+    }
+    if g2 == 0.0 {
+        return Err(Error::invalid(
+            Field::Grid,
+            n as f64,
+            "a grid resolving at least one mode below q_s",
+        ));
+    }
+    let scale = spec.moment(2).sqrt() / g2.sqrt();
+    for c in ht.iter_mut() {
+        *c *= scale;
+    }
+    complex_transform(comm, &mut ht, n, &rows, true);
+    let heights: Vec<f64> = ht.iter().map(|c| c.re).collect();
+    let bad = heights.iter().any(|h| !h.is_finite()) as usize;
+    if super::comm::all_sum_counts(comm, &[bad])[0] > 0 {
+        return Err(Error::invalid_text(
+            Field::HeightMap,
+            "a non-finite height",
+            "finite heights",
+        ));
+    }
+    Ok(Slab {
+        nx: n,
+        ny: n,
+        spacing: da,
+        y0,
+        y1,
+        heights,
+    })
+}
+
+/// The unnormalised complex 2-D transform of an n × n array held by rows (`rows[rank]`):
+/// [`crate::numerics::fft2::transform`]'s row and column transforms, distributed.
+fn complex_transform(comm: &dyn Comm, data: &mut [Complex64], n: usize, rows: &[(usize, usize)], inverse: bool) {
+    let mut planner = rustfft::FftPlanner::<f64>::new();
+    let fft = if inverse {
+        planner.plan_fft_inverse(n)
+    } else {
+        planner.plan_fft_forward(n)
+    };
+    let size = comm.size();
+    let cols: Vec<_> = (0..size).map(|r| share(n, size, r)).collect();
+    let (c0, c1) = cols[comm.rank()];
+    fft.process(data);
+    let mut colsbuf = vec![Complex64::new(0.0, 0.0); (c1 - c0) * n];
+    let (mut s, mut r) = (Vec::new(), Vec::new());
+    transpose_rows_to_cols(comm, data, n, n, rows, &cols, &mut s, &mut r, &mut colsbuf);
+    fft.process(&mut colsbuf);
+    transpose_cols_to_rows(comm, &colsbuf, n, n, rows, &cols, &mut s, &mut r, data);
+}
+
+/// h_rms about the mean (m): [`Surface::rms_height`] of the whole map, bit for bit.
+///
+/// [`Surface::rms_height`]: crate::surface::heightmap::Surface::rms_height
+pub fn rms_height(comm: &dyn Comm, s: &Slab) -> f64 {
+    let n = s.nodes() as f64;
+    let mean = chain_sum(comm, s.heights.iter().copied()) / n;
+    (chain_sum(comm, s.heights.iter().map(|h| (h - mean).powi(2))) / n).sqrt()
+}
+
+/// Discrete rms gradient ḡ: [`Surface::rms_gradient`] of the whole map, bit for bit (the
+/// serial sum runs over kx outer, ky inner: after the transpose each rank holds a run of kx).
+///
+/// [`Surface::rms_gradient`]: crate::surface::heightmap::Surface::rms_gradient
+pub fn rms_gradient(comm: &dyn Comm, fft: &mut SlabFft, s: &Slab) -> f64 {
+    let mut spec = vec![Complex64::new(0.0, 0.0); fft.local_spectrum_len()];
+    fft.forward(comm, &s.heights, &mut spec);
+    let (nx, ny) = (s.nx, s.ny);
+    let norm = 1.0 / (nx * ny) as f64;
+    let (c0, c1) = fft.my_cols();
+    let weight = |kx: usize| {
+        if kx == 0 || (nx.is_multiple_of(2) && kx == nx / 2) {
+            1.0
+        } else {
+            2.0
+        }
+    };
+    let total = chain_fold(comm, vec![0.0], &mut |st| {
+        for kx in c0..c1 {
+            for ky in 0..ny {
+                let q2 = wave_number_sq(kx, ky, nx, ny, s.spacing);
+                st[0] += weight(kx) * q2 * (spec[(kx - c0) * ny + ky] * norm).norm_sqr();
+            }
+        }
+    });
+    total[0].sqrt()
+}
+
+/// The discrete spectrum of the (square) map: [`Discrete::from_height_map`] of the whole
+/// map, bit for bit: the full complex transform by slabs, then Σ|h̃|² per |k|² added in the
+/// serial (row-major) order by passing the partial sums from rank to rank. Every rank gets it.
+///
+/// # Errors
+/// As [`Discrete::from_height_map`] (a flat map).
+pub fn discrete_spectrum(comm: &dyn Comm, s: &Slab, q_r: f64) -> Result<Discrete> {
+    let n = s.nx;
+    let size = comm.size();
+    let rows: Vec<_> = (0..size).map(|r| share(n, size, r)).collect();
+    let mut data: Vec<Complex64> = s.heights.iter().map(|&x| Complex64::new(x, 0.0)).collect();
+    complex_transform(comm, &mut data, n, &rows, false);
+    let norm = 1.0 / (n * n) as f64;
+    let wrap = |i: usize| -> i64 {
+        if i <= n / 2 {
+            i as i64
+        } else {
+            i as i64 - n as i64
+        }
+    };
+    // the state: (k², Σ) pairs of the bins met so far, ascending in k²
+    let flat = chain_fold_var(comm, Vec::new(), &mut |st| {
+        let mut by_k2: BTreeMap<i64, f64> = st.chunks(2).map(|p| (p[0] as i64, p[1])).collect();
+        for i in s.y0..s.y1 {
+            let mi = wrap(i);
+            for j in 0..n {
+                let mj = wrap(j);
+                let k2 = mi * mi + mj * mj;
+                if k2 == 0 {
+                    continue;
+                }
+                let c = data[(i - s.y0) * n + j] * norm;
+                *by_k2.entry(k2).or_insert(0.0) += c.norm_sqr();
+            }
+        }
+        *st = by_k2.into_iter().flat_map(|(k, v)| [k as f64, v]).collect();
+    });
+    let by_k2: BTreeMap<i64, f64> = flat.chunks(2).map(|p| (p[0] as i64, p[1])).collect();
+    Discrete::from_mode_sums(by_k2, s.nx as f64 * s.spacing, q_r)
+}
