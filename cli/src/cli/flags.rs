@@ -162,6 +162,7 @@ pub fn table() -> Vec<Flag> {
         row("--method", Choice, ""),
         row("--raw-adhesion", Switch, ""),
         row("--extrapolate", Switch, ""),
+        row("--cycle", Switch, ""),
         row("--ladder", Ladder, "lambda_s/da"),
         row("--seeds", CountIn(1, super::gfmd::MAX_SEEDS), ""),
         only(&["gfmd", "gauge", "compare"], "--from", Number(Field::Pressure), "E* g"),

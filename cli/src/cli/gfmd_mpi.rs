@@ -4,7 +4,8 @@
 //! Built without the feature, or started as one process, `gfmd` runs serially as always. On
 //! N > 1 ranks: single runs and load sweeps (`--from/--to`), generated or `--surface` maps,
 //! every output format; `--extrapolate`, `--seeds K > 1` and `--save-surface` run on one
-//! process only (no rank holds the map). The hard wall relaxes with FIRE on ranks
+//! process only (no rank holds the map), and so do the load cycle (`--cycle`) and a sweep
+//! downwards (`--to` below `--from`). The hard wall relaxes with FIRE on ranks
 //! (Polonsky–Keer is not distributed): the output equals the serial `--method fire` run, and
 //! with adhesion the serial run whatever the method.
 
@@ -49,6 +50,7 @@ mod distributed {
         for (flag, on, value) in [
             ("--extrapolate", args.extrapolate, "set".to_string()),
             ("--seeds", args.seeds > 1, args.seeds.to_string()),
+            ("--cycle", args.cycle, "set".to_string()),
             (
                 "--save-surface",
                 args.save_surface.is_some(),
@@ -62,6 +64,18 @@ mod distributed {
                     flag,
                     value,
                     format!("unset on {} MPI ranks (it runs on one process)", comm.size()),
+                ));
+            }
+        }
+        if let (Some(from), Some(to)) = (args.from, args.to) {
+            if to < from {
+                return Err(Error::field(
+                    "--to",
+                    to,
+                    format!(
+                        "at least --from on {} MPI ranks (unloading runs on one process)",
+                        comm.size()
+                    ),
                 ));
             }
         }
