@@ -236,3 +236,32 @@ fn polonsky_keer_on_a_slab_is_refused_before_any_step() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("--method = pk on a slab") && err.contains("fire"), "{err}");
 }
+
+#[test]
+fn a_long_psd_table_is_resampled_once_with_a_line_saying_so() {
+    use asperity::surface::spectrum::Spectrum;
+    let dir = scratch("table");
+    let scene = asperity::input::preset::Preset::resolve("system-1")
+        .unwrap()
+        .scene()
+        .unwrap();
+    let Spectrum::SelfAffine(sa) = scene.spectrum().clone() else {
+        panic!("system-1 is self-affine")
+    };
+    let mut a_r = Vec::new();
+    for rows in [1_000, 20_000] {
+        let (q, c) = common::ideal_table(&sa, rows);
+        let path = dir.join(format!("t{rows}.csv"));
+        std::fs::write(&path, asperity::surface::tabulated::to_csv(&q, &c)).unwrap();
+        let p = path.to_str().unwrap();
+        let out = asperity(&["run", "--preset", "system-1", "--gamma", "0", "--psd", p]);
+        let err = stderr_of(&out);
+        assert!(out.status.success(), "{err}");
+        assert_eq!(err.contains("resampled once"), rows > 4096, "{rows} rows: {err}");
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        a_r.push(v["a_r"].as_f64().unwrap());
+    }
+    let rel = (a_r[1] / a_r[0] - 1.0).abs();
+    assert!(rel < asperity::tolerances::RESAMPLED_TABLE_REL, "{a_r:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

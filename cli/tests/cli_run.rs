@@ -104,7 +104,7 @@ fn bad_flags_give_one_line_errors() {
         (&["run", "--pressure", "nan"], "--pressure = nan"),
         (&["run", "--pressure", "-0.1"], "--pressure = -0.1"),
         (&["run", "--model", "9"], "--model = 9"),
-        (&["run", "--preset", "nope"], "known presets"),
+        (&["run", "--preset", "nope"], "--preset = nope"),
         (&["run", "--gamma", "0", "--model", "custom", "--c1", "2"], "--c1/--c2"),
     ];
     for (args, needle) in cases {

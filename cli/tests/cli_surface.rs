@@ -182,7 +182,10 @@ fn bad_surface_input_is_one_line_and_exit_2() {
         ),
         (vec!["run", "--psd", csv.as_str()], "row 2: psd = -1"),
         (vec!["run", "--psd", MAP], "has no columns named q and psd"),
-        (vec!["psd", "tests/fixtures/none.npy", "--size", "1e-6"], "cannot read"),
+        (
+            vec!["psd", "tests/fixtures/none.npy", "--size", "1e-6"],
+            "file = tests/fixtures/none.npy",
+        ),
         (vec!["psd", MAP, "--bins-per-decade", "0"], "--bins-per-decade"),
         (vec!["run", "--size", "1e-6"], "missing --surface"),
         (vec!["gfmd", "--psd", csv.as_str()], "none for gfmd"),

@@ -378,7 +378,7 @@ fn tui_and_tour_flags_are_validated_like_run() {
     );
     let out = Command::new(BIN).args(["tour", "no-such-tour"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("known tours: wang-muser"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("tour = no-such-tour: allowed wang-muser"));
     let out = Command::new(BIN).args(["tour", "--list"]).output().unwrap();
     assert!(out.status.success());
     assert!(String::from_utf8_lossy(&out.stdout).contains("wang-muser"));

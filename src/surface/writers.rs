@@ -18,7 +18,7 @@ pub fn write(s: &Surface, path: &Path) -> Result<()> {
     std::fs::write(path, bytes).map_err(|e| Error::io_file("write", "surface", path, &e))
 }
 
-/// The bytes of a map in `format` (see [`write`]).
+/// The bytes of a map in `format` (see [`write()`]).
 ///
 /// # Errors
 /// [`Error::Io`] if the NumPy encoder fails.

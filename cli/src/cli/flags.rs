@@ -350,9 +350,10 @@ fn writable(dir: &Path) -> bool {
 }
 
 fn check_fit(s: &str) -> Result<(), String> {
-    asperity::fit::Param::parse_list(s)
-        .map(|_| ())
-        .map_err(|_| "a comma-separated list of c1, c2, alpha, k_griffith, w0".into())
+    asperity::fit::Param::parse_list(s).map(|_| ()).map_err(|e| match e {
+        asperity::error::Error::Invalid { allowed, .. } => allowed.describe("fit"),
+        e => e.to_string(),
+    })
 }
 
 /// A built-in or local name among `names`, or a file that exists.
@@ -409,8 +410,11 @@ fn check_models(s: &str) -> Result<(), String> {
     let mut any = false;
     for t in s.split(',').map(str::trim).filter(|t| !t.is_empty()) {
         match t.parse::<asperity::input::model::ModelKind>() {
-            Ok(k) if k != asperity::input::model::ModelKind::Custom => any = true,
-            _ => return Err(allowed.into()),
+            Ok(asperity::input::model::ModelKind::Custom) => {
+                return Err(format!("{allowed} (a custom model comes in with --fitted PRESET)"))
+            }
+            Ok(_) => any = true,
+            Err(_) => return Err(allowed.into()),
         }
     }
     if any {

@@ -111,7 +111,7 @@ pub fn resolve(
         seeds: args.seeds.unwrap_or(1),
         ladder: args.extrapolate.then(|| args.ladder.clone()),
     };
-    refuse_pk_on_slab(args.method.unwrap_or(MethodArg::Auto), scene)?;
+    parse::refuse_pk_on_slab(args.method == Some(MethodArg::Pk), scene)?;
     let opts = GfmdOptions {
         method: match args.method.unwrap_or(MethodArg::Auto) {
             MethodArg::Auto => Method::Auto,
@@ -208,22 +208,4 @@ pub fn table(g: &GfmdReference) -> String {
         );
     }
     t + "\n"
-}
-
-/// `--method pk` on a slab, refused before any step: Polonsky–Keer's CG does not reach the
-/// tolerance on a finite-thickness body (residual 0.2–0.98 after every step of the limit),
-/// where FIRE (`auto` picks it there) converges in a few hundred steps.
-///
-/// # Errors
-/// [`Error::Invalid`] naming `--method` for `pk` when the scene's t·q_r is finite.
-pub fn refuse_pk_on_slab(method: MethodArg, scene: &asperity::input::scene::Scene) -> Result<()> {
-    let t = scene.thickness_qr();
-    if method == MethodArg::Pk && t.is_finite() {
-        return Err(Error::invalid_text(
-            Field::Other("--method".into()),
-            format!("pk on a slab (t·q_r = {})", asperity::error::fmt_value(t)),
-            "auto or fire on a slab (Polonsky-Keer converges on a semi-infinite body only)",
-        ));
-    }
-    Ok(())
 }

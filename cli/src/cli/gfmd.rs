@@ -167,7 +167,7 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
         ..GfmdOptions::default()
     };
     opts.validate()?;
-    super::gauge_gfmd::refuse_pk_on_slab(args.method, &scene)?;
+    super::parse::refuse_pk_on_slab(args.method == MethodArg::Pk, &scene)?;
     if !(1..=MAX_SEEDS).contains(&args.seeds) {
         return Err(Error::invalid(
             Field::Seeds,

@@ -268,3 +268,21 @@ pub fn step(s: &str) -> std::result::Result<i64, String> {
         _ => Err("a whole number 1 <= step <= the tour's number of steps".into()),
     }
 }
+
+/// `--method pk` on a slab, refused before any step: Polonsky–Keer's CG does not reach the
+/// tolerance on a finite-thickness body (residual 0.2–0.98 after every step of the limit),
+/// where FIRE (`auto` picks it there) converges in a few hundred steps.
+///
+/// # Errors
+/// [`Error::Invalid`] naming `--method` for `pk` (`pk` true) when the scene's t·q_r is finite.
+pub fn refuse_pk_on_slab(pk: bool, scene: &asperity::input::scene::Scene) -> asperity::error::Result<()> {
+    let t = scene.thickness_qr();
+    if pk && t.is_finite() {
+        return Err(Error::invalid_text(
+            Field::Other("--method".into()),
+            format!("pk on a slab (t·q_r = {})", asperity::error::fmt_value(t)),
+            "auto or fire on a slab (Polonsky-Keer converges on a semi-infinite body only)",
+        ));
+    }
+    Ok(())
+}
