@@ -153,9 +153,12 @@ fn gfmd_blames_the_map_not_the_pressure() {
         &["gfmd", "--grid", "32", "--extrapolate", "--ladder", "1,8"],
         &["--ladder = 1", "<= lambda_s/da"],
     );
+    // a sweep downwards unloads (gfmd --cycle); a cycle must turn above its start
     fails(
-        &["gfmd", "--grid", "32", "--from", "0.1", "--to", "0.01", "--points", "3"],
-        &["--to = 0.01"],
+        &[
+            "gfmd", "--grid", "32", "--from", "0.1", "--to", "0.01", "--points", "3", "--cycle",
+        ],
+        &["--to = 0.01", "turning load"],
     );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -214,10 +214,8 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
 }
 
 /// Runs `asperity gfmd`.
+/// On several MPI ranks the caller runs [`super::gfmd_mpi::on_ranks`] instead.
 pub fn run(args: &GfmdArgs) -> Result<()> {
-    if let Some(on_ranks) = super::gfmd_mpi::on_ranks(args) {
-        return on_ranks;
-    }
     let (setup, opts) = setup(args)?;
     let cancel = AtomicBool::new(false);
     let tty = std::io::stderr().is_terminal();

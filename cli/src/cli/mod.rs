@@ -348,7 +348,8 @@ fn run_cli() -> i32 {
             drop(beat);
             text.map(|text| emit(&text))
         }
-        Some(Command::Gfmd(args)) => gfmd::run(&args),
+        // on several MPI ranks (feature mpi) the distributed run, else the serial one
+        Some(Command::Gfmd(args)) => gfmd_mpi::on_ranks(&args).unwrap_or_else(|| gfmd::run(&args)),
         Some(Command::Figure(args)) => figure::run(&args),
         Some(Command::Gauge(args)) => gauge::run(&args),
         Some(Command::Compare(args)) => gauge::compare(&args),
