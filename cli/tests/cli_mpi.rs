@@ -87,19 +87,15 @@ fn gfmd_on_mpi_ranks_prints_the_serial_json() {
             "--method", "fire",
         ],
     ];
-    let ranks: &[usize] = match std::env::var("ASPERITY_MPI_RANKS") {
-        // CI runs `-np 2` only
-        Ok(s) => &*Box::leak(
-            s.split(',')
-                .map(|x| x.trim().parse().expect("ranks"))
-                .collect::<Vec<usize>>(),
-        ),
-        Err(_) => &[1, 2, 4],
+    // CI runs `-np 2` only (ASPERITY_MPI_RANKS=2)
+    let ranks: Vec<usize> = match std::env::var("ASPERITY_MPI_RANKS") {
+        Ok(s) => s.split(',').map(|x| x.trim().parse().expect("ranks")).collect(),
+        Err(_) => vec![1, 2, 4],
     };
     for args in cases {
         let serial = run(None, args);
         assert!(serial.get("grid").and_then(|g| g.as_u64()) == Some(64), "{serial}");
-        for &np in ranks {
+        for &np in &ranks {
             assert_eq!(run(Some(np), args), serial, "{np} ranks: {args:?}");
         }
     }

@@ -3,7 +3,7 @@
 //! the serial order ([`super::comm::chain_fold`]).
 //!
 //! The serial solver adds the per-node terms of F², σ², F·v and v² within fixed chunks of
-//! [`CHUNK`] nodes (global index order) and then the chunk sums in order. Here each rank splits
+//! 4096 nodes (global index order) and then the chunk sums in order. Here each rank splits
 //! its node range at the same global chunk boundaries and sums its pieces in parallel; the
 //! fold then passes (total, open chunk's partial) from rank to rank: a piece that starts inside
 //! a chunk continues the partial it received (its terms added in node order), a piece that
@@ -293,7 +293,6 @@ pub fn solve_slab(
     }
     let omega = (phi_max + adh_stress * inv_range).sqrt();
     let dt_max = DT_MAX / omega;
-    let dt_min = 0.02 * dt_max;
     let spec_len = fft.local_spectrum_len();
     let mut st = State {
         comm,
@@ -313,6 +312,39 @@ pub fn solve_slab(
         pieces: pieces(s.offset(), nl),
         parallel: nl >= PARALLEL_MIN_NODES,
     };
+    let (it, residual) = relax(&mut st, opts, dt_max, progress, cancel)?;
+    let gap: Vec<f64> = st.w.iter().zip(&st.h).map(|(w, h)| (w - h).max(0.0) * da).collect();
+    let stress: Vec<f64> = st.conv.iter().map(|c| (st.p0 + c) * e).collect();
+    let on_wall: Vec<bool> = st.w.iter().zip(&st.h).map(|(w, h)| w <= h).collect();
+    let walls = all_sum_counts(comm, &[on_wall.iter().filter(|&&b| b).count()])[0];
+    progress(Progress {
+        stage: Stage::Relax,
+        iteration: it,
+        residual,
+        contact_fraction: walls as f64 / n as f64,
+    });
+    Ok(Solution {
+        gap,
+        stress,
+        on_wall,
+        iterations: it,
+        pk_iterations: 0,
+        residual,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// The FIRE iterations from the state's start (see [`crate::gfmd::fire`]): the step count and
+/// the final residual.
+fn relax(
+    st: &mut State<'_>,
+    opts: &GfmdOptions,
+    dt_max: f64,
+    progress: &mut dyn FnMut(Progress),
+    cancel: &AtomicBool,
+) -> Result<(usize, f64)> {
+    let n = st.n;
+    let dt_min = 0.02 * dt_max;
     let mut dt = 0.5 * dt_max;
     let mut alpha = ALPHA_START;
     let mut n_pos = 0usize;
@@ -369,25 +401,7 @@ pub fn solve_slab(
         st.advance(dt, alpha, ff.sqrt(), vv);
         it += 1;
     }
-    let gap: Vec<f64> = st.w.iter().zip(&st.h).map(|(w, h)| (w - h).max(0.0) * da).collect();
-    let stress: Vec<f64> = st.conv.iter().map(|c| (st.p0 + c) * e).collect();
-    let on_wall: Vec<bool> = st.w.iter().zip(&st.h).map(|(w, h)| w <= h).collect();
-    let walls = all_sum_counts(comm, &[on_wall.iter().filter(|&&b| b).count()])[0];
-    progress(Progress {
-        stage: Stage::Relax,
-        iteration: it,
-        residual,
-        contact_fraction: walls as f64 / n as f64,
-    });
-    Ok(Solution {
-        gap,
-        stress,
-        on_wall,
-        iterations: it,
-        pk_iterations: 0,
-        residual,
-        elapsed_s: t0.elapsed().as_secs_f64(),
-    })
+    Ok((it, residual))
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! The height map by slabs: every rank generates only its rows, and the map's moments (h_rms,
 //! ḡ, the discrete spectrum for the theory) are computed without any rank holding the map.
 //!
-//! Generation is [`heightmap::generate`]'s Fourier filtering ([`crate::surface::heightmap`]
+//! Generation is [`crate::surface::heightmap::generate`]'s Fourier filtering ([`crate::surface::heightmap`]
 //! module docs) step for step: every rank walks the modes in the serial order and draws the
 //! same SplitMix64 numbers (a draw costs a few integer operations), keeping the modes of its
 //! rows and the conjugates that land in them; the rescaling to the target ḡ uses the same
