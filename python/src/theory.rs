@@ -113,17 +113,26 @@ struct Row {
     a_r_eq18: Option<f64>,
     thickness_qr: Option<f64>,
     gamma: f64,
+    trust_inside: bool,
+    trust_a_r_log_error: f64,
 }
 
 impl Row {
-    fn new(row: SweepRow, thickness_qr: f64, gamma: f64) -> Row {
+    /// The row of `row` for `scene` at the row's load, with the trust read-out
+    /// ([`asperity::fit::trust`]), as the CLI's.
+    fn new(row: SweepRow, scene: &asperity::input::scene::Scene) -> Row {
+        let (thickness_qr, gamma) = (scene.thickness_qr(), scene.surface_energy_j_m2());
         let eq18 = (gamma == 0.0 && thickness_qr.is_infinite()).then(|| eq18_area(row.p));
+        let at = scene.clone().with_pressure(row.p).unwrap_or_else(|_| scene.clone());
+        let trust = asperity::fit::trust::assess(&at);
         Row {
             row,
             a_r_over_p: row.a_r / row.p,
             a_r_eq18: eq18,
             thickness_qr: thickness_qr.is_finite().then_some(thickness_qr),
             gamma,
+            trust_inside: trust.inside,
+            trust_a_r_log_error: trust.a_r_log_error,
         }
     }
 }
@@ -238,8 +247,7 @@ fn pressure_sweep(core: &SceneCore, pressures: &[f64], opts: &Options, ctx: &wor
         });
         let sw = sweep::sweep(&scene, sp, opts, Some(&*ctx.cancel))?;
         for r in &sw.rows {
-            out.rows
-                .push(Row::new(*r, scene.thickness_qr(), scene.surface_energy_j_m2()));
+            out.rows.push(Row::new(*r, &scene));
             out.reasons
                 .push((!r.converged).then(|| sw.note.clone().unwrap_or_else(|| "did not converge".into())));
         }
@@ -310,10 +318,7 @@ fn knob_row(pt: &KnobPoint, pressure: f64, unit: f64) -> (Row, Option<String>) {
         }
         Err(e) => reason = Some(e.to_string()),
     }
-    (
-        Row::new(r, pt.scene.thickness_qr(), pt.scene.surface_energy_j_m2()),
-        reason,
-    )
+    (Row::new(r, &pt.scene), reason)
 }
 
 /// The knob sweep of `scene` over `values` of `knob` at the scene's p* (module docs).
