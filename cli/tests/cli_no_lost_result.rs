@@ -1,5 +1,5 @@
-//! No silent or lost result: each case of issue 40 that printed a wrong number, lost a
-//! result or hid why it failed, as a regression test.
+//! No silent or lost result: each case that once printed a wrong number, lost a result or
+//! hid why it failed, as a regression test.
 
 mod common;
 

@@ -25,8 +25,8 @@
 //! same load (contact hysteresis; tested).
 
 use super::fire::{relax_from, Relaxation};
-use super::sweep::{energy, GfmdSweepRow};
-use super::{measure, prepare, GfmdOptions, GfmdSetup, Prepared, Progress, Stage};
+use super::sweep::GfmdSweepRow;
+use super::{prepare, GfmdOptions, GfmdSetup, Prepared, Progress, Stage};
 use crate::error::{Error, Field, Result};
 pub use crate::theory::cycle::PathBranch;
 use crate::theory::engine::Options;
@@ -178,20 +178,8 @@ impl Walker<'_> {
                 return Ok(None);
             }
         };
-        let m = measure(&problem, &sol, self.opts);
         self.iterations += sol.iterations;
-        let row = GfmdSweepRow {
-            p,
-            a_r: m.stats.a_r,
-            mean_gap_rel: m.mean_gap_rel,
-            mean_gap: m.mean_gap,
-            mean_contact_stress: m.stats.mean_contact_stress,
-            elastic_energy: energy(&problem, &sol),
-            converged: true,
-            contact_stress_variance: m.stats.contact_stress_variance,
-            iterations: sol.iterations,
-            residual: sol.residual,
-        };
+        let row = GfmdSweepRow::measured(p, &problem, &sol, self.opts);
         self.gap = Some(sol.gap);
         Ok(Some(row))
     }

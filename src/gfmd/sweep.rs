@@ -67,6 +67,26 @@ pub struct GfmdSweep {
     pub elapsed_s: f64,
 }
 
+impl GfmdSweepRow {
+    /// The row of a contact relaxed at p* = `p` (measured with [`measure()`], the energy with
+    /// [`energy`]).
+    pub fn measured(p: f64, problem: &Problem<'_>, sol: &Solution, opts: &GfmdOptions) -> GfmdSweepRow {
+        let m = measure(problem, sol, opts);
+        GfmdSweepRow {
+            p,
+            a_r: m.stats.a_r,
+            mean_gap_rel: m.mean_gap_rel,
+            mean_gap: m.mean_gap,
+            mean_contact_stress: m.stats.mean_contact_stress,
+            elastic_energy: energy(problem, sol),
+            converged: true,
+            contact_stress_variance: m.stats.contact_stress_variance,
+            iterations: sol.iterations,
+            residual: sol.residual,
+        }
+    }
+}
+
 /// U = ½⟨(w − w̄)(σ − p₀)⟩ + ⟨v(g)⟩ of a relaxed contact (J/m², see the module docs).
 pub fn energy(problem: &Problem<'_>, sol: &Solution) -> f64 {
     let h = &problem.surface.heights;
@@ -174,20 +194,8 @@ pub fn run_loads(
     for (k, &p) in spec.pressures().iter().enumerate() {
         let problem = prep.problem(p);
         let sol = solve_from(&problem, opts, start.as_deref(), &mut |pr| progress(k, pr), cancel)?;
-        let m = measure(&problem, &sol, opts);
         iterations += sol.iterations;
-        rows.push(GfmdSweepRow {
-            p,
-            a_r: m.stats.a_r,
-            mean_gap_rel: m.mean_gap_rel,
-            mean_gap: m.mean_gap,
-            mean_contact_stress: m.stats.mean_contact_stress,
-            elastic_energy: energy(&problem, &sol),
-            converged: true,
-            contact_stress_variance: m.stats.contact_stress_variance,
-            iterations: sol.iterations,
-            residual: sol.residual,
-        });
+        rows.push(GfmdSweepRow::measured(p, &problem, &sol, opts));
         start = Some(sol.gap);
     }
     Ok((prep, rows, iterations))
