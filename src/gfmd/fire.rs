@@ -236,6 +236,37 @@ impl State {
         }
     }
 
+    /// The relaxed configuration in SI units (`units`: Δa in m, E* in Pa; `steps`: the steps
+    /// taken, of which Polonsky–Keer's, and the final residual), after a last progress report.
+    fn solution(
+        &self,
+        (da, e): (f64, f64),
+        (it, pk_steps, residual): (usize, usize, f64),
+        t0: Instant,
+        progress: &mut dyn FnMut(Progress),
+    ) -> Solution {
+        let st = self;
+        let n = st.n;
+        let gap: Vec<f64> = st.w.iter().zip(&st.h).map(|(w, h)| (w - h).max(0.0) * da).collect();
+        let stress: Vec<f64> = st.conv.iter().map(|c| (st.p0 + c) * e).collect();
+        let on_wall: Vec<bool> = st.w.iter().zip(&st.h).map(|(w, h)| w <= h).collect();
+        progress(Progress {
+            stage: Stage::Relax,
+            iteration: it,
+            residual,
+            contact_fraction: on_wall.iter().filter(|&&b| b).count() as f64 / n as f64,
+        });
+        Solution {
+            gap,
+            stress,
+            on_wall,
+            iterations: it,
+            pk_iterations: pk_steps,
+            residual,
+            elapsed_s: t0.elapsed().as_secs_f64(),
+        }
+    }
+
     /// Uphill step: w −= ½ dt v (projected), v = 0.
     fn retreat(&mut self, dt: f64) {
         for i in 0..self.n {
@@ -298,86 +329,23 @@ pub fn relax_from(
     let e = problem.modulus;
     let plan = RealFft2::new(nx, ny);
     let nh = plan.nh();
-    // stiffness in units of E*/Δa
-    let mut phi = vec![0.0; nh * ny];
-    let mut phi_max: f64 = 0.0;
-    for kx in 0..nh {
-        for ky in 0..ny {
-            let q = wave_number_sq(kx, ky, nx, ny, da).sqrt();
-            let p = 0.5 * q * da * slab_factor_at(q, problem.thickness);
-            phi[ky * nh + kx] = p;
-            phi_max = phi_max.max(p);
-        }
-    }
+    let (phi, phi_max) = stiffness(problem, nh);
     let h: Vec<f64> = s.heights.iter().map(|x| x / da).collect();
-    let hmax = h.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
-    let (adh_stress, inv_range) = if problem.gamma > 0.0 {
-        (problem.gamma / (problem.range * e), da / problem.range)
-    } else {
-        (0.0, 0.0)
+    // γ/ρ in E* and 1/ρ in 1/Δa (0 without adhesion)
+    let (adh_stress, inv_range) = match problem.gamma > 0.0 {
+        true => (problem.gamma / (problem.range * e), da / problem.range),
+        false => (0.0, 0.0),
     };
-    let mut w0 = vec![hmax; n];
-    if let Some(g) = start_gap {
-        if g.len() != n || g.iter().any(|x| !x.is_finite()) {
-            return Err(Error::Unsupported(format!(
-                "a start gap needs {n} finite values (got {})",
-                g.len()
-            )));
-        }
-        for i in 0..n {
-            w0[i] = h[i] + (g[i] / da).max(0.0);
-        }
-    }
+    let mut w0 = start_positions(&h, start_gap, da)?;
     let mut pk_steps = 0;
     let mut plan = plan;
     if problem.gamma == 0.0 && opts.method.uses_pk(n, problem.thickness.is_infinite()) {
-        // pressure start: the contact stress of the start (or p₀ everywhere)
-        let p_start = match start_gap {
-            Some(_) => {
-                let mut p0s = vec![0.0; n];
-                let mut spec = vec![Complex64::new(0.0, 0.0); nh * ny];
-                let kern: Vec<f64> = phi.iter().map(|f| f / n as f64).collect();
-                plan.convolve(&w0, &kern, &mut spec, &mut p0s);
-                w0.iter()
-                    .zip(&h)
-                    .zip(&p0s)
-                    .map(|((w, h), c)| {
-                        if w <= h {
-                            (problem.pressure / e + c).max(0.0)
-                        } else {
-                            0.0
-                        }
-                    })
-                    .collect()
-            }
-            None => vec![0.0; n],
+        let start = PkStart {
+            phi: &phi,
+            h: &h,
+            given: start_gap.is_some(),
         };
-        let h_rms = {
-            let m = h.iter().sum::<f64>() / n as f64;
-            (h.iter().map(|x| (x - m).powi(2)).sum::<f64>() / n as f64).sqrt()
-        };
-        let (w, its) = super::pk::relax(
-            &mut plan,
-            &phi,
-            &h,
-            p_start,
-            problem.pressure / e,
-            PK_GAP_TOL * opts.tolerance * h_rms,
-            opts.max_iterations,
-            &mut |it, err, frac| {
-                if it % opts.progress_every.max(1) == 0 {
-                    progress(Progress {
-                        stage: Stage::Relax,
-                        iteration: it,
-                        residual: err / h_rms,
-                        contact_fraction: frac,
-                    })
-                }
-            },
-            cancel,
-        )?;
-        pk_steps = its;
-        w0 = w.iter().zip(&h).map(|(w, h)| w.max(*h)).collect();
+        (w0, pk_steps) = pk_start(problem, opts, &mut plan, &start, w0, progress, cancel)?;
     }
     let omega = (phi_max + adh_stress * inv_range).sqrt();
     let dt_max = DT_MAX / omega;
@@ -432,13 +400,7 @@ pub fn relax_from(
             return Err(Error::Cancelled);
         }
         if it >= opts.max_iterations {
-            return Err(Error::NotConverged {
-                solver: crate::error::Solver::Gfmd,
-                reason: format!(
-                    "relative force residual {r:.3e} > tolerance {:.1e} after {it} steps (max iterations)",
-                    opts.tolerance
-                ),
-            });
+            return Err(out_of_steps(r, opts.tolerance, it));
         }
         let lifting = st.p0 < 0.0
             && sums.wall == 0
@@ -464,22 +426,129 @@ pub fn relax_from(
         st.advance(dt, alpha, sums.ff.sqrt(), vv);
         it += 1;
     }
-    let gap: Vec<f64> = st.w.iter().zip(&st.h).map(|(w, h)| (w - h).max(0.0) * da).collect();
-    let stress: Vec<f64> = st.conv.iter().map(|c| (st.p0 + c) * e).collect();
-    let on_wall: Vec<bool> = st.w.iter().zip(&st.h).map(|(w, h)| w <= h).collect();
-    progress(Progress {
-        stage: Stage::Relax,
-        iteration: it,
-        residual,
-        contact_fraction: on_wall.iter().filter(|&&b| b).count() as f64 / n as f64,
-    });
-    Ok(Relaxation::Equilibrium(Solution {
-        gap,
-        stress,
-        on_wall,
-        iterations: it,
-        pk_iterations: pk_steps,
-        residual,
-        elapsed_s: t0.elapsed().as_secs_f64(),
-    }))
+    Ok(Relaxation::Equilibrium(st.solution(
+        (da, e),
+        (it, pk_steps, residual),
+        t0,
+        progress,
+    )))
+}
+
+/// The stiffness φ(q) = q f(qt)/2 in units of E*/Δa on the half spectrum (nh × ny), and its
+/// largest value.
+fn stiffness(problem: &Problem<'_>, nh: usize) -> (Vec<f64>, f64) {
+    let s = problem.surface;
+    let (nx, ny, da) = (s.nx, s.ny, s.spacing);
+    let mut phi = vec![0.0; nh * ny];
+    let mut phi_max: f64 = 0.0;
+    for kx in 0..nh {
+        for ky in 0..ny {
+            let q = wave_number_sq(kx, ky, nx, ny, da).sqrt();
+            let p = 0.5 * q * da * slab_factor_at(q, problem.thickness);
+            phi[ky * nh + kx] = p;
+            phi_max = phi_max.max(p);
+        }
+    }
+    (phi, phi_max)
+}
+
+/// The body's start (in Δa): the flat body on the highest summit, or the heights plus a given
+/// gap (m, one finite value per node).
+fn start_positions(h: &[f64], start_gap: Option<&[f64]>, da: f64) -> Result<Vec<f64>> {
+    let n = h.len();
+    let hmax = h.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+    let mut w0 = vec![hmax; n];
+    if let Some(g) = start_gap {
+        if g.len() != n || g.iter().any(|x| !x.is_finite()) {
+            return Err(Error::Unsupported(format!(
+                "a start gap needs {n} finite values (got {})",
+                g.len()
+            )));
+        }
+        for i in 0..n {
+            w0[i] = h[i] + (g[i] / da).max(0.0);
+        }
+    }
+    Ok(w0)
+}
+
+/// What the Polonsky–Keer start needs besides the problem: the stiffness, the heights (Δa)
+/// and whether the start was given (then its contact stress starts the pressures).
+struct PkStart<'a> {
+    phi: &'a [f64],
+    h: &'a [f64],
+    given: bool,
+}
+
+/// Relaxes the hard wall with Polonsky–Keer from `w0` (Δa): the positions on or above the
+/// heights and the iterations taken.
+fn pk_start(
+    problem: &Problem<'_>,
+    opts: &GfmdOptions,
+    plan: &mut RealFft2,
+    start: &PkStart<'_>,
+    w0: Vec<f64>,
+    progress: &mut dyn FnMut(Progress),
+    cancel: &AtomicBool,
+) -> Result<(Vec<f64>, usize)> {
+    let (phi, h) = (start.phi, start.h);
+    let n = h.len();
+    let e = problem.modulus;
+    let (nh, ny) = (plan.nh(), problem.surface.ny);
+    // pressure start: the contact stress of the start (or p₀ everywhere)
+    let p_start = match start.given {
+        true => {
+            let mut p0s = vec![0.0; n];
+            let mut spec = vec![Complex64::new(0.0, 0.0); nh * ny];
+            let kern: Vec<f64> = phi.iter().map(|f| f / n as f64).collect();
+            plan.convolve(&w0, &kern, &mut spec, &mut p0s);
+            w0.iter()
+                .zip(h)
+                .zip(&p0s)
+                .map(|((w, h), c)| {
+                    if w <= h {
+                        (problem.pressure / e + c).max(0.0)
+                    } else {
+                        0.0
+                    }
+                })
+                .collect()
+        }
+        false => vec![0.0; n],
+    };
+    let h_rms = {
+        let m = h.iter().sum::<f64>() / n as f64;
+        (h.iter().map(|x| (x - m).powi(2)).sum::<f64>() / n as f64).sqrt()
+    };
+    let (w, its) = super::pk::relax(
+        plan,
+        phi,
+        h,
+        p_start,
+        problem.pressure / e,
+        PK_GAP_TOL * opts.tolerance * h_rms,
+        opts.max_iterations,
+        &mut |it, err, frac| {
+            if it % opts.progress_every.max(1) == 0 {
+                progress(Progress {
+                    stage: Stage::Relax,
+                    iteration: it,
+                    residual: err / h_rms,
+                    contact_fraction: frac,
+                })
+            }
+        },
+        cancel,
+    )?;
+    Ok((w.iter().zip(h).map(|(w, h)| w.max(*h)).collect(), its))
+}
+
+/// The error of a relaxation that used up its steps at residual `r`.
+fn out_of_steps(r: f64, tolerance: f64, it: usize) -> Error {
+    Error::NotConverged {
+        solver: crate::error::Solver::Gfmd,
+        reason: format!(
+            "relative force residual {r:.3e} > tolerance {tolerance:.1e} after {it} steps (max iterations)"
+        ),
+    }
 }
