@@ -89,7 +89,7 @@ mod tests {
         assert!(!allowed(&Field::Grid).unwrap().range().unwrap().contains(4.5));
         assert_eq!(
             allowed(&Field::Model).unwrap().describe("model"),
-            "1, 2, 3, 4, custom, yp08 or xu24"
+            "1, 2, 3, 4, 5, custom, yp08 or xu24"
         );
     }
 }

@@ -44,7 +44,7 @@ const CASES: &[Case] = &[
         &["run"],
         "--model",
         &["7", "-1", "abc", "3.5", ""],
-        "1, 2, 3, 4, custom, yp08 or xu24",
+        "1, 2, 3, 4, 5, custom, yp08 or xu24",
     ),
     (&["run"], "--cap", &["maybe", "-1"], "true, false"),
     (&["run"], "--format", &["xml", "-1"], "json, table"),

@@ -23,6 +23,7 @@ pub mod gfmd_reference;
 pub mod predict;
 pub mod reference;
 pub mod reference_set;
+pub mod set_gauge;
 pub mod trust;
 
 use crate::error::{Error, Field, Result};

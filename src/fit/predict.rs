@@ -55,6 +55,7 @@ fn interpolate_pr(pr: &[(f64, f64)], s: f64) -> f64 {
 pub fn predict(scene: &Scene, model: &Model, reference: &Reference) -> Result<Vec<f64>> {
     let mut s = scene.clone();
     s.model = *model;
+    s.resolve_model();
     let loads = reference.loads();
     let obs = reference.observables();
     let max_sigma = reference

@@ -148,6 +148,9 @@ pub fn assess(scene: &Scene) -> Trust {
             set.gamma_glo_max
         ));
     }
+    if let Some(line) = model_five_bandwidth(scene) {
+        outside.push(line);
+    }
     let mut near: Vec<(f64, &ReferencePoint)> = reference_set()
         .iter()
         .filter(|r| r.branch == PathBranch::Loading && r.p > 0.0 && r.theory_a_r > 0.0 && r.a_r.0 > 0.0)
@@ -199,6 +202,28 @@ pub fn assess(scene: &Scene) -> Trust {
         mean_gap_log_error,
         summary,
     }
+}
+
+/// The bandwidth λ_r/λ_s of the set's grid (256² at L/λ_r = 2, λ_s/Δa = 8).
+pub const SET_BANDWIDTH: f64 = 16.0;
+
+/// Model 5 is gauged on the set's bandwidth; on a self-affine scene whose λ_r/λ_s is more than
+/// 1.5× away from it, one line saying so (physics.md §3.6: there its a_r has been measured to
+/// move by up to 3× from its value at the set's bandwidth, GFMD's by ≤ 25 %).
+fn model_five_bandwidth(scene: &Scene) -> Option<String> {
+    if scene.model().kind != crate::input::model::ModelKind::Five || !scene.is_adhesive() {
+        return None;
+    }
+    let crate::surface::spectrum::Spectrum::SelfAffine(s) = scene.spectrum() else {
+        return None;
+    };
+    let bw = s.lambda_r / s.lambda_s;
+    let off = (bw / SET_BANDWIDTH).ln().abs();
+    (off > 1.5f64.ln()).then(|| {
+        format!(
+            "model 5 was gauged at λ_r/λ_s = {SET_BANDWIDTH:.0}, this scene has {bw:.0}: on thin adhesive slabs its a_r moves by up to 3x with the bandwidth (GFMD's by 25 %), so its gauge does not carry over"
+        )
+    })
 }
 
 fn summary(outside: &[String], model: u8, same: bool, ar: f64, worst: f64, gap: Option<f64>) -> String {

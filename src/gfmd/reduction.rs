@@ -141,6 +141,7 @@ pub fn reduce(full: &Scene, grid: &GridSpec, rescale: bool) -> Result<(Scene, Re
         red.range = full.range * rs;
         red.validate()?;
     }
+    red.resolve_model();
     let fi = Invariants::of(full).expect("self-affine");
     let ri = Invariants::of(&red).expect("self-affine");
     let spacing = red_spec.lambda_s / grid.points_per_short_wavelength;

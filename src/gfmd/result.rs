@@ -233,11 +233,13 @@ impl Prepared {
     /// moments ([`crate::surface::shells`]).
     pub fn theory_scene(&self, pressure: f64) -> Result<Scene> {
         let d = self.surface.discrete_spectrum(self.q_r)?;
-        Ok(Scene {
+        let mut scene = Scene {
             spectrum: Spectrum::Discrete(d.coarse_grained(THEORY_SHELL_LN)),
             pressure,
             ..self.scene.clone()
-        })
+        };
+        scene.resolve_model();
+        Ok(scene)
     }
 }
 

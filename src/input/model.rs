@@ -33,7 +33,7 @@ use crate::error::{fmt_value, Allowed, Error, Field, Range, Result};
 use serde::{Deserialize, Serialize};
 
 /// The model variants by name.
-pub const MODEL_CHOICES: [&str; 7] = ["1", "2", "3", "4", "custom", "yp08", "xu24"];
+pub const MODEL_CHOICES: [&str; 8] = ["1", "2", "3", "4", "5", "custom", "yp08", "xu24"];
 /// Allowed c₁ and c₂ each (W(a) ≥ 0 on [0, 1] is checked on the pair): the paper's models
 /// have |c| ≤ 1; beyond 1000 W spans more orders of magnitude than the broadening resolves.
 pub const C_RANGE: Range = Range::closed(-1e3, 1e3);
@@ -54,6 +54,9 @@ pub enum ModelKind {
     Three,
     /// Model 4: re-tuned for the thin adhesive system II.
     Four,
+    /// Model 5: W(0) and α a function of the scene's γ̃_glo, gauged once on asperity's GFMD
+    /// reference set ([`super::model_five`]); model 3 without adhesion.
+    Five,
     /// Every coefficient set by the user.
     Custom,
     /// Yang & Persson 2008: S = γ_f + (1 − γ_f)a² on the variance increments.
@@ -102,7 +105,7 @@ impl std::hash::Hash for Model {
 impl std::str::FromStr for ModelKind {
     type Err = Error;
 
-    /// `1`–`4`, `custom`, `yp08` or `xu24` (case-insensitive, surrounding blanks ignored).
+    /// `1`–`5`, `custom`, `yp08` or `xu24` (case-insensitive, surrounding blanks ignored).
     ///
     /// # Errors
     /// [`Error::Invalid`] for [`Field::Model`] naming the allowed values.
@@ -112,6 +115,7 @@ impl std::str::FromStr for ModelKind {
             "2" => Ok(ModelKind::Two),
             "3" => Ok(ModelKind::Three),
             "4" => Ok(ModelKind::Four),
+            "5" => Ok(ModelKind::Five),
             "custom" => Ok(ModelKind::Custom),
             "yp08" => Ok(ModelKind::Yp08),
             "xu24" => Ok(ModelKind::Xu24),
@@ -125,16 +129,17 @@ impl std::str::FromStr for ModelKind {
 }
 
 /// The allowed model names, in words.
-pub const MODEL_NAMES: &str = "1, 2, 3, 4, custom, yp08 or xu24";
+pub const MODEL_NAMES: &str = "1, 2, 3, 4, 5, custom, yp08 or xu24";
 
 impl ModelKind {
-    /// The model number 1–4, or `None` for custom and the named variants.
+    /// The model number 1–5, or `None` for custom and the named variants.
     pub fn number(self) -> Option<u8> {
         match self {
             ModelKind::One => Some(1),
             ModelKind::Two => Some(2),
             ModelKind::Three => Some(3),
             ModelKind::Four => Some(4),
+            ModelKind::Five => Some(5),
             ModelKind::Custom | ModelKind::Yp08 | ModelKind::Xu24 => None,
         }
     }
@@ -145,7 +150,7 @@ impl ModelKind {
         matches!(self, ModelKind::Yp08 | ModelKind::Xu24)
     }
 
-    /// The name as `--model` and a preset's `variant` take it: "1".."4", "custom", "yp08",
+    /// The name as `--model` and a preset's `variant` take it: "1".."5", "custom", "yp08",
     /// "xu24".
     pub fn name(self) -> &'static str {
         match self {
@@ -153,6 +158,7 @@ impl ModelKind {
             ModelKind::Two => "2",
             ModelKind::Three => "3",
             ModelKind::Four => "4",
+            ModelKind::Five => "5",
             ModelKind::Custom => "custom",
             ModelKind::Yp08 => "yp08",
             ModelKind::Xu24 => "xu24",
@@ -174,6 +180,15 @@ impl Model {
                 Model::fudge(kind, current.fudge_gamma().unwrap_or(FUDGE_GAMMA_DEFAULT))
             }
             _ => Model::named(kind.number().unwrap_or(3)),
+        }
+    }
+
+    /// This model as a scene of global adhesion `gamma_glo` uses it: model 5's coefficients
+    /// follow γ̃_glo ([`super::model_five`]); every other kind is returned unchanged.
+    pub fn for_scene(&self, gamma_glo: f64) -> Model {
+        match self.kind {
+            ModelKind::Five => super::model_five::GAUGE.model(gamma_glo),
+            _ => *self,
         }
     }
 
@@ -208,11 +223,15 @@ impl Model {
         self.kind.is_fudge_variant().then_some(1.0 - self.c1)
     }
 
-    /// Model 1–4 of \[S\] (model 4 with erratum 2 applied).
+    /// Model 1–4 of \[S\] (model 4 with erratum 2 applied); model 5 at γ̃_glo = 0 (a scene
+    /// sets its coefficients from its own γ̃_glo, [`Model::for_scene`]).
     ///
     /// # Errors
-    /// [`Error::Invalid`] for [`Field::Model`] when `n` is not 1–4.
+    /// [`Error::Invalid`] for [`Field::Model`] when `n` is not 1–5.
     pub fn named(n: u8) -> Result<Model> {
+        if n == 5 {
+            return Ok(super::model_five::GAUGE.model(0.0));
+        }
         let m = match n {
             1 => (ModelKind::One, 0.0, 0.0, 0.5, 1.0, false),
             2 => (ModelKind::Two, 0.55, 0.0, 0.5, 1.0, false),
@@ -334,13 +353,14 @@ impl Model {
             ModelKind::Two => "model 2".into(),
             ModelKind::Three => "model 3".into(),
             ModelKind::Four => "model 4".into(),
+            ModelKind::Five => "model 5".into(),
             ModelKind::Custom => "custom".into(),
             ModelKind::Yp08 => "YP08".into(),
             ModelKind::Xu24 => "Xu24".into(),
         }
     }
 
-    /// The model number 1–4, or `None` for custom and the named variants.
+    /// The model number 1–5, or `None` for custom and the named variants.
     pub fn number(&self) -> Option<u8> {
         self.kind.number()
     }

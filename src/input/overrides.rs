@@ -82,6 +82,7 @@ impl Scene {
             s.spectrum = sp.clone();
         }
         s.validate()?;
+        s.resolve_model();
         Ok(s)
     }
 }

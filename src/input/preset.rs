@@ -84,7 +84,7 @@ impl<'de> Deserialize<'de> for Variant {
         impl serde::de::Visitor<'_> for V {
             type Value = Variant;
             fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str("1, 2, 3, 4 or \"custom\"")
+                f.write_str("1, 2, 3, 4, 5 or \"custom\"")
             }
             fn visit_i64<E: serde::de::Error>(self, v: i64) -> std::result::Result<Variant, E> {
                 Ok(Variant::Number(v))
@@ -108,7 +108,7 @@ pub const MAX_TOML_BYTES: u64 = 1 << 20;
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct ModelSpec {
-    /// 1, 2, 3, 4 or "custom".
+    /// 1, 2, 3, 4, 5 or "custom".
     pub variant: Variant,
     /// Custom c₁.
     pub c1: Option<f64>,
@@ -140,7 +140,7 @@ impl Default for ModelSpec {
 }
 
 impl ModelSpec {
-    /// The `[model]` table that gives `m` back: the number for models 1–4, the name and γ_f
+    /// The `[model]` table that gives `m` back: the number for models 1–5, the name and γ_f
     /// for YP08 and Xu24, every coefficient for a custom model.
     pub fn of_model(m: &Model) -> ModelSpec {
         use crate::input::model::ModelKind;
@@ -392,18 +392,17 @@ impl Preset {
                 "only with variant = \"yp08\" or \"xu24\"",
             ));
         }
-        let n =
-            match &m.variant {
-                Variant::Number(n) => Some(*n),
-                Variant::Name(s) if s == "custom" => None,
-                Variant::Name(s) => Some(s.parse::<i64>().map_err(|_| {
-                    Error::invalid_text(Field::Model, s, "1, 2, 3, 4, \"custom\", \"yp08\" or \"xu24\"")
-                })?),
-            };
+        let n = match &m.variant {
+            Variant::Number(n) => Some(*n),
+            Variant::Name(s) if s == "custom" => None,
+            Variant::Name(s) => Some(s.parse::<i64>().map_err(|_| {
+                Error::invalid_text(Field::Model, s, "1, 2, 3, 4, 5, \"custom\", \"yp08\" or \"xu24\"")
+            })?),
+        };
         match n {
             Some(n) => {
-                if !(1..=4).contains(&n) {
-                    return Err(Error::invalid_text(Field::Model, n, "1, 2, 3, 4 or \"custom\""));
+                if !(1..=5).contains(&n) {
+                    return Err(Error::invalid_text(Field::Model, n, "1, 2, 3, 4, 5 or \"custom\""));
                 }
                 if m.c1.is_some() || m.c2.is_some() || m.alpha.is_some() || m.k_griffith.is_some() || m.cap.is_some() {
                     return Err(Error::invalid_text(

@@ -132,7 +132,15 @@ impl Scene {
             range: range_m,
         };
         s.validate()?;
+        let mut s = s;
+        s.resolve_model();
         Ok(s)
+    }
+
+    /// Sets the coefficients of a model that follows the scene (model 5: from γ̃_glo,
+    /// [`crate::input::model_five`]) after an input it depends on changed.
+    pub(crate) fn resolve_model(&mut self) {
+        self.model = self.model.for_scene(self.gamma_glo());
     }
 
     /// Hashes every input but the load (the key of a load curve).
@@ -285,18 +293,22 @@ impl Scene {
     /// The same scene without adhesion (γ_s = 0): the adhesionless twin every adhesive
     /// result is compared with. Always valid.
     pub fn without_adhesion(&self) -> Scene {
-        Scene {
+        let mut s = Scene {
             gamma: 0.0,
             ..self.clone()
-        }
+        };
+        s.resolve_model();
+        s
     }
 
     /// The same scene on a semi-infinite body (t·q_r = ∞). Always valid.
     pub fn half_space(&self) -> Scene {
-        Scene {
+        let mut s = Scene {
             thickness_qr: f64::INFINITY,
             ..self.clone()
-        }
+        };
+        s.resolve_model();
+        s
     }
 }
 
@@ -341,6 +353,7 @@ impl Scene {
         check_thickness(t)?;
         check_combination(&self.model, self.gamma, t)?;
         self.thickness_qr = t;
+        self.resolve_model();
         Ok(())
     }
 
@@ -362,6 +375,7 @@ impl Scene {
         check_surface_energy(gamma)?;
         check_combination(&self.model, gamma, self.thickness_qr)?;
         self.gamma = gamma;
+        self.resolve_model();
         Ok(())
     }
 
@@ -400,6 +414,7 @@ impl Scene {
     pub fn set_contact_modulus_pa(&mut self, modulus: f64) -> Result<()> {
         check_modulus(modulus)?;
         self.modulus = modulus;
+        self.resolve_model();
         Ok(())
     }
 
@@ -421,6 +436,7 @@ impl Scene {
         model.validate()?;
         check_combination(&model, self.gamma, self.thickness_qr)?;
         self.model = model;
+        self.resolve_model();
         Ok(())
     }
 
@@ -439,6 +455,7 @@ impl Scene {
     /// As [`Scene::with_spectrum`].
     pub fn set_spectrum(&mut self, spectrum: Spectrum) -> Result<()> {
         self.spectrum = spectrum;
+        self.resolve_model();
         Ok(())
     }
 }
@@ -491,9 +508,9 @@ fn finite_or_none(x: f64) -> Option<f64> {
 /// Resolved inputs of a scene, as printed by `run` (JSON key `scene`).
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct SceneSummary {
-    /// "model 1".."model 4" or "custom".
+    /// "model 1".."model 5" or "custom".
     pub model: String,
-    /// 1–4, or null for custom.
+    /// 1–5, or null for custom.
     pub model_number: Option<u8>,
     /// c₁.
     pub c1: f64,

@@ -404,9 +404,9 @@ fn check_observables(s: &str) -> Result<(), String> {
     }
 }
 
-/// `compare --models`: 1–4, yp08, xu24 (a custom model comes in with --fitted).
+/// `compare --models`: 1–5, yp08, xu24 (a custom model comes in with --fitted).
 fn check_models(s: &str) -> Result<(), String> {
-    let allowed = "a comma-separated list of 1, 2, 3, 4, yp08, xu24";
+    let allowed = "a comma-separated list of 1, 2, 3, 4, 5, yp08, xu24";
     let mut any = false;
     for t in s.split(',').map(str::trim).filter(|t| !t.is_empty()) {
         match t.parse::<asperity::input::model::ModelKind>() {
@@ -426,7 +426,7 @@ fn check_models(s: &str) -> Result<(), String> {
 
 /// One name of `figure --model` (a comma-separated list, split by clap).
 fn check_figure_models(s: &str) -> Result<(), String> {
-    check_models(s).map_err(|_| "a comma-separated list of 1, 2, 3, 4, yp08, xu24".into())
+    check_models(s).map_err(|_| "a comma-separated list of 1, 2, 3, 4, 5, yp08, xu24".into())
 }
 
 /// The parser of the whole command line: the derived [`super::Cli`] with every flag's value

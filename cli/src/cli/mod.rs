@@ -86,7 +86,7 @@ pub struct SceneArgs {
     /// Preset name (from presets/) or path to a preset TOML file.
     #[arg(long, default_value = preset::DEFAULT_PRESET)]
     pub preset: String,
-    /// Model variant: 1, 2, 3, 4, custom, yp08 or xu24 (default: the preset's; yp08 and xu24
+    /// Model variant: 1, 2, 3, 4, 5, custom, yp08 or xu24 (default: the preset's; yp08 and xu24
     /// are defined for the adhesionless half-space: --gamma 0 --thickness inf).
     #[arg(long, allow_hyphen_values = true, value_parser = parse::model)]
     pub model: Option<String>,

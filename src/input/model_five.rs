@@ -1,0 +1,131 @@
+//! Model 5: the weight function gauged once on asperity's GFMD reference set, as a function of
+//! the scene's global adhesion γ̃_glo = γ_s/u_ela^(f) [S-24] (docs/physics.md §3.6).
+//!
+//! [S]'s models 3 and 4 fix W(a) = 1 − c₁(1 − a²) − c₂(1 − a⁴) [S-17] and the broadening
+//! exponent α [S-15] once for all scenes; gauged per thickness on GFMD, model 4's W(0) has to
+//! rise with the slab's γ̃_glo (physics.md §3.5). Model 5 makes that rise the model:
+//!
+//! ```text
+//! s(γ̃)  = 1 − exp(−γ̃/γ_c)                                    crossover from no adhesion
+//! w₀(γ̃) = min(max(w_f, w_b + w_s·γ̃), 1)                      W(0) of the adhesive weight
+//! c₁    = (1 − s)·(−2/9) + s·(1 − w₀)
+//! c₂    = (1 − s)·(2/3)
+//! α     = (1 − s)·½ + s·¼,        k_G = 2,  σ_a capped at γ_s/ρ
+//! ```
+//!
+//! At γ̃ = 0 these are model 3's coefficients exactly (the adhesionless scenes keep [S]'s gauge
+//! on eq. (18) and Table 1); once adhesion counts (γ̃ ≫ γ_c) W is model 4's form
+//! w₀ + (1 − w₀)a² with α = ¼ and w₀ growing linearly with γ̃_glo. γ_c is a continuity scale,
+//! not a fitted number: the set's smallest adhesive γ̃_glo is 0.05, so it cannot resolve the
+//! crossover; the floor w_f, w_b and w_s are fitted jointly on every adhesive case of the set
+//! ([`crate::fit::set_gauge`]), and cross-validated by leaving one thickness and one γ_s out.
+//!
+//! γ̃_glo is the scene's: it depends on γ_s, E*, the spectrum and the slab's thickness through
+//! u_ela^(f), and is kept by the reduction to a GFMD grid. What the gauge does not carry is the
+//! bandwidth: it is fitted like for like on the set's reduced scenes (λ_r/λ_s = 16), and on
+//! thin adhesive slabs the theory's a_r under a large W(0) moves by up to 3× between λ_r/λ_s =
+//! 16 and 128 where GFMD's moves by ≤ 25 % (physics.md §3.6), so on system II's full bandwidth
+//! model 5 is not better than model 4; the trust read-out says so
+//! ([`crate::fit::trust::assess`]).
+
+use super::model::{Model, ModelKind};
+
+/// w_b: W(0) of the adhesive weight extrapolated to γ̃_glo → 0 (fitted, [`crate::fit::set_gauge`]).
+pub const W0_BASE: f64 = 0.015;
+/// w_s: the rise of W(0) per unit γ̃_glo (fitted).
+pub const W0_SLOPE: f64 = 0.947;
+/// γ_c: the γ̃_glo over which the weight crosses from model 3 to the adhesive form.
+pub const CROSSOVER: f64 = 0.01;
+/// w_f: the floor of W(0) at weak adhesion (fitted).
+pub const W0_FLOOR: f64 = 0.15;
+/// The smallest floor a gauge may have (keeps W^{2α} away from 0).
+pub const W0_MIN: f64 = 0.05;
+
+/// The gauge's three fitted numbers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Gauge {
+    /// w_b.
+    pub base: f64,
+    /// w_s.
+    pub slope: f64,
+    /// w_f.
+    pub floor: f64,
+}
+
+/// The stored gauge.
+pub const GAUGE: Gauge = Gauge {
+    base: W0_BASE,
+    slope: W0_SLOPE,
+    floor: W0_FLOOR,
+};
+
+impl Gauge {
+    /// c₁, c₂ and α of model 5 at global adhesion `gamma_glo` (see the module docs).
+    pub fn coefficients(&self, gamma_glo: f64) -> (f64, f64, f64) {
+        let g = if gamma_glo.is_finite() { gamma_glo.max(0.0) } else { 0.0 };
+        let s = 1.0 - (-g / CROSSOVER).exp();
+        let w0 = self.w0(g);
+        let c1 = (1.0 - s) * (-2.0 / 9.0) + s * (1.0 - w0);
+        let c2 = (1.0 - s) * (2.0 / 3.0);
+        let alpha = (1.0 - s) * 0.5 + s * 0.25;
+        (c1, c2, alpha)
+    }
+
+    /// W(0) of the adhesive weight at `gamma_glo`: min(max(w_f, w_b + w_s·γ̃), 1).
+    pub fn w0(&self, gamma_glo: f64) -> f64 {
+        (self.base + self.slope * gamma_glo)
+            .max(self.floor.max(W0_MIN))
+            .min(1.0)
+    }
+
+    /// Model 5 with this gauge's coefficients at `gamma_glo`.
+    pub fn model(&self, gamma_glo: f64) -> Model {
+        let (c1, c2, alpha) = self.coefficients(gamma_glo);
+        Model {
+            kind: ModelKind::Five,
+            c1,
+            c2,
+            alpha,
+            k_griffith: 2.0,
+            cap: true,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn without_adhesion_it_is_model_3() {
+        let m = GAUGE.model(0.0);
+        let m3 = Model::named(3).unwrap();
+        assert_eq!(
+            (m.c1, m.c2, m.alpha, m.k_griffith, m.cap),
+            (m3.c1, m3.c2, m3.alpha, m3.k_griffith, m3.cap)
+        );
+    }
+
+    #[test]
+    fn with_adhesion_it_is_model_4s_form_with_w0_rising() {
+        for g in [0.2, 0.5, 1.0] {
+            let m = GAUGE.model(g);
+            let w0 = GAUGE.w0(g);
+            assert!((m.w(0.0) - w0).abs() < 1e-6, "W(0) at γ̃ {g}");
+            assert!((m.w(1.0) - 1.0).abs() < 1e-12);
+            assert!((m.alpha - 0.25).abs() < 1e-6);
+            m.validate().unwrap();
+        }
+        // continuous and valid all the way, W(0) monotone once adhesive
+        let mut last = f64::NEG_INFINITY;
+        for k in 0..=400 {
+            let g = 2.0 * k as f64 / 400.0;
+            let m = GAUGE.model(g);
+            m.validate().unwrap();
+            if g > 0.1 {
+                assert!(m.w(0.0) >= last - 1e-12);
+                last = m.w(0.0);
+            }
+        }
+    }
+}
