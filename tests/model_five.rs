@@ -115,11 +115,23 @@ fn the_trust_read_out_says_where_model_5s_gauge_does_not_carry_over() {
     // the full system (λ_r/λ_s = 128): named; model 4 on it: not
     let full = preset.scene().unwrap().with_model(five).unwrap();
     let t = asperity::fit::trust::assess(&full);
-    assert!(!t.inside && t.outside.iter().any(|l| l.contains("model 5 was gauged")), "{:?}", t.outside);
+    assert!(
+        !t.inside && t.outside.iter().any(|l| l.contains("model 5 was gauged")),
+        "{:?}",
+        t.outside
+    );
     let m4 = full.clone().with_model(Model::named(4).unwrap()).unwrap();
-    assert!(!asperity::fit::trust::assess(&m4).outside.iter().any(|l| l.contains("model 5")));
+    assert!(!asperity::fit::trust::assess(&m4)
+        .outside
+        .iter()
+        .any(|l| l.contains("model 5")));
     // the set's own bandwidth (the 256² reduction): not named
-    let grid = asperity::gfmd::GridSpec::from_preset(preset.gfmd.as_ref().unwrap()).with_grid(256).unwrap();
+    let grid = asperity::gfmd::GridSpec::from_preset(preset.gfmd.as_ref().unwrap())
+        .with_grid(256)
+        .unwrap();
     let (red, _) = asperity::gfmd::reduction::reduce(&full, &grid, true).unwrap();
-    assert!(!asperity::fit::trust::assess(&red).outside.iter().any(|l| l.contains("model 5")));
+    assert!(!asperity::fit::trust::assess(&red)
+        .outside
+        .iter()
+        .any(|l| l.contains("model 5")));
 }

@@ -409,6 +409,6 @@ mod tests {
         // interior minimum: c1 = -2, c2 = 2 → W(b) = 1 − 2b + 2b²... min at b = 0.5: 0.5
         let m = Model::custom(-2.0, 2.0, 0.5, 1.0, false).unwrap();
         assert!((m.w_min() - 0.5).abs() < 1e-15);
-        assert!(Model::named(5).unwrap_err().to_string().contains("model.variant = 5"));
+        assert!(Model::named(6).unwrap_err().to_string().contains("model.variant = 6"));
     }
 }
