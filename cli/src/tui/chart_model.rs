@@ -263,6 +263,8 @@ pub fn load_x(app: &App) -> [f64; 2] {
     [a.log10(), b.log10()]
 }
 
+/// Marks the current load: a guide at `x` and the current point (drawn under the reference
+/// points, which a caption may point at).
 pub fn add_current(m: &mut ChartModel, x: f64, y: Option<f64>) {
     m.vlines.insert(
         0,
@@ -273,11 +275,20 @@ pub fn add_current(m: &mut ChartModel, x: f64, y: Option<f64>) {
         },
     );
     if let Some(y) = y.filter(|y| y.is_finite()) {
-        m.series.push(Series {
-            name: "p*".into(),
-            points: vec![(x, y)],
-            role: Role::Current,
-            draw: Draw::Points,
-        });
+        // under the reference points: a caption points at them, and the guide marks p*
+        let at = m
+            .series
+            .iter()
+            .position(|s| s.role == Role::Reference)
+            .unwrap_or(m.series.len());
+        m.series.insert(
+            at,
+            Series {
+                name: "p*".into(),
+                points: vec![(x, y)],
+                role: Role::Current,
+                draw: Draw::Points,
+            },
+        );
     }
 }

@@ -305,6 +305,36 @@ pub fn action_for(ev: &KeyEvent) -> Option<Action> {
         .map(|b| b.action)
 }
 
+/// The key event a caption's `{key:KEY}` names, written as the help writes keys (`m`,
+/// `Space`, `⇧→`, `PgUp`, `F1`; `←`/`→` move along a tour): None where no action is bound to
+/// it.
+pub fn parse_label(label: &str) -> Option<KeyEvent> {
+    let (code, m) = match label {
+        "Space" => (KeyCode::Char(' '), NONE),
+        "Enter" => (KeyCode::Enter, NONE),
+        "Esc" => (KeyCode::Esc, NONE),
+        "Tab" => (KeyCode::Tab, NONE),
+        "PgUp" => (KeyCode::PageUp, NONE),
+        "PgDn" => (KeyCode::PageDown, NONE),
+        "F1" => (KeyCode::F(1), NONE),
+        "↑" => (KeyCode::Up, NONE),
+        "↓" => (KeyCode::Down, NONE),
+        "←" => return Some(KeyEvent::new(KeyCode::Left, NONE)),
+        "→" => return Some(KeyEvent::new(KeyCode::Right, NONE)),
+        "⇧←" => (KeyCode::Left, SHIFT),
+        "⇧→" => (KeyCode::Right, SHIFT),
+        s => {
+            let mut cs = s.chars();
+            match (cs.next(), cs.next()) {
+                (Some(c), None) => (KeyCode::Char(c), NONE),
+                _ => return None,
+            }
+        }
+    };
+    let ev = KeyEvent::new(code, m);
+    action_for(&ev).map(|_| ev)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -6,8 +6,9 @@
 //!   [`knobs`] (the panel's parameters and their pure stepping), [`kinds`] (the chart kinds),
 //!   [`pins`] (pinned curves and their names),
 //!   [`protocol`] (requests, replies and cache keys of the worker), [`tour`] (teaching tours,
-//!   TOML files in `tours/`), [`data`] (the plain data of engine results), [`progress`] (the
-//!   GFMD job's phases, progress reports and the estimate of the time left).
+//!   TOML files in `tours/`), [`caption`] (a caption's checked references to looks and
+//!   keys), [`tour_check`] (a caption's claims as data), [`data`] (the plain data of engine results), [`progress`] (the GFMD job's phases,
+//!   progress reports and the estimate of the time left).
 //! - update: [`update`] (a key or a reply → the next state plus effects), [`turn`] (a knob
 //!   stepped on its grid or typed), [`models`] (the model picked or cycled), [`update_gfmd`]
 //!   (`g` and the GFMD job's replies), [`keys`] (the key table, used for dispatch and for the
@@ -39,6 +40,7 @@
 //! is left to compute (`all_drawn_ms`: the point refined to full accuracy, the other charts).
 
 pub mod app;
+pub mod caption;
 pub mod chart_model;
 pub mod charts;
 pub mod charts_load;
@@ -62,6 +64,7 @@ pub mod progress;
 pub mod protocol;
 pub mod state;
 pub mod tour;
+pub mod tour_check;
 pub mod turn;
 pub mod update;
 pub mod update_gfmd;

@@ -33,11 +33,17 @@
 //! value = 1.60                 # value ± rel·|value|, and/or min/max bounds,
 //! rel = 0.005
 //! below = { quantity = "eq18/p*" }   # and/or below/above/near another quantity or scene
+//!
+//! [[step.press]]               # optional: what a `{key:KEY}` of the caption does
+//! says = "l turns p* up"       # see [`super::caption`] (also `{look:NAME}` references)
+//! key = "l"
+//! raises = "pressure"
 //! ```
 //!
 //! Chart names: see [`super::charts`]. Knob names: [`Knob::NAMES`]. The checks are data only:
 //! the test `cli/tests/tui_tour_claims.rs` evaluates every one of them with the engine.
 
+use super::caption::{self, Press};
 use super::kinds::ChartKind;
 use asperity::error::{Error, Result};
 use asperity::input::model::Model;
@@ -85,6 +91,8 @@ struct StepFile {
     caption: String,
     #[serde(default)]
     check: Vec<Check>,
+    #[serde(default)]
+    press: Vec<Press>,
 }
 
 /// A knob of the parameter panel a step can select (the one its caption says to turn).
@@ -114,126 +122,7 @@ impl Knob {
     }
 }
 
-/// Quantities a [`Check`] can state (evaluated by the claims test with the engine):
-/// `a_r`, `sigma_a` (σ_a* at q_s: the wall sits at −σ_a*), `a_r/p*`, `eq18/p*` (the closed form [S-18]), `mean_contact_stress` (σ̄_c*),
-/// `gap_rel` (ū/h_rms), `width` (Δ* of the adhesionless Pr), `gamma_glo` (γ̃_glo),
-/// `tensile_area` (∫ Pr over σ* < 0), `tensile_fraction` (tensile_area / a_r), `W` (the model's
-/// W at `a_r`), `a_r_unloading` (the unloading branch at the load), `jump_in` (p* where the
-/// loading branch ends, from a load sweep p*/10…10p*), `pr_linearity` (Pr(σ₁)/σ₁ over Pr(σ₂)/σ₂
-/// at the first two stresses of the engine's grid), `reference:Q` (the preset's
-/// `[[reference]]` value of quantity Q at the scene's p*).
-pub const QUANTITIES: [&str; 14] = [
-    "a_r",
-    "sigma_a",
-    "a_r/p*",
-    "eq18/p*",
-    "mean_contact_stress",
-    "gap_rel",
-    "width",
-    "gamma_glo",
-    "tensile_area",
-    "tensile_fraction",
-    "W",
-    "a_r_unloading",
-    "jump_in",
-    "pr_linearity",
-];
-
-/// The other side of a comparison: the same quantity and scene unless overridden.
-#[derive(Debug, Clone, PartialEq, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-pub struct Side {
-    /// Another quantity (default: the check's).
-    pub quantity: Option<String>,
-    /// Another model.
-    pub model: Option<u8>,
-    /// Another p*.
-    pub pressure: Option<f64>,
-    /// Another γ_s.
-    pub gamma: Option<f64>,
-    /// Another t·q_r.
-    pub thickness_qr: Option<f64>,
-}
-
-/// A claim of a caption as data: a quantity of the step's scene (with overrides) and what the
-/// caption says about it.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Check {
-    /// The claim in words (shown when the check fails).
-    pub says: String,
-    /// See [`QUANTITIES`].
-    pub quantity: String,
-    /// Model instead of the step's.
-    pub model: Option<u8>,
-    /// p* instead of the step's.
-    pub pressure: Option<f64>,
-    /// γ_s instead of the step's.
-    pub gamma: Option<f64>,
-    /// t·q_r instead of the step's.
-    pub thickness_qr: Option<f64>,
-    /// a_r at which `W` is evaluated.
-    pub a_r: Option<f64>,
-    /// The stated value.
-    pub value: Option<f64>,
-    /// Relative tolerance of `value` and of `near` (0.005 when not given: a value quoted to
-    /// three digits).
-    pub rel: Option<f64>,
-    /// Lower bound.
-    pub min: Option<f64>,
-    /// Upper bound.
-    pub max: Option<f64>,
-    /// The quantity lies below this one.
-    pub below: Option<Side>,
-    /// The quantity lies above this one.
-    pub above: Option<Side>,
-    /// The quantity lies within `rel` of this one.
-    pub near: Option<Side>,
-}
-
-impl Check {
-    /// The relative tolerance of `value` and `near`.
-    pub fn rel(&self) -> f64 {
-        self.rel.unwrap_or(0.005)
-    }
-
-    fn validate(&self) -> std::result::Result<(), String> {
-        let known = |q: &str| QUANTITIES.contains(&q) || q.strip_prefix("reference:").is_some_and(|r| !r.is_empty());
-        if !known(&self.quantity) {
-            return Err(format!(
-                "quantity \"{}\"; allowed {}, reference:QUANTITY",
-                self.quantity,
-                QUANTITIES.join(", ")
-            ));
-        }
-        for s in [&self.below, &self.above, &self.near].into_iter().flatten() {
-            if let Some(q) = &s.quantity {
-                if !known(q) {
-                    return Err(format!(
-                        "quantity \"{q}\" of a comparison; allowed {}",
-                        QUANTITIES.join(", ")
-                    ));
-                }
-            }
-        }
-        if self.value.is_none()
-            && self.min.is_none()
-            && self.max.is_none()
-            && self.below.is_none()
-            && self.above.is_none()
-            && self.near.is_none()
-        {
-            return Err("states nothing: give value, min, max, below, above or near".into());
-        }
-        if self.quantity == "W" && self.a_r.is_none() {
-            return Err("W needs a_r".into());
-        }
-        if self.says.trim().is_empty() {
-            return Err("says must not be empty".into());
-        }
-        Ok(())
-    }
-}
+pub use super::tour_check::{Check, Side, QUANTITIES};
 
 /// One validated step.
 #[derive(Debug, Clone, PartialEq)]
@@ -256,6 +145,10 @@ pub struct Step {
     pub select: Option<Knob>,
     /// The caption's claims (checked against the engine by the claims test).
     pub checks: Vec<Check>,
+    /// The caption as written, its `{look:…}` and `{key:…}` references unrendered.
+    pub caption_source: Vec<String>,
+    /// What the keys the caption names do (checked in the explorer by the tour test).
+    pub presses: Vec<Press>,
 }
 
 /// A validated tour.
@@ -392,12 +285,18 @@ impl Tour {
                     )
                 })?;
             }
-            let caption: Vec<String> = s
+            let caption_source: Vec<String> = s
                 .caption
                 .lines()
                 .map(|l| l.trim().to_string())
                 .filter(|l| !l.is_empty())
                 .collect();
+            let slot = crate::looks::model_slot(&scene.model());
+            let caption = caption_source
+                .iter()
+                .map(|l| caption::render(l, slot))
+                .collect::<std::result::Result<Vec<String>, String>>()
+                .map_err(|m| err(at, "caption", m))?;
             if !(CAPTION_LINES.0..=CAPTION_LINES.1).contains(&caption.len()) {
                 return Err(err(
                     at,
@@ -430,6 +329,10 @@ impl Tour {
                     )
                 })?),
             };
+            for (j, p) in s.press.iter().enumerate() {
+                caption::validate(p, &Knob::NAMES)
+                    .map_err(|m| err(at, "press", format!("press {j} ({}): {m}", p.says.trim())))?;
+            }
             for (j, c) in s.check.iter().enumerate() {
                 c.validate()
                     .map_err(|m| err(at, "check", format!("check {j} ({}): {m}", c.says.trim())))?;
@@ -444,6 +347,8 @@ impl Tour {
                 caption,
                 select,
                 checks: s.check.clone(),
+                caption_source,
+                presses: s.press.clone(),
             });
         }
         Ok(Tour {
