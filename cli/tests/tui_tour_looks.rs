@@ -279,6 +279,13 @@ fn verify_press(t: &Tour, i: usize, p: &Press) -> Result<(), String> {
     if p.plays.is_some_and(|x| x != a.playing) {
         bad.push(format!("playing {}", a.playing));
     }
+    if p.branch.as_deref().is_some_and(|b| b != a.history.on.name()) {
+        bad.push(format!(
+            "on the {} branch at p* = {}",
+            a.history.on.name(),
+            a.scene.pressure()
+        ));
+    }
     if bad.is_empty() {
         Ok(())
     } else {

@@ -40,6 +40,8 @@ pub struct Press {
     pub frame: Option<i32>,
     /// The scale view plays after the press.
     pub plays: Option<bool>,
+    /// The branch of the load history after the press (`loading`, `unloading`).
+    pub branch: Option<String>,
 }
 
 /// A caption line with its references rendered (`model`: the slot of the step's model, the
@@ -133,8 +135,15 @@ pub fn validate(p: &Press, knobs: &[&str]) -> Result<(), String> {
         && p.lowers.is_none()
         && p.frame.is_none()
         && p.plays.is_none()
+        && p.branch.is_none()
     {
-        return Err("claims nothing: give model, models, compare, raises, lowers, frame or plays".into());
+        return Err("claims nothing: give model, models, compare, raises, lowers, frame, plays or branch".into());
+    }
+    if p.branch
+        .as_deref()
+        .is_some_and(|b| !matches!(b, "loading" | "unloading"))
+    {
+        return Err("branch: allowed loading, unloading".into());
     }
     if p.says.trim().is_empty() {
         return Err("says must not be empty".into());

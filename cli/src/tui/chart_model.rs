@@ -198,6 +198,22 @@ pub fn current_point(app: &App) -> Option<&PointData> {
     app.point.as_ref().and_then(|r| r.as_ref().ok())
 }
 
+/// a_r on the branch the user's path is on: the point's, or its unloading branch's where the
+/// path has jumped in and the load lies in the window (the engine's point is the loading
+/// branch's).
+pub fn path_a_r(app: &App) -> Option<f64> {
+    let p = current_point(app)?;
+    Some(path_row(app).map_or(p.a_r, |b| b.a_r))
+}
+
+/// The point's unloading branch, where the path is on it.
+pub fn path_row(app: &App) -> Option<&super::data::BranchRow> {
+    let p = current_point(app)?;
+    (app.history.on == super::history::Path::Unloading)
+        .then(|| p.branches.iter().find(|b| b.name == "unloading"))
+        .flatten()
+}
+
 pub fn references<'a>(
     app: &'a App,
     quantity: &'a str,

@@ -76,7 +76,11 @@ pub fn build_own(app: &App, kind: ChartKind) -> ChartModel {
 }
 
 fn pr_linear(app: &App) -> ChartModel {
-    let title = format!("Pr(σ*) at p* = {}", super::words::sig(app.scene.pressure(), 3));
+    let mut title = format!("Pr(σ*) at p* = {}", super::words::sig(app.scene.pressure(), 3));
+    if super::chart_model::path_row(app).is_some() {
+        // the engine computes the loading branch's distribution only
+        title.push_str(", loading branch");
+    }
     let mut m = base(ChartKind::Pr, title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, Scale::Linear);
     let Some(p) = current_point(app) else {
         set_empty(&mut m, app, app.point.as_ref());

@@ -9,7 +9,8 @@
 //!   TOML files in `tours/`), [`caption`] (a caption's checked references to looks and
 //!   keys), [`tour_check`] (a caption's claims as data), [`data`] (the plain data of engine results), [`progress`] (the GFMD job's phases,
 //!   progress reports and the estimate of the time left).
-//! - update: [`update`] (a key or a reply → the next state plus effects), [`turn`] (a knob
+//! - update: [`update`] (a key or a reply → the next state plus effects), [`history`] (the
+//!   branch of a hysteresis the user's path has reached), [`turn`] (a knob
 //!   stepped on its grid or typed), [`models`] (the model picked or cycled), [`update_gfmd`]
 //!   (`g` and the GFMD job's replies), [`keys`] (the key table, used for dispatch and for the
 //!   `?` help).
@@ -49,6 +50,7 @@ pub mod charts_scales;
 pub mod data;
 pub mod effects;
 pub mod export;
+pub mod history;
 pub mod jobs;
 pub mod keys;
 pub mod kinds;

@@ -75,7 +75,10 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
             lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
         }
     };
-    row_styled("a_r", pt.map_or_else(dash, |p| sig(p.a_r, 4)), stale_point);
+    // the branch the load history has reached (the engine's point is the loading branch's)
+    let on_unloading = super::chart_model::path_row(app).is_some();
+    let a_r = super::chart_model::path_a_r(app);
+    row_styled("a_r", a_r.map_or_else(dash, |a| sig(a, 4)), stale_point);
     row_styled(
         "σ̄_c*",
         pt.map_or_else(dash, |p| sig(p.mean_contact_stress, 4)),
@@ -111,9 +114,13 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         for (k, v) in &p.extra {
             row_styled(k, v.clone(), stale_point);
         }
-        // hysteresis: every branch at this load, ◀ the one shown
+        // hysteresis: every branch at this load, ◀ the one the path is on
+        if !p.branches.is_empty() {
+            row_styled("path", app.history.label(), stale_point);
+        }
         for b in &p.branches {
-            let mark = if b.shown { " ◀" } else { "" };
+            let followed = if on_unloading { b.name == "unloading" } else { b.shown };
+            let mark = if followed { " ◀" } else { "" };
             let stab = if b.stable || b.name == "unstable" {
                 ""
             } else {

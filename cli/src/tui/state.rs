@@ -120,6 +120,8 @@ pub struct App {
     pub playing: bool,
     /// The tour, when one is being walked.
     pub tour: Option<TourState>,
+    /// The branch of a hysteresis the user's path has reached (`r` resets it).
+    pub history: super::history::LoadHistory,
     /// Show the adhesionless comparison in the Pr chart.
     pub compare: bool,
     /// Status-bar message (cleared by the next key).
@@ -209,6 +211,7 @@ impl App {
             playing: false,
             pins: Vec::new(),
             tour: None,
+            history: Default::default(),
             compare: true,
             message: None,
             gen: 0,

@@ -29,6 +29,7 @@ impl App {
                 if key == sweep_key(&self.source, &self.scene, self.range()) {
                     self.sweep = Some(result);
                     self.sweep_shown = Some(key);
+                    self.follow_window();
                 } else if self.overlay_keys().1.contains(&key) {
                     bounded_insert(&mut self.overlay_sweeps, key, result);
                 }
@@ -160,6 +161,7 @@ impl App {
             }
             Action::Reset => {
                 self.anchors = Anchors::default();
+                self.history.reset();
                 self.set_scene(self.base.clone());
                 self.info(format!("reset to preset {}", self.preset.name));
             }
@@ -312,6 +314,7 @@ impl App {
         self.base = st.scene.clone();
         self.anchors = Anchors::default();
         self.set_scene(st.scene);
+        self.history.reset();
         self.charts = st.charts;
         self.all_models = st.models;
         // a step that shows the scale view plays it from q_L
@@ -338,6 +341,7 @@ impl App {
                 self.base = s.clone();
                 self.anchors = Anchors::default();
                 self.set_scene(s);
+                self.history.reset();
                 self.info(format!("preset {}", self.preset.name));
             }
             Err(e) => self.fail(e),
@@ -347,9 +351,34 @@ impl App {
     pub(crate) fn set_scene(&mut self, scene: Scene) {
         if scene != self.scene {
             self.pending = true;
+            let range = self.range();
+            if sweep_key(&self.source, &scene, range) != sweep_key(&self.source, &self.scene, range) {
+                // t·q_r, γ_s or the model moves the window: the loads visited so far are
+                // walked through the old one, the load is walked again through the new one
+                self.follow_window();
+                self.history.forget_pending();
+            }
+            self.history.visit(scene.pressure());
         }
         self.scene = scene;
         self.selected = self.selected.min(self.params().len() - 1);
+    }
+
+    /// Walks the loads the path visited through the hysteresis window of the current scene's
+    /// load sweep, when it is computed; says so when the branch changes.
+    pub(crate) fn follow_window(&mut self) {
+        if self.sweep_is_stale() {
+            return;
+        }
+        let Some(Ok(sw)) = &self.sweep else { return };
+        let w = super::history::Window {
+            jump_in: sw.jump_in,
+            pull_off: sw.pull_off,
+            hysteresis: sw.has_hysteresis(),
+        };
+        if self.history.resolve(&w) {
+            self.info(self.history.describe());
+        }
     }
 
     /// Applies a changed scene (each change was validated where it was made).
