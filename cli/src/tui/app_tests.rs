@@ -312,7 +312,11 @@ fn reset_help_picker_and_quit() {
     key(&mut a, KeyCode::Char('a'));
     assert_eq!(a.charts[1], ChartKind::AreaRatio);
     assert!(!a.quit);
+    // Esc cancels, never quits; q does
     key(&mut a, KeyCode::Esc);
+    assert!(!a.quit);
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("q quits")));
+    key(&mut a, KeyCode::Char('q'));
     assert!(a.quit);
     let mut b = app();
     b.on_key(KeyEvent::new(KeyCode::Char('c'), M::CONTROL));
@@ -508,4 +512,42 @@ fn j_and_k_scroll_a_cut_caption_and_a_new_step_starts_at_its_top() {
     assert_eq!(a.caption_scroll, most - 2);
     key(&mut a, KeyCode::Right);
     assert_eq!(a.caption_scroll, 0);
+}
+
+#[test]
+fn z_zooms_the_focused_chart_and_esc_cancels_without_quitting() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('f'));
+    key(&mut a, KeyCode::Char('z'));
+    assert!(a.zoom && a.focus == 1);
+    // Esc leaves the zoom, then has nothing to cancel and says q quits
+    key(&mut a, KeyCode::Esc);
+    assert!(!a.zoom && !a.quit);
+    key(&mut a, KeyCode::Esc);
+    assert!(!a.quit);
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("q quits")));
+    // F1 is ? (the help)
+    key(&mut a, KeyCode::F(1));
+    assert_eq!(a.overlay, Overlay::Help);
+}
+
+#[test]
+fn c_explains_itself_without_adhesion_and_y_turns_the_pr_axis() {
+    let mut a = app();
+    assert!(a.scene.is_adhesive() && a.compare);
+    key(&mut a, KeyCode::Char('c'));
+    assert!(!a.compare);
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("hidden")));
+    typed_gamma_off(&mut a);
+    key(&mut a, KeyCode::Char('c'));
+    assert!(!a.compare, "nothing to compare: c changes nothing");
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("has none")));
+    assert!(!a.log_pr);
+    key(&mut a, KeyCode::Char('y'));
+    assert!(a.log_pr);
+}
+
+fn typed_gamma_off(a: &mut App) {
+    a.set_typed(Param::Gamma, "0").unwrap();
+    assert!(!a.scene.is_adhesive());
 }

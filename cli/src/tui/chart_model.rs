@@ -73,6 +73,9 @@ pub struct ChartModel {
     pub clip_y: bool,
     /// Model slot of the current scene (the theory's colour).
     pub model: usize,
+    /// The y axis hugs the data (two labels, a fine step) instead of three round labels
+    /// that may double its span (σ̄_c*: the models' differences stay visible).
+    pub fit_y: bool,
 }
 
 impl ChartModel {
@@ -171,6 +174,7 @@ pub fn base(kind: ChartKind, title: String, x: &str, y: &str, xs: Scale, ys: Sca
         stale: false,
         clip_y: false,
         model: 2,
+        fit_y: false,
     }
 }
 

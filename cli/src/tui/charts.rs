@@ -81,7 +81,11 @@ fn pr_linear(app: &App) -> ChartModel {
         // the engine computes the loading branch's distribution only
         title.push_str(", loading branch");
     }
-    let mut m = base(ChartKind::Pr, title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, Scale::Linear);
+    // `y`: a log density axis, for the small distributions beside a large one (thick slabs
+    // beside thin ones, the tails)
+    let ys = if app.log_pr { Scale::Log10 } else { Scale::Linear };
+    let mut m = base(ChartKind::Pr, title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, ys);
+    m.clip_y = app.log_pr;
     let Some(p) = current_point(app) else {
         set_empty(&mut m, app, app.point.as_ref());
         return m;
@@ -128,7 +132,7 @@ fn pr_linear(app: &App) -> ChartModel {
     m.xb = xb.unwrap_or([0.0, 1.0]);
     // the sampled tails are flat zeros: end the axis where every curve is below 10⁻³ of the
     // peak
-    let peak = yb.map_or(0.0, |b| b[1]);
+    let peak = yb.map_or(0.0, |b| if app.log_pr { 10f64.powf(b[1]) } else { b[1] });
     let last = m
         .series
         .iter()
@@ -150,7 +154,12 @@ fn pr_linear(app: &App) -> ChartModel {
             },
         );
     }
-    m.yb = plot::guard(0.0, yb.map_or(1.0, |b| b[1]).max(0.0) * 1.05);
+    m.yb = if app.log_pr {
+        let top = yb.map_or(0.0, |b| b[1]);
+        [top - 4.0, top + 0.1]
+    } else {
+        plot::guard(0.0, yb.map_or(1.0, |b| b[1]).max(0.0) * 1.05)
+    };
     m
 }
 

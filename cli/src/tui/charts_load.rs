@@ -276,6 +276,7 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
         // the gap may be negative with adhesion: show what comes, and 0 for scale
         plot::guard(yb[0].min(0.0), yb[1])
     } else {
+        m.fit_y = true;
         plot::guard(yb[0], yb[1])
     };
     m

@@ -62,6 +62,12 @@ pub enum Action {
     CaptionUp,
     /// Open or close this help.
     Help,
+    /// Show the focused chart on the whole screen, or all panels again.
+    Zoom,
+    /// The Pr chart's density axis: linear or log.
+    LogY,
+    /// Cancel what runs (typing, an overlay, the tour, GFMD); never quits.
+    Cancel,
     /// Quit.
     Quit,
 }
@@ -270,12 +276,26 @@ pub const TABLE: &[Binding] = &[
         help: "this help",
     },
     Binding {
-        keys: &[
-            Key(KeyCode::Char('q'), NONE),
-            Key(KeyCode::Esc, NONE),
-            Key(KeyCode::Char('c'), CTRL),
-        ],
-        label: "q Esc ^C",
+        keys: &[Key(KeyCode::Char('z'), NONE)],
+        label: "z",
+        action: Action::Zoom,
+        help: "the focused chart full screen (z again: all panels)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('y'), NONE)],
+        label: "y",
+        action: Action::LogY,
+        help: "Pr chart: linear / log density axis (small distributions, tails)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Esc, NONE)],
+        label: "Esc",
+        action: Action::Cancel,
+        help: "cancel: typing, a list, the tour, a GFMD run (never quits)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('q'), NONE), Key(KeyCode::Char('c'), CTRL)],
+        label: "q ^C",
         action: Action::Quit,
         help: "quit",
     },

@@ -90,6 +90,10 @@ pub struct App {
     pub caption_scroll: usize,
     /// The panel the chart selector (`v`) changes.
     pub focus: usize,
+    /// The focused chart fills the screen (`z`).
+    pub zoom: bool,
+    /// The linear Pr chart has a log density axis (`y`).
+    pub log_pr: bool,
     /// Overlay every model on the charts (`M`).
     pub all_models: bool,
     /// Results of the other models (`M`), by cache key.
@@ -193,6 +197,8 @@ impl App {
             overlay: Overlay::None,
             charts: DEFAULT_CHARTS,
             focus: 0,
+            zoom: false,
+            log_pr: false,
             help_scroll: 0,
             caption_scroll: 0,
             anchors: Anchors::default(),

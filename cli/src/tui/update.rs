@@ -201,7 +201,17 @@ impl App {
                 }
             }
             Action::Save => self.effects.push(Effect::SaveCharts),
-            Action::Compare => self.compare = !self.compare,
+            Action::Compare => {
+                if self.scene.is_adhesive() {
+                    self.compare = !self.compare;
+                    let on = if self.compare { "shown" } else { "hidden" };
+                    self.info(format!("the adhesionless comparison (γ_s = 0) is {on}"));
+                } else {
+                    self.info(
+                        "c compares with the scene without adhesion: this one has none (γ_s = 0); turn γ_s up first",
+                    );
+                }
+            }
             Action::Gfmd => self.toggle_gfmd(),
             Action::Pin => self.pin(),
             Action::Unpin | Action::UnpinAll => {
@@ -219,6 +229,22 @@ impl App {
             }
             Action::CaptionUp => self.caption_scroll = self.caption_scroll.saturating_sub(1),
             Action::Help => self.overlay = Overlay::Help,
+            Action::Zoom => self.zoom = !self.zoom,
+            Action::LogY => {
+                self.log_pr = !self.log_pr;
+                if !self.charts.contains(&ChartKind::Pr) {
+                    self.info("y sets the Pr chart's density axis: no Pr chart shown (v picks the charts)");
+                }
+            }
+            Action::Cancel => {
+                if matches!(self.gfmd, GfmdState::Running { .. }) {
+                    self.toggle_gfmd();
+                } else if self.zoom {
+                    self.zoom = false;
+                } else {
+                    self.info("nothing to cancel: q quits");
+                }
+            }
             Action::Quit => self.quit = true,
         }
     }
