@@ -222,7 +222,12 @@ pub fn references<'a>(
     app: &'a App,
     quantity: &'a str,
 ) -> impl Iterator<Item = &'a asperity::input::preset::ReferencePoint> {
-    app.preset.reference.iter().filter(move |r| r.quantity == quantity)
+    // a measured surface is another system: the preset's reference values are not its own
+    let own = super::panel::surface_name(&app.scene).is_none();
+    app.preset
+        .reference
+        .iter()
+        .filter(move |r| own && r.quantity == quantity)
 }
 
 /// Legend name of a reference point: its source, and its conditions where they differ from

@@ -94,6 +94,8 @@ pub struct App {
     pub zoom: bool,
     /// The linear Pr chart has a log density axis (`y`).
     pub log_pr: bool,
+    /// The last `e`/`s`: its scene, file name, number and the keys done under that number.
+    pub last_export: Option<(Scene, String, u32, Vec<Effect>)>,
     /// Overlay every model on the charts (`M`).
     pub all_models: bool,
     /// Results of the other models (`M`), by cache key.
@@ -199,6 +201,7 @@ impl App {
             focus: 0,
             zoom: false,
             log_pr: false,
+            last_export: None,
             help_scroll: 0,
             caption_scroll: 0,
             anchors: Anchors::default(),
