@@ -72,6 +72,14 @@ pub enum Action {
     Quit,
 }
 
+/// The help's last row: where the manual is (the repository's docs/).
+pub const MANUAL: &str = "manual     docs/explorer.md · docs/tour-format.md · docs/commands.md";
+
+/// Rows of the help: the key table's, then [`MANUAL`].
+pub fn help_rows() -> usize {
+    TABLE.len() + 1
+}
+
 /// One key: a code plus the modifiers it needs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Key(pub KeyCode, pub KeyModifiers);
@@ -375,6 +383,16 @@ mod tests {
         assert_eq!(action_for(&ev(KeyCode::Char('q'), NONE)), Some(Action::Quit));
         assert_eq!(action_for(&ev(KeyCode::Char('x'), NONE)), None);
         assert_eq!(action_for(&ev(KeyCode::Left, CTRL)), None);
+    }
+
+    #[test]
+    fn the_manual_the_help_names_exists() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        let pages: Vec<&str> = MANUAL.split_whitespace().filter(|w| w.ends_with(".md")).collect();
+        assert_eq!(pages.len(), 3);
+        for p in pages {
+            assert!(root.join(p).is_file(), "{p}");
+        }
     }
 
     #[test]

@@ -98,7 +98,7 @@ impl App {
         match self.overlay {
             Overlay::Help => {
                 // ↓↑ (j k, PgDn PgUp) scroll, any other key closes the help; q still quits
-                let n = super::keys::TABLE.len();
+                let n = super::keys::help_rows();
                 match ev.code {
                     KeyCode::Down | KeyCode::Char('j') => self.help_scroll = (self.help_scroll + 1).min(n),
                     KeyCode::PageDown => self.help_scroll = (self.help_scroll + 8).min(n),

@@ -348,6 +348,7 @@ pub fn help_lines() -> Vec<String> {
     keys::TABLE
         .iter()
         .map(|b| format!("{:<11}{}", b.label, b.help))
+        .chain(std::iter::once(keys::MANUAL.to_string()))
         .collect()
 }
 
