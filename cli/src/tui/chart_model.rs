@@ -223,7 +223,7 @@ pub fn references<'a>(
     quantity: &'a str,
 ) -> impl Iterator<Item = &'a asperity::input::preset::ReferencePoint> {
     // a measured surface is another system: the preset's reference values are not its own
-    let own = super::panel::surface_name(&app.scene).is_none();
+    let own = super::words::surface_name(&app.scene).is_none();
     app.preset
         .reference
         .iter()

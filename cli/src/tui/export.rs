@@ -398,7 +398,7 @@ pub fn next_number(dir: &Path, name: &str) -> Result<u32> {
 /// The scene's name as a file name (`asperity-NAME-N…`): the measured surface's file stem,
 /// else the preset's name.
 pub fn safe_name(app: &App) -> String {
-    let surface = super::panel::surface_name(&app.scene)
+    let surface = super::words::surface_name(&app.scene)
         .map(|f| f.rsplit_once('.').map_or(f.clone(), |(stem, _)| stem.to_string()));
     surface
         .unwrap_or_else(|| app.preset.name.clone())
@@ -443,7 +443,7 @@ pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
     } else {
         super::plot::format_number(sc.thickness_qr())
     };
-    let system = super::panel::surface_name(sc).unwrap_or_else(|| app.preset.name.clone());
+    let system = super::words::surface_name(sc).unwrap_or_else(|| app.preset.name.clone());
     let note = format!(
         "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
         system,
