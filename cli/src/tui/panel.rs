@@ -154,19 +154,24 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         },
     );
     // the scene in physical units (shown when the panel is tall enough)
-    let sc = &app.scene;
     lines.push(Line::from(Span::styled("─ scene ─", pal.dim())));
-    for (k, v) in [
+    lines.extend(scene_rows(&app.scene));
+    let block = Block::bordered().title(" parameters ");
+    f.render_widget(Paragraph::new(lines).block(block), area);
+}
+
+/// The scene in physical units: p, E*, h_rms, ḡ, λ_r/λ_s.
+fn scene_rows(sc: &asperity::input::scene::Scene) -> Vec<Line<'static>> {
+    [
         ("p", si(sc.pressure() * sc.stress_unit(), "Pa")),
         ("E*", si(sc.contact_modulus_pa(), "Pa")),
         ("h_rms", si(sc.spectrum().rms_height(), "m")),
         ("ḡ", sig(sc.rms_gradient(), 4)),
         ("λ_r/λ_s", sig(sc.spectrum().q_s() / sc.spectrum().q_r(), 4)),
-    ] {
-        lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
-    }
-    let block = Block::bordered().title(" parameters ");
-    f.render_widget(Paragraph::new(lines).block(block), area);
+    ]
+    .into_iter()
+    .map(|(k, v)| Line::from(format!(" {}{v}", pad(k, 9))))
+    .collect()
 }
 
 /// The panel's GFMD rows: while it runs the phase, the solver's steps and residual, the time

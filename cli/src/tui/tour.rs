@@ -231,125 +231,7 @@ impl Tour {
             .unwrap_or_else(|| preset::DEFAULT_PRESET.to_string());
         let mut steps = Vec::with_capacity(file.step.len());
         for (i, s) in file.step.iter().enumerate() {
-            let at = Some(i);
-            let key = if s.preset.is_some() { "preset" } else { "title" };
-            let source_name = s.preset.clone().unwrap_or_else(|| default_preset.clone());
-            let p = Preset::resolve(&source_name).map_err(|e| {
-                if s.preset.is_some() {
-                    err(at, key, e.to_string())
-                } else {
-                    err(None, "preset", e.to_string())
-                }
-            })?;
-            let scene = p.scene().map_err(|e| err(at, "preset", e.to_string()))?;
-            let model = match s.model {
-                Some(m) => Some(
-                    u8::try_from(m)
-                        .ok()
-                        .filter(|m| (1..=4).contains(m))
-                        .and_then(|m| Model::named(m).ok())
-                        .ok_or_else(|| err(at, "model", format!("{m}; allowed 1, 2, 3 or 4")))?,
-                ),
-                None => None,
-            };
-            let overrides = Overrides {
-                model,
-                pressure: s.pressure,
-                thickness_qr: s.thickness_qr,
-                surface_energy_j_m2: s.gamma,
-                ..Overrides::default()
-            };
-            let scene = match scene.apply(&overrides) {
-                Ok(scene) => scene,
-                Err(e) => {
-                    let key = match e.invalid_field().map(|f| f.to_string()) {
-                        Some(f) if f.contains("thickness") => "thickness_qr",
-                        Some(f) if f.contains("gamma") => "gamma",
-                        Some(f) if f.contains("pressure") => "pressure",
-                        _ => "title",
-                    };
-                    return Err(err(at, key, e.to_string()));
-                }
-            };
-            if s.charts.is_empty() || s.charts.len() > 3 {
-                return Err(err(at, "charts", format!("{} names; allowed 1 to 3", s.charts.len())));
-            }
-            let mut charts = [ChartKind::Pr, ChartKind::Area, ChartKind::Gap];
-            for (j, name) in s.charts.iter().enumerate() {
-                charts[j] = ChartKind::parse(name).ok_or_else(|| {
-                    let names: Vec<&str> = ChartKind::ALL.iter().map(|k| k.name()).collect();
-                    err(
-                        at,
-                        "charts",
-                        format!("unknown chart \"{name}\"; allowed {}", names.join(", ")),
-                    )
-                })?;
-            }
-            let caption_source: Vec<String> = s
-                .caption
-                .lines()
-                .map(|l| l.trim().to_string())
-                .filter(|l| !l.is_empty())
-                .collect();
-            let slot = crate::looks::model_slot(&scene.model());
-            let caption = caption_source
-                .iter()
-                .map(|l| caption::render(l, slot))
-                .collect::<std::result::Result<Vec<String>, String>>()
-                .map_err(|m| err(at, "caption", m))?;
-            if !(CAPTION_LINES.0..=CAPTION_LINES.1).contains(&caption.len()) {
-                return Err(err(
-                    at,
-                    "caption",
-                    format!(
-                        "{} lines; allowed {} to {}",
-                        caption.len(),
-                        CAPTION_LINES.0,
-                        CAPTION_LINES.1
-                    ),
-                ));
-            }
-            if let Some(l) = caption.iter().find(|l| l.chars().count() > CAPTION_WIDTH) {
-                return Err(err(
-                    at,
-                    "caption",
-                    format!("a line of {} characters; allowed {CAPTION_WIDTH}", l.chars().count()),
-                ));
-            }
-            if s.title.trim().is_empty() {
-                return Err(err(at, "title", "must not be empty".into()));
-            }
-            let select = match &s.select {
-                None => None,
-                Some(name) => Some(Knob::parse(name).ok_or_else(|| {
-                    err(
-                        at,
-                        "select",
-                        format!("unknown knob \"{name}\"; allowed {}", Knob::NAMES.join(", ")),
-                    )
-                })?),
-            };
-            for (j, p) in s.press.iter().enumerate() {
-                caption::validate(p, &Knob::NAMES)
-                    .map_err(|m| err(at, "press", format!("press {j} ({}): {m}", p.says.trim())))?;
-            }
-            for (j, c) in s.check.iter().enumerate() {
-                c.validate()
-                    .map_err(|m| err(at, "check", format!("check {j} ({}): {m}", c.says.trim())))?;
-            }
-            steps.push(Step {
-                title: s.title.trim().to_string(),
-                source: source_name,
-                preset: p,
-                scene,
-                charts,
-                models: s.models.unwrap_or(false),
-                caption,
-                select,
-                checks: s.check.clone(),
-                caption_source,
-                presses: s.press.clone(),
-            });
+            steps.push(parse_step(s, i, &default_preset, &err)?);
         }
         Ok(Tour {
             name: file.name,
@@ -385,6 +267,134 @@ impl Tour {
             message: format!("no such tour file or name; known tours: {}", known.join(", ")),
         })
     }
+}
+
+/// One `[[step]]` table validated (`i`: its index, `err` names the line and key).
+fn parse_step(
+    s: &StepFile,
+    i: usize,
+    default_preset: &str,
+    err: &dyn Fn(Option<usize>, &str, String) -> Error,
+) -> Result<Step> {
+    let at = Some(i);
+    let key = if s.preset.is_some() { "preset" } else { "title" };
+    let source_name = s.preset.clone().unwrap_or_else(|| default_preset.to_string());
+    let p = Preset::resolve(&source_name).map_err(|e| {
+        if s.preset.is_some() {
+            err(at, key, e.to_string())
+        } else {
+            err(None, "preset", e.to_string())
+        }
+    })?;
+    let scene = p.scene().map_err(|e| err(at, "preset", e.to_string()))?;
+    let model = match s.model {
+        Some(m) => Some(
+            u8::try_from(m)
+                .ok()
+                .filter(|m| (1..=4).contains(m))
+                .and_then(|m| Model::named(m).ok())
+                .ok_or_else(|| err(at, "model", format!("{m}; allowed 1, 2, 3 or 4")))?,
+        ),
+        None => None,
+    };
+    let overrides = Overrides {
+        model,
+        pressure: s.pressure,
+        thickness_qr: s.thickness_qr,
+        surface_energy_j_m2: s.gamma,
+        ..Overrides::default()
+    };
+    let scene = match scene.apply(&overrides) {
+        Ok(scene) => scene,
+        Err(e) => {
+            let key = match e.invalid_field().map(|f| f.to_string()) {
+                Some(f) if f.contains("thickness") => "thickness_qr",
+                Some(f) if f.contains("gamma") => "gamma",
+                Some(f) if f.contains("pressure") => "pressure",
+                _ => "title",
+            };
+            return Err(err(at, key, e.to_string()));
+        }
+    };
+    if s.charts.is_empty() || s.charts.len() > 3 {
+        return Err(err(at, "charts", format!("{} names; allowed 1 to 3", s.charts.len())));
+    }
+    let mut charts = [ChartKind::Pr, ChartKind::Area, ChartKind::Gap];
+    for (j, name) in s.charts.iter().enumerate() {
+        charts[j] = ChartKind::parse(name).ok_or_else(|| {
+            let names: Vec<&str> = ChartKind::ALL.iter().map(|k| k.name()).collect();
+            err(
+                at,
+                "charts",
+                format!("unknown chart \"{name}\"; allowed {}", names.join(", ")),
+            )
+        })?;
+    }
+    let (caption_source, caption) =
+        caption_of(&s.caption, crate::looks::model_slot(&scene.model())).map_err(|m| err(at, "caption", m))?;
+    if s.title.trim().is_empty() {
+        return Err(err(at, "title", "must not be empty".into()));
+    }
+    let select = match &s.select {
+        None => None,
+        Some(name) => Some(Knob::parse(name).ok_or_else(|| {
+            err(
+                at,
+                "select",
+                format!("unknown knob \"{name}\"; allowed {}", Knob::NAMES.join(", ")),
+            )
+        })?),
+    };
+    for (j, p) in s.press.iter().enumerate() {
+        caption::validate(p, &Knob::NAMES)
+            .map_err(|m| err(at, "press", format!("press {j} ({}): {m}", p.says.trim())))?;
+    }
+    for (j, c) in s.check.iter().enumerate() {
+        c.validate()
+            .map_err(|m| err(at, "check", format!("check {j} ({}): {m}", c.says.trim())))?;
+    }
+    Ok(Step {
+        title: s.title.trim().to_string(),
+        source: source_name,
+        preset: p,
+        scene,
+        charts,
+        models: s.models.unwrap_or(false),
+        caption,
+        select,
+        checks: s.check.clone(),
+        caption_source,
+        presses: s.press.clone(),
+    })
+}
+
+/// A caption's lines as written and rendered (`slot`: the model slot of the theory's colour);
+/// Err says what is wrong with it.
+fn caption_of(text: &str, slot: usize) -> std::result::Result<(Vec<String>, Vec<String>), String> {
+    let caption_source: Vec<String> = text
+        .lines()
+        .map(|l| l.trim().to_string())
+        .filter(|l| !l.is_empty())
+        .collect();
+    let caption = caption_source
+        .iter()
+        .map(|l| caption::render(l, slot))
+        .collect::<std::result::Result<Vec<String>, String>>()?;
+    if !(CAPTION_LINES.0..=CAPTION_LINES.1).contains(&caption.len()) {
+        return Err(format!(
+            "{} lines; allowed {} to {}",
+            caption.len(),
+            CAPTION_LINES.0,
+            CAPTION_LINES.1
+        ));
+    }
+    if let Some(l) = caption.iter().find(|l| l.chars().count() > CAPTION_WIDTH) {
+        return Err(format!(
+            "a line of {} characters; allowed {CAPTION_WIDTH}",
+            l.chars().count()
+        ));
+    }
+    Ok((caption_source, caption))
 }
 
 /// Available tours: (name, where), from `tours/` under the working directory and built in.
