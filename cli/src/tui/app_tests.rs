@@ -551,3 +551,45 @@ fn typed_gamma_off(a: &mut App) {
     a.set_typed(Param::Gamma, "0").unwrap();
     assert!(!a.scene.is_adhesive());
 }
+
+#[test]
+fn work_leaves_the_update_as_commands() {
+    use super::super::command::Command;
+    let kinds = |cs: &[Command]| -> Vec<&'static str> {
+        cs.iter()
+            .map(|c| match c {
+                Command::Compute(_) => "compute",
+                Command::StartGfmd { .. } => "gfmd",
+                Command::Export => "export",
+                Command::SaveCharts => "save",
+                Command::Quit => "quit",
+            })
+            .collect()
+    };
+    let mut a = app();
+    // the first frame computes; nothing else is asked for
+    assert_eq!(kinds(&a.take_commands()), ["compute"]);
+    assert!(a.take_commands().is_empty());
+    // a knob: one computation of the latest scene, however many steps came before
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Right);
+    let cs = a.take_commands();
+    assert_eq!(kinds(&cs), ["compute"]);
+    if let Command::Compute(r) = &cs[0] {
+        assert_eq!(r.scene, a.scene);
+    }
+    // e, s, g, in the order pressed; g again before the run started drops it
+    key(&mut a, KeyCode::Char('e'));
+    key(&mut a, KeyCode::Char('s'));
+    key(&mut a, KeyCode::Char('g'));
+    assert_eq!(kinds(&a.take_commands()), ["export", "save", "gfmd"]);
+    // g cancels the running one; g g starts one and cancels it before it was started
+    key(&mut a, KeyCode::Char('g'));
+    key(&mut a, KeyCode::Char('g'));
+    key(&mut a, KeyCode::Char('g'));
+    assert!(a.take_commands().is_empty());
+    // q: quit, after what came before it
+    key(&mut a, KeyCode::Char('e'));
+    key(&mut a, KeyCode::Char('q'));
+    assert_eq!(kinds(&a.take_commands()), ["export", "quit"]);
+}

@@ -3,6 +3,7 @@
 //! results are current, what the charts need). Keys change it in [`super::update`]; work that
 //! leaves the process (engine jobs, files) is done by [`super::effects`] and the worker.
 
+pub use super::command::Command;
 use super::data::{GfmdView, PointData, ScaleFrame, ScalesData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
 use super::kinds::{self as charts, ChartKind, Needs};
 pub use super::knobs::*;
@@ -95,7 +96,9 @@ pub struct App {
     /// The linear Pr chart has a log density axis (`y`).
     pub log_pr: bool,
     /// The last `e`/`s`: its scene, file name, number and the keys done under that number.
-    pub last_export: Option<(Scene, String, u32, Vec<Effect>)>,
+    /// The last `e`/`s`: its scene, file name, number, and whether `e` and `s` were done
+    /// under that number.
+    pub last_export: Option<(Scene, String, u32, [bool; 2])>,
     /// Overlay every model on the charts (`M`).
     pub all_models: bool,
     /// Results of the other models (`M`), by cache key.
@@ -163,15 +166,13 @@ pub struct App {
     pub map: Option<(String, Arc<Surface>)>,
     /// The background GFMD run (started with `g`).
     pub gfmd: GfmdState,
-    /// A GFMD run to start (taken by the event loop): run id, scene, cancel flag.
-    pub(crate) gfmd_request: Option<(u64, Scene, Arc<AtomicBool>)>,
     pub(crate) gfmd_cancel: Option<Arc<AtomicBool>>,
     pub(crate) gfmd_next: u64,
     /// The scene or the charts changed since the last request.
     pub(crate) pending: bool,
-    /// Work the last keys asked for that touches the outside world (files), done by
-    /// [`super::effects::apply`].
-    pub effects: Vec<Effect>,
+    /// Work the update asked for (files, GFMD, quitting), taken with the computation by
+    /// [`App::take_commands`].
+    pub commands: Vec<Command>,
 }
 
 impl App {
@@ -238,11 +239,10 @@ impl App {
             export_dir: PathBuf::from("."),
             map: None,
             gfmd: GfmdState::Idle,
-            gfmd_request: None,
             gfmd_cancel: None,
             gfmd_next: 0,
             pending: true,
-            effects: Vec::new(),
+            commands: Vec::new(),
         })
     }
 
@@ -288,12 +288,6 @@ impl App {
             needs: self.needs(),
             models,
         })
-    }
-
-    /// The GFMD run to start, if `g` asked for one: its id, scene and cancel flag (the event
-    /// loop builds the setup, `jobs::gfmd_setup`, and starts the thread).
-    pub fn take_gfmd_request(&mut self) -> Option<(u64, Scene, Arc<AtomicBool>)> {
-        self.gfmd_request.take()
     }
 
     /// The measured map GFMD runs on for `scene`: [`App::map`] while the scene's spectrum is
@@ -563,15 +557,6 @@ impl App {
             error: true,
         });
     }
-}
-
-/// Work an update asks for beyond the state (see [`super::effects`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Effect {
-    /// `e`: write the curves (CSV) and the scene (TOML).
-    Export,
-    /// `s`: save the visible charts as SVG and PNG.
-    SaveCharts,
 }
 
 /// Inserts into a reply map, forgetting everything when it grows past a few hundred entries.

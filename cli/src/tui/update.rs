@@ -1,7 +1,7 @@
-//! Key presses and worker replies → the next state ([`App`]) plus effects: a request for the
-//! worker (`pending`, taken by [`App::take_request`]), a GFMD run to start
-//! ([`App::take_gfmd_request`]), files to write ([`Effect`]). No terminal, no threads, no
-//! files here, so every key is unit-tested.
+//! Key presses and worker replies → the next state ([`App`]) plus [`Command`]s, the work it
+//! asks for: the worker's computation (`pending`, built when taken), a GFMD run to start,
+//! files to write, quitting; all leave by [`App::take_commands`]. No terminal, no threads,
+//! no files written here, so every key is unit-tested.
 
 use super::keys::{self, Action};
 use super::kinds::ChartKind;
@@ -11,8 +11,34 @@ use super::tour::Tour;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
 
 impl App {
+    /// The GFMD run to start, if `g` asked for one: its id, scene and cancel flag (the event
+    /// loop builds the setup, `jobs::gfmd_setup`, and starts the thread).
+    pub fn take_gfmd_request(&mut self) -> Option<(u64, Scene, Arc<AtomicBool>)> {
+        let i = self
+            .commands
+            .iter()
+            .position(|c| matches!(c, Command::StartGfmd { .. }))?;
+        match self.commands.remove(i) {
+            Command::StartGfmd { id, scene, cancel } => Some((id, scene, cancel)),
+            _ => None,
+        }
+    }
+
+    /// Every command the updates since the last call asked for, in order: the computation of
+    /// the current scene first (when it changed), then the queued ones, then `Quit` if asked.
+    pub fn take_commands(&mut self) -> Vec<Command> {
+        let mut out: Vec<Command> = self.take_request().map(Command::Compute).into_iter().collect();
+        out.append(&mut self.commands);
+        if self.quit {
+            out.push(Command::Quit);
+        }
+        out
+    }
+
     /// Takes a worker reply: kept only if it belongs to the current scene.
     pub fn on_reply(&mut self, reply: Reply) {
         match reply {
@@ -165,7 +191,7 @@ impl App {
                 self.set_scene(self.base.clone());
                 self.info(format!("reset to preset {}", self.preset.name));
             }
-            Action::Export => self.effects.push(Effect::Export),
+            Action::Export => self.commands.push(Command::Export),
             Action::AreaMode => {
                 let mut any = false;
                 for c in &mut self.charts {
@@ -200,7 +226,7 @@ impl App {
                     }
                 }
             }
-            Action::Save => self.effects.push(Effect::SaveCharts),
+            Action::Save => self.commands.push(Command::SaveCharts),
             Action::Compare => {
                 if self.scene.is_adhesive() {
                     self.compare = !self.compare;
