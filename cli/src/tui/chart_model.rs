@@ -210,6 +210,21 @@ pub fn path_a_r(app: &App) -> Option<f64> {
     Some(path_row(app).map_or(p.a_r, |b| b.a_r))
 }
 
+/// ū/h_rms on the branch the path is on: the point's, or where the path is on the
+/// unloading branch the load sweep's unloading gap at p* (interpolated in ln p* between its
+/// loads; None where the sweep has none there).
+pub fn path_gap(app: &App) -> Option<f64> {
+    if path_row(app).is_none() {
+        return app.gap_value();
+    }
+    let sw = app.sweep.as_ref()?.as_ref().ok()?;
+    let p = app.scene.pressure();
+    let k = sw.p.windows(2).position(|w| w[0] <= p && p <= w[1])?;
+    let (u0, u1) = (*sw.gap_unloading.get(k)?, *sw.gap_unloading.get(k + 1)?);
+    let t = (p / sw.p[k]).ln() / (sw.p[k + 1] / sw.p[k]).ln();
+    Some(u0 + t * (u1 - u0)).filter(|g| g.is_finite())
+}
+
 /// The point's unloading branch, where the path is on it.
 pub fn path_row(app: &App) -> Option<&super::data::BranchRow> {
     let p = current_point(app)?;

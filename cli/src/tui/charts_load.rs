@@ -260,7 +260,10 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
         });
     }
     let y = if gap {
-        app.gap_value()
+        path_gap(app)
+    } else if path_row(app).is_some() {
+        // σ̄_c* = p*/a_r of the unloading branch the path is on
+        path_a_r(app).map(|a| app.scene.pressure() / a)
     } else {
         current_point(app).map(|p| p.mean_contact_stress)
     };

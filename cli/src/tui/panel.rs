@@ -79,15 +79,14 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     let on_unloading = super::chart_model::path_row(app).is_some();
     let a_r = super::chart_model::path_a_r(app);
     row_styled("a_r", a_r.map_or_else(dash, |a| sig(a, 4)), stale_point);
-    row_styled(
-        "σ̄_c*",
-        pt.map_or_else(dash, |p| sig(p.mean_contact_stress, 4)),
-        stale_point,
-    );
-    let gap = match &app.gap {
-        Some(Ok(g)) => sig(*g, 4),
+    // σ̄_c* = p*/a_r of the branch the path is on
+    let stress = match (pt, a_r) {
+        (Some(_), Some(a)) if on_unloading => sig(app.scene.pressure() / a, 4),
+        (Some(p), _) => sig(p.mean_contact_stress, 4),
         _ => dash(),
     };
+    row_styled("σ̄_c*", stress, stale_point);
+    let gap = super::chart_model::path_gap(app).map_or_else(dash, |g| sig(g, 4));
     row_styled("ū/h_rms", gap, stale_gap && app.gap.is_some());
     // with adhesion: which branch the gap is of, and its bracket (docs/physics.md §5.1)
     if app.scene.is_adhesive() {
