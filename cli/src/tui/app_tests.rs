@@ -593,3 +593,19 @@ fn work_leaves_the_update_as_commands() {
     key(&mut a, KeyCode::Char('q'));
     assert_eq!(kinds(&a.take_commands()), ["export", "quit"]);
 }
+
+#[test]
+fn a_typed_value_out_of_range_is_named_by_its_knob() {
+    let mut a = app();
+    // select t·q_r and type a negative thickness
+    let i = a.params().iter().position(|p| *p == Param::Thickness).unwrap();
+    a.selected = i;
+    typed(&mut a, "-1");
+    let m = a.message.as_ref().expect("an error").text.clone();
+    assert!(m.contains("t·q_r") && !m.contains("load.thickness_qr"), "{m}");
+    let i = a.params().iter().position(|p| *p == Param::Pressure).unwrap();
+    a.selected = i;
+    typed(&mut a, "1e9");
+    let m = a.message.as_ref().expect("an error").text.clone();
+    assert!(m.contains("p*") && !m.contains("load.pressure"), "{m}");
+}

@@ -290,7 +290,8 @@ impl App {
                 self.edit = None;
                 if !text.trim().is_empty() {
                     if let Err(e) = self.set_typed(self.selected_param(), &text) {
-                        self.fail(e);
+                        // in the panel's words (t·q_r, p*), not the preset's keys
+                        self.fail(super::words::describe(&e));
                     }
                 }
             }
