@@ -141,9 +141,10 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
             }
         })
         .collect::<Result<_>>()?;
+    let colours = curve_colours(&scenes);
     let mut widths: Vec<(u8, f64, f64)> = Vec::new(); // (model, p*, Δ*) for the asymptotes
     if spec.x == XAxis::Stress {
-        for (c, scene) in spec.curve.iter().zip(&scenes) {
+        for ((c, scene), &colour) in spec.curve.iter().zip(&scenes).zip(&colours) {
             let points = match stress_curve(spec, scene) {
                 Ok((pts, e)) => {
                     data.notes.push(format!(
@@ -165,7 +166,7 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
                 name: c.label.clone(),
                 style: SeriesStyle::Line,
                 points,
-                colour: model_colour(model_slot(&scene.model())),
+                colour,
                 shape: Shape::Circle,
             });
         }
@@ -185,7 +186,7 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
             .zip(base)
             .map(|(scene, first)| refine::refine_from(first, &axes, &|x| sample_at(spec, scene, x)))
             .collect();
-        for ((c, scene), refined) in spec.curve.iter().zip(&scenes).zip(refined) {
+        for ((c, &colour), refined) in spec.curve.iter().zip(&colours).zip(refined) {
             for s in refined.samples.iter().filter(|s| s.y.is_none()) {
                 data.notes.push(format!(
                     "{} at x = {:e}: no value ({})",
@@ -194,7 +195,6 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
                     s.note.as_deref().unwrap_or("unavailable")
                 ));
             }
-            let colour = model_colour(model_slot(&scene.model()));
             let series = branch_series(&c.label, colour, &refined, &axes, x_name, &mut data.notes);
             data.series.extend(series);
         }
@@ -287,6 +287,26 @@ fn paper_series(spec: &FigureSpec, on: Option<&Measured>, data: &mut FigureData)
             shape: REFERENCE_MARKS[k % REFERENCE_MARKS.len()].1,
         });
     }
+}
+
+/// The colour of each curve: its model's, and for a later curve of a model already drawn
+/// (Fig. 8: one model at several thicknesses) the pins' colours in turn, so the curves are
+/// told apart.
+fn curve_colours(scenes: &[Scene]) -> Vec<Rgb> {
+    let slots: Vec<usize> = scenes.iter().map(|s| model_slot(&s.model())).collect();
+    let mut extra = 0;
+    slots
+        .iter()
+        .enumerate()
+        .map(|(i, &slot)| {
+            if slots[..i].contains(&slot) {
+                extra += 1;
+                crate::looks::PIN_COLOURS[(extra - 1) % crate::looks::PIN_COLOURS.len()]
+            } else {
+                model_colour(slot)
+            }
+        })
+        .collect()
 }
 
 /// The file colour of a role ([`crate::looks`]).
