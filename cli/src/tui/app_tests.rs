@@ -609,3 +609,21 @@ fn a_typed_value_out_of_range_is_named_by_its_knob() {
     let m = a.message.as_ref().expect("an error").text.clone();
     assert!(m.contains("p*") && !m.contains("load.pressure"), "{m}");
 }
+
+#[test]
+fn a_pin_of_the_unchanged_scene_neither_repeats_nor_renames_the_curve() {
+    let mut a = app();
+    super::super::worker::compute_now(&mut a, &mut Default::default());
+    key(&mut a, KeyCode::Char('P'));
+    assert_eq!(a.pins.len(), 1);
+    // the current curve keeps its name while the scene is the pinned one
+    let m = super::super::charts::build(&a, ChartKind::Pr);
+    assert!(
+        m.series.iter().any(|s| s.name == "theory"),
+        "{:?}",
+        m.series.iter().map(|s| &s.name).collect::<Vec<_>>()
+    );
+    key(&mut a, KeyCode::Char('P'));
+    assert_eq!(a.pins.len(), 1);
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("pinned already")));
+}

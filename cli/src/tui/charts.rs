@@ -286,8 +286,9 @@ fn draw_pins(m: &mut ChartModel, pins: &[Pin], now: &Scene) {
             m.yb = [m.yb[0].min(py), m.yb[1].max(py)];
         }
     }
-    // the current curve is named the same way, by what differs from the first pin
-    if let Some(first) = pins.first() {
+    // the current curve is named the same way, by what differs from the first pin (its own
+    // name while the scene is the pinned one)
+    if let Some(first) = pins.first().filter(|p| p.scene != *now) {
         let now_name = pins::label(now, &first.scene);
         for s in m.series.iter_mut().filter(|s| s.role == Role::Theory) {
             s.name = now_name.clone();

@@ -98,6 +98,9 @@ impl App {
         if curves.is_empty() {
             return self.info("nothing to pin yet (no current curve)");
         }
+        if self.pins.iter().any(|p| p.scene == self.scene) {
+            return self.info("this scene is pinned already: change a knob, then P pins the next");
+        }
         if self.pins.len() >= super::pins::MAX_PINS {
             self.pins.remove(0);
         }
