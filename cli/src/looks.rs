@@ -200,6 +200,113 @@ pub fn model_colour(slot: usize) -> Rgb {
     MODEL_COLOURS[slot.min(MODEL_COLOURS.len() - 1)]
 }
 
+/// The names of the colours of the table, as a caption says them (`{look:NAME}`, see
+/// [`describe`]).
+pub const COLOUR_NAMES: [(Rgb, &str); 24] = [
+    (Rgb(230, 159, 0), "orange"),
+    (Rgb(0, 158, 115), "bluish green"),
+    (Rgb(0, 114, 178), "blue"),
+    (Rgb(213, 94, 0), "vermillion"),
+    (Rgb(204, 121, 167), "reddish purple"),
+    (Rgb(140, 86, 75), "brown"),
+    (Rgb(127, 60, 141), "purple"),
+    (Rgb(221, 204, 119), "sand"),
+    (Rgb(34, 136, 51), "green"),
+    (Rgb(170, 51, 119), "wine"),
+    (Rgb(102, 102, 204), "indigo"),
+    (Rgb(128, 128, 128), "grey"),
+    (Rgb(0, 153, 136), "teal"),
+    (Rgb(187, 187, 187), "light grey"),
+    (Rgb(86, 180, 233), "sky blue"),
+    (Rgb(153, 136, 238), "lavender"),
+    (Rgb(240, 228, 66), "yellow"),
+    (Rgb(153, 153, 51), "olive"),
+    (Rgb(238, 102, 119), "rose"),
+    (Rgb(150, 150, 150), "grey"),
+    (Rgb(204, 51, 153), "magenta"),
+    (Rgb(68, 170, 153), "teal"),
+    (Rgb(102, 153, 204), "steel blue"),
+    (Rgb(119, 136, 153), "slate"),
+];
+
+/// Words that name a colour: a caption may say them only through a `{look:NAME}` reference.
+pub const COLOUR_WORDS: [&str; 24] = [
+    "orange",
+    "green",
+    "blue",
+    "vermillion",
+    "purple",
+    "brown",
+    "sand",
+    "wine",
+    "indigo",
+    "grey",
+    "gray",
+    "teal",
+    "sky",
+    "lavender",
+    "yellow",
+    "olive",
+    "rose",
+    "magenta",
+    "steel",
+    "slate",
+    "red",
+    "black",
+    "white",
+    "pink",
+];
+
+/// The name of a colour ("text colour" for [`Ink::Text`]).
+pub fn colour_name(ink: Ink) -> &'static str {
+    match ink {
+        Ink::Text => "black",
+        Ink::Rgb(c) => COLOUR_NAMES
+            .iter()
+            .find(|(rgb, _)| *rgb == c)
+            .map_or("unnamed", |(_, n)| n),
+    }
+}
+
+impl Role {
+    /// The roles a caption can name (`{look:NAME}`), and their names.
+    pub const NAMED: [(&'static str, Role); 16] = [
+        ("theory", Role::Theory),
+        ("model1", Role::Model(0)),
+        ("model2", Role::Model(1)),
+        ("model3", Role::Model(2)),
+        ("model4", Role::Model(3)),
+        ("adhesionless", Role::Compare),
+        ("closed-form", Role::Closed),
+        ("closed-form-2", Role::Closed2),
+        ("reference", Role::Reference),
+        ("gfmd", Role::Gfmd),
+        ("current", Role::Current),
+        ("wall", Role::Wall),
+        ("unloading", Role::Unloading),
+        ("jump-in", Role::JumpIn),
+        ("pull-off", Role::PullOff),
+        ("band", Role::Band),
+    ];
+
+    /// The role a caption names `name`.
+    pub fn named(name: &str) -> Option<Role> {
+        Role::NAMED.iter().find(|(n, _)| *n == name).map(|(_, r)| *r)
+    }
+}
+
+/// How a caption says the look of `role` (the first series of its kind in a chart whose
+/// current model is slot `model`): its colour and glyph, e.g. `light grey ·`; a look in the
+/// text colour is its glyph alone.
+pub fn describe(role: Role, model: usize) -> String {
+    let l = look(role, model, 0);
+    let g = l.glyph.symbol();
+    match l.ink {
+        Ink::Text => g.to_string(),
+        ink => format!("{} {g}", colour_name(ink)),
+    }
+}
+
 fn rgb(r: u8, g: u8, b: u8) -> Ink {
     Ink::Rgb(Rgb(r, g, b))
 }

@@ -10,8 +10,9 @@
 //! - a model is drawn in its colour, on screen and in the files;
 //! - at 80×24 no key entry is lost.
 //!
-//! And `asperity figure`: every figure's series are told apart the same way, and a model has
-//! one colour in every figure.
+//! And `asperity figure`: every figure's series are told apart the same way, a model's first
+//! curve has the model's colour in every figure, and its later curves (Fig. 8's thicknesses)
+//! colours of their own.
 
 mod common;
 
@@ -338,7 +339,7 @@ fn at_80x24_no_key_entry_is_lost() {
 }
 
 #[test]
-fn a_model_has_one_colour_in_every_figure() {
+fn a_model_has_one_colour_in_every_figure_and_its_curves_are_told_apart() {
     use asperity_cli::figure::compute::compute;
     use asperity_cli::figure::spec::{FigureSpec, BUILTIN};
     let mut seen: Vec<(String, u8)> = Vec::new();
@@ -350,15 +351,21 @@ fn a_model_has_one_colour_in_every_figure() {
         let chart = data.chart();
         let clashes = file_clashes(&chart);
         assert!(clashes.is_empty(), "figure {id}: {clashes:?}");
+        let mut colours = Vec::new();
         for (c, s) in spec.curve.iter().zip(&chart.series) {
             let n = c.model.or(spec.model).unwrap_or(3);
-            let want = if c.variant.is_some() {
+            if c.variant.is_some() {
                 continue;
+            }
+            if seen.contains(&(id.to_string(), n)) {
+                // a later curve of the same model (Fig. 8: thicknesses) in a colour of its own
+                assert!(!colours.contains(&s.colour), "figure {id}: {} repeats a colour", s.name);
             } else {
-                model_colour(usize::from(n) - 1)
-            };
-            assert_eq!(s.colour, want, "figure {id}: {} is not model {n}'s colour", s.name);
-            seen.push((id.to_string(), n));
+                let want = model_colour(usize::from(n) - 1);
+                assert_eq!(s.colour, want, "figure {id}: {} is not model {n}'s colour", s.name);
+                seen.push((id.to_string(), n));
+            }
+            colours.push(s.colour);
         }
     }
     // model 3 in figures 1, 2 and 7 at least, model 4 in 7 and 8

@@ -448,3 +448,45 @@ fn scale_view_plays_in_tmux() {
     assert!(s.contains("EXIT=0") && s.contains("TTY=icanon"), "{s}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The load history: at the jump-into-contact step, p* stepped up through the hysteresis
+/// window jumps in; stepped back down into the window the explorer stays on the unloading
+/// branch (a_r ≈ 0.43, not the loading branch's 0.09) and says why; `r` goes back.
+#[test]
+fn hysteresis_followed_in_tmux() {
+    if !have_tmux() {
+        eprintln!("SKIPPED hysteresis_followed_in_tmux: tmux is not installed");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("asperity-e2e-hyst-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let t = Tmux::start_with("hyst", &dir, "", "tour --step 11");
+    t.wait("the jump-in step", |s| s.contains("tour 11/11") && solved(s));
+    // ⇧→ twice (L is the same key): 1e-4 → 1.78e-4 → 3.16e-4, above jump-in
+    t.keys(&["L"]);
+    t.keys(&["L"]);
+    t.wait("the jump in", |s| s.contains("the loading branch ended at p*"));
+    // back down (h, fine steps) to 2.24e-4, inside the window
+    t.keys(&["h", "h", "h"]);
+    let s = t.wait("the unloading branch inside the window", |s| {
+        s.contains("unloading (jumped in)") && s.contains("2.239e-4") && solved(s)
+    });
+    let a_r: f64 = s
+        .lines()
+        .find_map(|l| l.split("│ a_r").nth(1))
+        .and_then(|v| v.split_whitespace().next())
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("no a_r row:\n{s}"));
+    assert!(
+        (0.40..0.47).contains(&a_r),
+        "a_r {a_r} is not the unloading branch's:\n{s}"
+    );
+    t.keys(&["r"]);
+    t.wait("the reset", |s| {
+        s.contains("loading (from small p*)") || !s.contains("jumped in")
+    });
+    t.keys(&["q"]);
+    let s = t.wait("a clean exit", |s| s.contains("TTY="));
+    assert!(s.contains("EXIT=0"), "{s}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

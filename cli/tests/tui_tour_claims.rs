@@ -229,7 +229,7 @@ fn a_step_selects_the_knob_its_caption_says_to_turn() {
         ("turn p*", Knob::Pressure),
         ("turn t·q_r", Knob::Thickness),
         ("turn γ_s", Knob::Gamma),
-        ("m turns the model", Knob::Model),
+        ("turns the model", Knob::Model),
     ];
     let mut seen = 0;
     for tour in tours() {

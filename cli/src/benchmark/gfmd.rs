@@ -11,48 +11,13 @@ use asperity::input::preset::Preset;
 /// from the two finest grids); in the full run also the preset grid (512²) with and without
 /// adhesion, for speed. Residual 1e-8 throughout.
 pub fn gfmd(quick: bool) -> Result<Report> {
-    use asperity::gfmd::{self as g, GfmdOptions, GfmdSetup, GridSpec, Problem};
-    use asperity::surface::heightmap::Surface;
-    use asperity::tolerances::GFMD_JOHNSON_REL;
+    use asperity::gfmd::{self as g, GfmdOptions, GfmdSetup, GridSpec};
     use std::sync::atomic::AtomicBool;
     let runs = if quick { 1 } else { 3 };
     let no = AtomicBool::new(false);
     let opts = GfmdOptions::default();
     let mut rep = Report::default();
-    // Johnson: h = Δ cos(2πx/λ), p̄ = 0.3 p_full, p_full = πE*Δ/λ; sin²(πc/λ) = p̄/p_full
-    let ladder: &[usize] = if quick { &[128, 512] } else { &[64, 128, 256, 512, 1024] };
-    for &nx in ladder {
-        let (da, amp, e) = (1e-8, 1e-8, 1e7);
-        let h: Vec<f64> = (0..nx * 2)
-            .map(|i| amp * (2.0 * std::f64::consts::PI * (i % nx) as f64 / nx as f64).cos())
-            .collect();
-        let surf = Surface::new(nx, 2, da, h)?;
-        let lambda = nx as f64 * da;
-        let p_full = std::f64::consts::PI * e * amp / lambda;
-        let pr = Problem {
-            surface: &surf,
-            modulus: e,
-            thickness: f64::INFINITY,
-            pressure: 0.3 * p_full,
-            gamma: 0.0,
-            range: 1e-9,
-        };
-        let sol = g::solve(&pr, &opts, &mut |_| {}, &no)?;
-        let width = sol.on_wall[..nx].iter().filter(|&&c| c).count() as f64 * da;
-        let c_exact = lambda / std::f64::consts::PI * 0.3f64.sqrt().asin();
-        let time = median_time(runs, || g::solve(&pr, &opts, &mut |_| {}, &no).map(|s| s.iterations));
-        rep.rungs.push(Rung {
-            solver: asperity::error::Solver::Gfmd.to_string(),
-            case: "Johnson sinusoid, p = 0.3 p_full".into(),
-            setting: format!("lambda/da = {nx} ({} steps)", sol.iterations),
-            default: nx == 512,
-            median_s: time,
-            runs,
-            errors: vec![("contact width vs closed form".into(), rel(width, 2.0 * c_exact))],
-            bound: (nx == 512).then_some(GFMD_JOHNSON_REL),
-            memory_bytes: Some((nx * 2 * 100) as u64),
-        });
-    }
+    johnson(quick, runs, &mut rep)?;
     // self-affine, refined in λ_s/Δa, against the extrapolated limit
     let ppws: &[f64] = &[4.0, 8.0, 16.0];
     let mut results = Vec::new();
@@ -132,4 +97,50 @@ pub fn gfmd(quick: bool) -> Result<Report> {
         }
     }
     Ok(rep)
+}
+
+/// Johnson's 1-D sinusoid: the contact width against its closed form, λ/Δa from 64 (128 in
+/// the quick run) to 1024.
+fn johnson(quick: bool, runs: usize, rep: &mut Report) -> Result<()> {
+    use asperity::gfmd::{self as g, GfmdOptions, Problem};
+    use asperity::surface::heightmap::Surface;
+    use asperity::tolerances::GFMD_JOHNSON_REL;
+    use std::sync::atomic::AtomicBool;
+    let no = AtomicBool::new(false);
+    let opts = GfmdOptions::default();
+    // Johnson: h = Δ cos(2πx/λ), p̄ = 0.3 p_full, p_full = πE*Δ/λ; sin²(πc/λ) = p̄/p_full
+    let ladder: &[usize] = if quick { &[128, 512] } else { &[64, 128, 256, 512, 1024] };
+    for &nx in ladder {
+        let (da, amp, e) = (1e-8, 1e-8, 1e7);
+        let h: Vec<f64> = (0..nx * 2)
+            .map(|i| amp * (2.0 * std::f64::consts::PI * (i % nx) as f64 / nx as f64).cos())
+            .collect();
+        let surf = Surface::new(nx, 2, da, h)?;
+        let lambda = nx as f64 * da;
+        let p_full = std::f64::consts::PI * e * amp / lambda;
+        let pr = Problem {
+            surface: &surf,
+            modulus: e,
+            thickness: f64::INFINITY,
+            pressure: 0.3 * p_full,
+            gamma: 0.0,
+            range: 1e-9,
+        };
+        let sol = g::solve(&pr, &opts, &mut |_| {}, &no)?;
+        let width = sol.on_wall[..nx].iter().filter(|&&c| c).count() as f64 * da;
+        let c_exact = lambda / std::f64::consts::PI * 0.3f64.sqrt().asin();
+        let time = median_time(runs, || g::solve(&pr, &opts, &mut |_| {}, &no).map(|s| s.iterations));
+        rep.rungs.push(Rung {
+            solver: asperity::error::Solver::Gfmd.to_string(),
+            case: "Johnson sinusoid, p = 0.3 p_full".into(),
+            setting: format!("lambda/da = {nx} ({} steps)", sol.iterations),
+            default: nx == 512,
+            median_s: time,
+            runs,
+            errors: vec![("contact width vs closed form".into(), rel(width, 2.0 * c_exact))],
+            bound: (nx == 512).then_some(GFMD_JOHNSON_REL),
+            memory_bytes: Some((nx * 2 * 100) as u64),
+        });
+    }
+    Ok(())
 }

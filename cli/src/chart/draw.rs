@@ -185,38 +185,7 @@ where
             }
             continue;
         }
-        let pattern: Vec<f64> = s.style.pattern().unwrap_or(&[]).iter().map(|l| l * unit).collect();
-        // the strokes in pixels, so a dash is as long on a log axis as on a linear one
-        for run in &runs {
-            let pixels: Vec<(f64, f64)> = run
-                .iter()
-                .map(|p| {
-                    let b = chart.backend_coord(p);
-                    (f64::from(b.0), f64::from(b.1))
-                })
-                .collect();
-            for stroke in dashes(&pixels, &pattern, (1.0, 1.0)) {
-                root.draw(&PathElement::new(pixel_path(&stroke), line))
-                    .map_err(io_err)?;
-            }
-        }
-        // the legend's sample: the pattern over 2·half pixels (at most four strokes)
-        let sample = dashes(&[(0.0, 0.0), (f64::from(2 * half), 0.0)], &pattern, (1.0, 1.0));
-        let stroke = |k: usize| pixel_path(sample.get(k).or(sample.last()).map_or(&[][..], |v| v.as_slice()));
-        let strokes = [stroke(0), stroke(1), stroke(2), stroke(3)];
-        // an empty series still gets its legend entry
-        chart
-            .draw_series(Vec::<PathElement<(f64, f64)>>::new())
-            .map_err(io_err)?
-            .label(name)
-            .legend(move |(lx, ly)| {
-                let at = |k: usize| strokes[k].iter().map(|q| (q.0, q.1)).collect::<Vec<_>>();
-                EmptyElement::at((lx, ly))
-                    + PathElement::new(at(0), line)
-                    + PathElement::new(at(1), line)
-                    + PathElement::new(at(2), line)
-                    + PathElement::new(at(3), line)
-            });
+        line_series(root, &mut chart, &runs, name, s.style, line, (unit, half))?;
     }
     chart
         .configure_series_labels()
@@ -227,6 +196,57 @@ where
         .border_style(RGBColor(160, 160, 160))
         .draw()
         .map_err(io_err)?;
+    Ok(())
+}
+
+/// A line series: its runs as strokes of its pattern (in pixels, so a dash is as long on a
+/// log axis as on a linear one) and its legend entry; `unit` is a pattern unit, `half` half
+/// the legend sample's length (pixels).
+fn line_series<'a, DB, CT>(
+    root: &DrawingArea<DB, Shift>,
+    chart: &mut ChartContext<'a, DB, CT>,
+    runs: &[Vec<(f64, f64)>],
+    name: String,
+    style: SeriesStyle,
+    line: ShapeStyle,
+    (unit, half): (f64, i32),
+) -> std::io::Result<()>
+where
+    DB: DrawingBackend + 'a,
+    CT: CoordTranslate<From = (f64, f64)>,
+{
+    let pattern: Vec<f64> = style.pattern().unwrap_or(&[]).iter().map(|l| l * unit).collect();
+    // the strokes in pixels, so a dash is as long on a log axis as on a linear one
+    for run in runs {
+        let pixels: Vec<(f64, f64)> = run
+            .iter()
+            .map(|p| {
+                let b = chart.as_coord_spec().translate(p);
+                (f64::from(b.0), f64::from(b.1))
+            })
+            .collect();
+        for stroke in dashes(&pixels, &pattern, (1.0, 1.0)) {
+            root.draw(&PathElement::new(pixel_path(&stroke), line))
+                .map_err(io_err)?;
+        }
+    }
+    // the legend's sample: the pattern over 2·half pixels (at most four strokes)
+    let sample = dashes(&[(0.0, 0.0), (f64::from(2 * half), 0.0)], &pattern, (1.0, 1.0));
+    let stroke = |k: usize| pixel_path(sample.get(k).or(sample.last()).map_or(&[][..], |v| v.as_slice()));
+    let strokes = [stroke(0), stroke(1), stroke(2), stroke(3)];
+    // an empty series still gets its legend entry
+    chart
+        .draw_series(Vec::<PathElement<(f64, f64)>>::new())
+        .map_err(io_err)?
+        .label(name)
+        .legend(move |(lx, ly)| {
+            let at = |k: usize| strokes[k].iter().map(|q| (q.0, q.1)).collect::<Vec<_>>();
+            EmptyElement::at((lx, ly))
+                + PathElement::new(at(0), line)
+                + PathElement::new(at(1), line)
+                + PathElement::new(at(2), line)
+                + PathElement::new(at(3), line)
+        });
     Ok(())
 }
 

@@ -20,20 +20,7 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
         }
     };
     let label = |v: f64| tick_label(round_sig(v, 3));
-    // legend lines
-    let mut legend: Vec<String> = vec![String::new()];
-    for (i, s) in spec.series.iter().enumerate() {
-        let entry = format!("{} {} ({})", GLYPHS[i % GLYPHS.len()], s.name, s.style.name());
-        let last = legend.last_mut().expect("non-empty");
-        if !last.is_empty() && last.chars().count() + 3 + entry.chars().count() > width {
-            legend.push(entry);
-        } else {
-            if !last.is_empty() {
-                last.push_str("   ");
-            }
-            last.push_str(&entry);
-        }
-    }
+    let legend = legend_lines(spec, width);
     // rows: title, y title, plot, x axis line, x ticks, x title, legend
     let plot_h = height.saturating_sub(5 + legend.len()).max(4);
     let mut ylabels: Vec<String> = vec![String::new(); plot_h];
@@ -114,25 +101,8 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
         out.push_str(&format!("{:>m$}|{}\n", ylabels[r], line.trim_end(), m = margin));
     }
     out.push_str(&format!("{:>m$}+{}\n", "", "-".repeat(plot_w), m = margin));
-    // x tick labels at round values, left out where they would overlap
-    let mut ticks = vec![' '; plot_w + margin + 12];
-    let mut free_from = 0usize;
-    for v in nice_ticks(x0, x1, spec.x_log, (plot_w / 12).max(2)) {
-        let t = tx(v, x0, x1, spec.x_log);
-        let text = label(v);
-        let pos = margin + 1 + (t * (plot_w - 1) as f64).round() as usize;
-        let n = text.chars().count();
-        let start = pos.saturating_sub(n / 2);
-        if start < free_from || start + n > ticks.len() {
-            continue;
-        }
-        ticks[pos] = '|';
-        for (j, ch) in text.chars().enumerate() {
-            ticks[start + j] = ch;
-        }
-        free_from = start + n + 2;
-    }
-    out.push_str(ticks.iter().collect::<String>().trim_end());
+    let ticks = x_tick_row(spec, (x0, x1), margin, plot_w);
+    out.push_str(ticks.trim_end());
     out.push('\n');
     let axis = format!("{}{}", spec.x_label, if spec.x_log { "  (log)" } else { "" });
     let pad = (margin + 1 + plot_w / 2).saturating_sub(axis.chars().count() / 2);
@@ -155,6 +125,54 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
         .collect::<Vec<_>>()
         .join("\n")
         + "\n"
+}
+
+/// The legend: one entry per series (glyph, name, line style), wrapped to `width`.
+fn legend_lines(spec: &ChartSpec, width: usize) -> Vec<String> {
+    let mut legend: Vec<String> = vec![String::new()];
+    for (i, s) in spec.series.iter().enumerate() {
+        let entry = format!("{} {} ({})", GLYPHS[i % GLYPHS.len()], s.name, s.style.name());
+        let last = legend.last_mut().expect("non-empty");
+        if !last.is_empty() && last.chars().count() + 3 + entry.chars().count() > width {
+            legend.push(entry);
+        } else {
+            if !last.is_empty() {
+                last.push_str("   ");
+            }
+            last.push_str(&entry);
+        }
+    }
+    legend
+}
+
+/// The x tick labels at round values, left out where they would overlap, under a plot of
+/// `plot_w` columns after a `margin`.
+fn x_tick_row(spec: &ChartSpec, (x0, x1): (f64, f64), margin: usize, plot_w: usize) -> String {
+    let tx = |v: f64| {
+        if spec.x_log {
+            (v / x0).ln() / (x1 / x0).ln()
+        } else {
+            (v - x0) / (x1 - x0)
+        }
+    };
+    let mut ticks = vec![' '; plot_w + margin + 12];
+    let mut free_from = 0usize;
+    for v in nice_ticks(x0, x1, spec.x_log, (plot_w / 12).max(2)) {
+        let t = tx(v);
+        let text = tick_label(round_sig(v, 3));
+        let pos = margin + 1 + (t * (plot_w - 1) as f64).round() as usize;
+        let n = text.chars().count();
+        let start = pos.saturating_sub(n / 2);
+        if start < free_from || start + n > ticks.len() {
+            continue;
+        }
+        ticks[pos] = '|';
+        for (j, ch) in text.chars().enumerate() {
+            ticks[start + j] = ch;
+        }
+        free_from = start + n + 2;
+    }
+    ticks.iter().collect()
 }
 
 /// Round tick values in [lo, hi]: decades (and 2, 5 times them when there are few) on a log

@@ -316,6 +316,11 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
         eprintln!();
     }
     let (out, extrapolation, ensemble) = study?;
+    report(args, out, extrapolation, ensemble)
+}
+
+/// Prints a single run with its study (ladder, seeds) as the format asks, after the notes.
+fn report(args: &GfmdArgs, out: GfmdResult, extrapolation: Option<Ladder>, ensemble: Option<Ensemble>) -> Result<()> {
     if let Some(r) = out.reduction.as_ref().filter(|r| !r.rescaled && r.full.gamma > 0.0) {
         eprintln!(
             "asperity gfmd: note: --raw-adhesion: gamma_glo {:.3} on this grid against {:.3} in the full system",

@@ -250,94 +250,97 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
                 cycle,
             })
         }
-        Over::Thickness | Over::Gamma => {
-            let knob = if args.over == Over::Thickness {
-                Knob::Thickness
-            } else {
-                Knob::Gamma
-            };
-            let spec = KnobSpec {
-                knob,
-                from: args.from,
-                to: args.to,
-                points: args.points,
-            };
-            spec.validate()?;
-            let (preset, scene) = args.scene.resolve(args.pressure)?;
-            let first = knob.apply(&scene, args.from);
-            let points = knob::knob_sweep(&scene, &spec, &Options::default(), true, None)?;
-            let window_edges =
-                asperity::theory::hysteresis::knob_edges(&scene, knob, &points, &Options::default().adhesion, None)?;
-            let unit = asperity::theory::energy::energy_unit(&scene);
-            let mut notes = Vec::new();
-            let mut failed = Vec::new();
-            let rows: Vec<Row> = points
-                .iter()
-                .map(|pt| {
-                    let mut r = SweepRow::empty(scene.pressure());
-                    match &pt.result {
-                        Ok(e) => {
-                            r.a_r = e.stats.a_r;
-                            r.mean_contact_stress = e.stats.mean_contact_stress;
-                            r.contact_stress_variance = e.stats.contact_stress_variance;
-                            r.elastic_energy = e.elastic_energy;
-                            r.elastic_energy_reduced = e.elastic_energy / unit;
-                            r.converged = true;
-                            r.a_r_unloading = e.unloading_a_r.unwrap_or(f64::NAN);
-                            r.branches = e.branches.len().max(1);
-                            match &pt.gap {
-                                Ok(Some(g)) => {
-                                    r.mean_gap_rel = g.relative;
-                                    r.mean_gap = g.metres;
-                                    r.mean_gap_error = g.error;
-                                    r.mean_gap_lower_rel = g.lower;
-                                    r.mean_gap_upper_rel = g.upper;
-                                    r.contact_load = g.contact_load;
-                                    if let Some(u) = g.unloading {
-                                        r.mean_gap_unloading_rel = u.relative;
-                                        r.mean_gap_unloading_error = u.error;
-                                        r.mean_gap_unloading_lower_rel = u.lower;
-                                        r.contact_load_unloading = u.contact_load;
-                                    }
-                                }
-                                Ok(None) => {}
-                                Err(e) => notes.push(format!("value {:e}: mean gap unavailable: {e}", pt.value)),
+        Over::Thickness | Over::Gamma => knob_output(args),
+    }
+}
+
+/// `--over thickness|gamma`: the knob sweep at `--pressure`, each row what `run` gives there.
+fn knob_output(args: &SweepArgs) -> Result<SweepOutput> {
+    let knob = if args.over == Over::Thickness {
+        Knob::Thickness
+    } else {
+        Knob::Gamma
+    };
+    let spec = KnobSpec {
+        knob,
+        from: args.from,
+        to: args.to,
+        points: args.points,
+    };
+    spec.validate()?;
+    let (preset, scene) = args.scene.resolve(args.pressure)?;
+    let first = knob.apply(&scene, args.from);
+    let points = knob::knob_sweep(&scene, &spec, &Options::default(), true, None)?;
+    let window_edges =
+        asperity::theory::hysteresis::knob_edges(&scene, knob, &points, &Options::default().adhesion, None)?;
+    let unit = asperity::theory::energy::energy_unit(&scene);
+    let mut notes = Vec::new();
+    let mut failed = Vec::new();
+    let rows: Vec<Row> = points
+        .iter()
+        .map(|pt| {
+            let mut r = SweepRow::empty(scene.pressure());
+            match &pt.result {
+                Ok(e) => {
+                    r.a_r = e.stats.a_r;
+                    r.mean_contact_stress = e.stats.mean_contact_stress;
+                    r.contact_stress_variance = e.stats.contact_stress_variance;
+                    r.elastic_energy = e.elastic_energy;
+                    r.elastic_energy_reduced = e.elastic_energy / unit;
+                    r.converged = true;
+                    r.a_r_unloading = e.unloading_a_r.unwrap_or(f64::NAN);
+                    r.branches = e.branches.len().max(1);
+                    match &pt.gap {
+                        Ok(Some(g)) => {
+                            r.mean_gap_rel = g.relative;
+                            r.mean_gap = g.metres;
+                            r.mean_gap_error = g.error;
+                            r.mean_gap_lower_rel = g.lower;
+                            r.mean_gap_upper_rel = g.upper;
+                            r.contact_load = g.contact_load;
+                            if let Some(u) = g.unloading {
+                                r.mean_gap_unloading_rel = u.relative;
+                                r.mean_gap_unloading_error = u.error;
+                                r.mean_gap_unloading_lower_rel = u.lower;
+                                r.contact_load_unloading = u.contact_load;
                             }
                         }
-                        Err(e) => {
-                            failed.push(pt.value);
-                            notes.push(format!("value {:e}: {e}", pt.value));
-                        }
+                        Ok(None) => {}
+                        Err(e) => notes.push(format!("value {:e}: mean gap unavailable: {e}", pt.value)),
                     }
-                    Row::new(r, &pt.scene)
-                })
-                .collect();
-            let note = (!notes.is_empty()).then(|| {
-                format!(
-                    "{} of {} values did not converge or lack the gap; their cells are empty (null): {}",
-                    notes.len(),
-                    points.len(),
-                    notes.join("; ")
-                )
-            });
-            Ok(SweepOutput {
-                preset: preset.name.clone(),
-                over: args.over,
-                scene: first.summary(),
-                rows,
-                evaluations: points.len(),
-                full_contact_pressure: asperity::theory::gap::full_contact_pressure(&first),
-                monotone: true,
-                failed_loads: failed.iter().map(|_| scene.pressure()).collect(),
-                failed_values: failed,
-                note,
-                jump_in_pressure: None,
-                pull_off_pressure: None,
-                window_edges,
-                cycle: None,
-            })
-        }
-    }
+                }
+                Err(e) => {
+                    failed.push(pt.value);
+                    notes.push(format!("value {:e}: {e}", pt.value));
+                }
+            }
+            Row::new(r, &pt.scene)
+        })
+        .collect();
+    let note = (!notes.is_empty()).then(|| {
+        format!(
+            "{} of {} values did not converge or lack the gap; their cells are empty (null): {}",
+            notes.len(),
+            points.len(),
+            notes.join("; ")
+        )
+    });
+    Ok(SweepOutput {
+        preset: preset.name.clone(),
+        over: args.over,
+        scene: first.summary(),
+        rows,
+        evaluations: points.len(),
+        full_contact_pressure: asperity::theory::gap::full_contact_pressure(&first),
+        monotone: true,
+        failed_loads: failed.iter().map(|_| scene.pressure()).collect(),
+        failed_values: failed,
+        note,
+        jump_in_pressure: None,
+        pull_off_pressure: None,
+        window_edges,
+        cycle: None,
+    })
 }
 
 /// Runs `asperity sweep`; returns the text to print.

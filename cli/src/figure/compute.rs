@@ -141,9 +141,10 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
             }
         })
         .collect::<Result<_>>()?;
+    let colours = curve_colours(&scenes);
     let mut widths: Vec<(u8, f64, f64)> = Vec::new(); // (model, p*, Δ*) for the asymptotes
     if spec.x == XAxis::Stress {
-        for (c, scene) in spec.curve.iter().zip(&scenes) {
+        for ((c, scene), &colour) in spec.curve.iter().zip(&scenes).zip(&colours) {
             let points = match stress_curve(spec, scene) {
                 Ok((pts, e)) => {
                     data.notes.push(format!(
@@ -165,7 +166,7 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
                 name: c.label.clone(),
                 style: SeriesStyle::Line,
                 points,
-                colour: model_colour(model_slot(&scene.model())),
+                colour,
                 shape: Shape::Circle,
             });
         }
@@ -185,7 +186,7 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
             .zip(base)
             .map(|(scene, first)| refine::refine_from(first, &axes, &|x| sample_at(spec, scene, x)))
             .collect();
-        for ((c, scene), refined) in spec.curve.iter().zip(&scenes).zip(refined) {
+        for ((c, &colour), refined) in spec.curve.iter().zip(&colours).zip(refined) {
             for s in refined.samples.iter().filter(|s| s.y.is_none()) {
                 data.notes.push(format!(
                     "{} at x = {:e}: no value ({})",
@@ -194,11 +195,21 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
                     s.note.as_deref().unwrap_or("unavailable")
                 ));
             }
-            let colour = model_colour(model_slot(&scene.model()));
             let series = branch_series(&c.label, colour, &refined, &axes, x_name, &mut data.notes);
             data.series.extend(series);
         }
     }
+    closed_form_series(spec, &widths, &mut data);
+    paper_series(spec, on, &mut data);
+    if let Some(choice) = gfmd {
+        gfmd_series(spec, &preset, &scenes, choice, on, &mut data)?;
+    }
+    Ok(data)
+}
+
+/// The closed forms of the figure (eq. (18), the small- and large-stress asymptotes of Pr
+/// with the Δ* of their model's curve in `widths`: (model, p*, Δ*)).
+fn closed_form_series(spec: &FigureSpec, widths: &[(u8, f64, f64)], data: &mut FigureData) {
     for cf in &spec.closed_form {
         let points: Vec<DataPoint> = match cf.kind {
             ClosedFormKind::Eq18 => x_values(spec)
@@ -244,6 +255,11 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
             shape: Shape::Circle,
         });
     }
+}
+
+/// The values \[S\] states, one series per source (left out on a measured surface `on`, with
+/// a note).
+fn paper_series(spec: &FigureSpec, on: Option<&Measured>, data: &mut FigureData) {
     let mut labels: Vec<&str> = Vec::new();
     if let (Some(m), false) = (on, spec.paper.is_empty()) {
         data.notes.push(format!(
@@ -271,10 +287,26 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
             shape: REFERENCE_MARKS[k % REFERENCE_MARKS.len()].1,
         });
     }
-    if let Some(choice) = gfmd {
-        gfmd_series(spec, &preset, &scenes, choice, on, &mut data)?;
-    }
-    Ok(data)
+}
+
+/// The colour of each curve: its model's, and for a later curve of a model already drawn
+/// (Fig. 8: one model at several thicknesses) the pins' colours in turn, so the curves are
+/// told apart.
+fn curve_colours(scenes: &[Scene]) -> Vec<Rgb> {
+    let slots: Vec<usize> = scenes.iter().map(|s| model_slot(&s.model())).collect();
+    let mut extra = 0;
+    slots
+        .iter()
+        .enumerate()
+        .map(|(i, &slot)| {
+            if slots[..i].contains(&slot) {
+                extra += 1;
+                crate::looks::PIN_COLOURS[(extra - 1) % crate::looks::PIN_COLOURS.len()]
+            } else {
+                model_colour(slot)
+            }
+        })
+        .collect()
 }
 
 /// The file colour of a role ([`crate::looks`]).
@@ -307,6 +339,64 @@ pub fn gfmd_run(preset: &Preset, scene: &Scene, choice: GfmdChoice, map: Option<
     gfmd::run(&setup, &opts, &mut |_| {}, &AtomicBool::new(false))
 }
 
+/// A stress-axis figure's GFMD: Pr(σ*) of one run per distinct scene of the curves.
+fn gfmd_pr_series(
+    spec: &FigureSpec,
+    preset: &Preset,
+    scenes: &[Scene],
+    choice: GfmdChoice,
+    on: Option<&Measured>,
+    data: &mut FigureData,
+) {
+    let map = on.and_then(|m| m.map.as_ref());
+    let mut done: Vec<(f64, f64, f64)> = Vec::new();
+    for (c, s) in spec.curve.iter().zip(scenes) {
+        let key = (s.pressure(), s.thickness_qr(), s.surface_energy_j_m2());
+        if !spec.gfmd || done.contains(&key) {
+            continue;
+        }
+        done.push(key);
+        let name = if spec.curve.iter().all(|c| c.thickness_qr.is_none()) {
+            "GFMD".to_string()
+        } else {
+            format!("GFMD, {}", c.label)
+        };
+        match gfmd_run(preset, s, choice, map) {
+            Ok(r) => {
+                let map_words = match on {
+                    Some(m) => format!("on {}", m.name()),
+                    None => format!("{}, seed {}", map_description(&r), choice.seed),
+                };
+                data.notes.push(format!(
+                    "{name}: {}² grid, {map_words}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}{}",
+                    r.grid,
+                    r.stats.a_r,
+                    r.stats.mean_contact_stress,
+                    r.stats.contact_stress_variance,
+                    r.theory.as_ref().map_or(String::new(), |t| format!(
+                        "; theory on the same map ({}): a_r = {:.4}",
+                        t.model, t.stats.a_r
+                    ))
+                ));
+                data.series.push(DataSeries {
+                    name: format!("{name} ({}²)", r.grid),
+                    style: SeriesStyle::Points,
+                    colour: role_colour(Role::Gfmd),
+                    shape: look(Role::Gfmd, 0, 0).shape,
+                    points: r
+                        .stats
+                        .pr
+                        .points()
+                        .into_iter()
+                        .map(|(x, y)| point(x, Some(y), None))
+                        .collect(),
+                });
+            }
+            Err(e) => data.notes.push(format!("{name}: {e}")),
+        }
+    }
+}
+
 fn gfmd_series(
     spec: &FigureSpec,
     preset: &Preset,
@@ -319,52 +409,7 @@ fn gfmd_series(
     let base = on_surface(curve_scene(preset, &spec.overrides(), &Overrides::default())?, on)?;
     let map = on.and_then(|m| m.map.as_ref());
     if spec.x == XAxis::Stress {
-        let mut done: Vec<(f64, f64, f64)> = Vec::new();
-        for (c, s) in spec.curve.iter().zip(scenes) {
-            let key = (s.pressure(), s.thickness_qr(), s.surface_energy_j_m2());
-            if !spec.gfmd || done.contains(&key) {
-                continue;
-            }
-            done.push(key);
-            let name = if spec.curve.iter().all(|c| c.thickness_qr.is_none()) {
-                "GFMD".to_string()
-            } else {
-                format!("GFMD, {}", c.label)
-            };
-            match gfmd_run(preset, s, choice, map) {
-                Ok(r) => {
-                    let map_words = match on {
-                        Some(m) => format!("on {}", m.name()),
-                        None => format!("{}, seed {}", map_description(&r), choice.seed),
-                    };
-                    data.notes.push(format!(
-                        "{name}: {}² grid, {map_words}: a_r = {:.4}, σ̄_c* = {:.4}, ⟨δσ_c²⟩* = {:.4}{}",
-                        r.grid,
-                        r.stats.a_r,
-                        r.stats.mean_contact_stress,
-                        r.stats.contact_stress_variance,
-                        r.theory.as_ref().map_or(String::new(), |t| format!(
-                            "; theory on the same map ({}): a_r = {:.4}",
-                            t.model, t.stats.a_r
-                        ))
-                    ));
-                    data.series.push(DataSeries {
-                        name: format!("{name} ({}²)", r.grid),
-                        style: SeriesStyle::Points,
-                        colour: role_colour(Role::Gfmd),
-                        shape: look(Role::Gfmd, 0, 0).shape,
-                        points: r
-                            .stats
-                            .pr
-                            .points()
-                            .into_iter()
-                            .map(|(x, y)| point(x, Some(y), None))
-                            .collect(),
-                    });
-                }
-                Err(e) => data.notes.push(format!("{name}: {e}")),
-            }
-        }
+        gfmd_pr_series(spec, preset, scenes, choice, on, data);
         return Ok(());
     }
     let mut points = Vec::new();

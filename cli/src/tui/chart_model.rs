@@ -73,6 +73,9 @@ pub struct ChartModel {
     pub clip_y: bool,
     /// Model slot of the current scene (the theory's colour).
     pub model: usize,
+    /// The y axis hugs the data (two labels, a fine step) instead of three round labels
+    /// that may double its span (σ̄_c*: the models' differences stay visible).
+    pub fit_y: bool,
 }
 
 impl ChartModel {
@@ -171,6 +174,7 @@ pub fn base(kind: ChartKind, title: String, x: &str, y: &str, xs: Scale, ys: Sca
         stale: false,
         clip_y: false,
         model: 2,
+        fit_y: false,
     }
 }
 
@@ -198,11 +202,47 @@ pub fn current_point(app: &App) -> Option<&PointData> {
     app.point.as_ref().and_then(|r| r.as_ref().ok())
 }
 
+/// a_r on the branch the user's path is on: the point's, or its unloading branch's where the
+/// path has jumped in and the load lies in the window (the engine's point is the loading
+/// branch's).
+pub fn path_a_r(app: &App) -> Option<f64> {
+    let p = current_point(app)?;
+    Some(path_row(app).map_or(p.a_r, |b| b.a_r))
+}
+
+/// ū/h_rms on the branch the path is on: the point's, or where the path is on the
+/// unloading branch the load sweep's unloading gap at p* (interpolated in ln p* between its
+/// loads; None where the sweep has none there).
+pub fn path_gap(app: &App) -> Option<f64> {
+    if path_row(app).is_none() {
+        return app.gap_value();
+    }
+    let sw = app.sweep.as_ref()?.as_ref().ok()?;
+    let p = app.scene.pressure();
+    let k = sw.p.windows(2).position(|w| w[0] <= p && p <= w[1])?;
+    let (u0, u1) = (*sw.gap_unloading.get(k)?, *sw.gap_unloading.get(k + 1)?);
+    let t = (p / sw.p[k]).ln() / (sw.p[k + 1] / sw.p[k]).ln();
+    Some(u0 + t * (u1 - u0)).filter(|g| g.is_finite())
+}
+
+/// The point's unloading branch, where the path is on it.
+pub fn path_row(app: &App) -> Option<&super::data::BranchRow> {
+    let p = current_point(app)?;
+    (app.history.on == super::history::Path::Unloading)
+        .then(|| p.branches.iter().find(|b| b.name == "unloading"))
+        .flatten()
+}
+
 pub fn references<'a>(
     app: &'a App,
     quantity: &'a str,
 ) -> impl Iterator<Item = &'a asperity::input::preset::ReferencePoint> {
-    app.preset.reference.iter().filter(move |r| r.quantity == quantity)
+    // a measured surface is another system: the preset's reference values are not its own
+    let own = super::words::surface_name(&app.scene).is_none();
+    app.preset
+        .reference
+        .iter()
+        .filter(move |r| own && r.quantity == quantity)
 }
 
 /// Legend name of a reference point: its source, and its conditions where they differ from
@@ -263,6 +303,8 @@ pub fn load_x(app: &App) -> [f64; 2] {
     [a.log10(), b.log10()]
 }
 
+/// Marks the current load: a guide at `x` and the current point (drawn under the reference
+/// points, which a caption may point at).
 pub fn add_current(m: &mut ChartModel, x: f64, y: Option<f64>) {
     m.vlines.insert(
         0,
@@ -273,11 +315,20 @@ pub fn add_current(m: &mut ChartModel, x: f64, y: Option<f64>) {
         },
     );
     if let Some(y) = y.filter(|y| y.is_finite()) {
-        m.series.push(Series {
-            name: "p*".into(),
-            points: vec![(x, y)],
-            role: Role::Current,
-            draw: Draw::Points,
-        });
+        // under the reference points: a caption points at them, and the guide marks p*
+        let at = m
+            .series
+            .iter()
+            .position(|s| s.role == Role::Reference)
+            .unwrap_or(m.series.len());
+        m.series.insert(
+            at,
+            Series {
+                name: "p*".into(),
+                points: vec![(x, y)],
+                role: Role::Current,
+                draw: Draw::Points,
+            },
+        );
     }
 }

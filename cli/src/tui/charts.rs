@@ -76,8 +76,16 @@ pub fn build_own(app: &App, kind: ChartKind) -> ChartModel {
 }
 
 fn pr_linear(app: &App) -> ChartModel {
-    let title = format!("Pr(σ*) at p* = {}", super::words::sig(app.scene.pressure(), 3));
-    let mut m = base(ChartKind::Pr, title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, Scale::Linear);
+    let mut title = format!("Pr(σ*) at p* = {}", super::words::sig(app.scene.pressure(), 3));
+    if super::chart_model::path_row(app).is_some() {
+        // the engine computes the loading branch's distribution only
+        title.push_str(", loading branch");
+    }
+    // `y`: a log density axis, for the small distributions beside a large one (thick slabs
+    // beside thin ones, the tails)
+    let ys = if app.log_pr { Scale::Log10 } else { Scale::Linear };
+    let mut m = base(ChartKind::Pr, title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, ys);
+    m.clip_y = app.log_pr;
     let Some(p) = current_point(app) else {
         set_empty(&mut m, app, app.point.as_ref());
         return m;
@@ -124,7 +132,7 @@ fn pr_linear(app: &App) -> ChartModel {
     m.xb = xb.unwrap_or([0.0, 1.0]);
     // the sampled tails are flat zeros: end the axis where every curve is below 10⁻³ of the
     // peak
-    let peak = yb.map_or(0.0, |b| b[1]);
+    let peak = yb.map_or(0.0, |b| if app.log_pr { 10f64.powf(b[1]) } else { b[1] });
     let last = m
         .series
         .iter()
@@ -146,7 +154,12 @@ fn pr_linear(app: &App) -> ChartModel {
             },
         );
     }
-    m.yb = plot::guard(0.0, yb.map_or(1.0, |b| b[1]).max(0.0) * 1.05);
+    m.yb = if app.log_pr {
+        let top = yb.map_or(0.0, |b| b[1]);
+        [top - 4.0, top + 0.1]
+    } else {
+        plot::guard(0.0, yb.map_or(1.0, |b| b[1]).max(0.0) * 1.05)
+    };
     m
 }
 
@@ -273,8 +286,9 @@ fn draw_pins(m: &mut ChartModel, pins: &[Pin], now: &Scene) {
             m.yb = [m.yb[0].min(py), m.yb[1].max(py)];
         }
     }
-    // the current curve is named the same way, by what differs from the first pin
-    if let Some(first) = pins.first() {
+    // the current curve is named the same way, by what differs from the first pin (its own
+    // name while the scene is the pinned one)
+    if let Some(first) = pins.first().filter(|p| p.scene != *now) {
         let now_name = pins::label(now, &first.scene);
         for s in m.series.iter_mut().filter(|s| s.role == Role::Theory) {
             s.name = now_name.clone();

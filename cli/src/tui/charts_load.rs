@@ -71,7 +71,7 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
         });
     }
     let p = app.scene.pressure();
-    add_current(&mut m, p, current_point(app).map(|pt| y_of(p, pt.a_r)));
+    add_current(&mut m, p, path_a_r(app).map(|a| y_of(p, a)));
     let (_, yb) = data_bounds(&m);
     m.xb = load_x(app);
     let yb = yb.unwrap_or([0.0, 1.0]);
@@ -260,7 +260,10 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
         });
     }
     let y = if gap {
-        app.gap_value()
+        path_gap(app)
+    } else if path_row(app).is_some() {
+        // σ̄_c* = p*/a_r of the unloading branch the path is on
+        path_a_r(app).map(|a| app.scene.pressure() / a)
     } else {
         current_point(app).map(|p| p.mean_contact_stress)
     };
@@ -276,6 +279,7 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
         // the gap may be negative with adhesion: show what comes, and 0 for scale
         plot::guard(yb[0].min(0.0), yb[1])
     } else {
+        m.fit_y = true;
         plot::guard(yb[0], yb[1])
     };
     m
@@ -368,7 +372,7 @@ pub fn thickness(app: &App) -> ChartModel {
     m.series.extend(refs);
     let t = app.scene.thickness_qr();
     if t.is_finite() && t >= t0 && t <= t1 {
-        add_current(&mut m, t, current_point(app).map(|p| p.a_r));
+        add_current(&mut m, t, path_a_r(app));
     }
     let (_, yb) = data_bounds(&m);
     m.xb = [t0.log10(), t1.log10()];

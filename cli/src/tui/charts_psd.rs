@@ -90,7 +90,7 @@ pub fn psd(app: &App) -> ChartModel {
 
 /// The table, the interpolant the theory integrates, and the self-affine fit.
 fn tabulated(m: &mut ChartModel, t: &Tabulated) {
-    let name = super::panel::surface_name_of(t);
+    let name = super::words::surface_name_of(t);
     m.title = format!("C(q) of {name}");
     m.series.push(Series {
         name: "table".into(),

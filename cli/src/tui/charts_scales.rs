@@ -25,8 +25,9 @@ pub fn scales(app: &App) -> ChartModel {
         "σ* = σ/E*ḡ",
         "Pr",
         Scale::Linear,
-        Scale::Linear,
+        Scale::Log10,
     );
+    m.clip_y = true;
     let (Some(d), Some((i, n, f))) = (app.scales_data(), app.scale_frame()) else {
         empty(app, &mut m);
         return m;
@@ -69,16 +70,18 @@ pub fn scales(app: &App) -> ChartModel {
             name: "−σ_a*(q)".into(),
         });
     }
-    // the σ* axis stays put while the frames run; the density axis follows the frame (a
-    // coarse frame's peak is many times the final one's)
+    // both axes stay put while the frames run (the frames share their σ* range): a log
+    // density axis from the highest peak of any frame (the coarsest, a spike) down to 10⁻³
+    // of the final frame's, so the first frames and the last are read on the same axes
     m.xb = plot::guard(lo, hi);
-    let peak = m
-        .series
-        .iter()
-        .flat_map(|s| s.points.iter().map(|p| p.1))
-        .filter(|y| y.is_finite())
-        .fold(0.0f64, f64::max);
-    m.yb = plot::guard(0.0, peak.max(1e-300) * 1.05);
+    let peak = |pr: &[(f64, f64)]| pr.iter().map(|p| p.1).filter(|y| y.is_finite()).fold(0.0f64, f64::max);
+    let top = d.frames.iter().map(|fr| peak(&fr.pr)).fold(0.0f64, f64::max);
+    let last = d.frames.last().map_or(top, |fr| peak(&fr.pr));
+    m.yb = if top > 0.0 && last > 0.0 {
+        plot::guard(last.log10() - 3.0, top.log10() + 0.1)
+    } else {
+        [-3.0, 0.0]
+    };
     m
 }
 

@@ -480,7 +480,12 @@ impl GfmdView {
 fn invariant_rows(r: &asperity::gfmd::reduction::Reduction) -> Vec<(String, String)> {
     let mut v = vec![(
         "λr/λs".to_string(),
-        format!("{} (full {})", r.reduced.bandwidth, r.full.bandwidth),
+        // ratios like 200.000000000 (a quotient of lengths) in four significant digits
+        format!(
+            "{} (full {})",
+            super::words::sig(r.reduced.bandwidth, 4),
+            super::words::sig(r.full.bandwidth, 4)
+        ),
     )];
     if r.full.gamma > 0.0 {
         v.push((

@@ -70,19 +70,30 @@ fn write(path: &Path, text: &str) -> Result<()> {
     std::fs::write(path, text).map_err(|e| Error::io_file("write", "", path, &e))
 }
 
-/// Writes the files; returns their paths.
+/// Writes the files under the next free number; returns their paths.
 pub fn export(app: &App) -> Result<Vec<String>> {
+    export_as(app, next_number(&app.export_dir, &safe_name(app))?)
+}
+
+/// Writes the files as `asperity-NAME-N…`; returns their paths.
+pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
     let name = safe_name(app);
     let dir = &app.export_dir;
-    let n = next_number(dir, &name)?;
     let stem = format!("asperity-{name}-{n}");
     let mut paths = Vec::new();
 
     let mut preset = scene_preset(&app.preset, &app.scene);
     preset.name = stem.clone();
     let toml_text = toml::to_string(&preset).map_err(|e| Error::io("serialise the scene", e))?;
-    let header =
-        format!("# Scene exported by the asperity explorer; open it with `asperity tui --preset {stem}.toml`.\n");
+    let header = match &app.scene.spectrum() {
+        asperity::surface::spectrum::Spectrum::Tabulated(t) => format!(
+            "# Scene exported by the asperity explorer on the measured spectrum of {src}.\n\
+             # A preset names no surface file: [surface] below is the preset's, not the scene's.\n\
+             # Open the scene with `asperity tui --preset {stem}.toml --surface {src}` (--psd for a PSD table).\n",
+            src = t.source
+        ),
+        _ => format!("# Scene exported by the asperity explorer; open it with `asperity tui --preset {stem}.toml`.\n"),
+    };
     let path = dir.join(format!("{stem}.toml"));
     write(&path, &(header + &toml_text))?;
     paths.push(path.display().to_string());
@@ -361,7 +372,7 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
 
 /// The file number of the next `e` or `s`: one past the highest number of any
 /// `asperity-NAME-N…` file in `dir`, so the two keys share one sequence and never overwrite.
-fn next_number(dir: &Path, name: &str) -> Result<u32> {
+pub fn next_number(dir: &Path, name: &str) -> Result<u32> {
     let prefix = format!("asperity-{name}-");
     let highest = std::fs::read_dir(dir)
         .map_err(|e| Error::io_file("read", "", dir, &e))?
@@ -384,9 +395,13 @@ fn next_number(dir: &Path, name: &str) -> Result<u32> {
     Ok(highest + 1)
 }
 
-fn safe_name(app: &App) -> String {
-    app.preset
-        .name
+/// The scene's name as a file name (`asperity-NAME-N…`): the measured surface's file stem,
+/// else the preset's name.
+pub fn safe_name(app: &App) -> String {
+    let surface = super::words::surface_name(&app.scene)
+        .map(|f| f.rsplit_once('.').map_or(f.clone(), |(stem, _)| stem.to_string()));
+    surface
+        .unwrap_or_else(|| app.preset.name.clone())
         .chars()
         .map(|c| {
             if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
@@ -401,6 +416,11 @@ fn safe_name(app: &App) -> String {
 /// `s`: writes the visible charts (each once) as SVG and PNG into the export directory, as
 /// `asperity-NAME-N-CHART.svg|png` (N never overwrites); returns the paths.
 pub fn export_charts(app: &App) -> Result<Vec<String>> {
+    export_charts_as(app, next_number(&app.export_dir, &safe_name(app))?)
+}
+
+/// `s` under number `n`.
+pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
     let mut kinds: Vec<ChartKind> = Vec::new();
     for k in app.charts {
         if !kinds.contains(&k) {
@@ -417,16 +437,16 @@ pub fn export_charts(app: &App) -> Result<Vec<String>> {
     }
     let name = safe_name(app);
     let dir = &app.export_dir;
-    let n = next_number(dir, &name)?;
     let sc = &app.scene;
     let t = if sc.thickness_qr().is_infinite() {
         "∞".to_string()
     } else {
         super::plot::format_number(sc.thickness_qr())
     };
+    let system = super::words::surface_name(sc).unwrap_or_else(|| app.preset.name.clone());
     let note = format!(
         "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
-        app.preset.name,
+        system,
         sc.model().label(),
         super::plot::format_number(sc.surface_energy_j_m2())
     );

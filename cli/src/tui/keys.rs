@@ -62,8 +62,22 @@ pub enum Action {
     CaptionUp,
     /// Open or close this help.
     Help,
+    /// Show the focused chart on the whole screen, or all panels again.
+    Zoom,
+    /// The Pr chart's density axis: linear or log.
+    LogY,
+    /// Cancel what runs (typing, an overlay, the tour, GFMD); never quits.
+    Cancel,
     /// Quit.
     Quit,
+}
+
+/// The help's last row: where the manual is (the repository's docs/).
+pub const MANUAL: &str = "manual     docs/explorer.md · docs/tour-format.md · docs/commands.md";
+
+/// Rows of the help: the key table's, then [`MANUAL`].
+pub fn help_rows() -> usize {
+    TABLE.len() + 1
 }
 
 /// One key: a code plus the modifiers it needs.
@@ -270,12 +284,26 @@ pub const TABLE: &[Binding] = &[
         help: "this help",
     },
     Binding {
-        keys: &[
-            Key(KeyCode::Char('q'), NONE),
-            Key(KeyCode::Esc, NONE),
-            Key(KeyCode::Char('c'), CTRL),
-        ],
-        label: "q Esc ^C",
+        keys: &[Key(KeyCode::Char('z'), NONE)],
+        label: "z",
+        action: Action::Zoom,
+        help: "the focused chart full screen (z again: all panels)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('y'), NONE)],
+        label: "y",
+        action: Action::LogY,
+        help: "Pr chart: linear / log density axis (small distributions, tails)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Esc, NONE)],
+        label: "Esc",
+        action: Action::Cancel,
+        help: "cancel: typing, a list, the tour, a GFMD run (never quits)",
+    },
+    Binding {
+        keys: &[Key(KeyCode::Char('q'), NONE), Key(KeyCode::Char('c'), CTRL)],
+        label: "q ^C",
         action: Action::Quit,
         help: "quit",
     },
@@ -305,6 +333,36 @@ pub fn action_for(ev: &KeyEvent) -> Option<Action> {
         .map(|b| b.action)
 }
 
+/// The key event a caption's `{key:KEY}` names, written as the help writes keys (`m`,
+/// `Space`, `⇧→`, `PgUp`, `F1`; `←`/`→` move along a tour): None where no action is bound to
+/// it.
+pub fn parse_label(label: &str) -> Option<KeyEvent> {
+    let (code, m) = match label {
+        "Space" => (KeyCode::Char(' '), NONE),
+        "Enter" => (KeyCode::Enter, NONE),
+        "Esc" => (KeyCode::Esc, NONE),
+        "Tab" => (KeyCode::Tab, NONE),
+        "PgUp" => (KeyCode::PageUp, NONE),
+        "PgDn" => (KeyCode::PageDown, NONE),
+        "F1" => (KeyCode::F(1), NONE),
+        "↑" => (KeyCode::Up, NONE),
+        "↓" => (KeyCode::Down, NONE),
+        "←" => return Some(KeyEvent::new(KeyCode::Left, NONE)),
+        "→" => return Some(KeyEvent::new(KeyCode::Right, NONE)),
+        "⇧←" => (KeyCode::Left, SHIFT),
+        "⇧→" => (KeyCode::Right, SHIFT),
+        s => {
+            let mut cs = s.chars();
+            match (cs.next(), cs.next()) {
+                (Some(c), None) => (KeyCode::Char(c), NONE),
+                _ => return None,
+            }
+        }
+    };
+    let ev = KeyEvent::new(code, m);
+    action_for(&ev).map(|_| ev)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -325,6 +383,16 @@ mod tests {
         assert_eq!(action_for(&ev(KeyCode::Char('q'), NONE)), Some(Action::Quit));
         assert_eq!(action_for(&ev(KeyCode::Char('x'), NONE)), None);
         assert_eq!(action_for(&ev(KeyCode::Left, CTRL)), None);
+    }
+
+    #[test]
+    fn the_manual_the_help_names_exists() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        let pages: Vec<&str> = MANUAL.split_whitespace().filter(|w| w.ends_with(".md")).collect();
+        assert_eq!(pages.len(), 3);
+        for p in pages {
+            assert!(root.join(p).is_file(), "{p}");
+        }
     }
 
     #[test]

@@ -6,13 +6,16 @@
 //!   [`knobs`] (the panel's parameters and their pure stepping), [`kinds`] (the chart kinds),
 //!   [`pins`] (pinned curves and their names),
 //!   [`protocol`] (requests, replies and cache keys of the worker), [`tour`] (teaching tours,
-//!   TOML files in `tours/`), [`data`] (the plain data of engine results), [`progress`] (the
-//!   GFMD job's phases, progress reports and the estimate of the time left).
-//! - update: [`update`] (a key or a reply → the next state plus effects), [`turn`] (a knob
+//!   TOML files in `tours/`), [`caption`] (a caption's checked references to looks and
+//!   keys), [`tour_check`] (a caption's claims as data), [`data`] (the plain data of engine results), [`progress`] (the GFMD job's phases,
+//!   progress reports and the estimate of the time left).
+//! - update: [`update`] (a key or a reply → the next state plus effects), [`history`] (the
+//!   branch of a hysteresis the user's path has reached), [`turn`] (a knob
 //!   stepped on its grid or typed), [`models`] (the model picked or cycled), [`update_gfmd`]
 //!   (`g` and the GFMD job's replies), [`keys`] (the key table, used for dispatch and for the
 //!   `?` help).
-//! - effects: [`worker`] (the compute thread: generations, cancellation, caches), [`jobs`]
+//! - effects: [`command`] (the work an update asks for, one enum the event loop runs),
+//!   [`worker`] (the compute thread: generations, cancellation, caches), [`jobs`]
 //!   (the engine jobs: point, sweeps, GFMD), [`effects`] (the files of `e` and `s`),
 //!   [`export`] (CSV + TOML, SVG + PNG).
 //! - drawing: [`charts`], [`chart_model`], [`charts_load`] (the charts as plain data, drawn by
@@ -39,14 +42,17 @@
 //! is left to compute (`all_drawn_ms`: the point refined to full accuracy, the other charts).
 
 pub mod app;
+pub mod caption;
 pub mod chart_model;
 pub mod charts;
 pub mod charts_load;
 pub mod charts_psd;
 pub mod charts_scales;
+pub mod command;
 pub mod data;
 pub mod effects;
 pub mod export;
+pub mod history;
 pub mod jobs;
 pub mod keys;
 pub mod kinds;
@@ -62,6 +68,7 @@ pub mod progress;
 pub mod protocol;
 pub mod state;
 pub mod tour;
+pub mod tour_check;
 pub mod turn;
 pub mod update;
 pub mod update_gfmd;
@@ -72,6 +79,7 @@ pub mod worker;
 use app::App;
 use asperity::error::{Error, Result};
 use asperity::input::preset::Preset;
+use command::Command;
 use protocol::Reply;
 use ratatui::crossterm::event::{self, Event, KeyEventKind};
 use std::io::Write;
@@ -193,35 +201,39 @@ pub fn run_app(mut app: App) -> Result<()> {
     let mut trace = Trace::new();
     let panic_key = std::env::var("ASPERITY_PANIC_KEY").ok().and_then(|k| k.chars().next());
     loop {
-        if let Some(req) = app.take_request() {
-            if trace.started.is_none_or(|(g, _)| g != req.gen) && trace.file.is_some() {
-                trace.started = Some((req.gen, Instant::now()));
-                trace.point_logged = false;
-                trace.charts_logged = false;
-                trace.final_logged = false;
+        // the one route out of the update: its commands, run in order
+        for cmd in app.take_commands() {
+            match cmd {
+                Command::Compute(req) => {
+                    if trace.started.is_none_or(|(g, _)| g != req.gen) && trace.file.is_some() {
+                        trace.started = Some((req.gen, Instant::now()));
+                        trace.point_logged = false;
+                        trace.charts_logged = false;
+                        trace.final_logged = false;
+                    }
+                    // a point already current stays on screen until replaced
+                    worker.submit(req);
+                }
+                Command::StartGfmd { id, scene, cancel } => {
+                    let tx = gfmd_tx.clone();
+                    let setup = jobs::gfmd_setup(&app.preset, &scene, app.map_of(&scene));
+                    app.message = Some(app::Message {
+                        text: format!("GFMD started on a {0}x{0} grid (g cancels)", jobs::grid_side(&setup)),
+                        error: false,
+                    });
+                    jobs::spawn_gfmd(id, setup, cancel, move |r| {
+                        let _ = tx.send(Msg::Reply(Box::new(r)));
+                    })
+                    .map_err(|e| Error::io("start the GFMD thread", e))?;
+                }
+                Command::Export | Command::SaveCharts => effects::run(&mut app, &cmd),
+                Command::Quit => return Ok(()),
             }
-            // a point already current stays on screen until replaced
-            worker.submit(req);
-        }
-        if let Some((id, scene, cancel)) = app.take_gfmd_request() {
-            let tx = gfmd_tx.clone();
-            let setup = jobs::gfmd_setup(&app.preset, &scene, app.map_of(&scene));
-            app.message = Some(app::Message {
-                text: format!("GFMD started on a {0}x{0} grid (g cancels)", jobs::grid_side(&setup)),
-                error: false,
-            });
-            jobs::spawn_gfmd(id, setup, cancel, move |r| {
-                let _ = tx.send(Msg::Reply(Box::new(r)));
-            })
-            .map_err(|e| Error::io("start the GFMD thread", e))?;
         }
         terminal
             .draw(|f| view::draw(f, &app))
             .map_err(|e| Error::io("draw", e))?;
         trace.after_draw(&app);
-        if app.quit {
-            return Ok(());
-        }
         // block until something happens (tick only while busy or playing)
         let first = if app.animating() {
             match rx.recv_timeout(TICK) {
@@ -249,7 +261,6 @@ pub fn run_app(mut app: App) -> Result<()> {
                         panic!("ASPERITY_PANIC_KEY pressed");
                     }
                     app.on_key(k);
-                    effects::apply(&mut app);
                     if app.has_pending() {
                         trace.started = Some((app.gen + 1, t0));
                         trace.point_logged = false;

@@ -75,16 +75,18 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
             lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
         }
     };
-    row_styled("a_r", pt.map_or_else(dash, |p| sig(p.a_r, 4)), stale_point);
-    row_styled(
-        "σ̄_c*",
-        pt.map_or_else(dash, |p| sig(p.mean_contact_stress, 4)),
-        stale_point,
-    );
-    let gap = match &app.gap {
-        Some(Ok(g)) => sig(*g, 4),
+    // the branch the load history has reached (the engine's point is the loading branch's)
+    let on_unloading = super::chart_model::path_row(app).is_some();
+    let a_r = super::chart_model::path_a_r(app);
+    row_styled("a_r", a_r.map_or_else(dash, |a| sig(a, 4)), stale_point);
+    // σ̄_c* = p*/a_r of the branch the path is on
+    let stress = match (pt, a_r) {
+        (Some(_), Some(a)) if on_unloading => sig(app.scene.pressure() / a, 4),
+        (Some(p), _) => sig(p.mean_contact_stress, 4),
         _ => dash(),
     };
+    row_styled("σ̄_c*", stress, stale_point);
+    let gap = super::chart_model::path_gap(app).map_or_else(dash, |g| sig(g, 4));
     row_styled("ū/h_rms", gap, stale_gap && app.gap.is_some());
     // with adhesion: which branch the gap is of, and its bracket (docs/physics.md §5.1)
     if app.scene.is_adhesive() {
@@ -111,9 +113,13 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         for (k, v) in &p.extra {
             row_styled(k, v.clone(), stale_point);
         }
-        // hysteresis: every branch at this load, ◀ the one shown
+        // hysteresis: every branch at this load, ◀ the one the path is on
+        if !p.branches.is_empty() {
+            row_styled("path", app.history.label(), stale_point);
+        }
         for b in &p.branches {
-            let mark = if b.shown { " ◀" } else { "" };
+            let followed = if on_unloading { b.name == "unloading" } else { b.shown };
+            let mark = if followed { " ◀" } else { "" };
             let stab = if b.stable || b.name == "unstable" {
                 ""
             } else {
@@ -147,19 +153,24 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         },
     );
     // the scene in physical units (shown when the panel is tall enough)
-    let sc = &app.scene;
     lines.push(Line::from(Span::styled("─ scene ─", pal.dim())));
-    for (k, v) in [
+    lines.extend(scene_rows(&app.scene));
+    let block = Block::bordered().title(" parameters ");
+    f.render_widget(Paragraph::new(lines).block(block), area);
+}
+
+/// The scene in physical units: p, E*, h_rms, ḡ, λ_r/λ_s.
+fn scene_rows(sc: &asperity::input::scene::Scene) -> Vec<Line<'static>> {
+    [
         ("p", si(sc.pressure() * sc.stress_unit(), "Pa")),
         ("E*", si(sc.contact_modulus_pa(), "Pa")),
         ("h_rms", si(sc.spectrum().rms_height(), "m")),
         ("ḡ", sig(sc.rms_gradient(), 4)),
         ("λ_r/λ_s", sig(sc.spectrum().q_s() / sc.spectrum().q_r(), 4)),
-    ] {
-        lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
-    }
-    let block = Block::bordered().title(" parameters ");
-    f.render_widget(Paragraph::new(lines).block(block), area);
+    ]
+    .into_iter()
+    .map(|(k, v)| Line::from(format!(" {}{v}", pad(k, 9))))
+    .collect()
 }
 
 /// The panel's GFMD rows: while it runs the phase, the solver's steps and residual, the time
@@ -222,21 +233,7 @@ fn gfmd_rows(app: &App) -> Vec<(String, String)> {
     v
 }
 
-/// The file a measured spectrum came from (its name, without the directories), or None for
-/// the preset's own spectrum.
-pub fn surface_name(scene: &asperity::input::scene::Scene) -> Option<String> {
-    match scene.spectrum() {
-        asperity::surface::spectrum::Spectrum::Tabulated(t) => Some(surface_name_of(t)),
-        _ => None,
-    }
-}
-
-/// A table's file name without the directories.
-pub fn surface_name_of(t: &asperity::surface::tabulated::Tabulated) -> String {
-    std::path::Path::new(&t.source)
-        .file_name()
-        .map_or_else(|| t.source.clone(), |n| n.to_string_lossy().into_owned())
-}
+pub use super::words::{surface_name, surface_name_of};
 
 /// A value with an SI prefix: 250.0 kPa, 0.7766 µm.
 pub fn si(x: f64, unit: &str) -> String {

@@ -3,6 +3,7 @@
 //! results are current, what the charts need). Keys change it in [`super::update`]; work that
 //! leaves the process (engine jobs, files) is done by [`super::effects`] and the worker.
 
+pub use super::command::Command;
 use super::data::{GfmdView, PointData, ScaleFrame, ScalesData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
 use super::kinds::{self as charts, ChartKind, Needs};
 pub use super::knobs::*;
@@ -90,6 +91,14 @@ pub struct App {
     pub caption_scroll: usize,
     /// The panel the chart selector (`v`) changes.
     pub focus: usize,
+    /// The focused chart fills the screen (`z`).
+    pub zoom: bool,
+    /// The linear Pr chart has a log density axis (`y`).
+    pub log_pr: bool,
+    /// The last `e`/`s`: its scene, file name, number and the keys done under that number.
+    /// The last `e`/`s`: its scene, file name, number, and whether `e` and `s` were done
+    /// under that number.
+    pub last_export: Option<(Scene, String, u32, [bool; 2])>,
     /// Overlay every model on the charts (`M`).
     pub all_models: bool,
     /// Results of the other models (`M`), by cache key.
@@ -120,6 +129,8 @@ pub struct App {
     pub playing: bool,
     /// The tour, when one is being walked.
     pub tour: Option<TourState>,
+    /// The branch of a hysteresis the user's path has reached (`r` resets it).
+    pub history: super::history::LoadHistory,
     /// Show the adhesionless comparison in the Pr chart.
     pub compare: bool,
     /// Status-bar message (cleared by the next key).
@@ -155,15 +166,13 @@ pub struct App {
     pub map: Option<(String, Arc<Surface>)>,
     /// The background GFMD run (started with `g`).
     pub gfmd: GfmdState,
-    /// A GFMD run to start (taken by the event loop): run id, scene, cancel flag.
-    pub(crate) gfmd_request: Option<(u64, Scene, Arc<AtomicBool>)>,
     pub(crate) gfmd_cancel: Option<Arc<AtomicBool>>,
     pub(crate) gfmd_next: u64,
     /// The scene or the charts changed since the last request.
     pub(crate) pending: bool,
-    /// Work the last keys asked for that touches the outside world (files), done by
-    /// [`super::effects::apply`].
-    pub effects: Vec<Effect>,
+    /// Work the update asked for (files, GFMD, quitting), taken with the computation by
+    /// [`App::take_commands`].
+    pub commands: Vec<Command>,
 }
 
 impl App {
@@ -191,6 +200,9 @@ impl App {
             overlay: Overlay::None,
             charts: DEFAULT_CHARTS,
             focus: 0,
+            zoom: false,
+            log_pr: false,
+            last_export: None,
             help_scroll: 0,
             caption_scroll: 0,
             anchors: Anchors::default(),
@@ -209,6 +221,7 @@ impl App {
             playing: false,
             pins: Vec::new(),
             tour: None,
+            history: Default::default(),
             compare: true,
             message: None,
             gen: 0,
@@ -226,11 +239,10 @@ impl App {
             export_dir: PathBuf::from("."),
             map: None,
             gfmd: GfmdState::Idle,
-            gfmd_request: None,
             gfmd_cancel: None,
             gfmd_next: 0,
             pending: true,
-            effects: Vec::new(),
+            commands: Vec::new(),
         })
     }
 
@@ -276,12 +288,6 @@ impl App {
             needs: self.needs(),
             models,
         })
-    }
-
-    /// The GFMD run to start, if `g` asked for one: its id, scene and cancel flag (the event
-    /// loop builds the setup, `jobs::gfmd_setup`, and starts the thread).
-    pub fn take_gfmd_request(&mut self) -> Option<(u64, Scene, Arc<AtomicBool>)> {
-        self.gfmd_request.take()
     }
 
     /// The measured map GFMD runs on for `scene`: [`App::map`] while the scene's spectrum is
@@ -551,15 +557,6 @@ impl App {
             error: true,
         });
     }
-}
-
-/// Work an update asks for beyond the state (see [`super::effects`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Effect {
-    /// `e`: write the curves (CSV) and the scene (TOML).
-    Export,
-    /// `s`: save the visible charts as SVG and PNG.
-    SaveCharts,
 }
 
 /// Inserts into a reply map, forgetting everything when it grows past a few hundred entries.

@@ -33,11 +33,17 @@
 //! value = 1.60                 # value ± rel·|value|, and/or min/max bounds,
 //! rel = 0.005
 //! below = { quantity = "eq18/p*" }   # and/or below/above/near another quantity or scene
+//!
+//! [[step.press]]               # optional: what a `{key:KEY}` of the caption does
+//! says = "l turns p* up"       # see [`super::caption`] (also `{look:NAME}` references)
+//! key = "l"
+//! raises = "pressure"
 //! ```
 //!
 //! Chart names: see [`super::charts`]. Knob names: [`Knob::NAMES`]. The checks are data only:
 //! the test `cli/tests/tui_tour_claims.rs` evaluates every one of them with the engine.
 
+use super::caption::{self, Press};
 use super::kinds::ChartKind;
 use asperity::error::{Error, Result};
 use asperity::input::model::Model;
@@ -85,6 +91,8 @@ struct StepFile {
     caption: String,
     #[serde(default)]
     check: Vec<Check>,
+    #[serde(default)]
+    press: Vec<Press>,
 }
 
 /// A knob of the parameter panel a step can select (the one its caption says to turn).
@@ -114,126 +122,7 @@ impl Knob {
     }
 }
 
-/// Quantities a [`Check`] can state (evaluated by the claims test with the engine):
-/// `a_r`, `sigma_a` (σ_a* at q_s: the wall sits at −σ_a*), `a_r/p*`, `eq18/p*` (the closed form [S-18]), `mean_contact_stress` (σ̄_c*),
-/// `gap_rel` (ū/h_rms), `width` (Δ* of the adhesionless Pr), `gamma_glo` (γ̃_glo),
-/// `tensile_area` (∫ Pr over σ* < 0), `tensile_fraction` (tensile_area / a_r), `W` (the model's
-/// W at `a_r`), `a_r_unloading` (the unloading branch at the load), `jump_in` (p* where the
-/// loading branch ends, from a load sweep p*/10…10p*), `pr_linearity` (Pr(σ₁)/σ₁ over Pr(σ₂)/σ₂
-/// at the first two stresses of the engine's grid), `reference:Q` (the preset's
-/// `[[reference]]` value of quantity Q at the scene's p*).
-pub const QUANTITIES: [&str; 14] = [
-    "a_r",
-    "sigma_a",
-    "a_r/p*",
-    "eq18/p*",
-    "mean_contact_stress",
-    "gap_rel",
-    "width",
-    "gamma_glo",
-    "tensile_area",
-    "tensile_fraction",
-    "W",
-    "a_r_unloading",
-    "jump_in",
-    "pr_linearity",
-];
-
-/// The other side of a comparison: the same quantity and scene unless overridden.
-#[derive(Debug, Clone, PartialEq, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-pub struct Side {
-    /// Another quantity (default: the check's).
-    pub quantity: Option<String>,
-    /// Another model.
-    pub model: Option<u8>,
-    /// Another p*.
-    pub pressure: Option<f64>,
-    /// Another γ_s.
-    pub gamma: Option<f64>,
-    /// Another t·q_r.
-    pub thickness_qr: Option<f64>,
-}
-
-/// A claim of a caption as data: a quantity of the step's scene (with overrides) and what the
-/// caption says about it.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Check {
-    /// The claim in words (shown when the check fails).
-    pub says: String,
-    /// See [`QUANTITIES`].
-    pub quantity: String,
-    /// Model instead of the step's.
-    pub model: Option<u8>,
-    /// p* instead of the step's.
-    pub pressure: Option<f64>,
-    /// γ_s instead of the step's.
-    pub gamma: Option<f64>,
-    /// t·q_r instead of the step's.
-    pub thickness_qr: Option<f64>,
-    /// a_r at which `W` is evaluated.
-    pub a_r: Option<f64>,
-    /// The stated value.
-    pub value: Option<f64>,
-    /// Relative tolerance of `value` and of `near` (0.005 when not given: a value quoted to
-    /// three digits).
-    pub rel: Option<f64>,
-    /// Lower bound.
-    pub min: Option<f64>,
-    /// Upper bound.
-    pub max: Option<f64>,
-    /// The quantity lies below this one.
-    pub below: Option<Side>,
-    /// The quantity lies above this one.
-    pub above: Option<Side>,
-    /// The quantity lies within `rel` of this one.
-    pub near: Option<Side>,
-}
-
-impl Check {
-    /// The relative tolerance of `value` and `near`.
-    pub fn rel(&self) -> f64 {
-        self.rel.unwrap_or(0.005)
-    }
-
-    fn validate(&self) -> std::result::Result<(), String> {
-        let known = |q: &str| QUANTITIES.contains(&q) || q.strip_prefix("reference:").is_some_and(|r| !r.is_empty());
-        if !known(&self.quantity) {
-            return Err(format!(
-                "quantity \"{}\"; allowed {}, reference:QUANTITY",
-                self.quantity,
-                QUANTITIES.join(", ")
-            ));
-        }
-        for s in [&self.below, &self.above, &self.near].into_iter().flatten() {
-            if let Some(q) = &s.quantity {
-                if !known(q) {
-                    return Err(format!(
-                        "quantity \"{q}\" of a comparison; allowed {}",
-                        QUANTITIES.join(", ")
-                    ));
-                }
-            }
-        }
-        if self.value.is_none()
-            && self.min.is_none()
-            && self.max.is_none()
-            && self.below.is_none()
-            && self.above.is_none()
-            && self.near.is_none()
-        {
-            return Err("states nothing: give value, min, max, below, above or near".into());
-        }
-        if self.quantity == "W" && self.a_r.is_none() {
-            return Err("W needs a_r".into());
-        }
-        if self.says.trim().is_empty() {
-            return Err("says must not be empty".into());
-        }
-        Ok(())
-    }
-}
+pub use super::tour_check::{Check, Side, QUANTITIES};
 
 /// One validated step.
 #[derive(Debug, Clone, PartialEq)]
@@ -256,6 +145,10 @@ pub struct Step {
     pub select: Option<Knob>,
     /// The caption's claims (checked against the engine by the claims test).
     pub checks: Vec<Check>,
+    /// The caption as written, its `{look:…}` and `{key:…}` references unrendered.
+    pub caption_source: Vec<String>,
+    /// What the keys the caption names do (checked in the explorer by the tour test).
+    pub presses: Vec<Press>,
 }
 
 /// A validated tour.
@@ -338,113 +231,7 @@ impl Tour {
             .unwrap_or_else(|| preset::DEFAULT_PRESET.to_string());
         let mut steps = Vec::with_capacity(file.step.len());
         for (i, s) in file.step.iter().enumerate() {
-            let at = Some(i);
-            let key = if s.preset.is_some() { "preset" } else { "title" };
-            let source_name = s.preset.clone().unwrap_or_else(|| default_preset.clone());
-            let p = Preset::resolve(&source_name).map_err(|e| {
-                if s.preset.is_some() {
-                    err(at, key, e.to_string())
-                } else {
-                    err(None, "preset", e.to_string())
-                }
-            })?;
-            let scene = p.scene().map_err(|e| err(at, "preset", e.to_string()))?;
-            let model = match s.model {
-                Some(m) => Some(
-                    u8::try_from(m)
-                        .ok()
-                        .filter(|m| (1..=4).contains(m))
-                        .and_then(|m| Model::named(m).ok())
-                        .ok_or_else(|| err(at, "model", format!("{m}; allowed 1, 2, 3 or 4")))?,
-                ),
-                None => None,
-            };
-            let overrides = Overrides {
-                model,
-                pressure: s.pressure,
-                thickness_qr: s.thickness_qr,
-                surface_energy_j_m2: s.gamma,
-                ..Overrides::default()
-            };
-            let scene = match scene.apply(&overrides) {
-                Ok(scene) => scene,
-                Err(e) => {
-                    let key = match e.invalid_field().map(|f| f.to_string()) {
-                        Some(f) if f.contains("thickness") => "thickness_qr",
-                        Some(f) if f.contains("gamma") => "gamma",
-                        Some(f) if f.contains("pressure") => "pressure",
-                        _ => "title",
-                    };
-                    return Err(err(at, key, e.to_string()));
-                }
-            };
-            if s.charts.is_empty() || s.charts.len() > 3 {
-                return Err(err(at, "charts", format!("{} names; allowed 1 to 3", s.charts.len())));
-            }
-            let mut charts = [ChartKind::Pr, ChartKind::Area, ChartKind::Gap];
-            for (j, name) in s.charts.iter().enumerate() {
-                charts[j] = ChartKind::parse(name).ok_or_else(|| {
-                    let names: Vec<&str> = ChartKind::ALL.iter().map(|k| k.name()).collect();
-                    err(
-                        at,
-                        "charts",
-                        format!("unknown chart \"{name}\"; allowed {}", names.join(", ")),
-                    )
-                })?;
-            }
-            let caption: Vec<String> = s
-                .caption
-                .lines()
-                .map(|l| l.trim().to_string())
-                .filter(|l| !l.is_empty())
-                .collect();
-            if !(CAPTION_LINES.0..=CAPTION_LINES.1).contains(&caption.len()) {
-                return Err(err(
-                    at,
-                    "caption",
-                    format!(
-                        "{} lines; allowed {} to {}",
-                        caption.len(),
-                        CAPTION_LINES.0,
-                        CAPTION_LINES.1
-                    ),
-                ));
-            }
-            if let Some(l) = caption.iter().find(|l| l.chars().count() > CAPTION_WIDTH) {
-                return Err(err(
-                    at,
-                    "caption",
-                    format!("a line of {} characters; allowed {CAPTION_WIDTH}", l.chars().count()),
-                ));
-            }
-            if s.title.trim().is_empty() {
-                return Err(err(at, "title", "must not be empty".into()));
-            }
-            let select = match &s.select {
-                None => None,
-                Some(name) => Some(Knob::parse(name).ok_or_else(|| {
-                    err(
-                        at,
-                        "select",
-                        format!("unknown knob \"{name}\"; allowed {}", Knob::NAMES.join(", ")),
-                    )
-                })?),
-            };
-            for (j, c) in s.check.iter().enumerate() {
-                c.validate()
-                    .map_err(|m| err(at, "check", format!("check {j} ({}): {m}", c.says.trim())))?;
-            }
-            steps.push(Step {
-                title: s.title.trim().to_string(),
-                source: source_name,
-                preset: p,
-                scene,
-                charts,
-                models: s.models.unwrap_or(false),
-                caption,
-                select,
-                checks: s.check.clone(),
-            });
+            steps.push(parse_step(s, i, &default_preset, &err)?);
         }
         Ok(Tour {
             name: file.name,
@@ -480,6 +267,134 @@ impl Tour {
             message: format!("no such tour file or name; known tours: {}", known.join(", ")),
         })
     }
+}
+
+/// One `[[step]]` table validated (`i`: its index, `err` names the line and key).
+fn parse_step(
+    s: &StepFile,
+    i: usize,
+    default_preset: &str,
+    err: &dyn Fn(Option<usize>, &str, String) -> Error,
+) -> Result<Step> {
+    let at = Some(i);
+    let key = if s.preset.is_some() { "preset" } else { "title" };
+    let source_name = s.preset.clone().unwrap_or_else(|| default_preset.to_string());
+    let p = Preset::resolve(&source_name).map_err(|e| {
+        if s.preset.is_some() {
+            err(at, key, e.to_string())
+        } else {
+            err(None, "preset", e.to_string())
+        }
+    })?;
+    let scene = p.scene().map_err(|e| err(at, "preset", e.to_string()))?;
+    let model = match s.model {
+        Some(m) => Some(
+            u8::try_from(m)
+                .ok()
+                .filter(|m| (1..=4).contains(m))
+                .and_then(|m| Model::named(m).ok())
+                .ok_or_else(|| err(at, "model", format!("{m}; allowed 1, 2, 3 or 4")))?,
+        ),
+        None => None,
+    };
+    let overrides = Overrides {
+        model,
+        pressure: s.pressure,
+        thickness_qr: s.thickness_qr,
+        surface_energy_j_m2: s.gamma,
+        ..Overrides::default()
+    };
+    let scene = match scene.apply(&overrides) {
+        Ok(scene) => scene,
+        Err(e) => {
+            let key = match e.invalid_field().map(|f| f.to_string()) {
+                Some(f) if f.contains("thickness") => "thickness_qr",
+                Some(f) if f.contains("gamma") => "gamma",
+                Some(f) if f.contains("pressure") => "pressure",
+                _ => "title",
+            };
+            return Err(err(at, key, e.to_string()));
+        }
+    };
+    if s.charts.is_empty() || s.charts.len() > 3 {
+        return Err(err(at, "charts", format!("{} names; allowed 1 to 3", s.charts.len())));
+    }
+    let mut charts = [ChartKind::Pr, ChartKind::Area, ChartKind::Gap];
+    for (j, name) in s.charts.iter().enumerate() {
+        charts[j] = ChartKind::parse(name).ok_or_else(|| {
+            let names: Vec<&str> = ChartKind::ALL.iter().map(|k| k.name()).collect();
+            err(
+                at,
+                "charts",
+                format!("unknown chart \"{name}\"; allowed {}", names.join(", ")),
+            )
+        })?;
+    }
+    let (caption_source, caption) =
+        caption_of(&s.caption, crate::looks::model_slot(&scene.model())).map_err(|m| err(at, "caption", m))?;
+    if s.title.trim().is_empty() {
+        return Err(err(at, "title", "must not be empty".into()));
+    }
+    let select = match &s.select {
+        None => None,
+        Some(name) => Some(Knob::parse(name).ok_or_else(|| {
+            err(
+                at,
+                "select",
+                format!("unknown knob \"{name}\"; allowed {}", Knob::NAMES.join(", ")),
+            )
+        })?),
+    };
+    for (j, p) in s.press.iter().enumerate() {
+        caption::validate(p, &Knob::NAMES)
+            .map_err(|m| err(at, "press", format!("press {j} ({}): {m}", p.says.trim())))?;
+    }
+    for (j, c) in s.check.iter().enumerate() {
+        c.validate()
+            .map_err(|m| err(at, "check", format!("check {j} ({}): {m}", c.says.trim())))?;
+    }
+    Ok(Step {
+        title: s.title.trim().to_string(),
+        source: source_name,
+        preset: p,
+        scene,
+        charts,
+        models: s.models.unwrap_or(false),
+        caption,
+        select,
+        checks: s.check.clone(),
+        caption_source,
+        presses: s.press.clone(),
+    })
+}
+
+/// A caption's lines as written and rendered (`slot`: the model slot of the theory's colour);
+/// Err says what is wrong with it.
+fn caption_of(text: &str, slot: usize) -> std::result::Result<(Vec<String>, Vec<String>), String> {
+    let caption_source: Vec<String> = text
+        .lines()
+        .map(|l| l.trim().to_string())
+        .filter(|l| !l.is_empty())
+        .collect();
+    let caption = caption_source
+        .iter()
+        .map(|l| caption::render(l, slot))
+        .collect::<std::result::Result<Vec<String>, String>>()?;
+    if !(CAPTION_LINES.0..=CAPTION_LINES.1).contains(&caption.len()) {
+        return Err(format!(
+            "{} lines; allowed {} to {}",
+            caption.len(),
+            CAPTION_LINES.0,
+            CAPTION_LINES.1
+        ));
+    }
+    if let Some(l) = caption.iter().find(|l| l.chars().count() > CAPTION_WIDTH) {
+        return Err(format!(
+            "a line of {} characters; allowed {CAPTION_WIDTH}",
+            l.chars().count()
+        ));
+    }
+    Ok((caption_source, caption))
 }
 
 /// Available tours: (name, where), from `tours/` under the working directory and built in.

@@ -1,7 +1,7 @@
-//! Key presses and worker replies → the next state ([`App`]) plus effects: a request for the
-//! worker (`pending`, taken by [`App::take_request`]), a GFMD run to start
-//! ([`App::take_gfmd_request`]), files to write ([`Effect`]). No terminal, no threads, no
-//! files here, so every key is unit-tested.
+//! Key presses and worker replies → the next state ([`App`]) plus [`Command`]s, the work it
+//! asks for: the worker's computation (`pending`, built when taken), a GFMD run to start,
+//! files to write, quitting; all leave by [`App::take_commands`]. No terminal, no threads,
+//! no files written here, so every key is unit-tested.
 
 use super::keys::{self, Action};
 use super::kinds::ChartKind;
@@ -11,8 +11,34 @@ use super::tour::Tour;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
 
 impl App {
+    /// The GFMD run to start, if `g` asked for one: its id, scene and cancel flag (the event
+    /// loop builds the setup, `jobs::gfmd_setup`, and starts the thread).
+    pub fn take_gfmd_request(&mut self) -> Option<(u64, Scene, Arc<AtomicBool>)> {
+        let i = self
+            .commands
+            .iter()
+            .position(|c| matches!(c, Command::StartGfmd { .. }))?;
+        match self.commands.remove(i) {
+            Command::StartGfmd { id, scene, cancel } => Some((id, scene, cancel)),
+            _ => None,
+        }
+    }
+
+    /// Every command the updates since the last call asked for, in order: the computation of
+    /// the current scene first (when it changed), then the queued ones, then `Quit` if asked.
+    pub fn take_commands(&mut self) -> Vec<Command> {
+        let mut out: Vec<Command> = self.take_request().map(Command::Compute).into_iter().collect();
+        out.append(&mut self.commands);
+        if self.quit {
+            out.push(Command::Quit);
+        }
+        out
+    }
+
     /// Takes a worker reply: kept only if it belongs to the current scene.
     pub fn on_reply(&mut self, reply: Reply) {
         match reply {
@@ -29,6 +55,7 @@ impl App {
                 if key == sweep_key(&self.source, &self.scene, self.range()) {
                     self.sweep = Some(result);
                     self.sweep_shown = Some(key);
+                    self.follow_window();
                 } else if self.overlay_keys().1.contains(&key) {
                     bounded_insert(&mut self.overlay_sweeps, key, result);
                 }
@@ -71,6 +98,9 @@ impl App {
         if curves.is_empty() {
             return self.info("nothing to pin yet (no current curve)");
         }
+        if self.pins.iter().any(|p| p.scene == self.scene) {
+            return self.info("this scene is pinned already: change a knob, then P pins the next");
+        }
         if self.pins.len() >= super::pins::MAX_PINS {
             self.pins.remove(0);
         }
@@ -97,7 +127,7 @@ impl App {
         match self.overlay {
             Overlay::Help => {
                 // ↓↑ (j k, PgDn PgUp) scroll, any other key closes the help; q still quits
-                let n = super::keys::TABLE.len();
+                let n = super::keys::help_rows();
                 match ev.code {
                     KeyCode::Down | KeyCode::Char('j') => self.help_scroll = (self.help_scroll + 1).min(n),
                     KeyCode::PageDown => self.help_scroll = (self.help_scroll + 8).min(n),
@@ -160,10 +190,11 @@ impl App {
             }
             Action::Reset => {
                 self.anchors = Anchors::default();
+                self.history.reset();
                 self.set_scene(self.base.clone());
                 self.info(format!("reset to preset {}", self.preset.name));
             }
-            Action::Export => self.effects.push(Effect::Export),
+            Action::Export => self.commands.push(Command::Export),
             Action::AreaMode => {
                 let mut any = false;
                 for c in &mut self.charts {
@@ -198,8 +229,18 @@ impl App {
                     }
                 }
             }
-            Action::Save => self.effects.push(Effect::SaveCharts),
-            Action::Compare => self.compare = !self.compare,
+            Action::Save => self.commands.push(Command::SaveCharts),
+            Action::Compare => {
+                if self.scene.is_adhesive() {
+                    self.compare = !self.compare;
+                    let on = if self.compare { "shown" } else { "hidden" };
+                    self.info(format!("the adhesionless comparison (γ_s = 0) is {on}"));
+                } else {
+                    self.info(
+                        "c compares with the scene without adhesion: this one has none (γ_s = 0); turn γ_s up first",
+                    );
+                }
+            }
             Action::Gfmd => self.toggle_gfmd(),
             Action::Pin => self.pin(),
             Action::Unpin | Action::UnpinAll => {
@@ -217,6 +258,22 @@ impl App {
             }
             Action::CaptionUp => self.caption_scroll = self.caption_scroll.saturating_sub(1),
             Action::Help => self.overlay = Overlay::Help,
+            Action::Zoom => self.zoom = !self.zoom,
+            Action::LogY => {
+                self.log_pr = !self.log_pr;
+                if !self.charts.contains(&ChartKind::Pr) {
+                    self.info("y sets the Pr chart's density axis: no Pr chart shown (v picks the charts)");
+                }
+            }
+            Action::Cancel => {
+                if matches!(self.gfmd, GfmdState::Running { .. }) {
+                    self.toggle_gfmd();
+                } else if self.zoom {
+                    self.zoom = false;
+                } else {
+                    self.info("nothing to cancel: q quits");
+                }
+            }
             Action::Quit => self.quit = true,
         }
     }
@@ -236,7 +293,8 @@ impl App {
                 self.edit = None;
                 if !text.trim().is_empty() {
                     if let Err(e) = self.set_typed(self.selected_param(), &text) {
-                        self.fail(e);
+                        // in the panel's words (t·q_r, p*), not the preset's keys
+                        self.fail(super::words::describe(&e));
                     }
                 }
             }
@@ -312,6 +370,7 @@ impl App {
         self.base = st.scene.clone();
         self.anchors = Anchors::default();
         self.set_scene(st.scene);
+        self.history.reset();
         self.charts = st.charts;
         self.all_models = st.models;
         // a step that shows the scale view plays it from q_L
@@ -338,6 +397,7 @@ impl App {
                 self.base = s.clone();
                 self.anchors = Anchors::default();
                 self.set_scene(s);
+                self.history.reset();
                 self.info(format!("preset {}", self.preset.name));
             }
             Err(e) => self.fail(e),
@@ -347,9 +407,34 @@ impl App {
     pub(crate) fn set_scene(&mut self, scene: Scene) {
         if scene != self.scene {
             self.pending = true;
+            let range = self.range();
+            if sweep_key(&self.source, &scene, range) != sweep_key(&self.source, &self.scene, range) {
+                // t·q_r, γ_s or the model moves the window: the loads visited so far are
+                // walked through the old one, the load is walked again through the new one
+                self.follow_window();
+                self.history.forget_pending();
+            }
+            self.history.visit(scene.pressure());
         }
         self.scene = scene;
         self.selected = self.selected.min(self.params().len() - 1);
+    }
+
+    /// Walks the loads the path visited through the hysteresis window of the current scene's
+    /// load sweep, when it is computed; says so when the branch changes.
+    pub(crate) fn follow_window(&mut self) {
+        if self.sweep_is_stale() {
+            return;
+        }
+        let Some(Ok(sw)) = &self.sweep else { return };
+        let w = super::history::Window {
+            jump_in: sw.jump_in,
+            pull_off: sw.pull_off,
+            hysteresis: sw.has_hysteresis(),
+        };
+        if self.history.resolve(&w) {
+            self.info(self.history.describe());
+        }
     }
 
     /// Applies a changed scene (each change was validated where it was made).

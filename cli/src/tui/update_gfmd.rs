@@ -18,7 +18,8 @@ impl App {
                 c.store(true, Ordering::Relaxed);
             }
             self.gfmd = GfmdState::Idle;
-            self.gfmd_request = None;
+            // a run not started yet is not started
+            self.commands.retain(|c| !matches!(c, Command::StartGfmd { .. }));
             self.info("GFMD cancelled");
             return;
         }
@@ -26,7 +27,11 @@ impl App {
         let id = self.gfmd_next;
         let cancel = Arc::new(AtomicBool::new(false));
         self.gfmd_cancel = Some(cancel.clone());
-        self.gfmd_request = Some((id, self.scene.clone(), cancel));
+        self.commands.push(Command::StartGfmd {
+            id,
+            scene: self.scene.clone(),
+            cancel,
+        });
         self.gfmd = GfmdState::Running {
             id,
             scene: self.scene.clone(),

@@ -19,7 +19,7 @@ use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Axis, Block, Chart, Clear, Dataset, GraphType, Paragraph, Wrap};
+use ratatui::widgets::{Axis, Block, BorderType, Chart, Clear, Dataset, GraphType, Paragraph, Wrap};
 use ratatui::Frame;
 
 /// Draws the whole screen.
@@ -30,7 +30,7 @@ pub fn draw(f: &mut Frame, app: &App) {
         too_small(f, area);
         return;
     }
-    let status_line = status_line(app, pal);
+    let mut status_line = status_line(app, pal);
     // messages wrap onto up to STATUS_ROWS rows; the key hint is cut instead
     let is_hint = app.edit.is_none()
         && app.message.is_none()
@@ -38,6 +38,8 @@ pub fn draw(f: &mut Frame, app: &App) {
         && app.compute_warning().is_none()
         && app.gfmd_status().is_none();
     let status_rows = if is_hint {
+        // a hint wider than the screen is cut and says so
+        status_line = cut_hint(&status_line, usize::from(area.width), pal);
         1
     } else {
         wrapped_rows(status_line.width(), area.width).clamp(1, STATUS_ROWS)
@@ -78,6 +80,41 @@ pub fn draw(f: &mut Frame, app: &App) {
         let lines: Vec<Line> = scr.caption_visible().iter().map(|l| Line::from(l.clone())).collect();
         f.render_widget(Paragraph::new(lines).block(block), scr.caption);
     }
+    if app.zoom {
+        // the focused chart over the panel and the other charts (z, Esc: back)
+        let body = scr.charts.iter().fold(scr.panel, |u, (r, _)| u.union(*r));
+        let i = app.focus.min(2);
+        let mut m = charts::build(app, app.charts[i]);
+        m.title = format!("{} · z: all panels", m.title);
+        render_model(f, body, &m, pal, true);
+    } else {
+        draw_body(f, &scr, app, pal);
+    }
+    match app.overlay {
+        Overlay::Help => draw_help(f, area, app.help_scroll, pal),
+        Overlay::Presets(cursor) => draw_picker(f, area, app, cursor, pal),
+        Overlay::None => {}
+    }
+}
+
+/// A hint line cut to `cols` columns, ending in `…` where it was cut.
+fn cut_hint(line: &Line<'static>, cols: usize, pal: Palette) -> Line<'static> {
+    if line.width() <= cols {
+        return line.clone();
+    }
+    let text: String = line.spans.iter().map(|s| s.content.as_ref()).collect();
+    let mut out = String::new();
+    for c in text.chars() {
+        if Span::raw(format!("{out}{c}…")).width() > cols {
+            break;
+        }
+        out.push(c);
+    }
+    Line::from(Span::styled(format!("{}…", out.trim_end()), pal.dim()))
+}
+
+/// The parameter panel and the chart panels.
+fn draw_body(f: &mut Frame, scr: &layout::Screen, app: &App, pal: Palette) {
     draw_panel(f, scr.panel, app, pal);
     let shown = scr.charts.len();
     for (r, i) in &scr.charts {
@@ -87,11 +124,6 @@ pub fn draw(f: &mut Frame, app: &App) {
             m.title = format!("{}/3 (f next) · {}", i + 1, m.title);
         }
         render_model(f, *r, &m, pal, *i == app.focus && shown > 1);
-    }
-    match app.overlay {
-        Overlay::Help => draw_help(f, area, app.help_scroll, pal),
-        Overlay::Presets(cursor) => draw_picker(f, area, app, cursor, pal),
-        Overlay::None => {}
     }
 }
 
@@ -168,8 +200,8 @@ fn status_line(app: &App, pal: Palette) -> Line<'static> {
         ))
     } else {
         Line::from(Span::styled(
-            " ↑↓ pick  ←→ change  m model  v chart  f focus  M models  t tour  g GFMD  c compare  a area  \
-             e export  s save  p preset  r reset",
+            " ↑↓ pick  ←→ change  m model  v chart  f focus  z zoom  M models  t tour  g GFMD  c compare  \
+             a area  e export  s save  p preset  r reset  Esc cancel  q quit",
             pal.dim(),
         ))
     }
@@ -200,7 +232,10 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
     }
     let mut block = Block::bordered().title(Line::from(title));
     if focused {
-        block = block.border_style(Style::default().add_modifier(Modifier::BOLD));
+        // the focused panel: a thick border (seen without colour too), bold
+        block = block
+            .border_type(BorderType::Thick)
+            .border_style(Style::default().add_modifier(Modifier::BOLD));
     }
     if let Some(msg) = &m.empty {
         let inner = block.inner(area);
@@ -219,7 +254,7 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
         return;
     }
     let three_x = area.width >= 36;
-    let three_y = area.height >= 12;
+    let three_y = area.height >= 12 && !m.fit_y;
     let (xb, xl) = plot::ticks(m.xb, m.xs, three_x);
     let (yb, yl) = plot::ticks(m.yb, m.ys, three_y);
     let max_points = 4 * area.width as usize;
@@ -313,6 +348,7 @@ pub fn help_lines() -> Vec<String> {
     keys::TABLE
         .iter()
         .map(|b| format!("{:<11}{}", b.label, b.help))
+        .chain(std::iter::once(keys::MANUAL.to_string()))
         .collect()
 }
 

@@ -64,6 +64,22 @@ pub fn sig(x: f64, n: usize) -> String {
     }
 }
 
+/// The file a measured spectrum came from (its name, without the directories), or None for
+/// the preset's own spectrum.
+pub fn surface_name(scene: &asperity::input::scene::Scene) -> Option<String> {
+    match scene.spectrum() {
+        asperity::surface::spectrum::Spectrum::Tabulated(t) => Some(surface_name_of(t)),
+        _ => None,
+    }
+}
+
+/// A table's file name without the directories.
+pub fn surface_name_of(t: &asperity::surface::tabulated::Tabulated) -> String {
+    std::path::Path::new(&t.source)
+        .file_name()
+        .map_or_else(|| t.source.clone(), |n| n.to_string_lossy().into_owned())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
