@@ -134,7 +134,7 @@ pub struct Look {
 
 /// The colours of model slots 0–6: models 1–4, custom, YP08, Xu24 (Okabe–Ito, then two earth
 /// tones).
-pub const MODEL_COLOURS: [Rgb; 7] = [
+pub const MODEL_COLOURS: [Rgb; 8] = [
     Rgb(230, 159, 0),
     Rgb(0, 158, 115),
     Rgb(0, 114, 178),
@@ -142,10 +142,11 @@ pub const MODEL_COLOURS: [Rgb; 7] = [
     Rgb(204, 121, 167),
     Rgb(140, 86, 75),
     Rgb(127, 60, 141),
+    Rgb(240, 228, 66),
 ];
 
-/// The glyphs of model slots 0–6.
-pub const MODEL_GLYPHS: [Glyph; 7] = [
+/// The glyphs of model slots 0–7.
+pub const MODEL_GLYPHS: [Glyph; 8] = [
     Glyph::Dot,
     Glyph::Bar,
     Glyph::Braille,
@@ -153,6 +154,7 @@ pub const MODEL_GLYPHS: [Glyph; 7] = [
     Glyph::HalfBlock,
     Glyph::Quadrant,
     Glyph::Char('+'),
+    Glyph::Char('×'),
 ];
 
 /// The colours of the pins (apart from the models' and the roles').
@@ -185,12 +187,13 @@ pub const REFERENCE_MARKS: [(char, Shape); 6] = [
     ('□', Shape::Cross),
 ];
 
-/// Model slot of a model: 0–3 for models 1–4, 4 custom, 5 YP08, 6 Xu24.
+/// Model slot of a model: 0–3 for models 1–4, 4 custom, 5 YP08, 6 Xu24, 7 model 5.
 pub fn model_slot(m: &Model) -> usize {
     match m.kind {
         ModelKind::Custom => 4,
         ModelKind::Yp08 => 5,
         ModelKind::Xu24 => 6,
+        ModelKind::Five => 7,
         _ => m.number().map_or(4, |n| usize::from(n) - 1),
     }
 }

@@ -133,7 +133,7 @@ impl ChartKind {
     }
 }
 
-/// Model slot of a model: 0–3 for models 1–4, 4 for custom, 5 YP08, 6 Xu24.
+/// Model slot of a model: 0–3 for models 1–4, 4 for custom, 5 YP08, 6 Xu24, 7 model 5.
 pub fn slot(m: &Model) -> usize {
     crate::looks::model_slot(m)
 }
@@ -144,6 +144,7 @@ pub fn slot_name(i: usize) -> String {
         0..=3 => format!("model {}", i + 1),
         5 => "YP08".into(),
         6 => "Xu24".into(),
+        7 => "model 5".into(),
         _ => "custom".into(),
     }
 }
