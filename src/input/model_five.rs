@@ -1,7 +1,7 @@
 //! Model 5: the weight function gauged once on asperity's GFMD reference set, as a function of
 //! the scene's global adhesion γ̃_glo = γ_s/u_ela^(f) [S-24] (docs/physics.md §3.6).
 //!
-//! [S]'s models 3 and 4 fix W(a) = 1 − c₁(1 − a²) − c₂(1 − a⁴) [S-17] and the broadening
+//! \[S\]'s models 3 and 4 fix W(a) = 1 − c₁(1 − a²) − c₂(1 − a⁴) [S-17] and the broadening
 //! exponent α [S-15] once for all scenes; gauged per thickness on GFMD, model 4's W(0) has to
 //! rise with the slab's γ̃_glo (physics.md §3.5). Model 5 makes that rise the model:
 //!
@@ -13,7 +13,7 @@
 //! α     = (1 − s)·½ + s·¼,        k_G = 2,  σ_a capped at γ_s/ρ
 //! ```
 //!
-//! At γ̃ = 0 these are model 3's coefficients exactly (the adhesionless scenes keep [S]'s gauge
+//! At γ̃ = 0 these are model 3's coefficients exactly (the adhesionless scenes keep \[S\]'s gauge
 //! on eq. (18) and Table 1); once adhesion counts (γ̃ ≫ γ_c) W is model 4's form
 //! w₀ + (1 − w₀)a² with α = ¼ and w₀ growing linearly with γ̃_glo. γ_c is a continuity scale,
 //! not a fitted number: the set's smallest adhesive γ̃_glo is 0.05, so it cannot resolve the
