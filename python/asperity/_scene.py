@@ -110,7 +110,8 @@ class Scene:
 
     Self-affine spectrum C(q) ∝ q^(−2−2H) between q_r = 2π/λ_r and q_s = 2π/λ_s, flat
     (roll-off) from q_L = 2π/L to q_r [S-2], normalised by ``rms_gradient`` ḡ or by
-    ``rms_height_m``; ``model`` 1-4 of [S-17] (W(a) = 1 − c₁(1 − a²) − c₂(1 − a⁴)),
+    ``rms_height_m``; ``model`` 1-4 of [S-17] (W(a) = 1 − c₁(1 − a²) − c₂(1 − a⁴)), 5 (W(0)
+    from the scene's γ̃_glo, gauged on asperity's GFMD set: docs/physics.md §3.6),
     ``"custom"`` with ``c1``, ``c2``, ``alpha`` (broadening ∝ W^α [S-15]), ``k_griffith``
     [S-8] and ``cap`` (σ_a ≤ γ_s/ρ), or ``"yp08"``/``"xu24"`` with ``fudge_gamma``.
 
@@ -247,7 +248,7 @@ class Scene:
 
     @property
     def model(self) -> str:
-        """"1".."4", "custom", "yp08" or "xu24"."""
+        """"1".."5", "custom", "yp08" or "xu24"."""
         return str(self.fields()["model"])
 
     def __eq__(self, other: object) -> bool:

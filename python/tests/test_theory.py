@@ -132,3 +132,20 @@ def test_sweep_takes_its_values_once():
     with pytest.raises(TypeError):
         asperity.sweep(s, [0.01], values=[0.02])
     assert asperity.sweep(s, values=[0.01]).p.tolist() == [0.01]
+
+
+def test_model5_is_model3_without_adhesion_and_follows_gamma_glo():
+    """Model 5 (docs/physics.md §3.6): model 3's coefficients at γ_s = 0 (so the same a_r), and
+    with adhesion W(0) = max(0.15, 0.015 + 0.947 γ̃_glo) in model 4's form, through the scene."""
+    dry = asperity.Scene.preset("system-1").replace(surface_energy_j_m2=0.0, thickness_qr=math.inf, pressure=0.01)
+    assert asperity.evaluate(dry.replace(model=5)).a_r == asperity.evaluate(dry.replace(model=3)).a_r
+
+    def w0(scene):
+        f = scene.fields()
+        return 1.0 - f["c1"] - f["c2"]
+
+    half = asperity.Scene.preset("system-2").replace(model=5, thickness_qr=math.inf)
+    assert half.model == "5"
+    assert abs(w0(half) - 0.15) < 1e-3  # γ̃_glo = 0.10: the floor
+    # thinner slabs store less elastic energy in full contact: more γ̃_glo, more W(0)
+    assert 0.15 < w0(half.replace(thickness_qr=0.3)) < w0(half.replace(thickness_qr=0.15)) < 1.0
