@@ -75,7 +75,7 @@ fn bad_input_is_one_line_with_exit_2() {
         (vec!["run", "--model", "yp09"], "invalid --model = yp09"),
         (
             vec!["compare", "--reference", "eq18", "--models", "3,custom"],
-            "invalid --models = 3,custom: allowed a comma-separated list of 1, 2, 3, 4, yp08, xu24 (a custom model",
+            "invalid --models = 3,custom: allowed a comma-separated list of 1, 2, 3, 4, 5, yp08, xu24 (a custom model",
         ),
         (vec!["figure", "1", "--model", "xu25"], "invalid --model = xu25"),
     ] {
