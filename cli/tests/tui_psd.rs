@@ -2,7 +2,7 @@
 //! drawn C(q) carries the spectrum's h_rms² = 2π∫q C dq (docs/physics.md §1) in closed form;
 //! on a measured table the chart draws the table, the interpolant between its cut-offs and a
 //! self-affine fit that recovers the H and q_r the table was written from; the panel names
-//! the file.
+//! the file. A scene on a measured table exports and reloads (with its table) exactly.
 
 mod common;
 
@@ -127,4 +127,42 @@ fn a_table_that_is_not_self_affine_gets_no_fit() {
     assert!(m.title.contains("not self-affine"), "{}", m.title);
     assert!(m.series.iter().all(|s| s.role != Role::Closed));
     assert!(m.series.iter().any(|s| s.role == Role::Theory));
+}
+
+/// A scene on a measured spectrum, exported with `e`: its files are named after the table,
+/// its TOML says to reopen it with the table, and the TOML with the table (what
+/// `asperity tui --preset X.toml --psd FILE` does) is the exported scene exactly; the preset's
+/// reference values (another surface's) are not drawn over it.
+#[test]
+fn a_measured_scene_exports_and_reloads_exactly() {
+    let mut a = app("system-2");
+    let Spectrum::SelfAffine(sa) = a.scene.spectrum().clone() else {
+        unreachable!()
+    };
+    let (q, c) = common::ideal_table(&sa, 40);
+    let dir = std::env::temp_dir().join(format!("asperity-measured-export-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let table = dir.join("my-surface.csv");
+    std::fs::write(&table, to_csv(&q, &c)).unwrap();
+    let load = || Tabulated::load_csv(&table, None, None).unwrap();
+    a.scene.set_spectrum(Spectrum::Tabulated(load())).unwrap();
+    a.scene.set_pressure(0.003).unwrap();
+    a.scene.set_thickness_qr(0.5).unwrap();
+    a.base = a.scene.clone();
+    a.export_dir = dir.clone();
+    compute_now(&mut a, &mut Caches::default());
+    let area = build(&a, ChartKind::Area);
+    assert!(
+        !area.series.iter().any(|s| s.role == Role::Reference),
+        "system 2's references drawn"
+    );
+    let paths = asperity_cli::tui::export::export(&a).unwrap();
+    assert!(paths[0].ends_with("asperity-my-surface-1.toml"), "{paths:?}");
+    let text = std::fs::read_to_string(&paths[0]).unwrap();
+    assert!(text.contains(&format!("--surface {}", table.display())), "{text}");
+    let back = Preset::load(std::path::Path::new(&paths[0])).unwrap();
+    let mut scene = asperity_cli::tui::app::initial_scene(&back).unwrap();
+    scene.set_spectrum(Spectrum::Tabulated(load())).unwrap();
+    assert_eq!(scene, a.scene);
+    let _ = std::fs::remove_dir_all(&dir);
 }

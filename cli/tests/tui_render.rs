@@ -645,3 +645,31 @@ fn zoomed_chart_and_log_pr() {
     assert!(s.contains("1e-"), "{s}");
     insta::assert_snapshot!("zoom_log_pr_200x60", s);
 }
+
+/// The tour's hysteresis step followed along a load path: up through the window (⇧→ twice)
+/// and back down into it (h three times): the panel, the a_r chart's ● and the Pr chart's
+/// title say the unloading branch.
+#[test]
+fn hysteresis_followed_along_the_load_path() {
+    use asperity_cli::tui::tour::Tour;
+    let mut a = app("system-2");
+    a.start_tour(Tour::resolve("wang-muser").unwrap(), 10);
+    compute_now(&mut a, &mut Caches::default());
+    for code in [
+        KeyCode::Char('L'),
+        KeyCode::Char('L'),
+        KeyCode::Char('h'),
+        KeyCode::Char('h'),
+        KeyCode::Char('h'),
+    ] {
+        key(&mut a, code);
+        compute_now(&mut a, &mut Caches::default());
+    }
+    let s = render(&a, 200, 60);
+    assert!(
+        s.contains("unloading (jumped in)") && s.contains("loading branch"),
+        "{s}"
+    );
+    insta::assert_snapshot!("hysteresis_followed_200x60", s);
+    insta::assert_snapshot!("hysteresis_followed_80x24", render(&a, 80, 24));
+}

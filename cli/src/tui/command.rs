@@ -32,3 +32,7 @@ pub enum Command {
     /// Leave the explorer.
     Quit,
 }
+
+#[cfg(test)]
+#[path = "command_tests.rs"]
+mod tests;

@@ -79,6 +79,18 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     let on_unloading = super::chart_model::path_row(app).is_some();
     let a_r = super::chart_model::path_a_r(app);
     row_styled("a_r", a_r.map_or_else(dash, |a| sig(a, 4)), stale_point);
+    // inside a hysteresis window: the branch the load history reached, next to its a_r
+    // (the branch alone where the reason does not fit: the status line said it)
+    if pt.is_some_and(|p| !p.branches.is_empty()) {
+        let label = app.history.label();
+        let room = usize::from(area.width).saturating_sub(12);
+        let v = if label.chars().count() <= room {
+            label
+        } else {
+            app.history.on.name().to_string()
+        };
+        row_styled("path", v, stale_point);
+    }
     // σ̄_c* = p*/a_r of the branch the path is on
     let stress = match (pt, a_r) {
         (Some(_), Some(a)) if on_unloading => sig(app.scene.pressure() / a, 4),
@@ -113,22 +125,8 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         for (k, v) in &p.extra {
             row_styled(k, v.clone(), stale_point);
         }
-        // hysteresis: every branch at this load, ◀ the one the path is on
-        if !p.branches.is_empty() {
-            row_styled("path", app.history.label(), stale_point);
-        }
-        for b in &p.branches {
-            let followed = if on_unloading { b.name == "unloading" } else { b.shown };
-            let mark = if followed { " ◀" } else { "" };
-            let stab = if b.stable || b.name == "unstable" {
-                ""
-            } else {
-                " (unstable)"
-            };
-            let text = format!(" {}{}{stab}{mark}", pad(&b.name, 10), sig(b.a_r, 4));
-            let style = if stale_point { pal.dim() } else { Style::default() };
-            lines.push(Line::from(Span::styled(text, style)));
-        }
+        let style = if stale_point { pal.dim() } else { Style::default() };
+        lines.extend(branch_lines(&p.branches, on_unloading, style));
     }
     let mut row = |k: &str, v: String| lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
     row(
@@ -157,6 +155,24 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     lines.extend(scene_rows(&app.scene));
     let block = Block::bordered().title(" parameters ");
     f.render_widget(Paragraph::new(lines).block(block), area);
+}
+
+/// A hysteresis: every branch at this load, ◀ the one the load history is on.
+fn branch_lines(branches: &[super::data::BranchRow], on_unloading: bool, style: Style) -> Vec<Line<'static>> {
+    branches
+        .iter()
+        .map(|b| {
+            let followed = if on_unloading { b.name == "unloading" } else { b.shown };
+            let mark = if followed { " ◀" } else { "" };
+            let stab = if b.stable || b.name == "unstable" {
+                ""
+            } else {
+                " (unstable)"
+            };
+            let text = format!(" {}{}{stab}{mark}", pad(&b.name, 10), sig(b.a_r, 4));
+            Line::from(Span::styled(text, style))
+        })
+        .collect()
 }
 
 /// The scene in physical units: p, E*, h_rms, ḡ, λ_r/λ_s.
