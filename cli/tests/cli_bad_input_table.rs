@@ -330,7 +330,10 @@ fn other_bad_input_is_one_line_too() {
     let cases: Vec<(Vec<&str>, Vec<String>)> = vec![
         (
             vec!["run", "--preset", v],
-            vec![format!("line {line}: model.variant"), "1, 2, 3, 4, 5 or \"custom\"".into()],
+            vec![
+                format!("line {line}: model.variant"),
+                "1, 2, 3, 4, 5 or \"custom\"".into(),
+            ],
         ),
         (vec!["run", "--preset", h], vec!["at most 1048576 bytes".into()]),
         (

@@ -33,7 +33,11 @@ impl App {
         ];
         let n = cycle.len() as i32;
         // model 5 (slot 7) is not in the cycle: it steps on as model 4 does
-        let cur = if m.number() == Some(5) { 3 } else { super::kinds::slot(&m) as i32 };
+        let cur = if m.number() == Some(5) {
+            3
+        } else {
+            super::kinds::slot(&m) as i32
+        };
         let mut skipped = Vec::new();
         for k in 1..n {
             let next = &cycle[(cur + dir * k).rem_euclid(n) as usize];
