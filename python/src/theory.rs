@@ -285,39 +285,12 @@ fn pressure_sweep(core: &SceneCore, pressures: &[f64], opts: &Options, ctx: &wor
 /// The row of one value of a knob sweep (as `asperity sweep --over`), with the reason it lacks
 /// numbers (the solve's error, or why the mean gap is unavailable).
 fn knob_row(pt: &KnobPoint, pressure: f64, unit: f64) -> (Row, Option<String>) {
-    let mut r = SweepRow::empty(pressure);
-    let mut reason = None;
-    match &pt.result {
-        Ok(e) => {
-            r.a_r = e.stats.a_r;
-            r.mean_contact_stress = e.stats.mean_contact_stress;
-            r.contact_stress_variance = e.stats.contact_stress_variance;
-            r.elastic_energy = e.elastic_energy;
-            r.elastic_energy_reduced = e.elastic_energy / unit;
-            r.converged = true;
-            r.a_r_unloading = e.unloading_a_r.unwrap_or(f64::NAN);
-            r.branches = e.branches.len().max(1);
-            match &pt.gap {
-                Ok(Some(g)) => {
-                    r.mean_gap_rel = g.relative;
-                    r.mean_gap = g.metres;
-                    r.mean_gap_error = g.error;
-                    r.mean_gap_lower_rel = g.lower;
-                    r.mean_gap_upper_rel = g.upper;
-                    r.contact_load = g.contact_load;
-                    if let Some(u) = g.unloading {
-                        r.mean_gap_unloading_rel = u.relative;
-                        r.mean_gap_unloading_error = u.error;
-                        r.mean_gap_unloading_lower_rel = u.lower;
-                        r.contact_load_unloading = u.contact_load;
-                    }
-                }
-                Ok(None) => {}
-                Err(e) => reason = Some(format!("mean gap unavailable: {e}")),
-            }
-        }
-        Err(e) => reason = Some(e.to_string()),
-    }
+    let reason = match (&pt.result, &pt.gap) {
+        (Err(e), _) => Some(e.to_string()),
+        (Ok(_), Err(e)) => Some(format!("mean gap unavailable: {e}")),
+        (Ok(_), Ok(_)) => None,
+    };
+    let r = pt.row(pressure, unit);
     (Row::new(r, &pt.scene), reason)
 }
 

@@ -15,6 +15,7 @@ use crate::error::{Error, Field, Result};
 use crate::input::scene::{Scene, SURFACE_ENERGY_RANGE, THICKNESS_RANGE};
 use crate::theory::engine::{self, Evaluation, Options};
 use crate::theory::gap::{self, MeanGap};
+use crate::theory::sweep::SweepRow;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -127,6 +128,39 @@ pub struct KnobPoint {
     pub result: std::result::Result<Evaluation, Error>,
     /// The mean gap (`None` when not asked for), or why it is unavailable.
     pub gap: std::result::Result<Option<MeanGap>, Error>,
+}
+
+impl KnobPoint {
+    /// This point as a row of a load sweep at reduced pressure `pressure`, U* in units of
+    /// `energy_unit` (J/m²): every number empty (NaN) where the solve failed, the gap's where it
+    /// is unavailable or was not asked for (the reasons are in `result` and `gap`).
+    pub fn row(&self, pressure: f64, energy_unit: f64) -> SweepRow {
+        let mut r = SweepRow::empty(pressure);
+        let Ok(e) = &self.result else { return r };
+        r.a_r = e.stats.a_r;
+        r.mean_contact_stress = e.stats.mean_contact_stress;
+        r.contact_stress_variance = e.stats.contact_stress_variance;
+        r.elastic_energy = e.elastic_energy;
+        r.elastic_energy_reduced = e.elastic_energy / energy_unit;
+        r.converged = true;
+        r.a_r_unloading = e.unloading_a_r.unwrap_or(f64::NAN);
+        r.branches = e.branches.len().max(1);
+        if let Ok(Some(g)) = &self.gap {
+            r.mean_gap_rel = g.relative;
+            r.mean_gap = g.metres;
+            r.mean_gap_error = g.error;
+            r.mean_gap_lower_rel = g.lower;
+            r.mean_gap_upper_rel = g.upper;
+            r.contact_load = g.contact_load;
+            if let Some(u) = g.unloading {
+                r.mean_gap_unloading_rel = u.relative;
+                r.mean_gap_unloading_error = u.error;
+                r.mean_gap_unloading_lower_rel = u.lower;
+                r.contact_load_unloading = u.contact_load;
+            }
+        }
+        r
+    }
 }
 
 /// Evaluates the scene at every value of `spec` (see the module docs); with `with_gap` the

@@ -279,41 +279,15 @@ fn knob_output(args: &SweepArgs) -> Result<SweepOutput> {
     let rows: Vec<Row> = points
         .iter()
         .map(|pt| {
-            let mut r = SweepRow::empty(scene.pressure());
-            match &pt.result {
-                Ok(e) => {
-                    r.a_r = e.stats.a_r;
-                    r.mean_contact_stress = e.stats.mean_contact_stress;
-                    r.contact_stress_variance = e.stats.contact_stress_variance;
-                    r.elastic_energy = e.elastic_energy;
-                    r.elastic_energy_reduced = e.elastic_energy / unit;
-                    r.converged = true;
-                    r.a_r_unloading = e.unloading_a_r.unwrap_or(f64::NAN);
-                    r.branches = e.branches.len().max(1);
-                    match &pt.gap {
-                        Ok(Some(g)) => {
-                            r.mean_gap_rel = g.relative;
-                            r.mean_gap = g.metres;
-                            r.mean_gap_error = g.error;
-                            r.mean_gap_lower_rel = g.lower;
-                            r.mean_gap_upper_rel = g.upper;
-                            r.contact_load = g.contact_load;
-                            if let Some(u) = g.unloading {
-                                r.mean_gap_unloading_rel = u.relative;
-                                r.mean_gap_unloading_error = u.error;
-                                r.mean_gap_unloading_lower_rel = u.lower;
-                                r.contact_load_unloading = u.contact_load;
-                            }
-                        }
-                        Ok(None) => {}
-                        Err(e) => notes.push(format!("value {:e}: mean gap unavailable: {e}", pt.value)),
-                    }
-                }
-                Err(e) => {
+            match (&pt.result, &pt.gap) {
+                (Err(e), _) => {
                     failed.push(pt.value);
                     notes.push(format!("value {:e}: {e}", pt.value));
                 }
+                (Ok(_), Err(e)) => notes.push(format!("value {:e}: mean gap unavailable: {e}", pt.value)),
+                (Ok(_), Ok(_)) => {}
             }
+            let r = pt.row(scene.pressure(), unit);
             Row::new(r, &pt.scene)
         })
         .collect();
