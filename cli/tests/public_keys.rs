@@ -517,7 +517,7 @@ fn bench_rung_keys() {
 #[test]
 fn explorer_names() {
     use asperity_cli::tui::charts::ChartKind;
-    use asperity_cli::tui::keys::TABLE;
+    use asperity_cli::tui::model::keys::TABLE;
     use asperity_cli::tui::tour::Tour;
     let names: Vec<&str> = ChartKind::ALL.iter().map(|k| k.name()).collect();
     for n in [
@@ -563,16 +563,16 @@ caption = "a\nb"
     )
     .unwrap();
     app.export_dir = dir.clone();
-    asperity_cli::tui::worker::compute_now(&mut app, &mut Default::default());
-    let paths = asperity_cli::tui::export::export(&app).unwrap();
+    asperity_cli::tui::drive::compute_now(&mut app, &mut Default::default());
+    let paths = asperity_cli::tui::effects::export::export(&app).unwrap();
     let csv = std::fs::read_to_string(paths.iter().find(|p| p.ends_with("-loads.csv")).unwrap()).unwrap();
     let header = csv.lines().find(|l| !l.starts_with('#')).unwrap();
     for col in ["p", "a_r", "mean_gap_rel", "mean_contact_stress", "converged"] {
         assert!(header.split(',').any(|c| c == col), "column {col} missing: {header}");
     }
     app.set_charts([ChartKind::Scales, ChartKind::ScalesArea, ChartKind::Area]);
-    asperity_cli::tui::worker::compute_now(&mut app, &mut Default::default());
-    let paths = asperity_cli::tui::export::export(&app).unwrap();
+    asperity_cli::tui::drive::compute_now(&mut app, &mut Default::default());
+    let paths = asperity_cli::tui::effects::export::export(&app).unwrap();
     let csv = std::fs::read_to_string(paths.iter().find(|p| p.ends_with("-scales.csv")).unwrap()).unwrap();
     let header = csv.lines().find(|l| !l.starts_with('#')).unwrap();
     assert_eq!(header, "frame,q_over_q_l,a_r_q,sigma_a_q,sigma,density");

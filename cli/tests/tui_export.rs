@@ -6,9 +6,9 @@ use asperity::input::preset::Preset;
 use asperity::theory::engine::{evaluate, Options};
 use asperity::tolerances::CHART_ACCURACY_REL;
 use asperity_cli::tui::app::{App, Param};
-use asperity_cli::tui::data::GfmdView;
-use asperity_cli::tui::export::{export, gfmd_csv};
-use asperity_cli::tui::kinds::ChartKind;
+use asperity_cli::tui::effects::export::{export, gfmd_csv};
+use asperity_cli::tui::model::data::GfmdView;
+use asperity_cli::tui::model::kinds::ChartKind;
 
 /// A CSV read back: header columns, rows of cells, `# key: value` lines.
 type Csv = (Vec<String>, Vec<Vec<String>>, Vec<(String, String)>);
@@ -42,7 +42,7 @@ fn the_loads_csv_has_both_branches_and_the_window_edges() {
     app.set_typed(Param::Gamma, "0.1256").unwrap();
     app.set_typed(Param::Pressure, "1e-5").unwrap();
     app.set_charts([ChartKind::Area, ChartKind::Gap, ChartKind::Pr]);
-    asperity_cli::tui::worker::compute_now(&mut app, &mut Default::default());
+    asperity_cli::tui::drive::compute_now(&mut app, &mut Default::default());
     let paths = export(&app).unwrap();
     let csv = std::fs::read_to_string(paths.iter().find(|p| p.ends_with("-loads.csv")).unwrap()).unwrap();
     let (header, rows, comments) = parse(&csv);
@@ -147,7 +147,7 @@ fn the_thickness_csv_has_the_window_its_edges_and_the_reference() {
     app.set_typed(Param::Gamma, "0.1256").unwrap();
     app.set_typed(Param::Pressure, "1e-5").unwrap();
     app.set_charts([ChartKind::Thickness, ChartKind::Pr, ChartKind::Area]);
-    asperity_cli::tui::worker::compute_now(&mut app, &mut Default::default());
+    asperity_cli::tui::drive::compute_now(&mut app, &mut Default::default());
     let paths = export(&app).unwrap();
     let csv = std::fs::read_to_string(paths.iter().find(|p| p.ends_with("-thickness.csv")).unwrap()).unwrap();
     let (header, rows, comments) = parse(&csv);

@@ -7,7 +7,7 @@
 use asperity::input::preset::Preset;
 use asperity_cli::tui::app::{App, Param};
 use asperity_cli::tui::charts::{self, ChartKind, Role};
-use asperity_cli::tui::worker::{compute_now, Caches};
+use asperity_cli::tui::drive::{compute_now, Caches};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 fn key(a: &mut App, c: char) {
@@ -53,7 +53,7 @@ fn fig8_pins_round_trip_through_csv_and_svg() {
         .any(|s| s.name == "t·q_r=0.1"));
 
     // `e` then `s`: one number sequence
-    let csv = asperity_cli::tui::export::export(&a).unwrap();
+    let csv = asperity_cli::tui::effects::export::export(&a).unwrap();
     assert!(csv[0].ends_with("asperity-system-2-1.toml"), "{csv:?}");
     let pins_csv = csv.iter().find(|p| p.ends_with("-pins.csv")).expect("pins CSV");
     let text = std::fs::read_to_string(pins_csv).unwrap();
@@ -68,11 +68,11 @@ fn fig8_pins_round_trip_through_csv_and_svg() {
     let (x, y) = pins[0].points[pins[0].points.len() / 2];
     let row = format!(
         "1,t·q_r=0.1,pr,{},{}",
-        asperity_cli::tui::export::cell(x),
-        asperity_cli::tui::export::cell(y)
+        asperity_cli::tui::effects::export::cell(x),
+        asperity_cli::tui::effects::export::cell(y)
     );
     assert!(rows.contains(&row.as_str()), "{row}");
-    let figs = asperity_cli::tui::export::export_charts(&a).unwrap();
+    let figs = asperity_cli::tui::effects::export::export_charts(&a).unwrap();
     assert!(figs[0].ends_with("asperity-system-2-2-pr.svg"), "{figs:?}");
     let svg = std::fs::read_to_string(&figs[0]).unwrap();
     assert!(
@@ -95,7 +95,7 @@ fn fig8_pins_round_trip_through_csv_and_svg() {
         compute_now(&mut s, &mut caches);
         key(&mut s, '[');
         key(&mut s, '[');
-        let figs = asperity_cli::tui::export::export_charts(&s).unwrap();
+        let figs = asperity_cli::tui::effects::export::export_charts(&s).unwrap();
         for (kind, name) in [
             ("-scales.png", "explorer-scales.png"),
             ("-scales-area.png", "explorer-scales-area.png"),

@@ -10,10 +10,10 @@ use asperity::input::preset::Preset;
 use asperity::surface::spectrum::Spectrum;
 use asperity::surface::tabulated::{to_csv, Tabulated};
 use asperity_cli::tui::app::App;
-use asperity_cli::tui::chart_model::Role;
+use asperity_cli::tui::charts::chart_model::Role;
 use asperity_cli::tui::charts::{build, ChartKind};
+use asperity_cli::tui::drive::{compute_now, Caches};
 use asperity_cli::tui::view;
-use asperity_cli::tui::worker::{compute_now, Caches};
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
 
@@ -156,7 +156,7 @@ fn a_measured_scene_exports_and_reloads_exactly() {
         !area.series.iter().any(|s| s.role == Role::Reference),
         "system 2's references drawn"
     );
-    let paths = asperity_cli::tui::export::export(&a).unwrap();
+    let paths = asperity_cli::tui::effects::export::export(&a).unwrap();
     assert!(paths[0].ends_with("asperity-my-surface-1.toml"), "{paths:?}");
     let text = std::fs::read_to_string(&paths[0]).unwrap();
     assert!(text.contains(&format!("--surface {}", table.display())), "{text}");

@@ -7,9 +7,9 @@ mod common;
 use asperity::input::preset::Preset;
 use asperity_cli::tui::app::App;
 use asperity_cli::tui::charts::ChartKind;
-use asperity_cli::tui::data::SweepData;
+use asperity_cli::tui::drive::{compute_now, Caches};
+use asperity_cli::tui::model::data::SweepData;
 use asperity_cli::tui::view;
-use asperity_cli::tui::worker::{compute_now, Caches};
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::Terminal;
@@ -129,7 +129,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         preview: false,
         gap_note: None,
     }));
-    a.thickness = Some(Ok(asperity_cli::tui::data::ThicknessData {
+    a.thickness = Some(Ok(asperity_cli::tui::model::data::ThicknessData {
         t: vec![f64::NAN, 0.0, 1e-2, 1e-1, f64::INFINITY, 1.0],
         a_r: vec![1.0, f64::NAN, 0.0, -1.0, 0.5, 0.5],
         a_r_inf: f64::NAN,
@@ -190,9 +190,9 @@ fn adhesive_view_with_a_synthetic_point() {
 
 #[test]
 fn gfmd_overlay_with_a_synthetic_run() {
-    use asperity_cli::tui::data::GfmdView;
-    use asperity_cli::tui::worker::Reply;
-    use asperity_cli::tui::{jobs, progress};
+    use asperity_cli::tui::drive::Reply;
+    use asperity_cli::tui::model::data::GfmdView;
+    use asperity_cli::tui::{effects::engine as jobs, model::progress};
     let mut a = app("system-1");
     key(&mut a, KeyCode::Char('g'));
     let (id, _, _) = a.take_gfmd_request().expect("g starts a run");
@@ -376,7 +376,7 @@ fn defects_gap_axis_stale_values_long_messages_hints() {
 /// the same in the SVG export. Synthetic sweep (the engine's is tested in the library).
 #[test]
 fn hysteresis_on_the_area_chart() {
-    use asperity_cli::tui::data::BranchRow;
+    use asperity_cli::tui::model::data::BranchRow;
     let mut a = adhesionless("system-1");
     a.set_charts([ChartKind::Area, ChartKind::AreaRatio, ChartKind::Gap]);
     compute_now(&mut a, &mut Caches::default());
@@ -439,7 +439,7 @@ fn hysteresis_on_the_area_chart() {
         draw_only(&a, w, h);
     }
     // the export draws the same: the unloading curve and both markers as dashed series
-    let spec = asperity_cli::tui::export::chart_spec(&m, "test");
+    let spec = asperity_cli::tui::effects::export::chart_spec(&m, "test");
     for name in ["unloading", "jump-in 0.030", "pull-off 0.0050"] {
         let s = spec
             .series
@@ -455,7 +455,7 @@ fn hysteresis_on_the_area_chart() {
     let dir = std::env::temp_dir().join(format!("asperity-hysteresis-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     a.export_dir = dir.clone();
-    let paths = asperity_cli::tui::export::export_charts(&a).unwrap();
+    let paths = asperity_cli::tui::effects::export::export_charts(&a).unwrap();
     let svg = paths.iter().find(|p| p.ends_with("-area.svg")).expect("area svg");
     let text = std::fs::read_to_string(svg).unwrap();
     assert!(text.contains("unloading") && text.contains("jump-in") && text.contains("pull-off"));

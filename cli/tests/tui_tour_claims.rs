@@ -15,8 +15,8 @@ use asperity::theory::closed_form;
 use asperity::theory::engine::{self, Options};
 use asperity::theory::sweep::SweepSpec;
 use asperity_cli::tui::charts::ChartKind;
+use asperity_cli::tui::effects::worker;
 use asperity_cli::tui::tour::{Check, Knob, Side, Step, Tour, BUILTIN};
-use asperity_cli::tui::worker;
 use std::sync::atomic::AtomicBool;
 
 /// The step's scene with a check's (or a comparison's) overrides.

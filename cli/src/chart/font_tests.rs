@@ -86,9 +86,10 @@ fn every_character_of_the_labels_has_a_glyph() {
         asperity::input::preset::Preset::resolve("system-1").unwrap(),
     )
     .unwrap();
-    crate::tui::worker::compute_now(&mut app, &mut Default::default());
-    for k in crate::tui::kinds::ChartKind::ALL {
-        let spec = crate::tui::export::chart_spec(&crate::tui::charts::build(&app, k), "γ_s = 0.05 J/m², t·q_r = ∞");
+    crate::tui::drive::compute_now(&mut app, &mut Default::default());
+    for k in crate::tui::model::kinds::ChartKind::ALL {
+        let spec =
+            crate::tui::effects::export::chart_spec(&crate::tui::charts::build(&app, k), "γ_s = 0.05 J/m², t·q_r = ∞");
         let mut text = vec![spec.title, spec.x_label, spec.y_label];
         text.extend(spec.series.into_iter().map(|s| s.name));
         for t in text {

@@ -41,51 +41,26 @@
 //! the load charts from the full sweep (`charts_final_ms`), and the frame after which nothing
 //! is left to compute (`all_drawn_ms`: the point refined to full accuracy, the other charts).
 
-pub mod app;
-pub mod caption;
-pub mod chart_model;
 pub mod charts;
-pub mod charts_load;
-pub mod charts_psd;
-pub mod charts_scales;
-pub mod command;
-pub mod data;
+pub mod drive;
 pub mod effects;
-pub mod export;
-pub mod history;
-pub mod jobs;
-pub mod keys;
-pub mod kinds;
-pub mod knobs;
-pub mod layout;
-pub mod legend;
-pub mod models;
-pub mod palette;
-pub mod panel;
-pub mod pins;
-pub mod plot;
-pub mod progress;
-pub mod protocol;
-pub mod state;
-pub mod tour;
-pub mod tour_check;
-pub mod turn;
+pub mod model;
 pub mod update;
-pub mod update_gfmd;
 pub mod view;
-pub mod words;
-pub mod worker;
 
-use app::App;
+/// The state under the names the front ends use.
+pub use model::{app, tour};
+
 use asperity::error::{Error, Result};
 use asperity::input::preset::Preset;
-use command::Command;
-use protocol::Reply;
+use effects::{engine as jobs, worker::Worker};
+use model::app::{self as app_state, App};
+use model::command::Command;
+use model::protocol::{self, Reply};
 use ratatui::crossterm::event::{self, Event, KeyEventKind};
 use std::io::Write;
 use std::sync::mpsc::{channel, RecvTimeoutError};
 use std::time::{Duration, Instant};
-use worker::Worker;
 
 /// Spinner period while busy.
 const TICK: Duration = Duration::from_millis(100);
@@ -217,7 +192,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                 Command::StartGfmd { id, scene, cancel } => {
                     let tx = gfmd_tx.clone();
                     let setup = jobs::gfmd_setup(&app.preset, &scene, app.map_of(&scene));
-                    app.message = Some(app::Message {
+                    app.message = Some(app_state::Message {
                         text: format!("GFMD started on a {0}x{0} grid (g cancels)", jobs::grid_side(&setup)),
                         error: false,
                     });
@@ -226,7 +201,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                     })
                     .map_err(|e| Error::io("start the GFMD thread", e))?;
                 }
-                Command::Export | Command::SaveCharts => effects::run(&mut app, &cmd),
+                Command::Export | Command::SaveCharts => effects::files::run(&mut app, &cmd),
                 Command::Quit => return Ok(()),
             }
         }

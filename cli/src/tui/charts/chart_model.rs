@@ -1,0 +1,335 @@
+//! A chart as plain data ([`ChartModel`]: title, axes, series in data units, vertical
+//! markers) and the helpers every chart builder shares (the theory's role and name, the other
+//! models' data, the preset's reference points, the current-point marker).
+
+use crate::looks::{look, Look};
+use crate::tui::charts::plot::{self, Scale};
+use crate::tui::model::app::App;
+use crate::tui::model::data::{PointData, SweepData};
+use crate::tui::model::kinds::{overlay_models, slot, slot_name, ChartKind};
+use asperity::input::model::Model;
+
+/// How a series is drawn: the file renderer's style, so the screen and the `s` export agree
+/// by construction.
+pub use crate::chart::SeriesStyle as Draw;
+
+/// What a series is (the view and the `s` export take its colour and marker from
+/// [`crate::looks`]).
+pub use crate::looks::Role;
+
+/// One series, in data units (NaN marks a gap).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend name.
+    pub name: String,
+    /// Points (data units).
+    pub points: Vec<(f64, f64)>,
+    /// What it is.
+    pub role: Role,
+    /// How it is drawn.
+    pub draw: Draw,
+}
+
+/// A vertical marker across the whole y range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VLine {
+    /// x (data units).
+    pub x: f64,
+    /// What it is ([`Role::Guide`], [`Role::Wall`], [`Role::JumpIn`], [`Role::PullOff`]).
+    pub role: Role,
+    /// Legend name (empty: no legend entry).
+    pub name: String,
+}
+
+/// A chart ready to draw.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChartModel {
+    /// Which chart.
+    pub kind: ChartKind,
+    /// Title (the quantity and the load it is drawn at).
+    pub title: String,
+    /// x axis title, with units.
+    pub x_label: String,
+    /// y axis title, with units.
+    pub y_label: String,
+    /// x scale.
+    pub xs: Scale,
+    /// y scale.
+    pub ys: Scale,
+    /// Plane bounds of x before rounding (the view rounds them to [`plot::ticks`]).
+    pub xb: [f64; 2],
+    /// Plane bounds of y before rounding.
+    pub yb: [f64; 2],
+    /// Series, drawn in this order (the key curve last).
+    pub series: Vec<Series>,
+    /// Vertical markers.
+    pub vlines: Vec<VLine>,
+    /// Why there is nothing to draw.
+    pub empty: Option<String>,
+    /// The data belong to an earlier scene (a newer one is being computed).
+    pub stale: bool,
+    /// Points of the y data outside [`ChartModel::yb`] are dropped (log axes spanning many
+    /// decades).
+    pub clip_y: bool,
+    /// Model slot of the current scene (the theory's colour).
+    pub model: usize,
+    /// The y axis hugs the data (two labels, a fine step) instead of three round labels
+    /// that may double its span (σ̄_c*: the models' differences stay visible).
+    pub fit_y: bool,
+}
+
+impl ChartModel {
+    /// The look of series `i`: its role's, the k-th reference source of the chart its k-th
+    /// marker.
+    pub fn series_look(&self, i: usize) -> Look {
+        let role = self.series[i].role;
+        let nth = self.series[..i].iter().filter(|s| s.role == role).count();
+        look(role, self.model, nth)
+    }
+
+    /// The look of a vertical marker.
+    pub fn vline_look(&self, v: &VLine) -> Look {
+        look(v.role, self.model, 0)
+    }
+
+    /// Plane points of series `s` drawn with y bounds `yb`, split at gaps, y outside `yb`
+    /// dropped when clipping, decimated to about `max_points`.
+    pub fn runs(&self, s: &Series, yb: [f64; 2], max_points: usize) -> Vec<Vec<(f64, f64)>> {
+        let pts: Vec<(f64, f64)> = if self.clip_y {
+            s.points
+                .iter()
+                .map(|&(x, y)| match self.ys.forward(y) {
+                    Some(v) if v >= yb[0] && v <= yb[1] => (x, y),
+                    _ => (x, f64::NAN),
+                })
+                .collect()
+        } else {
+            s.points.clone()
+        };
+        plot::segments(&pts, self.xs, self.ys)
+            .into_iter()
+            .map(|r| plot::decimate(&r, max_points))
+            .collect()
+    }
+}
+
+pub fn theory_role(app: &App) -> Role {
+    if app.all_models {
+        Role::Model(slot(&app.scene.model()))
+    } else {
+        Role::Theory
+    }
+}
+
+pub fn theory_name(app: &App) -> String {
+    if app.all_models {
+        slot_name(slot(&app.scene.model()))
+    } else {
+        "theory".into()
+    }
+}
+
+/// The other models' data for `M` (slot, data), current model excluded.
+pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T>) -> Vec<(usize, &'a T)> {
+    if !app.all_models {
+        return Vec::new();
+    }
+    overlay_models(&app.scene.model())
+        .into_iter()
+        .filter(|m| slot(m) != slot(&app.scene.model()))
+        .filter_map(|m| get(app, &m).map(|d| (slot(&m), d)))
+        .collect()
+}
+
+/// Marks a chart with nothing to draw: where the result it draws failed, its title says why in
+/// brief and its body in full (another quantity's failure does not concern it); else
+/// "computing…" while the worker runs, or "no data".
+pub fn set_empty<T>(m: &mut ChartModel, app: &App, own: Option<&asperity::error::Result<T>>) {
+    match own {
+        Some(Err(e)) => mark_failed(m, &crate::tui::model::words::describe(e)),
+        _ => m.empty = Some(if app.busy { "computing…" } else { "no data" }.into()),
+    }
+}
+
+/// A chart whose quantity failed: `" · failed: <gist>"` in the title and the whole reason in
+/// the body.
+pub fn mark_failed(m: &mut ChartModel, why: &str) {
+    m.title
+        .push_str(&format!(" · failed: {}", crate::tui::model::words::brief(why)));
+    m.empty = Some(format!("no data: {why}"));
+}
+
+pub fn base(kind: ChartKind, title: String, x: &str, y: &str, xs: Scale, ys: Scale) -> ChartModel {
+    ChartModel {
+        kind,
+        title,
+        x_label: x.into(),
+        y_label: y.into(),
+        xs,
+        ys,
+        xb: [0.0, 1.0],
+        yb: [0.0, 1.0],
+        series: Vec::new(),
+        vlines: Vec::new(),
+        empty: None,
+        stale: false,
+        clip_y: false,
+        model: 2,
+        fit_y: false,
+    }
+}
+
+/// Plane bounds of every series (and vertical line, for x).
+pub fn data_bounds(m: &ChartModel) -> (Option<[f64; 2]>, Option<[f64; 2]>) {
+    let runs: Vec<Vec<(f64, f64)>> = m
+        .series
+        .iter()
+        .flat_map(|s| plot::segments(&s.points, m.xs, m.ys))
+        .collect();
+    let refs: Vec<&[(f64, f64)]> = runs.iter().map(|r| r.as_slice()).collect();
+    let mut xb = plot::bounds(&refs, true, 0.0);
+    for v in &m.vlines {
+        if let Some(x) = m.xs.forward(v.x) {
+            xb = Some(match xb {
+                Some(b) => [b[0].min(x), b[1].max(x)],
+                None => plot::guard(x, x),
+            });
+        }
+    }
+    (xb, plot::bounds(&refs, false, 0.0))
+}
+
+pub fn current_point(app: &App) -> Option<&PointData> {
+    app.point.as_ref().and_then(|r| r.as_ref().ok())
+}
+
+/// a_r on the branch the user's path is on: the point's, or its unloading branch's where the
+/// path has jumped in and the load lies in the window (the engine's point is the loading
+/// branch's).
+pub fn path_a_r(app: &App) -> Option<f64> {
+    let p = current_point(app)?;
+    Some(path_row(app).map_or(p.a_r, |b| b.a_r))
+}
+
+/// ū/h_rms on the branch the path is on: the point's, or where the path is on the
+/// unloading branch the load sweep's unloading gap at p* (interpolated in ln p* between its
+/// loads; None where the sweep has none there).
+pub fn path_gap(app: &App) -> Option<f64> {
+    if path_row(app).is_none() {
+        return app.gap_value();
+    }
+    let sw = app.sweep.as_ref()?.as_ref().ok()?;
+    let p = app.scene.pressure();
+    let k = sw.p.windows(2).position(|w| w[0] <= p && p <= w[1])?;
+    let (u0, u1) = (*sw.gap_unloading.get(k)?, *sw.gap_unloading.get(k + 1)?);
+    let t = (p / sw.p[k]).ln() / (sw.p[k + 1] / sw.p[k]).ln();
+    Some(u0 + t * (u1 - u0)).filter(|g| g.is_finite())
+}
+
+/// The point's unloading branch, where the path is on it.
+pub fn path_row(app: &App) -> Option<&crate::tui::model::data::BranchRow> {
+    let p = current_point(app)?;
+    (app.history.on == crate::tui::model::history::Path::Unloading)
+        .then(|| p.branches.iter().find(|b| b.name == "unloading"))
+        .flatten()
+}
+
+pub fn references<'a>(
+    app: &'a App,
+    quantity: &'a str,
+) -> impl Iterator<Item = &'a asperity::input::preset::ReferencePoint> {
+    // a measured surface is another system: the preset's reference values are not its own
+    let own = crate::tui::model::words::surface_name(&app.scene).is_none();
+    app.preset
+        .reference
+        .iter()
+        .filter(move |r| own && r.quantity == quantity)
+}
+
+/// Legend name of a reference point: its source, and its conditions where they differ from
+/// the scene's.
+pub fn reference_name(app: &App, r: &asperity::input::preset::ReferencePoint, with_thickness: bool) -> String {
+    let mut cond = Vec::new();
+    let gamma = r.gamma.unwrap_or(app.preset.adhesion.surface_energy_j_m2);
+    if gamma != app.scene.surface_energy_j_m2() {
+        cond.push(format!("γ_s={}", plot::format_number(gamma)));
+    }
+    let t = r.thickness_qr.unwrap_or(f64::INFINITY);
+    if with_thickness && t.to_bits() != app.scene.thickness_qr().to_bits() {
+        cond.push(format!("t·q_r={}", plot::format_number(t)));
+    }
+    if let Some(n) = r.model {
+        cond.push(format!("model {n}"));
+    }
+    if cond.is_empty() {
+        r.source.clone()
+    } else {
+        format!("{} ({})", r.source, cond.join(", "))
+    }
+}
+
+/// Reference points of `quantity` as series (one per source and conditions), y = f(p, value).
+pub fn reference_series(app: &App, quantity: &str, y: impl Fn(f64, f64) -> f64) -> Vec<Series> {
+    let mut out: Vec<Series> = Vec::new();
+    for r in references(app, quantity) {
+        let name = reference_name(app, r, true);
+        let pt = (r.pressure, y(r.pressure, r.value));
+        match out.iter_mut().find(|s| s.name == name) {
+            Some(s) => s.points.push(pt),
+            None => out.push(Series {
+                name,
+                points: vec![pt],
+                role: Role::Reference,
+                draw: Draw::Points,
+            }),
+        }
+    }
+    out
+}
+
+/// A preview sweep's chart says that the full one is on its way.
+pub fn mark_preview(m: &mut ChartModel, sw: &SweepData) {
+    if sw.preview {
+        m.title.push_str(" · refining…");
+    }
+}
+
+pub fn sweep_of(app: &App) -> Option<&SweepData> {
+    app.sweep.as_ref().and_then(|r| r.as_ref().ok())
+}
+
+/// The load charts share one x axis: the requested p* range, whatever converged.
+pub fn load_x(app: &App) -> [f64; 2] {
+    let (a, b) = app.range();
+    [a.log10(), b.log10()]
+}
+
+/// Marks the current load: a guide at `x` and the current point (drawn under the reference
+/// points, which a caption may point at).
+pub fn add_current(m: &mut ChartModel, x: f64, y: Option<f64>) {
+    m.vlines.insert(
+        0,
+        VLine {
+            x,
+            role: Role::Guide,
+            name: String::new(),
+        },
+    );
+    if let Some(y) = y.filter(|y| y.is_finite()) {
+        // under the reference points: a caption points at them, and the guide marks p*
+        let at = m
+            .series
+            .iter()
+            .position(|s| s.role == Role::Reference)
+            .unwrap_or(m.series.len());
+        m.series.insert(
+            at,
+            Series {
+                name: "p*".into(),
+                points: vec![(x, y)],
+                role: Role::Current,
+                draw: Draw::Points,
+            },
+        );
+    }
+}

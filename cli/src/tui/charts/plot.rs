@@ -1,0 +1,340 @@
+//! Turns engine curves into series ratatui's `Chart` can draw correctly.
+//!
+//! ratatui 0.30's `Chart` has no log axes, places more than three axis labels wrongly, draws
+//! NaN/±inf as strokes to the plot edge, joins every consecutive pair of a `Line` dataset and
+//! draws nothing when an axis has min == max. Every workaround lives here, with unit tests:
+//!
+//! - [`Scale`]: linear or log10 axes; data are transformed before drawing, labels are written
+//!   in data units ([`axis_labels`]).
+//! - [`segments`]: drops points that are not finite (or not positive on a log axis) and splits
+//!   the curve at every dropped point, so a gap is never bridged.
+//! - [`decimate`]: keeps at most a few points per braille column.
+//! - [`bounds`], [`guard`]: data bounds with padding; min == max or non-finite bounds widened.
+//! - [`axis_labels`]: exactly two or three labels (the upstream spacing bug starts at four).
+
+pub use crate::tui::model::words::format_number;
+
+/// How an axis maps data to the drawing plane.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scale {
+    /// x ↦ x.
+    Linear,
+    /// x ↦ log10 x (x > 0 only).
+    Log10,
+}
+
+impl Scale {
+    /// Data value to plane coordinate; `None` where the scale is undefined or the value is
+    /// not finite.
+    pub fn forward(self, x: f64) -> Option<f64> {
+        match self {
+            Scale::Linear => x.is_finite().then_some(x),
+            Scale::Log10 => (x.is_finite() && x > 0.0).then(|| x.log10()),
+        }
+    }
+
+    /// Plane coordinate back to a data value.
+    pub fn inverse(self, v: f64) -> f64 {
+        match self {
+            Scale::Linear => v,
+            Scale::Log10 => 10f64.powf(v),
+        }
+    }
+}
+
+/// Transforms `points` to the plane and splits them into drawable runs: every point that
+/// cannot be drawn ends the current run. Runs of a single point are kept (drawn as a dot).
+pub fn segments(points: &[(f64, f64)], xs: Scale, ys: Scale) -> Vec<Vec<(f64, f64)>> {
+    let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut run: Vec<(f64, f64)> = Vec::new();
+    for &(x, y) in points {
+        match (xs.forward(x), ys.forward(y)) {
+            (Some(u), Some(v)) => run.push((u, v)),
+            _ => {
+                if !run.is_empty() {
+                    out.push(std::mem::take(&mut run));
+                }
+            }
+        }
+    }
+    if !run.is_empty() {
+        out.push(run);
+    }
+    out
+}
+
+/// Keeps at most about `max_points` points of a run (first and last always kept), by taking
+/// the points of largest and smallest y in each of `max_points / 2` buckets, so spikes survive.
+pub fn decimate(run: &[(f64, f64)], max_points: usize) -> Vec<(f64, f64)> {
+    let max_points = max_points.max(4);
+    if run.len() <= max_points {
+        return run.to_vec();
+    }
+    let buckets = max_points / 2;
+    let n = run.len();
+    let mut out = Vec::with_capacity(max_points + 2);
+    out.push(run[0]);
+    for b in 0..buckets {
+        let lo = 1 + b * (n - 2) / buckets;
+        let hi = (1 + (b + 1) * (n - 2) / buckets).min(n - 1);
+        if lo >= hi {
+            continue;
+        }
+        let slice = &run[lo..hi];
+        let (mut imin, mut imax) = (0, 0);
+        for (i, p) in slice.iter().enumerate() {
+            if p.1 < slice[imin].1 {
+                imin = i;
+            }
+            if p.1 > slice[imax].1 {
+                imax = i;
+            }
+        }
+        let (a, c) = if imin <= imax { (imin, imax) } else { (imax, imin) };
+        out.push(slice[a]);
+        if c != a {
+            out.push(slice[c]);
+        }
+    }
+    out.push(run[n - 1]);
+    out
+}
+
+/// Widens degenerate bounds: non-finite → [0, 1]; min == max → ± 0.5 (or ± 5 % of |x|).
+pub fn guard(lo: f64, hi: f64) -> [f64; 2] {
+    if !(lo.is_finite() && hi.is_finite()) {
+        return [0.0, 1.0];
+    }
+    let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+    if hi - lo <= f64::EPSILON * lo.abs().max(hi.abs()).max(1e-300) {
+        let d = if lo == 0.0 { 0.5 } else { 0.05 * lo.abs() };
+        return [lo - d, hi + d];
+    }
+    [lo, hi]
+}
+
+/// Bounds of the y (or x, with `pick_x`) coordinates of all runs, padded by `pad` × range on
+/// each side, guarded. `None` when there are no points.
+pub fn bounds(runs: &[&[(f64, f64)]], pick_x: bool, pad: f64) -> Option<[f64; 2]> {
+    let mut lo = f64::INFINITY;
+    let mut hi = f64::NEG_INFINITY;
+    for run in runs {
+        for &(x, y) in run.iter() {
+            let v = if pick_x { x } else { y };
+            if v.is_finite() {
+                lo = lo.min(v);
+                hi = hi.max(v);
+            }
+        }
+    }
+    if lo > hi {
+        return None;
+    }
+    let [lo, hi] = guard(lo, hi);
+    let d = (hi - lo) * pad;
+    Some(guard(lo - d, hi + d))
+}
+
+/// Two or three axis labels for plane bounds `b` on `scale`, written in data units:
+/// [low, middle, high]; only [low, high] when `three` is false.
+pub fn axis_labels(b: [f64; 2], scale: Scale, three: bool) -> Vec<String> {
+    let pts: Vec<f64> = if three {
+        vec![b[0], 0.5 * (b[0] + b[1]), b[1]]
+    } else {
+        vec![b[0], b[1]]
+    };
+    pts.into_iter().map(|v| format_number(scale.inverse(v))).collect()
+}
+
+/// A 1–2–2.5–5 × 10^k step not smaller than `x` (> 0).
+pub fn nice_step(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let e = 10f64.powf(x.log10().floor());
+    for m in [1.0, 2.0, 2.5, 5.0, 10.0] {
+        if m * e >= x * (1.0 - 1e-12) {
+            return m * e;
+        }
+    }
+    10.0 * e
+}
+
+/// Round axis bounds and their labels (in data units) for plane bounds `b`:
+///
+/// - linear: multiples of a [`nice_step`]; with `three`, exactly two steps apart so the middle
+///   label is round too;
+/// - log10: whole decades; with `three`, an even number of decades (else two labels), so
+///   every label is a power of ten.
+///
+/// The returned bounds always contain `b`.
+pub fn ticks(b: [f64; 2], scale: Scale, three: bool) -> ([f64; 2], Vec<String>) {
+    let [lo, hi] = guard(b[0], b[1]);
+    match scale {
+        Scale::Log10 => {
+            let l = (lo + 1e-9).floor();
+            let mut h = (hi - 1e-9).ceil();
+            if h <= l {
+                h = l + 1.0;
+            }
+            let n = (h - l).round() as i64;
+            let labels = if three && n % 2 == 0 {
+                vec![l, 0.5 * (l + h), h]
+            } else {
+                vec![l, h]
+            };
+            (
+                [l, h],
+                labels.into_iter().map(|v| format_number(10f64.powf(v))).collect(),
+            )
+        }
+        Scale::Linear => {
+            // two labels: a finer step, so the bounds stay close to the data
+            let parts = if three { 2.0 } else { 5.0 };
+            let mut step = nice_step((hi - lo) / parts);
+            loop {
+                let l = (lo / step + 1e-9).floor() * step;
+                let h = if three {
+                    l + 2.0 * step
+                } else {
+                    (hi / step - 1e-9).ceil() * step
+                };
+                if h >= hi - 1e-9 * step || !step.is_finite() {
+                    let clean = |v: f64| if v.abs() < 1e-9 * step { 0.0 } else { v };
+                    let (l, h) = (clean(l), clean(h));
+                    let labels = if three { vec![l, l + step, h] } else { vec![l, h] };
+                    return ([l, h], labels.into_iter().map(|v| format_number(clean(v))).collect());
+                }
+                step = nice_step(step * 1.0001);
+            }
+        }
+    }
+}
+
+/// A vertical line at plane x = `x` across plane bounds `y`, as a two-point run.
+pub fn vertical(x: f64, y: [f64; 2]) -> Vec<(f64, f64)> {
+    if x.is_finite() && y[0].is_finite() && y[1].is_finite() {
+        vec![(x, y[0]), (x, y[1])]
+    } else {
+        Vec::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn log_scale_rejects_nonpositive_and_nonfinite() {
+        assert_eq!(Scale::Log10.forward(100.0), Some(2.0));
+        assert_eq!(Scale::Log10.forward(0.0), None);
+        assert_eq!(Scale::Log10.forward(-1.0), None);
+        assert_eq!(Scale::Log10.forward(f64::NAN), None);
+        assert_eq!(Scale::Linear.forward(f64::INFINITY), None);
+        assert_eq!(Scale::Linear.forward(-3.0), Some(-3.0));
+        assert!((Scale::Log10.inverse(-3.0) - 1e-3).abs() < 1e-18);
+    }
+
+    #[test]
+    fn segments_split_at_gaps() {
+        let pts = [
+            (1.0, 1.0),
+            (2.0, f64::NAN),
+            (3.0, 3.0),
+            (4.0, 4.0),
+            (5.0, f64::INFINITY),
+            (6.0, 6.0),
+        ];
+        let s = segments(&pts, Scale::Linear, Scale::Linear);
+        assert_eq!(
+            s,
+            vec![vec![(1.0, 1.0)], vec![(3.0, 3.0), (4.0, 4.0)], vec![(6.0, 6.0)]]
+        );
+        // log x drops x <= 0 and splits there
+        let pts = [(0.1, 1.0), (0.0, 1.0), (10.0, 2.0), (100.0, 0.0)];
+        let s = segments(&pts, Scale::Log10, Scale::Linear);
+        assert_eq!(s, vec![vec![(-1.0, 1.0)], vec![(1.0, 2.0), (2.0, 0.0)]]);
+        let s = segments(&pts, Scale::Log10, Scale::Log10);
+        assert_eq!(s, vec![vec![(-1.0, 0.0)], vec![(1.0, 2f64.log10())]]);
+        assert!(segments(&[], Scale::Linear, Scale::Linear).is_empty());
+        assert!(segments(&[(f64::NAN, 1.0)], Scale::Linear, Scale::Linear).is_empty());
+    }
+
+    #[test]
+    fn decimation_keeps_ends_and_extremes() {
+        let run: Vec<(f64, f64)> = (0..10_000)
+            .map(|i| (i as f64, if i == 5_003 { 100.0 } else { (i as f64 * 0.01).sin() }))
+            .collect();
+        let d = decimate(&run, 200);
+        assert!(d.len() <= 202, "{}", d.len());
+        assert_eq!(d[0], run[0]);
+        assert_eq!(*d.last().unwrap(), run[9_999]);
+        assert!(d.iter().any(|p| p.1 == 100.0), "the spike survives");
+        assert!(d.windows(2).all(|w| w[1].0 > w[0].0), "x stays ordered");
+        // short runs untouched
+        assert_eq!(decimate(&run[..50], 200), run[..50].to_vec());
+        assert_eq!(decimate(&run[..3], 0), run[..3].to_vec());
+    }
+
+    #[test]
+    fn guards_and_bounds() {
+        assert_eq!(guard(1.0, 1.0), [0.95, 1.05]);
+        assert_eq!(guard(0.0, 0.0), [-0.5, 0.5]);
+        assert_eq!(guard(f64::NAN, 1.0), [0.0, 1.0]);
+        assert_eq!(guard(2.0, 1.0), [1.0, 2.0]);
+        let a = [(0.0, 1.0), (1.0, 3.0)];
+        let b = [(2.0, f64::NAN)];
+        assert_eq!(bounds(&[&a, &b], false, 0.0), Some([1.0, 3.0]));
+        assert_eq!(bounds(&[&a, &b], true, 0.5), Some([-1.0, 3.0]));
+        assert_eq!(bounds(&[&b], false, 0.0), None);
+        let one = [(1.0, 2.0)];
+        let g = bounds(&[&one], false, 0.1).unwrap();
+        assert!(g[0] < 2.0 && g[1] > 2.0);
+    }
+
+    #[test]
+    fn labels_are_two_or_three_in_data_units() {
+        let l = axis_labels([-3.0, 0.0], Scale::Log10, true);
+        assert_eq!(l, vec!["1e-3", "0.032", "1"]);
+        let l = axis_labels([0.0, 2.5], Scale::Linear, false);
+        assert_eq!(l, vec!["0", "2.5"]);
+        assert_eq!(format_number(f64::NAN), "–");
+        assert_eq!(format_number(f64::INFINITY), "∞");
+        assert_eq!(format_number(1234.0), "1234");
+        assert_eq!(format_number(-0.5), "-0.5");
+        assert_eq!(format_number(2.5e-5), "2.5e-5");
+        assert_eq!(format_number(12.34), "12.3");
+    }
+
+    #[test]
+    fn vertical_marker() {
+        assert_eq!(vertical(1.0, [0.0, 2.0]), vec![(1.0, 0.0), (1.0, 2.0)]);
+        assert!(vertical(f64::NAN, [0.0, 2.0]).is_empty());
+    }
+
+    #[test]
+    fn ticks_are_round() {
+        let (b, l) = ticks([0.0, 0.87], Scale::Linear, true);
+        assert_eq!(b, [0.0, 1.0]);
+        assert_eq!(l, vec!["0", "0.5", "1"]);
+        let (b, l) = ticks([-0.13, 0.61], Scale::Linear, true);
+        assert!(b[0] <= -0.13 && b[1] >= 0.61, "{b:?}");
+        assert_eq!(l, vec!["-1", "0", "1"]);
+        let (b, l) = ticks([0.012, 0.0337], Scale::Linear, false);
+        assert!(b[0] <= 0.012 && b[1] >= 0.0337, "{b:?} {l:?}");
+        assert!(l.iter().all(|s| s.len() <= 5), "{l:?}");
+        // log: whole decades, three labels only on an even count
+        let (b, l) = ticks([-2.7, -0.2], Scale::Log10, true);
+        assert_eq!(b, [-3.0, 0.0]);
+        assert_eq!(l, vec!["1e-3", "1"]);
+        let (b, l) = ticks([-3.5, -0.2], Scale::Log10, true);
+        assert_eq!(b, [-4.0, 0.0]);
+        assert_eq!(l, vec!["1e-4", "0.01", "1"]);
+        assert_eq!(nice_step(0.3), 0.5);
+        assert_eq!(nice_step(0.02), 0.02);
+        assert_eq!(nice_step(0.021), 0.025);
+        // degenerate input stays drawable
+        let (b, _) = ticks([1.0, 1.0], Scale::Linear, true);
+        assert!(b[1] > b[0]);
+    }
+}

@@ -1,0 +1,437 @@
+//! The engine jobs of the explorer: the current point (at full and at chart accuracy, with the
+//! adhesionless comparison), the load and thickness sweeps of the charts, and the GFMD run of
+//! `g` on its own thread. Each turns the engine's results into the plain data of [`crate::tui::model::data`].
+
+use crate::tui::model::data::{self, GfmdView, PointData, ScalesData, SweepData, ThicknessData};
+use crate::tui::model::protocol::*;
+use asperity::error::{Error, Result};
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use asperity::surface::heightmap::Surface;
+use asperity::theory::engine::{self, Options};
+use asperity::theory::sweep::{self, SweepSpec};
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+
+/// Precision (relative, in p*) of the preview's window edges: the largest the engine allows,
+/// about its load step (a jump drawn within a braille dot or two of the full sweep's, which
+/// refines it to `Options::chart`'s 3 %). Refining to 3 % took a third of the preview.
+pub const PREVIEW_EDGE_REL: f64 = asperity::theory::engine::EDGE_REL_RANGE.1;
+
+fn point_options() -> Options {
+    Options {
+        sigma_points: SIGMA_POINTS,
+        ..Options::default()
+    }
+}
+
+/// The quick first answer of an adhesive point ([`PointData::preview`]): chart accuracy
+/// ([`Options::chart`]: half the resolution in both directions, no error estimate) with the
+/// search for every branch, so the panel lists the branches at once.
+fn preview_options() -> Options {
+    let mut o = Options::chart();
+    o.sigma_points = SIGMA_POINTS;
+    o.adhesion.explore_branches = true;
+    o
+}
+
+/// The adhesive point at chart accuracy (see `preview_options`), with the adhesionless
+/// comparison when `compare`.
+pub fn evaluate_preview(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<PointData> {
+    let ev = engine::evaluate_warm(scene, &preview_options(), None, Some(cancel))?;
+    let mut pd = PointData::at(&ev, scene.pressure());
+    pd.error_estimate = f64::NAN;
+    pd.preview = true;
+    if compare {
+        add_comparison(&mut pd, scene);
+    }
+    Ok(pd)
+}
+
+fn add_comparison(pd: &mut PointData, scene: &Scene) {
+    let mut s0 = scene.clone();
+    s0 = s0.without_adhesion();
+    // the comparison curve is optional: an error only hides it
+    if let Ok(ev0) = engine::evaluate(&s0, &point_options()) {
+        pd.adhesionless = Some(data::pr_points(&ev0));
+    }
+}
+
+pub fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<PointData> {
+    let mut pd = match engine::evaluate_warm(scene, &point_options(), None, Some(cancel)) {
+        Ok(ev) => PointData::at(&ev, scene.pressure()),
+        Err(e @ Error::NotConverged { .. }) if scene.surface_energy_j_m2() > 0.0 => {
+            // the self-consistency may have converged while its error check did not (the edge
+            // of a jump into contact): show it, without an error bar, and say why
+            let opts = Options {
+                adhesion_error_estimate: false,
+                ..point_options()
+            };
+            match engine::evaluate_warm(scene, &opts, None, Some(cancel)) {
+                Ok(ev) => {
+                    let mut pd = PointData::at(&ev, scene.pressure());
+                    pd.error_estimate = f64::NAN;
+                    pd.branch.push_str(", no error bar");
+                    pd.warning = Some(e.to_string());
+                    pd
+                }
+                Err(Error::Cancelled) => return Err(Error::Cancelled),
+                _ => return Err(e),
+            }
+        }
+        Err(e) => return Err(e),
+    };
+    if compare && scene.surface_energy_j_m2() > 0.0 {
+        add_comparison(&mut pd, scene);
+    }
+    Ok(pd)
+}
+
+/// The load curves of the charts at chart accuracy: the loading branch with ū and σ̄_c*, and
+/// with adhesion the unloading branch and the jump-in and pull-off loads ([`sweep::sweep`]).
+pub fn load_sweep(scene: &Scene, spec: &SweepSpec, cancel: &AtomicBool) -> Result<SweepData> {
+    Ok(SweepData::from_sweep(&sweep::sweep(
+        scene,
+        spec,
+        &Options::chart(),
+        Some(cancel),
+    )?))
+}
+
+/// The quick first load curves of `scene` over `range` ([`PREVIEW_POINTS`]).
+pub fn preview_sweep(scene: &Scene, range: (f64, f64), cancel: &AtomicBool) -> Result<SweepData> {
+    let spec = SweepSpec {
+        from: range.0,
+        to: range.1,
+        points: PREVIEW_POINTS,
+    };
+    let opts = Options {
+        sweep_step_ln: PREVIEW_STEP_LN,
+        edge_rel: PREVIEW_EDGE_REL,
+        ..Options::chart()
+    };
+    let mut sd = SweepData::from_sweep(&sweep::sweep(scene, &spec, &opts, Some(cancel))?);
+    sd.preview = true;
+    Ok(sd)
+}
+
+/// a_r at [`THICKNESS_POINTS`] log-spaced t·q_r in [`THICKNESS_RANGE`] and at t = ∞ (chart
+/// accuracy, each solve warm-started from the neighbouring thickness); a thickness where the
+/// solver fails is a gap (NaN), not an error. With adhesion also the adhesionless curve, and
+/// the hysteresis windows in t·q_r at this p*: every branch is found at each thickness (a_r of
+/// the loading branch, and of the unloading one where two are stable), a jump between two
+/// neighbours (a_r changing by more than [`JUMP_FACTOR`]) is searched for a thickness inside a
+/// window ([`window_between`], added to the curve), and each window's edges are found by
+/// bisection ([`asperity::theory::hysteresis::knob_edges_to`]).
+pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessData> {
+    use asperity::theory::hysteresis::{knob_edges_to, EdgeKind};
+    use asperity::theory::knob::{Knob, KnobPoint};
+    let grid = data::log_grid(THICKNESS_RANGE.0, THICKNESS_RANGE.1, THICKNESS_POINTS);
+    let gamma = scene.surface_energy_j_m2();
+    let mut opts = Options {
+        sigma_points: 2,
+        ..Options::chart()
+    };
+    // every branch at each thickness: the windows' two stable ones
+    opts.adhesion.explore_branches = gamma > 0.0;
+    let at = |th: f64, gamma: f64, warm: Option<&engine::Evaluation>| {
+        let mut s = scene.clone();
+        s.set_thickness_qr(th)?;
+        s.set_surface_energy_j_m2(gamma)?;
+        engine::evaluate_warm(&s, &opts, warm, Some(cancel))
+    };
+    // a solve that fails leaves a gap; cancelling ends the sweep
+    let keep = |r: Result<engine::Evaluation>| match r {
+        Err(Error::Cancelled) => Err(Error::Cancelled),
+        r => Ok(r),
+    };
+    // from thick to thin: the thick slab is the easier start
+    let mut evs: Vec<(f64, Result<engine::Evaluation>)> = Vec::with_capacity(grid.len());
+    for &th in grid.iter().rev() {
+        let warm = evs.last().and_then(|(_, e)| e.as_ref().ok());
+        let ev = keep(at(th, gamma, warm))?;
+        evs.push((th, ev));
+    }
+    evs.reverse();
+    if gamma > 0.0 {
+        let probe = |th: f64| keep(at(th, gamma, None)).map(|r| r.ok());
+        let mut k = 0;
+        while k + 1 < evs.len() {
+            let inside = match (&evs[k], &evs[k + 1]) {
+                ((t0, Ok(lo)), (t1, Ok(hi))) => window_between(&probe, (*t0, lo), (*t1, hi))?,
+                _ => None,
+            };
+            if let Some((th, ev)) = inside {
+                evs.insert(k + 1, (th, Ok(ev)));
+            }
+            k += 1;
+        }
+    }
+    let t: Vec<f64> = evs.iter().map(|(t, _)| *t).collect();
+    let a_r: Vec<f64> = evs
+        .iter()
+        .map(|(_, e)| e.as_ref().map_or(f64::NAN, |e| e.stats.a_r))
+        .collect();
+    if a_r.iter().all(|a| !a.is_finite()) {
+        return Err(Error::NotConverged {
+            solver: asperity::error::Solver::ThicknessSweep,
+            reason: "no thickness converged".into(),
+        });
+    }
+    let unloading: Vec<f64> = evs
+        .iter()
+        .map(|(_, e)| e.as_ref().ok().and_then(|e| e.unloading_a_r).unwrap_or(f64::NAN))
+        .collect();
+    let (mut jump_in, mut pull_off) = (Vec::new(), Vec::new());
+    if gamma > 0.0 && evs.len() > 1 {
+        let points: Vec<KnobPoint> = evs
+            .into_iter()
+            .map(|(value, e)| KnobPoint {
+                value,
+                scene: Knob::Thickness.apply(scene, value),
+                result: e,
+                gap: Ok(None),
+            })
+            .collect();
+        // the edges to a chart's precision: 3 % in t·q_r, under half a braille dot of a
+        // 60-column chart over four decades
+        let rel = engine::CHART_EDGE_REL;
+        for e in knob_edges_to(scene, Knob::Thickness, &points, &opts.adhesion, rel, Some(cancel))? {
+            match e.kind {
+                EdgeKind::JumpIn => jump_in.push(e.value),
+                EdgeKind::PullOff => pull_off.push(e.value),
+            }
+        }
+    }
+    let a_r_inf = keep(at(f64::INFINITY, gamma, None))?.map_or(f64::NAN, |e| e.stats.a_r);
+    let adhesionless = if gamma > 0.0 {
+        let mut v = Vec::with_capacity(t.len());
+        for &th in &t {
+            v.push(keep(at(th, 0.0, None))?.map_or(f64::NAN, |e| e.stats.a_r));
+        }
+        Some(v)
+    } else {
+        None
+    };
+    Ok(ThicknessData {
+        a_r_unloading: if unloading.iter().any(|u| u.is_finite()) {
+            unloading
+        } else {
+            Vec::new()
+        },
+        t,
+        a_r,
+        a_r_inf,
+        adhesionless,
+        jump_in,
+        pull_off,
+    })
+}
+
+/// Neighbouring thicknesses whose a_r differ by more than this factor (both with one stable
+/// branch) are searched for a hysteresis window between them. A jump into contact changes a_r
+/// by orders of magnitude (system II, model 3, γ_s = 0.126–0.157 J/m²: 0.7 → 1e-4 across
+/// t·q_r ≈ 0.1–0.15), a smooth stretch of the chart by tens of percent per grid step; a
+/// steep stretch without a window (model 1 there: a_r falls 100-fold within 7 % of t·q_r on
+/// one branch) costs [`WINDOW_PROBES`] solves and marks nothing.
+pub const JUMP_FACTOR: f64 = 3.0;
+
+/// Most solves spent searching one jump for a window (bisections in ln t·q_r: the window is
+/// found where it is wider than 1/64 of a grid step, ~1 % in t·q_r).
+pub const WINDOW_PROBES: usize = 6;
+
+/// A thickness inside a hysteresis window between `lo` and `hi` (t·q_r and its evaluation,
+/// one stable branch each) whose a_r differ by more than [`JUMP_FACTOR`], and its evaluation:
+/// bisection in ln t·q_r, each step towards the side where a_r changes more, until a thickness
+/// has two stable branches (at most [`WINDOW_PROBES`] solves by `eval`, None where a solve
+/// fails). None without such a jump, or where no window was found.
+pub fn window_between(
+    eval: &dyn Fn(f64) -> Result<Option<engine::Evaluation>>,
+    lo: (f64, &engine::Evaluation),
+    hi: (f64, &engine::Evaluation),
+) -> Result<Option<(f64, engine::Evaluation)>> {
+    let two = |e: &engine::Evaluation| e.branches.iter().filter(|b| b.stable).count() >= 2;
+    let jump = |a: f64, b: f64| (a.max(b) / a.min(b).max(f64::MIN_POSITIVE)).ln();
+    if two(lo.1) || two(hi.1) || jump(lo.1.stats.a_r, hi.1.stats.a_r) <= JUMP_FACTOR.ln() {
+        return Ok(None);
+    }
+    let ((mut t0, mut a0), (mut t1, mut a1)) = ((lo.0, lo.1.stats.a_r), (hi.0, hi.1.stats.a_r));
+    for _ in 0..WINDOW_PROBES {
+        let tm = (t0 * t1).sqrt();
+        let Some(e) = eval(tm)? else {
+            return Ok(None);
+        };
+        if two(&e) {
+            return Ok(Some((tm, e)));
+        }
+        let am = e.stats.a_r;
+        if jump(a0, am) >= jump(am, a1) {
+            (t1, a1) = (tm, am);
+        } else {
+            (t0, a0) = (tm, am);
+        }
+    }
+    Ok(None)
+}
+
+/// ū/h_rms at p* from the chart sweep's rows ([`sweep::interpolate_in_ln_p`]), when p* lies
+/// inside the swept range: it saves a separate gap computation (a sweep from p* to full
+/// contact) on every step of p*.
+pub fn interpolate_gap(sd: &SweepData, p: f64) -> Option<f64> {
+    sweep::interpolate_in_ln_p(&sd.p, &sd.gap_rel, p)
+}
+
+/// The bracket of the loading branch's ū/h_rms at `p` (interpolated in ln p* like the gap
+/// itself), where the sweep has one.
+pub fn gap_bracket_at(sd: &SweepData, p: f64) -> Option<(f64, f64)> {
+    if sd.gap_lower.len() != sd.p.len() || sd.gap_upper.len() != sd.p.len() {
+        return None;
+    }
+    let lo = sweep::interpolate_in_ln_p(&sd.p, &sd.gap_lower, p)?;
+    let hi = sweep::interpolate_in_ln_p(&sd.p, &sd.gap_upper, p)?;
+    (lo.is_finite() && hi.is_finite()).then_some((lo.min(hi), hi.max(lo)))
+}
+
+/// The scale view of `scene`: [`SCALE_FRAMES`] snapshots of Pr(σ*, q) read off the engine's
+/// march at chart accuracy ([`Options::chart`]), sampled on [`SIGMA_POINTS`] σ*.
+pub fn scale_view(scene: &Scene, cancel: &AtomicBool) -> Result<ScalesData> {
+    use asperity::theory::adhesion::scales::{snapshots, Sampling};
+    let acc = Options::chart().adhesion;
+    let s = snapshots(
+        scene,
+        &acc,
+        None,
+        SCALE_FRAMES,
+        Sampling::Points(SIGMA_POINTS),
+        Some(cancel),
+    )?;
+    Ok(ScalesData::from_scales(&s))
+}
+
+/// Loads of the GFMD sweep drawn on the a_r and ū charts (p*/3 … 3p*).
+pub const GFMD_SWEEP_POINTS: usize = 5;
+
+/// Bins of the GFMD Pr(σ*) histogram drawn in the explorer.
+pub const GFMD_CHART_BINS: usize = 80;
+
+/// Least time between two progress reports of the GFMD job within a phase (a new phase is
+/// reported at once).
+pub const GFMD_REPORT_EVERY: std::time::Duration = std::time::Duration::from_millis(100);
+
+/// The loads of the GFMD sweep at p*: [`GFMD_SWEEP_POINTS`] log-spaced from p*/3 to 3p*
+/// (within the allowed loads).
+pub fn gfmd_sweep_spec(p: f64) -> SweepSpec {
+    SweepSpec {
+        from: (p / 3.0).max(1e-6),
+        to: (3.0 * p).min(1.0).max(p / 3.0 * 1.01),
+        points: GFMD_SWEEP_POINTS,
+    }
+}
+
+/// The GFMD job of `g` ([`crate::tui::model::progress::plan`]): the relaxation at p* from first touch and
+/// the theory on the map's spectrum ([`asperity::gfmd::run`]), then the same map over the
+/// loads of [`gfmd_sweep_spec`], each warm-started from the one below, and the theory's
+/// sweep on the map ([`asperity::gfmd::sweep::run_sweep`]). `report` gets the progress: at
+/// once when a phase begins, then at most every [`GFMD_REPORT_EVERY`]. `cancel` ends it with
+/// [`Error::Cancelled`] within one solver step or one march of the theory's adhesive solver.
+/// A sweep that fails otherwise leaves the run at p* with the reason
+/// ([`GfmdView::sweep_error`]).
+pub fn gfmd_job(
+    setup: &asperity::gfmd::GfmdSetup,
+    cancel: &AtomicBool,
+    report: &mut dyn FnMut(crate::tui::model::progress::GfmdProgress),
+) -> Result<GfmdView> {
+    use asperity::gfmd::{Progress, Stage};
+    // a chart-sized histogram: ~10⁴ contact nodes on 512² give ~100 per bin
+    let opts = asperity::gfmd::GfmdOptions {
+        pr_bins: GFMD_CHART_BINS,
+        ..asperity::gfmd::GfmdOptions::default()
+    };
+    let spec = gfmd_sweep_spec(setup.scene.pressure());
+    let plan = crate::tui::model::progress::plan(setup.scene.pressure(), &spec.pressures());
+    let mut clock = crate::tui::model::progress::Timeline::new(plan, grid_side(setup));
+    let mut last: Option<std::time::Instant> = None;
+    let mut on = |index: usize, p: &Progress| {
+        let new_phase = clock.enter(index);
+        if new_phase || last.is_none_or(|t| t.elapsed() >= GFMD_REPORT_EVERY) {
+            last = Some(std::time::Instant::now());
+            report(clock.report(p.iteration, p.residual));
+        }
+    };
+    on(
+        0,
+        &Progress {
+            stage: Stage::Relax,
+            iteration: 0,
+            residual: f64::NAN,
+            contact_fraction: 0.0,
+        },
+    );
+    let r = asperity::gfmd::run(
+        setup,
+        &opts,
+        &mut |p| on(if p.stage == Stage::Theory { 1 } else { 0 }, &p),
+        cancel,
+    )?;
+    let view = GfmdView::from_result(&r);
+    // the theory's sweep is reported with the index one past the last load
+    match asperity::gfmd::sweep::run_sweep(setup, &spec, &opts, &mut |k, p| on(2 + k, &p), cancel) {
+        Ok(sw) => Ok(view.with_sweep(&sw)),
+        Err(Error::Cancelled) => Err(Error::Cancelled),
+        Err(e) => Ok(GfmdView {
+            sweep_error: Some(e.to_string()),
+            ..view
+        }),
+    }
+}
+
+/// Runs [`gfmd_job`] on its own thread (the theory worker stays responsive), sending the
+/// progress and, at the end, the result and the job's wall time.
+pub fn spawn_gfmd(
+    id: u64,
+    setup: asperity::gfmd::GfmdSetup,
+    cancel: Arc<AtomicBool>,
+    send: impl Fn(Reply) + Send + 'static,
+) -> std::io::Result<std::thread::JoinHandle<()>> {
+    std::thread::Builder::new().name("asperity-gfmd".into()).spawn(move || {
+        let t0 = std::time::Instant::now();
+        let result = gfmd_job(&setup, &cancel, &mut |progress| {
+            send(Reply::GfmdProgress { id, progress })
+        });
+        send(Reply::GfmdDone {
+            id,
+            result,
+            elapsed_s: t0.elapsed().as_secs_f64(),
+        });
+    })
+}
+
+/// The GFMD setup of `g`: the scene on the preset's reduced grid (a 512² default), or on the
+/// measured `map` where one is given.
+pub fn gfmd_setup(preset: &Preset, scene: &Scene, map: Option<&Surface>) -> asperity::gfmd::GfmdSetup {
+    let grid = preset
+        .gfmd
+        .as_ref()
+        .map(asperity::gfmd::GridSpec::from_preset)
+        .unwrap_or(asperity::gfmd::GridSpec {
+            system_size_ratio: 2.0,
+            bandwidth: 32.0,
+            points_per_short_wavelength: 8.0,
+        });
+    asperity::gfmd::GfmdSetup {
+        scene: scene.clone(),
+        grid,
+        seed: 1,
+        surface: map.cloned(),
+        rescale: true,
+    }
+}
+
+/// The side N of the N×N grid GFMD runs on: the map's where one is given, else the grid's.
+pub fn grid_side(setup: &asperity::gfmd::GfmdSetup) -> usize {
+    setup.surface.as_ref().map_or(setup.grid.n(), |s| s.nx)
+}
+
+#[cfg(test)]
+#[path = "engine_tests.rs"]
+mod tests;

@@ -1,0 +1,567 @@
+//! `e`: writes the current curves as CSV and the scene as a preset TOML (loadable again with
+//! `--preset PATH`) into the export directory, under names that never overwrite:
+//! `asperity-NAME-N-pr.csv`, `asperity-NAME-N-loads.csv` (both branches of a hysteresis and
+//! its edges, [`loads_csv`]), `asperity-NAME-N-gfmd.csv` (after `g`, [`gfmd_csv`]),
+//! `asperity-NAME-N-thickness.csv` (with the thickness chart shown, [`thickness_csv`]),
+//! `asperity-NAME-N-pins.csv` (pinned curves), `asperity-NAME-N-scales.csv` (the scale view)
+//! and `asperity-NAME-N.toml`. The CSVs start with `#` lines describing the scene;
+//! unavailable values are empty cells.
+//!
+//! `s`: writes the visible charts as SVG and PNG (`asperity-NAME-N-CHART.svg|png`) through
+//! the chart renderer ([`crate::chart`]), from the same [`ChartModel`]s the screen shows.
+
+use crate::chart::{self, ChartSpec, Series, SeriesStyle};
+use crate::tui::charts::plot::Scale;
+use crate::tui::charts::{self, ChartKind, ChartModel, Role};
+use crate::tui::model::app::App;
+use crate::tui::model::data::{GfmdView, SweepData, ThicknessData};
+use asperity::error::{Error, Result};
+use asperity::input::preset::{ModelSpec, Preset};
+use asperity::input::scene::Scene;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The preset describing `scene` (the current preset with load, thickness, model and γ_s
+/// replaced).
+pub fn scene_preset(base: &Preset, scene: &Scene) -> Preset {
+    let mut p = base.clone();
+    p.load.pressure = scene.pressure();
+    p.load.thickness_qr = scene.thickness_qr();
+    p.adhesion.surface_energy_j_m2 = scene.surface_energy_j_m2();
+    p.adhesion.range_m = scene.range_m();
+    // the preset's own spelling of the model (custom coefficients, YP08/Xu24 with γ_f)
+    p.model = ModelSpec::of_model(&scene.model());
+    p.description = format!("{} (exported from the explorer)", base.description);
+    p
+}
+
+/// A CSV cell: empty where the value is unavailable (as `asperity sweep` writes it).
+pub fn cell(x: f64) -> String {
+    if x.is_finite() {
+        format!("{x:e}")
+    } else {
+        String::new()
+    }
+}
+
+/// `# key: value` lines describing the scene, for the top of every exported CSV.
+pub fn scene_comment(app: &App, name: &str) -> String {
+    let s = &app.scene;
+    let t = if s.thickness_qr().is_infinite() {
+        "inf".to_string()
+    } else {
+        format!("{}", s.thickness_qr())
+    };
+    format!(
+        "# asperity explorer export {name}\n# preset: {} ({})\n# model: {}\n# pressure: {}\n# thickness_qr: {t}\n\
+         # gamma_j_m2: {}\n# range_m: {}\n# reduced units: stresses by E*g = {} Pa, gap by h_rms = {} m\n",
+        app.preset.name,
+        app.source,
+        s.model().label(),
+        s.pressure(),
+        s.surface_energy_j_m2(),
+        s.range_m(),
+        s.stress_unit(),
+        s.spectrum().rms_height()
+    )
+}
+
+fn write(path: &Path, text: &str) -> Result<()> {
+    std::fs::write(path, text).map_err(|e| Error::io_file("write", "", path, &e))
+}
+
+/// Writes the files under the next free number; returns their paths.
+pub fn export(app: &App) -> Result<Vec<String>> {
+    export_as(app, next_number(&app.export_dir, &safe_name(app))?)
+}
+
+/// Writes the files as `asperity-NAME-N…`; returns their paths.
+pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
+    let name = safe_name(app);
+    let dir = &app.export_dir;
+    let stem = format!("asperity-{name}-{n}");
+    let mut paths = Vec::new();
+
+    let mut preset = scene_preset(&app.preset, &app.scene);
+    preset.name = stem.clone();
+    let toml_text = toml::to_string(&preset).map_err(|e| Error::io("serialise the scene", e))?;
+    let header = match &app.scene.spectrum() {
+        asperity::surface::spectrum::Spectrum::Tabulated(t) => format!(
+            "# Scene exported by the asperity explorer on the measured spectrum of {src}.\n\
+             # A preset names no surface file: [surface] below is the preset's, not the scene's.\n\
+             # Open the scene with `asperity tui --preset {stem}.toml --surface {src}` (--psd for a PSD table).\n",
+            src = t.source
+        ),
+        _ => format!("# Scene exported by the asperity explorer; open it with `asperity tui --preset {stem}.toml`.\n"),
+    };
+    let path = dir.join(format!("{stem}.toml"));
+    write(&path, &(header + &toml_text))?;
+    paths.push(path.display().to_string());
+
+    if let Some(Ok(pt)) = &app.point {
+        let mut t = scene_comment(app, &stem);
+        t.push_str("sigma,density\n");
+        for (s, d) in &pt.pr {
+            let _ = writeln!(t, "{},{}", cell(*s), cell(*d));
+        }
+        let path = dir.join(format!("{stem}-pr.csv"));
+        write(&path, &t)?;
+        paths.push(path.display().to_string());
+    }
+    if let Some(Ok(sw)) = &app.sweep {
+        let path = dir.join(format!("{stem}-loads.csv"));
+        write(&path, &(scene_comment(app, &stem) + &loads_csv(sw)))?;
+        paths.push(path.display().to_string());
+    }
+    if let Some(Ok(th)) = app
+        .thickness
+        .as_ref()
+        .filter(|_| app.charts.contains(&ChartKind::Thickness))
+    {
+        let path = dir.join(format!("{stem}-thickness.csv"));
+        write(&path, &(scene_comment(app, &stem) + &thickness_csv(th)))?;
+        paths.push(path.display().to_string());
+    }
+    if let Some(g) = app
+        .gfmd_for_scene()
+        .filter(|g| !g.sweep.is_empty() || g.a_r.is_finite())
+    {
+        let path = dir.join(format!("{stem}-gfmd.csv"));
+        write(&path, &(scene_comment(app, &stem) + &gfmd_csv(g)))?;
+        paths.push(path.display().to_string());
+    }
+    if !app.pins.is_empty() {
+        // the pinned curves, each named by what differs from the exported scene
+        let mut t = scene_comment(app, &stem);
+        t.push_str("pin,label,chart,x,y\n");
+        for (i, p) in app.pins.iter().enumerate() {
+            let label = crate::tui::model::pins::label(&p.scene, &app.scene).replace(',', ";");
+            for (k, pts) in &p.curves {
+                for (x, y) in pts {
+                    let _ = writeln!(t, "{},{label},{},{},{}", i + 1, k.name(), cell(*x), cell(*y));
+                }
+            }
+        }
+        let path = dir.join(format!("{stem}-pins.csv"));
+        write(&path, &t)?;
+        paths.push(path.display().to_string());
+    }
+    if let Some(sd) = app.scales_data().filter(|_| app.shows_scales()) {
+        // the scale view: every frame's Pr(σ*, q), long format
+        let mut t = scene_comment(app, &stem);
+        t.push_str("frame,q_over_q_l,a_r_q,sigma_a_q,sigma,density\n");
+        for (i, f) in sd.frames.iter().enumerate() {
+            for (s, d) in &f.pr {
+                let _ = writeln!(
+                    t,
+                    "{},{},{},{},{},{}",
+                    i + 1,
+                    cell(f.q_rel),
+                    cell(f.a_r),
+                    cell(f.sigma_a),
+                    cell(*s),
+                    cell(*d)
+                );
+            }
+        }
+        let path = dir.join(format!("{stem}-scales.csv"));
+        write(&path, &t)?;
+        paths.push(path.display().to_string());
+    }
+    Ok(paths)
+}
+
+/// Column at `i` of a per-load column that may be empty (no such curve): an empty cell then.
+fn at(v: &[f64], i: usize) -> f64 {
+    v.get(i).copied().unwrap_or(f64::NAN)
+}
+
+/// The load curves as CSV: the loading branch (a_r, ū/h_rms with its bracket, σ̄_c*), the
+/// unloading branch inside a hysteresis window (empty cells elsewhere), and the window's
+/// edges as `#` lines (`# jump_in_pressure: …`: above it the loading branch no longer
+/// exists; `# pull_off_pressure: …`: below it the unloading branch no longer exists). The
+/// column names are `asperity sweep`'s.
+pub fn loads_csv(sw: &SweepData) -> String {
+    let mut t = String::new();
+    let edge = |x: Option<f64>| x.map_or_else(|| "none in the range".to_string(), |v| format!("{v:e}"));
+    let _ = writeln!(t, "# jump_in_pressure: {}", edge(sw.jump_in));
+    let _ = writeln!(t, "# pull_off_pressure: {}", edge(sw.pull_off));
+    t.push_str(
+        "p,a_r,mean_gap_rel,mean_contact_stress,converged,mean_gap_lower_rel,mean_gap_upper_rel,\
+         a_r_unloading,mean_gap_unloading_rel\n",
+    );
+    for i in 0..sw.p.len() {
+        let _ = writeln!(
+            t,
+            "{},{},{},{},{},{},{},{},{}",
+            cell(sw.p[i]),
+            cell(sw.a_r[i]),
+            cell(sw.gap_rel[i]),
+            cell(sw.mean_contact_stress[i]),
+            sw.converged.get(i).copied().unwrap_or(false),
+            cell(at(&sw.gap_lower, i)),
+            cell(at(&sw.gap_upper, i)),
+            cell(at(&sw.a_r_unloading, i)),
+            cell(at(&sw.gap_unloading, i)),
+        );
+    }
+    t
+}
+
+/// The thickness chart as CSV (with the thickness chart shown): a_r against t·q_r at the
+/// scene's p* — the loading branch, the unloading branch inside a hysteresis window (empty
+/// cells elsewhere), the adhesionless reference — and the windows' edges as `#` lines
+/// (`# jump_in_thickness_qr: …` where the small contact ends, thinner; `#
+/// pull_off_thickness_qr: …` where the large one ends, thicker); `# a_r_half_space:` is t = ∞.
+pub fn thickness_csv(th: &ThicknessData) -> String {
+    let list = |v: &[f64]| {
+        if v.is_empty() {
+            "none in the range".to_string()
+        } else {
+            v.iter().map(|x| format!("{x:e}")).collect::<Vec<_>>().join(" ")
+        }
+    };
+    let mut t = String::new();
+    let _ = writeln!(t, "# a_r_half_space: {}", cell(th.a_r_inf));
+    let _ = writeln!(t, "# jump_in_thickness_qr: {}", list(&th.jump_in));
+    let _ = writeln!(t, "# pull_off_thickness_qr: {}", list(&th.pull_off));
+    t.push_str("thickness_qr,a_r,a_r_unloading,a_r_adhesionless\n");
+    for i in 0..th.t.len() {
+        let dry = th.adhesionless.as_deref().map_or(f64::NAN, |d| at(d, i));
+        let _ = writeln!(
+            t,
+            "{},{},{},{}",
+            cell(th.t[i]),
+            cell(th.a_r[i]),
+            cell(at(&th.a_r_unloading, i)),
+            cell(dry)
+        );
+    }
+    t
+}
+
+/// The GFMD results of the scene as CSV, long format: `source` is `gfmd` (the run at p* and
+/// the loads of its sweep) or `theory_on_map` (the theory on the map's own discrete spectrum
+/// at the same loads: the like-for-like comparison).
+pub fn gfmd_csv(g: &GfmdView) -> String {
+    let mut t = format!(
+        "# GFMD on a {n}x{n} grid, {it} steps at p* = {p:e}\n",
+        n = g.grid,
+        it = g.iterations,
+        p = g.pressure
+    );
+    t.push_str("source,p,a_r,mean_gap_rel,mean_contact_stress\n");
+    let mut rows: Vec<(&str, f64, f64, f64, f64)> = vec![("gfmd", g.pressure, g.a_r, g.gap_rel, g.mean_contact_stress)];
+    // the sweep's middle load is the run itself
+    let other = |p: f64| (p / g.pressure - 1.0).abs() > 1e-9;
+    rows.extend(
+        g.sweep
+            .iter()
+            .filter(|r| other(r.0))
+            .map(|r| ("gfmd", r.0, r.1, r.2, f64::NAN)),
+    );
+    if let Some(a) = g.theory_a_r {
+        rows.push(("theory_on_map", g.pressure, a, f64::NAN, f64::NAN));
+    }
+    rows.extend(
+        g.theory_sweep
+            .iter()
+            .filter(|r| other(r.0) || g.theory_a_r.is_none())
+            .map(|r| ("theory_on_map", r.0, r.1, r.2, f64::NAN)),
+    );
+    rows.sort_by(|a, b| a.0.cmp(b.0).then(a.1.total_cmp(&b.1)));
+    for (src, p, a, u, s) in rows {
+        let _ = writeln!(t, "{src},{},{},{},{}", cell(p), cell(a), cell(u), cell(s));
+    }
+    t
+}
+
+/// The chart of the renderer ([`crate::chart`]) for a chart model, as drawn on screen: the
+/// same series, names and colours ([`crate::looks`]); the −σ_a* wall becomes a dashed vertical line, the current point a
+/// point; guide lines (σ* = 0, the p* line) are left out; on a clipped log axis the points
+/// below the chart's range are gaps, as on screen.
+pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
+    let mut series = Vec::new();
+    let ylo = m.ys.inverse(m.yb[0]);
+    let (y0, y1) = {
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for s in &m.series {
+            for &(_, y) in &s.points {
+                if y.is_finite() && (!m.clip_y || y >= ylo) {
+                    lo = lo.min(y);
+                    hi = hi.max(y);
+                }
+            }
+        }
+        (lo, hi)
+    };
+    // vertical markers span the data's y range (> 0 on a log axis); the markers of one role
+    // (the two cut-offs of a spectrum) are one series, one legend entry
+    let lo = if m.ys == Scale::Log10 {
+        m.series
+            .iter()
+            .flat_map(|s| s.points.iter())
+            .map(|q| q.1)
+            .filter(|y| y.is_finite() && *y > 0.0)
+            .fold(f64::INFINITY, f64::min)
+    } else {
+        y0.min(0.0)
+    };
+    let mut marked: Vec<(Role, usize)> = Vec::new();
+    for v in &m.vlines {
+        let marked_role = matches!(v.role, Role::Wall | Role::JumpIn | Role::PullOff);
+        if !(marked_role && lo.is_finite() && y1.is_finite()) {
+            continue;
+        }
+        let line = [(v.x, lo), (v.x, y1)];
+        match marked.iter().find(|(r, _)| *r == v.role) {
+            Some(&(_, i)) => {
+                let s: &mut Series = &mut series[i];
+                s.points.push((f64::NAN, f64::NAN));
+                s.points.extend(line);
+                if s.name.is_empty() {
+                    s.name = v.name.clone();
+                }
+            }
+            None => {
+                let look = m.vline_look(v);
+                marked.push((v.role, series.len()));
+                series.push(Series {
+                    name: v.name.clone(),
+                    points: line.to_vec(),
+                    style: SeriesStyle::Dashed,
+                    colour: look.ink.rgb(),
+                    shape: look.shape,
+                });
+            }
+        }
+    }
+    for (i, s) in m.series.iter().enumerate() {
+        let look = m.series_look(i);
+        let points = if m.clip_y {
+            s.points
+                .iter()
+                .map(|&(x, y)| if y >= ylo { (x, y) } else { (x, f64::NAN) })
+                .collect()
+        } else {
+            s.points.clone()
+        };
+        series.push(Series {
+            // the current point is p* on the load charts, q on the scale view's
+            name: if s.role == Role::Current {
+                format!("current {}", s.name)
+            } else {
+                s.name.clone()
+            },
+            points,
+            style: s.draw,
+            colour: look.ink.rgb(),
+            shape: look.shape,
+        });
+    }
+    ChartSpec {
+        title: format!("{} — {scene_note}", m.title),
+        x_label: m.x_label.clone(),
+        y_label: m.y_label.clone(),
+        x_log: m.xs == Scale::Log10,
+        y_log: m.ys == Scale::Log10,
+        series,
+    }
+}
+
+/// The file number of the next `e` or `s`: one past the highest number of any
+/// `asperity-NAME-N…` file in `dir`, so the two keys share one sequence and never overwrite.
+pub fn next_number(dir: &Path, name: &str) -> Result<u32> {
+    let prefix = format!("asperity-{name}-");
+    let highest = std::fs::read_dir(dir)
+        .map_err(|e| Error::io_file("read", "", dir, &e))?
+        .filter_map(|e| e.ok())
+        .filter_map(|e| {
+            let f = e.file_name().to_string_lossy().into_owned();
+            let rest = f.strip_prefix(&prefix)?;
+            let digits: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
+            let after = rest[digits.len()..].chars().next();
+            // NAME-N.ext or NAME-N-part.ext (a preset named like NAME-2 does not count)
+            matches!(after, Some('.') | Some('-'))
+                .then(|| digits.parse::<u32>().ok())
+                .flatten()
+        })
+        .max()
+        .unwrap_or(0);
+    if highest >= 9_999 {
+        return Err(Error::io("export", "too many exports in this directory"));
+    }
+    Ok(highest + 1)
+}
+
+/// The scene's name as a file name (`asperity-NAME-N…`): the measured surface's file stem,
+/// else the preset's name.
+pub fn safe_name(app: &App) -> String {
+    let surface = crate::tui::model::words::surface_name(&app.scene)
+        .map(|f| f.rsplit_once('.').map_or(f.clone(), |(stem, _)| stem.to_string()));
+    surface
+        .unwrap_or_else(|| app.preset.name.clone())
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// `s`: writes the visible charts (each once) as SVG and PNG into the export directory, as
+/// `asperity-NAME-N-CHART.svg|png` (N never overwrites); returns the paths.
+pub fn export_charts(app: &App) -> Result<Vec<String>> {
+    export_charts_as(app, next_number(&app.export_dir, &safe_name(app))?)
+}
+
+/// `s` under number `n`.
+pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
+    let mut kinds: Vec<ChartKind> = Vec::new();
+    for k in app.charts {
+        if !kinds.contains(&k) {
+            kinds.push(k);
+        }
+    }
+    let models: Vec<(ChartKind, ChartModel)> = kinds
+        .into_iter()
+        .map(|k| (k, charts::build(app, k)))
+        .filter(|(_, m)| m.empty.is_none())
+        .collect();
+    if models.is_empty() {
+        return Err(Error::Unsupported("no chart to save yet (nothing computed)".into()));
+    }
+    let name = safe_name(app);
+    let dir = &app.export_dir;
+    let sc = &app.scene;
+    let t = if sc.thickness_qr().is_infinite() {
+        "∞".to_string()
+    } else {
+        crate::tui::charts::plot::format_number(sc.thickness_qr())
+    };
+    let system = crate::tui::model::words::surface_name(sc).unwrap_or_else(|| app.preset.name.clone());
+    let note = format!(
+        "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
+        system,
+        sc.model().label(),
+        crate::tui::charts::plot::format_number(sc.surface_energy_j_m2())
+    );
+    let mut paths = Vec::new();
+    for (k, m) in &models {
+        let spec = chart_spec(m, &note);
+        for (ext, write) in [
+            ("svg", chart::write_svg as fn(&ChartSpec, &Path) -> std::io::Result<()>),
+            ("png", chart::write_png),
+        ] {
+            let path = dir.join(format!("asperity-{name}-{n}-{}.{ext}", k.name()));
+            write(&spec, &path).map_err(|e| Error::io_file("write", "", &path, &e))?;
+            paths.push(path.display().to_string());
+        }
+    }
+    Ok(paths)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn export_writes_three_files_without_overwriting() {
+        let dir = std::env::temp_dir().join(format!("asperity-export-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let mut app = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
+        app.export_dir = dir.clone();
+        crate::tui::drive::compute_now(&mut app, &mut Default::default());
+        let first = export(&app).unwrap();
+        assert_eq!(first.len(), 3, "{first:?}");
+        let second = export(&app).unwrap();
+        assert!(second[0].ends_with("asperity-system-1-2.toml"), "{second:?}");
+        let csv = std::fs::read_to_string(&first[2]).unwrap();
+        // scene metadata as comments, then the columns of `sweep` (empty cells, converged)
+        assert!(
+            csv.starts_with("# asperity explorer export asperity-system-1-1\n# preset: system-1"),
+            "{csv}"
+        );
+        assert!(csv.contains("# pressure: 0.01\n"), "{csv}");
+        let rows: Vec<&str> = csv.lines().filter(|l| !l.starts_with('#')).collect();
+        // the first five columns are the public interface; the rest extend it
+        assert!(
+            rows[0].starts_with("p,a_r,mean_gap_rel,mean_contact_stress,converged,"),
+            "{}",
+            rows[0]
+        );
+        assert_eq!(rows.len(), 1 + crate::tui::effects::worker::SWEEP_POINTS);
+        assert_eq!(rows[1].split(',').nth(4), Some("true"), "{}", rows[1]);
+        assert!(!csv.contains("NaN") && !csv.contains("0.000e0"));
+        let back = Preset::load(std::path::Path::new(&first[0])).unwrap();
+        assert_eq!(crate::tui::model::app::initial_scene(&back).unwrap(), app.scene);
+        // the exported scene is named after its file, not the stock preset
+        assert_eq!(back.name, "asperity-system-1-1");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn s_saves_the_visible_charts_as_svg_and_png() {
+        let dir = std::env::temp_dir().join(format!("asperity-svg-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let mut app = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
+        app.export_dir = dir.clone();
+        app.set_typed(crate::tui::model::app::Param::Gamma, "0").unwrap();
+        app.set_charts([ChartKind::PrLog, ChartKind::AreaRatio, ChartKind::PrLog]);
+        crate::tui::drive::compute_now(&mut app, &mut Default::default());
+        let paths = export_charts(&app).unwrap();
+        assert_eq!(paths.len(), 4, "{paths:?}");
+        assert!(paths[0].ends_with("asperity-system-1-1-pr-loglog.svg"), "{paths:?}");
+        let svg = std::fs::read_to_string(&paths[0]).unwrap();
+        for name in ["σ→0 asymptote", "large-σ asymptote", "theory"] {
+            assert!(svg.contains(name), "{name}");
+        }
+        let svg = std::fs::read_to_string(&paths[2]).unwrap();
+        assert!(svg.contains("eq. (18)") && svg.contains("[S] Table 1"), "{svg}");
+        assert!(std::fs::read(&paths[3]).unwrap().starts_with(b"\x89PNG"));
+        let again = export_charts(&app).unwrap();
+        assert!(again[0].ends_with("asperity-system-1-2-pr-loglog.svg"), "{again:?}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_named_variant_exports_as_itself() {
+        use asperity::input::model::{Model, ModelKind};
+        let base = Preset::resolve("system-1").unwrap();
+        let mut scene = base.scene().unwrap();
+        scene.set_surface_energy_j_m2(0.0).unwrap();
+        let m = Model::fudge(ModelKind::Yp08, 0.42).unwrap();
+        scene.set_model(m).unwrap();
+        let back = scene_preset(&base, &scene).scene().unwrap();
+        assert_eq!(back.model(), m);
+    }
+
+    #[test]
+    fn unavailable_values_are_empty_cells() {
+        assert_eq!(cell(f64::NAN), "");
+        assert_eq!(cell(f64::INFINITY), "");
+        assert_eq!(cell(0.0), "0e0");
+        assert_eq!(cell(0.25), "2.5e-1");
+    }
+
+    #[test]
+    fn exported_scene_loads_back() {
+        let p = Preset::resolve("system-1").unwrap();
+        let mut s = p.scene().unwrap();
+        s.set_pressure(0.02).unwrap();
+        s.set_thickness_qr(f64::INFINITY).unwrap();
+        s.set_model(asperity::input::model::Model::custom(0.1, 0.2, 0.5, 1.5, true).unwrap())
+            .unwrap();
+        let text = toml::to_string(&scene_preset(&p, &s)).unwrap();
+        let back = Preset::parse(&text, "export").unwrap().scene().unwrap();
+        assert_eq!(back, s);
+        s.set_thickness_qr(0.5).unwrap();
+        s.set_model(asperity::input::model::Model::named(2).unwrap()).unwrap();
+        let text = toml::to_string(&scene_preset(&p, &s)).unwrap();
+        assert_eq!(Preset::parse(&text, "export").unwrap().scene().unwrap(), s);
+    }
+}

@@ -1,0 +1,403 @@
+//! The GFMD job of `g` as plain data: its phases (the relaxation at p*, the theory on the map,
+//! each load of the sweep, the theory's sweep on the map), a progress report, the estimate of
+//! the time left, the job's state in the explorer ([`GfmdState`]), and the words the panel and
+//! the status line show.
+//!
+//! Estimate of the time left ([`eta_s`]): each phase still to run is given the duration of
+//! finished phases like it (a load: the mean of the finished loads, or the relaxation's before
+//! the first load has finished, a cold start like it; the theory's sweep:
+//! [`THEORY_SWEEP_FACTOR`] times the theory at p*), the phase running now its estimate less
+//! what it has run. Until the relaxation and the theory at p* have both finished there is no
+//! estimate ("estimating").
+
+use crate::tui::model::data::GfmdView;
+use asperity::input::scene::Scene;
+use std::time::Instant;
+
+/// One phase of the GFMD job, in the order the job runs them ([`plan`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GfmdPhase {
+    /// Relaxing the contact at the scene's p* from first touch.
+    Relax {
+        /// p*.
+        p: f64,
+    },
+    /// The theory on the map's own spectrum at p*.
+    Theory,
+    /// Load `k` (from 0) of the `n` of the sweep on the same map, warm-started from load k − 1.
+    Load {
+        /// Index of the load.
+        k: usize,
+        /// Number of loads.
+        n: usize,
+        /// p* of the load.
+        p: f64,
+    },
+    /// The theory's sweep on the map's spectrum over the same loads.
+    TheorySweep,
+}
+
+impl GfmdPhase {
+    /// A few words for the panel: "relax at p*", "theory on map", "load 2/5", "theory sweep".
+    pub fn label(&self) -> String {
+        match self {
+            GfmdPhase::Relax { .. } => "relax at p*".into(),
+            GfmdPhase::Theory => "theory on map".into(),
+            GfmdPhase::Load { k, n, .. } => format!("load {}/{n}", k + 1),
+            GfmdPhase::TheorySweep => "theory sweep".into(),
+        }
+    }
+
+    /// The load of a relaxation (None for the theory's phases).
+    pub fn load(&self) -> Option<f64> {
+        match self {
+            GfmdPhase::Relax { p } | GfmdPhase::Load { p, .. } => Some(*p),
+            _ => None,
+        }
+    }
+
+    /// What the status line says the job is doing.
+    pub fn sentence(&self) -> String {
+        let p = |p: &f64| crate::tui::model::words::sig(*p, 3);
+        match self {
+            GfmdPhase::Relax { p: x } => format!("relaxing at p* = {}", p(x)),
+            GfmdPhase::Theory => "the theory on the map's spectrum at p*".into(),
+            GfmdPhase::Load { k, n, p: x } => format!("load {} of {n} (p* = {})", k + 1, p(x)),
+            GfmdPhase::TheorySweep => "the theory's sweep on the map".into(),
+        }
+    }
+}
+
+/// The phases of a job at p* = `p` whose sweep runs the loads `loads`.
+pub fn plan(p: f64, loads: &[f64]) -> Vec<GfmdPhase> {
+    let n = loads.len();
+    let mut v = vec![GfmdPhase::Relax { p }, GfmdPhase::Theory];
+    v.extend(loads.iter().enumerate().map(|(k, &p)| GfmdPhase::Load { k, n, p }));
+    v.push(GfmdPhase::TheorySweep);
+    v
+}
+
+/// The theory's sweep on the map costs about this many times the theory at p* (the default
+/// preset's 512² map: 2.1 s against 0.18 s, test profile, 2 cores).
+pub const THEORY_SWEEP_FACTOR: f64 = 12.0;
+
+/// A progress report of the GFMD job.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GfmdProgress {
+    /// The phase running.
+    pub phase: GfmdPhase,
+    /// Its index in the job's [`plan`] (from 0).
+    pub index: usize,
+    /// Number of phases of the job.
+    pub phases: usize,
+    /// Grid side N of the map (0 before the first report).
+    pub grid: usize,
+    /// Solver steps of the phase so far (Polonsky–Keer iterations plus FIRE steps).
+    pub iteration: usize,
+    /// The relative force residual (NaN before the first report).
+    pub residual: f64,
+    /// Seconds since the job started.
+    pub elapsed_s: f64,
+    /// Seconds left ([`eta_s`]); None while estimating.
+    pub eta_s: Option<f64>,
+}
+
+impl GfmdProgress {
+    /// The report of a job that has just started at p*.
+    pub fn starting(p: f64) -> GfmdProgress {
+        GfmdProgress {
+            phase: GfmdPhase::Relax { p },
+            index: 0,
+            phases: 0,
+            grid: 0,
+            iteration: 0,
+            residual: f64::NAN,
+            elapsed_s: 0.0,
+            eta_s: None,
+        }
+    }
+
+    /// "601 it, res 1e-8" (None in the theory's phases, which take no solver steps).
+    pub fn steps_text(&self) -> Option<String> {
+        self.phase.load()?;
+        Some(if self.residual.is_finite() {
+            format!("{} it, res {:.0e}", self.iteration, self.residual)
+        } else {
+            format!("{} it", self.iteration)
+        })
+    }
+
+    /// The seconds left at `elapsed` seconds (the report's estimate less the time since it
+    /// was made).
+    pub fn left_at(&self, elapsed: f64) -> Option<f64> {
+        self.eta_s.map(|e| (e - (elapsed - self.elapsed_s).max(0.0)).max(0.0))
+    }
+
+    /// The status line: "GFMD 512²: load 2 of 5 (p* = 0.00577): 732 it, res 3e-5 · 12 s,
+    /// about 38 s left · g cancels" (the times at `elapsed` seconds; without them where None).
+    pub fn status_text(&self, elapsed: Option<f64>) -> String {
+        let mut s = "GFMD ".to_string();
+        if self.grid > 0 {
+            s.push_str(&format!("{}²: ", self.grid));
+        }
+        s.push_str(&self.phase.sentence());
+        if let Some(st) = self.steps_text() {
+            s.push_str(&format!(": {st}"));
+        }
+        if let Some(t) = elapsed {
+            s.push_str(&format!(" · {}", time_text(t, self.left_at(t))));
+        }
+        s.push_str(" · g cancels");
+        s
+    }
+}
+
+/// Seconds left of a job with phases `plan`, of which the first `done.len()` have finished
+/// (`done[i]` the duration of `plan[i]`) and the next has run `current_elapsed` seconds. None
+/// until the relaxation and the theory at p* have finished (see the module docs).
+pub fn eta_s(plan: &[GfmdPhase], done: &[f64], current_elapsed: f64) -> Option<f64> {
+    let of = |want: fn(&GfmdPhase) -> bool| -> Vec<f64> {
+        plan.iter()
+            .zip(done)
+            .filter(|(p, _)| want(p))
+            .map(|(_, d)| *d)
+            .collect()
+    };
+    let relax = of(|p| matches!(p, GfmdPhase::Relax { .. })).first().copied()?;
+    let theory = of(|p| matches!(p, GfmdPhase::Theory)).first().copied()?;
+    let loads = of(|p| matches!(p, GfmdPhase::Load { .. }));
+    let load = if loads.is_empty() {
+        relax
+    } else {
+        loads.iter().sum::<f64>() / loads.len() as f64
+    };
+    let estimate = |p: &GfmdPhase| match p {
+        GfmdPhase::Relax { .. } => relax,
+        GfmdPhase::Theory => theory,
+        GfmdPhase::Load { .. } => load,
+        GfmdPhase::TheorySweep => THEORY_SWEEP_FACTOR * theory,
+    };
+    let mut rest = plan.iter().skip(done.len());
+    let current = rest.next().map_or(0.0, |p| (estimate(p) - current_elapsed).max(0.0));
+    Some(current + rest.map(estimate).sum::<f64>())
+}
+
+/// A duration: "12 ms", "0.4 s", "12 s", "2 min 05 s".
+pub fn format_secs(s: f64) -> String {
+    if !s.is_finite() || s < 0.0 {
+        return "–".into();
+    }
+    if s < 0.1 {
+        format!("{:.0} ms", s * 1e3)
+    } else if s < 10.0 {
+        format!("{s:.1} s")
+    } else if s < 60.0 {
+        format!("{s:.0} s")
+    } else {
+        let m = (s / 60.0).floor();
+        format!("{m:.0} min {:02.0} s", (s - 60.0 * m).floor())
+    }
+}
+
+/// "12 s, about 38 s left", or "3.2 s, estimating the time left".
+pub fn time_text(elapsed: f64, left: Option<f64>) -> String {
+    match left {
+        Some(l) => format!("{}, about {} left", format_secs(elapsed), format_secs(l)),
+        None => format!("{}, estimating the time left", format_secs(elapsed)),
+    }
+}
+
+/// The job's clock: which phase runs since when, and how long the finished ones took.
+#[derive(Debug, Clone)]
+pub struct Timeline {
+    plan: Vec<GfmdPhase>,
+    grid: usize,
+    start: Instant,
+    phase_start: Instant,
+    done: Vec<f64>,
+}
+
+impl Timeline {
+    /// A job with phases `plan` on an N = `grid` map, starting now.
+    pub fn new(plan: Vec<GfmdPhase>, grid: usize) -> Timeline {
+        let now = Instant::now();
+        Timeline {
+            plan,
+            grid,
+            start: now,
+            phase_start: now,
+            done: Vec::new(),
+        }
+    }
+
+    /// Moves on to phase `index` (the phases between finish now); true when the phase changed.
+    pub fn enter(&mut self, index: usize) -> bool {
+        let index = index.min(self.plan.len().saturating_sub(1));
+        if index <= self.done.len() {
+            return false;
+        }
+        while self.done.len() < index {
+            self.done.push(self.phase_start.elapsed().as_secs_f64());
+            self.phase_start = Instant::now();
+        }
+        true
+    }
+
+    /// The report of the phase running now.
+    pub fn report(&self, iteration: usize, residual: f64) -> GfmdProgress {
+        let index = self.done.len().min(self.plan.len().saturating_sub(1));
+        GfmdProgress {
+            phase: self.plan[index],
+            index,
+            phases: self.plan.len(),
+            grid: self.grid,
+            iteration,
+            residual,
+            elapsed_s: self.start.elapsed().as_secs_f64(),
+            eta_s: eta_s(&self.plan, &self.done, self.phase_start.elapsed().as_secs_f64()),
+        }
+    }
+}
+
+/// The state of the background GFMD run.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum GfmdState {
+    /// None started (or the last was cancelled).
+    #[default]
+    Idle,
+    /// Running: id, the scene it runs, its last progress report, when it started.
+    Running {
+        /// Run id.
+        id: u64,
+        /// The scene it runs.
+        scene: Scene,
+        /// The last report: phase, solver steps, residual, time left.
+        progress: GfmdProgress,
+        /// When `g` started it (the panel's clock runs between reports).
+        started: std::time::Instant,
+    },
+    /// Finished: the scene it ran, its outcome and how long it took.
+    Done {
+        /// The scene it ran.
+        scene: Scene,
+        /// The result, or the error.
+        result: std::result::Result<GfmdView, String>,
+        /// Seconds the whole job took (relaxation, sweep and the theory on the map).
+        elapsed_s: f64,
+    },
+}
+
+/// Whether two scenes describe the same physical system (GFMD does not depend on the model).
+pub(crate) fn same_system(a: &Scene, b: &Scene) -> bool {
+    a.spectrum() == b.spectrum()
+        && a.contact_modulus_pa() == b.contact_modulus_pa()
+        && a.pressure() == b.pressure()
+        && a.thickness_qr().to_bits() == b.thickness_qr().to_bits()
+        && a.surface_energy_j_m2() == b.surface_energy_j_m2()
+        && a.range_m() == b.range_m()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn job() -> Vec<GfmdPhase> {
+        plan(0.01, &[0.003, 0.01, 0.03])
+    }
+
+    #[test]
+    fn the_plan_is_relax_theory_loads_theory_sweep() {
+        let p = job();
+        assert_eq!(p.len(), 6);
+        assert_eq!(p[0], GfmdPhase::Relax { p: 0.01 });
+        assert_eq!(p[1], GfmdPhase::Theory);
+        assert_eq!(p[3], GfmdPhase::Load { k: 1, n: 3, p: 0.01 });
+        assert_eq!(p[5], GfmdPhase::TheorySweep);
+        assert_eq!(p[3].label(), "load 2/3");
+        assert_eq!(p[0].label(), "relax at p*");
+        assert_eq!(p[1].load(), None);
+    }
+
+    #[test]
+    fn no_estimate_until_relax_and_theory_have_finished() {
+        let p = job();
+        assert_eq!(eta_s(&p, &[], 3.0), None);
+        assert_eq!(eta_s(&p, &[6.0], 0.1), None);
+        // then: three loads at the relaxation's 6 s, the theory's sweep at 12 × 0.2 s
+        let e = eta_s(&p, &[6.0, 0.2], 0.0).unwrap();
+        assert!((e - (3.0 * 6.0 + 12.0 * 0.2)).abs() < 1e-12, "{e}");
+    }
+
+    #[test]
+    fn loads_are_estimated_from_the_finished_loads_less_the_time_run() {
+        let p = job();
+        // loads took 8 and 10 s; load 3 has run 4 s of its 9
+        let e = eta_s(&p, &[6.0, 0.2, 8.0, 10.0], 4.0).unwrap();
+        assert!((e - (5.0 + 2.4)).abs() < 1e-12, "{e}");
+        // a phase running over its estimate counts as finishing now
+        let e = eta_s(&p, &[6.0, 0.2, 8.0, 10.0], 30.0).unwrap();
+        assert!((e - 2.4).abs() < 1e-12, "{e}");
+        // in the last phase
+        let e = eta_s(&p, &[6.0, 0.2, 8.0, 10.0, 9.0], 1.0).unwrap();
+        assert!((e - 1.4).abs() < 1e-12, "{e}");
+    }
+
+    #[test]
+    fn durations_and_times_in_words() {
+        assert_eq!(format_secs(0.012), "12 ms");
+        assert_eq!(format_secs(0.42), "0.4 s");
+        assert_eq!(format_secs(12.4), "12 s");
+        assert_eq!(format_secs(125.0), "2 min 05 s");
+        assert_eq!(format_secs(f64::NAN), "–");
+        assert_eq!(time_text(12.0, Some(38.0)), "12 s, about 38 s left");
+        assert_eq!(time_text(3.21, None), "3.2 s, estimating the time left");
+    }
+
+    #[test]
+    fn the_status_line_names_the_phase_steps_and_times() {
+        let pr = GfmdProgress {
+            phase: GfmdPhase::Load { k: 1, n: 5, p: 0.00577 },
+            index: 3,
+            phases: 8,
+            grid: 512,
+            iteration: 732,
+            residual: 3e-5,
+            elapsed_s: 10.0,
+            eta_s: Some(40.0),
+        };
+        assert_eq!(
+            pr.status_text(Some(12.0)),
+            "GFMD 512²: load 2 of 5 (p* = 0.00577): 732 it, res 3e-5 · 12 s, about 38 s left · g cancels"
+        );
+        assert_eq!(pr.left_at(100.0), Some(0.0));
+        let th = GfmdProgress {
+            phase: GfmdPhase::Theory,
+            ..pr.clone()
+        };
+        assert_eq!(th.steps_text(), None);
+        assert_eq!(
+            GfmdProgress { grid: 0, ..th }.status_text(None),
+            "GFMD the theory on the map's spectrum at p* · g cancels"
+        );
+        let start = GfmdProgress::starting(0.01);
+        assert_eq!(start.steps_text().as_deref(), Some("0 it"));
+        assert_eq!(start.left_at(1.0), None);
+    }
+
+    #[test]
+    fn the_timeline_records_finished_phases() {
+        let mut t = Timeline::new(job(), 64);
+        assert!(!t.enter(0));
+        let r = t.report(10, 0.1);
+        assert_eq!((r.index, r.phases, r.grid, r.eta_s), (0, 6, 64, None));
+        // straight to load 1: relax and theory finished
+        assert!(t.enter(2));
+        assert!(!t.enter(2));
+        let r = t.report(0, f64::NAN);
+        assert_eq!(r.phase, GfmdPhase::Load { k: 0, n: 3, p: 0.003 });
+        assert!(r.eta_s.is_some());
+        // past the end stays on the last phase
+        t.enter(99);
+        assert_eq!(t.report(0, 0.0).phase, GfmdPhase::TheorySweep);
+    }
+}

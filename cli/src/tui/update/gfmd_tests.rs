@@ -1,0 +1,232 @@
+//! Unit tests of `g` and the GFMD job's replies (no thread: the replies are made here).
+
+use crate::tui::effects::engine as jobs;
+use crate::tui::model::app::*;
+use crate::tui::model::data::GfmdView;
+use crate::tui::model::protocol::{GfmdProgress, Reply};
+use asperity::error::Error;
+use asperity::input::preset::Preset;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::sync::atomic::Ordering;
+
+fn app() -> App {
+    let p = Preset::resolve("system-1").unwrap();
+    App::new("system-1", p).unwrap()
+}
+
+fn key(a: &mut App, code: KeyCode) {
+    a.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+}
+
+/// A progress report of run `id` in phase `index` of a five-load job at p* = 0.01.
+fn report(index: usize, iteration: usize, residual: f64) -> GfmdProgress {
+    let plan = crate::tui::model::progress::plan(0.01, &jobs::gfmd_sweep_spec(0.01).pressures());
+    GfmdProgress {
+        phase: plan[index],
+        index,
+        phases: plan.len(),
+        grid: 512,
+        iteration,
+        residual,
+        elapsed_s: 1.0,
+        eta_s: Some(40.0),
+    }
+}
+
+fn shown_progress(a: &App) -> Option<&GfmdProgress> {
+    match &a.gfmd {
+        GfmdState::Running { progress, .. } => Some(progress),
+        _ => None,
+    }
+}
+
+#[test]
+fn g_starts_and_cancels_a_gfmd_run() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('g'));
+    assert!(matches!(a.gfmd, GfmdState::Running { .. }));
+    assert!(a.animating(), "the panel's clock ticks while GFMD runs");
+    let (id, scene, cancel) = a.take_gfmd_request().expect("a run to start");
+    assert_eq!(scene, a.scene);
+    let setup = jobs::gfmd_setup(&a.preset, &scene, None);
+    assert_eq!(setup.grid.n(), 512);
+    // progress of this run is shown; a stale run's is not
+    a.on_reply(Reply::GfmdProgress {
+        id,
+        progress: report(0, 120, 1e-3),
+    });
+    assert_eq!(shown_progress(&a).map(|p| p.iteration), Some(120));
+    a.on_reply(Reply::GfmdProgress {
+        id: id + 7,
+        progress: report(3, 999, 1.0),
+    });
+    assert_eq!(shown_progress(&a).map(|p| p.iteration), Some(120));
+    // g again cancels
+    key(&mut a, KeyCode::Char('g'));
+    assert!(cancel.load(Ordering::Relaxed));
+    assert_eq!(a.gfmd, GfmdState::Idle);
+    assert!(a.take_gfmd_request().is_none());
+    // a finished run is shown for its own scene only
+    key(&mut a, KeyCode::Char('g'));
+    let (id, _, _) = a.take_gfmd_request().unwrap();
+    let view = GfmdView {
+        pressure: a.scene.pressure(),
+        a_r: 0.02,
+        mean_contact_stress: 0.5,
+        gap_rel: 1.5,
+        pr: vec![(0.1, 0.01), (0.2, 0.02)],
+        grid: 512,
+        iterations: 400,
+        elapsed_s: 0.5,
+        theory_a_r: Some(0.021),
+        ..GfmdView::default()
+    };
+    a.on_reply(Reply::GfmdDone {
+        id,
+        result: Ok(view.clone()),
+        elapsed_s: 49.8,
+    });
+    assert_eq!(a.gfmd_for_scene(), Some(&view));
+    key(&mut a, KeyCode::Right); // p* changes: the result belongs to another scene
+    assert_eq!(a.gfmd_for_scene(), None);
+}
+
+#[test]
+fn gfmd_progress_phases_and_the_time_it_took() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('g'));
+    let (id, _, _) = a.take_gfmd_request().unwrap();
+    // the start: relaxing, no residual yet, no estimate
+    let p = shown_progress(&a).unwrap();
+    assert_eq!(p.phase.label(), "relax at p*");
+    assert_eq!(p.eta_s, None);
+    // load 2 of 5 (phase 3): shown in the panel's words and the status line
+    a.on_reply(Reply::GfmdProgress {
+        id,
+        progress: report(3, 732, 3e-5),
+    });
+    assert!(a.message.is_none(), "the start message gives way to the progress");
+    let p = shown_progress(&a).unwrap();
+    assert_eq!(
+        (p.phase.label(), p.steps_text()),
+        ("load 2/5".into(), Some("732 it, res 3e-5".into()))
+    );
+    a.show_timing = false;
+    assert_eq!(
+        a.gfmd_status().unwrap(),
+        "GFMD 512²: load 2 of 5 (p* = 0.00577): 732 it, res 3e-5 · g cancels"
+    );
+    a.show_timing = true;
+    assert!(a.gfmd_status().unwrap().contains("left · g cancels"));
+    // the end: "done in X s" in the status line and kept with the result
+    a.on_reply(Reply::GfmdDone {
+        id,
+        result: Ok(GfmdView {
+            pressure: a.scene.pressure(),
+            ..GfmdView::default()
+        }),
+        elapsed_s: 49.8,
+    });
+    assert_eq!(a.message.as_ref().unwrap().text, "GFMD done in 50 s");
+    assert!(matches!(a.gfmd, GfmdState::Done { elapsed_s, .. } if elapsed_s == 49.8));
+    assert_eq!(a.gfmd_status(), None);
+    assert!(!a.animating());
+}
+
+#[test]
+fn replies_of_a_cancelled_gfmd_run_are_dropped() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('g'));
+    let (old, _, _) = a.take_gfmd_request().unwrap();
+    key(&mut a, KeyCode::Char('g')); // cancel
+                                     // its late replies change nothing while idle
+    a.on_reply(Reply::GfmdProgress {
+        id: old,
+        progress: report(2, 10, 0.1),
+    });
+    a.on_reply(Reply::GfmdDone {
+        id: old,
+        result: Err(Error::Cancelled),
+        elapsed_s: 3.0,
+    });
+    assert_eq!(a.gfmd, GfmdState::Idle);
+    // nor once a new run started
+    key(&mut a, KeyCode::Char('g'));
+    let (new, _, _) = a.take_gfmd_request().unwrap();
+    assert_ne!(new, old);
+    a.on_reply(Reply::GfmdProgress {
+        id: old,
+        progress: report(5, 500, 1e-6),
+    });
+    a.on_reply(Reply::GfmdDone {
+        id: old,
+        result: Ok(GfmdView::default()),
+        elapsed_s: 3.0,
+    });
+    assert!(matches!(a.gfmd, GfmdState::Running { id, .. } if id == new));
+    assert_eq!(shown_progress(&a).unwrap().iteration, 0);
+    // a failure of the running one is kept with its reason and time
+    a.on_reply(Reply::GfmdDone {
+        id: new,
+        result: Err(Error::io("export", "test")),
+        elapsed_s: 2.0,
+    });
+    assert!(matches!(&a.gfmd, GfmdState::Done { result: Err(e), .. } if e.contains("test")));
+    assert!(a.message.as_ref().unwrap().text.starts_with("GFMD failed after 2.0 s"));
+}
+
+#[test]
+fn the_gfmd_start_message_goes_when_the_run_ends() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('g'));
+    assert!(a.message.as_ref().unwrap().text.starts_with("GFMD started"));
+    let (id, _, _) = a.take_gfmd_request().unwrap();
+    a.on_reply(Reply::GfmdDone {
+        id,
+        result: Err(Error::Cancelled),
+        elapsed_s: 1.0,
+    });
+    assert!(a.message.is_none());
+}
+
+/// `tui --surface FILE`: `g` runs GFMD on the measured map while the scene is on the map's
+/// spectrum, and on a generated map once the scene is back on the preset's.
+#[test]
+fn g_on_a_measured_surface_runs_on_its_map() {
+    use asperity::surface::psd::{analyse, PsdOptions};
+    use asperity::surface::readers::{read, ReadOptions};
+    use asperity::surface::spectrum::{Spectrum, Tabulated};
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/two_bands.txt");
+    let map = read(std::path::Path::new(path), &ReadOptions::default()).unwrap();
+    let psd = analyse(
+        &map,
+        &PsdOptions {
+            periodic: true,
+            ..PsdOptions::default()
+        },
+    )
+    .unwrap();
+    let (q, c): (Vec<f64>, Vec<f64>) = psd.bins.iter().map(|b| (b.q, b.psd)).unzip();
+    let table = Tabulated::new(q, c, path, None, None).unwrap();
+    let mut a = app();
+    a.scene = a
+        .scene
+        .clone()
+        .with_spectrum(Spectrum::Tabulated(table.clone()))
+        .unwrap();
+    a.map = Some((path.to_string(), std::sync::Arc::new(map)));
+    key(&mut a, KeyCode::Char('g'));
+    let (_, scene, _) = a.take_gfmd_request().expect("a run to start");
+    let setup = jobs::gfmd_setup(&a.preset, &scene, a.map_of(&scene));
+    assert_eq!(setup.surface.as_ref().map(|s| (s.nx, s.ny)), Some((32, 32)));
+    assert_eq!(jobs::grid_side(&setup), 32);
+    // a table of another name is not this map's spectrum
+    let mut other = table;
+    other.source = "other.csv".into();
+    let s = scene.clone().with_spectrum(Spectrum::Tabulated(other)).unwrap();
+    assert!(a.map_of(&s).is_none());
+    // the preset's spectrum: a generated map
+    let s = scene.with_spectrum(a.preset.spectrum().unwrap()).unwrap();
+    assert!(a.map_of(&s).is_none());
+    assert_eq!(jobs::grid_side(&jobs::gfmd_setup(&a.preset, &s, a.map_of(&s))), 512);
+}

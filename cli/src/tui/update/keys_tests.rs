@@ -1,0 +1,138 @@
+//! Unit tests of the keys added for the classroom: `z`, Esc, `c` and `y`, the commands each
+//! key asks for, typed values out of range, pins of an unchanged scene.
+
+use crate::tui::model::app::*;
+use crate::tui::model::kinds::ChartKind;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+fn app() -> App {
+    let p = asperity::input::preset::Preset::resolve("system-1").unwrap();
+    let mut a = App::new("system-1", p).unwrap();
+    a.export_dir = std::env::temp_dir();
+    a
+}
+
+fn key(a: &mut App, code: KeyCode) {
+    a.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+}
+
+fn typed(a: &mut App, s: &str) {
+    for c in s.chars() {
+        key(a, KeyCode::Char(c));
+    }
+    key(a, KeyCode::Enter);
+}
+
+#[test]
+fn z_zooms_the_focused_chart_and_esc_cancels_without_quitting() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('f'));
+    key(&mut a, KeyCode::Char('z'));
+    assert!(a.zoom && a.focus == 1);
+    // Esc leaves the zoom, then has nothing to cancel and says q quits
+    key(&mut a, KeyCode::Esc);
+    assert!(!a.zoom && !a.quit);
+    key(&mut a, KeyCode::Esc);
+    assert!(!a.quit);
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("q quits")));
+    // F1 is ? (the help)
+    key(&mut a, KeyCode::F(1));
+    assert_eq!(a.overlay, Overlay::Help);
+}
+
+#[test]
+fn c_explains_itself_without_adhesion_and_y_turns_the_pr_axis() {
+    let mut a = app();
+    assert!(a.scene.is_adhesive() && a.compare);
+    key(&mut a, KeyCode::Char('c'));
+    assert!(!a.compare);
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("hidden")));
+    typed_gamma_off(&mut a);
+    key(&mut a, KeyCode::Char('c'));
+    assert!(!a.compare, "nothing to compare: c changes nothing");
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("has none")));
+    assert!(!a.log_pr);
+    key(&mut a, KeyCode::Char('y'));
+    assert!(a.log_pr);
+}
+
+fn typed_gamma_off(a: &mut App) {
+    a.set_typed(Param::Gamma, "0").unwrap();
+    assert!(!a.scene.is_adhesive());
+}
+
+#[test]
+fn work_leaves_the_update_as_commands() {
+    use crate::tui::model::command::Command;
+    let kinds = |cs: &[Command]| -> Vec<&'static str> {
+        cs.iter()
+            .map(|c| match c {
+                Command::Compute(_) => "compute",
+                Command::StartGfmd { .. } => "gfmd",
+                Command::Export => "export",
+                Command::SaveCharts => "save",
+                Command::Quit => "quit",
+            })
+            .collect()
+    };
+    let mut a = app();
+    // the first frame computes; nothing else is asked for
+    assert_eq!(kinds(&a.take_commands()), ["compute"]);
+    assert!(a.take_commands().is_empty());
+    // a knob: one computation of the latest scene, however many steps came before
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Right);
+    let cs = a.take_commands();
+    assert_eq!(kinds(&cs), ["compute"]);
+    if let Command::Compute(r) = &cs[0] {
+        assert_eq!(r.scene, a.scene);
+    }
+    // e, s, g, in the order pressed; g again before the run started drops it
+    key(&mut a, KeyCode::Char('e'));
+    key(&mut a, KeyCode::Char('s'));
+    key(&mut a, KeyCode::Char('g'));
+    assert_eq!(kinds(&a.take_commands()), ["export", "save", "gfmd"]);
+    // g cancels the running one; g g starts one and cancels it before it was started
+    key(&mut a, KeyCode::Char('g'));
+    key(&mut a, KeyCode::Char('g'));
+    key(&mut a, KeyCode::Char('g'));
+    assert!(a.take_commands().is_empty());
+    // q: quit, after what came before it
+    key(&mut a, KeyCode::Char('e'));
+    key(&mut a, KeyCode::Char('q'));
+    assert_eq!(kinds(&a.take_commands()), ["export", "quit"]);
+}
+
+#[test]
+fn a_typed_value_out_of_range_is_named_by_its_knob() {
+    let mut a = app();
+    // select t·q_r and type a negative thickness
+    let i = a.params().iter().position(|p| *p == Param::Thickness).unwrap();
+    a.selected = i;
+    typed(&mut a, "-1");
+    let m = a.message.as_ref().expect("an error").text.clone();
+    assert!(m.contains("t·q_r") && !m.contains("load.thickness_qr"), "{m}");
+    let i = a.params().iter().position(|p| *p == Param::Pressure).unwrap();
+    a.selected = i;
+    typed(&mut a, "1e9");
+    let m = a.message.as_ref().expect("an error").text.clone();
+    assert!(m.contains("p*") && !m.contains("load.pressure"), "{m}");
+}
+
+#[test]
+fn a_pin_of_the_unchanged_scene_neither_repeats_nor_renames_the_curve() {
+    let mut a = app();
+    crate::tui::drive::compute_now(&mut a, &mut Default::default());
+    key(&mut a, KeyCode::Char('P'));
+    assert_eq!(a.pins.len(), 1);
+    // the current curve keeps its name while the scene is the pinned one
+    let m = crate::tui::charts::build(&a, ChartKind::Pr);
+    assert!(
+        m.series.iter().any(|s| s.name == "theory"),
+        "{:?}",
+        m.series.iter().map(|s| &s.name).collect::<Vec<_>>()
+    );
+    key(&mut a, KeyCode::Char('P'));
+    assert_eq!(a.pins.len(), 1);
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("pinned already")));
+}

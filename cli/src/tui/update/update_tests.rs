@@ -1,0 +1,515 @@
+//! Unit tests of the state and its updates (every key without a terminal).
+#![allow(unused_imports)]
+
+use crate::tui::effects::engine;
+use crate::tui::model::app::*;
+use crate::tui::model::data::*;
+use crate::tui::model::keys::Action;
+use crate::tui::model::kinds::ChartKind;
+use crate::tui::model::protocol::{point_key, Reply};
+use crate::tui::model::tour::Tour;
+use asperity::error::{Error, Result};
+use asperity::input::model::{Model, ModelKind};
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::sync::atomic::Ordering;
+
+use ratatui::crossterm::event::KeyModifiers as M;
+
+fn app() -> App {
+    let p = Preset::resolve("system-1").unwrap();
+    let mut a = App::new("system-1", p).unwrap();
+    a.export_dir = std::env::temp_dir();
+    a
+}
+
+fn key(a: &mut App, code: KeyCode) {
+    a.on_key(KeyEvent::new(code, M::NONE));
+}
+
+fn typed(a: &mut App, s: &str) {
+    for c in s.chars() {
+        key(a, KeyCode::Char(c));
+    }
+    key(a, KeyCode::Enter);
+}
+
+#[test]
+fn log_and_linear_steps_are_on_a_grid() {
+    assert!((log_step(0.01, 20.0, 1) - 10f64.powf(-1.95)).abs() < 1e-15);
+    assert_eq!(log_step(log_step(0.01, 20.0, 1), 20.0, -1), 10f64.powf(-2.0));
+    // off-grid goes to the neighbours
+    let x = 0.0123;
+    assert!(log_step(x, 20.0, 1) > x && log_step(x, 20.0, 1) < 0.0142);
+    assert!(log_step(x, 20.0, -1) < x && log_step(x, 20.0, -1) > 0.0112);
+    // coarse grid is a subset of the fine grid
+    assert_eq!(log_step(1.0, 4.0, -1), log_step(1.0, 20.0, -5));
+    assert!((lin_step(0.5, 0.1, 1) - 0.6).abs() < 1e-12);
+    assert_eq!(lin_step(0.05, 0.1, -1), 0.0);
+    assert!((lin_step(lin_step(0.3, 0.01, 1), 0.01, -1) - 0.3).abs() < 1e-12);
+}
+
+#[test]
+fn pressure_steps_round_trip_exactly() {
+    let mut a = app();
+    assert_eq!(a.selected_param(), Param::Pressure);
+    let p0 = a.scene.pressure();
+    key(&mut a, KeyCode::Right);
+    let p1 = a.scene.pressure();
+    assert!(p1 > p0 && p1 < p0 * 1.2);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.scene.pressure(), p0);
+    a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
+    assert!((a.scene.pressure() / p0 - 10f64.powf(0.25)).abs() < 1e-12);
+    key(&mut a, KeyCode::PageDown);
+    assert_eq!(a.scene.pressure(), p0);
+}
+
+#[test]
+fn pressure_steps_return_to_the_presets_value() {
+    // system-2's p* = 0.005 is not on the 10^(k/20) grid: → → ← gave 0.004467
+    let p = Preset::resolve("system-2").unwrap();
+    let mut a = App::new("system-2", p).unwrap();
+    assert_eq!(a.scene.pressure(), 0.005);
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Left);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.scene.pressure(), 0.005);
+    key(&mut a, KeyCode::Right);
+    assert!((a.scene.pressure() / 0.005 - 10f64.powf(0.05)).abs() < 1e-12);
+    // the coarse grid contains the preset's value too
+    a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
+    assert_eq!(a.scene.pressure(), 0.005);
+    a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
+    a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
+    assert_eq!(a.scene.pressure(), 0.005);
+}
+
+#[test]
+fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
+    let mut a = app();
+    crate::tui::drive::compute_now(&mut a, &mut Default::default());
+    assert!(a.sweep.as_ref().is_some_and(|s| s.is_ok()));
+    let key_now = point_key(&a.source, &a.scene);
+    a.on_reply(Reply::Point {
+        gen: a.gen,
+        key: key_now,
+        result: Err(Error::NotConverged {
+            solver: asperity::error::Solver::AdhesiveSelfConsistency,
+            reason: "test".into(),
+        }),
+    });
+    assert!(a.sweep.as_ref().is_some_and(|s| s.is_ok()), "the load charts stay");
+    assert!(a.gap.is_some());
+    assert!(a.compute_error().unwrap().contains("did not converge"));
+}
+
+#[test]
+fn chart_selector_focus_and_models_ask_for_data() {
+    let mut a = app();
+    let _ = a.take_request();
+    key(&mut a, KeyCode::Char('v'));
+    assert_eq!(a.charts[0], ChartKind::PrLog);
+    key(&mut a, KeyCode::Char('f'));
+    key(&mut a, KeyCode::Char('v'));
+    assert_eq!(a.charts[1], ChartKind::AreaRatio);
+    for _ in 0..2 {
+        key(&mut a, KeyCode::Char('v'));
+    }
+    assert_eq!(a.charts[1], ChartKind::Scales);
+    for _ in 0..2 {
+        key(&mut a, KeyCode::Char('v'));
+    }
+    assert_eq!(a.charts[1], ChartKind::Stress);
+    key(&mut a, KeyCode::Char('f'));
+    for _ in 0..6 {
+        key(&mut a, KeyCode::Char('v'));
+    }
+    assert_eq!(a.charts[2], ChartKind::Thickness);
+    let r = a.take_request().expect("a new chart asks for its data");
+    assert!(r.needs.thickness && r.needs.loads && r.needs.point);
+    assert!(r.models.is_empty());
+    key(&mut a, KeyCode::Char('M'));
+    let r = a.take_request().unwrap();
+    // models 1, 2, 4 besides the current model 3
+    let n: Vec<u8> = r.models.iter().filter_map(|m| m.number()).collect();
+    assert_eq!(n, [1, 2, 4]);
+    // only what is visible is asked for
+    a.set_charts([ChartKind::Pr, ChartKind::PrLog, ChartKind::Pr]);
+    let r = a.take_request().unwrap();
+    assert!(r.needs.point && !r.needs.loads && !r.needs.thickness);
+}
+
+#[test]
+fn requests_carry_increasing_generations_and_only_on_change() {
+    let mut a = app();
+    let r1 = a.take_request().unwrap();
+    assert!(a.take_request().is_none());
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Right);
+    let r2 = a.take_request().unwrap();
+    assert!(r2.gen > r1.gen);
+    assert!(a.busy);
+    // a stale point (from r1's scene) is dropped, the current one kept
+    a.on_reply(Reply::Point {
+        gen: r1.gen,
+        key: point_key(&r1.source, &r1.scene),
+        result: Err(Error::Cancelled),
+    });
+    assert!(a.point.is_none());
+    a.on_reply(Reply::Done { gen: r1.gen });
+    assert!(a.busy);
+    a.on_reply(Reply::Done { gen: r2.gen });
+    assert!(!a.busy);
+}
+
+#[test]
+fn thickness_reaches_infinity_and_back() {
+    let mut a = app();
+    key(&mut a, KeyCode::Down); // t·q_r
+    assert_eq!(a.selected_param(), Param::Thickness);
+    assert!(a.scene.thickness_qr().is_infinite());
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.scene.thickness_qr(), THICKNESS_KEYS.1);
+    key(&mut a, KeyCode::Right);
+    assert!(a.scene.thickness_qr().is_infinite());
+    typed(&mut a, "0.5");
+    assert_eq!(a.scene.thickness_qr(), 0.5);
+    key(&mut a, KeyCode::Enter);
+    typed(&mut a, "inf");
+    assert!(a.scene.thickness_qr().is_infinite());
+}
+
+#[test]
+fn gamma_zero_is_off() {
+    let mut a = app();
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Down);
+    assert_eq!(a.selected_param(), Param::Gamma);
+    // the preset's own surface energy is the default
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.05);
+    for _ in 0..40 {
+        key(&mut a, KeyCode::Left);
+    }
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.0);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.0);
+    key(&mut a, KeyCode::Right);
+    assert!(a.scene.surface_energy_j_m2() > 0.0);
+}
+
+#[test]
+fn models_cycle_and_custom_rows_appear() {
+    let mut a = app();
+    assert_eq!(a.scene.model().number(), Some(3));
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().number(), Some(4));
+    assert_eq!(a.params().len(), 5);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().kind, ModelKind::Custom);
+    assert_eq!(a.scene.model().c1, 0.65);
+    assert_eq!(a.params().len(), 10);
+    // edit c1 until W < 0 is refused with a message
+    a.selected = a.params().iter().position(|p| *p == Param::C1).unwrap();
+    for _ in 0..10 {
+        a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
+    }
+    assert!(a.scene.model().c1 <= 1.0);
+    assert!(a.message.as_ref().is_some_and(|m| m.error), "{:?}", a.message);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().number(), Some(1));
+    assert!(a.selected < a.params().len());
+}
+
+#[test]
+fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() {
+    // system 1 opens adhesive: from custom, m skips YP08 and Xu24 and says why
+    let mut a = app();
+    key(&mut a, KeyCode::Char('m'));
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().kind, ModelKind::Custom);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().number(), Some(1));
+    let m = a.message.clone().expect("the skip is explained");
+    assert!(!m.error && m.text.contains("YP08 and Xu24 skipped"), "{}", m.text);
+    // on the adhesionless half-space they take their turn, with γ_f = 0.42, and M draws them
+    let mut a = app();
+    a.set_typed(Param::Gamma, "0").unwrap();
+    for _ in 0..2 {
+        key(&mut a, KeyCode::Char('m'));
+    }
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().kind, ModelKind::Yp08);
+    assert!((a.scene.model().fudge_gamma().unwrap() - 0.42).abs() < 1e-12);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().kind, ModelKind::Xu24);
+    // with a variant current, M draws both variants beside models 1–4
+    let kinds: Vec<ModelKind> = crate::tui::model::kinds::overlay_models(&a.scene.model())
+        .iter()
+        .filter_map(|m| a.scene.clone().with_model(*m).ok())
+        .map(|s| s.model().kind)
+        .collect();
+    assert!(
+        kinds.contains(&ModelKind::Yp08) && kinds.contains(&ModelKind::Xu24),
+        "{kinds:?}"
+    );
+    assert_eq!(kinds.len(), 6);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.scene.model().number(), Some(1));
+    assert_eq!(crate::tui::model::kinds::overlay_models(&a.scene.model()).len(), 4);
+    // a slab is refused while a variant is current, and the scene stays as it was
+    for _ in 0..5 {
+        key(&mut a, KeyCode::Char('m'));
+    }
+    assert_eq!(a.scene.model().kind, ModelKind::Yp08);
+    let before = a.scene.clone();
+    assert!(a.set_typed(Param::Thickness, "1").is_err());
+    assert_eq!(a.scene, before);
+}
+
+#[test]
+fn typing_bad_values_keeps_the_scene_and_explains() {
+    let mut a = app();
+    let before = a.scene.clone();
+    typed(&mut a, "-3");
+    assert_eq!(a.scene, before);
+    assert!(a.message.as_ref().unwrap().text.contains("p*"));
+    key(&mut a, KeyCode::Enter);
+    typed(&mut a, "abc");
+    assert_eq!(a.scene, before);
+    typed(&mut a, "1e-3");
+    assert_eq!(a.scene.pressure(), 1e-3);
+    // Esc cancels typing without quitting
+    key(&mut a, KeyCode::Char('5'));
+    key(&mut a, KeyCode::Esc);
+    assert!(!a.quit && a.edit.is_none());
+    assert_eq!(a.scene.pressure(), 1e-3);
+}
+
+#[test]
+fn reset_help_picker_and_quit() {
+    let mut a = app();
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Char('r'));
+    assert_eq!(a.scene, a.base);
+    key(&mut a, KeyCode::Char('?'));
+    assert_eq!(a.overlay, Overlay::Help);
+    // ↓↑ scroll the help, another key closes it (and forgets the scroll)
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Char('j'));
+    key(&mut a, KeyCode::Up);
+    assert_eq!((a.overlay, a.help_scroll), (Overlay::Help, 1));
+    key(&mut a, KeyCode::Char('x'));
+    assert_eq!((a.overlay, a.help_scroll), (Overlay::None, 0));
+    key(&mut a, KeyCode::Char('p'));
+    assert!(matches!(a.overlay, Overlay::Presets(0)));
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.preset.name, "system-2");
+    assert_eq!(a.overlay, Overlay::None);
+    key(&mut a, KeyCode::Char('a'));
+    assert_eq!(a.charts[1], ChartKind::AreaRatio);
+    assert!(!a.quit);
+    // Esc cancels, never quits; q does
+    key(&mut a, KeyCode::Esc);
+    assert!(!a.quit);
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("q quits")));
+    key(&mut a, KeyCode::Char('q'));
+    assert!(a.quit);
+    let mut b = app();
+    b.on_key(KeyEvent::new(KeyCode::Char('c'), M::CONTROL));
+    assert!(b.quit);
+    // q while typing cancels the field and keeps the scene; a second q quits
+    let mut c = app();
+    let before = c.scene.clone();
+    key(&mut c, KeyCode::Char('5'));
+    key(&mut c, KeyCode::Char('q'));
+    assert_eq!((c.edit.as_deref(), c.quit), (None, false));
+    assert_eq!(c.scene, before);
+    key(&mut c, KeyCode::Char('q'));
+    assert!(c.quit);
+}
+
+#[test]
+fn a_tour_step_selects_the_knob_its_caption_names() {
+    let mut a = app();
+    a.start_tour(Tour::resolve("wang-muser").unwrap(), 0);
+    assert_eq!(a.selected_param(), Param::Pressure);
+    let n = a.tour.as_ref().unwrap().tour.steps.len();
+    a.act(Action::Up);
+    a.tour_go(n as i32);
+    let step = &a.tour.as_ref().unwrap().tour.steps[n - 1];
+    assert_eq!(step.select, Some(crate::tui::model::tour::Knob::Pressure));
+    assert_eq!(a.selected_param(), Param::Pressure);
+    a.tour_go(-2);
+    assert_eq!(a.selected_param(), Param::Thickness);
+}
+
+#[test]
+fn the_load_range_stays_while_p_stays_inside_it() {
+    // stepping p* up from 1e-6 keeps 1e-6..1 (the cached sweep), leaving it resets
+    let r = sticky_range(None, 1e-6);
+    assert_eq!(r, chart_range(1e-6));
+    assert_eq!(sticky_range(Some(r), 3e-4), r);
+    assert_eq!(sticky_range(Some(r), 1.0), r);
+    assert_eq!(sticky_range(Some(r), 3.0), chart_range(3.0));
+    assert_eq!(sticky_range(Some(r), 1e-7), chart_range(1e-7));
+    assert_ne!(chart_range(3e-4), r);
+}
+
+#[test]
+fn chart_range_covers_p() {
+    assert_eq!(chart_range(0.01), (1e-3, 1.0));
+    let (a, b) = chart_range(3e-5);
+    assert!(a <= 3e-5 && b == 1.0);
+    let (a, b) = chart_range(20.0);
+    assert!(a == 1e-3 && b >= 20.0);
+    assert_eq!(chart_range(f64::NAN), (1e-3, 1.0));
+}
+
+/// A scale view of `n` frames (synthetic: the updates do not look at the numbers).
+fn frames(n: usize) -> ScalesData {
+    ScalesData {
+        frames: (0..n)
+            .map(|i| ScaleFrame {
+                q_rel: 1.0 + i as f64,
+                a_r: 1.0 / (1.0 + i as f64),
+                sigma_a: 0.0,
+                pr: vec![(0.0, 0.0), (1.0, 1.0)],
+            })
+            .collect(),
+        area: Vec::new(),
+        wall: Vec::new(),
+    }
+}
+
+#[test]
+fn the_scale_view_scrubs_plays_to_the_end_and_pauses() {
+    let mut a = app();
+    // no scale chart shown: the keys say how to get one
+    key(&mut a, KeyCode::Char(']'));
+    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("scales")));
+    a.set_charts([ChartKind::Scales, ChartKind::ScalesArea, ChartKind::Area]);
+    assert!(a
+        .take_request()
+        .is_some_and(|r| r.needs.scales && r.needs.loads && !r.needs.point));
+    a.scales = Some(Ok(frames(4)));
+    // opens at q_s, the last frame
+    assert_eq!(a.scale_frame().map(|f| (f.0, f.1)), Some((3, 4)));
+    key(&mut a, KeyCode::Char('['));
+    key(&mut a, KeyCode::Char('['));
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(1));
+    key(&mut a, KeyCode::Char(']'));
+    key(&mut a, KeyCode::Char(']'));
+    key(&mut a, KeyCode::Char(']'));
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(3), "stops at the last frame");
+    // Space at the end plays from the first frame, one frame per tick, and stops at q_s
+    key(&mut a, KeyCode::Char(' '));
+    assert!(a.playing && a.animating());
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(0));
+    a.tick();
+    a.tick();
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(2));
+    key(&mut a, KeyCode::Char(' '));
+    assert!(!a.playing, "Space pauses");
+    a.tick();
+    assert_eq!(a.scale_frame().map(|f| f.0), Some(2), "a paused view stays");
+    key(&mut a, KeyCode::Char(' '));
+    a.tick();
+    a.tick();
+    assert!(!a.playing && a.scale_frame().map(|f| f.0) == Some(3));
+    // a scrub pauses a play
+    key(&mut a, KeyCode::Char(' '));
+    key(&mut a, KeyCode::Char('['));
+    assert!(!a.playing);
+    // the charts name the frame
+    let m = crate::tui::charts::build(&a, ChartKind::Scales);
+    assert!(m.title.contains(" 1/4 "), "{}", m.title);
+    // a reply for another scene is dropped, one for this scene kept
+    let mut other = a.scene.clone();
+    other.set_pressure(other.pressure() * 2.0).unwrap();
+    a.on_reply(Reply::Scales {
+        gen: 1,
+        key: crate::tui::model::protocol::scales_key(&a.source, &other),
+        result: Ok(frames(2)),
+    });
+    assert_eq!(a.scales_data().map(|d| d.frames.len()), Some(4));
+    a.on_reply(Reply::Scales {
+        gen: 1,
+        key: crate::tui::model::protocol::scales_key(&a.source, &a.scene),
+        result: Ok(frames(2)),
+    });
+    assert_eq!(a.scales_data().map(|d| d.frames.len()), Some(2));
+    assert!(!a.scales_is_stale());
+}
+
+#[test]
+fn typed_values_stay_on_their_own_grid_until_the_next_typed_value() {
+    let mut a = app();
+    key(&mut a, KeyCode::Down); // t·q_r
+    assert_eq!(a.selected_param(), Param::Thickness);
+    typed(&mut a, "0.123");
+    key(&mut a, KeyCode::Right);
+    let up = a.scene.thickness_qr();
+    assert!((up / (0.123 * 10f64.powf(0.1)) - 1.0).abs() < 1e-12, "{up}");
+    key(&mut a, KeyCode::Left);
+    assert_eq!(
+        a.scene.thickness_qr(),
+        0.123,
+        "back to the typed value, not to the preset's grid"
+    );
+    key(&mut a, KeyCode::Left);
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.scene.thickness_qr(), 0.123);
+    // γ_s: its own anchor, the thickness keeps its own
+    key(&mut a, KeyCode::Down);
+    assert_eq!(a.selected_param(), Param::Gamma);
+    typed(&mut a, "0.1256");
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.scene.surface_energy_j_m2(), 0.1256);
+    key(&mut a, KeyCode::Up);
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.scene.thickness_qr(), 0.123);
+    // the next typed value anchors anew
+    typed(&mut a, "0.2");
+    key(&mut a, KeyCode::Left);
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.scene.thickness_qr(), 0.2);
+    // a reset returns to the preset's grids
+    key(&mut a, KeyCode::Char('r'));
+    assert_eq!(a.anchors, Anchors::default());
+    // the custom model's coefficients step on a grid through the typed value too
+    let mut c = app();
+    c.set_typed(Param::Model, "custom").unwrap();
+    let row = c.params().iter().position(|p| *p == Param::C1).unwrap();
+    c.selected = row;
+    key(&mut c, KeyCode::Enter);
+    typed(&mut c, "-0.123");
+    key(&mut c, KeyCode::Right);
+    assert!((c.scene.model().c1 - (-0.113)).abs() < 1e-12, "{}", c.scene.model().c1);
+    key(&mut c, KeyCode::Left);
+    assert_eq!(c.scene.model().c1, -0.123);
+}
+
+#[test]
+fn j_and_k_scroll_a_cut_caption_and_a_new_step_starts_at_its_top() {
+    let mut a = app();
+    a.start_tour(Tour::resolve("wang-muser").unwrap(), 1);
+    let most = crate::tui::model::wrap::caption_rows_at_most(&a.tour.as_ref().unwrap().tour.steps[1].caption);
+    for _ in 0..50 {
+        key(&mut a, KeyCode::Char('J'));
+    }
+    assert_eq!(
+        a.caption_scroll,
+        most - 1,
+        "bounded by the caption's rows at the narrowest width"
+    );
+    key(&mut a, KeyCode::Char('K'));
+    assert_eq!(a.caption_scroll, most - 2);
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.caption_scroll, 0);
+}

@@ -1,0 +1,314 @@
+//! The parameter panel: the knobs, the read-outs of the current point (a_r, σ̄_c*, ū/h_rms,
+//! γ̃_glo, convergence, error, time), the branches of a hysteresis window, the GFMD numbers and
+//! the scene in physical units.
+
+use crate::tui::charts::plot;
+use crate::tui::model::app::{App, GfmdState, Param};
+use crate::tui::model::progress::format_secs;
+use crate::tui::model::words::sig;
+use crate::tui::view::palette::{Palette, SPINNER};
+use ratatui::layout::Rect;
+use ratatui::style::{Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph};
+use ratatui::Frame;
+
+fn param_value(app: &App, p: Param) -> String {
+    let s = &app.scene;
+    let m = &s.model();
+    match p {
+        Param::Preset => app.preset.name.clone(),
+        Param::Model => m.label(),
+        Param::Pressure => sig(s.pressure(), 4),
+        Param::Thickness => {
+            if s.thickness_qr().is_infinite() {
+                "∞".into()
+            } else {
+                sig(s.thickness_qr(), 4)
+            }
+        }
+        Param::Gamma => {
+            if s.surface_energy_j_m2() == 0.0 {
+                "0 (off)".into()
+            } else {
+                sig(s.surface_energy_j_m2(), 4)
+            }
+        }
+        Param::C1 => sig(m.c1, 4),
+        Param::C2 => sig(m.c2, 4),
+        Param::Alpha => sig(m.alpha, 4),
+        Param::KGriffith => sig(m.k_griffith, 4),
+        Param::Cap => (if m.cap { "yes" } else { "no" }).into(),
+    }
+}
+
+pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
+    let mut lines: Vec<Line> = Vec::new();
+    let sel = app.selected_param();
+    for p in app.params() {
+        let is_sel = p == sel;
+        let value = match (&app.edit, is_sel) {
+            (Some(buf), true) => format!("{buf}▏"),
+            _ => param_value(app, p),
+        };
+        let text = format!("{}{}{}", if is_sel { "▶" } else { " " }, pad(p.label(), 9), value);
+        let style = if is_sel {
+            Style::default().add_modifier(Modifier::REVERSED)
+        } else {
+            Style::default()
+        };
+        lines.push(Line::from(Span::styled(text, style)));
+    }
+    if let Some(name) = surface_name(&app.scene) {
+        lines.push(Line::from(format!(" {}{name}", pad("surface", 9))));
+    }
+    lines.push(Line::from(Span::styled("─ results ─", pal.dim())));
+    let pt = app.point.as_ref().and_then(|r| r.as_ref().ok());
+    let dash = || "–".to_string();
+    // values of an earlier scene stay while the new one computes: dimmed and marked ⋯
+    let stale_point = app.point_is_stale() && pt.is_some();
+    let stale_gap = app.gap_is_stale();
+    let mut row_styled = |k: &str, v: String, stale: bool| {
+        if stale {
+            lines.push(Line::from(Span::styled(format!(" {}{v} ⋯", pad(k, 9)), pal.dim())));
+        } else {
+            lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
+        }
+    };
+    // the branch the load history has reached (the engine's point is the loading branch's)
+    let on_unloading = crate::tui::charts::chart_model::path_row(app).is_some();
+    let a_r = crate::tui::charts::chart_model::path_a_r(app);
+    row_styled("a_r", a_r.map_or_else(dash, |a| sig(a, 4)), stale_point);
+    // inside a hysteresis window: the branch the load history reached, next to its a_r
+    // (the branch alone where the reason does not fit: the status line said it)
+    if pt.is_some_and(|p| !p.branches.is_empty()) {
+        let label = app.history.label();
+        let room = usize::from(area.width).saturating_sub(12);
+        let v = if label.chars().count() <= room {
+            label
+        } else {
+            app.history.on.name().to_string()
+        };
+        row_styled("path", v, stale_point);
+    }
+    // σ̄_c* = p*/a_r of the branch the path is on
+    let stress = match (pt, a_r) {
+        (Some(_), Some(a)) if on_unloading => sig(app.scene.pressure() / a, 4),
+        (Some(p), _) => sig(p.mean_contact_stress, 4),
+        _ => dash(),
+    };
+    row_styled("σ̄_c*", stress, stale_point);
+    let gap = crate::tui::charts::chart_model::path_gap(app).map_or_else(dash, |g| sig(g, 4));
+    row_styled("ū/h_rms", gap, stale_gap && app.gap.is_some());
+    // with adhesion: which branch the gap is of, and its bracket (docs/physics.md §5.1)
+    if app.scene.is_adhesive() {
+        let bracket = app
+            .sweep
+            .as_ref()
+            .and_then(|r| r.as_ref().ok())
+            .and_then(|sw| crate::tui::effects::engine::gap_bracket_at(sw, app.scene.pressure()));
+        if let Some((lo, hi)) = bracket {
+            // the loading branch's bracket (same a_r … same load)
+            row_styled("ū load", format!("{}–{}", sig(lo, 3), sig(hi, 3)), stale_gap);
+        }
+    }
+    row_styled("γ̃_glo", sig(app.scene.gamma_glo(), 3), false);
+    let state = match &app.point {
+        _ if stale_point || (app.busy && app.point.is_none()) => "computing…".to_string(),
+        Some(Ok(p)) if p.preview => format!("{} · refining…", p.branch),
+        Some(Ok(p)) => p.branch.clone(),
+        Some(Err(_)) => "failed (see below)".into(),
+        None => dash(),
+    };
+    row_styled("state", state, false);
+    if let Some(p) = pt {
+        for (k, v) in &p.extra {
+            row_styled(k, v.clone(), stale_point);
+        }
+        let style = if stale_point { pal.dim() } else { Style::default() };
+        lines.extend(branch_lines(&p.branches, on_unloading, style));
+    }
+    let mut row = |k: &str, v: String| lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
+    row(
+        "err a_r",
+        pt.map_or_else(dash, |p| {
+            if p.error_estimate.is_finite() {
+                format!("{:.1e}", p.error_estimate)
+            } else {
+                dash()
+            }
+        }),
+    );
+    for (k, v) in gfmd_rows(app) {
+        row(&k, v);
+    }
+    row(
+        "time",
+        match pt {
+            Some(p) if app.show_timing => format_time(p.elapsed_s),
+            Some(_) => "(hidden)".into(),
+            None => dash(),
+        },
+    );
+    // the scene in physical units (shown when the panel is tall enough)
+    lines.push(Line::from(Span::styled("─ scene ─", pal.dim())));
+    lines.extend(scene_rows(&app.scene));
+    let block = Block::bordered().title(" parameters ");
+    f.render_widget(Paragraph::new(lines).block(block), area);
+}
+
+/// A hysteresis: every branch at this load, ◀ the one the load history is on.
+fn branch_lines(
+    branches: &[crate::tui::model::data::BranchRow],
+    on_unloading: bool,
+    style: Style,
+) -> Vec<Line<'static>> {
+    branches
+        .iter()
+        .map(|b| {
+            let followed = if on_unloading { b.name == "unloading" } else { b.shown };
+            let mark = if followed { " ◀" } else { "" };
+            let stab = if b.stable || b.name == "unstable" {
+                ""
+            } else {
+                " (unstable)"
+            };
+            let text = format!(" {}{}{stab}{mark}", pad(&b.name, 10), sig(b.a_r, 4));
+            Line::from(Span::styled(text, style))
+        })
+        .collect()
+}
+
+/// The scene in physical units: p, E*, h_rms, ḡ, λ_r/λ_s.
+fn scene_rows(sc: &asperity::input::scene::Scene) -> Vec<Line<'static>> {
+    [
+        ("p", si(sc.pressure() * sc.stress_unit(), "Pa")),
+        ("E*", si(sc.contact_modulus_pa(), "Pa")),
+        ("h_rms", si(sc.spectrum().rms_height(), "m")),
+        ("ḡ", sig(sc.rms_gradient(), 4)),
+        ("λ_r/λ_s", sig(sc.spectrum().q_s() / sc.spectrum().q_r(), 4)),
+    ]
+    .into_iter()
+    .map(|(k, v)| Line::from(format!(" {}{v}", pad(k, 9))))
+    .collect()
+}
+
+/// The panel's GFMD rows: while it runs the phase, the solver's steps and residual, the time
+/// and the time left; when done its time and numbers (for the scene shown), or why it failed.
+fn gfmd_rows(app: &App) -> Vec<(String, String)> {
+    let mut v: Vec<(String, String)> = Vec::new();
+    let mut row = |k: &str, val: String| v.push((k.to_string(), val));
+    match &app.gfmd {
+        GfmdState::Idle => {}
+        GfmdState::Running { progress, started, .. } => {
+            row(
+                "GFMD",
+                format!("{} {}", SPINNER[app.spinner % SPINNER.len()], progress.phase.label()),
+            );
+            if let Some(p) = progress.phase.load() {
+                row("  at p*", sig(p, 3));
+            }
+            if let Some(st) = progress.steps_text() {
+                row("  steps", st);
+            }
+            if app.show_timing {
+                let t = started.elapsed().as_secs_f64();
+                row("  time", format_secs(t));
+                row(
+                    "  left",
+                    progress
+                        .left_at(t)
+                        .map_or_else(|| "estimating".into(), |l| format!("about {}", format_secs(l))),
+                );
+            }
+        }
+        GfmdState::Done { result, elapsed_s, .. } => {
+            let took = if app.show_timing {
+                format!(" in {}", format_secs(*elapsed_s))
+            } else {
+                String::new()
+            };
+            match result {
+                Err(e) => row("GFMD", format!("failed: {e}")),
+                Ok(r) => {
+                    row("GFMD", format!("done{took}"));
+                    if app.gfmd_for_scene().is_some() {
+                        row("GFMD a_r", sig(r.a_r, 4));
+                        row("GFMD σ̄c", sig(r.mean_contact_stress, 4));
+                        let th = r.theory_a_r.map_or("–".into(), |t| sig(t, 4));
+                        row("map th.", format!("{th} (N={})", r.grid));
+                        for (k, val) in &r.invariants {
+                            row(k, val.clone());
+                        }
+                        if let Some(e) = &r.sweep_error {
+                            row("sweep", format!("failed: {e}"));
+                        }
+                    } else {
+                        row("  ", "other scene (g reruns)".into());
+                    }
+                }
+            }
+        }
+    }
+    v
+}
+
+pub use crate::tui::model::words::{surface_name, surface_name_of};
+
+/// A value with an SI prefix: 250.0 kPa, 0.7766 µm.
+pub fn si(x: f64, unit: &str) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return format!("{} {unit}", plot::format_number(x));
+    }
+    const PREFIXES: [(f64, &str); 9] = [
+        (1e12, "T"),
+        (1e9, "G"),
+        (1e6, "M"),
+        (1e3, "k"),
+        (1.0, ""),
+        (1e-3, "m"),
+        (1e-6, "µ"),
+        (1e-9, "n"),
+        (1e-12, "p"),
+    ];
+    let a = x.abs();
+    // a pressure below 1 Pa is written without prefix: "mPa" beside "MPa" misleads
+    let smallest = if unit == "Pa" { 1.0 } else { 1e-12 };
+    let (f, p) = PREFIXES
+        .iter()
+        .find(|(f, _)| a >= *f && *f >= smallest)
+        .copied()
+        .unwrap_or((smallest, if unit == "Pa" { "" } else { "p" }));
+    let v = x / f;
+    let text = if (1e-3..1e4).contains(&v.abs()) {
+        trim_zeros(&sig(v, 4))
+    } else {
+        sig(v, 3)
+    };
+    format!("{text} {p}{unit}")
+}
+
+/// "250.0" → "250", "0.7770" → "0.777" (numbers without an exponent only).
+fn trim_zeros(s: &str) -> String {
+    if s.contains('.') && !s.contains('e') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s.to_string()
+    }
+}
+
+/// `s` padded with spaces to `w` display columns (combining accents take none).
+fn pad(s: &str, w: usize) -> String {
+    let n = Span::raw(s).width();
+    format!("{s}{}", " ".repeat(w.saturating_sub(n)))
+}
+
+pub fn format_time(s: f64) -> String {
+    if s < 1e-3 {
+        format!("{:.0} µs", s * 1e6)
+    } else if s < 1.0 {
+        format!("{:.1} ms", s * 1e3)
+    } else {
+        format!("{s:.2} s")
+    }
+}
