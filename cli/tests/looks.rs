@@ -42,17 +42,17 @@ fn key(a: &mut App, c: char) {
 
 fn app(preset: &str) -> App {
     let mut a = App::new(preset, Preset::resolve(preset).unwrap()).unwrap();
-    a.show_timing = false;
-    a.color = false;
-    a.export_dir = std::env::temp_dir();
+    a.ui.show_timing = false;
+    a.ui.color = false;
+    a.jobs.export_dir = std::env::temp_dir();
     a
 }
 
 /// Computes what every chart kind needs, with all models.
 fn compute_all(a: &mut App) {
     let mut caches = Caches::default();
-    a.all_models = true;
-    a.compare = true;
+    a.ui.all_models = true;
+    a.ui.compare = true;
     for k in ChartKind::ALL {
         a.set_charts([k, ChartKind::Pr, ChartKind::Area]);
         compute_now(a, &mut caches);
@@ -67,7 +67,7 @@ fn with_gfmd(a: &mut App) {
     a.on_reply(Reply::GfmdDone {
         id,
         elapsed_s: 1.0,
-        result: Ok(common::synthetic_gfmd(a.scene.pressure())),
+        result: Ok(common::synthetic_gfmd(a.params.scene.pressure())),
     });
     assert!(a.gfmd_for_scene().is_some());
 }
@@ -86,7 +86,12 @@ fn pins(a: &App) -> Vec<Pin> {
                     Some((k, s.points.iter().map(|&(x, y)| (x, y * f)).collect()))
                 })
                 .collect();
-            let scene = a.scene.clone().with_pressure(a.scene.pressure() * f).unwrap();
+            let scene = a
+                .params
+                .scene
+                .clone()
+                .with_pressure(a.params.scene.pressure() * f)
+                .unwrap();
             Pin { scene, curves }
         })
         .collect()
@@ -95,15 +100,15 @@ fn pins(a: &App) -> Vec<Pin> {
 /// The app's reference points and a second source for every quantity and load the charts
 /// draw.
 fn second_source(a: &App) -> Vec<ReferencePoint> {
-    let mut out = a.preset.reference.clone();
+    let mut out = a.params.preset.reference.clone();
     for (q, v) in [("a_r", 0.025), ("mean_contact_stress", 0.45), ("mean_gap_rel", 1.4)] {
         for t in [None, Some(1.0)] {
             out.push(ReferencePoint {
                 source: "lab".into(),
                 quantity: q.into(),
-                pressure: a.scene.pressure(),
+                pressure: a.params.scene.pressure(),
                 thickness_qr: t,
-                gamma: Some(a.scene.surface_energy_j_m2()),
+                gamma: Some(a.params.scene.surface_energy_j_m2()),
                 model: None,
                 value: v,
             });
@@ -115,7 +120,7 @@ fn second_source(a: &App) -> Vec<ReferencePoint> {
 /// The app's load curves, and the same with a hysteresis: an unloading branch and the
 /// jump-in and pull-off loads.
 fn hysteresis(a: &App) -> Option<(SweepData, SweepData)> {
-    let Some(Ok(sw)) = a.sweep.as_ref() else {
+    let Some(Ok(sw)) = a.results.sweep.as_ref() else {
         return None;
     };
     let (jump, pull) = (0.03, 0.005);
@@ -138,7 +143,7 @@ fn scenes() -> Vec<(&'static str, App)> {
     for (name, kind) in [("custom", ModelKind::Custom), ("YP08", ModelKind::Yp08)] {
         let mut a = app("system-1");
         a.set_typed(Param::Gamma, "0").unwrap();
-        while a.scene.model().kind != kind {
+        while a.params.scene.model().kind != kind {
             key(&mut a, 'm');
         }
         compute_all(&mut a);
@@ -149,15 +154,15 @@ fn scenes() -> Vec<(&'static str, App)> {
     out.push(("thin slab", a));
     // a measured spectrum: the psd chart's table, interpolant, fit and cut-offs
     let mut a = app("system-2");
-    let Spectrum::SelfAffine(sa) = a.scene.spectrum().clone() else {
+    let Spectrum::SelfAffine(sa) = a.params.scene.spectrum().clone() else {
         unreachable!()
     };
     let (q, c) = common::ideal_table(&sa, 40);
     let t = Tabulated::new(q, c, "measured.csv", None, None).unwrap();
-    a.scene.set_spectrum(Spectrum::Tabulated(t)).unwrap();
+    a.params.scene.set_spectrum(Spectrum::Tabulated(t)).unwrap();
     out.push(("measured spectrum", a));
     for (_, a) in out.iter_mut() {
-        if a.sweep.is_some() {
+        if a.results.sweep.is_some() {
             with_gfmd(a);
         }
     }
@@ -211,18 +216,18 @@ fn every_chart_with_every_overlay_tells_its_curves_apart() {
     let mut failures = Vec::new();
     let mut checked = 0;
     for (scene, mut a) in scenes() {
-        let (gfmd, all_pins, refs) = (a.gfmd.clone(), pins(&a), a.preset.reference.clone());
+        let (gfmd, all_pins, refs) = (a.jobs.gfmd.clone(), pins(&a), a.params.preset.reference.clone());
         let more_refs = second_source(&a);
         let sweeps = hysteresis(&a);
         for combo in 0..64u32 {
             let on = |bit: u32| combo & (1 << bit) != 0;
-            a.all_models = on(0);
-            a.compare = on(1);
-            a.gfmd = if on(2) { gfmd.clone() } else { Default::default() };
-            a.pins = if on(3) { all_pins.clone() } else { Vec::new() };
-            a.preset.reference = if on(4) { more_refs.clone() } else { refs.clone() };
+            a.ui.all_models = on(0);
+            a.ui.compare = on(1);
+            a.jobs.gfmd = if on(2) { gfmd.clone() } else { Default::default() };
+            a.results.pins = if on(3) { all_pins.clone() } else { Vec::new() };
+            a.params.preset.reference = if on(4) { more_refs.clone() } else { refs.clone() };
             if let Some((plain, hyst)) = &sweeps {
-                a.sweep = Some(Ok(if on(5) { hyst.clone() } else { plain.clone() }));
+                a.results.sweep = Some(Ok(if on(5) { hyst.clone() } else { plain.clone() }));
             } else if on(5) {
                 continue;
             }
@@ -286,7 +291,7 @@ fn render(a: &App, w: u16, h: u16) -> String {
 /// abbreviated or shortest name).
 fn lost(a: &App, i: usize, screen: &str) -> Vec<String> {
     let mut out = Vec::new();
-    for k in [a.charts[i]] {
+    for k in [a.ui.charts[i]] {
         let m = charts::build(a, k);
         for e in entries(&m) {
             let sym = e.symbol();
@@ -315,17 +320,17 @@ fn at_80x24_no_key_entry_is_lost() {
         let two_pins: Vec<Pin> = pins(a).into_iter().take(2).collect();
         let sweeps = hysteresis(a);
         for (m, pins) in [(true, Vec::new()), (false, two_pins)] {
-            a.all_models = m;
-            a.pins = pins;
+            a.ui.all_models = m;
+            a.results.pins = pins;
             if let Some((plain, hyst)) = &sweeps {
-                a.sweep = Some(Ok(if m { plain.clone() } else { hyst.clone() }));
+                a.results.sweep = Some(Ok(if m { plain.clone() } else { hyst.clone() }));
             }
             for k in ChartKind::ALL {
                 for charts in [[k, k.cycle(1), k.cycle(2)], [k.cycle(1), k, k.cycle(2)]] {
                     a.set_charts(charts);
                     // at 80×24 one chart shows at a time: the focused one (f shows the next)
                     for focus in 0..3 {
-                        a.focus = focus;
+                        a.ui.focus = focus;
                         let screen = render(a, 80, 24);
                         for l in lost(a, focus, &screen) {
                             failures.push(format!("{scene} M={m} {charts:?}: {l}"));

@@ -562,7 +562,7 @@ caption = "a\nb"
         asperity::input::preset::Preset::resolve("system-1").unwrap(),
     )
     .unwrap();
-    app.export_dir = dir.clone();
+    app.jobs.export_dir = dir.clone();
     asperity_cli::tui::drive::compute_now(&mut app, &mut Default::default());
     let paths = asperity_cli::tui::effects::export::export(&app).unwrap();
     let csv = std::fs::read_to_string(paths.iter().find(|p| p.ends_with("-loads.csv")).unwrap()).unwrap();

@@ -36,7 +36,7 @@ fn the_loads_csv_has_both_branches_and_the_window_edges() {
     std::fs::create_dir_all(&dir).unwrap();
     // system II, model 3, a thin slab: a hysteresis window at small loads
     let mut app = App::new("system-2", Preset::resolve("system-2").unwrap()).unwrap();
-    app.export_dir = dir.clone();
+    app.jobs.export_dir = dir.clone();
     app.set_typed(Param::Model, "3").unwrap();
     app.set_typed(Param::Thickness, "0.1").unwrap();
     app.set_typed(Param::Gamma, "0.1256").unwrap();
@@ -94,7 +94,7 @@ fn the_loads_csv_has_both_branches_and_the_window_edges() {
     assert!(inside.len() >= 3, "loads inside the window: {inside:?}");
     // both branches against the engine on its own, at a load in the middle of the window
     let (load, loading, unloading) = inside[inside.len() / 2];
-    let mut s = app.scene.clone();
+    let mut s = app.params.scene.clone();
     s.set_pressure(load).unwrap();
     let ev = evaluate(&s, &Options::default()).unwrap();
     let u = ev
@@ -142,7 +142,7 @@ fn the_thickness_csv_has_the_window_its_edges_and_the_reference() {
     let dir = std::env::temp_dir().join(format!("asperity-export-thickness-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mut app = App::new("system-2", Preset::resolve("system-2").unwrap()).unwrap();
-    app.export_dir = dir.clone();
+    app.jobs.export_dir = dir.clone();
     app.set_typed(Param::Model, "3").unwrap();
     app.set_typed(Param::Gamma, "0.1256").unwrap();
     app.set_typed(Param::Pressure, "1e-5").unwrap();
@@ -167,7 +167,7 @@ fn the_thickness_csv_has_the_window_its_edges_and_the_reference() {
     let (jump_in, pull_off) = (edge("jump_in_thickness_qr"), edge("pull_off_thickness_qr"));
     // the library's own edges, bisected to its default precision from a sweep of its own
     // (around the chart's window, fine enough to land inside it)
-    let scene = app.scene.clone();
+    let scene = app.params.scene.clone();
     let spec = KnobSpec {
         knob: Knob::Thickness,
         from: 0.9 * jump_in,

@@ -19,8 +19,8 @@ fn fig8_pins_round_trip_through_csv_and_svg() {
     let dir = std::env::temp_dir().join(format!("asperity-pins-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mut a = App::new("system-2", Preset::resolve("system-2").unwrap()).unwrap();
-    a.show_timing = false;
-    a.export_dir = dir.clone();
+    a.ui.show_timing = false;
+    a.jobs.export_dir = dir.clone();
     a.set_charts([ChartKind::Pr, ChartKind::Thickness, ChartKind::Area]);
     let mut caches = Caches::default();
     for t in ["0.1", "0.4"] {
@@ -28,7 +28,7 @@ fn fig8_pins_round_trip_through_csv_and_svg() {
         compute_now(&mut a, &mut caches);
         key(&mut a, 'P');
     }
-    assert_eq!(a.pins.len(), 2);
+    assert_eq!(a.results.pins.len(), 2);
     a.set_typed(Param::Thickness, "inf").unwrap();
     compute_now(&mut a, &mut caches);
     let m = charts::build(&a, ChartKind::Pr);
@@ -81,16 +81,16 @@ fn fig8_pins_round_trip_through_csv_and_svg() {
     );
     // `u` unpins the newest, `U` all
     key(&mut a, 'u');
-    assert_eq!(a.pins.len(), 1);
+    assert_eq!(a.results.pins.len(), 1);
     key(&mut a, 'U');
-    assert!(a.pins.is_empty());
+    assert!(a.results.pins.is_empty());
     if let Ok(out) = std::env::var("ASPERITY_DOCS_IMG") {
         // the screenshots: the pinned Fig. 8 and the scale view, through the export path
         let out = std::path::PathBuf::from(out);
         let png = figs.iter().find(|p| p.ends_with("-pr.png")).unwrap();
         std::fs::copy(png, out.join("explorer-fig8-pins.png")).unwrap();
         let mut s = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
-        s.export_dir = dir.clone();
+        s.jobs.export_dir = dir.clone();
         s.set_charts([ChartKind::Scales, ChartKind::ScalesArea, ChartKind::Area]);
         compute_now(&mut s, &mut caches);
         key(&mut s, '[');

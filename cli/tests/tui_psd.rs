@@ -28,9 +28,9 @@ const QR_REL: f64 = 0.05;
 
 fn app(preset: &str) -> App {
     let mut a = App::new(preset, Preset::resolve(preset).unwrap()).unwrap();
-    a.show_timing = false;
-    a.color = false;
-    a.export_dir = std::env::temp_dir();
+    a.ui.show_timing = false;
+    a.ui.color = false;
+    a.jobs.export_dir = std::env::temp_dir();
     a
 }
 
@@ -57,7 +57,7 @@ fn the_preset_spectrum_is_drawn_with_its_cut_offs() {
     let a = app("system-2");
     let m = build(&a, ChartKind::Psd);
     assert!(m.empty.is_none(), "{:?}", m.empty);
-    let Spectrum::SelfAffine(sa) = a.scene.spectrum() else {
+    let Spectrum::SelfAffine(sa) = a.params.scene.spectrum() else {
         unreachable!()
     };
     let th = m.series.iter().find(|s| s.role == Role::Theory).unwrap();
@@ -74,7 +74,7 @@ fn the_preset_spectrum_is_drawn_with_its_cut_offs() {
 #[test]
 fn a_measured_table_is_drawn_with_its_fit_and_named_in_the_panel() {
     let mut a = app("system-2");
-    let Spectrum::SelfAffine(sa) = a.scene.spectrum().clone() else {
+    let Spectrum::SelfAffine(sa) = a.params.scene.spectrum().clone() else {
         unreachable!()
     };
     // the ideal law sampled at 41 log-spaced points from q_L to q_s (q_r among them)
@@ -83,8 +83,8 @@ fn a_measured_table_is_drawn_with_its_fit_and_named_in_the_panel() {
     std::fs::write(&path, to_csv(&q, &c)).unwrap();
     let t = Tabulated::load_csv(&path, None, None).unwrap();
     let _ = std::fs::remove_file(&path);
-    a.scene.set_spectrum(Spectrum::Tabulated(t)).unwrap();
-    a.base = a.scene.clone();
+    a.params.scene.set_spectrum(Spectrum::Tabulated(t)).unwrap();
+    a.params.base = a.params.scene.clone();
     let m = build(&a, ChartKind::Psd);
     let name = path.file_name().unwrap().to_string_lossy().into_owned();
     assert!(m.title.contains(&name), "{}", m.title);
@@ -103,7 +103,7 @@ fn a_measured_table_is_drawn_with_its_fit_and_named_in_the_panel() {
         sa.q_r()
     );
     // the panel names the file; the chart renders on a small screen
-    a.charts[0] = ChartKind::Psd;
+    a.ui.charts[0] = ChartKind::Psd;
     compute_now(&mut a, &mut Caches::default());
     for (w, h) in [(80, 24), (160, 48)] {
         let mut term = Terminal::new(TestBackend::new(w, h)).unwrap();
@@ -122,7 +122,7 @@ fn a_table_that_is_not_self_affine_gets_no_fit() {
     let q = [1e6, 2e6, 4e6, 8e6, 1.6e7, 3.2e7, 6.4e7];
     let c = [1e-40, 1e-30, 1e-40, 1e-40, 1e-31, 1e-40, 1e-40];
     let t = Tabulated::new(q.to_vec(), c.to_vec(), "bands.csv", None, None).unwrap();
-    a.scene.set_spectrum(Spectrum::Tabulated(t)).unwrap();
+    a.params.scene.set_spectrum(Spectrum::Tabulated(t)).unwrap();
     let m = build(&a, ChartKind::Psd);
     assert!(m.title.contains("not self-affine"), "{}", m.title);
     assert!(m.series.iter().all(|s| s.role != Role::Closed));
@@ -136,7 +136,7 @@ fn a_table_that_is_not_self_affine_gets_no_fit() {
 #[test]
 fn a_measured_scene_exports_and_reloads_exactly() {
     let mut a = app("system-2");
-    let Spectrum::SelfAffine(sa) = a.scene.spectrum().clone() else {
+    let Spectrum::SelfAffine(sa) = a.params.scene.spectrum().clone() else {
         unreachable!()
     };
     let (q, c) = common::ideal_table(&sa, 40);
@@ -145,11 +145,11 @@ fn a_measured_scene_exports_and_reloads_exactly() {
     let table = dir.join("my-surface.csv");
     std::fs::write(&table, to_csv(&q, &c)).unwrap();
     let load = || Tabulated::load_csv(&table, None, None).unwrap();
-    a.scene.set_spectrum(Spectrum::Tabulated(load())).unwrap();
-    a.scene.set_pressure(0.003).unwrap();
-    a.scene.set_thickness_qr(0.5).unwrap();
-    a.base = a.scene.clone();
-    a.export_dir = dir.clone();
+    a.params.scene.set_spectrum(Spectrum::Tabulated(load())).unwrap();
+    a.params.scene.set_pressure(0.003).unwrap();
+    a.params.scene.set_thickness_qr(0.5).unwrap();
+    a.params.base = a.params.scene.clone();
+    a.jobs.export_dir = dir.clone();
     compute_now(&mut a, &mut Caches::default());
     let area = build(&a, ChartKind::Area);
     assert!(
@@ -163,6 +163,6 @@ fn a_measured_scene_exports_and_reloads_exactly() {
     let back = Preset::load(std::path::Path::new(&paths[0])).unwrap();
     let mut scene = asperity_cli::tui::app::initial_scene(&back).unwrap();
     scene.set_spectrum(Spectrum::Tabulated(load())).unwrap();
-    assert_eq!(scene, a.scene);
+    assert_eq!(scene, a.params.scene);
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -16,9 +16,9 @@ use ratatui::Terminal;
 
 fn app(preset: &str) -> App {
     let mut a = App::new(preset, Preset::resolve(preset).unwrap()).unwrap();
-    a.show_timing = false;
-    a.color = false;
-    a.export_dir = std::env::temp_dir();
+    a.ui.show_timing = false;
+    a.ui.color = false;
+    a.jobs.export_dir = std::env::temp_dir();
     compute_now(&mut a, &mut Caches::default());
     a
 }
@@ -47,10 +47,10 @@ fn system1_adhesionless() {
     key(&mut a, KeyCode::Down);
     key(&mut a, KeyCode::Char('0'));
     key(&mut a, KeyCode::Enter);
-    assert_eq!(a.scene.surface_energy_j_m2(), 0.0);
+    assert_eq!(a.params.scene.surface_energy_j_m2(), 0.0);
     compute_now(&mut a, &mut Caches::default());
-    assert!(a.point.as_ref().is_some_and(|p| p.is_ok()));
-    assert!(a.sweep.as_ref().is_some_and(|p| p.is_ok()));
+    assert!(a.results.point.as_ref().is_some_and(|p| p.is_ok()));
+    assert!(a.results.sweep.as_ref().is_some_and(|p| p.is_ok()));
     insta::assert_snapshot!("system1_80x24", render(&a, 80, 24));
     insta::assert_snapshot!("system1_160x48", render(&a, 160, 48));
     // the smallest size the explorer draws in full
@@ -61,8 +61,8 @@ fn system1_adhesionless() {
 fn system1_with_adhesion() {
     // the preset's own γ_s is the default
     let a = app("system-1");
-    assert_eq!(a.scene.surface_energy_j_m2(), 0.05);
-    assert!(a.point.as_ref().is_some_and(|p| p.is_ok()));
+    assert_eq!(a.params.scene.surface_energy_j_m2(), 0.05);
+    assert!(a.results.point.as_ref().is_some_and(|p| p.is_ok()));
     insta::assert_snapshot!("system1_adhesion_80x24", render(&a, 80, 24));
     insta::assert_snapshot!("system1_adhesion_160x48", render(&a, 160, 48));
 }
@@ -114,7 +114,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         }
     }
     // curves full of NaN/inf/zeros, a degenerate point
-    a.sweep = Some(Ok(SweepData {
+    a.results.sweep = Some(Ok(SweepData {
         p: vec![f64::NAN, 0.0, 1e-3, 1e-2, f64::INFINITY, 1.0],
         a_r: vec![1.0, f64::NAN, 0.0, -1.0, 0.5, 0.5],
         gap_rel: vec![f64::NAN; 6],
@@ -129,7 +129,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         preview: false,
         gap_note: None,
     }));
-    a.thickness = Some(Ok(asperity_cli::tui::model::data::ThicknessData {
+    a.results.thickness = Some(Ok(asperity_cli::tui::model::data::ThicknessData {
         t: vec![f64::NAN, 0.0, 1e-2, 1e-1, f64::INFINITY, 1.0],
         a_r: vec![1.0, f64::NAN, 0.0, -1.0, 0.5, 0.5],
         a_r_inf: f64::NAN,
@@ -138,7 +138,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         jump_in: vec![f64::NAN, 0.0, -1.0],
         pull_off: vec![f64::INFINITY],
     }));
-    if let Some(Ok(p)) = a.point.as_mut() {
+    if let Some(Ok(p)) = a.results.point.as_mut() {
         p.pr = vec![(0.0, 0.0), (f64::NAN, 1.0), (1.0, f64::INFINITY)];
         p.wall = Some(f64::NAN);
         p.a_r = f64::NAN;
@@ -159,8 +159,8 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
             render(&a, w, h);
         }
     }
-    a.sweep = Some(Ok(SweepData::default()));
-    a.point = None;
+    a.results.sweep = Some(Ok(SweepData::default()));
+    a.results.point = None;
     render(&a, 80, 24);
 }
 
@@ -170,7 +170,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
 #[test]
 fn adhesive_view_with_a_synthetic_point() {
     let mut a = app("system-1");
-    if let Some(Ok(p)) = a.point.as_mut() {
+    if let Some(Ok(p)) = a.results.point.as_mut() {
         let comparison = p.pr.clone();
         p.pr = (0..=200)
             .map(|i| {
@@ -183,7 +183,7 @@ fn adhesive_view_with_a_synthetic_point() {
         p.extra = vec![("σ_a*".into(), "0.3000".into())];
     }
     insta::assert_snapshot!("synthetic_adhesive_80x24", render(&a, 80, 24));
-    a.compare = false;
+    a.ui.compare = false;
     let s = render(&a, 80, 24);
     assert!(!s.contains("γ_s=0"));
 }
@@ -197,8 +197,8 @@ fn gfmd_overlay_with_a_synthetic_run() {
     key(&mut a, KeyCode::Char('g'));
     let (id, _, _) = a.take_gfmd_request().expect("g starts a run");
     let plan = progress::plan(
-        a.scene.pressure(),
-        &jobs::gfmd_sweep_spec(a.scene.pressure()).pressures(),
+        a.params.scene.pressure(),
+        &jobs::gfmd_sweep_spec(a.params.scene.pressure()).pressures(),
     );
     a.on_reply(Reply::GfmdProgress {
         id,
@@ -218,7 +218,7 @@ fn gfmd_overlay_with_a_synthetic_run() {
         id,
         result: Ok(GfmdView {
             invariants: vec![("GFMD γ̃".into(), "0.024 (full 0.024)".into())],
-            ..common::synthetic_gfmd(a.scene.pressure())
+            ..common::synthetic_gfmd(a.params.scene.pressure())
         }),
         elapsed_s: 49.8,
     });
@@ -231,7 +231,7 @@ fn gfmd_overlay_with_a_synthetic_run() {
 /// Sets the three panels and computes what they need.
 fn show(a: &mut App, charts: [ChartKind; 3]) {
     a.set_charts(charts);
-    a.all_models = false;
+    a.ui.all_models = false;
     compute_now(a, &mut Caches::default());
 }
 
@@ -268,7 +268,7 @@ fn new_charts() {
 
     let mut b = app("system-2");
     show(&mut b, [ChartKind::Thickness, ChartKind::Gap, ChartKind::Area]);
-    assert!(b.thickness.as_ref().is_some_and(|t| t.is_ok()));
+    assert!(b.results.thickness.as_ref().is_some_and(|t| t.is_ok()));
     let s = render(&b, 160, 48);
     for needle in ["a_r(t·q_r) at p* = 0.00500", "t·q_r", "γ_s=0", "t=∞", "ū/h_rms(p*)"] {
         assert!(s.contains(needle), "{needle}: {s}");
@@ -283,7 +283,7 @@ fn all_models_overlay() {
     let mut a = adhesionless("system-1");
     a.set_charts([ChartKind::AreaRatio, ChartKind::Pr, ChartKind::Stress]);
     key(&mut a, KeyCode::Char('M'));
-    assert!(a.all_models);
+    assert!(a.ui.all_models);
     compute_now(&mut a, &mut Caches::default());
     let s = render(&a, 160, 48);
     for needle in ["• model 1", "▄ model 2", "⣿ model 3", "█ model 4"] {
@@ -305,8 +305,8 @@ fn tour_step() {
     let mut a = app("system-1");
     a.start_tour(Tour::resolve("wang-muser").unwrap(), 1);
     compute_now(&mut a, &mut Caches::default());
-    assert_eq!(a.charts[0], ChartKind::AreaRatio);
-    assert!(a.all_models && a.scene.surface_energy_j_m2() == 0.0);
+    assert_eq!(a.ui.charts[0], ChartKind::AreaRatio);
+    assert!(a.ui.all_models && a.params.scene.surface_energy_j_m2() == 0.0);
     let s = render(&a, 80, 24);
     assert!(s.contains("tour 2/11") && s.contains("How much area?"), "{s}");
     insta::assert_snapshot!("tour_step2_80x24", s);
@@ -317,14 +317,14 @@ fn tour_step() {
     }
     // → moves on, ← back, a knob still turns (h), Esc leaves with the scene kept
     key(&mut a, KeyCode::Right);
-    assert_eq!(a.tour.as_ref().unwrap().step, 2);
+    assert_eq!(a.ui.tour.as_ref().unwrap().step, 2);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.tour.as_ref().unwrap().step, 1);
-    let p = a.scene.pressure();
+    assert_eq!(a.ui.tour.as_ref().unwrap().step, 1);
+    let p = a.params.scene.pressure();
     key(&mut a, KeyCode::Char('l'));
-    assert!(a.scene.pressure() > p);
+    assert!(a.params.scene.pressure() > p);
     key(&mut a, KeyCode::Esc);
-    assert!(a.tour.is_none() && !a.quit);
+    assert!(a.ui.tour.is_none() && !a.ui.quit);
     assert!(!render(&a, 80, 24).contains("tour 2/10"));
 }
 
@@ -335,7 +335,7 @@ fn tour_step() {
 fn defects_gap_axis_stale_values_long_messages_hints() {
     let mut a = adhesionless("system-1");
     a.set_charts([ChartKind::Gap, ChartKind::Area, ChartKind::Stress]);
-    if let Some(Ok(sw)) = a.sweep.as_mut() {
+    if let Some(Ok(sw)) = a.results.sweep.as_mut() {
         for g in sw.gap_rel.iter_mut() {
             *g -= 2.0;
         }
@@ -361,8 +361,8 @@ fn defects_gap_axis_stale_values_long_messages_hints() {
         key(&mut a, KeyCode::Char(c));
     }
     let long = format!("{} END", "word ".repeat(50));
-    a.edit = None;
-    a.message = Some(asperity_cli::tui::app::Message {
+    a.ui.edit = None;
+    a.ui.message = Some(asperity_cli::tui::app::Message {
         text: long,
         error: true,
     });
@@ -381,7 +381,7 @@ fn hysteresis_on_the_area_chart() {
     a.set_charts([ChartKind::Area, ChartKind::AreaRatio, ChartKind::Gap]);
     compute_now(&mut a, &mut Caches::default());
     let (jump, pull) = (0.03, 0.005);
-    if let Some(Ok(sw)) = a.sweep.as_mut() {
+    if let Some(Ok(sw)) = a.results.sweep.as_mut() {
         let n = sw.p.len();
         sw.a_r =
             sw.p.iter()
@@ -390,7 +390,7 @@ fn hysteresis_on_the_area_chart() {
         common::add_hysteresis(sw, jump, pull);
         assert_eq!(sw.a_r_unloading.len(), n);
     }
-    if let Some(Ok(p)) = a.point.as_mut() {
+    if let Some(Ok(p)) = a.results.point.as_mut() {
         p.branches = vec![
             BranchRow {
                 name: "loading".into(),
@@ -454,7 +454,7 @@ fn hysteresis_on_the_area_chart() {
     }
     let dir = std::env::temp_dir().join(format!("asperity-hysteresis-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    a.export_dir = dir.clone();
+    a.jobs.export_dir = dir.clone();
     let paths = asperity_cli::tui::effects::export::export_charts(&a).unwrap();
     let svg = paths.iter().find(|p| p.ends_with("-area.svg")).expect("area svg");
     let text = std::fs::read_to_string(svg).unwrap();
@@ -486,7 +486,7 @@ fn scale_view() {
     let mut t = app("system-1");
     t.start_tour(Tour::resolve("wang-muser").unwrap(), 0);
     compute_now(&mut t, &mut Caches::default());
-    assert!(t.playing && t.scale_frame().map(|f| f.0) == Some(0));
+    assert!(t.ui.playing && t.scale_frame().map(|f| f.0) == Some(0));
     let s = render(&t, 80, 24);
     assert!(s.contains("tour 1/11") && s.contains("1/48 ▶"), "{s}");
     insta::assert_snapshot!("tour_step1_80x24", s);
@@ -509,7 +509,7 @@ fn a_failed_mean_gap_blanks_only_its_own_chart() {
     a.set_charts([ChartKind::Gap, ChartKind::Area, ChartKind::Stress]);
     compute_now(&mut a, &mut Caches::default());
     assert!(
-        a.sweep.as_ref().is_some_and(|s| s.is_ok()),
+        a.results.sweep.as_ref().is_some_and(|s| s.is_ok()),
         "the load sweep itself converged"
     );
     let gap = build(&a, ChartKind::Gap);
@@ -556,7 +556,7 @@ fn the_thickness_chart_marks_the_hysteresis_window() {
     a.set_typed(Param::Pressure, "1e-5").unwrap();
     a.set_charts([ChartKind::Thickness, ChartKind::Area, ChartKind::Gap]);
     compute_now(&mut a, &mut Caches::default());
-    let td = a.thickness.as_ref().unwrap().as_ref().unwrap().clone();
+    let td = a.results.thickness.as_ref().unwrap().as_ref().unwrap().clone();
     let m = build(&a, ChartKind::Thickness);
     let un = m
         .series
@@ -579,7 +579,7 @@ fn the_thickness_chart_marks_the_hysteresis_window() {
         jump.x < pull.x && jump.name.starts_with("jump-in t·q_r "),
         "{jump:?} {pull:?}"
     );
-    let scene = |t: f64| a.scene.clone().with_thickness_qr(t).unwrap();
+    let scene = |t: f64| a.params.scene.clone().with_thickness_qr(t).unwrap();
     let engine = |t: f64| evaluate(&scene(t), &Options::default()).unwrap();
     // inside the window (the chart's thickness with an unloading point): both branches agree
     // with the engine's

@@ -31,9 +31,9 @@ fn tours() -> Vec<Tour> {
 fn app_at(tour: &Tour, i: usize) -> App {
     let first = &tour.steps[0];
     let mut a = App::new(&first.source, Preset::resolve(&first.source).unwrap()).unwrap();
-    a.show_timing = false;
-    a.color = true;
-    a.export_dir = std::env::temp_dir();
+    a.ui.show_timing = false;
+    a.ui.color = true;
+    a.jobs.export_dir = std::env::temp_dir();
     a.start_tour(tour.clone(), i);
     // the scale view plays from q_L: show its last frame, as after the play
     compute_now(&mut a, &mut Caches::default());
@@ -175,7 +175,7 @@ fn every_look_a_caption_names_is_drawn_so() {
         let models: Vec<_> = s.charts.iter().map(|k| charts::build(&a, *k)).collect();
         for role in named {
             seen += 1;
-            let want = look(role, looks::model_slot(&a.scene.model()), 0);
+            let want = look(role, looks::model_slot(&a.params.scene.model()), 0);
             let mut drawn = 0;
             let mut keyed = 0;
             for m in &models {
@@ -220,7 +220,7 @@ fn every_look_a_caption_names_is_drawn_so() {
 
 /// The value of a knob in `a`'s scene (the model by its number).
 fn knob_value(a: &App, k: Knob) -> f64 {
-    let s = &a.scene;
+    let s = &a.params.scene;
     match k {
         Knob::Preset => 0.0,
         Knob::Model => f64::from(s.model().number().unwrap_or(0)),
@@ -241,21 +241,21 @@ fn verify_press(t: &Tour, i: usize, p: &Press) -> Result<(), String> {
     }
     // the claims are about the last key
     let before: Vec<f64> = Knob::ALL.iter().map(|k| knob_value(&a, *k)).collect();
-    let frame0 = a.frame;
+    let frame0 = a.ui.frame;
     a.on_key(keys::parse_label(last).unwrap());
     compute_now(&mut a, &mut Caches::default());
     let mut bad = Vec::new();
     if let Some(m) = p.model {
-        let got = a.scene.model().number();
+        let got = a.params.scene.model().number();
         if got != Some(m) {
             bad.push(format!("model {got:?}, not {m}"));
         }
     }
-    if p.models.is_some_and(|m| m != a.all_models) {
-        bad.push(format!("all models {}", a.all_models));
+    if p.models.is_some_and(|m| m != a.ui.all_models) {
+        bad.push(format!("all models {}", a.ui.all_models));
     }
-    if p.compare.is_some_and(|c| c != a.compare) {
-        bad.push(format!("comparison {}", a.compare));
+    if p.compare.is_some_and(|c| c != a.ui.compare) {
+        bad.push(format!("comparison {}", a.ui.compare));
     }
     for (name, up) in [(&p.raises, true), (&p.lowers, false)] {
         if let Some(k) = name.as_deref().and_then(Knob::parse) {
@@ -267,23 +267,23 @@ fn verify_press(t: &Tour, i: usize, p: &Press) -> Result<(), String> {
         }
     }
     if let Some(d) = p.frame {
-        let moved = match (frame0, a.frame) {
+        let moved = match (frame0, a.ui.frame) {
             (Some(x), Some(y)) => (y as i64 - x as i64).signum() == i64::from(d.signum()),
             (None, Some(_)) => d < 0,
             _ => false,
         };
         if !moved {
-            bad.push(format!("frame {frame0:?} → {:?}", a.frame));
+            bad.push(format!("frame {frame0:?} → {:?}", a.ui.frame));
         }
     }
-    if p.plays.is_some_and(|x| x != a.playing) {
-        bad.push(format!("playing {}", a.playing));
+    if p.plays.is_some_and(|x| x != a.ui.playing) {
+        bad.push(format!("playing {}", a.ui.playing));
     }
-    if p.branch.as_deref().is_some_and(|b| b != a.history.on.name()) {
+    if p.branch.as_deref().is_some_and(|b| b != a.params.history.on.name()) {
         bad.push(format!(
             "on the {} branch at p* = {}",
-            a.history.on.name(),
-            a.scene.pressure()
+            a.params.history.on.name(),
+            a.params.scene.pressure()
         ));
     }
     if bad.is_empty() {

@@ -430,10 +430,10 @@ fn tui_entry(
     let mut app = crate::tui::app::App::new(preset_name, preset)?;
     if let Some((s, map)) = scene {
         if let (asperity::surface::spectrum::Spectrum::Tabulated(t), Some(m)) = (s.spectrum(), map) {
-            app.map = Some((t.source.clone(), std::sync::Arc::new(m)));
+            app.params.map = Some((t.source.clone(), std::sync::Arc::new(m)));
         }
-        app.base = s.clone();
-        app.scene = s;
+        app.params.base = s.clone();
+        app.params.scene = s;
     }
     if let Some((t, step)) = tour {
         app.start_tour(t, step);

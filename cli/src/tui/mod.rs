@@ -111,26 +111,30 @@ impl Trace {
         let (Some(f), Some((gen, t0))) = (self.file.as_mut(), self.started) else {
             return;
         };
-        if gen != app.gen {
+        if gen != app.jobs.gen {
             return;
         }
         let ms = t0.elapsed().as_secs_f64() * 1e3;
-        if !self.point_logged && app.point.is_some() && app.point_gen >= gen {
+        if !self.point_logged && app.results.point.is_some() && app.results.point_gen >= gen {
             let _ = writeln!(f, "gen {gen} point_drawn_ms {ms:.2}");
             self.point_logged = true;
         }
-        let load_key = protocol::sweep_key(&app.source, &app.scene, app.range());
-        let shown = app.point_gen >= gen && app.sweep_shown.as_ref() == Some(&load_key);
+        let load_key = protocol::sweep_key(&app.params.source, &app.params.scene, app.range());
+        let shown = app.results.point_gen >= gen && app.results.sweep_shown.as_ref() == Some(&load_key);
         if !self.charts_logged && shown {
             let _ = writeln!(f, "gen {gen} charts_drawn_ms {ms:.2}");
             self.charts_logged = true;
         }
-        let preview = app.sweep.as_ref().is_some_and(|s| s.as_ref().is_ok_and(|s| s.preview));
+        let preview = app
+            .results
+            .sweep
+            .as_ref()
+            .is_some_and(|s| s.as_ref().is_ok_and(|s| s.preview));
         if !self.final_logged && shown && !preview {
             let _ = writeln!(f, "gen {gen} charts_final_ms {ms:.2}");
             self.final_logged = true;
         }
-        if !app.busy {
+        if !app.jobs.busy {
             let _ = writeln!(f, "gen {gen} all_drawn_ms {ms:.2}");
             self.started = None;
         }
@@ -144,7 +148,7 @@ pub fn run(source: &str, preset: Preset) -> Result<()> {
 
 /// Runs the explorer on a prepared [`App`] (a scene from flags, a tour) until the user quits.
 pub fn run_app(mut app: App) -> Result<()> {
-    app.color = use_color();
+    app.ui.color = use_color();
     let (tx, rx) = channel::<Msg>();
     let reply_tx = tx.clone();
     let reply_tx_for_gfmd = tx.clone();
@@ -191,8 +195,8 @@ pub fn run_app(mut app: App) -> Result<()> {
                 }
                 Command::StartGfmd { id, scene, cancel } => {
                     let tx = gfmd_tx.clone();
-                    let setup = jobs::gfmd_setup(&app.preset, &scene, app.map_of(&scene));
-                    app.message = Some(app_state::Message {
+                    let setup = jobs::gfmd_setup(&app.params.preset, &scene, app.map_of(&scene));
+                    app.ui.message = Some(app_state::Message {
                         text: format!("GFMD started on a {0}x{0} grid (g cancels)", jobs::grid_side(&setup)),
                         error: false,
                     });
@@ -237,7 +241,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                     }
                     app.on_key(k);
                     if app.has_pending() {
-                        trace.started = Some((app.gen + 1, t0));
+                        trace.started = Some((app.jobs.gen + 1, t0));
                         trace.point_logged = false;
                         trace.charts_logged = false;
                         trace.final_logged = false;
@@ -247,7 +251,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                 Msg::Reply(r) => app.on_reply(*r),
                 Msg::InputClosed => return Ok(()),
             }
-            if app.quit {
+            if app.ui.quit {
                 break;
             }
             next = rx.try_recv().ok();

@@ -114,16 +114,16 @@ impl ChartModel {
 }
 
 pub fn theory_role(app: &App) -> Role {
-    if app.all_models {
-        Role::Model(slot(&app.scene.model()))
+    if app.ui.all_models {
+        Role::Model(slot(&app.params.scene.model()))
     } else {
         Role::Theory
     }
 }
 
 pub fn theory_name(app: &App) -> String {
-    if app.all_models {
-        slot_name(slot(&app.scene.model()))
+    if app.ui.all_models {
+        slot_name(slot(&app.params.scene.model()))
     } else {
         "theory".into()
     }
@@ -131,12 +131,12 @@ pub fn theory_name(app: &App) -> String {
 
 /// The other models' data for `M` (slot, data), current model excluded.
 pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T>) -> Vec<(usize, &'a T)> {
-    if !app.all_models {
+    if !app.ui.all_models {
         return Vec::new();
     }
-    overlay_models(&app.scene.model())
+    overlay_models(&app.params.scene.model())
         .into_iter()
-        .filter(|m| slot(m) != slot(&app.scene.model()))
+        .filter(|m| slot(m) != slot(&app.params.scene.model()))
         .filter_map(|m| get(app, &m).map(|d| (slot(&m), d)))
         .collect()
 }
@@ -147,7 +147,7 @@ pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T
 pub fn set_empty<T>(m: &mut ChartModel, app: &App, own: Option<&asperity::error::Result<T>>) {
     match own {
         Some(Err(e)) => mark_failed(m, &crate::tui::model::words::describe(e)),
-        _ => m.empty = Some(if app.busy { "computing…" } else { "no data" }.into()),
+        _ => m.empty = Some(if app.jobs.busy { "computing…" } else { "no data" }.into()),
     }
 }
 
@@ -200,7 +200,7 @@ pub fn data_bounds(m: &ChartModel) -> (Option<[f64; 2]>, Option<[f64; 2]>) {
 }
 
 pub fn current_point(app: &App) -> Option<&PointData> {
-    app.point.as_ref().and_then(|r| r.as_ref().ok())
+    app.results.point.as_ref().and_then(|r| r.as_ref().ok())
 }
 
 /// a_r on the branch the user's path is on: the point's, or its unloading branch's where the
@@ -218,8 +218,8 @@ pub fn path_gap(app: &App) -> Option<f64> {
     if path_row(app).is_none() {
         return app.gap_value();
     }
-    let sw = app.sweep.as_ref()?.as_ref().ok()?;
-    let p = app.scene.pressure();
+    let sw = app.results.sweep.as_ref()?.as_ref().ok()?;
+    let p = app.params.scene.pressure();
     let k = sw.p.windows(2).position(|w| w[0] <= p && p <= w[1])?;
     let (u0, u1) = (*sw.gap_unloading.get(k)?, *sw.gap_unloading.get(k + 1)?);
     let t = (p / sw.p[k]).ln() / (sw.p[k + 1] / sw.p[k]).ln();
@@ -229,7 +229,7 @@ pub fn path_gap(app: &App) -> Option<f64> {
 /// The point's unloading branch, where the path is on it.
 pub fn path_row(app: &App) -> Option<&crate::tui::model::data::BranchRow> {
     let p = current_point(app)?;
-    (app.history.on == crate::tui::model::history::Path::Unloading)
+    (app.params.history.on == crate::tui::model::history::Path::Unloading)
         .then(|| p.branches.iter().find(|b| b.name == "unloading"))
         .flatten()
 }
@@ -239,8 +239,9 @@ pub fn references<'a>(
     quantity: &'a str,
 ) -> impl Iterator<Item = &'a asperity::input::preset::ReferencePoint> {
     // a measured surface is another system: the preset's reference values are not its own
-    let own = crate::tui::model::words::surface_name(&app.scene).is_none();
-    app.preset
+    let own = crate::tui::model::words::surface_name(&app.params.scene).is_none();
+    app.params
+        .preset
         .reference
         .iter()
         .filter(move |r| own && r.quantity == quantity)
@@ -250,12 +251,12 @@ pub fn references<'a>(
 /// the scene's.
 pub fn reference_name(app: &App, r: &asperity::input::preset::ReferencePoint, with_thickness: bool) -> String {
     let mut cond = Vec::new();
-    let gamma = r.gamma.unwrap_or(app.preset.adhesion.surface_energy_j_m2);
-    if gamma != app.scene.surface_energy_j_m2() {
+    let gamma = r.gamma.unwrap_or(app.params.preset.adhesion.surface_energy_j_m2);
+    if gamma != app.params.scene.surface_energy_j_m2() {
         cond.push(format!("γ_s={}", plot::format_number(gamma)));
     }
     let t = r.thickness_qr.unwrap_or(f64::INFINITY);
-    if with_thickness && t.to_bits() != app.scene.thickness_qr().to_bits() {
+    if with_thickness && t.to_bits() != app.params.scene.thickness_qr().to_bits() {
         cond.push(format!("t·q_r={}", plot::format_number(t)));
     }
     if let Some(n) = r.model {
@@ -295,7 +296,7 @@ pub fn mark_preview(m: &mut ChartModel, sw: &SweepData) {
 }
 
 pub fn sweep_of(app: &App) -> Option<&SweepData> {
-    app.sweep.as_ref().and_then(|r| r.as_ref().ok())
+    app.results.sweep.as_ref().and_then(|r| r.as_ref().ok())
 }
 
 /// The load charts share one x axis: the requested p* range, whatever converged.

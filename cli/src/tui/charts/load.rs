@@ -18,7 +18,7 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
     let curve =
         |sw: &SweepData| -> Vec<(f64, f64)> { sw.p.iter().zip(&sw.a_r).map(|(&p, &a)| (p, y_of(p, a))).collect() };
     let Some(sw) = sweep_of(app) else {
-        set_empty(&mut m, app, app.sweep.as_ref());
+        set_empty(&mut m, app, app.results.sweep.as_ref());
         return m;
     };
     m.stale = app.sweep_is_stale();
@@ -39,7 +39,7 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
             draw: Draw::Line,
         });
     }
-    if !app.all_models {
+    if !app.ui.all_models {
         hysteresis(&mut m, sw, &y_of);
     }
     m.series.push(Series {
@@ -70,7 +70,7 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
             draw: Draw::Points,
         });
     }
-    let p = app.scene.pressure();
+    let p = app.params.scene.pressure();
     add_current(&mut m, p, path_a_r(app).map(|a| y_of(p, a)));
     let (_, yb) = data_bounds(&m);
     m.xb = load_x(app);
@@ -199,7 +199,7 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
         sw.p.iter().copied().zip(ys.iter().copied()).collect()
     };
     let Some(sw) = sweep_of(app) else {
-        set_empty(&mut m, app, app.sweep.as_ref());
+        set_empty(&mut m, app, app.results.sweep.as_ref());
         return m;
     };
     m.stale = app.sweep_is_stale();
@@ -264,11 +264,11 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
         path_gap(app)
     } else if path_row(app).is_some() {
         // σ̄_c* = p*/a_r of the unloading branch the path is on
-        path_a_r(app).map(|a| app.scene.pressure() / a)
+        path_a_r(app).map(|a| app.params.scene.pressure() / a)
     } else {
         current_point(app).map(|p| p.mean_contact_stress)
     };
-    add_current(&mut m, app.scene.pressure(), y);
+    add_current(&mut m, app.params.scene.pressure(), y);
     let (_, yb) = data_bounds(&m);
     m.xb = load_x(app);
     if let (Some(why), None) = (&gap_failed, yb) {
@@ -292,7 +292,7 @@ fn gap_failure(app: &App, sw: &SweepData) -> Option<String> {
     if sw.gap_rel.iter().any(|g| g.is_finite()) {
         return None;
     }
-    let point = match &app.gap {
+    let point = match &app.results.gap {
         Some(Err(e)) => Some(crate::tui::model::words::describe(e)),
         _ => None,
     };
@@ -307,11 +307,11 @@ fn gap_failure(app: &App, sw: &SweepData) -> Option<String> {
 pub fn thickness(app: &App) -> ChartModel {
     let title = format!(
         "a_r(t·q_r) at p* = {}",
-        crate::tui::model::words::sig(app.scene.pressure(), 3)
+        crate::tui::model::words::sig(app.params.scene.pressure(), 3)
     );
     let mut m = base(ChartKind::Thickness, title, "t·q_r", "a_r", Scale::Log10, Scale::Linear);
-    let Some(td) = app.thickness.as_ref().and_then(|r| r.as_ref().ok()) else {
-        set_empty(&mut m, app, app.thickness.as_ref());
+    let Some(td) = app.results.thickness.as_ref().and_then(|r| r.as_ref().ok()) else {
+        set_empty(&mut m, app, app.results.thickness.as_ref());
         return m;
     };
     m.stale = app.thickness_is_stale();
@@ -344,7 +344,7 @@ pub fn thickness(app: &App) -> ChartModel {
             draw: Draw::Line,
         });
     }
-    if !app.all_models {
+    if !app.ui.all_models {
         thickness_window(&mut m, td);
     }
     m.series.push(Series {
@@ -359,7 +359,7 @@ pub fn thickness(app: &App) -> ChartModel {
         let Some(t) = r.thickness_qr.filter(|t| t.is_finite()) else {
             continue;
         };
-        if (r.pressure / app.scene.pressure() - 1.0).abs() > 1e-9 {
+        if (r.pressure / app.params.scene.pressure() - 1.0).abs() > 1e-9 {
             continue;
         }
         let name = reference_name(app, r, false);
@@ -374,7 +374,7 @@ pub fn thickness(app: &App) -> ChartModel {
         }
     }
     m.series.extend(refs);
-    let t = app.scene.thickness_qr();
+    let t = app.params.scene.thickness_qr();
     if t.is_finite() && t >= t0 && t <= t1 {
         add_current(&mut m, t, path_a_r(app));
     }

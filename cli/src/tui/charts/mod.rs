@@ -42,8 +42,8 @@ use plot::Scale;
 /// Builds the chart `kind` from the app's results.
 pub fn build(app: &App, kind: ChartKind) -> ChartModel {
     let mut m = build_own(app, kind);
-    m.model = slot(&app.scene.model());
-    draw_pins(&mut m, &app.pins, &app.scene);
+    m.model = slot(&app.params.scene.model());
+    draw_pins(&mut m, &app.results.pins, &app.params.scene);
     m
 }
 
@@ -51,7 +51,7 @@ pub fn build(app: &App, kind: ChartKind) -> ChartModel {
 pub fn pin_curves(app: &App) -> Vec<(ChartKind, Vec<(f64, f64)>)> {
     let theory = theory_role(app);
     let mut curves: Vec<(ChartKind, Vec<(f64, f64)>)> = Vec::new();
-    for k in app.charts {
+    for k in app.ui.charts {
         if curves.iter().any(|(c, _)| *c == k) {
             continue;
         }
@@ -84,7 +84,7 @@ pub fn build_own(app: &App, kind: ChartKind) -> ChartModel {
 fn pr_linear(app: &App) -> ChartModel {
     let mut title = format!(
         "Pr(σ*) at p* = {}",
-        crate::tui::model::words::sig(app.scene.pressure(), 3)
+        crate::tui::model::words::sig(app.params.scene.pressure(), 3)
     );
     if crate::tui::charts::chart_model::path_row(app).is_some() {
         // the engine computes the loading branch's distribution only
@@ -92,15 +92,15 @@ fn pr_linear(app: &App) -> ChartModel {
     }
     // `y`: a log density axis, for the small distributions beside a large one (thick slabs
     // beside thin ones, the tails)
-    let ys = if app.log_pr { Scale::Log10 } else { Scale::Linear };
+    let ys = if app.ui.log_pr { Scale::Log10 } else { Scale::Linear };
     let mut m = base(ChartKind::Pr, title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, ys);
-    m.clip_y = app.log_pr;
+    m.clip_y = app.ui.log_pr;
     let Some(p) = current_point(app) else {
-        set_empty(&mut m, app, app.point.as_ref());
+        set_empty(&mut m, app, app.results.point.as_ref());
         return m;
     };
     m.stale = app.point_is_stale();
-    if let Some(c) = p.adhesionless.as_ref().filter(|_| app.compare) {
+    if let Some(c) = p.adhesionless.as_ref().filter(|_| app.ui.compare) {
         m.series.push(Series {
             name: "γ_s=0".into(),
             points: c.clone(),
@@ -141,7 +141,7 @@ fn pr_linear(app: &App) -> ChartModel {
     m.xb = xb.unwrap_or([0.0, 1.0]);
     // the sampled tails are flat zeros: end the axis where every curve is below 10⁻³ of the
     // peak
-    let peak = yb.map_or(0.0, |b| if app.log_pr { 10f64.powf(b[1]) } else { b[1] });
+    let peak = yb.map_or(0.0, |b| if app.ui.log_pr { 10f64.powf(b[1]) } else { b[1] });
     let last = m
         .series
         .iter()
@@ -163,7 +163,7 @@ fn pr_linear(app: &App) -> ChartModel {
             },
         );
     }
-    m.yb = if app.log_pr {
+    m.yb = if app.ui.log_pr {
         let top = yb.map_or(0.0, |b| b[1]);
         [top - 4.0, top + 0.1]
     } else {
@@ -180,12 +180,12 @@ fn positive(pr: &[(f64, f64)]) -> Vec<(f64, f64)> {
 fn pr_loglog(app: &App) -> ChartModel {
     let title = format!(
         "Pr(σ*) log–log at p* = {}",
-        crate::tui::model::words::sig(app.scene.pressure(), 3)
+        crate::tui::model::words::sig(app.params.scene.pressure(), 3)
     );
     let mut m = base(ChartKind::PrLog, title, "σ* = σ/E*ḡ", "Pr", Scale::Log10, Scale::Log10);
     m.clip_y = true;
     let Some(p) = current_point(app) else {
-        set_empty(&mut m, app, app.point.as_ref());
+        set_empty(&mut m, app, app.results.point.as_ref());
         return m;
     };
     m.stale = app.point_is_stale();
@@ -197,7 +197,7 @@ fn pr_loglog(app: &App) -> ChartModel {
         }
     };
     let theory = curve(p);
-    if let Some(c) = p.adhesionless.as_ref().filter(|_| app.compare) {
+    if let Some(c) = p.adhesionless.as_ref().filter(|_| app.ui.compare) {
         m.series.push(Series {
             name: "γ_s=0".into(),
             points: positive(c),
@@ -205,9 +205,9 @@ fn pr_loglog(app: &App) -> ChartModel {
             draw: Draw::Line,
         });
     }
-    if app.scene.surface_energy_j_m2() == 0.0 && p.width > 0.0 {
+    if app.params.scene.surface_energy_j_m2() == 0.0 && p.width > 0.0 {
         // [S] Fig. 3: Pr ∝ σ* for σ* → 0 and the Gaussian tail
-        let (pp, d) = (app.scene.pressure(), p.width);
+        let (pp, d) = (app.params.scene.pressure(), p.width);
         let xs: Vec<f64> = theory.iter().map(|q| q.0).collect();
         // each where it applies: σ* below Δ, and above Δ/2 (they coincide for σ* ≪ Δ)
         m.series.push(Series {
@@ -324,7 +324,7 @@ mod tests {
     #[test]
     fn load_charts_share_the_requested_x_axis_when_low_loads_fail() {
         let mut a = app();
-        if let Some(Ok(sw)) = a.sweep.as_mut() {
+        if let Some(Ok(sw)) = a.results.sweep.as_mut() {
             // the lowest third of the loads failed
             let n = sw.p.len() / 3;
             for i in 0..n {
@@ -338,7 +338,7 @@ mod tests {
             let m = build(&a, k);
             assert_eq!(m.xb, want, "{k:?}");
             // the p* marker stays
-            assert_eq!(m.vlines[0].x, a.scene.pressure(), "{k:?}");
+            assert_eq!(m.vlines[0].x, a.params.scene.pressure(), "{k:?}");
             assert!(m.series.iter().any(|s| s.role == Role::Current), "{k:?}");
         }
     }
@@ -347,7 +347,7 @@ mod tests {
     fn asymptotes_follow_the_closed_forms_and_eq18_is_drawn() {
         let a = app();
         let m = build(&a, ChartKind::PrLog);
-        let p = a.point.as_ref().unwrap().as_ref().unwrap();
+        let p = a.results.point.as_ref().unwrap().as_ref().unwrap();
         let small = m.series.iter().find(|s| s.name == "σ→0 asymptote").unwrap();
         let theory = m.series.iter().find(|s| s.role == Role::Theory).unwrap();
         // at the smallest σ* the theory (mirror Gaussian) and the asymptote agree to 1e-3

@@ -35,7 +35,7 @@ pub fn psd(app: &App) -> ChartModel {
         Scale::Log10,
         Scale::Log10,
     );
-    let spectrum = app.scene.spectrum();
+    let spectrum = app.params.scene.spectrum();
     match spectrum {
         Spectrum::SelfAffine(s) => {
             m.title = format!("C(q) self-affine H={}", sig(s.hurst, 3));

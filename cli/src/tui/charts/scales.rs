@@ -14,7 +14,7 @@ use crate::tui::model::words::sig;
 
 /// Why a scale chart is empty.
 fn empty(app: &App, m: &mut ChartModel) {
-    set_empty(m, app, app.scales.as_ref());
+    set_empty(m, app, app.results.scales.as_ref());
 }
 
 /// Pr(σ*, q) at the current frame.
@@ -37,7 +37,7 @@ pub fn scales(app: &App) -> ChartModel {
         "Pr(σ*, q) q/q_L={} {}/{n}{} a_r(q)={}",
         sig(f.q_rel, 3),
         i + 1,
-        if app.playing { " ▶" } else { "" },
+        if app.ui.playing { " ▶" } else { "" },
         sig(f.a_r, 3)
     );
     if let Some(last) = d.frames.last().filter(|_| i + 1 < n) {

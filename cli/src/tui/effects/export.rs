@@ -46,7 +46,7 @@ pub fn cell(x: f64) -> String {
 
 /// `# key: value` lines describing the scene, for the top of every exported CSV.
 pub fn scene_comment(app: &App, name: &str) -> String {
-    let s = &app.scene;
+    let s = &app.params.scene;
     let t = if s.thickness_qr().is_infinite() {
         "inf".to_string()
     } else {
@@ -55,8 +55,8 @@ pub fn scene_comment(app: &App, name: &str) -> String {
     format!(
         "# asperity explorer export {name}\n# preset: {} ({})\n# model: {}\n# pressure: {}\n# thickness_qr: {t}\n\
          # gamma_j_m2: {}\n# range_m: {}\n# reduced units: stresses by E*g = {} Pa, gap by h_rms = {} m\n",
-        app.preset.name,
-        app.source,
+        app.params.preset.name,
+        app.params.source,
         s.model().label(),
         s.pressure(),
         s.surface_energy_j_m2(),
@@ -72,20 +72,20 @@ fn write(path: &Path, text: &str) -> Result<()> {
 
 /// Writes the files under the next free number; returns their paths.
 pub fn export(app: &App) -> Result<Vec<String>> {
-    export_as(app, next_number(&app.export_dir, &safe_name(app))?)
+    export_as(app, next_number(&app.jobs.export_dir, &safe_name(app))?)
 }
 
 /// Writes the files as `asperity-NAME-N…`; returns their paths.
 pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
     let name = safe_name(app);
-    let dir = &app.export_dir;
+    let dir = &app.jobs.export_dir;
     let stem = format!("asperity-{name}-{n}");
     let mut paths = Vec::new();
 
-    let mut preset = scene_preset(&app.preset, &app.scene);
+    let mut preset = scene_preset(&app.params.preset, &app.params.scene);
     preset.name = stem.clone();
     let toml_text = toml::to_string(&preset).map_err(|e| Error::io("serialise the scene", e))?;
-    let header = match &app.scene.spectrum() {
+    let header = match &app.params.scene.spectrum() {
         asperity::surface::spectrum::Spectrum::Tabulated(t) => format!(
             "# Scene exported by the asperity explorer on the measured spectrum of {src}.\n\
              # A preset names no surface file: [surface] below is the preset's, not the scene's.\n\
@@ -98,7 +98,7 @@ pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
     write(&path, &(header + &toml_text))?;
     paths.push(path.display().to_string());
 
-    if let Some(Ok(pt)) = &app.point {
+    if let Some(Ok(pt)) = &app.results.point {
         let mut t = scene_comment(app, &stem);
         t.push_str("sigma,density\n");
         for (s, d) in &pt.pr {
@@ -108,15 +108,16 @@ pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
         write(&path, &t)?;
         paths.push(path.display().to_string());
     }
-    if let Some(Ok(sw)) = &app.sweep {
+    if let Some(Ok(sw)) = &app.results.sweep {
         let path = dir.join(format!("{stem}-loads.csv"));
         write(&path, &(scene_comment(app, &stem) + &loads_csv(sw)))?;
         paths.push(path.display().to_string());
     }
     if let Some(Ok(th)) = app
+        .results
         .thickness
         .as_ref()
-        .filter(|_| app.charts.contains(&ChartKind::Thickness))
+        .filter(|_| app.ui.charts.contains(&ChartKind::Thickness))
     {
         let path = dir.join(format!("{stem}-thickness.csv"));
         write(&path, &(scene_comment(app, &stem) + &thickness_csv(th)))?;
@@ -130,12 +131,12 @@ pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
         write(&path, &(scene_comment(app, &stem) + &gfmd_csv(g)))?;
         paths.push(path.display().to_string());
     }
-    if !app.pins.is_empty() {
+    if !app.results.pins.is_empty() {
         // the pinned curves, each named by what differs from the exported scene
         let mut t = scene_comment(app, &stem);
         t.push_str("pin,label,chart,x,y\n");
-        for (i, p) in app.pins.iter().enumerate() {
-            let label = crate::tui::model::pins::label(&p.scene, &app.scene).replace(',', ";");
+        for (i, p) in app.results.pins.iter().enumerate() {
+            let label = crate::tui::model::pins::label(&p.scene, &app.params.scene).replace(',', ";");
             for (k, pts) in &p.curves {
                 for (x, y) in pts {
                     let _ = writeln!(t, "{},{label},{},{},{}", i + 1, k.name(), cell(*x), cell(*y));
@@ -398,10 +399,10 @@ pub fn next_number(dir: &Path, name: &str) -> Result<u32> {
 /// The scene's name as a file name (`asperity-NAME-N…`): the measured surface's file stem,
 /// else the preset's name.
 pub fn safe_name(app: &App) -> String {
-    let surface = crate::tui::model::words::surface_name(&app.scene)
+    let surface = crate::tui::model::words::surface_name(&app.params.scene)
         .map(|f| f.rsplit_once('.').map_or(f.clone(), |(stem, _)| stem.to_string()));
     surface
-        .unwrap_or_else(|| app.preset.name.clone())
+        .unwrap_or_else(|| app.params.preset.name.clone())
         .chars()
         .map(|c| {
             if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
@@ -416,13 +417,13 @@ pub fn safe_name(app: &App) -> String {
 /// `s`: writes the visible charts (each once) as SVG and PNG into the export directory, as
 /// `asperity-NAME-N-CHART.svg|png` (N never overwrites); returns the paths.
 pub fn export_charts(app: &App) -> Result<Vec<String>> {
-    export_charts_as(app, next_number(&app.export_dir, &safe_name(app))?)
+    export_charts_as(app, next_number(&app.jobs.export_dir, &safe_name(app))?)
 }
 
 /// `s` under number `n`.
 pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
     let mut kinds: Vec<ChartKind> = Vec::new();
-    for k in app.charts {
+    for k in app.ui.charts {
         if !kinds.contains(&k) {
             kinds.push(k);
         }
@@ -436,14 +437,14 @@ pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
         return Err(Error::Unsupported("no chart to save yet (nothing computed)".into()));
     }
     let name = safe_name(app);
-    let dir = &app.export_dir;
-    let sc = &app.scene;
+    let dir = &app.jobs.export_dir;
+    let sc = &app.params.scene;
     let t = if sc.thickness_qr().is_infinite() {
         "∞".to_string()
     } else {
         crate::tui::charts::plot::format_number(sc.thickness_qr())
     };
-    let system = crate::tui::model::words::surface_name(sc).unwrap_or_else(|| app.preset.name.clone());
+    let system = crate::tui::model::words::surface_name(sc).unwrap_or_else(|| app.params.preset.name.clone());
     let note = format!(
         "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
         system,
@@ -474,7 +475,7 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("asperity-export-test-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let mut app = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
-        app.export_dir = dir.clone();
+        app.jobs.export_dir = dir.clone();
         crate::tui::drive::compute_now(&mut app, &mut Default::default());
         let first = export(&app).unwrap();
         assert_eq!(first.len(), 3, "{first:?}");
@@ -498,7 +499,7 @@ mod tests {
         assert_eq!(rows[1].split(',').nth(4), Some("true"), "{}", rows[1]);
         assert!(!csv.contains("NaN") && !csv.contains("0.000e0"));
         let back = Preset::load(std::path::Path::new(&first[0])).unwrap();
-        assert_eq!(crate::tui::model::app::initial_scene(&back).unwrap(), app.scene);
+        assert_eq!(crate::tui::model::app::initial_scene(&back).unwrap(), app.params.scene);
         // the exported scene is named after its file, not the stock preset
         assert_eq!(back.name, "asperity-system-1-1");
         let _ = std::fs::remove_dir_all(&dir);
@@ -509,7 +510,7 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("asperity-svg-test-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let mut app = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
-        app.export_dir = dir.clone();
+        app.jobs.export_dir = dir.clone();
         app.set_typed(crate::tui::model::app::Param::Gamma, "0").unwrap();
         app.set_charts([ChartKind::PrLog, ChartKind::AreaRatio, ChartKind::PrLog]);
         crate::tui::drive::compute_now(&mut app, &mut Default::default());

@@ -14,11 +14,12 @@ pub fn run(app: &mut App, cmd: &Command) {
     };
     let name = export::safe_name(app);
     let reuse = app
+        .jobs
         .last_export
         .as_ref()
-        .filter(|(scene, n, _, done)| *scene == app.scene && *n == name && !done[k])
+        .filter(|(scene, n, _, done)| *scene == app.params.scene && *n == name && !done[k])
         .map(|l| l.2);
-    let n = match reuse.map_or_else(|| export::next_number(&app.export_dir, &name), Ok) {
+    let n = match reuse.map_or_else(|| export::next_number(&app.jobs.export_dir, &name), Ok) {
         Ok(n) => n,
         Err(err) => return app.fail(err),
     };
@@ -29,13 +30,15 @@ pub fn run(app: &mut App, cmd: &Command) {
     };
     match r {
         Ok(paths) => {
-            let mut done = reuse.and_then(|_| app.last_export.take()).map_or([false; 2], |l| l.3);
+            let mut done = reuse
+                .and_then(|_| app.jobs.last_export.take())
+                .map_or([false; 2], |l| l.3);
             done[k] = true;
-            app.last_export = Some((app.scene.clone(), name, n, done));
+            app.jobs.last_export = Some((app.params.scene.clone(), name, n, done));
             // `p` lists the exported scene
             let toml = paths.iter().find(|p| p.ends_with(".toml"));
-            if let Some(t) = toml.filter(|t| !app.presets.iter().any(|x| &x.source == *t)) {
-                app.presets.push(PresetEntry {
+            if let Some(t) = toml.filter(|t| !app.params.presets.iter().any(|x| &x.source == *t)) {
+                app.params.presets.push(PresetEntry {
                     source: t.clone(),
                     place: "exported".into(),
                 });
@@ -56,11 +59,11 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("asperity-effects-test-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let mut app = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
-        app.export_dir = dir.clone();
+        app.jobs.export_dir = dir.clone();
         crate::tui::drive::compute_now(&mut app, &mut Default::default());
         let press = |app: &mut App, e: Command| {
             run(app, &e);
-            app.message.as_ref().map(|m| m.text.clone()).unwrap_or_default()
+            app.ui.message.as_ref().map(|m| m.text.clone()).unwrap_or_default()
         };
         let s = press(&mut app, Command::SaveCharts);
         assert!(s.contains("asperity-system-1-1-pr.svg"), "{s}");
@@ -68,6 +71,7 @@ mod tests {
         assert!(e.contains("asperity-system-1-1.toml"), "{e}");
         // `p` lists the exported scene
         assert!(app
+            .params
             .presets
             .iter()
             .any(|p| p.place == "exported" && p.source.ends_with("asperity-system-1-1.toml")));

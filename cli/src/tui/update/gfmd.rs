@@ -13,29 +13,29 @@ impl App {
     /// `g`: asks for a GFMD run of the current scene on the preset's reduced grid, or cancels
     /// the running one.
     pub fn toggle_gfmd(&mut self) {
-        if let GfmdState::Running { .. } = self.gfmd {
-            if let Some(c) = self.gfmd_cancel.take() {
+        if let GfmdState::Running { .. } = self.jobs.gfmd {
+            if let Some(c) = self.jobs.gfmd_cancel.take() {
                 c.store(true, Ordering::Relaxed);
             }
-            self.gfmd = GfmdState::Idle;
+            self.jobs.gfmd = GfmdState::Idle;
             // a run not started yet is not started
-            self.commands.retain(|c| !matches!(c, Command::StartGfmd { .. }));
+            self.jobs.commands.retain(|c| !matches!(c, Command::StartGfmd { .. }));
             self.info("GFMD cancelled");
             return;
         }
-        self.gfmd_next += 1;
-        let id = self.gfmd_next;
+        self.jobs.gfmd_next += 1;
+        let id = self.jobs.gfmd_next;
         let cancel = Arc::new(AtomicBool::new(false));
-        self.gfmd_cancel = Some(cancel.clone());
-        self.commands.push(Command::StartGfmd {
+        self.jobs.gfmd_cancel = Some(cancel.clone());
+        self.jobs.commands.push(Command::StartGfmd {
             id,
-            scene: self.scene.clone(),
+            scene: self.params.scene.clone(),
             cancel,
         });
-        self.gfmd = GfmdState::Running {
+        self.jobs.gfmd = GfmdState::Running {
             id,
-            scene: self.scene.clone(),
-            progress: GfmdProgress::starting(self.scene.pressure()),
+            scene: self.params.scene.clone(),
+            progress: GfmdProgress::starting(self.params.scene.pressure()),
             started: std::time::Instant::now(),
         };
         self.info("GFMD started on the preset's reduced grid (g cancels)");
@@ -44,10 +44,10 @@ impl App {
     /// A progress report of run `id`: shown if it is the running one. The start message gives
     /// way to the progress in the status line.
     pub(crate) fn on_gfmd_progress(&mut self, id: u64, report: GfmdProgress) {
-        if let GfmdState::Running { id: cur, progress, .. } = &mut self.gfmd {
+        if let GfmdState::Running { id: cur, progress, .. } = &mut self.jobs.gfmd {
             if *cur == id {
                 *progress = report;
-                self.spinner = self.spinner.wrapping_add(1);
+                self.ui.spinner = self.ui.spinner.wrapping_add(1);
                 self.clear_gfmd_start_message();
             }
         }
@@ -56,25 +56,25 @@ impl App {
     /// The end of run `id` (if it is the running one): its outcome and time, "GFMD done in
     /// X s" in the status line; a cancelled run leaves nothing.
     pub(crate) fn on_gfmd_done(&mut self, id: u64, result: Result<GfmdView>, elapsed_s: f64) {
-        let GfmdState::Running { id: cur, scene, .. } = &self.gfmd else {
+        let GfmdState::Running { id: cur, scene, .. } = &self.jobs.gfmd else {
             return;
         };
         if *cur != id {
             return;
         }
         let scene = scene.clone();
-        self.gfmd_cancel = None;
+        self.jobs.gfmd_cancel = None;
         self.clear_gfmd_start_message();
-        let took = if self.show_timing {
+        let took = if self.ui.show_timing {
             format!(" in {}", format_secs(elapsed_s))
         } else {
             String::new()
         };
         match result {
-            Err(Error::Cancelled) => self.gfmd = GfmdState::Idle,
+            Err(Error::Cancelled) => self.jobs.gfmd = GfmdState::Idle,
             Ok(v) => {
                 self.info(format!("GFMD done{took}"));
-                self.gfmd = GfmdState::Done {
+                self.jobs.gfmd = GfmdState::Done {
                     scene,
                     result: Ok(v),
                     elapsed_s,
@@ -82,7 +82,7 @@ impl App {
             }
             Err(e) => {
                 self.fail(format!("GFMD failed{}: {e}", took.replace(" in", " after")));
-                self.gfmd = GfmdState::Done {
+                self.jobs.gfmd = GfmdState::Done {
                     scene,
                     result: Err(e.to_string()),
                     elapsed_s,
@@ -94,9 +94,9 @@ impl App {
     /// The status line of a running job (phase, steps, residual, time and time left; the
     /// times only with [`App::show_timing`]).
     pub fn gfmd_status(&self) -> Option<String> {
-        match &self.gfmd {
+        match &self.jobs.gfmd {
             GfmdState::Running { progress, started, .. } => {
-                Some(progress.status_text(self.show_timing.then(|| started.elapsed().as_secs_f64())))
+                Some(progress.status_text(self.ui.show_timing.then(|| started.elapsed().as_secs_f64())))
             }
             _ => None,
         }
@@ -104,11 +104,12 @@ impl App {
 
     fn clear_gfmd_start_message(&mut self) {
         if self
+            .ui
             .message
             .as_ref()
             .is_some_and(|m| m.text.starts_with("GFMD started"))
         {
-            self.message = None;
+            self.ui.message = None;
         }
     }
 }

@@ -34,7 +34,7 @@ fn report(index: usize, iteration: usize, residual: f64) -> GfmdProgress {
 }
 
 fn shown_progress(a: &App) -> Option<&GfmdProgress> {
-    match &a.gfmd {
+    match &a.jobs.gfmd {
         GfmdState::Running { progress, .. } => Some(progress),
         _ => None,
     }
@@ -44,11 +44,11 @@ fn shown_progress(a: &App) -> Option<&GfmdProgress> {
 fn g_starts_and_cancels_a_gfmd_run() {
     let mut a = app();
     key(&mut a, KeyCode::Char('g'));
-    assert!(matches!(a.gfmd, GfmdState::Running { .. }));
+    assert!(matches!(a.jobs.gfmd, GfmdState::Running { .. }));
     assert!(a.animating(), "the panel's clock ticks while GFMD runs");
     let (id, scene, cancel) = a.take_gfmd_request().expect("a run to start");
-    assert_eq!(scene, a.scene);
-    let setup = jobs::gfmd_setup(&a.preset, &scene, None);
+    assert_eq!(scene, a.params.scene);
+    let setup = jobs::gfmd_setup(&a.params.preset, &scene, None);
     assert_eq!(setup.grid.n(), 512);
     // progress of this run is shown; a stale run's is not
     a.on_reply(Reply::GfmdProgress {
@@ -64,13 +64,13 @@ fn g_starts_and_cancels_a_gfmd_run() {
     // g again cancels
     key(&mut a, KeyCode::Char('g'));
     assert!(cancel.load(Ordering::Relaxed));
-    assert_eq!(a.gfmd, GfmdState::Idle);
+    assert_eq!(a.jobs.gfmd, GfmdState::Idle);
     assert!(a.take_gfmd_request().is_none());
     // a finished run is shown for its own scene only
     key(&mut a, KeyCode::Char('g'));
     let (id, _, _) = a.take_gfmd_request().unwrap();
     let view = GfmdView {
-        pressure: a.scene.pressure(),
+        pressure: a.params.scene.pressure(),
         a_r: 0.02,
         mean_contact_stress: 0.5,
         gap_rel: 1.5,
@@ -105,30 +105,30 @@ fn gfmd_progress_phases_and_the_time_it_took() {
         id,
         progress: report(3, 732, 3e-5),
     });
-    assert!(a.message.is_none(), "the start message gives way to the progress");
+    assert!(a.ui.message.is_none(), "the start message gives way to the progress");
     let p = shown_progress(&a).unwrap();
     assert_eq!(
         (p.phase.label(), p.steps_text()),
         ("load 2/5".into(), Some("732 it, res 3e-5".into()))
     );
-    a.show_timing = false;
+    a.ui.show_timing = false;
     assert_eq!(
         a.gfmd_status().unwrap(),
         "GFMD 512²: load 2 of 5 (p* = 0.00577): 732 it, res 3e-5 · g cancels"
     );
-    a.show_timing = true;
+    a.ui.show_timing = true;
     assert!(a.gfmd_status().unwrap().contains("left · g cancels"));
     // the end: "done in X s" in the status line and kept with the result
     a.on_reply(Reply::GfmdDone {
         id,
         result: Ok(GfmdView {
-            pressure: a.scene.pressure(),
+            pressure: a.params.scene.pressure(),
             ..GfmdView::default()
         }),
         elapsed_s: 49.8,
     });
-    assert_eq!(a.message.as_ref().unwrap().text, "GFMD done in 50 s");
-    assert!(matches!(a.gfmd, GfmdState::Done { elapsed_s, .. } if elapsed_s == 49.8));
+    assert_eq!(a.ui.message.as_ref().unwrap().text, "GFMD done in 50 s");
+    assert!(matches!(a.jobs.gfmd, GfmdState::Done { elapsed_s, .. } if elapsed_s == 49.8));
     assert_eq!(a.gfmd_status(), None);
     assert!(!a.animating());
 }
@@ -149,7 +149,7 @@ fn replies_of_a_cancelled_gfmd_run_are_dropped() {
         result: Err(Error::Cancelled),
         elapsed_s: 3.0,
     });
-    assert_eq!(a.gfmd, GfmdState::Idle);
+    assert_eq!(a.jobs.gfmd, GfmdState::Idle);
     // nor once a new run started
     key(&mut a, KeyCode::Char('g'));
     let (new, _, _) = a.take_gfmd_request().unwrap();
@@ -163,7 +163,7 @@ fn replies_of_a_cancelled_gfmd_run_are_dropped() {
         result: Ok(GfmdView::default()),
         elapsed_s: 3.0,
     });
-    assert!(matches!(a.gfmd, GfmdState::Running { id, .. } if id == new));
+    assert!(matches!(a.jobs.gfmd, GfmdState::Running { id, .. } if id == new));
     assert_eq!(shown_progress(&a).unwrap().iteration, 0);
     // a failure of the running one is kept with its reason and time
     a.on_reply(Reply::GfmdDone {
@@ -171,22 +171,28 @@ fn replies_of_a_cancelled_gfmd_run_are_dropped() {
         result: Err(Error::io("export", "test")),
         elapsed_s: 2.0,
     });
-    assert!(matches!(&a.gfmd, GfmdState::Done { result: Err(e), .. } if e.contains("test")));
-    assert!(a.message.as_ref().unwrap().text.starts_with("GFMD failed after 2.0 s"));
+    assert!(matches!(&a.jobs.gfmd, GfmdState::Done { result: Err(e), .. } if e.contains("test")));
+    assert!(a
+        .ui
+        .message
+        .as_ref()
+        .unwrap()
+        .text
+        .starts_with("GFMD failed after 2.0 s"));
 }
 
 #[test]
 fn the_gfmd_start_message_goes_when_the_run_ends() {
     let mut a = app();
     key(&mut a, KeyCode::Char('g'));
-    assert!(a.message.as_ref().unwrap().text.starts_with("GFMD started"));
+    assert!(a.ui.message.as_ref().unwrap().text.starts_with("GFMD started"));
     let (id, _, _) = a.take_gfmd_request().unwrap();
     a.on_reply(Reply::GfmdDone {
         id,
         result: Err(Error::Cancelled),
         elapsed_s: 1.0,
     });
-    assert!(a.message.is_none());
+    assert!(a.ui.message.is_none());
 }
 
 /// `tui --surface FILE`: `g` runs GFMD on the measured map while the scene is on the map's
@@ -209,15 +215,16 @@ fn g_on_a_measured_surface_runs_on_its_map() {
     let (q, c): (Vec<f64>, Vec<f64>) = psd.bins.iter().map(|b| (b.q, b.psd)).unzip();
     let table = Tabulated::new(q, c, path, None, None).unwrap();
     let mut a = app();
-    a.scene = a
+    a.params.scene = a
+        .params
         .scene
         .clone()
         .with_spectrum(Spectrum::Tabulated(table.clone()))
         .unwrap();
-    a.map = Some((path.to_string(), std::sync::Arc::new(map)));
+    a.params.map = Some((path.to_string(), std::sync::Arc::new(map)));
     key(&mut a, KeyCode::Char('g'));
     let (_, scene, _) = a.take_gfmd_request().expect("a run to start");
-    let setup = jobs::gfmd_setup(&a.preset, &scene, a.map_of(&scene));
+    let setup = jobs::gfmd_setup(&a.params.preset, &scene, a.map_of(&scene));
     assert_eq!(setup.surface.as_ref().map(|s| (s.nx, s.ny)), Some((32, 32)));
     assert_eq!(jobs::grid_side(&setup), 32);
     // a table of another name is not this map's spectrum
@@ -226,7 +233,10 @@ fn g_on_a_measured_surface_runs_on_its_map() {
     let s = scene.clone().with_spectrum(Spectrum::Tabulated(other)).unwrap();
     assert!(a.map_of(&s).is_none());
     // the preset's spectrum: a generated map
-    let s = scene.with_spectrum(a.preset.spectrum().unwrap()).unwrap();
+    let s = scene.with_spectrum(a.params.preset.spectrum().unwrap()).unwrap();
     assert!(a.map_of(&s).is_none());
-    assert_eq!(jobs::grid_side(&jobs::gfmd_setup(&a.preset, &s, a.map_of(&s))), 512);
+    assert_eq!(
+        jobs::grid_side(&jobs::gfmd_setup(&a.params.preset, &s, a.map_of(&s))),
+        512
+    );
 }

@@ -8,7 +8,7 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 fn app() -> App {
     let p = asperity::input::preset::Preset::resolve("system-1").unwrap();
     let mut a = App::new("system-1", p).unwrap();
-    a.export_dir = std::env::temp_dir();
+    a.jobs.export_dir = std::env::temp_dir();
     a
 }
 
@@ -28,37 +28,37 @@ fn z_zooms_the_focused_chart_and_esc_cancels_without_quitting() {
     let mut a = app();
     key(&mut a, KeyCode::Char('f'));
     key(&mut a, KeyCode::Char('z'));
-    assert!(a.zoom && a.focus == 1);
+    assert!(a.ui.zoom && a.ui.focus == 1);
     // Esc leaves the zoom, then has nothing to cancel and says q quits
     key(&mut a, KeyCode::Esc);
-    assert!(!a.zoom && !a.quit);
+    assert!(!a.ui.zoom && !a.ui.quit);
     key(&mut a, KeyCode::Esc);
-    assert!(!a.quit);
-    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("q quits")));
+    assert!(!a.ui.quit);
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("q quits")));
     // F1 is ? (the help)
     key(&mut a, KeyCode::F(1));
-    assert_eq!(a.overlay, Overlay::Help);
+    assert_eq!(a.ui.overlay, Overlay::Help);
 }
 
 #[test]
 fn c_explains_itself_without_adhesion_and_y_turns_the_pr_axis() {
     let mut a = app();
-    assert!(a.scene.is_adhesive() && a.compare);
+    assert!(a.params.scene.is_adhesive() && a.ui.compare);
     key(&mut a, KeyCode::Char('c'));
-    assert!(!a.compare);
-    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("hidden")));
+    assert!(!a.ui.compare);
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("hidden")));
     typed_gamma_off(&mut a);
     key(&mut a, KeyCode::Char('c'));
-    assert!(!a.compare, "nothing to compare: c changes nothing");
-    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("has none")));
-    assert!(!a.log_pr);
+    assert!(!a.ui.compare, "nothing to compare: c changes nothing");
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("has none")));
+    assert!(!a.ui.log_pr);
     key(&mut a, KeyCode::Char('y'));
-    assert!(a.log_pr);
+    assert!(a.ui.log_pr);
 }
 
 fn typed_gamma_off(a: &mut App) {
     a.set_typed(Param::Gamma, "0").unwrap();
-    assert!(!a.scene.is_adhesive());
+    assert!(!a.params.scene.is_adhesive());
 }
 
 #[test]
@@ -85,7 +85,7 @@ fn work_leaves_the_update_as_commands() {
     let cs = a.take_commands();
     assert_eq!(kinds(&cs), ["compute"]);
     if let Command::Compute(r) = &cs[0] {
-        assert_eq!(r.scene, a.scene);
+        assert_eq!(r.scene, a.params.scene);
     }
     // e, s, g, in the order pressed; g again before the run started drops it
     key(&mut a, KeyCode::Char('e'));
@@ -107,15 +107,15 @@ fn work_leaves_the_update_as_commands() {
 fn a_typed_value_out_of_range_is_named_by_its_knob() {
     let mut a = app();
     // select t·q_r and type a negative thickness
-    let i = a.params().iter().position(|p| *p == Param::Thickness).unwrap();
-    a.selected = i;
+    let i = a.knob_rows().iter().position(|p| *p == Param::Thickness).unwrap();
+    a.ui.selected = i;
     typed(&mut a, "-1");
-    let m = a.message.as_ref().expect("an error").text.clone();
+    let m = a.ui.message.as_ref().expect("an error").text.clone();
     assert!(m.contains("t·q_r") && !m.contains("load.thickness_qr"), "{m}");
-    let i = a.params().iter().position(|p| *p == Param::Pressure).unwrap();
-    a.selected = i;
+    let i = a.knob_rows().iter().position(|p| *p == Param::Pressure).unwrap();
+    a.ui.selected = i;
     typed(&mut a, "1e9");
-    let m = a.message.as_ref().expect("an error").text.clone();
+    let m = a.ui.message.as_ref().expect("an error").text.clone();
     assert!(m.contains("p*") && !m.contains("load.pressure"), "{m}");
 }
 
@@ -124,7 +124,7 @@ fn a_pin_of_the_unchanged_scene_neither_repeats_nor_renames_the_curve() {
     let mut a = app();
     crate::tui::drive::compute_now(&mut a, &mut Default::default());
     key(&mut a, KeyCode::Char('P'));
-    assert_eq!(a.pins.len(), 1);
+    assert_eq!(a.results.pins.len(), 1);
     // the current curve keeps its name while the scene is the pinned one
     let m = crate::tui::charts::build(&a, ChartKind::Pr);
     assert!(
@@ -133,6 +133,6 @@ fn a_pin_of_the_unchanged_scene_neither_repeats_nor_renames_the_curve() {
         m.series.iter().map(|s| &s.name).collect::<Vec<_>>()
     );
     key(&mut a, KeyCode::Char('P'));
-    assert_eq!(a.pins.len(), 1);
-    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("pinned already")));
+    assert_eq!(a.results.pins.len(), 1);
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("pinned already")));
 }

@@ -9,7 +9,7 @@ use asperity::input::model::Model;
 impl App {
     pub(crate) fn try_model(&mut self, m: Result<Model>) {
         match m {
-            Ok(m) => match self.scene.clone().with_model(m) {
+            Ok(m) => match self.params.scene.clone().with_model(m) {
                 Ok(s) => self.set_scene(s),
                 Err(e) => self.fail(e),
             },
@@ -20,7 +20,7 @@ impl App {
     /// The next model in the cycle 1, 2, 3, 4, custom, YP08, Xu24; the variants are skipped
     /// (with the reason in the status line) where the scene does not take them.
     pub(crate) fn cycle_model(&mut self, dir: i32) {
-        let m = self.scene.model();
+        let m = self.params.scene.model();
         let [yp08, xu24] = crate::tui::model::kinds::variants(&m);
         let cycle = [
             Model::named(1),
@@ -43,7 +43,7 @@ impl App {
             let next = &cycle[(cur + dir * k).rem_euclid(n) as usize];
             match next
                 .clone()
-                .and_then(|nm| self.scene.clone().with_model(nm).map(|s| (nm, s)))
+                .and_then(|nm| self.params.scene.clone().with_model(nm).map(|s| (nm, s)))
             {
                 Ok((_, s)) => {
                     self.set_scene(s);

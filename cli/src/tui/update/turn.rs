@@ -10,18 +10,23 @@ use asperity::input::model::Model;
 impl App {
     pub(crate) fn step(&mut self, dir: i32, coarse: bool) {
         let pick = |s: (f64, f64)| if coarse { s.1 } else { s.0 };
-        let mut s = self.scene.clone();
+        let mut s = self.params.scene.clone();
         let m = s.model();
         // a typed value anchors its knob's grid; else the preset's value does
         let param = self.selected_param();
-        let typed = self.anchors.get(param);
+        let typed = self.params.anchors.get(param);
         let lin = |x: f64, step: (f64, f64)| lin_step_from(x, typed.unwrap_or(0.0), pick(step), dir);
         match param {
             Param::Preset => {
-                let n = self.presets.len() as i32;
+                let n = self.params.presets.len() as i32;
                 if n > 0 {
-                    let cur = self.presets.iter().position(|e| e.source == self.source).unwrap_or(0) as i32;
-                    let next = self.presets[(cur + dir).rem_euclid(n) as usize].source.clone();
+                    let cur = self
+                        .params
+                        .presets
+                        .iter()
+                        .position(|e| e.source == self.params.source)
+                        .unwrap_or(0) as i32;
+                    let next = self.params.presets[(cur + dir).rem_euclid(n) as usize].source.clone();
                     self.load_preset(&next);
                 }
                 return;
@@ -33,7 +38,7 @@ impl App {
             Param::Pressure => {
                 let p = log_step_from(
                     s.pressure(),
-                    typed.unwrap_or(self.base.pressure()),
+                    typed.unwrap_or(self.params.base.pressure()),
                     pick(PRESSURE_STEPS),
                     dir,
                 );
@@ -50,7 +55,12 @@ impl App {
                         THICKNESS_KEYS.1
                     }
                 } else {
-                    let v = log_step_from(t, typed.unwrap_or(self.base.thickness_qr()), pick(THICKNESS_STEPS), dir);
+                    let v = log_step_from(
+                        t,
+                        typed.unwrap_or(self.params.base.thickness_qr()),
+                        pick(THICKNESS_STEPS),
+                        dir,
+                    );
                     if v > THICKNESS_KEYS.1 * (1.0 + 1e-9) {
                         f64::INFINITY
                     } else {
@@ -64,7 +74,7 @@ impl App {
                 let g = s.surface_energy_j_m2();
                 if let Err(e) = s.set_surface_energy_j_m2(if g == 0.0 {
                     if dir > 0 {
-                        let pg = self.preset.adhesion.surface_energy_j_m2;
+                        let pg = self.params.preset.adhesion.surface_energy_j_m2;
                         if pg > 0.0 {
                             pg
                         } else {
@@ -76,7 +86,7 @@ impl App {
                 } else {
                     let v = log_step_from(
                         g,
-                        typed.unwrap_or(self.preset.adhesion.surface_energy_j_m2),
+                        typed.unwrap_or(self.params.preset.adhesion.surface_energy_j_m2),
                         pick(GAMMA_STEPS),
                         dir,
                     );
@@ -123,13 +133,13 @@ impl App {
 
     /// Sets a parameter from typed text.
     pub fn set_typed(&mut self, param: Param, text: &str) -> Result<()> {
-        let mut s = self.scene.clone();
+        let mut s = self.params.scene.clone();
         let m = s.model();
         let t = text.trim();
         match param {
             Param::Preset => {
                 self.load_preset(t);
-                return match &self.message {
+                return match &self.ui.message {
                     Some(Message { error: true, text }) => Err(Error::Unsupported(text.clone())),
                     _ => Ok(()),
                 };
@@ -186,7 +196,7 @@ impl App {
             Param::KGriffith => nm.k_griffith,
             _ => f64::NAN,
         };
-        self.anchors.typed(param, v);
+        self.params.anchors.typed(param, v);
         self.set_scene(s);
         Ok(())
     }

@@ -20,7 +20,7 @@ use ratatui::crossterm::event::KeyModifiers as M;
 fn app() -> App {
     let p = Preset::resolve("system-1").unwrap();
     let mut a = App::new("system-1", p).unwrap();
-    a.export_dir = std::env::temp_dir();
+    a.jobs.export_dir = std::env::temp_dir();
     a
 }
 
@@ -54,16 +54,16 @@ fn log_and_linear_steps_are_on_a_grid() {
 fn pressure_steps_round_trip_exactly() {
     let mut a = app();
     assert_eq!(a.selected_param(), Param::Pressure);
-    let p0 = a.scene.pressure();
+    let p0 = a.params.scene.pressure();
     key(&mut a, KeyCode::Right);
-    let p1 = a.scene.pressure();
+    let p1 = a.params.scene.pressure();
     assert!(p1 > p0 && p1 < p0 * 1.2);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.pressure(), p0);
+    assert_eq!(a.params.scene.pressure(), p0);
     a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
-    assert!((a.scene.pressure() / p0 - 10f64.powf(0.25)).abs() < 1e-12);
+    assert!((a.params.scene.pressure() / p0 - 10f64.powf(0.25)).abs() < 1e-12);
     key(&mut a, KeyCode::PageDown);
-    assert_eq!(a.scene.pressure(), p0);
+    assert_eq!(a.params.scene.pressure(), p0);
 }
 
 #[test]
@@ -71,38 +71,41 @@ fn pressure_steps_return_to_the_presets_value() {
     // system-2's p* = 0.005 is not on the 10^(k/20) grid: → → ← gave 0.004467
     let p = Preset::resolve("system-2").unwrap();
     let mut a = App::new("system-2", p).unwrap();
-    assert_eq!(a.scene.pressure(), 0.005);
+    assert_eq!(a.params.scene.pressure(), 0.005);
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Left);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.pressure(), 0.005);
+    assert_eq!(a.params.scene.pressure(), 0.005);
     key(&mut a, KeyCode::Right);
-    assert!((a.scene.pressure() / 0.005 - 10f64.powf(0.05)).abs() < 1e-12);
+    assert!((a.params.scene.pressure() / 0.005 - 10f64.powf(0.05)).abs() < 1e-12);
     // the coarse grid contains the preset's value too
     a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
-    assert_eq!(a.scene.pressure(), 0.005);
+    assert_eq!(a.params.scene.pressure(), 0.005);
     a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
     a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
-    assert_eq!(a.scene.pressure(), 0.005);
+    assert_eq!(a.params.scene.pressure(), 0.005);
 }
 
 #[test]
 fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
     let mut a = app();
     crate::tui::drive::compute_now(&mut a, &mut Default::default());
-    assert!(a.sweep.as_ref().is_some_and(|s| s.is_ok()));
-    let key_now = point_key(&a.source, &a.scene);
+    assert!(a.results.sweep.as_ref().is_some_and(|s| s.is_ok()));
+    let key_now = point_key(&a.params.source, &a.params.scene);
     a.on_reply(Reply::Point {
-        gen: a.gen,
+        gen: a.jobs.gen,
         key: key_now,
         result: Err(Error::NotConverged {
             solver: asperity::error::Solver::AdhesiveSelfConsistency,
             reason: "test".into(),
         }),
     });
-    assert!(a.sweep.as_ref().is_some_and(|s| s.is_ok()), "the load charts stay");
-    assert!(a.gap.is_some());
+    assert!(
+        a.results.sweep.as_ref().is_some_and(|s| s.is_ok()),
+        "the load charts stay"
+    );
+    assert!(a.results.gap.is_some());
     assert!(a.compute_error().unwrap().contains("did not converge"));
 }
 
@@ -111,23 +114,23 @@ fn chart_selector_focus_and_models_ask_for_data() {
     let mut a = app();
     let _ = a.take_request();
     key(&mut a, KeyCode::Char('v'));
-    assert_eq!(a.charts[0], ChartKind::PrLog);
+    assert_eq!(a.ui.charts[0], ChartKind::PrLog);
     key(&mut a, KeyCode::Char('f'));
     key(&mut a, KeyCode::Char('v'));
-    assert_eq!(a.charts[1], ChartKind::AreaRatio);
+    assert_eq!(a.ui.charts[1], ChartKind::AreaRatio);
     for _ in 0..2 {
         key(&mut a, KeyCode::Char('v'));
     }
-    assert_eq!(a.charts[1], ChartKind::Scales);
+    assert_eq!(a.ui.charts[1], ChartKind::Scales);
     for _ in 0..2 {
         key(&mut a, KeyCode::Char('v'));
     }
-    assert_eq!(a.charts[1], ChartKind::Stress);
+    assert_eq!(a.ui.charts[1], ChartKind::Stress);
     key(&mut a, KeyCode::Char('f'));
     for _ in 0..6 {
         key(&mut a, KeyCode::Char('v'));
     }
-    assert_eq!(a.charts[2], ChartKind::Thickness);
+    assert_eq!(a.ui.charts[2], ChartKind::Thickness);
     let r = a.take_request().expect("a new chart asks for its data");
     assert!(r.needs.thickness && r.needs.loads && r.needs.point);
     assert!(r.models.is_empty());
@@ -151,18 +154,18 @@ fn requests_carry_increasing_generations_and_only_on_change() {
     key(&mut a, KeyCode::Right);
     let r2 = a.take_request().unwrap();
     assert!(r2.gen > r1.gen);
-    assert!(a.busy);
+    assert!(a.jobs.busy);
     // a stale point (from r1's scene) is dropped, the current one kept
     a.on_reply(Reply::Point {
         gen: r1.gen,
         key: point_key(&r1.source, &r1.scene),
         result: Err(Error::Cancelled),
     });
-    assert!(a.point.is_none());
+    assert!(a.results.point.is_none());
     a.on_reply(Reply::Done { gen: r1.gen });
-    assert!(a.busy);
+    assert!(a.jobs.busy);
     a.on_reply(Reply::Done { gen: r2.gen });
-    assert!(!a.busy);
+    assert!(!a.jobs.busy);
 }
 
 #[test]
@@ -170,16 +173,16 @@ fn thickness_reaches_infinity_and_back() {
     let mut a = app();
     key(&mut a, KeyCode::Down); // t·q_r
     assert_eq!(a.selected_param(), Param::Thickness);
-    assert!(a.scene.thickness_qr().is_infinite());
+    assert!(a.params.scene.thickness_qr().is_infinite());
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.thickness_qr(), THICKNESS_KEYS.1);
+    assert_eq!(a.params.scene.thickness_qr(), THICKNESS_KEYS.1);
     key(&mut a, KeyCode::Right);
-    assert!(a.scene.thickness_qr().is_infinite());
+    assert!(a.params.scene.thickness_qr().is_infinite());
     typed(&mut a, "0.5");
-    assert_eq!(a.scene.thickness_qr(), 0.5);
+    assert_eq!(a.params.scene.thickness_qr(), 0.5);
     key(&mut a, KeyCode::Enter);
     typed(&mut a, "inf");
-    assert!(a.scene.thickness_qr().is_infinite());
+    assert!(a.params.scene.thickness_qr().is_infinite());
 }
 
 #[test]
@@ -189,38 +192,38 @@ fn gamma_zero_is_off() {
     key(&mut a, KeyCode::Down);
     assert_eq!(a.selected_param(), Param::Gamma);
     // the preset's own surface energy is the default
-    assert_eq!(a.scene.surface_energy_j_m2(), 0.05);
+    assert_eq!(a.params.scene.surface_energy_j_m2(), 0.05);
     for _ in 0..40 {
         key(&mut a, KeyCode::Left);
     }
-    assert_eq!(a.scene.surface_energy_j_m2(), 0.0);
+    assert_eq!(a.params.scene.surface_energy_j_m2(), 0.0);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.surface_energy_j_m2(), 0.0);
+    assert_eq!(a.params.scene.surface_energy_j_m2(), 0.0);
     key(&mut a, KeyCode::Right);
-    assert!(a.scene.surface_energy_j_m2() > 0.0);
+    assert!(a.params.scene.surface_energy_j_m2() > 0.0);
 }
 
 #[test]
 fn models_cycle_and_custom_rows_appear() {
     let mut a = app();
-    assert_eq!(a.scene.model().number(), Some(3));
+    assert_eq!(a.params.scene.model().number(), Some(3));
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model().number(), Some(4));
-    assert_eq!(a.params().len(), 5);
+    assert_eq!(a.params.scene.model().number(), Some(4));
+    assert_eq!(a.knob_rows().len(), 5);
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model().kind, ModelKind::Custom);
-    assert_eq!(a.scene.model().c1, 0.65);
-    assert_eq!(a.params().len(), 10);
+    assert_eq!(a.params.scene.model().kind, ModelKind::Custom);
+    assert_eq!(a.params.scene.model().c1, 0.65);
+    assert_eq!(a.knob_rows().len(), 10);
     // edit c1 until W < 0 is refused with a message
-    a.selected = a.params().iter().position(|p| *p == Param::C1).unwrap();
+    a.ui.selected = a.knob_rows().iter().position(|p| *p == Param::C1).unwrap();
     for _ in 0..10 {
         a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
     }
-    assert!(a.scene.model().c1 <= 1.0);
-    assert!(a.message.as_ref().is_some_and(|m| m.error), "{:?}", a.message);
+    assert!(a.params.scene.model().c1 <= 1.0);
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.error), "{:?}", a.ui.message);
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model().number(), Some(1));
-    assert!(a.selected < a.params().len());
+    assert_eq!(a.params.scene.model().number(), Some(1));
+    assert!(a.ui.selected < a.knob_rows().len());
 }
 
 #[test]
@@ -229,10 +232,10 @@ fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() 
     let mut a = app();
     key(&mut a, KeyCode::Char('m'));
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model().kind, ModelKind::Custom);
+    assert_eq!(a.params.scene.model().kind, ModelKind::Custom);
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model().number(), Some(1));
-    let m = a.message.clone().expect("the skip is explained");
+    assert_eq!(a.params.scene.model().number(), Some(1));
+    let m = a.ui.message.clone().expect("the skip is explained");
     assert!(!m.error && m.text.contains("YP08 and Xu24 skipped"), "{}", m.text);
     // on the adhesionless half-space they take their turn, with γ_f = 0.42, and M draws them
     let mut a = app();
@@ -241,14 +244,14 @@ fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() 
         key(&mut a, KeyCode::Char('m'));
     }
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model().kind, ModelKind::Yp08);
-    assert!((a.scene.model().fudge_gamma().unwrap() - 0.42).abs() < 1e-12);
+    assert_eq!(a.params.scene.model().kind, ModelKind::Yp08);
+    assert!((a.params.scene.model().fudge_gamma().unwrap() - 0.42).abs() < 1e-12);
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model().kind, ModelKind::Xu24);
+    assert_eq!(a.params.scene.model().kind, ModelKind::Xu24);
     // with a variant current, M draws both variants beside models 1–4
-    let kinds: Vec<ModelKind> = crate::tui::model::kinds::overlay_models(&a.scene.model())
+    let kinds: Vec<ModelKind> = crate::tui::model::kinds::overlay_models(&a.params.scene.model())
         .iter()
-        .filter_map(|m| a.scene.clone().with_model(*m).ok())
+        .filter_map(|m| a.params.scene.clone().with_model(*m).ok())
         .map(|s| s.model().kind)
         .collect();
     assert!(
@@ -257,35 +260,38 @@ fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() 
     );
     assert_eq!(kinds.len(), 6);
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.scene.model().number(), Some(1));
-    assert_eq!(crate::tui::model::kinds::overlay_models(&a.scene.model()).len(), 4);
+    assert_eq!(a.params.scene.model().number(), Some(1));
+    assert_eq!(
+        crate::tui::model::kinds::overlay_models(&a.params.scene.model()).len(),
+        4
+    );
     // a slab is refused while a variant is current, and the scene stays as it was
     for _ in 0..5 {
         key(&mut a, KeyCode::Char('m'));
     }
-    assert_eq!(a.scene.model().kind, ModelKind::Yp08);
-    let before = a.scene.clone();
+    assert_eq!(a.params.scene.model().kind, ModelKind::Yp08);
+    let before = a.params.scene.clone();
     assert!(a.set_typed(Param::Thickness, "1").is_err());
-    assert_eq!(a.scene, before);
+    assert_eq!(a.params.scene, before);
 }
 
 #[test]
 fn typing_bad_values_keeps_the_scene_and_explains() {
     let mut a = app();
-    let before = a.scene.clone();
+    let before = a.params.scene.clone();
     typed(&mut a, "-3");
-    assert_eq!(a.scene, before);
-    assert!(a.message.as_ref().unwrap().text.contains("p*"));
+    assert_eq!(a.params.scene, before);
+    assert!(a.ui.message.as_ref().unwrap().text.contains("p*"));
     key(&mut a, KeyCode::Enter);
     typed(&mut a, "abc");
-    assert_eq!(a.scene, before);
+    assert_eq!(a.params.scene, before);
     typed(&mut a, "1e-3");
-    assert_eq!(a.scene.pressure(), 1e-3);
+    assert_eq!(a.params.scene.pressure(), 1e-3);
     // Esc cancels typing without quitting
     key(&mut a, KeyCode::Char('5'));
     key(&mut a, KeyCode::Esc);
-    assert!(!a.quit && a.edit.is_none());
-    assert_eq!(a.scene.pressure(), 1e-3);
+    assert!(!a.ui.quit && a.ui.edit.is_none());
+    assert_eq!(a.params.scene.pressure(), 1e-3);
 }
 
 #[test]
@@ -293,43 +299,43 @@ fn reset_help_picker_and_quit() {
     let mut a = app();
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Char('r'));
-    assert_eq!(a.scene, a.base);
+    assert_eq!(a.params.scene, a.params.base);
     key(&mut a, KeyCode::Char('?'));
-    assert_eq!(a.overlay, Overlay::Help);
+    assert_eq!(a.ui.overlay, Overlay::Help);
     // ↓↑ scroll the help, another key closes it (and forgets the scroll)
     key(&mut a, KeyCode::Down);
     key(&mut a, KeyCode::Char('j'));
     key(&mut a, KeyCode::Up);
-    assert_eq!((a.overlay, a.help_scroll), (Overlay::Help, 1));
+    assert_eq!((a.ui.overlay, a.ui.help_scroll), (Overlay::Help, 1));
     key(&mut a, KeyCode::Char('x'));
-    assert_eq!((a.overlay, a.help_scroll), (Overlay::None, 0));
+    assert_eq!((a.ui.overlay, a.ui.help_scroll), (Overlay::None, 0));
     key(&mut a, KeyCode::Char('p'));
-    assert!(matches!(a.overlay, Overlay::Presets(0)));
+    assert!(matches!(a.ui.overlay, Overlay::Presets(0)));
     key(&mut a, KeyCode::Down);
     key(&mut a, KeyCode::Enter);
-    assert_eq!(a.preset.name, "system-2");
-    assert_eq!(a.overlay, Overlay::None);
+    assert_eq!(a.params.preset.name, "system-2");
+    assert_eq!(a.ui.overlay, Overlay::None);
     key(&mut a, KeyCode::Char('a'));
-    assert_eq!(a.charts[1], ChartKind::AreaRatio);
-    assert!(!a.quit);
+    assert_eq!(a.ui.charts[1], ChartKind::AreaRatio);
+    assert!(!a.ui.quit);
     // Esc cancels, never quits; q does
     key(&mut a, KeyCode::Esc);
-    assert!(!a.quit);
-    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("q quits")));
+    assert!(!a.ui.quit);
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("q quits")));
     key(&mut a, KeyCode::Char('q'));
-    assert!(a.quit);
+    assert!(a.ui.quit);
     let mut b = app();
     b.on_key(KeyEvent::new(KeyCode::Char('c'), M::CONTROL));
-    assert!(b.quit);
+    assert!(b.ui.quit);
     // q while typing cancels the field and keeps the scene; a second q quits
     let mut c = app();
-    let before = c.scene.clone();
+    let before = c.params.scene.clone();
     key(&mut c, KeyCode::Char('5'));
     key(&mut c, KeyCode::Char('q'));
-    assert_eq!((c.edit.as_deref(), c.quit), (None, false));
-    assert_eq!(c.scene, before);
+    assert_eq!((c.ui.edit.as_deref(), c.ui.quit), (None, false));
+    assert_eq!(c.params.scene, before);
     key(&mut c, KeyCode::Char('q'));
-    assert!(c.quit);
+    assert!(c.ui.quit);
 }
 
 #[test]
@@ -337,10 +343,10 @@ fn a_tour_step_selects_the_knob_its_caption_names() {
     let mut a = app();
     a.start_tour(Tour::resolve("wang-muser").unwrap(), 0);
     assert_eq!(a.selected_param(), Param::Pressure);
-    let n = a.tour.as_ref().unwrap().tour.steps.len();
+    let n = a.ui.tour.as_ref().unwrap().tour.steps.len();
     a.act(Action::Up);
     a.tour_go(n as i32);
-    let step = &a.tour.as_ref().unwrap().tour.steps[n - 1];
+    let step = &a.ui.tour.as_ref().unwrap().tour.steps[n - 1];
     assert_eq!(step.select, Some(crate::tui::model::tour::Knob::Pressure));
     assert_eq!(a.selected_param(), Param::Pressure);
     a.tour_go(-2);
@@ -390,12 +396,12 @@ fn the_scale_view_scrubs_plays_to_the_end_and_pauses() {
     let mut a = app();
     // no scale chart shown: the keys say how to get one
     key(&mut a, KeyCode::Char(']'));
-    assert!(a.message.as_ref().is_some_and(|m| m.text.contains("scales")));
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("scales")));
     a.set_charts([ChartKind::Scales, ChartKind::ScalesArea, ChartKind::Area]);
     assert!(a
         .take_request()
         .is_some_and(|r| r.needs.scales && r.needs.loads && !r.needs.point));
-    a.scales = Some(Ok(frames(4)));
+    a.results.scales = Some(Ok(frames(4)));
     // opens at q_s, the last frame
     assert_eq!(a.scale_frame().map(|f| (f.0, f.1)), Some((3, 4)));
     key(&mut a, KeyCode::Char('['));
@@ -407,38 +413,38 @@ fn the_scale_view_scrubs_plays_to_the_end_and_pauses() {
     assert_eq!(a.scale_frame().map(|f| f.0), Some(3), "stops at the last frame");
     // Space at the end plays from the first frame, one frame per tick, and stops at q_s
     key(&mut a, KeyCode::Char(' '));
-    assert!(a.playing && a.animating());
+    assert!(a.ui.playing && a.animating());
     assert_eq!(a.scale_frame().map(|f| f.0), Some(0));
     a.tick();
     a.tick();
     assert_eq!(a.scale_frame().map(|f| f.0), Some(2));
     key(&mut a, KeyCode::Char(' '));
-    assert!(!a.playing, "Space pauses");
+    assert!(!a.ui.playing, "Space pauses");
     a.tick();
     assert_eq!(a.scale_frame().map(|f| f.0), Some(2), "a paused view stays");
     key(&mut a, KeyCode::Char(' '));
     a.tick();
     a.tick();
-    assert!(!a.playing && a.scale_frame().map(|f| f.0) == Some(3));
+    assert!(!a.ui.playing && a.scale_frame().map(|f| f.0) == Some(3));
     // a scrub pauses a play
     key(&mut a, KeyCode::Char(' '));
     key(&mut a, KeyCode::Char('['));
-    assert!(!a.playing);
+    assert!(!a.ui.playing);
     // the charts name the frame
     let m = crate::tui::charts::build(&a, ChartKind::Scales);
     assert!(m.title.contains(" 1/4 "), "{}", m.title);
     // a reply for another scene is dropped, one for this scene kept
-    let mut other = a.scene.clone();
+    let mut other = a.params.scene.clone();
     other.set_pressure(other.pressure() * 2.0).unwrap();
     a.on_reply(Reply::Scales {
         gen: 1,
-        key: crate::tui::model::protocol::scales_key(&a.source, &other),
+        key: crate::tui::model::protocol::scales_key(&a.params.source, &other),
         result: Ok(frames(2)),
     });
     assert_eq!(a.scales_data().map(|d| d.frames.len()), Some(4));
     a.on_reply(Reply::Scales {
         gen: 1,
-        key: crate::tui::model::protocol::scales_key(&a.source, &a.scene),
+        key: crate::tui::model::protocol::scales_key(&a.params.source, &a.params.scene),
         result: Ok(frames(2)),
     });
     assert_eq!(a.scales_data().map(|d| d.frames.len()), Some(2));
@@ -452,64 +458,68 @@ fn typed_values_stay_on_their_own_grid_until_the_next_typed_value() {
     assert_eq!(a.selected_param(), Param::Thickness);
     typed(&mut a, "0.123");
     key(&mut a, KeyCode::Right);
-    let up = a.scene.thickness_qr();
+    let up = a.params.scene.thickness_qr();
     assert!((up / (0.123 * 10f64.powf(0.1)) - 1.0).abs() < 1e-12, "{up}");
     key(&mut a, KeyCode::Left);
     assert_eq!(
-        a.scene.thickness_qr(),
+        a.params.scene.thickness_qr(),
         0.123,
         "back to the typed value, not to the preset's grid"
     );
     key(&mut a, KeyCode::Left);
     key(&mut a, KeyCode::Right);
-    assert_eq!(a.scene.thickness_qr(), 0.123);
+    assert_eq!(a.params.scene.thickness_qr(), 0.123);
     // γ_s: its own anchor, the thickness keeps its own
     key(&mut a, KeyCode::Down);
     assert_eq!(a.selected_param(), Param::Gamma);
     typed(&mut a, "0.1256");
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.surface_energy_j_m2(), 0.1256);
+    assert_eq!(a.params.scene.surface_energy_j_m2(), 0.1256);
     key(&mut a, KeyCode::Up);
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.scene.thickness_qr(), 0.123);
+    assert_eq!(a.params.scene.thickness_qr(), 0.123);
     // the next typed value anchors anew
     typed(&mut a, "0.2");
     key(&mut a, KeyCode::Left);
     key(&mut a, KeyCode::Right);
-    assert_eq!(a.scene.thickness_qr(), 0.2);
+    assert_eq!(a.params.scene.thickness_qr(), 0.2);
     // a reset returns to the preset's grids
     key(&mut a, KeyCode::Char('r'));
-    assert_eq!(a.anchors, Anchors::default());
+    assert_eq!(a.params.anchors, Anchors::default());
     // the custom model's coefficients step on a grid through the typed value too
     let mut c = app();
     c.set_typed(Param::Model, "custom").unwrap();
-    let row = c.params().iter().position(|p| *p == Param::C1).unwrap();
-    c.selected = row;
+    let row = c.knob_rows().iter().position(|p| *p == Param::C1).unwrap();
+    c.ui.selected = row;
     key(&mut c, KeyCode::Enter);
     typed(&mut c, "-0.123");
     key(&mut c, KeyCode::Right);
-    assert!((c.scene.model().c1 - (-0.113)).abs() < 1e-12, "{}", c.scene.model().c1);
+    assert!(
+        (c.params.scene.model().c1 - (-0.113)).abs() < 1e-12,
+        "{}",
+        c.params.scene.model().c1
+    );
     key(&mut c, KeyCode::Left);
-    assert_eq!(c.scene.model().c1, -0.123);
+    assert_eq!(c.params.scene.model().c1, -0.123);
 }
 
 #[test]
 fn j_and_k_scroll_a_cut_caption_and_a_new_step_starts_at_its_top() {
     let mut a = app();
     a.start_tour(Tour::resolve("wang-muser").unwrap(), 1);
-    let most = crate::tui::model::wrap::caption_rows_at_most(&a.tour.as_ref().unwrap().tour.steps[1].caption);
+    let most = crate::tui::model::wrap::caption_rows_at_most(&a.ui.tour.as_ref().unwrap().tour.steps[1].caption);
     for _ in 0..50 {
         key(&mut a, KeyCode::Char('J'));
     }
     assert_eq!(
-        a.caption_scroll,
+        a.ui.caption_scroll,
         most - 1,
         "bounded by the caption's rows at the narrowest width"
     );
     key(&mut a, KeyCode::Char('K'));
-    assert_eq!(a.caption_scroll, most - 2);
+    assert_eq!(a.ui.caption_scroll, most - 2);
     key(&mut a, KeyCode::Right);
-    assert_eq!(a.caption_scroll, 0);
+    assert_eq!(a.ui.caption_scroll, 0);
 }

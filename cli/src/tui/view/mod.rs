@@ -28,15 +28,15 @@ use ratatui::Frame;
 /// Draws the whole screen.
 pub fn draw(f: &mut Frame, app: &App) {
     let area = f.area();
-    let pal = Palette { color: app.color };
+    let pal = Palette { color: app.ui.color };
     if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
         too_small(f, area);
         return;
     }
     let mut status_line = status_line(app, pal);
     // messages wrap onto up to STATUS_ROWS rows; the key hint is cut instead
-    let is_hint = app.edit.is_none()
-        && app.message.is_none()
+    let is_hint = app.ui.edit.is_none()
+        && app.ui.message.is_none()
         && app.compute_error().is_none()
         && app.compute_warning().is_none()
         && app.gfmd_status().is_none();
@@ -53,12 +53,19 @@ pub fn draw(f: &mut Frame, app: &App) {
         80.. => 28,
         _ => 24,
     };
-    let scr = layout::screen(area, &caption, app.caption_scroll, status_rows, panel_w, app.focus);
+    let scr = layout::screen(
+        area,
+        &caption,
+        app.ui.caption_scroll,
+        status_rows,
+        panel_w,
+        app.ui.focus,
+    );
     draw_title(f, scr.title, app, pal);
     f.render_widget(Paragraph::new(status_line).wrap(Wrap { trim: false }), scr.status);
     if scr.caption.height > 0 {
         let mut block = Block::bordered();
-        if let Some(t) = &app.tour {
+        if let Some(t) = &app.ui.tour {
             let keys = if scr.caption_scrolls() {
                 format!(
                     " J K scroll {}–{} of {} · ←→ steps · Esc leaves ",
@@ -83,18 +90,18 @@ pub fn draw(f: &mut Frame, app: &App) {
         let lines: Vec<Line> = scr.caption_visible().iter().map(|l| Line::from(l.clone())).collect();
         f.render_widget(Paragraph::new(lines).block(block), scr.caption);
     }
-    if app.zoom {
+    if app.ui.zoom {
         // the focused chart over the panel and the other charts (z, Esc: back)
         let body = scr.charts.iter().fold(scr.panel, |u, (r, _)| u.union(*r));
-        let i = app.focus.min(2);
-        let mut m = charts::build(app, app.charts[i]);
+        let i = app.ui.focus.min(2);
+        let mut m = charts::build(app, app.ui.charts[i]);
         m.title = format!("{} · z: all panels", m.title);
         render_model(f, body, &m, pal, true);
     } else {
         draw_body(f, &scr, app, pal);
     }
-    match app.overlay {
-        Overlay::Help => draw_help(f, area, app.help_scroll, pal),
+    match app.ui.overlay {
+        Overlay::Help => draw_help(f, area, app.ui.help_scroll, pal),
         Overlay::Presets(cursor) => draw_picker(f, area, app, cursor, pal),
         Overlay::None => {}
     }
@@ -121,12 +128,12 @@ fn draw_body(f: &mut Frame, scr: &layout::Screen, app: &App, pal: Palette) {
     draw_panel(f, scr.panel, app, pal);
     let shown = scr.charts.len();
     for (r, i) in &scr.charts {
-        let mut m = charts::build(app, app.charts[*i]);
+        let mut m = charts::build(app, app.ui.charts[*i]);
         if shown == 1 {
             // one chart at a time on a small terminal: which one, and how to see the others
             m.title = format!("{}/3 (f next) · {}", i + 1, m.title);
         }
-        render_model(f, *r, &m, pal, *i == app.focus && shown > 1);
+        render_model(f, *r, &m, pal, *i == app.ui.focus && shown > 1);
     }
 }
 
@@ -141,7 +148,8 @@ fn wrapped_rows(width: usize, cols: u16) -> u16 {
 
 /// The tour's caption (the step's title and the keys are in the box's border).
 fn caption_text(app: &App) -> Vec<String> {
-    app.tour
+    app.ui
+        .tour
         .as_ref()
         .map(|t| t.tour.steps[t.step].caption.clone())
         .unwrap_or_default()
@@ -164,12 +172,16 @@ fn too_small(f: &mut Frame, area: Rect) {
 fn draw_title(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     let mut spans = vec![
         Span::styled(" asperity ", Style::default().add_modifier(Modifier::BOLD)),
-        Span::raw(format!("· {} · {} ", app.preset.name, app.scene.model().label())),
+        Span::raw(format!(
+            "· {} · {} ",
+            app.params.preset.name,
+            app.params.scene.model().label()
+        )),
     ];
     // the spinner only once a computation has taken a while (most take milliseconds)
-    if app.show_timing && app.busy_since.is_some_and(|t| t.elapsed() >= SPINNER_DELAY) {
+    if app.ui.show_timing && app.jobs.busy_since.is_some_and(|t| t.elapsed() >= SPINNER_DELAY) {
         spans.push(Span::styled(
-            format!("{} computing", SPINNER[app.spinner % SPINNER.len()]),
+            format!("{} computing", SPINNER[app.ui.spinner % SPINNER.len()]),
             pal.busy(),
         ));
     }
@@ -179,13 +191,13 @@ fn draw_title(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
 }
 
 fn status_line(app: &App, pal: Palette) -> Line<'static> {
-    if let Some(buf) = &app.edit {
+    if let Some(buf) = &app.ui.edit {
         Line::from(vec![
             Span::raw(format!(" {} = ", app.selected_param().label())),
             Span::styled(format!("{buf}▏"), Style::default().add_modifier(Modifier::BOLD)),
             Span::styled("  Enter applies, Esc cancels", pal.dim()),
         ])
-    } else if let Some(m) = &app.message {
+    } else if let Some(m) = &app.ui.message {
         Line::from(Span::styled(
             format!(" {}", m.text),
             if m.error { pal.error() } else { Style::default() },
@@ -196,7 +208,7 @@ fn status_line(app: &App, pal: Palette) -> Line<'static> {
         Line::from(Span::raw(format!(" {w}")))
     } else if let Some(g) = app.gfmd_status() {
         Line::from(Span::raw(format!(" {g}")))
-    } else if app.tour.is_some() {
+    } else if app.ui.tour.is_some() {
         Line::from(Span::styled(
             " ←→ step  h l change  ↑↓ pick  v chart  f focus  M models  s save  Esc leaves tour",
             pal.dim(),
@@ -382,6 +394,7 @@ fn draw_help(f: &mut Frame, area: Rect, scroll: usize, pal: Palette) {
 
 fn draw_picker(f: &mut Frame, area: Rect, app: &App, cursor: usize, pal: Palette) {
     let mut lines: Vec<Line> = app
+        .params
         .presets
         .iter()
         .enumerate()

@@ -14,10 +14,10 @@ use ratatui::widgets::{Block, Paragraph};
 use ratatui::Frame;
 
 fn param_value(app: &App, p: Param) -> String {
-    let s = &app.scene;
+    let s = &app.params.scene;
     let m = &s.model();
     match p {
-        Param::Preset => app.preset.name.clone(),
+        Param::Preset => app.params.preset.name.clone(),
         Param::Model => m.label(),
         Param::Pressure => sig(s.pressure(), 4),
         Param::Thickness => {
@@ -45,9 +45,9 @@ fn param_value(app: &App, p: Param) -> String {
 pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     let mut lines: Vec<Line> = Vec::new();
     let sel = app.selected_param();
-    for p in app.params() {
+    for p in app.knob_rows() {
         let is_sel = p == sel;
-        let value = match (&app.edit, is_sel) {
+        let value = match (&app.ui.edit, is_sel) {
             (Some(buf), true) => format!("{buf}▏"),
             _ => param_value(app, p),
         };
@@ -59,11 +59,11 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         };
         lines.push(Line::from(Span::styled(text, style)));
     }
-    if let Some(name) = surface_name(&app.scene) {
+    if let Some(name) = surface_name(&app.params.scene) {
         lines.push(Line::from(format!(" {}{name}", pad("surface", 9))));
     }
     lines.push(Line::from(Span::styled("─ results ─", pal.dim())));
-    let pt = app.point.as_ref().and_then(|r| r.as_ref().ok());
+    let pt = app.results.point.as_ref().and_then(|r| r.as_ref().ok());
     let dash = || "–".to_string();
     // values of an earlier scene stay while the new one computes: dimmed and marked ⋯
     let stale_point = app.point_is_stale() && pt.is_some();
@@ -82,39 +82,40 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     // inside a hysteresis window: the branch the load history reached, next to its a_r
     // (the branch alone where the reason does not fit: the status line said it)
     if pt.is_some_and(|p| !p.branches.is_empty()) {
-        let label = app.history.label();
+        let label = app.params.history.label();
         let room = usize::from(area.width).saturating_sub(12);
         let v = if label.chars().count() <= room {
             label
         } else {
-            app.history.on.name().to_string()
+            app.params.history.on.name().to_string()
         };
         row_styled("path", v, stale_point);
     }
     // σ̄_c* = p*/a_r of the branch the path is on
     let stress = match (pt, a_r) {
-        (Some(_), Some(a)) if on_unloading => sig(app.scene.pressure() / a, 4),
+        (Some(_), Some(a)) if on_unloading => sig(app.params.scene.pressure() / a, 4),
         (Some(p), _) => sig(p.mean_contact_stress, 4),
         _ => dash(),
     };
     row_styled("σ̄_c*", stress, stale_point);
     let gap = crate::tui::charts::chart_model::path_gap(app).map_or_else(dash, |g| sig(g, 4));
-    row_styled("ū/h_rms", gap, stale_gap && app.gap.is_some());
+    row_styled("ū/h_rms", gap, stale_gap && app.results.gap.is_some());
     // with adhesion: which branch the gap is of, and its bracket (docs/physics.md §5.1)
-    if app.scene.is_adhesive() {
+    if app.params.scene.is_adhesive() {
         let bracket = app
+            .results
             .sweep
             .as_ref()
             .and_then(|r| r.as_ref().ok())
-            .and_then(|sw| crate::tui::effects::engine::gap_bracket_at(sw, app.scene.pressure()));
+            .and_then(|sw| crate::tui::effects::engine::gap_bracket_at(sw, app.params.scene.pressure()));
         if let Some((lo, hi)) = bracket {
             // the loading branch's bracket (same a_r … same load)
             row_styled("ū load", format!("{}–{}", sig(lo, 3), sig(hi, 3)), stale_gap);
         }
     }
-    row_styled("γ̃_glo", sig(app.scene.gamma_glo(), 3), false);
-    let state = match &app.point {
-        _ if stale_point || (app.busy && app.point.is_none()) => "computing…".to_string(),
+    row_styled("γ̃_glo", sig(app.params.scene.gamma_glo(), 3), false);
+    let state = match &app.results.point {
+        _ if stale_point || (app.jobs.busy && app.results.point.is_none()) => "computing…".to_string(),
         Some(Ok(p)) if p.preview => format!("{} · refining…", p.branch),
         Some(Ok(p)) => p.branch.clone(),
         Some(Err(_)) => "failed (see below)".into(),
@@ -145,14 +146,14 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     row(
         "time",
         match pt {
-            Some(p) if app.show_timing => format_time(p.elapsed_s),
+            Some(p) if app.ui.show_timing => format_time(p.elapsed_s),
             Some(_) => "(hidden)".into(),
             None => dash(),
         },
     );
     // the scene in physical units (shown when the panel is tall enough)
     lines.push(Line::from(Span::styled("─ scene ─", pal.dim())));
-    lines.extend(scene_rows(&app.scene));
+    lines.extend(scene_rows(&app.params.scene));
     let block = Block::bordered().title(" parameters ");
     f.render_widget(Paragraph::new(lines).block(block), area);
 }
@@ -198,12 +199,12 @@ fn scene_rows(sc: &asperity::input::scene::Scene) -> Vec<Line<'static>> {
 fn gfmd_rows(app: &App) -> Vec<(String, String)> {
     let mut v: Vec<(String, String)> = Vec::new();
     let mut row = |k: &str, val: String| v.push((k.to_string(), val));
-    match &app.gfmd {
+    match &app.jobs.gfmd {
         GfmdState::Idle => {}
         GfmdState::Running { progress, started, .. } => {
             row(
                 "GFMD",
-                format!("{} {}", SPINNER[app.spinner % SPINNER.len()], progress.phase.label()),
+                format!("{} {}", SPINNER[app.ui.spinner % SPINNER.len()], progress.phase.label()),
             );
             if let Some(p) = progress.phase.load() {
                 row("  at p*", sig(p, 3));
@@ -211,7 +212,7 @@ fn gfmd_rows(app: &App) -> Vec<(String, String)> {
             if let Some(st) = progress.steps_text() {
                 row("  steps", st);
             }
-            if app.show_timing {
+            if app.ui.show_timing {
                 let t = started.elapsed().as_secs_f64();
                 row("  time", format_secs(t));
                 row(
@@ -223,7 +224,7 @@ fn gfmd_rows(app: &App) -> Vec<(String, String)> {
             }
         }
         GfmdState::Done { result, elapsed_s, .. } => {
-            let took = if app.show_timing {
+            let took = if app.ui.show_timing {
                 format!(" in {}", format_secs(*elapsed_s))
             } else {
                 String::new()

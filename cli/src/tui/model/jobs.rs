@@ -1,0 +1,36 @@
+//! The work under way: the worker's requests, the GFMD run, the files written, the commands of the update.
+
+use crate::tui::model::command::Command;
+use crate::tui::model::progress::GfmdState;
+use asperity::input::scene::Scene;
+use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+
+/// The work under way.
+#[derive(Debug)]
+pub struct Jobs {
+    /// Generation of the newest request.
+    pub gen: u64,
+    /// The load charts' p* range of the last request (see [`sticky_range`]).
+    pub load_range: Option<(f64, f64)>,
+    /// A request is being served.
+    pub busy: bool,
+    /// When the current request was made (while busy).
+    pub busy_since: Option<std::time::Instant>,
+    /// The background GFMD run (started with `g`).
+    pub gfmd: GfmdState,
+    pub gfmd_cancel: Option<Arc<AtomicBool>>,
+    pub gfmd_next: u64,
+    /// The scene or the charts changed since the last request.
+    pub pending: bool,
+    /// Work the update asked for (files, GFMD, quitting), taken with the computation by
+    /// [`App::take_commands`].
+    pub commands: Vec<Command>,
+    /// The last `e`/`s`: its scene, file name, number and the keys done under that number.
+    /// The last `e`/`s`: its scene, file name, number, and whether `e` and `s` were done
+    /// under that number.
+    pub last_export: Option<(Scene, String, u32, [bool; 2])>,
+    /// Where `e` writes.
+    pub export_dir: PathBuf,
+}
