@@ -18,6 +18,45 @@ const MAX_LINES: usize = 600;
 /// steps knobs or writes files.
 const COMPUTE: [&str; 3] = ["tui::effects::worker", "tui::effects::engine", "tui::model::data"];
 
+/// The explorer's folders, lowest first (their rank): the model is plain data; the charts
+/// are built from it; the update, the view and the effects each read the model (and the
+/// charts) and never one another; the loop (`tui` itself, `tui::drive`, `tui::trace`) is above
+/// them all. A module may import its own folder and folders of a lower rank only.
+const LAYERS: [(&str, u8); 5] = [
+    ("tui::model", 0),
+    ("tui::charts", 1),
+    ("tui::update", 2),
+    ("tui::view", 2),
+    ("tui::effects", 2),
+];
+
+/// The folder of an explorer module and its rank (the loop's modules rank above every folder).
+fn layer_of(m: &str) -> Option<(&'static str, u8)> {
+    if m != "tui" && !m.starts_with("tui::") {
+        return None;
+    }
+    let found = LAYERS
+        .iter()
+        .find(|(f, _)| m == *f || m.starts_with(&format!("{f}::")))
+        .copied();
+    Some(found.unwrap_or(("tui", u8::MAX)))
+}
+
+/// The edges of `edges` that point to another folder of the same or a higher rank.
+fn wrong_arrows(edges: &BTreeMap<String, BTreeSet<String>>) -> Vec<String> {
+    let mut out = Vec::new();
+    for (a, targets) in edges {
+        let Some((fa, ra)) = layer_of(a) else { continue };
+        for b in targets {
+            let Some((fb, rb)) = layer_of(b) else { continue };
+            if fa != fb && rb >= ra {
+                out.push(format!("{a} → {b}"));
+            }
+        }
+    }
+    out
+}
+
 fn src_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
 }
@@ -214,6 +253,46 @@ fn no_import_cycle_between_the_modules_of_the_binary_crate() {
     if let Some(cycle) = find_cycle(&c.edges) {
         panic!("import cycle: {}", cycle.join(" → "));
     }
+}
+
+#[test]
+fn the_explorer_s_arrows_point_down_its_folders() {
+    let c = load();
+    for (f, _) in LAYERS {
+        assert!(c.files.contains_key(f), "no folder {f}");
+    }
+    assert!(c.edges["tui::view"].contains("tui::model::app"));
+    assert!(c.edges["tui::effects::files"].contains("tui::effects::export"));
+    let wrong = wrong_arrows(&c.edges);
+    assert!(
+        wrong.is_empty(),
+        "arrows up or sideways between the explorer's folders: {wrong:#?}"
+    );
+}
+
+#[test]
+fn the_checker_sees_an_arrow_up_or_sideways() {
+    let mut e: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    e.insert("tui::model::app".into(), ["tui::model::knobs".to_string()].into());
+    e.insert(
+        "tui::view".into(),
+        ["tui::model::app".to_string(), "tui::charts".to_string()].into(),
+    );
+    e.insert("tui".into(), ["tui::update".to_string()].into());
+    assert!(wrong_arrows(&e).is_empty());
+    e.insert("tui::model::knobs".into(), ["tui::update::turn".to_string()].into());
+    e.insert(
+        "tui::update".into(),
+        ["tui::view::layout".to_string(), "tui::drive".to_string()].into(),
+    );
+    assert_eq!(
+        wrong_arrows(&e),
+        [
+            "tui::model::knobs → tui::update::turn",
+            "tui::update → tui::drive",
+            "tui::update → tui::view::layout"
+        ]
+    );
 }
 
 #[test]

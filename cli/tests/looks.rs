@@ -37,7 +37,7 @@ use ratatui::Terminal;
 use std::collections::HashSet;
 
 fn key(a: &mut App, c: char) {
-    a.on_key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE));
+    asperity_cli::tui::drive::press(a, KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE));
 }
 
 fn app(preset: &str) -> App {

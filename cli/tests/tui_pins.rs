@@ -11,7 +11,7 @@ use asperity_cli::tui::drive::{compute_now, Caches};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 fn key(a: &mut App, c: char) {
-    a.on_key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE));
+    asperity_cli::tui::drive::press(a, KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE));
 }
 
 #[test]

@@ -36,7 +36,7 @@ fn draw_only(app: &App, w: u16, h: u16) {
 }
 
 fn key(a: &mut App, code: KeyCode) {
-    a.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+    asperity_cli::tui::drive::press(a, KeyEvent::new(code, KeyModifiers::NONE));
 }
 
 #[test]
@@ -356,7 +356,7 @@ fn defects_gap_axis_stale_values_long_messages_hints() {
     assert!(!a.point_is_stale());
     assert!(!render(&a, 80, 24).contains("⋯"));
     // a long message wraps over up to four rows
-    a.on_key(KeyEvent::new(KeyCode::Enter, KeyModifiers::NONE));
+    asperity_cli::tui::drive::press(&mut a, KeyEvent::new(KeyCode::Enter, KeyModifiers::NONE));
     for c in "x".repeat(10).chars() {
         key(&mut a, KeyCode::Char(c));
     }

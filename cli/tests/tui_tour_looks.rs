@@ -236,13 +236,13 @@ fn verify_press(t: &Tour, i: usize, p: &Press) -> Result<(), String> {
     let keys: Vec<&str> = p.key.split_whitespace().collect();
     let (last, first) = keys.split_last().unwrap();
     for k in first {
-        a.on_key(keys::parse_label(k).unwrap());
+        asperity_cli::tui::drive::press(&mut a, keys::parse_label(k).unwrap());
         compute_now(&mut a, &mut Caches::default());
     }
     // the claims are about the last key
     let before: Vec<f64> = Knob::ALL.iter().map(|k| knob_value(&a, *k)).collect();
     let frame0 = a.ui.frame;
-    a.on_key(keys::parse_label(last).unwrap());
+    asperity_cli::tui::drive::press(&mut a, keys::parse_label(last).unwrap());
     compute_now(&mut a, &mut Caches::default());
     let mut bad = Vec::new();
     if let Some(m) = p.model {

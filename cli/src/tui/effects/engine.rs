@@ -281,17 +281,6 @@ pub fn interpolate_gap(sd: &SweepData, p: f64) -> Option<f64> {
     sweep::interpolate_in_ln_p(&sd.p, &sd.gap_rel, p)
 }
 
-/// The bracket of the loading branch's ū/h_rms at `p` (interpolated in ln p* like the gap
-/// itself), where the sweep has one.
-pub fn gap_bracket_at(sd: &SweepData, p: f64) -> Option<(f64, f64)> {
-    if sd.gap_lower.len() != sd.p.len() || sd.gap_upper.len() != sd.p.len() {
-        return None;
-    }
-    let lo = sweep::interpolate_in_ln_p(&sd.p, &sd.gap_lower, p)?;
-    let hi = sweep::interpolate_in_ln_p(&sd.p, &sd.gap_upper, p)?;
-    (lo.is_finite() && hi.is_finite()).then_some((lo.min(hi), hi.max(lo)))
-}
-
 /// The scale view of `scene`: [`SCALE_FRAMES`] snapshots of Pr(σ*, q) read off the engine's
 /// march at chart accuracy ([`Options::chart`]), sampled on [`SIGMA_POINTS`] σ*.
 pub fn scale_view(scene: &Scene, cancel: &AtomicBool) -> Result<ScalesData> {

@@ -1,17 +1,16 @@
-//! The file commands of the explorer's updates ([`Command::Export`] `e`, [`Command::SaveCharts`]
-//! `s`), run by the event loop ([`super::run_app`]) like the worker's and GFMD's commands.
+//! The files of `e` (curves as CSV, the scene as TOML) and `s` (the charts as SVG and PNG),
+//! written for [`Command::Export`] and [`Command::SaveCharts`]; what was written goes back to
+//! the update as [`Msg::Written`] (which keeps the file number and lists the exported scene).
 
 use crate::tui::effects::export;
-use crate::tui::model::app::{App, Command, PresetEntry};
+use crate::tui::model::app::{App, Command};
+use crate::tui::model::msg::{Msg, Written};
 
-/// Runs a file command, reporting in the status line (other commands are the loop's).
-/// `e` and `s` of one scene share a file number: the second key writes under the first's.
-pub fn run(app: &mut App, cmd: &Command) {
-    let k = match cmd {
-        Command::Export => 0,
-        Command::SaveCharts => 1,
-        _ => return,
-    };
+/// Writes the files of `e` (`charts` false) or `s` (`charts` true). `e` and `s` of one scene
+/// share a file number: the second key writes under the first's; a key pressed again on the
+/// same scene writes under the next number (nothing is overwritten).
+pub fn write(app: &App, charts: bool) -> Written {
+    let k = usize::from(charts);
     let name = export::safe_name(app);
     let reuse = app
         .jobs
@@ -19,33 +18,27 @@ pub fn run(app: &mut App, cmd: &Command) {
         .as_ref()
         .filter(|(scene, n, _, done)| *scene == app.params.scene && *n == name && !done[k])
         .map(|l| l.2);
-    let n = match reuse.map_or_else(|| export::next_number(&app.jobs.export_dir, &name), Ok) {
-        Ok(n) => n,
-        Err(err) => return app.fail(err),
+    let number = reuse.map_or_else(|| export::next_number(&app.jobs.export_dir, &name), Ok);
+    let (number, result) = match number {
+        Ok(n) if charts => (n, export::export_charts_as(app, n)),
+        Ok(n) => (n, export::export_as(app, n)),
+        Err(e) => (0, Err(e)),
     };
-    let (verb, r) = if k == 0 {
-        ("exported", export::export_as(app, n))
-    } else {
-        ("saved", export::export_charts_as(app, n))
-    };
-    match r {
-        Ok(paths) => {
-            let mut done = reuse
-                .and_then(|_| app.jobs.last_export.take())
-                .map_or([false; 2], |l| l.3);
-            done[k] = true;
-            app.jobs.last_export = Some((app.params.scene.clone(), name, n, done));
-            // `p` lists the exported scene
-            let toml = paths.iter().find(|p| p.ends_with(".toml"));
-            if let Some(t) = toml.filter(|t| !app.params.presets.iter().any(|x| &x.source == *t)) {
-                app.params.presets.push(PresetEntry {
-                    source: t.clone(),
-                    place: "exported".into(),
-                });
-            }
-            app.info(format!("{verb} {}", paths.join(", ")));
-        }
-        Err(e) => app.fail(e),
+    Written {
+        charts,
+        scene: app.params.scene.clone(),
+        name,
+        number,
+        result,
+    }
+}
+
+/// The message of a file command (None for the other commands).
+pub fn run(app: &App, cmd: &Command) -> Option<Msg> {
+    match cmd {
+        Command::Export => Some(Msg::Written(write(app, false))),
+        Command::SaveCharts => Some(Msg::Written(write(app, true))),
+        _ => None,
     }
 }
 
@@ -62,7 +55,8 @@ mod tests {
         app.jobs.export_dir = dir.clone();
         crate::tui::drive::compute_now(&mut app, &mut Default::default());
         let press = |app: &mut App, e: Command| {
-            run(app, &e);
+            let msg = run(app, &e).unwrap();
+            crate::tui::update::update(app, msg);
             app.ui.message.as_ref().map(|m| m.text.clone()).unwrap_or_default()
         };
         let s = press(&mut app, Command::SaveCharts);

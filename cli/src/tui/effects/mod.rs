@@ -1,7 +1,34 @@
-//! The work that leaves the explorer's state: the compute worker, the engine jobs, the files
-//! of `e` and `s`.
+//! The work that leaves the explorer's state, each [`Command`] run here for the event loop
+//! ([`crate::tui::run_app`]): the compute worker ([`worker`], [`engine`]), GFMD threads, the
+//! files of `e` and `s` ([`files`], [`export`]), presets and tours read ([`load`]). What an
+//! effect finds goes back to the update as a [`Msg`]; effects never change the state.
 
 pub mod engine;
 pub mod export;
 pub mod files;
+pub mod load;
 pub mod worker;
+
+use crate::tui::model::app::App;
+use crate::tui::model::command::Command;
+use crate::tui::model::msg::Msg;
+use crate::tui::model::protocol::Reply;
+use asperity::error::{Error, Result};
+
+/// Runs a command that finishes at once (a file read or written) and returns its message;
+/// None for the commands that are the loop's (the worker, GFMD threads, quitting).
+pub fn run_now(app: &App, cmd: &Command) -> Option<Msg> {
+    files::run(app, cmd).or_else(|| load::run(cmd))
+}
+
+/// Starts a GFMD run for [`Command::StartGfmd`] in its own thread (its replies go to
+/// `reply`); the message says on which grid.
+pub fn start_gfmd(app: &App, cmd: Command, reply: impl Fn(Reply) + Send + 'static) -> Result<Option<Msg>> {
+    let Command::StartGfmd { id, scene, cancel } = cmd else {
+        return Ok(None);
+    };
+    let setup = engine::gfmd_setup(&app.params.preset, &scene, app.map_of(&scene));
+    let grid = engine::grid_side(&setup);
+    engine::spawn_gfmd(id, setup, cancel, reply).map_err(|e| Error::io("start the GFMD thread", e))?;
+    Ok(Some(Msg::GfmdStarted { id, grid }))
+}

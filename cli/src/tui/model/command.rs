@@ -1,9 +1,9 @@
 //! The work an update asks for, as data: everything that leaves the explorer's state (the
-//! worker's computation, a GFMD thread, files, the end of the program) is one [`Command`],
-//! queued by the update ([`crate::tui::model::app::App::take_commands`] drains the queue) and run by the
-//! event loop ([`super::run_app`]); a test runs them itself ([`crate::tui::drive::compute_now`],
-//! [`crate::tui::effects::files::run`]). The update does no I/O of its own beyond resolving a preset or
-//! tour name.
+//! worker's computation, a GFMD thread, a preset or tour file to read, files to write, the end
+//! of the program) is one [`Command`]. [`crate::tui::update::update`] returns them; the event
+//! loop ([`crate::tui::run_app`]) runs them through [`crate::tui::effects`], and what an effect
+//! finds comes back to the update as a [`crate::tui::model::msg::Msg`]. A test runs them
+//! itself ([`crate::tui::drive`]).
 
 use crate::tui::model::protocol::Request;
 use asperity::input::scene::Scene;
@@ -14,7 +14,8 @@ use std::sync::Arc;
 #[derive(Debug, Clone)]
 pub enum Command {
     /// Compute what the visible charts need for the current scene (the worker; a newer
-    /// request supersedes an older one).
+    /// request supersedes an older one). The loop asks the state for it once per frame
+    /// ([`crate::tui::model::app::App::take_request`]), so a burst of keys makes one request.
     Compute(Request),
     /// Start GFMD run `id` on `scene` in its own thread; `cancel` stops it (`g` again).
     StartGfmd {
@@ -29,6 +30,12 @@ pub enum Command {
     Export,
     /// `s`: save the visible charts as SVG and PNG.
     SaveCharts,
+    /// Resolve a preset by name or path (the picker, the preset knob, a typed name); the
+    /// answer is [`crate::tui::model::msg::Msg::PresetLoaded`].
+    LoadPreset(String),
+    /// Resolve a tour by name or path (`t`); the answer is
+    /// [`crate::tui::model::msg::Msg::TourLoaded`].
+    LoadTour(String),
     /// Leave the explorer.
     Quit,
 }

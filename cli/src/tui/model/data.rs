@@ -309,6 +309,17 @@ pub struct SweepData {
 }
 
 impl SweepData {
+    /// The bracket of the loading branch's ū/h_rms at `p` (interpolated in ln p* like the gap
+    /// itself), where the sweep has one.
+    pub fn gap_bracket_at(&self, p: f64) -> Option<(f64, f64)> {
+        if self.gap_lower.len() != self.p.len() || self.gap_upper.len() != self.p.len() {
+            return None;
+        }
+        let lo = asperity::theory::sweep::interpolate_in_ln_p(&self.p, &self.gap_lower, p)?;
+        let hi = asperity::theory::sweep::interpolate_in_ln_p(&self.p, &self.gap_upper, p)?;
+        (lo.is_finite() && hi.is_finite()).then_some((lo.min(hi), hi.max(lo)))
+    }
+
     /// Copies the rows of a sweep: the loading branch with ū and σ̄_c*, the unloading branch
     /// where a hysteresis window makes it distinct, and the window's edges (the library refines
     /// them by bisection, [`asperity::theory::hysteresis`]).

@@ -10,6 +10,7 @@ pub mod jobs;
 pub mod keys;
 pub mod kinds;
 pub mod knobs;
+pub mod msg;
 pub mod params;
 pub mod pins;
 pub mod progress;

@@ -41,6 +41,13 @@ impl App {
         self.info("GFMD started on the preset's reduced grid (g cancels)");
     }
 
+    /// Run `id` started (the effect built its setup): the status line names its grid.
+    pub fn gfmd_started(&mut self, id: u64, grid: usize) {
+        if matches!(self.jobs.gfmd, GfmdState::Running { id: cur, .. } if cur == id) {
+            self.info(format!("GFMD started on a {grid}x{grid} grid (g cancels)"));
+        }
+    }
+
     /// A progress report of run `id`: shown if it is the running one. The start message gives
     /// way to the progress in the status line.
     pub(crate) fn on_gfmd_progress(&mut self, id: u64, report: GfmdProgress) {

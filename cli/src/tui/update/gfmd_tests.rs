@@ -15,7 +15,7 @@ fn app() -> App {
 }
 
 fn key(a: &mut App, code: KeyCode) {
-    a.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+    crate::tui::drive::press(a, KeyEvent::new(code, KeyModifiers::NONE));
 }
 
 /// A progress report of run `id` in phase `index` of a five-load job at p* = 0.01.

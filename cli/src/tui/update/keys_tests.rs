@@ -13,7 +13,7 @@ fn app() -> App {
 }
 
 fn key(a: &mut App, code: KeyCode) {
-    a.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+    crate::tui::drive::press(a, KeyEvent::new(code, KeyModifiers::NONE));
 }
 
 fn typed(a: &mut App, s: &str) {
@@ -71,6 +71,7 @@ fn work_leaves_the_update_as_commands() {
                 Command::StartGfmd { .. } => "gfmd",
                 Command::Export => "export",
                 Command::SaveCharts => "save",
+                Command::LoadPreset(_) | Command::LoadTour(_) => "load",
                 Command::Quit => "quit",
             })
             .collect()

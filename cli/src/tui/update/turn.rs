@@ -8,6 +8,17 @@ use asperity::error::{Error, Result};
 use asperity::input::model::Model;
 
 impl App {
+    /// The preset knob: the next (or previous) preset of the picker's list.
+    fn step_preset(&mut self, dir: i32) {
+        let list = &self.params.presets;
+        let n = list.len() as i32;
+        if n > 0 {
+            let cur = list.iter().position(|e| e.source == self.params.source).unwrap_or(0) as i32;
+            let next = list[(cur + dir).rem_euclid(n) as usize].source.clone();
+            self.load_preset(&next);
+        }
+    }
+
     pub(crate) fn step(&mut self, dir: i32, coarse: bool) {
         let pick = |s: (f64, f64)| if coarse { s.1 } else { s.0 };
         let mut s = self.params.scene.clone();
@@ -17,20 +28,7 @@ impl App {
         let typed = self.params.anchors.get(param);
         let lin = |x: f64, step: (f64, f64)| lin_step_from(x, typed.unwrap_or(0.0), pick(step), dir);
         match param {
-            Param::Preset => {
-                let n = self.params.presets.len() as i32;
-                if n > 0 {
-                    let cur = self
-                        .params
-                        .presets
-                        .iter()
-                        .position(|e| e.source == self.params.source)
-                        .unwrap_or(0) as i32;
-                    let next = self.params.presets[(cur + dir).rem_euclid(n) as usize].source.clone();
-                    self.load_preset(&next);
-                }
-                return;
-            }
+            Param::Preset => return self.step_preset(dir),
             Param::Model => {
                 self.cycle_model(dir);
                 return;
@@ -138,11 +136,9 @@ impl App {
         let t = text.trim();
         match param {
             Param::Preset => {
+                // read by the effect; an error comes back with the preset
                 self.load_preset(t);
-                return match &self.ui.message {
-                    Some(Message { error: true, text }) => Err(Error::Unsupported(text.clone())),
-                    _ => Ok(()),
-                };
+                return Ok(());
             }
             Param::Model => {
                 s.set_model(Model::of_kind(t.parse::<asperity::input::model::ModelKind>()?, &m)?)?;

@@ -25,7 +25,7 @@ fn app() -> App {
 }
 
 fn key(a: &mut App, code: KeyCode) {
-    a.on_key(KeyEvent::new(code, M::NONE));
+    crate::tui::drive::press(a, KeyEvent::new(code, M::NONE));
 }
 
 fn typed(a: &mut App, s: &str) {
@@ -60,7 +60,7 @@ fn pressure_steps_round_trip_exactly() {
     assert!(p1 > p0 && p1 < p0 * 1.2);
     key(&mut a, KeyCode::Left);
     assert_eq!(a.params.scene.pressure(), p0);
-    a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
+    crate::tui::drive::press(&mut a, KeyEvent::new(KeyCode::Right, M::SHIFT));
     assert!((a.params.scene.pressure() / p0 - 10f64.powf(0.25)).abs() < 1e-12);
     key(&mut a, KeyCode::PageDown);
     assert_eq!(a.params.scene.pressure(), p0);
@@ -80,10 +80,10 @@ fn pressure_steps_return_to_the_presets_value() {
     key(&mut a, KeyCode::Right);
     assert!((a.params.scene.pressure() / 0.005 - 10f64.powf(0.05)).abs() < 1e-12);
     // the coarse grid contains the preset's value too
-    a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
+    crate::tui::drive::press(&mut a, KeyEvent::new(KeyCode::Left, M::SHIFT));
     assert_eq!(a.params.scene.pressure(), 0.005);
-    a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
-    a.on_key(KeyEvent::new(KeyCode::Left, M::SHIFT));
+    crate::tui::drive::press(&mut a, KeyEvent::new(KeyCode::Right, M::SHIFT));
+    crate::tui::drive::press(&mut a, KeyEvent::new(KeyCode::Left, M::SHIFT));
     assert_eq!(a.params.scene.pressure(), 0.005);
 }
 
@@ -217,7 +217,7 @@ fn models_cycle_and_custom_rows_appear() {
     // edit c1 until W < 0 is refused with a message
     a.ui.selected = a.knob_rows().iter().position(|p| *p == Param::C1).unwrap();
     for _ in 0..10 {
-        a.on_key(KeyEvent::new(KeyCode::Right, M::SHIFT));
+        crate::tui::drive::press(&mut a, KeyEvent::new(KeyCode::Right, M::SHIFT));
     }
     assert!(a.params.scene.model().c1 <= 1.0);
     assert!(a.ui.message.as_ref().is_some_and(|m| m.error), "{:?}", a.ui.message);
@@ -325,7 +325,7 @@ fn reset_help_picker_and_quit() {
     key(&mut a, KeyCode::Char('q'));
     assert!(a.ui.quit);
     let mut b = app();
-    b.on_key(KeyEvent::new(KeyCode::Char('c'), M::CONTROL));
+    crate::tui::drive::press(&mut b, KeyEvent::new(KeyCode::Char('c'), M::CONTROL));
     assert!(b.ui.quit);
     // q while typing cancels the field and keeps the scene; a second q quits
     let mut c = app();

@@ -107,7 +107,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
             .sweep
             .as_ref()
             .and_then(|r| r.as_ref().ok())
-            .and_then(|sw| crate::tui::effects::engine::gap_bracket_at(sw, app.params.scene.pressure()));
+            .and_then(|sw| sw.gap_bracket_at(app.params.scene.pressure()));
         if let Some((lo, hi)) = bracket {
             // the loading branch's bracket (same a_r … same load)
             row_styled("ū load", format!("{}–{}", sig(lo, 3), sig(hi, 3)), stale_gap);

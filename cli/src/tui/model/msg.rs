@@ -1,0 +1,55 @@
+//! What the update takes: a key, a reply of the worker or of a GFMD thread, a tick of the
+//! clock, or what an effect found (a preset or a tour read, files written, a GFMD run
+//! started). Every message is plain data, so [`crate::tui::update::update`] is a function of
+//! the state and the message and is unit-tested message by message.
+
+use crate::tui::model::protocol::Reply;
+use crate::tui::model::tour::Tour;
+use asperity::error::Result;
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use ratatui::crossterm::event::KeyEvent;
+
+/// One message for the update.
+#[derive(Debug)]
+pub enum Msg {
+    /// A key pressed (or repeated).
+    Key(KeyEvent),
+    /// A reply of the worker or of a GFMD thread.
+    Reply(Box<Reply>),
+    /// Time passed with nothing else happening (the spinner; a playing scale view).
+    Tick,
+    /// The preset asked for by [`crate::tui::model::command::Command::LoadPreset`].
+    PresetLoaded {
+        /// The name or path it was asked by.
+        source: String,
+        /// The preset, or why it could not be read.
+        result: Result<Preset>,
+    },
+    /// The tour asked for by [`crate::tui::model::command::Command::LoadTour`].
+    TourLoaded(Result<Tour>),
+    /// The files of `e` or `s` were written (or not).
+    Written(Written),
+    /// GFMD run `id` started on a `grid`×`grid` grid.
+    GfmdStarted {
+        /// The run.
+        id: u64,
+        /// Its grid's side.
+        grid: usize,
+    },
+}
+
+/// What `e` or `s` wrote: the scene, the file name and number it wrote under, and the paths.
+#[derive(Debug)]
+pub struct Written {
+    /// `s` (the charts) rather than `e` (curves and scene).
+    pub charts: bool,
+    /// The scene written.
+    pub scene: Scene,
+    /// The scene's file name (`asperity-NAME-N…`).
+    pub name: String,
+    /// The file number.
+    pub number: u32,
+    /// The paths written, or why not.
+    pub result: Result<Vec<String>>,
+}

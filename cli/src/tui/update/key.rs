@@ -1,0 +1,109 @@
+//! Key presses → the next state: the overlays (help, preset picker) and the field being
+//! typed take keys first; the tour takes ←/→ and Esc; a digit starts typing a value; every
+//! other key is looked up in the key table ([`crate::tui::model::keys`]) and acted on.
+
+use crate::tui::model::app::*;
+use crate::tui::model::keys;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+impl App {
+    /// Handles one key press.
+    pub fn on_key(&mut self, ev: KeyEvent) {
+        if ev.code == KeyCode::Char('c') && ev.modifiers.contains(KeyModifiers::CONTROL) {
+            self.ui.quit = true;
+            return;
+        }
+        self.ui.message = None;
+        if self.ui.edit.is_some() {
+            self.on_edit_key(ev);
+            return;
+        }
+        match self.ui.overlay {
+            Overlay::Help => {
+                // ↓↑ (j k, PgDn PgUp) scroll, any other key closes the help; q still quits
+                let n = crate::tui::model::keys::help_rows();
+                match ev.code {
+                    KeyCode::Down | KeyCode::Char('j') => self.ui.help_scroll = (self.ui.help_scroll + 1).min(n),
+                    KeyCode::PageDown => self.ui.help_scroll = (self.ui.help_scroll + 8).min(n),
+                    KeyCode::Up | KeyCode::Char('k') => self.ui.help_scroll = self.ui.help_scroll.saturating_sub(1),
+                    KeyCode::PageUp => self.ui.help_scroll = self.ui.help_scroll.saturating_sub(8),
+                    code => {
+                        self.ui.overlay = Overlay::None;
+                        self.ui.help_scroll = 0;
+                        self.ui.quit = code == KeyCode::Char('q');
+                    }
+                }
+                return;
+            }
+            Overlay::Presets(cursor) => {
+                self.on_picker_key(ev, cursor);
+                return;
+            }
+            Overlay::None => {}
+        }
+        if self.ui.tour.is_some()
+            && ev
+                .modifiers
+                .intersection(KeyModifiers::SHIFT | KeyModifiers::CONTROL)
+                .is_empty()
+        {
+            match ev.code {
+                KeyCode::Left => return self.tour_go(-1),
+                KeyCode::Right => return self.tour_go(1),
+                KeyCode::Esc => return self.leave_tour(),
+                _ => {}
+            }
+        }
+        if let KeyCode::Char(c) = ev.code {
+            if (c.is_ascii_digit() || c == '.' || c == '-') && !ev.modifiers.contains(KeyModifiers::CONTROL) {
+                self.ui.edit = Some(c.to_string());
+                return;
+            }
+        }
+        let Some(action) = keys::action_for(&ev) else {
+            return;
+        };
+        self.act(action);
+    }
+
+    pub(crate) fn on_edit_key(&mut self, ev: KeyEvent) {
+        let Some(buf) = self.ui.edit.as_mut() else {
+            return;
+        };
+        match ev.code {
+            // q cancels the field (a second q quits): no value contains a q
+            KeyCode::Esc | KeyCode::Char('q') => self.ui.edit = None,
+            KeyCode::Backspace => {
+                buf.pop();
+            }
+            KeyCode::Enter => {
+                let text = std::mem::take(buf);
+                self.ui.edit = None;
+                if !text.trim().is_empty() {
+                    if let Err(e) = self.set_typed(self.selected_param(), &text) {
+                        // in the panel's words (t·q_r, p*), not the preset's keys
+                        self.fail(crate::tui::model::words::describe(&e));
+                    }
+                }
+            }
+            KeyCode::Char(c) if buf.chars().count() < 64 => buf.push(c),
+            _ => {}
+        }
+    }
+
+    pub(crate) fn on_picker_key(&mut self, ev: KeyEvent, cursor: usize) {
+        let n = self.params.presets.len().max(1);
+        match ev.code {
+            KeyCode::Up | KeyCode::Char('k') => self.ui.overlay = Overlay::Presets((cursor + n - 1) % n),
+            KeyCode::Down | KeyCode::Char('j') | KeyCode::Tab => self.ui.overlay = Overlay::Presets((cursor + 1) % n),
+            KeyCode::Enter => {
+                self.ui.overlay = Overlay::None;
+                if let Some(e) = self.params.presets.get(cursor).cloned() {
+                    self.load_preset(&e.source);
+                }
+            }
+            KeyCode::Char('q') => self.ui.quit = true,
+            _ => self.ui.overlay = Overlay::None,
+        }
+    }
+}

@@ -1,0 +1,370 @@
+//! Unit tests of [`update`], one message variant (and one reply variant) at a time: the next
+//! state and the commands asked for. No terminal, no thread, no file: what an effect would
+//! find is handed in as its message.
+
+use super::update;
+use crate::tui::model::app::*;
+use crate::tui::model::data::{GfmdView, ScaleFrame, ScalesData, SweepData, ThicknessData};
+use crate::tui::model::kinds::ChartKind;
+use crate::tui::model::msg::{Msg, Written};
+use crate::tui::model::progress::GfmdProgress;
+use crate::tui::model::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
+use crate::tui::model::tour::{Tour, DEFAULT_TOUR};
+use asperity::error::Error;
+use asperity::input::preset::Preset;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+fn app() -> App {
+    let mut a = App::new("system-1", Preset::resolve("system-1").unwrap()).unwrap();
+    a.ui.show_timing = false;
+    a
+}
+
+fn key(a: &mut App, code: KeyCode) -> Vec<Command> {
+    update(a, Msg::Key(KeyEvent::new(code, KeyModifiers::NONE)))
+}
+
+fn reply(a: &mut App, r: Reply) -> Vec<Command> {
+    update(a, Msg::Reply(Box::new(r)))
+}
+
+fn names(cs: &[Command]) -> Vec<&'static str> {
+    cs.iter()
+        .map(|c| match c {
+            Command::Compute(_) => "compute",
+            Command::StartGfmd { .. } => "gfmd",
+            Command::Export => "export",
+            Command::SaveCharts => "save",
+            Command::LoadPreset(_) => "preset",
+            Command::LoadTour(_) => "tour",
+            Command::Quit => "quit",
+        })
+        .collect()
+}
+
+fn oops() -> Error {
+    Error::Unsupported("test error".into())
+}
+
+#[test]
+fn a_key_changes_the_state_and_leaves_the_computation_to_the_state() {
+    let mut a = app();
+    let _ = a.take_request();
+    let p0 = a.params.scene.pressure();
+    assert!(key(&mut a, KeyCode::Right).is_empty());
+    assert!(a.params.scene.pressure() > p0 && a.has_pending());
+    assert_eq!(names(&key(&mut a, KeyCode::Char('q'))), ["quit"]);
+}
+
+#[test]
+fn file_and_gfmd_keys_return_their_commands() {
+    let mut a = app();
+    assert_eq!(names(&key(&mut a, KeyCode::Char('e'))), ["export"]);
+    assert_eq!(names(&key(&mut a, KeyCode::Char('s'))), ["save"]);
+    let cs = key(&mut a, KeyCode::Char('g'));
+    let [Command::StartGfmd { scene, .. }] = &cs[..] else {
+        panic!("{cs:?}")
+    };
+    assert_eq!(*scene, a.params.scene);
+    // g again cancels: nothing more to start
+    assert!(key(&mut a, KeyCode::Char('g')).is_empty());
+    assert_eq!(a.jobs.gfmd, GfmdState::Idle);
+}
+
+#[test]
+fn a_preset_is_asked_for_and_taken_when_it_arrives() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('p'));
+    key(&mut a, KeyCode::Down);
+    let cs = key(&mut a, KeyCode::Enter);
+    let [Command::LoadPreset(source)] = &cs[..] else {
+        panic!("{cs:?}")
+    };
+    // nothing changes until the effect answers
+    assert_eq!(a.params.preset.name, "system-1");
+    let source = source.clone();
+    let result = Preset::resolve(&source);
+    assert!(update(
+        &mut a,
+        Msg::PresetLoaded {
+            source: source.clone(),
+            result
+        }
+    )
+    .is_empty());
+    assert_eq!(
+        (a.params.source.as_str(), a.params.preset.name.as_str()),
+        (source.as_str(), "system-2")
+    );
+    assert_eq!(a.params.scene, a.params.base);
+    assert!(a.has_pending());
+    // one that cannot be read leaves everything as it is and says why
+    let before = a.params.scene.clone();
+    let result = Err(oops());
+    update(
+        &mut a,
+        Msg::PresetLoaded {
+            source: "nope".into(),
+            result,
+        },
+    );
+    assert_eq!(
+        (a.params.scene.clone(), a.params.preset.name.as_str()),
+        (before, "system-2")
+    );
+    assert!(a
+        .ui
+        .message
+        .as_ref()
+        .is_some_and(|m| m.error && m.text.contains("test error")));
+}
+
+#[test]
+fn t_asks_for_the_tour_and_walks_it_when_it_arrives() {
+    let mut a = app();
+    let cs = key(&mut a, KeyCode::Char('t'));
+    assert!(matches!(&cs[..], [Command::LoadTour(n)] if n == DEFAULT_TOUR), "{cs:?}");
+    assert!(a.ui.tour.is_none());
+    update(&mut a, Msg::TourLoaded(Err(oops())));
+    assert!(a.ui.tour.is_none() && a.ui.message.as_ref().is_some_and(|m| m.error));
+    let tour = Tour::resolve(DEFAULT_TOUR).unwrap();
+    let first = tour.steps[0].clone();
+    update(&mut a, Msg::TourLoaded(Ok(tour)));
+    assert_eq!(a.ui.tour.as_ref().map(|t| t.step), Some(0));
+    assert_eq!((a.params.scene.clone(), a.ui.charts), (first.scene, first.charts));
+    // t again leaves it
+    assert!(key(&mut a, KeyCode::Char('t')).is_empty());
+    assert!(a.ui.tour.is_none());
+}
+
+#[test]
+fn a_tick_turns_the_spinner_and_plays_the_scale_view_to_its_end() {
+    let mut a = app();
+    assert!(update(&mut a, Msg::Tick).is_empty());
+    assert_eq!(a.ui.spinner, 1);
+    let frame = |q_rel| ScaleFrame {
+        q_rel,
+        a_r: 0.1,
+        sigma_a: 0.0,
+        pr: Vec::new(),
+    };
+    a.results.scales = Some(Ok(ScalesData {
+        frames: vec![frame(1.0), frame(2.0), frame(4.0)],
+        area: Vec::new(),
+        wall: Vec::new(),
+    }));
+    a.ui.charts[0] = ChartKind::Scales;
+    a.ui.playing = true;
+    a.ui.frame = Some(0);
+    update(&mut a, Msg::Tick);
+    assert_eq!(a.ui.frame, Some(1));
+    update(&mut a, Msg::Tick);
+    update(&mut a, Msg::Tick);
+    assert_eq!((a.ui.playing, a.ui.frame), (false, None), "the play stops at q_s");
+}
+
+#[test]
+fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
+    let mut a = app();
+    let (src, scene) = (a.params.source.clone(), a.params.scene.clone());
+    let other = scene.clone().with_pressure(scene.pressure() * 2.0).unwrap();
+    let range = a.range();
+    // a point (an error is a result too)
+    reply(
+        &mut a,
+        Reply::Point {
+            gen: 1,
+            key: point_key(&src, &other),
+            result: Err(oops()),
+        },
+    );
+    assert!(a.results.point.is_none());
+    reply(
+        &mut a,
+        Reply::Point {
+            gen: 1,
+            key: point_key(&src, &scene),
+            result: Err(oops()),
+        },
+    );
+    assert!(matches!(a.results.point, Some(Err(_))) && a.results.point_gen == 1);
+    // a load sweep
+    let sweep = || Ok(SweepData::default());
+    reply(
+        &mut a,
+        Reply::Sweep {
+            gen: 1,
+            key: sweep_key(&src, &other, range),
+            result: sweep(),
+        },
+    );
+    assert!(a.results.sweep.is_none());
+    reply(
+        &mut a,
+        Reply::Sweep {
+            gen: 1,
+            key: sweep_key(&src, &scene, range),
+            result: sweep(),
+        },
+    );
+    assert!(matches!(a.results.sweep, Some(Ok(_))));
+    // the mean gap
+    reply(
+        &mut a,
+        Reply::Gap {
+            gen: 1,
+            key: point_key(&src, &other),
+            result: Ok(9.0),
+        },
+    );
+    assert_eq!(a.gap_value(), None);
+    reply(
+        &mut a,
+        Reply::Gap {
+            gen: 1,
+            key: point_key(&src, &scene),
+            result: Ok(1.5),
+        },
+    );
+    assert_eq!(a.gap_value(), Some(1.5));
+    // a thickness sweep
+    let th = || Ok(ThicknessData::default());
+    reply(
+        &mut a,
+        Reply::Thickness {
+            gen: 1,
+            key: thickness_key(&src, &other),
+            result: th(),
+        },
+    );
+    assert!(a.results.thickness.is_none());
+    reply(
+        &mut a,
+        Reply::Thickness {
+            gen: 1,
+            key: thickness_key(&src, &scene),
+            result: th(),
+        },
+    );
+    assert!(matches!(a.results.thickness, Some(Ok(_))));
+    // the scale view
+    reply(
+        &mut a,
+        Reply::Scales {
+            gen: 1,
+            key: scales_key(&src, &other),
+            result: Err(oops()),
+        },
+    );
+    assert!(a.results.scales.is_none());
+    reply(
+        &mut a,
+        Reply::Scales {
+            gen: 1,
+            key: scales_key(&src, &scene),
+            result: Err(oops()),
+        },
+    );
+    assert!(a.results.scales.is_some());
+}
+
+#[test]
+fn done_ends_the_busy_state_of_the_newest_request_only() {
+    let mut a = app();
+    let first = a.take_request().unwrap().gen;
+    a.refresh();
+    let second = a.take_request().unwrap().gen;
+    assert!(a.jobs.busy);
+    assert!(reply(&mut a, Reply::Done { gen: first }).is_empty());
+    assert!(a.jobs.busy, "an older request's end is not the newest's");
+    reply(&mut a, Reply::Done { gen: second });
+    assert!(!a.jobs.busy && a.jobs.busy_since.is_none());
+}
+
+#[test]
+fn gfmd_start_progress_and_end_follow_the_running_run_only() {
+    let mut a = app();
+    let cs = key(&mut a, KeyCode::Char('g'));
+    let [Command::StartGfmd { id, .. }] = cs[..] else {
+        panic!("{cs:?}")
+    };
+    // another run's start says nothing; this one's names its grid
+    update(&mut a, Msg::GfmdStarted { id: id + 7, grid: 64 });
+    assert!(!a.ui.message.as_ref().is_some_and(|m| m.text.contains("64x64")));
+    update(&mut a, Msg::GfmdStarted { id, grid: 32 });
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("32x32")));
+    // progress of the running run shows, and clears the start message
+    let p = a.params.scene.pressure();
+    reply(
+        &mut a,
+        Reply::GfmdProgress {
+            id,
+            progress: GfmdProgress::starting(p),
+        },
+    );
+    assert!(a.ui.message.is_none() && a.gfmd_status().is_some());
+    // another run's end is dropped; this one's is kept
+    let view = || Ok(GfmdView::default());
+    reply(
+        &mut a,
+        Reply::GfmdDone {
+            id: id + 7,
+            result: view(),
+            elapsed_s: 1.0,
+        },
+    );
+    assert!(matches!(a.jobs.gfmd, GfmdState::Running { .. }));
+    reply(
+        &mut a,
+        Reply::GfmdDone {
+            id,
+            result: view(),
+            elapsed_s: 1.0,
+        },
+    );
+    assert!(matches!(a.jobs.gfmd, GfmdState::Done { result: Ok(_), .. }));
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.text == "GFMD done"));
+}
+
+#[test]
+fn written_files_keep_their_number_and_list_the_exported_scene() {
+    let mut a = app();
+    let scene = a.params.scene.clone();
+    let written = |charts: bool, number: u32, paths: &[&str]| Written {
+        charts,
+        scene: scene.clone(),
+        name: "system-1".into(),
+        number,
+        result: Ok(paths.iter().map(|p| p.to_string()).collect()),
+    };
+    let (w1, w2) = (
+        written(false, 3, &["x/a-3.csv", "x/a-3.toml"]),
+        written(true, 3, &["x/a-3-pr.svg"]),
+    );
+    assert!(update(&mut a, Msg::Written(w1)).is_empty());
+    assert!(a
+        .ui
+        .message
+        .as_ref()
+        .is_some_and(|m| m.text.starts_with("exported x/a-3.csv")));
+    assert!(a
+        .params
+        .presets
+        .iter()
+        .any(|p| p.source == "x/a-3.toml" && p.place == "exported"));
+    assert_eq!(
+        a.jobs.last_export.as_ref().map(|l| (l.2, l.3)),
+        Some((3, [true, false]))
+    );
+    update(&mut a, Msg::Written(w2));
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.text.starts_with("saved")));
+    assert_eq!(a.jobs.last_export.as_ref().map(|l| (l.2, l.3)), Some((3, [true, true])));
+    // a failure says why and keeps what was written before
+    let failed = Written {
+        result: Err(oops()),
+        ..written(false, 4, &[])
+    };
+    update(&mut a, Msg::Written(failed));
+    assert!(a.ui.message.as_ref().is_some_and(|m| m.error));
+    assert_eq!(a.jobs.last_export.as_ref().map(|l| l.2), Some(3));
+}

@@ -1,0 +1,59 @@
+//! The worker's replies → the next state: a result is kept only if it belongs to the current
+//! scene (or to another model of it, while `M` overlays every model).
+
+use crate::tui::model::app::*;
+use crate::tui::model::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
+
+impl App {
+    /// Takes a worker reply: kept only if it belongs to the current scene.
+    pub fn on_reply(&mut self, reply: Reply) {
+        match reply {
+            Reply::Point { gen, key, result } => {
+                if key == point_key(&self.params.source, &self.params.scene) {
+                    self.results.point_gen = self.results.point_gen.max(gen);
+                    self.results.point = Some(result);
+                    self.results.point_shown = Some(key);
+                } else if self.overlay_keys().0.contains(&key) {
+                    bounded_insert(&mut self.results.overlay_points, key, result);
+                }
+            }
+            Reply::Sweep { key, result, .. } => {
+                if key == sweep_key(&self.params.source, &self.params.scene, self.range()) {
+                    self.results.sweep = Some(result);
+                    self.results.sweep_shown = Some(key);
+                    self.follow_window();
+                } else if self.overlay_keys().1.contains(&key) {
+                    bounded_insert(&mut self.results.overlay_sweeps, key, result);
+                }
+            }
+            Reply::Gap { key, result, .. } => {
+                if key == point_key(&self.params.source, &self.params.scene) {
+                    self.results.gap = Some(result);
+                    self.results.gap_shown = Some(key);
+                }
+            }
+            Reply::Thickness { key, result, .. } => {
+                if key == thickness_key(&self.params.source, &self.params.scene) {
+                    self.results.thickness = Some(result);
+                    self.results.thickness_shown = Some(key);
+                } else if self.overlay_keys().2.contains(&key) {
+                    bounded_insert(&mut self.results.overlay_thickness, key, result);
+                }
+            }
+            Reply::Scales { key, result, .. } => {
+                if key == scales_key(&self.params.source, &self.params.scene) {
+                    self.results.scales = Some(result);
+                    self.results.scales_shown = Some(key);
+                }
+            }
+            Reply::GfmdProgress { id, progress } => self.on_gfmd_progress(id, progress),
+            Reply::GfmdDone { id, result, elapsed_s } => self.on_gfmd_done(id, result, elapsed_s),
+            Reply::Done { gen } => {
+                if gen == self.jobs.gen {
+                    self.jobs.busy = false;
+                    self.jobs.busy_since = None;
+                }
+            }
+        }
+    }
+}
