@@ -139,6 +139,8 @@ pub fn table() -> Vec<Flag> {
         only(&["tour"], "tour", Text(check_tour), ""),
         row("--step", Step, ""),
         row("--list", Switch, ""),
+        // tui
+        row("--mouse", Switch, ""),
         // bench
         row("--quick", Switch, ""),
         row("--output", OutText(&["md"]), ""),

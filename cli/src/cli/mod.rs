@@ -128,6 +128,10 @@ pub struct TuiArgs {
     /// Reduced pressure p* = p/(E* g) (default: the preset's reference load).
     #[arg(long, allow_hyphen_values = true, value_parser = number(Field::Pressure))]
     pub pressure: Option<f64>,
+    /// Use the mouse: a click focuses a chart or picks a knob, the wheel steps the selected
+    /// knob (off by default: the terminal's own selection and scrolling stay).
+    #[arg(long)]
+    pub mouse: bool,
 }
 
 /// Arguments of `tour`.
@@ -326,11 +330,11 @@ fn run_cli() -> i32 {
     };
     let mut unconverged = false;
     let result = match cli.command {
-        None => tui_entry(preset::DEFAULT_PRESET, None, None),
+        None => tui_entry(preset::DEFAULT_PRESET, None, None, false),
         Some(Command::Tui(args)) => args
             .scene
             .resolve_with_map(args.pressure)
-            .and_then(|(_, scene, map)| tui_entry(&args.scene.preset, Some((scene, map)), None)),
+            .and_then(|(_, scene, map)| tui_entry(&args.scene.preset, Some((scene, map)), None, args.mouse)),
         Some(Command::Tour(args)) => tour_entry(&args),
         Some(Command::Presets) => {
             for (name, place) in preset::list_available() {
@@ -405,15 +409,17 @@ fn tour_entry(args: &TourArgs) -> Result<()> {
     }
     let first = &t.steps[0];
     let source = first.source.clone();
-    tui_entry(&source, None, Some((t, args.step as usize - 1)))
+    tui_entry(&source, None, Some((t, args.step as usize - 1)), false)
 }
 
 /// Opens the explorer on the preset, on `scene` where one is given (with the measured map
-/// its spectrum came from, for GFMD), walking `tour` from a step where one is given.
+/// its spectrum came from, for GFMD), walking `tour` from a step where one is given; `mouse`
+/// captures the mouse.
 fn tui_entry(
     preset_name: &str,
     scene: Option<(Scene, Option<Surface>)>,
     tour: Option<(crate::tui::tour::Tour, usize)>,
+    mouse: bool,
 ) -> Result<()> {
     // Validate the preset first so a bad one gives the same error as the CLI.
     let preset = Preset::resolve(preset_name)?;
@@ -428,6 +434,7 @@ fn tui_entry(
         return Err(Error::Unsupported("the terminal explorer needs a terminal".into()));
     }
     let mut app = crate::tui::app::App::new(preset_name, preset)?;
+    app.ui.mouse = mouse;
     if let Some((s, map)) = scene {
         if let (asperity::surface::spectrum::Spectrum::Tabulated(t), Some(m)) = (s.spectrum(), map) {
             app.params.map = Some((t.source.clone(), std::sync::Arc::new(m)));

@@ -67,13 +67,33 @@ enum Incoming {
     InputClosed,
 }
 
-/// Restores the terminal when dropped (every return path of [`run`]).
-struct TerminalGuard;
+/// Restores the terminal when dropped (every return path of [`run`]): releases the mouse if
+/// it was captured.
+struct TerminalGuard {
+    mouse: bool,
+}
 
 impl Drop for TerminalGuard {
     fn drop(&mut self) {
+        if self.mouse {
+            let _ = ratatui::crossterm::execute!(std::io::stdout(), event::DisableMouseCapture);
+        }
         ratatui::restore();
     }
+}
+
+/// The update's message of a mouse event (`--mouse`): where a left click lands on the screen
+/// drawn now ([`view::hit::hit`]); the wheel; None for the rest (moves, drags, other buttons).
+fn pointer(app: &App, area: ratatui::layout::Rect, ev: event::MouseEvent) -> Option<Msg> {
+    use event::{MouseButton, MouseEventKind};
+    use model::msg::Pointer;
+    let p = match ev.kind {
+        MouseEventKind::Down(MouseButton::Left) => Pointer::Click(view::hit::hit(app, area, ev.column, ev.row)),
+        MouseEventKind::ScrollUp => Pointer::WheelUp,
+        MouseEventKind::ScrollDown => Pointer::WheelDown,
+        _ => return None,
+    };
+    Some(Msg::Mouse(p))
 }
 
 /// Whether colour is wanted: not when `NO_COLOR` is set to anything non-empty.
@@ -162,11 +182,15 @@ pub fn run_app(mut app: App) -> Result<()> {
     })
     .map_err(|e| Error::io("start the worker thread", e))?;
 
-    let _guard = TerminalGuard;
+    let _guard = TerminalGuard { mouse: app.ui.mouse };
     let mut terminal = ratatui::try_init().map_err(|e| Error::io("open the terminal", e))?;
+    if app.ui.mouse {
+        ratatui::crossterm::execute!(std::io::stdout(), event::EnableMouseCapture)
+            .map_err(|e| Error::io("capture the mouse", e))?;
+    }
     spawn_input(tx)?;
 
-    let mut trace = Trace::new();
+    let mut trace = Trace::from_env();
     let panic_key = std::env::var("ASPERITY_PANIC_KEY").ok().and_then(|k| k.chars().next());
     // the one route out of the update: its commands, run in order before the next frame
     let mut todo: Vec<Command> = Vec::new();
@@ -204,6 +228,10 @@ pub fn run_app(mut app: App) -> Result<()> {
                         panic!("ASPERITY_PANIC_KEY pressed");
                     }
                     Some((Msg::Key(k), Some(Instant::now())))
+                }
+                Incoming::Input(Event::Mouse(m)) if app.ui.mouse => {
+                    let size = terminal.size().map_err(|e| Error::io("read the terminal size", e))?;
+                    pointer(&app, ratatui::layout::Rect::new(0, 0, size.width, size.height), m).map(|m| (m, None))
                 }
                 Incoming::Input(_) => None,
                 Incoming::Reply(r) => Some((Msg::Reply(r), None)),

@@ -16,7 +16,8 @@ pub struct Trace {
 }
 
 impl Trace {
-    pub fn new() -> Trace {
+    /// The trace `ASPERITY_TRACE` asks for (none without it).
+    pub fn from_env() -> Trace {
         let file = std::env::var_os("ASPERITY_TRACE")
             .and_then(|p| std::fs::OpenOptions::new().create(true).append(true).open(p).ok());
         Trace {

@@ -85,6 +85,7 @@ impl App {
                 quit: false,
                 show_timing: true,
                 color: true,
+                mouse: false,
                 spinner: 0,
             },
             results: Results {

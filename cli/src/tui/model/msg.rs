@@ -30,6 +30,8 @@ pub enum Msg {
     TourLoaded(Result<Tour>),
     /// The files of `e` or `s` were written (or not).
     Written(Written),
+    /// The mouse (captured only with `--mouse`), placed on the screen by the view's layout.
+    Mouse(Pointer),
     /// GFMD run `id` started on a `grid`×`grid` grid.
     GfmdStarted {
         /// The run.
@@ -52,4 +54,27 @@ pub struct Written {
     pub number: u32,
     /// The paths written, or why not.
     pub result: Result<Vec<String>>,
+}
+
+/// What lies under the mouse pointer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Target {
+    /// Chart panel `0..3` (big, lower left, lower right).
+    Chart(usize),
+    /// A knob's row of the parameter panel (an index into
+    /// [`crate::tui::model::app::App::knob_rows`]).
+    Knob(usize),
+    /// Anything else.
+    Elsewhere,
+}
+
+/// What the mouse did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pointer {
+    /// A left click on a target.
+    Click(Target),
+    /// The wheel turned up (away from the user).
+    WheelUp,
+    /// The wheel turned down.
+    WheelDown,
 }

@@ -69,6 +69,9 @@ pub struct Ui {
     pub quit: bool,
     /// Show compute times (off in snapshot tests: they vary from run to run).
     pub show_timing: bool,
+    /// The mouse is captured (`--mouse`): a click focuses a chart or picks a knob, the wheel
+    /// steps the selected knob.
+    pub mouse: bool,
     /// Use colour (off under `NO_COLOR`).
     pub color: bool,
     /// Spinner phase (advanced by ticks while busy).

@@ -9,7 +9,7 @@
 //! overlays, typing), [`action`] (the key table's actions), [`turn`] (a knob stepped or
 //! typed), [`models`] (the model cycle), [`scene`] (a new scene or preset, the load
 //! history), [`tour`] (walking a tour), [`reply`] (the worker's replies), [`gfmd`] (`g` and
-//! the GFMD run), [`pin`] (`P`), [`scales`] (the scale view's frames), [`files`] (what `e`
+//! the GFMD run), [`mouse`] (`--mouse`), [`pin`] (`P`), [`scales`] (the scale view's frames), [`files`] (what `e`
 //! and `s` wrote).
 
 pub mod action;
@@ -17,6 +17,7 @@ pub mod files;
 pub mod gfmd;
 pub mod key;
 pub mod models;
+pub mod mouse;
 pub mod pin;
 pub mod reply;
 pub mod scales;
@@ -36,6 +37,7 @@ pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
         Msg::PresetLoaded { source, result } => app.preset_loaded(&source, result),
         Msg::TourLoaded(result) => app.tour_loaded(result),
         Msg::Written(w) => app.written(w),
+        Msg::Mouse(p) => app.on_mouse(p),
         Msg::GfmdStarted { id, grid } => app.gfmd_started(id, grid),
     }
     app.take_asked()

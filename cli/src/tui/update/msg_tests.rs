@@ -167,7 +167,11 @@ fn a_tick_turns_the_spinner_and_plays_the_scale_view_to_its_end() {
 fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
     let mut a = app();
     let (src, scene) = (a.params.source.clone(), a.params.scene.clone());
-    let other = scene.clone().with_pressure(scene.pressure() * 2.0).unwrap();
+    // another γ_s: another point, sweep, gap, thickness sweep and scale view
+    let mut other = scene.clone();
+    other
+        .set_surface_energy_j_m2(scene.surface_energy_j_m2() * 2.0 + 0.01)
+        .unwrap();
     let range = a.range();
     // a point (an error is a result too)
     reply(
@@ -367,4 +371,35 @@ fn written_files_keep_their_number_and_list_the_exported_scene() {
     update(&mut a, Msg::Written(failed));
     assert!(a.ui.message.as_ref().is_some_and(|m| m.error));
     assert_eq!(a.jobs.last_export.as_ref().map(|l| l.2), Some(3));
+}
+
+#[test]
+fn the_mouse_focuses_selects_and_steps_only_when_asked_for() {
+    use crate::tui::model::msg::{Pointer, Target};
+    let mut a = app();
+    let click = |t| Msg::Mouse(Pointer::Click(t));
+    // off by default (`--mouse` turns it on)
+    assert!(update(&mut a, click(Target::Chart(2))).is_empty());
+    assert_eq!(a.ui.focus, 0);
+    a.ui.mouse = true;
+    update(&mut a, click(Target::Chart(2)));
+    assert_eq!(a.ui.focus, 2);
+    let t = a.knob_rows().iter().position(|p| *p == Param::Thickness).unwrap();
+    update(&mut a, click(Target::Knob(t)));
+    assert_eq!(a.selected_param(), Param::Thickness);
+    update(&mut a, click(Target::Knob(99)));
+    update(&mut a, click(Target::Elsewhere));
+    assert_eq!((a.selected_param(), a.ui.focus), (Param::Thickness, 2));
+    // the wheel steps the selected knob as ←→ do, and back exactly
+    let p = a.knob_rows().iter().position(|p| *p == Param::Pressure).unwrap();
+    update(&mut a, click(Target::Knob(p)));
+    let p0 = a.params.scene.pressure();
+    update(&mut a, Msg::Mouse(Pointer::WheelUp));
+    assert!(a.params.scene.pressure() > p0 && a.has_pending());
+    update(&mut a, Msg::Mouse(Pointer::WheelDown));
+    assert_eq!(a.params.scene.pressure(), p0);
+    // typing or an overlay takes no mouse
+    a.ui.overlay = Overlay::Help;
+    update(&mut a, click(Target::Chart(1)));
+    assert_eq!(a.ui.focus, 2);
 }

@@ -3,6 +3,7 @@
 //! the help and preset overlays; a "terminal too small" screen.
 //! Pure function of the [`App`]; every chart goes through [`crate::tui::charts::plot`].
 
+pub mod hit;
 pub mod layout;
 pub mod legend;
 pub mod palette;
@@ -33,34 +34,7 @@ pub fn draw(f: &mut Frame, app: &App) {
         too_small(f, area);
         return;
     }
-    let mut status_line = status_line(app, pal);
-    // messages wrap onto up to STATUS_ROWS rows; the key hint is cut instead
-    let is_hint = app.ui.edit.is_none()
-        && app.ui.message.is_none()
-        && app.compute_error().is_none()
-        && app.compute_warning().is_none()
-        && app.gfmd_status().is_none();
-    let status_rows = if is_hint {
-        // a hint wider than the screen is cut and says so
-        status_line = cut_hint(&status_line, usize::from(area.width), pal);
-        1
-    } else {
-        wrapped_rows(status_line.width(), area.width).clamp(1, STATUS_ROWS)
-    };
-    let caption = caption_text(app);
-    let panel_w = match area.width {
-        120.. => 34,
-        80.. => 28,
-        _ => 24,
-    };
-    let scr = layout::screen(
-        area,
-        &caption,
-        app.ui.caption_scroll,
-        status_rows,
-        panel_w,
-        app.ui.focus,
-    );
+    let (status_line, scr) = screen_of(app, area, pal);
     draw_title(f, scr.title, app, pal);
     f.render_widget(Paragraph::new(status_line).wrap(Wrap { trim: false }), scr.status);
     if scr.caption.height > 0 {
@@ -105,6 +79,40 @@ pub fn draw(f: &mut Frame, app: &App) {
         Overlay::Presets(cursor) => draw_picker(f, area, app, cursor, pal),
         Overlay::None => {}
     }
+}
+
+/// The status line and where everything goes on a terminal of `area` (also where a mouse
+/// click lands: [`hit::hit`]).
+pub fn screen_of(app: &App, area: Rect, pal: Palette) -> (Line<'static>, layout::Screen) {
+    let mut status_line = status_line(app, pal);
+    // messages wrap onto up to STATUS_ROWS rows; the key hint is cut instead
+    let is_hint = app.ui.edit.is_none()
+        && app.ui.message.is_none()
+        && app.compute_error().is_none()
+        && app.compute_warning().is_none()
+        && app.gfmd_status().is_none();
+    let status_rows = if is_hint {
+        // a hint wider than the screen is cut and says so
+        status_line = cut_hint(&status_line, usize::from(area.width), pal);
+        1
+    } else {
+        wrapped_rows(status_line.width(), area.width).clamp(1, STATUS_ROWS)
+    };
+    let caption = caption_text(app);
+    let panel_w = match area.width {
+        120.. => 34,
+        80.. => 28,
+        _ => 24,
+    };
+    let scr = layout::screen(
+        area,
+        &caption,
+        app.ui.caption_scroll,
+        status_rows,
+        panel_w,
+        app.ui.focus,
+    );
+    (status_line, scr)
 }
 
 /// A hint line cut to `cols` columns, ending in `…` where it was cut.
