@@ -490,3 +490,23 @@ fn hysteresis_followed_in_tmux() {
     assert!(s.contains("EXIT=0"), "{s}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn mouse_in_tmux_with_the_flag() {
+    if !have_tmux() {
+        eprintln!("SKIPPED mouse_in_tmux_with_the_flag: tmux is not installed (apt-get install tmux)");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("asperity-e2e-mouse-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let t = Tmux::start_with("mouse", &dir, "", "tui --preset system-1 --mouse");
+    t.wait("the first frame with results", |s| s.contains("a_r(p*)") && solved(s));
+    // the terminal's SGR mouse reports, as a terminal sends them: the wheel up over a chart
+    // steps the selected knob (p*) one fine step, as → does
+    t.keys(&["-l", "\x1b[<64;70;20M"]);
+    t.wait("p* = 0.01122", |s| s.contains("0.01122") && solved(s));
+    t.keys(&["-l", "\x1b[<65;70;20M"]);
+    t.wait("p* back to 0.01", |s| !s.contains("0.01122") && solved(s));
+    t.keys(&["q"]);
+    t.wait("the exit status", |s| s.contains("EXIT=0"));
+}

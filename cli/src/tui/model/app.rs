@@ -1,7 +1,7 @@
-//! The explorer's state: the scene, the knobs, the charts, the results shown, plain data with
-//! pure stepping helpers (grids of p*, t·q_r and γ_s) and the queries the view asks (which
-//! results are current, what the charts need). Keys change it in [`crate::tui::update`]; work that
-//! leaves the process (engine jobs, files) is done by [`crate::tui::effects::files`] and the worker.
+//! The explorer's state, [`App`]: four plain-data parts ([`Params`], [`Ui`], [`Results`],
+//! [`Jobs`]) and the queries the view and the update ask (which results are current, what the
+//! charts need, the request for the worker). Messages change it in [`crate::tui::update`];
+//! work that leaves the process (the worker, GFMD, files) is run by [`crate::tui::effects`].
 
 pub use crate::tui::model::command::Command;
 use crate::tui::model::data::{

@@ -24,10 +24,9 @@ pub struct Jobs {
     pub gfmd_next: u64,
     /// The scene or the charts changed since the last request.
     pub pending: bool,
-    /// Work the update asked for (files, GFMD, quitting), taken with the computation by
-    /// [`App::take_commands`].
+    /// The commands the handlers of one message asked for (files, GFMD, a preset or tour to
+    /// read), returned by [`crate::tui::update::update`]; empty between messages.
     pub commands: Vec<Command>,
-    /// The last `e`/`s`: its scene, file name, number and the keys done under that number.
     /// The last `e`/`s`: its scene, file name, number, and whether `e` and `s` were done
     /// under that number.
     pub last_export: Option<(Scene, String, u32, [bool; 2])>,

@@ -161,7 +161,7 @@ pub const TABLE: &[Binding] = &[
         keys: &[Key(KeyCode::Char('m'), NONE)],
         label: "m",
         action: Action::CycleModel,
-        help: "cycle model 1, 2, 3, 4, custom, YP08, Xu24",
+        help: "cycle model 1, 2, 3, 4, custom, YP08, Xu24, 5",
     },
     Binding {
         keys: &[Key(KeyCode::Char('p'), NONE)],

@@ -1,4 +1,4 @@
-//! Changing the model: one picked (`m` cycles 1, 2, 3, 4, custom, YP08, Xu24) or typed. A
+//! Changing the model: one picked (`m` cycles 1, 2, 3, 4, custom, YP08, Xu24, 5) or typed. A
 //! model the scene does not take (a variant of the literature on an adhesive or slab scene)
 //! leaves the scene as it is and says why.
 
@@ -17,7 +17,7 @@ impl App {
         }
     }
 
-    /// The next model in the cycle 1, 2, 3, 4, custom, YP08, Xu24; the variants are skipped
+    /// The next model in the cycle 1, 2, 3, 4, custom, YP08, Xu24, 5; the variants are skipped
     /// (with the reason in the status line) where the scene does not take them.
     pub(crate) fn cycle_model(&mut self, dir: i32) {
         let m = self.params.scene.model();
@@ -30,14 +30,11 @@ impl App {
             Model::custom(m.c1, m.c2, m.alpha, m.k_griffith, m.cap),
             Ok(yp08),
             Ok(xu24),
+            Model::named(5),
         ];
         let n = cycle.len() as i32;
-        // model 5 (slot 7) is not in the cycle: it steps on as model 4 does
-        let cur = if m.number() == Some(5) {
-            3
-        } else {
-            crate::tui::model::kinds::slot(&m) as i32
-        };
+        // the cycle is in the order of the model slots (model 5 is slot 7)
+        let cur = crate::tui::model::kinds::slot(&m) as i32;
         let mut skipped = Vec::new();
         for k in 1..n {
             let next = &cycle[(cur + dir * k).rem_euclid(n) as usize];

@@ -222,21 +222,32 @@ fn models_cycle_and_custom_rows_appear() {
     assert!(a.params.scene.model().c1 <= 1.0);
     assert!(a.ui.message.as_ref().is_some_and(|m| m.error), "{:?}", a.ui.message);
     key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.params.scene.model().number(), Some(5));
+    key(&mut a, KeyCode::Char('m'));
     assert_eq!(a.params.scene.model().number(), Some(1));
     assert!(a.ui.selected < a.knob_rows().len());
 }
 
 #[test]
 fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() {
-    // system 1 opens adhesive: from custom, m skips YP08 and Xu24 and says why
+    // system 1 opens adhesive: from custom, m skips YP08 and Xu24, says why, and goes on to
+    // model 5, then back to 1
     let mut a = app();
     key(&mut a, KeyCode::Char('m'));
     key(&mut a, KeyCode::Char('m'));
     assert_eq!(a.params.scene.model().kind, ModelKind::Custom);
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.params.scene.model().number(), Some(1));
+    assert_eq!(a.params.scene.model().number(), Some(5));
     let m = a.ui.message.clone().expect("the skip is explained");
     assert!(!m.error && m.text.contains("YP08 and Xu24 skipped"), "{}", m.text);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.params.scene.model().number(), Some(1));
+    // and backwards on the model knob: 1 → 5 → custom (the variants skipped)
+    a.ui.selected = a.knob_rows().iter().position(|p| *p == Param::Model).unwrap();
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.params.scene.model().number(), Some(5));
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.params.scene.model().kind, ModelKind::Custom);
     // on the adhesionless half-space they take their turn, with γ_f = 0.42, and M draws them
     let mut a = app();
     a.set_typed(Param::Gamma, "0").unwrap();
@@ -259,6 +270,8 @@ fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() 
         "{kinds:?}"
     );
     assert_eq!(kinds.len(), 6);
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.params.scene.model().number(), Some(5));
     key(&mut a, KeyCode::Char('m'));
     assert_eq!(a.params.scene.model().number(), Some(1));
     assert_eq!(
