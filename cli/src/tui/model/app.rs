@@ -165,7 +165,7 @@ impl App {
         })
     }
 
-    /// The measured map GFMD runs on for `scene`: [`App::map`] while the scene's spectrum is
+    /// The measured map GFMD runs on for `scene`: [`Params::map`] while the scene's spectrum is
     /// the one tabulated from it (None on a preset's spectrum or a PSD table).
     pub fn map_of(&self, scene: &Scene) -> Option<&Surface> {
         match (scene.spectrum(), &self.params.map) {

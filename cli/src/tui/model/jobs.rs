@@ -12,7 +12,7 @@ use std::sync::Arc;
 pub struct Jobs {
     /// Generation of the newest request.
     pub gen: u64,
-    /// The load charts' p* range of the last request (see [`sticky_range`]).
+    /// The load charts' p* range of the last request (see [`crate::tui::model::knobs::sticky_range`]).
     pub load_range: Option<(f64, f64)>,
     /// A request is being served.
     pub busy: bool,

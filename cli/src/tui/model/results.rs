@@ -33,7 +33,7 @@ pub struct Results {
     pub pins: Vec<Pin>,
     /// The current point (for the current scene, or the last one while computing).
     pub point: Option<Result<PointData>>,
-    /// Generation of the request whose reply set [`App::point`].
+    /// Generation of the request whose reply set [`Results::point`].
     pub point_gen: u64,
     /// The load curves.
     pub sweep: Option<Result<SweepData>>,

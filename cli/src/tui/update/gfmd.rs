@@ -99,7 +99,7 @@ impl App {
     }
 
     /// The status line of a running job (phase, steps, residual, time and time left; the
-    /// times only with [`App::show_timing`]).
+    /// times only with [`Ui::show_timing`](crate::tui::model::ui::Ui::show_timing)).
     pub fn gfmd_status(&self) -> Option<String> {
         match &self.jobs.gfmd {
             GfmdState::Running { progress, started, .. } => {
