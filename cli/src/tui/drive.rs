@@ -1,12 +1,12 @@
 //! The update loop without a terminal or threads, for tests and deterministic rendering:
 //! a message goes through [`update`], the files it asks to read are read at once and their
-//! messages fed back, and the rest of its commands wait in the state's queue as they would
-//! for the event loop's next frame ([`App::take_commands`]); [`compute_now`] serves the
-//! computation on the calling thread.
+//! messages fed back, a GFMD run it cancels is told to stop, and the rest of its commands wait
+//! in the state's queue as they would for the event loop's next frame
+//! ([`App::take_commands`]); [`compute_now`] serves the computation on the calling thread.
 
-use crate::tui::effects::load;
 use crate::tui::effects::worker::process;
 pub use crate::tui::effects::worker::Caches;
+use crate::tui::effects::{self, load};
 use crate::tui::model::app::App;
 use crate::tui::model::command::Command;
 use crate::tui::model::msg::Msg;
@@ -22,6 +22,9 @@ pub fn send(app: &mut App, msg: Msg) {
     let mut inbox = VecDeque::from([msg]);
     while let Some(m) = inbox.pop_front() {
         for cmd in update(app, m) {
+            if effects::cancel_gfmd(&cmd) {
+                continue;
+            }
             match load::run(&cmd) {
                 Some(next) => inbox.push_back(next),
                 // quitting is the state's own flag

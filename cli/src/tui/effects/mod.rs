@@ -14,11 +14,26 @@ use crate::tui::model::command::Command;
 use crate::tui::model::msg::Msg;
 use crate::tui::model::protocol::Reply;
 use asperity::error::{Error, Result};
+use std::sync::atomic::Ordering;
 
-/// Runs a command that finishes at once (a file read or written) and returns its message;
-/// None for the commands that are the loop's (the worker, GFMD threads, quitting).
+/// Runs a command that finishes at once (a file read or written, a GFMD run told to stop)
+/// and returns its message; None for the others (and for the loop's own: the worker, GFMD
+/// threads, quitting).
 pub fn run_now(app: &App, cmd: &Command) -> Option<Msg> {
+    cancel_gfmd(cmd);
     files::run(app, cmd).or_else(|| load::run(cmd))
+}
+
+/// Tells a GFMD run to stop for [`Command::CancelGfmd`] (its thread ends at its next check;
+/// its replies, if any, are dropped by the update). True when `cmd` was one.
+pub fn cancel_gfmd(cmd: &Command) -> bool {
+    match cmd {
+        Command::CancelGfmd(flag) => {
+            flag.store(true, Ordering::Relaxed);
+            true
+        }
+        _ => false,
+    }
 }
 
 /// Starts a GFMD run for [`Command::StartGfmd`] in its own thread (its replies go to

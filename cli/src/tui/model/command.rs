@@ -26,6 +26,8 @@ pub enum Command {
         /// Set to stop the run.
         cancel: Arc<AtomicBool>,
     },
+    /// Stop the GFMD run whose flag this is (`g` while it runs, Esc).
+    CancelGfmd(Arc<AtomicBool>),
     /// `e`: write the curves (CSV) and the scene (TOML).
     Export,
     /// `s`: save the visible charts as SVG and PNG.

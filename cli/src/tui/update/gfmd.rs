@@ -6,7 +6,7 @@ use crate::tui::model::app::*;
 use crate::tui::model::data::GfmdView;
 use crate::tui::model::progress::{format_secs, GfmdProgress};
 use asperity::error::{Error, Result};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
 impl App {
@@ -14,12 +14,18 @@ impl App {
     /// the running one.
     pub fn toggle_gfmd(&mut self) {
         if let GfmdState::Running { .. } = self.jobs.gfmd {
-            if let Some(c) = self.jobs.gfmd_cancel.take() {
-                c.store(true, Ordering::Relaxed);
-            }
             self.jobs.gfmd = GfmdState::Idle;
-            // a run not started yet is not started
+            // a run not started yet is not started; a started one is told to stop
+            let queued = self.jobs.commands.len();
             self.jobs.commands.retain(|c| !matches!(c, Command::StartGfmd { .. }));
+            if let Some(c) = self
+                .jobs
+                .gfmd_cancel
+                .take()
+                .filter(|_| self.jobs.commands.len() == queued)
+            {
+                self.jobs.commands.push(Command::CancelGfmd(c));
+            }
             self.info("GFMD cancelled");
             return;
         }

@@ -69,6 +69,7 @@ fn work_leaves_the_update_as_commands() {
             .map(|c| match c {
                 Command::Compute(_) => "compute",
                 Command::StartGfmd { .. } => "gfmd",
+                Command::CancelGfmd(_) => "cancel",
                 Command::Export => "export",
                 Command::SaveCharts => "save",
                 Command::LoadPreset(_) | Command::LoadTour(_) => "load",

@@ -33,6 +33,7 @@ fn names(cs: &[Command]) -> Vec<&'static str> {
         .map(|c| match c {
             Command::Compute(_) => "compute",
             Command::StartGfmd { .. } => "gfmd",
+            Command::CancelGfmd(_) => "cancel",
             Command::Export => "export",
             Command::SaveCharts => "save",
             Command::LoadPreset(_) => "preset",
@@ -66,8 +67,15 @@ fn file_and_gfmd_keys_return_their_commands() {
         panic!("{cs:?}")
     };
     assert_eq!(*scene, a.params.scene);
-    // g again cancels: nothing more to start
-    assert!(key(&mut a, KeyCode::Char('g')).is_empty());
+    // g again cancels: the run is told to stop
+    let cs = key(&mut a, KeyCode::Char('g'));
+    let [Command::CancelGfmd(flag)] = &cs[..] else {
+        panic!("{cs:?}")
+    };
+    assert!(
+        !flag.load(std::sync::atomic::Ordering::Relaxed),
+        "the update itself stops nothing"
+    );
     assert_eq!(a.jobs.gfmd, GfmdState::Idle);
 }
 
