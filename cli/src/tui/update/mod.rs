@@ -27,6 +27,9 @@ pub mod turn;
 
 use crate::tui::model::app::{App, Command};
 use crate::tui::model::msg::Msg;
+use asperity::input::scene::Scene;
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
 
 /// Takes one message: the next state, and the commands it asks for, in order (`Quit` last).
 pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
@@ -53,8 +56,9 @@ impl App {
         out
     }
 
-    /// Every command since the last call, the computation of the current scene first (when
-    /// it changed): what the event loop runs before a frame.
+    /// Every command queued since the last call (by [`crate::tui::drive`], or by handlers
+    /// called directly), the computation of the current scene first when it changed: what
+    /// the event loop would run before the next frame.
     pub fn take_commands(&mut self) -> Vec<Command> {
         let mut out: Vec<Command> = self.take_request().map(Command::Compute).into_iter().collect();
         out.append(&mut self.take_asked());
@@ -62,13 +66,7 @@ impl App {
     }
 
     /// The GFMD run to start, if `g` asked for one: its id, scene and cancel flag.
-    pub fn take_gfmd_request(
-        &mut self,
-    ) -> Option<(
-        u64,
-        asperity::input::scene::Scene,
-        std::sync::Arc<std::sync::atomic::AtomicBool>,
-    )> {
+    pub fn take_gfmd_request(&mut self) -> Option<(u64, Scene, Arc<AtomicBool>)> {
         let i = self
             .jobs
             .commands
