@@ -45,5 +45,6 @@ pub fn start_gfmd(app: &App, cmd: Command, reply: impl Fn(Reply) + Send + 'stati
     let setup = engine::gfmd_setup(&app.params.preset, &scene, app.map_of(&scene));
     let grid = engine::grid_side(&setup);
     engine::spawn_gfmd(id, setup, cancel, reply).map_err(|e| Error::io("start the GFMD thread", e))?;
-    Ok(Some(Msg::GfmdStarted { id, grid }))
+    let at = std::time::Instant::now();
+    Ok(Some(Msg::GfmdStarted { id, grid, at }))
 }

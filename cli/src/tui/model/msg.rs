@@ -38,6 +38,8 @@ pub enum Msg {
         id: u64,
         /// Its grid's side.
         grid: usize,
+        /// When its thread started.
+        at: std::time::Instant,
     },
 }
 

@@ -273,8 +273,9 @@ pub enum GfmdState {
         scene: Scene,
         /// The last report: phase, solver steps, residual, time left.
         progress: GfmdProgress,
-        /// When `g` started it (the panel's clock runs between reports).
-        started: std::time::Instant,
+        /// When its thread started (the panel's clock runs between reports; None until the
+        /// effect that starts it says so).
+        started: Option<std::time::Instant>,
     },
     /// Finished: the scene it ran, its outcome and how long it took.
     Done {

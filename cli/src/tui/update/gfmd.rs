@@ -42,15 +42,19 @@ impl App {
             id,
             scene: self.params.scene.clone(),
             progress: GfmdProgress::starting(self.params.scene.pressure()),
-            started: std::time::Instant::now(),
+            started: None,
         };
         self.info("GFMD started on the preset's reduced grid (g cancels)");
     }
 
-    /// Run `id` started (the effect built its setup): the status line names its grid.
-    pub fn gfmd_started(&mut self, id: u64, grid: usize) {
-        if matches!(self.jobs.gfmd, GfmdState::Running { id: cur, .. } if cur == id) {
-            self.info(format!("GFMD started on a {grid}x{grid} grid (g cancels)"));
+    /// Run `id` started at `at` (the effect built its setup and its thread): its clock starts,
+    /// the status line names its grid.
+    pub fn gfmd_started(&mut self, id: u64, grid: usize, at: std::time::Instant) {
+        if let GfmdState::Running { id: cur, started, .. } = &mut self.jobs.gfmd {
+            if *cur == id {
+                *started = Some(at);
+                self.info(format!("GFMD started on a {grid}x{grid} grid (g cancels)"));
+            }
         }
     }
 
@@ -108,9 +112,13 @@ impl App {
     /// times only with [`Ui::show_timing`](crate::tui::model::ui::Ui::show_timing)).
     pub fn gfmd_status(&self) -> Option<String> {
         match &self.jobs.gfmd {
-            GfmdState::Running { progress, started, .. } => {
-                Some(progress.status_text(self.ui.show_timing.then(|| started.elapsed().as_secs_f64())))
-            }
+            GfmdState::Running { progress, started, .. } => Some(
+                progress.status_text(
+                    self.ui
+                        .show_timing
+                        .then(|| started.map_or(0.0, |s| s.elapsed().as_secs_f64())),
+                ),
+            ),
             _ => None,
         }
     }

@@ -1,7 +1,7 @@
 //! The update: a message ([`Msg`]: a key, a reply, a tick, what an effect found) → the next
 //! state ([`App`]) plus the [`Command`]s it asks for (a GFMD run to start or a preset, tour or
 //! file to read or write, quitting). [`update`] is pure: no terminal, no threads, no clock
-//! beyond the instants it stores, no file read or written, so every message is unit-tested
+//! read (the instants it keeps come in messages), no file read or written, so every message is unit-tested
 //! (`update_tests.rs`). The computation of the current scene is asked for by the state
 //! itself ([`App::take_request`], once per frame, so that a burst of keys makes one request).
 //!
@@ -41,7 +41,7 @@ pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
         Msg::TourLoaded(result) => app.tour_loaded(result),
         Msg::Written(w) => app.written(w),
         Msg::Mouse(p) => app.on_mouse(p),
-        Msg::GfmdStarted { id, grid } => app.gfmd_started(id, grid),
+        Msg::GfmdStarted { id, grid, at } => app.gfmd_started(id, grid, at),
     }
     app.take_asked()
 }

@@ -301,10 +301,20 @@ fn gfmd_start_progress_and_end_follow_the_running_run_only() {
         panic!("{cs:?}")
     };
     // another run's start says nothing; this one's names its grid
-    update(&mut a, Msg::GfmdStarted { id: id + 7, grid: 64 });
+    let at = std::time::Instant::now();
+    update(
+        &mut a,
+        Msg::GfmdStarted {
+            id: id + 7,
+            grid: 64,
+            at,
+        },
+    );
     assert!(!a.ui.message.as_ref().is_some_and(|m| m.text.contains("64x64")));
-    update(&mut a, Msg::GfmdStarted { id, grid: 32 });
+    assert!(matches!(a.jobs.gfmd, GfmdState::Running { started: None, .. }));
+    update(&mut a, Msg::GfmdStarted { id, grid: 32, at });
     assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("32x32")));
+    assert!(matches!(a.jobs.gfmd, GfmdState::Running { started: Some(t), .. } if t == at));
     // progress of the running run shows, and clears the start message
     let p = a.params.scene.pressure();
     reply(
