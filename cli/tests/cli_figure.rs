@@ -147,7 +147,7 @@ fn the_text_chart_works_in_a_pipe() {
         assert!(text.contains(name), "{name}: {text}");
     }
     let list = ok(&["figure", "--list"]);
-    for id in ["1", "2", "3", "4", "5", "6", "7", "8", "table-1"] {
+    for id in ["1", "2", "3", "4", "5", "6", "7", "8", "8-log", "table-1"] {
         assert!(list.lines().any(|l| l.split_whitespace().next() == Some(id)), "{list}");
     }
 }
@@ -206,6 +206,12 @@ fn bad_figure_files_give_the_preset_errors() {
         ("model", "model = 2", "model = 7", "curve[2].model = 7"),
         ("range", "from = 1e-3", "from = 2.0", "from = 2"),
         ("preset", "preset = \"system-1\"", "preset = \"system-9\"", "system-9"),
+        (
+            "decades",
+            "points = 31",
+            "points = 31\ny_decades = 3",
+            "y_decades = 3: allowed 0.5 to 300, with y_log",
+        ),
     ] {
         assert!(good.contains(from), "{from}");
         let path = dir.join(format!("{name}.toml"));

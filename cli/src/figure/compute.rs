@@ -127,6 +127,7 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
         y_label: y_label(spec.y).to_string(),
         x_log: spec.x_log,
         y_log: spec.y_log,
+        y_decades: spec.y_decades,
         series: Vec::new(),
         notes: Vec::new(),
     };

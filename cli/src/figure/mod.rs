@@ -68,6 +68,10 @@ pub struct FigureData {
     pub x_log: bool,
     /// Log y axis.
     pub y_log: bool,
+    /// On a log y axis, the decades the chart draws below the largest value (the data keep
+    /// every value).
+    #[serde(skip)]
+    pub y_decades: Option<f64>,
     /// Theory curves, closed forms, \[S\] values, GFMD points.
     pub series: Vec<DataSeries>,
     /// Scalars, grids and anything that did not converge.
@@ -77,14 +81,21 @@ pub struct FigureData {
 impl FigureData {
     /// The chart of this figure: each series in its colour; a series that would look like
     /// an earlier one (a second curve of one model) gets the next line style or shape
-    /// ([`crate::chart::tell_apart`]).
+    /// ([`crate::chart::tell_apart`]). On a log y axis with [`FigureData::y_decades`], values
+    /// more than that many decades below the largest are left out (gaps), so the axis spans
+    /// those decades.
     pub fn chart(&self) -> ChartSpec {
+        let floor = self.y_floor();
         let mut series: Vec<Series> = self
             .series
             .iter()
             .map(|s| Series {
                 name: s.name.clone(),
-                points: s.points.iter().map(|p| (p.x, p.y.unwrap_or(f64::NAN))).collect(),
+                points: s
+                    .points
+                    .iter()
+                    .map(|p| (p.x, p.y.filter(|&y| y >= floor).unwrap_or(f64::NAN)))
+                    .collect(),
                 style: s.style,
                 colour: s.colour,
                 shape: s.shape,
@@ -98,6 +109,25 @@ impl FigureData {
             x_log: self.x_log,
             y_log: self.y_log,
             series,
+        }
+    }
+
+    /// The least value the chart draws: [`FigureData::y_decades`] below the largest finite
+    /// value on a log y axis, else −∞.
+    fn y_floor(&self) -> f64 {
+        let Some(d) = self.y_decades.filter(|_| self.y_log) else {
+            return f64::NEG_INFINITY;
+        };
+        let top = self
+            .series
+            .iter()
+            .flat_map(|s| &s.points)
+            .filter_map(|p| p.y.filter(|y| y.is_finite()))
+            .fold(f64::NEG_INFINITY, f64::max);
+        if top > 0.0 {
+            top / 10f64.powf(d)
+        } else {
+            f64::NEG_INFINITY
         }
     }
 
@@ -175,6 +205,7 @@ mod tests {
             y_label: "y".into(),
             x_log: true,
             y_log: false,
+            y_decades: None,
             series: vec![DataSeries {
                 name: "model 4".into(),
                 style: SeriesStyle::Line,
@@ -207,5 +238,90 @@ mod tests {
         // the chart gets a gap (NaN), which the renderers leave out
         assert!(data.chart().series[0].points[0].1.is_nan());
         assert!(data.table().contains('–'));
+    }
+
+    #[test]
+    fn a_log_axis_with_y_decades_draws_only_those_decades_and_the_data_keep_every_value() {
+        let pts = |ys: &[f64]| -> Vec<DataPoint> {
+            ys.iter()
+                .enumerate()
+                .map(|(i, &y)| DataPoint {
+                    x: i as f64,
+                    y: Some(y),
+                    note: None,
+                })
+                .collect()
+        };
+        let mut data = FigureData {
+            id: "x".into(),
+            title: "t".into(),
+            preset: "system-2".into(),
+            spectrum_source: None,
+            x_label: "x".into(),
+            y_label: "y".into(),
+            x_log: false,
+            y_log: true,
+            y_decades: Some(3.0),
+            series: vec![DataSeries {
+                name: "a".into(),
+                style: SeriesStyle::Line,
+                colour: crate::looks::model_colour(3),
+                shape: Shape::Circle,
+                points: pts(&[1e-300, 1e-4, 2e-3, 0.5, 2.0]),
+            }],
+            notes: vec![],
+        };
+        // the floor is 2 / 10³ = 2e-3: 1e-300 and 1e-4 become gaps, 2e-3 stays
+        let drawn: Vec<bool> = data.chart().series[0].points.iter().map(|p| p.1.is_finite()).collect();
+        assert_eq!(drawn, [false, false, true, true, true]);
+        let (lo, hi) = crate::chart::axis_range(&data.chart(), false);
+        assert!(lo > 1e-3 && hi < 3.0, "{lo} {hi}");
+        assert_eq!(data.csv().lines().count(), 6);
+        // on a linear axis, or without y_decades, every value is drawn
+        data.y_decades = None;
+        assert!(data.chart().series[0].points.iter().all(|p| p.1 > 0.0));
+        data.y_decades = Some(3.0);
+        data.y_log = false;
+        assert!(data.chart().series[0].points.iter().all(|p| p.1 > 0.0));
+    }
+
+    #[test]
+    fn figure_8_on_a_log_axis_lifts_the_thick_slabs_off_the_bottom_rows() {
+        // the height of each curve's peak as a fraction of its axis
+        let peaks = |id: &str| -> Vec<(String, f64)> {
+            let chart = compute::compute(&spec::resolve(id).unwrap(), None).unwrap().chart();
+            let (lo, hi) = crate::chart::axis_range(&chart, false);
+            let height = |y: f64| {
+                if chart.y_log {
+                    (y / lo).log10() / (hi / lo).log10()
+                } else {
+                    (y - lo) / (hi - lo)
+                }
+            };
+            chart
+                .series
+                .iter()
+                .map(|s| {
+                    let top = s
+                        .points
+                        .iter()
+                        .map(|p| p.1)
+                        .filter(|y| y.is_finite())
+                        .fold(0.0, f64::max);
+                    (s.name.clone(), height(top))
+                })
+                .collect()
+        };
+        let linear = peaks("8");
+        let log = peaks("8-log");
+        assert_eq!(linear.len(), 4);
+        for ((name, lin), (_, h)) in linear.iter().zip(&log).skip(2) {
+            // t·q_r 1 and semi-infinite: on the bottom rows of the linear axis
+            assert!(*lin < 0.1, "{name}: peak at {lin:.2} of the linear axis");
+            assert!(*h > 0.4, "{name}: peak at {h:.2} of the log axis");
+        }
+        for (name, h) in &log {
+            assert!(*h > 0.4, "{name}: peak at {h:.2} of the log axis");
+        }
     }
 }

@@ -12,6 +12,7 @@
 //!                               # contact_stress_variance | mean_gap_rel | pr
 //! x_log = true                  # log axes (default false)
 //! y_log = false
+//! y_decades = 3                 # (log y only, optional) decades drawn below the largest value
 //! from = 0.01                   # x range (stress figures: only `to`, the largest σ*)
 //! to = 10.0
 //! points = 13                   # values of x (stress figures: σ* samples)
@@ -44,7 +45,7 @@ use serde::{Deserialize, Serialize};
 use std::path::Path;
 
 /// The figures of \[S\] shipped with the binary: (id, file text).
-pub const BUILTIN: [(&str, &str); 8] = [
+pub const BUILTIN: [(&str, &str); 9] = [
     ("1", include_str!("../../../figures/fig-1.toml")),
     ("2", include_str!("../../../figures/fig-2.toml")),
     ("3", include_str!("../../../figures/fig-3.toml")),
@@ -53,6 +54,7 @@ pub const BUILTIN: [(&str, &str); 8] = [
     ("6", include_str!("../../../figures/fig-6.toml")),
     ("7", include_str!("../../../figures/fig-7.toml")),
     ("8", include_str!("../../../figures/fig-8.toml")),
+    ("8-log", include_str!("../../../figures/fig-8-log.toml")),
 ];
 
 /// The x axis of a figure.
@@ -194,6 +196,9 @@ pub struct FigureSpec {
     /// Logarithmic y axis.
     #[serde(default)]
     pub y_log: bool,
+    /// On a log y axis, the decades drawn below the largest value of the figure (a Pr tail
+    /// falls to 1e-300 and would squeeze the curves into the top rows); all when absent.
+    pub y_decades: Option<f64>,
     /// First x (sweeps; stress figures ignore it).
     pub from: Option<f64>,
     /// Last x (sweeps) or largest σ* (stress figures).
@@ -272,6 +277,11 @@ impl FigureSpec {
         if !(self.to.is_finite() && self.to > 0.0) {
             return Err(key("to", self.to.to_string(), "a number > 0"));
         }
+        if let Some(d) = self.y_decades {
+            if !(self.y_log && d.is_finite() && (0.5..=300.0).contains(&d)) {
+                return Err(key("y_decades", d.to_string(), "0.5 to 300, with y_log = true"));
+            }
+        }
         if !(2..=100_000).contains(&self.points) {
             return Err(key("points", self.points.to_string(), "2 <= points <= 100000"));
         }
@@ -346,7 +356,7 @@ pub fn resolve(id_or_path: &str) -> Result<FigureSpec> {
     Err(Error::field(
         "figure",
         asperity::error::fmt_text(id_or_path),
-        "1, 2, 3, 4, 5, 6, 7, 8, table-1 or a figure TOML file",
+        "1, 2, 3, 4, 5, 6, 7, 8, 8-log, table-1 or a figure TOML file",
     ))
 }
 /// The scene of a curve: the preset's, then the figure's overrides, then the curve's.

@@ -213,6 +213,7 @@ impl Table1 {
             y_label: "σ̄_c* and ⟨δσ_c²⟩* (reduced by E*ḡ, (E*ḡ)²)".into(),
             x_log: false,
             y_log: false,
+            y_decades: None,
             series,
             notes: self.notes.clone(),
         }
