@@ -673,3 +673,48 @@ fn hysteresis_followed_along_the_load_path() {
     insta::assert_snapshot!("hysteresis_followed_200x60", s);
     insta::assert_snapshot!("hysteresis_followed_80x24", render(&a, 80, 24));
 }
+
+/// The gap's bracket: shaded with columns of points on screen, one filled band in the files
+/// (not a column of markers per load).
+#[test]
+fn the_gap_bracket_is_a_filled_band_in_the_files() {
+    use asperity_cli::chart::SeriesStyle;
+    use asperity_cli::tui::charts::{self, Role};
+    let a = app("system-1");
+    let m = charts::build(&a, ChartKind::Gap);
+    let band = m
+        .series
+        .iter()
+        .find(|s| s.role == Role::Band)
+        .expect("a bracket with adhesion");
+    assert_eq!(band.draw, SeriesStyle::Points);
+    let spec = asperity_cli::tui::effects::export::chart_spec(&m, "test");
+    let file = spec.series.iter().find(|s| s.name == band.name).unwrap();
+    assert_eq!(file.style, SeriesStyle::Band);
+    // its outline: every column's lower end left to right, then its upper end back
+    let columns: Vec<f64> = band.points.iter().map(|p| p.0).fold(Vec::new(), |mut v, x| {
+        if v.last() != Some(&x) {
+            v.push(x);
+        }
+        v
+    });
+    assert_eq!(file.points.len(), 2 * columns.len(), "{:?}", file.points);
+    let n = columns.len();
+    for (k, &x) in columns.iter().enumerate() {
+        let col: Vec<f64> = band.points.iter().filter(|p| p.0 == x).map(|p| p.1).collect();
+        let lo = col.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = col.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        assert_eq!(file.points[k], (x, lo));
+        assert_eq!(file.points[2 * n - 1 - k], (x, hi));
+    }
+    // the SVG draws it as one polygon, not a marker per point
+    let svg = std::env::temp_dir().join(format!("asperity-band-{}.svg", std::process::id()));
+    asperity_cli::chart::write_svg(&spec, &svg).unwrap();
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let _ = std::fs::remove_file(&svg);
+    assert!(
+        text.matches("<circle").count() < band.points.len() / 4,
+        "markers for the band"
+    );
+    assert!(text.contains("<polygon"), "no filled band");
+}

@@ -141,6 +141,16 @@ where
         let line = ShapeStyle::from(&c).stroke_width(width);
         let runs = runs(&s.points, spec.x_log, spec.y_log);
         let name = s.name.clone();
+        if s.style == SeriesStyle::Band {
+            // each run one translucent polygon, under the curves drawn after it
+            let shade = ShapeStyle::from(&fill.mix(0.35)).filled();
+            chart
+                .draw_series(runs.into_iter().map(|r| Polygon::new(r, shade)))
+                .map_err(io_err)?
+                .label(name)
+                .legend(move |(lx, ly)| Rectangle::new([(lx, ly - half / 2), (lx + 2 * half, ly + half / 2)], shade));
+            continue;
+        }
         if s.style == SeriesStyle::Points {
             let pts: Vec<(f64, f64)> = runs.into_iter().flatten().collect();
             let lp = move |(lx, ly): (i32, i32)| (lx + half, ly);

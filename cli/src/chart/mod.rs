@@ -37,6 +37,9 @@ pub enum SeriesStyle {
     Dotted,
     /// A dash-dotted line (a further curve of a model already drawn).
     DashDot,
+    /// A filled band (the bracket of the mean gap): the points are its outline, each run
+    /// between gaps one closed polygon ([`band_outline`]).
+    Band,
 }
 
 impl SeriesStyle {
@@ -52,7 +55,7 @@ impl SeriesStyle {
     /// line's width (a terminal cell, 2.5 px of a file); `None` for a solid line or points.
     pub fn pattern(self) -> Option<&'static [f64]> {
         match self {
-            SeriesStyle::Line | SeriesStyle::Points => None,
+            SeriesStyle::Line | SeriesStyle::Points | SeriesStyle::Band => None,
             SeriesStyle::Dashed => Some(&[3.0, 2.0]),
             SeriesStyle::Dotted => Some(&[1.0, 2.0]),
             SeriesStyle::DashDot => Some(&[3.0, 1.5, 1.0, 1.5]),
@@ -67,6 +70,7 @@ impl SeriesStyle {
             SeriesStyle::Dashed => "dashed",
             SeriesStyle::Dotted => "dotted",
             SeriesStyle::DashDot => "dash-dot",
+            SeriesStyle::Band => "band",
         }
     }
 }
@@ -154,6 +158,38 @@ pub fn tell_apart(series: &mut [Series]) {
             (s.style, s.shape) = (style, shape);
         }
     }
+}
+
+/// The outline of a band given as columns of points (at each x, points from its lower to its
+/// upper end, as the terminal shades it): the lower ends left to right, then the upper ends
+/// right to left. Non-finite points, or a step back in x, end a band (a NaN between the
+/// outlines); a band of one column is a vertical segment.
+pub fn band_outline(columns: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    // (x, lower, upper) per column, in runs
+    let mut bands: Vec<Vec<(f64, f64, f64)>> = vec![Vec::new()];
+    for &(x, y) in columns {
+        let run = bands.last_mut().expect("non-empty");
+        if !(x.is_finite() && y.is_finite()) {
+            if !run.is_empty() {
+                bands.push(Vec::new());
+            }
+            continue;
+        }
+        match run.last_mut() {
+            Some(c) if c.0 == x => (c.1, c.2) = (c.1.min(y), c.2.max(y)),
+            Some(c) if c.0 > x => bands.push(vec![(x, y, y)]),
+            _ => run.push((x, y, y)),
+        }
+    }
+    let mut out = Vec::new();
+    for band in bands.iter().filter(|b| !b.is_empty()) {
+        if !out.is_empty() {
+            out.push((f64::NAN, f64::NAN));
+        }
+        out.extend(band.iter().map(|c| (c.0, c.1)));
+        out.extend(band.iter().rev().map(|c| (c.0, c.2)));
+    }
+    out
 }
 
 /// Breaks a polyline into the strokes of an on/off `pattern` (lengths measured after scaling
@@ -331,6 +367,26 @@ mod tests {
         assert_eq!(tick_label(draw::snap_zero(1.73e-18, 0.045, false)), "0");
         assert_eq!(tick_label(draw::snap_zero(1e-5, 0.045, false)), "1e-5");
         assert_eq!(tick_label(draw::snap_zero(1e-18, 1.0, true)), "1e-18");
+    }
+
+    #[test]
+    fn a_band_of_columns_becomes_its_outline_one_polygon_per_run() {
+        let nan = f64::NAN;
+        let cols = [
+            (1.0, 0.2),
+            (1.0, 0.3),
+            (1.0, 0.25),
+            (2.0, 0.1),
+            (2.0, 0.4),
+            (nan, nan),
+            (5.0, 1.0),
+            (5.0, 2.0),
+        ];
+        let o = band_outline(&cols);
+        assert_eq!(&o[..4], &[(1.0, 0.2), (2.0, 0.1), (2.0, 0.4), (1.0, 0.3)]);
+        assert!(o[4].0.is_nan());
+        assert_eq!(&o[5..], &[(5.0, 1.0), (5.0, 2.0)]);
+        assert!(band_outline(&[(nan, 1.0)]).is_empty());
     }
 
     #[test]

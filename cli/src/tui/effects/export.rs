@@ -340,13 +340,20 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
     }
     for (i, s) in m.series.iter().enumerate() {
         let look = m.series_look(i);
-        let points = if m.clip_y {
+        let mut points: Vec<(f64, f64)> = if m.clip_y {
             s.points
                 .iter()
                 .map(|&(x, y)| if y >= ylo { (x, y) } else { (x, f64::NAN) })
                 .collect()
         } else {
             s.points.clone()
+        };
+        // the terminal shades a band with columns of points; a file fills its outline
+        let style = if s.role == Role::Band {
+            points = chart::band_outline(&points);
+            SeriesStyle::Band
+        } else {
+            s.draw
         };
         series.push(Series {
             // the current point is p* on the load charts, q on the scale view's
@@ -356,7 +363,7 @@ pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
                 s.name.clone()
             },
             points,
-            style: s.draw,
+            style,
             colour: look.ink.rgb(),
             shape: look.shape,
         });

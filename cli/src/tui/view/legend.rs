@@ -28,7 +28,7 @@ impl Entry {
     pub fn symbol(&self) -> String {
         let g = self.look.glyph.symbol();
         match self.draw {
-            Draw::Line | Draw::Points => g.to_string(),
+            Draw::Line | Draw::Points | Draw::Band => g.to_string(),
             Draw::Dashed | Draw::DashDot => format!("{g}╌"),
             Draw::Dotted => format!("{g}┈"),
         }
