@@ -161,3 +161,49 @@ fn a_load_sweep_over_ranks_equals_the_serial_sweep_bit_for_bit() {
         }
     }
 }
+
+/// The load cycle over ranks (loading, unloading, tension, the bisected pull-off) equals the
+/// serial cycle bit for bit: adhesive half-space and slab, and a hard-wall slab (FIRE).
+#[test]
+fn a_load_cycle_over_ranks_equals_the_serial_cycle_bit_for_bit() {
+    use asperity::gfmd::cycle::{run_cycle, CycleSpec};
+    use asperity::gfmd::distributed::run_cycle_slab;
+    let opts = GfmdOptions {
+        method: Method::Fire,
+        ..GfmdOptions::default()
+    };
+    let no = AtomicBool::new(false);
+    let spec = CycleSpec {
+        from: 0.003,
+        to: 0.02,
+        points: 2,
+        cycle: true,
+    };
+    let without_time = |c: &asperity::gfmd::cycle::GfmdCycle| {
+        let mut v = serde_json::to_value(c).unwrap();
+        v.as_object_mut().unwrap().remove("elapsed_s");
+        v
+    };
+    for (adh, t) in [(true, f64::INFINITY), (true, 0.5), (false, 0.5)] {
+        let s = setup("system-2", 32, 0.01, adh, t);
+        let serial = run_cycle(&s, &spec, &opts, &mut |_, _| {}, &no).unwrap();
+        if adh {
+            assert!(serial.pull_off_bracket.is_some(), "t·q_r {t}: a bisected pull-off");
+        }
+        let serial = without_time(&serial);
+        for ranks in [1, 2, 3, 4] {
+            let got = ThreadComm::run(ranks, |c| {
+                run_cycle_slab(c, &s, &spec, &opts, &mut |_, _| {}, &no).unwrap()
+            });
+            assert_eq!(
+                without_time(&got[0]),
+                serial,
+                "adhesive {adh} t·q_r {t} on {ranks} ranks"
+            );
+            for r in &got[1..] {
+                assert_eq!(r.rows, got[0].rows);
+                assert_eq!(r.pull_off_pressure, got[0].pull_off_pressure);
+            }
+        }
+    }
+}

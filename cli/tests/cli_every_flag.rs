@@ -7,7 +7,8 @@
 //! starts panics, and `ASPERITY_WORK_LOG` records how many started).
 //!
 //! The same for the surface readers (empty, 1×1, ragged, NaN/inf/1e200 heights, all zero,
-//! truncated, wrong dtype, garbage, a 10⁹-point header) and the numeric keys of a preset.
+//! truncated, wrong dtype, garbage, a 10⁹-point header) and the numeric keys of a preset
+//! (every key of a preset and of a tour: cli_every_key.rs).
 
 use asperity::error::Range;
 use asperity_cli::cli::flags::{self, Kind};

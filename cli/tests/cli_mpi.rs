@@ -1,6 +1,6 @@
 //! `mpirun -np N asperity gfmd …` (feature `mpi`) prints what the serial run prints, bit for
-//! bit: adhesive and not, half-space and slab, a single run and a load sweep, on 1, 2 and 4
-//! ranks (4 oversubscribed on a 2-core machine). Needs `mpirun` (MPICH or OpenMPI) on PATH.
+//! bit: adhesive and not, half-space and slab, a single run, a load sweep and the load cycle
+//! to pull-off, on 1, 2 and 4 ranks (4 oversubscribed on a 2-core machine). Needs `mpirun` (MPICH or OpenMPI) on PATH.
 //! The serial reference is the same binary started without `mpirun` (one process: the serial
 //! solver); the hard wall is compared with `--method fire`, the solver the ranks use.
 
@@ -50,7 +50,7 @@ fn run(np: Option<usize>, args: &[&str]) -> serde_json::Value {
 
 #[test]
 fn gfmd_on_mpi_ranks_prints_the_serial_json() {
-    let cases: [&[&str]; 3] = [
+    let cases: [&[&str]; 5] = [
         // adhesive, half-space
         &[
             "gfmd",
@@ -86,6 +86,27 @@ fn gfmd_on_mpi_ranks_prints_the_serial_json() {
             "gfmd", "--preset", "system-2", "--grid", "64", "--from", "0.01", "--to", "0.04", "--points", "3",
             "--method", "fire",
         ],
+        // adhesive load cycle to pull-off, half-space and slab
+        &[
+            "gfmd", "--preset", "system-2", "--grid", "32", "--cycle", "--from", "0.003", "--to", "0.02", "--points",
+            "2",
+        ],
+        &[
+            "gfmd",
+            "--preset",
+            "system-2",
+            "--grid",
+            "32",
+            "--cycle",
+            "--from",
+            "0.003",
+            "--to",
+            "0.02",
+            "--points",
+            "2",
+            "--thickness",
+            "0.5",
+        ],
     ];
     // CI runs `-np 2` only (ASPERITY_MPI_RANKS=2)
     let ranks: Vec<usize> = match std::env::var("ASPERITY_MPI_RANKS") {
@@ -94,7 +115,15 @@ fn gfmd_on_mpi_ranks_prints_the_serial_json() {
     };
     for args in cases {
         let serial = run(None, args);
-        assert!(serial.get("grid").and_then(|g| g.as_u64()) == Some(64), "{serial}");
+        let grid = args[args.iter().position(|a| *a == "--grid").unwrap() + 1];
+        assert_eq!(
+            serial.get("grid").and_then(|g| g.as_u64()),
+            grid.parse().ok(),
+            "{serial}"
+        );
+        if args.contains(&"--cycle") {
+            assert!(serial["pull_off_bracket"].is_array(), "a bisected pull-off: {serial}");
+        }
         for &np in &ranks {
             assert_eq!(run(Some(np), args), serial, "{np} ranks: {args:?}");
         }

@@ -101,6 +101,55 @@ fn a_sweep_keeps_going_past_loads_that_do_not_converge() {
     assert!(!json.to_lowercase().contains("nan"), "{json}");
 }
 
+/// The system-2 point of issue 40 (model 4, t·q_r 0.1186, γ_s 0.157, p* 3.5e-7) where the
+/// adhesive solve does not converge: a sweep starting there keeps the row, empty, with a
+/// one-line reason beside it (JSON `reason`, the CSV's last column, quoted), and the other
+/// rows carry none.
+#[test]
+fn a_failed_row_keeps_its_place_with_a_one_line_reason() {
+    use asperity_cli::cli::sweep::{csv, Row, CSV_HEADER};
+    let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
+    s.set_thickness_qr(0.11858657076247323).unwrap();
+    let p = 3.5030939862794857e-07;
+    let spec = SweepSpec {
+        from: p,
+        to: 1e-6,
+        points: 2,
+    };
+    let sw = sweep::sweep(&s, &spec, &Options::default(), None).unwrap();
+    assert_eq!(sw.rows.len(), 2);
+    assert_eq!(sw.reasons.len(), 2);
+    let (r0, why) = (&sw.rows[0], sw.reasons[0].as_deref());
+    assert!(!r0.converged && r0.a_r.is_nan() && r0.p == p, "{r0:?}");
+    let why = why.expect("a reason for the failed row");
+    assert!(why.contains("did not converge") && !why.contains('\n'), "{why}");
+    assert!(sw.rows[1].converged && sw.reasons[1].is_none());
+    let rows: Vec<Row> = sw
+        .rows
+        .iter()
+        .zip(&sw.reasons)
+        .map(|(r, w)| Row::new(*r, &s).with_reason(w.clone()))
+        .collect();
+    let v = serde_json::to_value(&rows).unwrap();
+    assert_eq!(v[0]["reason"].as_str(), Some(why));
+    assert!(v[1]["reason"].is_null());
+    let text = csv(&rows);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 3, "{text}");
+    assert!(CSV_HEADER.ends_with(",reason"));
+    let quoted = format!("\"{}\"", why.replace('"', "\"\""));
+    assert!(
+        lines[1].ends_with(&quoted) || (lines[1].ends_with(why) && !why.contains(',')),
+        "{}",
+        lines[1]
+    );
+    assert!(
+        lines[2].ends_with(','),
+        "a converged row's reason is empty: {}",
+        lines[2]
+    );
+}
+
 fn asperity_out(args: &[&str]) -> std::process::Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_asperity"))
         .args(args)

@@ -245,6 +245,7 @@ fn sweep_keys_and_columns() {
             "mean_gap_unloading_error",
             "mean_gap_unloading_lower_rel",
             "contact_load_unloading",
+            "reason",
         ],
         "sweep rows",
     );
@@ -268,7 +269,9 @@ fn sweep_keys_and_columns() {
         ),
         "{header}"
     );
-    assert!(header.ends_with(",trust_inside,trust_a_r_log_error"), "{header}");
+    assert!(header.contains(",trust_inside,trust_a_r_log_error"), "{header}");
+    // a failed row's one-line reason, last (issue 40)
+    assert!(header.ends_with(",reason"), "{header}");
     assert!(
         header.starts_with(
             "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,elastic_energy_reduced,mean_gap_error,\

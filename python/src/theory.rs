@@ -246,10 +246,14 @@ fn pressure_sweep(core: &SceneCore, pressures: &[f64], opts: &Options, ctx: &wor
             contact_fraction: f64::NAN,
         });
         let sw = sweep::sweep(&scene, sp, opts, Some(&*ctx.cancel))?;
-        for r in &sw.rows {
+        for (r, why) in sw.rows.iter().zip(&sw.reasons) {
             out.rows.push(Row::new(*r, &scene));
-            out.reasons
-                .push((!r.converged).then(|| sw.note.clone().unwrap_or_else(|| "did not converge".into())));
+            // the row's own reason (the solver's error at that load)
+            out.reasons.push((!r.converged).then(|| {
+                why.clone()
+                    .or_else(|| sw.note.clone())
+                    .unwrap_or_else(|| "did not converge".into())
+            }));
         }
         out.evaluations += sw.evaluations;
         if k == 0 {

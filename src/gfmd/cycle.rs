@@ -89,7 +89,7 @@ impl CycleSpec {
     }
 
     /// The loads in increasing order.
-    fn rising(&self) -> SweepSpec {
+    pub(crate) fn rising(&self) -> SweepSpec {
         let (lo, hi) = if self.from <= self.to {
             (self.from, self.to)
         } else {
@@ -146,7 +146,26 @@ pub struct GfmdCycle {
     pub elapsed_s: f64,
 }
 
-/// The walker along a path: the map, the last relaxed gap and the step count.
+/// One relaxation at a time along a path, warm-started from the last state held: the serial
+/// map ([`Walker`]) or one rank's slab ([`super::distributed::cycle`]). The path itself
+/// ([`walk`]) is the same code for both, so the loads visited (bisections included) depend
+/// only on the rows, which are equal bit for bit.
+pub(crate) trait PathSolver {
+    /// Relaxes at p* = `p` (row index `k` for progress) from the last state held; `None` when
+    /// contact is lost (the state is kept).
+    fn step(
+        &mut self,
+        p: f64,
+        k: usize,
+        progress: &mut dyn FnMut(usize, Progress),
+        cancel: &AtomicBool,
+    ) -> Result<Option<GfmdSweepRow>>;
+    /// The interaction's theoretical strength γ/ρ in p* (by the map's ḡ); `None` without
+    /// adhesion.
+    fn strength(&self) -> Option<f64>;
+}
+
+/// The walker along a path on the whole map: the map, the last relaxed gap and the step count.
 struct Walker<'a> {
     prep: Prepared,
     opts: &'a GfmdOptions,
@@ -154,8 +173,7 @@ struct Walker<'a> {
     iterations: usize,
 }
 
-impl Walker<'_> {
-    /// Relaxes at `p` from the current state; `None` when contact is lost (the state is kept).
+impl PathSolver for Walker<'_> {
     fn step(
         &mut self,
         p: f64,
@@ -183,6 +201,106 @@ impl Walker<'_> {
         self.gap = Some(sol.gap);
         Ok(Some(row))
     }
+
+    fn strength(&self) -> Option<f64> {
+        let sc = &self.prep.scene;
+        (sc.gamma > 0.0).then(|| sc.gamma / sc.range / (sc.modulus * self.prep.rms_gradient))
+    }
+}
+
+/// The GFMD part of a path: its rows, pull-off and jump-in.
+pub(crate) struct PathWalk {
+    rows: Vec<CycleRow>,
+    pull_off: PullOff,
+    jump_in: (Option<f64>, Option<[f64; 2]>),
+}
+
+impl PathWalk {
+    /// The cycle of these rows with the theory's sweep beside them (`theory`: the sweep or
+    /// why it is missing) and the map's facts.
+    pub(crate) fn into_cycle(
+        self,
+        theory: (Option<Sweep>, Option<String>),
+        map: (usize, Option<u64>, Option<super::reduction::Reduction>),
+        iterations: usize,
+        t0: Instant,
+    ) -> GfmdCycle {
+        GfmdCycle {
+            rows: self.rows,
+            pull_off_pressure: self.pull_off.pressure,
+            pull_off_bracket: self.pull_off.bracket,
+            jump_in_pressure: self.jump_in.0,
+            jump_in_bracket: self.jump_in.1,
+            note: self.pull_off.note,
+            grid: map.0,
+            seed: map.1,
+            reduction: map.2,
+            theory: theory.0,
+            theory_error: theory.1,
+            iterations,
+            elapsed_s: t0.elapsed().as_secs_f64(),
+        }
+    }
+}
+
+/// Walks the path of `spec` (see the module docs) with `solver`, then reports the
+/// [`Stage::Theory`] progress before the theory's sweep.
+///
+/// # Errors
+/// As [`run_cycle`] for the GFMD part.
+pub(crate) fn walk(
+    solver: &mut dyn PathSolver,
+    spec: &CycleSpec,
+    progress: &mut dyn FnMut(usize, Progress),
+    cancel: &AtomicBool,
+) -> Result<PathWalk> {
+    let loads = spec.rising().pressures();
+    let mut rows: Vec<CycleRow> = Vec::new();
+    let push = |rows: &mut Vec<CycleRow>, branch, row| rows.push(CycleRow { branch, row });
+    let held = |r: Option<GfmdSweepRow>, p: f64| {
+        r.ok_or_else(|| Error::NotConverged {
+            solver: crate::error::Solver::Gfmd,
+            reason: format!("contact lost at the compressive load p* = {p:e}"),
+        })
+    };
+    if spec.cycle || spec.from <= spec.to {
+        for &p in &loads {
+            let row = held(solver.step(p, rows.len(), progress, cancel)?, p)?;
+            push(&mut rows, PathBranch::Loading, row);
+        }
+    } else {
+        let top = *loads.last().expect("at least one load");
+        let row = held(solver.step(top, 0, progress, cancel)?, top)?;
+        push(&mut rows, PathBranch::Loading, row);
+    }
+    let unloading = spec.cycle || spec.from > spec.to;
+    if unloading {
+        for &p in loads.iter().rev().skip(1) {
+            let row = held(solver.step(p, rows.len(), progress, cancel)?, p)?;
+            push(&mut rows, PathBranch::Unloading, row);
+        }
+    }
+    let jump_in = jump_in(&rows);
+    let mut pull_off = PullOff::default();
+    if spec.cycle {
+        pull_off = tension(solver, loads[0], &mut rows, progress, cancel)?;
+    }
+    if let Some(last) = rows.last().map(|r| r.row) {
+        progress(
+            rows.len(),
+            Progress {
+                stage: Stage::Theory,
+                iteration: last.iterations,
+                residual: last.residual,
+                contact_fraction: last.a_r,
+            },
+        );
+    }
+    Ok(PathWalk {
+        rows,
+        pull_off,
+        jump_in,
+    })
 }
 
 /// Runs the path of `spec` on the map of `setup` (see the module docs), then the theory's sweep
@@ -207,74 +325,32 @@ pub fn run_cycle(
         gap: None,
         iterations: 0,
     };
-    let loads = spec.rising().pressures();
-    let mut rows: Vec<CycleRow> = Vec::new();
-    let push = |rows: &mut Vec<CycleRow>, branch, row| rows.push(CycleRow { branch, row });
-    let held = |r: Option<GfmdSweepRow>, p: f64| {
-        r.ok_or_else(|| Error::NotConverged {
-            solver: crate::error::Solver::Gfmd,
-            reason: format!("contact lost at the compressive load p* = {p:e}"),
-        })
-    };
-    if spec.cycle || spec.from <= spec.to {
-        for &p in &loads {
-            let row = held(walker.step(p, rows.len(), progress, cancel)?, p)?;
-            push(&mut rows, PathBranch::Loading, row);
-        }
-    } else {
-        let top = *loads.last().expect("at least one load");
-        let row = held(walker.step(top, 0, progress, cancel)?, top)?;
-        push(&mut rows, PathBranch::Loading, row);
-    }
-    let unloading = spec.cycle || spec.from > spec.to;
-    if unloading {
-        for &p in loads.iter().rev().skip(1) {
-            let row = held(walker.step(p, rows.len(), progress, cancel)?, p)?;
-            push(&mut rows, PathBranch::Unloading, row);
-        }
-    }
-    let (jump_in_pressure, jump_in_bracket) = jump_in(&rows);
-    let mut pull_off = PullOff::default();
-    if spec.cycle {
-        pull_off = tension(&mut walker, loads[0], &mut rows, progress, cancel)?;
-    }
-    let last = rows.last().map(|r| r.row);
-    if let Some(last) = last {
-        progress(
-            rows.len(),
-            Progress {
-                stage: Stage::Theory,
-                iteration: last.iterations,
-                residual: last.residual,
-                contact_fraction: last.a_r,
-            },
-        );
-    }
+    let path = walk(&mut walker, spec, progress, cancel)?;
     let rising = spec.rising();
-    let (theory, theory_error) = match walker
-        .prep
-        .theory_scene(rising.from)
-        .and_then(|sc| sweep::sweep(&sc, &rising, &Options::default(), Some(cancel)))
-    {
-        Err(Error::Cancelled) => return Err(Error::Cancelled),
-        Ok(s) => (Some(s), None),
-        Err(e) => (None, Some(e.to_string())),
-    };
-    Ok(GfmdCycle {
-        rows,
-        pull_off_pressure: pull_off.pressure,
-        pull_off_bracket: pull_off.bracket,
-        jump_in_pressure,
-        jump_in_bracket,
-        note: pull_off.note,
-        grid: walker.prep.surface.nx,
-        seed: setup.surface.is_none().then_some(setup.seed),
-        reduction: walker.prep.reduction.clone(),
-        theory,
-        theory_error,
-        iterations: walker.iterations,
-        elapsed_s: t0.elapsed().as_secs_f64(),
-    })
+    let theory = theory_sweep(walker.prep.theory_scene(rising.from), &rising, cancel)?;
+    let map = (
+        walker.prep.surface.nx,
+        setup.surface.is_none().then_some(setup.seed),
+        walker.prep.reduction.clone(),
+    );
+    Ok(path.into_cycle(theory, map, walker.iterations, t0))
+}
+
+/// The theory's sweep over the positive loads of a path on the map's scene: the sweep, or why
+/// it is missing.
+///
+/// # Errors
+/// [`Error::Cancelled`] only (any other failure is reported beside the rows).
+pub(crate) fn theory_sweep(
+    scene: Result<crate::input::scene::Scene>,
+    rising: &SweepSpec,
+    cancel: &AtomicBool,
+) -> Result<(Option<Sweep>, Option<String>)> {
+    match scene.and_then(|sc| sweep::sweep(&sc, rising, &Options::default(), Some(cancel))) {
+        Err(Error::Cancelled) => Err(Error::Cancelled),
+        Ok(s) => Ok((Some(s), None)),
+        Err(e) => Ok((None, Some(e.to_string()))),
+    }
 }
 
 /// The pull-off found by [`tension`].
@@ -288,27 +364,25 @@ struct PullOff {
 /// Steps from the smallest load `p1` into tension until contact is lost, then bisects the
 /// bracket (module docs, step 3); appends the loads held to `rows`.
 fn tension(
-    walker: &mut Walker<'_>,
+    solver: &mut dyn PathSolver,
     p1: f64,
     rows: &mut Vec<CycleRow>,
     progress: &mut dyn FnMut(usize, Progress),
     cancel: &AtomicBool,
 ) -> Result<PullOff> {
-    let sc = &walker.prep.scene;
-    if sc.gamma <= 0.0 {
+    let Some(strength) = solver.strength() else {
         return Ok(PullOff {
             pressure: Some(0.0),
             bracket: None,
             note: Some("no adhesion: a rough contact holds no tension (pull-off at p* = 0)".into()),
         });
-    }
-    // the theoretical strength γ/ρ in p* (by the map's ḡ): no contact holds beyond it
-    let strength = sc.gamma / sc.range / (sc.modulus * walker.prep.rms_gradient);
+    };
+    // no contact holds beyond the theoretical strength γ/ρ
     let mut held = p1;
     let mut lost = None;
     let mut p = 0.0;
     while p >= -TENSION_LIMIT * strength {
-        match walker.step(p, rows.len(), progress, cancel)? {
+        match solver.step(p, rows.len(), progress, cancel)? {
             Some(row) => {
                 rows.push(CycleRow {
                     branch: PathBranch::Unloading,
@@ -337,7 +411,7 @@ fn tension(
             break;
         }
         let mid = 0.5 * (held + lost);
-        match walker.step(mid, rows.len(), progress, cancel)? {
+        match solver.step(mid, rows.len(), progress, cancel)? {
             Some(row) => {
                 rows.push(CycleRow {
                     branch: PathBranch::Unloading,

@@ -68,9 +68,9 @@ pub const PK_GAP_TOL: f64 = 0.1;
 /// attraction (γ/ρ)e^{−g_min/ρ} has stayed below this fraction of |p₀| for [`DETACH_STEPS`]
 /// steps: the mean force −p₀ − ⟨v′(g)⟩ then lifts the body, and lifting only weakens the
 /// attraction (no equilibrium remains: past pull-off).
-const DETACH_FRACTION: f64 = 0.5;
+pub(crate) const DETACH_FRACTION: f64 = 0.5;
 /// Consecutive steps the detachment condition must hold (see [`DETACH_FRACTION`]).
-const DETACH_STEPS: usize = 20;
+pub(crate) const DETACH_STEPS: usize = 20;
 
 /// Per-chunk partial sums of the node loop (`gmin`: the smallest gap, in Δa).
 #[derive(Debug, Clone, Copy)]

@@ -450,7 +450,7 @@ impl Preset {
 /// One line for a TOML error: `line N: key: what`, with the 1-based line of the error's
 /// span and the dotted key written on that line (the table's name for a table-level error).
 pub fn toml_error_message(text: &str, e: &toml::de::Error) -> String {
-    let msg = e.message().split_whitespace().collect::<Vec<_>>().join(" ");
+    let msg = shorten_quoted(&e.message().split_whitespace().collect::<Vec<_>>().join(" "));
     let Some(span) = e.span() else { return msg };
     let start = span.start.min(text.len());
     let line_no = text[..start].matches('\n').count() + 1;
@@ -479,6 +479,29 @@ pub fn toml_error_message(text: &str, e: &toml::de::Error) -> String {
         Some(k) if !k.is_empty() => format!("line {line_no}: {k}: {msg}"),
         _ => format!("line {line_no}: {msg}"),
     }
+}
+
+/// `msg` with every value the parser quotes in backticks shown as
+/// [`crate::error::fmt_text`] shows it (a 301-digit float as `1e300`, a long text cut in the
+/// middle), so the message stays one short line.
+fn shorten_quoted(msg: &str) -> String {
+    let parts: Vec<&str> = msg.split('`').collect();
+    if parts.len() < 3 {
+        return msg.to_string();
+    }
+    let mut out = String::new();
+    for (i, part) in parts.iter().enumerate() {
+        if i > 0 {
+            out.push('`');
+        }
+        // odd parts lie between a pair of backticks (the last one only if closed)
+        if i % 2 == 1 && i + 1 < parts.len() {
+            out.push_str(&crate::error::fmt_text(part));
+        } else {
+            out.push_str(part);
+        }
+    }
+    out
 }
 
 /// The 1-based line where the dotted key `table.key` (or a top-level `key`) is written in

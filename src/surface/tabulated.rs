@@ -247,9 +247,9 @@ impl Tabulated {
             if t.is_empty() || t.starts_with('#') {
                 continue;
             }
-            let cells: Vec<&str> = t.split(',').map(str::trim).collect();
             match cols {
                 None => {
+                    let cells: Vec<&str> = t.split(',').map(str::trim).collect();
                     let find = |name: &str| cells.iter().position(|c| c.eq_ignore_ascii_case(name));
                     match (find("q"), find("psd")) {
                         (Some(a), Some(b)) => cols = Some((a, b)),
@@ -264,15 +264,29 @@ impl Tabulated {
                     }
                 }
                 Some((a, b)) => {
-                    let cell = |k: usize| -> Result<f64> {
-                        let s = cells
-                            .get(k)
-                            .ok_or_else(|| bad(i + 1, format!("{} cells, column {} missing", cells.len(), k + 1)))?;
+                    // the two cells found in one pass over the line, without collecting its
+                    // cells (a table may have 10⁶ rows)
+                    let (mut qa, mut cb) = (None, None);
+                    for (k, cell) in t.split(',').enumerate() {
+                        if k == a {
+                            qa = Some(cell.trim());
+                        }
+                        if k == b {
+                            cb = Some(cell.trim());
+                        }
+                    }
+                    let cell = |k: usize, s: Option<&str>| -> Result<f64> {
+                        let s = s.ok_or_else(|| {
+                            bad(
+                                i + 1,
+                                format!("{} cells, column {} missing", t.split(',').count(), k + 1),
+                            )
+                        })?;
                         s.parse::<f64>()
                             .map_err(|_| bad(i + 1, format!("'{s}' (not a number)")))
                     };
-                    q.push(cell(a)?);
-                    c.push(cell(b)?);
+                    q.push(cell(a, qa)?);
+                    c.push(cell(b, cb)?);
                 }
             }
         }

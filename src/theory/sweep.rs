@@ -187,6 +187,10 @@ pub struct Sweep {
     pub monotone: bool,
     /// Requested loads whose solver did not converge (their rows are null).
     pub failed_loads: Vec<f64>,
+    /// One entry per row: why the row is empty (the solver's error on one line), None for a
+    /// converged row. Front ends print it beside the row.
+    #[serde(skip)]
+    pub reasons: Vec<Option<String>>,
     /// What failed and what it means for the other rows; absent when every load converged.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
@@ -222,6 +226,15 @@ impl Sweep {
 }
 
 pub use crate::theory::loads::{energies, evaluate_node, evaluations, node_results};
+
+/// `text` on one line (line breaks become "; ").
+pub fn one_line(text: &str) -> String {
+    text.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join("; ")
+}
 
 /// Runs a sweep (see the module docs).
 ///
@@ -308,6 +321,9 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
     };
     let h_rms = scene.spectrum.rms_height();
     let mut failed_loads = Vec::new();
+    let reasons: Vec<Option<String>> = (0..spec.points)
+        .map(|k| evs[k * m].as_ref().err().map(|e| one_line(&e.to_string())))
+        .collect();
     let rows: Vec<SweepRow> = (0..spec.points)
         .map(|k| {
             let i = k * m;
@@ -392,6 +408,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
         full_contact_pressure: p_full,
         monotone,
         failed_loads,
+        reasons,
         note,
         gap_note,
         jump_in_pressure,

@@ -1,13 +1,12 @@
-//! `mpirun -np N asperity gfmd …` (feature `mpi`): the run or load sweep on N MPI ranks
-//! ([`asperity::gfmd::distributed`]), rank 0 printing what the serial run prints.
+//! `mpirun -np N asperity gfmd …` (feature `mpi`): the run, load sweep or load cycle on N MPI
+//! ranks ([`asperity::gfmd::distributed`]), rank 0 printing what the serial run prints.
 //!
 //! Built without the feature, or started as one process, `gfmd` runs serially as always. On
-//! N > 1 ranks: single runs and load sweeps (`--from/--to`), generated or `--surface` maps,
-//! every output format; `--extrapolate`, `--seeds K > 1` and `--save-surface` run on one
-//! process only (no rank holds the map), and so do the load cycle (`--cycle`) and a sweep
-//! downwards (`--to` below `--from`). The hard wall relaxes with FIRE on ranks
-//! (Polonsky–Keer is not distributed): the output equals the serial `--method fire` run, and
-//! with adhesion the serial run whatever the method.
+//! N > 1 ranks: single runs, load sweeps (`--from/--to`, upwards or downwards) and the load
+//! cycle (`--cycle`), generated or `--surface` maps, every output format; `--extrapolate`,
+//! `--seeds K > 1` and `--save-surface` run on one process only (no rank holds the map). The
+//! hard wall relaxes with FIRE on ranks (Polonsky–Keer is not distributed): the output equals
+//! the serial `--method fire` run, and with adhesion the serial run whatever the method.
 
 use super::gfmd::GfmdArgs;
 use asperity::error::Result;
@@ -40,8 +39,10 @@ pub fn on_ranks(args: &GfmdArgs) -> Option<Result<()>> {
 mod distributed {
     use super::super::emit;
     use super::super::gfmd::{setup, single_csv, sweep_csv, table, GfmdArgs, GfmdFormat, MethodArg};
+    use super::super::gfmd_cycle::cycle_csv;
     use asperity::error::{Error, Result};
-    use asperity::gfmd::distributed::{run_slab, run_sweep_slab, Comm};
+    use asperity::gfmd::cycle::CycleSpec;
+    use asperity::gfmd::distributed::{run_cycle_slab, run_slab, run_sweep_slab, Comm};
     use asperity::theory::sweep::SweepSpec;
     use std::sync::atomic::AtomicBool;
 
@@ -50,7 +51,6 @@ mod distributed {
         for (flag, on, value) in [
             ("--extrapolate", args.extrapolate, "set".to_string()),
             ("--seeds", args.seeds > 1, args.seeds.to_string()),
-            ("--cycle", args.cycle, "set".to_string()),
             (
                 "--save-surface",
                 args.save_surface.is_some(),
@@ -67,18 +67,6 @@ mod distributed {
                 ));
             }
         }
-        if let (Some(from), Some(to)) = (args.from, args.to) {
-            if to < from {
-                return Err(Error::field(
-                    "--to",
-                    to,
-                    format!(
-                        "at least --from on {} MPI ranks (unloading runs on one process)",
-                        comm.size()
-                    ),
-                ));
-            }
-        }
         let (setup, opts) = setup(args)?;
         if root && setup.scene.surface_energy_j_m2() == 0.0 && args.method == MethodArg::Auto {
             eprintln!(
@@ -88,6 +76,22 @@ mod distributed {
         }
         let cancel = AtomicBool::new(false);
         if let (Some(from), Some(to)) = (args.from, args.to) {
+            if args.cycle || to < from {
+                let spec = CycleSpec {
+                    from,
+                    to,
+                    points: args.points,
+                    cycle: args.cycle,
+                };
+                let c = run_cycle_slab(comm, &setup, &spec, &opts, &mut |_, _| {}, &cancel)?;
+                if root {
+                    match args.format {
+                        GfmdFormat::Json => emit(&serde_json::to_string_pretty(&c).expect("serialisable")),
+                        GfmdFormat::Table | GfmdFormat::Csv => emit(&cycle_csv(&c)),
+                    }
+                }
+                return Ok(());
+            }
             let spec = SweepSpec {
                 from,
                 to,

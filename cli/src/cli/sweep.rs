@@ -11,7 +11,7 @@ use asperity::error::{Error, Field, Result};
 use asperity::theory::closed_form::eq18_area;
 use asperity::theory::engine::Options;
 use asperity::theory::knob::{self, Knob, KnobSpec};
-use asperity::theory::sweep::{self, Sweep, SweepRow, SweepSpec};
+use asperity::theory::sweep::{self, one_line, Sweep, SweepRow, SweepSpec};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 
@@ -71,10 +71,10 @@ pub struct SweepArgs {
 pub const CSV_HEADER: &str = "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
 elastic_energy_reduced,mean_gap_error,contact_stress_variance,a_r_over_p,a_r_eq18,thickness_qr,gamma,\
 a_r_unloading,branches,mean_gap_lower_rel,mean_gap_upper_rel,contact_load,mean_gap_unloading_rel,\
-mean_gap_unloading_error,mean_gap_unloading_lower_rel,contact_load_unloading,trust_inside,trust_a_r_log_error";
+mean_gap_unloading_error,mean_gap_unloading_lower_rel,contact_load_unloading,trust_inside,trust_a_r_log_error,reason";
 
 /// One row of `sweep` (CSV columns and JSON keys). Unavailable numbers are null (empty cells).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Row {
     /// The engine's row (p*, a_r, ū, σ̄_c*, U, converged, …, ⟨δσ_c²⟩*).
     #[serde(flatten)]
@@ -92,6 +92,9 @@ pub struct Row {
     pub trust_inside: bool,
     /// Mean |ln(theory/GFMD)| of a_r measured at the reference set's nearest points.
     pub trust_a_r_log_error: f64,
+    /// Why the row has no numbers (the solver's error, or why the mean gap is unavailable),
+    /// on one line; null for a complete row.
+    pub reason: Option<String>,
 }
 
 impl Row {
@@ -110,7 +113,22 @@ impl Row {
             gamma,
             trust_inside: trust.inside,
             trust_a_r_log_error: trust.a_r_log_error,
+            reason: None,
         }
+    }
+
+    /// The row with `reason` (see [`Row::reason`]).
+    pub fn with_reason(self, reason: Option<String>) -> Row {
+        Row { reason, ..self }
+    }
+}
+
+/// A CSV field: as is, or quoted (RFC 4180) when it holds a comma, a quote or a line break.
+fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
     }
 }
 
@@ -174,7 +192,7 @@ pub fn csv(rows: &[Row]) -> String {
     for row in rows {
         let r = &row.row;
         out.push_str(&format!(
-            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.p,
             f(r.a_r),
             f(r.mean_gap_rel),
@@ -200,6 +218,7 @@ pub fn csv(rows: &[Row]) -> String {
             f(r.contact_load_unloading),
             row.trust_inside,
             f(row.trust_a_r_log_error),
+            row.reason.as_deref().map_or(String::new(), csv_field),
         ));
     }
     out
@@ -232,7 +251,12 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
             let (preset, scene) = args.scene.resolve(Some(args.from))?;
             let sw: Sweep = sweep::sweep(&scene, &spec, &Options::default(), None)?;
             let cycle = args.cycle.then(|| asperity::theory::cycle::path(&sw));
-            let rows = sw.rows.iter().map(|r| Row::new(*r, &scene)).collect();
+            let rows = sw
+                .rows
+                .iter()
+                .zip(&sw.reasons)
+                .map(|(r, why)| Row::new(*r, &scene).with_reason(why.clone()))
+                .collect();
             Ok(SweepOutput {
                 preset: preset.name.clone(),
                 over: Over::Pressure,
@@ -279,16 +303,19 @@ fn knob_output(args: &SweepArgs) -> Result<SweepOutput> {
     let rows: Vec<Row> = points
         .iter()
         .map(|pt| {
-            match (&pt.result, &pt.gap) {
+            let reason = match (&pt.result, &pt.gap) {
                 (Err(e), _) => {
                     failed.push(pt.value);
-                    notes.push(format!("value {:e}: {e}", pt.value));
+                    Some(one_line(&e.to_string()))
                 }
-                (Ok(_), Err(e)) => notes.push(format!("value {:e}: mean gap unavailable: {e}", pt.value)),
-                (Ok(_), Ok(_)) => {}
+                (Ok(_), Err(e)) => Some(one_line(&format!("mean gap unavailable: {e}"))),
+                (Ok(_), Ok(_)) => None,
+            };
+            if let Some(why) = &reason {
+                notes.push(format!("value {:e}: {why}", pt.value));
             }
             let r = pt.row(scene.pressure(), unit);
-            Row::new(r, &pt.scene)
+            Row::new(r, &pt.scene).with_reason(reason)
         })
         .collect();
     let note = (!notes.is_empty()).then(|| {

@@ -10,6 +10,10 @@
 //! closes a chunk adds it to the total. The sums, hence dt, α, every position and the step
 //! count, equal the serial run's bit for bit for any number of ranks.
 //!
+//! Under tension the loss of contact is detected as in the serial solver
+//! ([`crate::gfmd::fire::relax_from`]): the smallest gap enters through an all-reduce of
+//! minima (exact in any order), only while no node is on the wall under a tensile load.
+//!
 //! Polonsky–Keer ([`crate::gfmd::pk`]) is not distributed: a hard-wall run relaxes with FIRE
 //! alone (the serial `Method::Fire`).
 
@@ -17,7 +21,10 @@ use super::comm::{all_max, all_min, all_sum_counts, chain_fold, Comm};
 use super::map::Slab;
 use super::slab_fft::SlabFft;
 use crate::error::{Error, Result};
-use crate::gfmd::fire::{ALPHA_START, CHUNK, DT_MAX, EXP_CUTOFF, F_ALPHA, F_DEC, F_INC, N_DELAY, PARALLEL_MIN_NODES};
+use crate::gfmd::fire::{
+    Relaxation, ALPHA_START, CHUNK, DETACH_FRACTION, DETACH_STEPS, DT_MAX, EXP_CUTOFF, F_ALPHA, F_DEC, F_INC, N_DELAY,
+    PARALLEL_MIN_NODES,
+};
 use crate::gfmd::{GfmdOptions, Progress, Solution, Stage};
 use crate::surface::heightmap::wave_number_sq;
 use crate::theory::slab::slab_factor_at;
@@ -67,6 +74,8 @@ struct State<'c> {
     /// Local pieces [a, b) split at the global chunk boundaries.
     pieces: Vec<(usize, usize)>,
     parallel: bool,
+    /// The step at which contact was lost (set by [`relax`]).
+    detached_at: usize,
 }
 
 impl State<'_> {
@@ -191,6 +200,19 @@ impl State<'_> {
         }
     }
 
+    /// Whether the body is lifting off (the serial solver's test): a tensile load, no node on
+    /// the wall (`walls` of the whole map) and the largest possible attraction
+    /// (γ/ρ)e^{−g_min/ρ} below [`DETACH_FRACTION`] × |p₀|. The smallest gap is reduced over
+    /// the ranks only when the first two hold (every rank takes the same branch).
+    fn lifting(&self, walls: f64) -> bool {
+        if !(self.p0 < 0.0 && walls == 0.0) {
+            return false;
+        }
+        let local = self.w.iter().zip(&self.h).fold(f64::INFINITY, |m, (w, h)| m.min(w - h));
+        let gmin = all_min(self.comm, local);
+        self.adh_stress * (-gmin * self.inv_range).exp() < -DETACH_FRACTION * self.p0
+    }
+
     fn retreat(&mut self, dt: f64) {
         for i in 0..self.w.len() {
             self.w[i] = (self.w[i] - 0.5 * dt * self.v[i]).max(self.h[i]);
@@ -228,6 +250,32 @@ pub fn solve_slab(
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
 ) -> Result<Solution> {
+    match relax_slab_from(comm, problem, opts, start_gap, progress, cancel)? {
+        Relaxation::Equilibrium(sol) => Ok(sol),
+        Relaxation::ContactLost { iterations } => Err(Error::NotConverged {
+            solver: crate::error::Solver::Gfmd,
+            reason: format!(
+                "contact lost after {iterations} steps: the tensile load is beyond what adhesion holds (past pull-off)"
+            ),
+        }),
+    }
+}
+
+/// [`solve_slab`], telling a loss of contact under tension apart from an equilibrium, as
+/// [`crate::gfmd::fire::relax_from`] does (the load cycle over ranks steps into tension with
+/// it).
+///
+/// # Errors
+/// As [`solve_slab`].
+pub fn relax_slab_from(
+    comm: &dyn Comm,
+    problem: &SlabProblem<'_>,
+    opts: &GfmdOptions,
+    start_gap: Option<&[f64]>,
+    progress: &mut dyn FnMut(Progress),
+    cancel: &AtomicBool,
+) -> Result<Relaxation> {
+    crate::work::start();
     crate::gfmd::problem::check_loads(
         problem.modulus,
         problem.thickness,
@@ -311,8 +359,13 @@ pub fn solve_slab(
         inv_range,
         pieces: pieces(s.offset(), nl),
         parallel: nl >= PARALLEL_MIN_NODES,
+        detached_at: 0,
     };
-    let (it, residual) = relax(&mut st, opts, dt_max, progress, cancel)?;
+    let Some((it, residual)) = relax(&mut st, opts, dt_max, progress, cancel)? else {
+        return Ok(Relaxation::ContactLost {
+            iterations: st.detached_at,
+        });
+    };
     let gap: Vec<f64> = st.w.iter().zip(&st.h).map(|(w, h)| (w - h).max(0.0) * da).collect();
     let stress: Vec<f64> = st.conv.iter().map(|c| (st.p0 + c) * e).collect();
     let on_wall: Vec<bool> = st.w.iter().zip(&st.h).map(|(w, h)| w <= h).collect();
@@ -323,7 +376,7 @@ pub fn solve_slab(
         residual,
         contact_fraction: walls as f64 / n as f64,
     });
-    Ok(Solution {
+    Ok(Relaxation::Equilibrium(Solution {
         gap,
         stress,
         on_wall,
@@ -331,24 +384,26 @@ pub fn solve_slab(
         pk_iterations: 0,
         residual,
         elapsed_s: t0.elapsed().as_secs_f64(),
-    })
+    }))
 }
 
 /// The FIRE iterations from the state's start (see [`crate::gfmd::fire`]): the step count and
-/// the final residual.
+/// the final residual, or `None` when contact was lost under tension (the step count in
+/// `st.detached_at`).
 fn relax(
     st: &mut State<'_>,
     opts: &GfmdOptions,
     dt_max: f64,
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
-) -> Result<(usize, f64)> {
+) -> Result<Option<(usize, f64)>> {
     let n = st.n;
     let dt_min = 0.02 * dt_max;
     let mut dt = 0.5 * dt_max;
     let mut alpha = ALPHA_START;
     let mut n_pos = 0usize;
     let mut it = 0usize;
+    let mut detaching = 0usize;
     let residual;
     loop {
         let sums = st.forces();
@@ -384,6 +439,11 @@ fn relax(
                 ),
             });
         }
+        detaching = if st.lifting(sums[4]) { detaching + 1 } else { 0 };
+        if detaching >= DETACH_STEPS {
+            st.detached_at = it;
+            return Ok(None);
+        }
         let vv = if fv > 0.0 {
             n_pos += 1;
             if n_pos > N_DELAY {
@@ -401,7 +461,7 @@ fn relax(
         st.advance(dt, alpha, ff.sqrt(), vv);
         it += 1;
     }
-    Ok((it, residual))
+    Ok(Some((it, residual)))
 }
 
 #[cfg(test)]

@@ -55,11 +55,13 @@ impl PreparedSlab {
 
     /// The scene on the map's discrete spectrum, as [`crate::gfmd::Prepared::theory_scene`].
     pub fn theory_scene(&self, pressure: f64) -> Scene {
-        Scene {
+        let mut scene = Scene {
             spectrum: Spectrum::Discrete(self.spectrum.coarse_grained(THEORY_SHELL_LN)),
             pressure,
             ..self.scene.clone()
-        }
+        };
+        scene.resolve_model();
+        scene
     }
 }
 

@@ -34,6 +34,39 @@ pub fn energy_slab(comm: &dyn Comm, problem: &SlabProblem<'_>, sol: &Solution) -
     el + inter
 }
 
+/// [`GfmdSweepRow::measured`] from this rank's rows of a contact relaxed at p* = `p` (every
+/// rank gets the row).
+pub fn row_slab(
+    comm: &dyn Comm,
+    p: f64,
+    prep: &PreparedSlab,
+    problem: &SlabProblem<'_>,
+    sol: &Solution,
+    opts: &GfmdOptions,
+) -> GfmdSweepRow {
+    let m = measure_slab(
+        comm,
+        sol,
+        opts,
+        prep.slab.nodes(),
+        problem.modulus,
+        prep.rms_gradient,
+        prep.rms_height,
+    );
+    GfmdSweepRow {
+        p,
+        a_r: m.stats.a_r,
+        mean_gap_rel: m.mean_gap_rel,
+        mean_gap: m.mean_gap,
+        mean_contact_stress: m.stats.mean_contact_stress,
+        elastic_energy: energy_slab(comm, problem, sol),
+        converged: true,
+        contact_stress_variance: m.stats.contact_stress_variance,
+        iterations: sol.iterations,
+        residual: sol.residual,
+    }
+}
+
 /// [`crate::gfmd::sweep::run_loads`] on this rank: the prepared slab, the rows, the steps.
 ///
 /// # Errors
@@ -52,7 +85,6 @@ pub fn run_loads_slab(
     let mut rows = Vec::new();
     let mut start: Option<Vec<f64>> = None;
     let mut iterations = 0;
-    let nodes = prep.slab.nodes();
     for (k, &p) in spec.pressures().iter().enumerate() {
         let problem = prep.problem(p);
         let sol = solve_slab(
@@ -63,28 +95,8 @@ pub fn run_loads_slab(
             &mut |pr| progress(k, pr),
             cancel,
         )?;
-        let m = measure_slab(
-            comm,
-            &sol,
-            opts,
-            nodes,
-            problem.modulus,
-            prep.rms_gradient,
-            prep.rms_height,
-        );
         iterations += sol.iterations;
-        rows.push(GfmdSweepRow {
-            p,
-            a_r: m.stats.a_r,
-            mean_gap_rel: m.mean_gap_rel,
-            mean_gap: m.mean_gap,
-            mean_contact_stress: m.stats.mean_contact_stress,
-            elastic_energy: energy_slab(comm, &problem, &sol),
-            converged: true,
-            contact_stress_variance: m.stats.contact_stress_variance,
-            iterations: sol.iterations,
-            residual: sol.residual,
-        });
+        rows.push(row_slab(comm, p, &prep, &problem, &sol, opts));
         start = Some(sol.gap);
     }
     Ok((prep, rows, iterations))

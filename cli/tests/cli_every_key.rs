@@ -1,0 +1,279 @@
+//! Every key of a preset (enumerated from the preset type's own serialisation) and every key
+//! of the built-in tour, against hard values (-1, 0, 1e300, nan, inf, '', "abc", -1e-300,
+//! true): the binary refuses the file in one line naming the key, with exit code 2 and no
+//! computation started (`ASPERITY_FORBID_WORK`), or the value is valid for that key.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// A scratch folder of this test process.
+fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("asperity-every-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// `asperity ARGS` with work forbidden and stdin closed: (exit code, stdout, stderr).
+fn run(args: &[String], log: &Path) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+        .env(asperity_cli::cli::FORBID_WORK_ENV, "1")
+        .env(asperity_cli::cli::WORK_LOG_ENV, log)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// The hard values, as TOML values.
+fn hard_values() -> Vec<toml::Value> {
+    vec![
+        toml::Value::Integer(-1),
+        toml::Value::Integer(0),
+        toml::Value::Float(1e300),
+        toml::Value::Float(f64::NAN),
+        toml::Value::Float(f64::INFINITY),
+        toml::Value::String(String::new()),
+        toml::Value::String("abc".into()),
+        toml::Value::Float(-1e-300),
+        toml::Value::Boolean(true),
+    ]
+}
+
+/// The leaf keys of a preset as its `Serialize` gives them (dotted; `reference.0.value` for the
+/// first `[[reference]]` entry), with their TOML values.
+fn leaves(v: &toml::Value, prefix: &str, out: &mut Vec<(String, toml::Value)>) {
+    match v {
+        toml::Value::Table(t) => {
+            for (k, x) in t {
+                let p = if prefix.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{prefix}.{k}")
+                };
+                leaves(x, &p, out);
+            }
+        }
+        toml::Value::Array(a) if a.iter().all(|x| x.is_table()) => {
+            for (i, x) in a.iter().enumerate() {
+                leaves(x, &format!("{prefix}.{i}"), out);
+            }
+        }
+        _ => out.push((prefix.to_string(), v.clone())),
+    }
+}
+
+/// `v` with the leaf at dotted `path` set to `x`.
+fn replaced(v: &toml::Value, path: &str, x: toml::Value) -> toml::Value {
+    let mut v = v.clone();
+    let mut at = &mut v;
+    for part in path.split('.') {
+        at = match at {
+            toml::Value::Table(t) => t.get_mut(part).unwrap(),
+            toml::Value::Array(a) => &mut a[part.parse::<usize>().unwrap()],
+            _ => unreachable!("{path}"),
+        };
+    }
+    *at = x;
+    v
+}
+
+/// Every key of a preset (enumerated from the preset type's own serialisation: every field
+/// of every table, optional ones included, over three valid presets that together set them
+/// all) × {-1, 0, 1e300, nan, inf, '', "abc", -1e-300, true}: refused in one line naming the
+/// key before any work, or accepted as valid for that key (the theory then starts, which
+/// this mode forbids).
+#[test]
+fn every_preset_key_refuses_hard_values_naming_the_key() {
+    use asperity::input::preset::{ModelSpec, Preset, ReferencePoint, Variant};
+    let dir = scratch("preset-keys");
+    let log = dir.join("work.log");
+    let base = Preset::resolve("system-2").unwrap();
+    let reference = ReferencePoint {
+        source: "test".into(),
+        quantity: "a_r".into(),
+        pressure: 0.01,
+        thickness_qr: Some(1.0),
+        gamma: Some(0.1),
+        model: Some(4),
+        value: 0.1,
+    };
+    let custom = Preset {
+        model: ModelSpec {
+            variant: Variant::Name("custom".into()),
+            c1: Some(-2.0 / 9.0),
+            c2: Some(2.0 / 3.0),
+            alpha: Some(0.5),
+            k_griffith: Some(2.0),
+            cap: Some(true),
+            fudge_gamma: None,
+        },
+        reference: vec![reference.clone()],
+        ..base.clone()
+    };
+    // YP08 is for the adhesionless half-space
+    let mut by_height = base.clone();
+    by_height.adhesion.surface_energy_j_m2 = 0.0;
+    by_height.load.thickness_qr = f64::INFINITY;
+    by_height.surface.rms_gradient = None;
+    by_height.surface.rms_height_m = Some(1e-6);
+    by_height.model = ModelSpec {
+        variant: Variant::Name("yp08".into()),
+        fudge_gamma: Some(1.0),
+        ..ModelSpec::default()
+    };
+    let bases: Vec<toml::Value> = [custom, by_height]
+        .iter()
+        .map(|p| toml::Value::try_from(p).unwrap())
+        .collect();
+    // every key the type serialises, with every option set
+    let mut all = base.clone();
+    all.surface.rms_height_m = Some(1e-6);
+    all.model = ModelSpec {
+        variant: Variant::Number(4),
+        c1: Some(0.0),
+        c2: Some(0.0),
+        alpha: Some(0.0),
+        k_griffith: Some(0.0),
+        cap: Some(true),
+        fudge_gamma: Some(1.0),
+    };
+    all.reference = vec![reference];
+    let mut every = Vec::new();
+    leaves(&toml::Value::try_from(&all).unwrap(), "", &mut every);
+    let mut covered = std::collections::BTreeSet::new();
+    let hard: Vec<toml::Value> = hard_values();
+    let (mut n, mut broken) = (0, Vec::new());
+    for b in &bases {
+        let mut keys = Vec::new();
+        leaves(b, "", &mut keys);
+        for (key, _) in &keys {
+            // each key once: the second preset adds the keys the first lacks
+            if !covered.insert(key.clone()) {
+                continue;
+            }
+            // how a message names it: `reference.0.value` as `reference[0].value` or `value`
+            let last = key.rsplit('.').next().unwrap();
+            for bad in &hard {
+                let text = toml::to_string(&replaced(b, key, bad.clone())).unwrap();
+                let p = dir.join("preset.toml");
+                std::fs::write(&p, text).unwrap();
+                n += 1;
+                let args = vec!["run".to_string(), "--preset".into(), p.display().to_string()];
+                let (code, out, err) = run(&args, &log);
+                let line = err.trim_end();
+                let accepted = line.contains("work was forbidden");
+                let refused = code == 2
+                    && out.is_empty()
+                    && line.lines().count() == 1
+                    && line.chars().count() <= 300
+                    && line.contains(last);
+                // (300: the message also names the preset file, here a long temporary path)
+                if !(refused || accepted) {
+                    broken.push(format!(
+                        "{key} = {bad}: exit {code}: {}",
+                        line.lines().last().unwrap_or("")
+                    ));
+                }
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    let missing: Vec<&String> = every.iter().map(|(k, _)| k).filter(|k| !covered.contains(*k)).collect();
+    assert!(missing.is_empty(), "preset keys not enumerated: {missing:?}");
+    assert!(covered.len() >= 30 && n == covered.len() * hard.len(), "{n} cases");
+    assert!(broken.is_empty(), "{} of {n}:\n{}", broken.len(), broken.join("\n"));
+}
+
+/// Tour keys whose refusal breaks the rule today, each with what is wrong: the tour reader
+/// (cli/src/tui/tour.rs) is another worktree's, so they are listed here to be fixed there.
+/// The test fails when one of them is refused well (the list must shrink with the fixes).
+const TOUR_KEYS_KNOWN_BAD: [(&str, &str); 7] = [
+    (
+        "step.gamma",
+        "blamed on step[0].title as adhesion.surface_energy_j_m2, not on gamma",
+    ),
+    ("step.press.raises", "\"unknown knob\" without the key or the value"),
+    ("step.press.lowers", "\"unknown knob\" without the key or the value"),
+    (
+        "step.check.quantity",
+        "the allowed list makes the line longer than 300 characters",
+    ),
+    (
+        "step.check.below.quantity",
+        "the allowed list makes the line longer than 300 characters",
+    ),
+    (
+        "step.check.above.quantity",
+        "the allowed list makes the line longer than 300 characters",
+    ),
+    (
+        "step.check.near.quantity",
+        "the allowed list makes the line longer than 300 characters",
+    ),
+];
+
+/// Every key of the built-in tour (tours/wang-muser.toml as read: every key of the file, of
+/// its steps, their checks and presses, each key path once) × the same hard values: refused
+/// in one line naming the key, or accepted (the explorer then asks for a terminal, which the
+/// test does not give it).
+#[test]
+fn every_tour_key_refuses_hard_values_naming_the_key() {
+    let dir = scratch("tour-keys");
+    let log = dir.join("work.log");
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../tours/wang-muser.toml");
+    let tour: toml::Value = toml::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let mut keys = Vec::new();
+    leaves(&tour, "", &mut keys);
+    let mut seen = std::collections::BTreeSet::new();
+    let mut known = std::collections::BTreeSet::new();
+    let hard: Vec<toml::Value> = hard_values();
+    let (mut n, mut broken) = (0, Vec::new());
+    for (key, _) in &keys {
+        // each key path once (the indices of steps, checks and presses dropped)
+        let shape: Vec<&str> = key.split('.').filter(|p| p.parse::<usize>().is_err()).collect();
+        if !seen.insert(shape.join(".")) {
+            continue;
+        }
+        let last = *shape.last().unwrap();
+        for bad in &hard {
+            let p = dir.join("tour.toml");
+            std::fs::write(&p, toml::to_string(&replaced(&tour, key, bad.clone())).unwrap()).unwrap();
+            n += 1;
+            let (code, out, err) = run(&["tour".to_string(), p.display().to_string()], &log);
+            let line = err.trim_end();
+            let accepted = line.contains("needs a terminal");
+            let refused = code == 2
+                && out.is_empty()
+                && line.lines().count() == 1
+                && line.chars().count() <= 300
+                && line.contains(last);
+            let shape = shape.join(".");
+            if !(refused || accepted) && TOUR_KEYS_KNOWN_BAD.iter().any(|(k, _)| *k == shape) {
+                known.insert(shape);
+            } else if !(refused || accepted) {
+                broken.push(format!(
+                    "{key} = {bad}: exit {code}: {}",
+                    line.lines().last().unwrap_or("")
+                ));
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(seen.len() >= 15, "{} tour keys", seen.len());
+    let fixed: Vec<&str> = TOUR_KEYS_KNOWN_BAD
+        .iter()
+        .map(|(k, _)| *k)
+        .filter(|k| !known.contains(*k))
+        .collect();
+    assert!(
+        fixed.is_empty(),
+        "refused well now, drop from TOUR_KEYS_KNOWN_BAD: {fixed:?}"
+    );
+    assert!(broken.is_empty(), "{} of {n}:\n{}", broken.len(), broken.join("\n"));
+}
