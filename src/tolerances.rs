@@ -368,3 +368,9 @@ pub const MODEL5_VS_MODEL4_GAMMA_OUT: f64 = 0.6;
 /// as coarse (step 0.075 from 0.1) as the gauge's own (0.025) and scans the floor on the same
 /// grid: interpolation moves w_b and w_s by a few 0.01 and the floor by up to two grid steps.
 pub const MODEL5_GAUGE_REFIT_ABS: f64 = 0.06;
+
+/// Model 5's steps per octave of bandwidth, fitted at 512² (λ_r/λ_s = 32) alone, predicting the
+/// 1024² GFMD points (64) it never saw: mean |ln(a_r theory/GFMD)| at most this fraction of the
+/// set's gauge held at every bandwidth (measured 0.63 on the whole bandwidth set,
+/// docs/physics.md §3.6).
+pub const MODEL5_BANDWIDTH_HELD_OUT: f64 = 0.8;

@@ -8,7 +8,7 @@ use asperity::fit::set_gauge::{
     ModelChoice, SetCase,
 };
 use asperity::input::model::Model;
-use asperity::input::model_five::GAUGE;
+use asperity::input::model_five::{BANDWIDTH_GAUGE, GAUGE};
 use asperity::input::preset::Preset;
 use asperity::theory::engine::Options;
 use asperity::tolerances::{MODEL5_GAUGE_REFIT_ABS, MODEL5_VS_MODEL4, MODEL5_VS_MODEL4_GAMMA_OUT};
@@ -83,8 +83,11 @@ fn model_5_follows_the_scene_and_is_model_3_without_adhesion() {
     let five = Model::named(5).unwrap();
     let scene = preset.scene().unwrap().with_model(five).unwrap();
     let m = scene.model();
-    // W(0) is the gauge's w₀ up to the crossover's e^{−γ̃/γ_c} (γ̃ = 0.1: 5e-5 of model 3's)
-    assert!((m.w(0.0) - GAUGE.w0(scene.gamma_glo())).abs() < 1e-4);
+    // W(0) is the gauge's w₀ at the scene's bandwidth (the full system: λ_r/λ_s = 128) up to
+    // the crossover's e^{−γ̃/γ_c} (γ̃ = 0.1: 5e-5 of model 3's)
+    let bw = scene.spectrum().q_s() / scene.spectrum().q_r();
+    assert!((bw - 128.0).abs() < 1e-9);
+    assert!((m.w(0.0) - BANDWIDTH_GAUGE.at(bw).w0(scene.gamma_glo())).abs() < 1e-4);
     // a thinner slab has more γ̃_glo, so a larger W(0); without adhesion model 3
     let thin = scene.clone().with_thickness_qr(0.15).unwrap();
     assert!(thin.gamma_glo() > scene.gamma_glo());
@@ -109,29 +112,25 @@ fn model_5_follows_the_scene_and_is_model_3_without_adhesion() {
 }
 
 #[test]
-fn the_trust_read_out_says_where_model_5s_gauge_does_not_carry_over() {
+fn the_trust_read_out_says_where_model_5s_gauge_was_not_measured() {
     let preset = Preset::resolve("system-2").unwrap();
     let five = Model::named(5).unwrap();
-    // the full system (λ_r/λ_s = 128): named; model 4 on it: not
+    let named = |scene: &asperity::input::scene::Scene| {
+        asperity::fit::trust::assess(scene)
+            .outside
+            .iter()
+            .any(|l| l.contains("model 5 was gauged"))
+    };
+    // the full system II (λ_r/λ_s = 128) and its 256² reduction (16): inside the measured range
     let full = preset.scene().unwrap().with_model(five).unwrap();
-    let t = asperity::fit::trust::assess(&full);
-    assert!(
-        !t.inside && t.outside.iter().any(|l| l.contains("model 5 was gauged")),
-        "{:?}",
-        t.outside
-    );
-    let m4 = full.clone().with_model(Model::named(4).unwrap()).unwrap();
-    assert!(!asperity::fit::trust::assess(&m4)
-        .outside
-        .iter()
-        .any(|l| l.contains("model 5")));
-    // the set's own bandwidth (the 256² reduction): not named
+    assert!(!named(&full));
     let grid = asperity::gfmd::GridSpec::from_preset(preset.gfmd.as_ref().unwrap())
         .with_grid(256)
         .unwrap();
     let (red, _) = asperity::gfmd::reduction::reduce(&full, &grid, true).unwrap();
-    assert!(!asperity::fit::trust::assess(&red)
-        .outside
-        .iter()
-        .any(|l| l.contains("model 5")));
+    assert!(!named(&red));
+    // system I (λ_r/λ_s = 200, adhesive): beyond it, named; model 4 there: not
+    let sys1 = Preset::resolve("system-1").unwrap().scene().unwrap();
+    assert!(named(&sys1.clone().with_model(five).unwrap()));
+    assert!(!named(&sys1.with_model(Model::named(4).unwrap()).unwrap()));
 }

@@ -18,6 +18,7 @@
 //! names the unconstrained one, and the fit says so instead of reporting error bars; so it
 //! does for a single parameter whose standard error exceeds [`WEAK_SE_FACTOR`] × its size.
 
+pub mod bandwidth_gauge;
 pub mod compare;
 pub mod gfmd_reference;
 pub mod predict;

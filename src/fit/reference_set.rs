@@ -7,6 +7,10 @@
 //!
 //! The data are `data/reference/reference-set-256.csv` (one row per case, branch and load) and
 //! `data/reference/pull-off-256.csv` (per case: γ̃_glo, the pull-off), read once.
+//!
+//! Beside it, the *bandwidth set* ([`bandwidth_set`], `data/reference/bandwidth-set.csv`): the
+//! adhesive system II cases' loading sweeps at p* = 10⁻³…10⁻² on wider grids (512², 1024²:
+//! λ_r/λ_s = 32, 64), the data that tell how the theory's error moves with the bandwidth.
 
 use crate::theory::cycle::PathBranch;
 use std::collections::HashMap;
@@ -14,6 +18,7 @@ use std::sync::OnceLock;
 
 const SET_CSV: &str = include_str!("../../data/reference/reference-set-256.csv");
 const CASES_CSV: &str = include_str!("../../data/reference/pull-off-256.csv");
+const BANDWIDTH_CSV: &str = include_str!("../../data/reference/bandwidth-set.csv");
 /// Grid side of the stored set.
 pub const SET_GRID: usize = 256;
 
@@ -23,6 +28,8 @@ pub const SET_GRID: usize = 256;
 pub struct ReferencePoint {
     /// 1 (the contact-mechanics challenge) or 2 (the adhesive slab system).
     pub system: u8,
+    /// Grid side N of the GFMD maps (λ_r/λ_s = N/16 for the set's reduction).
+    pub grid: usize,
     /// t·q_r (∞ for a half-space).
     pub thickness_qr: f64,
     /// γ_s as a multiple of the preset's.
@@ -73,42 +80,78 @@ fn system_of(row: &HashMap<&str, &str>) -> u8 {
         .unwrap_or(0)
 }
 
-/// The stored set, parsed once.
+/// One set's rows; γ̃_glo from the row's own `gamma_glo` column, else from `cases`.
+fn parse(set_csv: &str, cases_csv: &str) -> Vec<ReferencePoint> {
+    let cases = rows(cases_csv);
+    let glo = |sys: u8, t: f64, f: f64| {
+        cases
+            .iter()
+            .find(|c| system_of(c) == sys && num(c, "thickness_qr") == t && num(c, "gamma_factor") == f)
+            .map_or(f64::NAN, |c| num(c, "gamma_glo"))
+    };
+    rows(set_csv)
+        .iter()
+        .map(|r| {
+            let (system, t, f) = (system_of(r), num(r, "thickness_qr"), num(r, "gamma_factor"));
+            let pair = |k: &str| (num(r, k), num(r, &format!("{k}_err")));
+            let grid = num(r, "grid");
+            let own_glo = num(r, "gamma_glo");
+            ReferencePoint {
+                system,
+                grid: if grid.is_finite() { grid as usize } else { SET_GRID },
+                thickness_qr: t,
+                gamma_factor: f,
+                gamma_glo: if own_glo.is_finite() {
+                    own_glo
+                } else {
+                    glo(system, t, f)
+                },
+                branch: if r.get("branch") == Some(&"unloading") {
+                    PathBranch::Unloading
+                } else {
+                    PathBranch::Loading
+                },
+                p: num(r, "p"),
+                seeds: num(r, "seeds") as usize,
+                a_r: pair("a_r"),
+                mean_gap_rel: pair("mean_gap_rel"),
+                mean_contact_stress: pair("mean_contact_stress"),
+                theory_model: if system == 1 { 3 } else { 4 },
+                theory_a_r: num(r, "theory_a_r"),
+                theory_mean_gap_rel: num(r, "theory_mean_gap_rel"),
+            }
+        })
+        .collect()
+}
+
+/// The stored set (256²), parsed once.
 pub fn reference_set() -> &'static [ReferencePoint] {
     static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
-    SET.get_or_init(|| {
-        let cases = rows(CASES_CSV);
-        let glo = |sys: u8, t: f64, f: f64| {
-            cases
-                .iter()
-                .find(|c| system_of(c) == sys && num(c, "thickness_qr") == t && num(c, "gamma_factor") == f)
-                .map_or(f64::NAN, |c| num(c, "gamma_glo"))
-        };
-        rows(SET_CSV)
+    SET.get_or_init(|| parse(SET_CSV, CASES_CSV))
+}
+
+/// The bandwidth set (system II, adhesive, loading, p* ≥ 10⁻³ on grids wider than 256²), parsed
+/// once.
+pub fn bandwidth_set() -> &'static [ReferencePoint] {
+    static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
+    SET.get_or_init(|| parse(BANDWIDTH_CSV, ""))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn both_sets_parse_with_their_grids() {
+        assert!(reference_set()
             .iter()
-            .map(|r| {
-                let (system, t, f) = (system_of(r), num(r, "thickness_qr"), num(r, "gamma_factor"));
-                let pair = |k: &str| (num(r, k), num(r, &format!("{k}_err")));
-                ReferencePoint {
-                    system,
-                    thickness_qr: t,
-                    gamma_factor: f,
-                    gamma_glo: glo(system, t, f),
-                    branch: if r.get("branch") == Some(&"unloading") {
-                        PathBranch::Unloading
-                    } else {
-                        PathBranch::Loading
-                    },
-                    p: num(r, "p"),
-                    seeds: num(r, "seeds") as usize,
-                    a_r: pair("a_r"),
-                    mean_gap_rel: pair("mean_gap_rel"),
-                    mean_contact_stress: pair("mean_contact_stress"),
-                    theory_model: if system == 1 { 3 } else { 4 },
-                    theory_a_r: num(r, "theory_a_r"),
-                    theory_mean_gap_rel: num(r, "theory_mean_gap_rel"),
-                }
-            })
-            .collect()
-    })
+            .all(|p| p.grid == SET_GRID && p.a_r.0.is_finite()));
+        let bw = bandwidth_set();
+        assert!(!bw.is_empty());
+        for p in bw {
+            assert!(p.grid > SET_GRID, "{p:?}");
+            assert!(p.gamma_glo > 0.0 && p.a_r.0 > 0.0 && p.a_r.0 <= 1.0, "{p:?}");
+            assert_eq!(p.branch, PathBranch::Loading);
+        }
+    }
 }

@@ -46,6 +46,8 @@ pub const P_RESOLVED: f64 = 1e-3;
 /// One case of the set, rebuilt: its maps' theory scenes and its stored points (p* > 0).
 #[derive(Debug, Clone)]
 pub struct SetCase {
+    /// Grid side N of the case's GFMD maps.
+    pub grid: usize,
     /// t·q_r (∞: half-space).
     pub thickness_qr: f64,
     /// γ_s as a multiple of the preset's.
@@ -103,20 +105,37 @@ impl ModelChoice {
 /// # Errors
 /// Those of the preset and of the map generation.
 pub fn system_two_cases(seeds: u64) -> Result<Vec<SetCase>> {
+    cases_of(reference_set(), seeds)
+}
+
+/// The system II cases of `points` (one per grid, t·q_r and γ_s factor), each rebuilt on
+/// `seeds` maps of its grid (at most as many as GFMD averaged there).
+///
+/// # Errors
+/// Those of the preset and of the map generation.
+pub fn cases_of(points: &[ReferencePoint], seeds: u64) -> Result<Vec<SetCase>> {
     let preset = Preset::resolve("system-2")?;
     let spec = preset
         .gfmd
         .as_ref()
         .ok_or_else(|| Error::Unsupported("system-2 has no [gfmd] table".into()))?;
-    let grid = GridSpec::from_preset(spec).with_grid(super::reference_set::SET_GRID)?;
-    let mut keys: Vec<(f64, f64, f64)> = reference_set()
+    let mut keys: Vec<(usize, f64, f64, f64, u64)> = points
         .iter()
         .filter(|p| p.system == 2)
-        .map(|p| (p.thickness_qr, p.gamma_factor, p.gamma_glo))
+        .map(|p| {
+            (
+                p.grid,
+                p.thickness_qr,
+                p.gamma_factor,
+                p.gamma_glo,
+                seeds.min(p.seeds as u64),
+            )
+        })
         .collect();
     keys.dedup();
     keys.into_par_iter()
-        .map(|(t, f, glo)| {
+        .map(|(n, t, f, glo, seeds)| {
+            let grid = GridSpec::from_preset(spec).with_grid(n)?;
             let full = preset.scene()?.with_thickness_qr(t)?;
             let gamma = full.surface_energy_j_m2() * f;
             let full = full.with_surface_energy_j_m2(gamma)?;
@@ -132,12 +151,13 @@ pub fn system_two_cases(seeds: u64) -> Result<Vec<SetCase>> {
                     prepare(&setup)?.theory_scene(P_RESOLVED)
                 })
                 .collect::<Result<Vec<_>>>()?;
-            let points = reference_set()
+            let points = points
                 .iter()
-                .filter(|p| p.system == 2 && p.thickness_qr == t && p.gamma_factor == f && p.p > 0.0)
+                .filter(|p| p.system == 2 && p.grid == n && p.thickness_qr == t && p.gamma_factor == f && p.p > 0.0)
                 .copied()
                 .collect();
             Ok(SetCase {
+                grid: n,
                 thickness_qr: t,
                 gamma_factor: f,
                 gamma_glo: glo,
@@ -262,6 +282,10 @@ pub fn is_gauge_point(e: &PointError) -> bool {
 /// theory (linear interpolation in w₀ between nodes).
 #[derive(Debug, Clone)]
 pub struct CaseTable {
+    /// Grid side of the case's maps.
+    pub grid: usize,
+    /// The bandwidth q_s/q_r of the case's maps (what model 5 reads).
+    pub bandwidth: f64,
     /// t·q_r of the case.
     pub thickness_qr: f64,
     /// γ_s factor of the case.
@@ -340,7 +364,13 @@ pub fn tabulate(cases: &[SetCase], w0_nodes: &[f64], opts: &Options) -> Result<V
                 .map(|_| cols.next().expect("one per job"))
                 .collect::<Result<_>>()?;
             let points = per_node.first().map_or(0, Vec::len);
+            let bandwidth = c
+                .scenes
+                .first()
+                .map_or(f64::NAN, |s| s.spectrum().q_s() / s.spectrum().q_r());
             Ok(CaseTable {
+                grid: c.grid,
+                bandwidth,
                 thickness_qr: c.thickness_qr,
                 gamma_factor: c.gamma_factor,
                 gamma_glo: c.gamma_glo,

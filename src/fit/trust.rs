@@ -205,23 +205,22 @@ pub fn assess(scene: &Scene) -> Trust {
 }
 
 /// The bandwidth λ_r/λ_s of the set's grid (256² at L/λ_r = 2, λ_s/Δa = 8).
-pub const SET_BANDWIDTH: f64 = 16.0;
+pub const SET_BANDWIDTH: f64 = crate::input::model_five::SET_BANDWIDTH;
 
-/// Model 5 is gauged on the set's bandwidth; on a self-affine scene whose λ_r/λ_s is more than
-/// 1.5× away from it, one line saying so (physics.md §3.6: there its a_r has been measured to
-/// move by up to 3× from its value at the set's bandwidth, GFMD's by ≤ 25 %).
+/// Model 5's gauge was measured over λ_r/λ_s from [`SET_BANDWIDTH`] to
+/// [`crate::input::model_five::BANDWIDTH_MEASURED`] (physics.md §3.6); on a scene whose
+/// bandwidth q_s/q_r is more than 1.5× outside that range, one line saying so (the gauge is
+/// held at its value at the nearer end).
 fn model_five_bandwidth(scene: &Scene) -> Option<String> {
+    use crate::input::model_five::BANDWIDTH_MEASURED;
     if scene.model().kind != crate::input::model::ModelKind::Five || !scene.is_adhesive() {
         return None;
     }
-    let crate::surface::spectrum::Spectrum::SelfAffine(s) = scene.spectrum() else {
-        return None;
-    };
-    let bw = s.lambda_r / s.lambda_s;
-    let off = (bw / SET_BANDWIDTH).ln().abs();
-    (off > 1.5f64.ln()).then(|| {
+    let bw = scene.spectrum().q_s() / scene.spectrum().q_r();
+    let outside = !(SET_BANDWIDTH / 1.5..=BANDWIDTH_MEASURED * 1.5).contains(&bw);
+    (outside && bw.is_finite()).then(|| {
         format!(
-            "model 5 was gauged at λ_r/λ_s = {SET_BANDWIDTH:.0}, this scene has {bw:.0}: on thin adhesive slabs its a_r moves by up to 3x with the bandwidth (GFMD's by 25 %), so its gauge does not carry over"
+            "model 5 was gauged against GFMD at λ_r/λ_s = {SET_BANDWIDTH:.0} to {BANDWIDTH_MEASURED:.0}, this scene has {bw:.0}: its gauge is held at the nearer end and was not checked there"
         )
     })
 }

@@ -183,11 +183,18 @@ impl Model {
         }
     }
 
-    /// This model as a scene of global adhesion `gamma_glo` uses it: model 5's coefficients
-    /// follow γ̃_glo ([`super::model_five`]); every other kind is returned unchanged.
+    /// This model as a scene of global adhesion `gamma_glo` at the reference set's bandwidth
+    /// uses it (model 5, [`super::model_five`]); every other kind is returned unchanged.
     pub fn for_scene(&self, gamma_glo: f64) -> Model {
+        self.for_scene_at(gamma_glo, super::model_five::SET_BANDWIDTH)
+    }
+
+    /// The coefficients this model takes on a scene of global adhesion `gamma_glo` and
+    /// bandwidth q_s/q_r = `bandwidth` (model 5: [`super::model_five::BANDWIDTH_GAUGE`]; every
+    /// other model is itself).
+    pub fn for_scene_at(&self, gamma_glo: f64, bandwidth: f64) -> Model {
         match self.kind {
-            ModelKind::Five => super::model_five::GAUGE.model(gamma_glo),
+            ModelKind::Five => super::model_five::BANDWIDTH_GAUGE.model(gamma_glo, bandwidth),
             _ => *self,
         }
     }

@@ -21,11 +21,18 @@
 //! ([`crate::fit::set_gauge`]), and cross-validated by leaving one thickness and one γ_s out.
 //!
 //! γ̃_glo is the scene's: it depends on γ_s, E*, the spectrum and the slab's thickness through
-//! u_ela^(f), and is kept by the reduction to a GFMD grid. What the gauge does not carry is the
-//! bandwidth: it is fitted like for like on the set's reduced scenes (λ_r/λ_s = 16), and on
-//! thin adhesive slabs the theory's a_r under a large W(0) moves by up to 3× between λ_r/λ_s =
-//! 16 and 128 where GFMD's moves by ≤ 25 % (physics.md §3.6), so on system II's full bandwidth
-//! model 5 is not better than model 4; the trust read-out says so
+//! u_ela^(f), and is kept by the reduction to a GFMD grid. The bandwidth B = q_s/q_r is not: on
+//! thin adhesive slabs the theory's a_r under a fixed W(0) moves by up to 3× between λ_r/λ_s =
+//! 16 and 128 where GFMD's moves by ≤ 25 % (physics.md §3.6). So a second stage
+//! ([`crate::fit::bandwidth_gauge`], on GFMD at 512² and 1024²) moves each of w_b, w_s, w_f
+//! linearly in the octaves ℓ = log₂(B/16), clamped to [0, 3]:
+//!
+//! ```text
+//! w_b(ℓ) = w_b + ℓ·δw_b,   w_s(ℓ) = w_s + ℓ·δw_s,   w_f(ℓ) = w_f + ℓ·δw_f
+//! ```
+//!
+//! with δw_b = 0.0527, δw_s = −0.1809, δw_f = 0.0356 ([`PER_OCTAVE`]). Outside λ_r/λ_s ∈
+//! [16/1.5, 128·1.5] the trust read-out says the gauge was not checked
 //! ([`crate::fit::trust::assess`]).
 
 use super::model::{Model, ModelKind};
@@ -52,12 +59,73 @@ pub struct Gauge {
     pub floor: f64,
 }
 
-/// The stored gauge.
+/// The stored gauge at the set's bandwidth λ_r/λ_s = [`SET_BANDWIDTH`].
 pub const GAUGE: Gauge = Gauge {
     base: W0_BASE,
     slope: W0_SLOPE,
     floor: W0_FLOOR,
 };
+
+/// λ_r/λ_s = q_s/q_r of the reference set's 256² maps, where [`GAUGE`] was fitted.
+pub const SET_BANDWIDTH: f64 = 16.0;
+
+/// The widest bandwidth the gauge's octave dependence was measured to (GFMD at 2048², the
+/// paper's λ_r/λ_s = 128); beyond it the gauge is held at its value there.
+pub const BANDWIDTH_MEASURED: f64 = 128.0;
+
+/// The change of the gauge per octave of bandwidth (fitted on the bandwidth set,
+/// [`crate::fit::set_gauge`]): w_b, w_s and w_f move by these per doubling of λ_r/λ_s.
+pub const PER_OCTAVE: Gauge = Gauge {
+    base: 0.0527,
+    slope: -0.1809,
+    floor: 0.0356,
+};
+
+/// Octaves ℓ = log₂(B/16) of a bandwidth B = q_s/q_r above the set's, clamped to the measured
+/// range [0, log₂(128/16) = 3] (a bandwidth that is not a finite positive number counts as the
+/// set's).
+pub fn octaves(bandwidth: f64) -> f64 {
+    if !(bandwidth.is_finite() && bandwidth > 0.0) {
+        return 0.0;
+    }
+    (bandwidth / SET_BANDWIDTH)
+        .log2()
+        .clamp(0.0, (BANDWIDTH_MEASURED / SET_BANDWIDTH).log2())
+}
+
+/// Model 5's gauge over bandwidths: the gauge at the set's bandwidth and its change per octave,
+/// each of w_b, w_s, w_f linear in ℓ = [`octaves`]`(B)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BandwidthGauge {
+    /// The gauge at λ_r/λ_s = [`SET_BANDWIDTH`].
+    pub at_set: Gauge,
+    /// Its change per octave.
+    pub per_octave: Gauge,
+}
+
+/// The stored gauge over bandwidths.
+pub const BANDWIDTH_GAUGE: BandwidthGauge = BandwidthGauge {
+    at_set: GAUGE,
+    per_octave: PER_OCTAVE,
+};
+
+impl BandwidthGauge {
+    /// The gauge at bandwidth `bandwidth` = q_s/q_r.
+    pub fn at(&self, bandwidth: f64) -> Gauge {
+        let l = octaves(bandwidth);
+        let (a, d) = (self.at_set, self.per_octave);
+        Gauge {
+            base: a.base + l * d.base,
+            slope: a.slope + l * d.slope,
+            floor: a.floor + l * d.floor,
+        }
+    }
+
+    /// Model 5 at global adhesion `gamma_glo` and bandwidth `bandwidth`.
+    pub fn model(&self, gamma_glo: f64, bandwidth: f64) -> Model {
+        self.at(bandwidth).model(gamma_glo)
+    }
+}
 
 impl Gauge {
     /// c₁, c₂ and α of model 5 at global adhesion `gamma_glo` (see the module docs).

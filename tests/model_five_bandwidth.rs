@@ -1,0 +1,48 @@
+//! Model 5's change per octave of bandwidth (fit::bandwidth_gauge, docs/physics.md §3.6),
+//! judged on GFMD points it was not fitted to: fitted on the bandwidth set's 512² cases of the
+//! preset's γ_s (λ_r/λ_s = 32), it must predict the 1024² cases (64) better than the set's
+//! gauge held at every bandwidth.
+
+use asperity::fit::bandwidth_gauge::{bandwidth_residuals, fit_per_octave};
+use asperity::fit::reference_set::bandwidth_set;
+use asperity::fit::set_gauge::{cases_of, tabulate, CaseTable};
+use asperity::input::model_five::{BandwidthGauge, Gauge, GAUGE};
+use asperity::theory::engine::Options;
+use asperity::tolerances::MODEL5_BANDWIDTH_HELD_OUT;
+
+fn mean_abs(e: &[f64]) -> f64 {
+    e.iter().map(|v| v.abs()).sum::<f64>() / e.len() as f64
+}
+
+#[test]
+fn steps_per_octave_fitted_at_512_predict_1024() {
+    let points: Vec<_> = bandwidth_set()
+        .iter()
+        .filter(|p| p.gamma_factor == 1.0)
+        .copied()
+        .collect();
+    let cases = cases_of(&points, 1).unwrap();
+    let nodes: Vec<f64> = (0..=6).map(|k| 0.1 + 0.15 * k as f64).collect();
+    let tables = tabulate(&cases, &nodes, &Options::chart()).unwrap();
+    let (train, test): (Vec<CaseTable>, Vec<CaseTable>) = tables.into_iter().partition(|t| t.grid == 512);
+    assert!(train.len() >= 5 && test.len() >= 5, "{} / {}", train.len(), test.len());
+    assert!(test.iter().all(|t| (t.bandwidth / 64.0 - 1.0).abs() < 0.05));
+
+    let fitted = fit_per_octave(&train, GAUGE).unwrap();
+    let held = BandwidthGauge {
+        at_set: GAUGE,
+        per_octave: Gauge {
+            base: 0.0,
+            slope: 0.0,
+            floor: 0.0,
+        },
+    };
+    let (e_fit, e_held) = (
+        mean_abs(&bandwidth_residuals(&test, &fitted)),
+        mean_abs(&bandwidth_residuals(&test, &held)),
+    );
+    assert!(
+        e_fit <= MODEL5_BANDWIDTH_HELD_OUT * e_held,
+        "1024² held out: per octave {e_fit:.3}, set's gauge {e_held:.3}"
+    );
+}
