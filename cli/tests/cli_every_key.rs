@@ -190,33 +190,9 @@ fn every_preset_key_refuses_hard_values_naming_the_key() {
     assert!(broken.is_empty(), "{} of {n}:\n{}", broken.len(), broken.join("\n"));
 }
 
-/// Tour keys whose refusal breaks the rule today, each with what is wrong: the tour reader
-/// (cli/src/tui/tour.rs) is another worktree's, so they are listed here to be fixed there.
-/// The test fails when one of them is refused well (the list must shrink with the fixes).
-const TOUR_KEYS_KNOWN_BAD: [(&str, &str); 7] = [
-    (
-        "step.gamma",
-        "blamed on step[0].title as adhesion.surface_energy_j_m2, not on gamma",
-    ),
-    ("step.press.raises", "\"unknown knob\" without the key or the value"),
-    ("step.press.lowers", "\"unknown knob\" without the key or the value"),
-    (
-        "step.check.quantity",
-        "the allowed list makes the line longer than 300 characters",
-    ),
-    (
-        "step.check.below.quantity",
-        "the allowed list makes the line longer than 300 characters",
-    ),
-    (
-        "step.check.above.quantity",
-        "the allowed list makes the line longer than 300 characters",
-    ),
-    (
-        "step.check.near.quantity",
-        "the allowed list makes the line longer than 300 characters",
-    ),
-];
+/// Tour keys whose refusal breaks the rule today, each with what is wrong. The test fails
+/// when one of them is refused well (the list must shrink with the fixes).
+const TOUR_KEYS_KNOWN_BAD: [(&str, &str); 0] = [];
 
 /// Every key of the built-in tour (tours/wang-muser.toml as read: every key of the file, of
 /// its steps, their checks and presses, each key path once) × the same hard values: refused

@@ -124,9 +124,14 @@ pub fn validate(p: &Press, knobs: &[&str]) -> Result<(), String> {
     if p.key.trim().is_empty() {
         return Err("key must not be empty".into());
     }
-    let unknown = |k: &Option<String>| k.as_deref().is_some_and(|n| !knobs.contains(&n));
-    if unknown(&p.raises) || unknown(&p.lowers) {
-        return Err(format!("unknown knob; allowed {}", knobs.join(", ")));
+    for (key, knob) in [("raises", &p.raises), ("lowers", &p.lowers)] {
+        if let Some(n) = knob.as_deref().filter(|n| !knobs.contains(n)) {
+            return Err(format!(
+                "{key} = {}: unknown knob; allowed {}",
+                asperity::error::fmt_text(n),
+                knobs.join(", ")
+            ));
+        }
     }
     if p.model.is_none()
         && p.models.is_none()

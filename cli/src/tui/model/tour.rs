@@ -309,7 +309,7 @@ fn parse_step(
         Err(e) => {
             let key = match e.invalid_field().map(|f| f.to_string()) {
                 Some(f) if f.contains("thickness") => "thickness_qr",
-                Some(f) if f.contains("gamma") => "gamma",
+                Some(f) if f.contains("gamma") || f.contains("surface_energy") => "gamma",
                 Some(f) if f.contains("pressure") => "pressure",
                 _ => "title",
             };
@@ -350,8 +350,7 @@ fn parse_step(
             .map_err(|m| err(at, "press", format!("press {j} ({}): {m}", p.says.trim())))?;
     }
     for (j, c) in s.check.iter().enumerate() {
-        c.validate()
-            .map_err(|m| err(at, "check", format!("check {j} ({}): {m}", c.says.trim())))?;
+        c.validate().map_err(|m| err(at, "check", format!("check {j}: {m}")))?;
     }
     Ok(Step {
         title: s.title.trim().to_string(),

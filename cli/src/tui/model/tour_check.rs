@@ -92,8 +92,8 @@ impl Check {
         let known = |q: &str| QUANTITIES.contains(&q) || q.strip_prefix("reference:").is_some_and(|r| !r.is_empty());
         if !known(&self.quantity) {
             return Err(format!(
-                "quantity \"{}\"; allowed {}, reference:QUANTITY",
-                self.quantity,
+                "quantity = {}; allowed {}, reference:QUANTITY",
+                asperity::error::fmt_text(&self.quantity),
                 QUANTITIES.join(", ")
             ));
         }
@@ -101,7 +101,8 @@ impl Check {
             if let Some(q) = &s.quantity {
                 if !known(q) {
                     return Err(format!(
-                        "quantity \"{q}\" of a comparison; allowed {}",
+                        "quantity = {} of a comparison; allowed {}",
+                        asperity::error::fmt_text(q),
                         QUANTITIES.join(", ")
                     ));
                 }
