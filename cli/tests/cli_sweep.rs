@@ -101,7 +101,7 @@ fn a_sweep_keeps_going_past_loads_that_do_not_converge() {
     assert!(!json.to_lowercase().contains("nan"), "{json}");
 }
 
-/// The system-2 point of issue 40 (model 4, t·q_r 0.1186, γ_s 0.157, p* 3.5e-7) where the
+/// A hard point of system 2 (model 4, t·q_r 0.1186, γ_s 0.157, p* 3.5e-7) where the
 /// adhesive solve does not converge: a sweep starting there keeps the row, empty, with a
 /// one-line reason beside it (JSON `reason`, the CSV's last column, quoted), and the other
 /// rows carry none.

@@ -270,7 +270,7 @@ fn sweep_keys_and_columns() {
         "{header}"
     );
     assert!(header.contains(",trust_inside,trust_a_r_log_error"), "{header}");
-    // a failed row's one-line reason, last (issue 40)
+    // a failed row's one-line reason, last
     assert!(header.ends_with(",reason"), "{header}");
     assert!(
         header.starts_with(
