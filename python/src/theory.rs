@@ -105,7 +105,7 @@ pub fn evaluate<'py>(
 }
 
 /// One row of a sweep (the CLI's `sweep` row: the engine's row, a_r/p*, [S-18], t·q_r, γ_s).
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Serialize)]
 struct Row {
     #[serde(flatten)]
     row: SweepRow,
@@ -115,9 +115,16 @@ struct Row {
     gamma: f64,
     trust_inside: bool,
     trust_a_r_log_error: f64,
+    /// Why the row has no numbers, on one line (the CLI's `reason`); None for a complete row.
+    reason: Option<String>,
 }
 
 impl Row {
+    /// The row with `reason`.
+    fn with_reason(self, reason: Option<String>) -> Row {
+        Row { reason, ..self }
+    }
+
     /// The row of `row` for `scene` at the row's load, with the trust read-out
     /// ([`asperity::fit::trust`]), as the CLI's.
     fn new(row: SweepRow, scene: &asperity::input::scene::Scene) -> Row {
@@ -133,6 +140,7 @@ impl Row {
             gamma,
             trust_inside: trust.inside,
             trust_a_r_log_error: trust.a_r_log_error,
+            reason: None,
         }
     }
 }
@@ -247,13 +255,14 @@ fn pressure_sweep(core: &SceneCore, pressures: &[f64], opts: &Options, ctx: &wor
         });
         let sw = sweep::sweep(&scene, sp, opts, Some(&*ctx.cancel))?;
         for (r, why) in sw.rows.iter().zip(&sw.reasons) {
-            out.rows.push(Row::new(*r, &scene));
             // the row's own reason (the solver's error at that load)
-            out.reasons.push((!r.converged).then(|| {
+            let reason = (!r.converged).then(|| {
                 why.clone()
                     .or_else(|| sw.note.clone())
                     .unwrap_or_else(|| "did not converge".into())
-            }));
+            });
+            out.rows.push(Row::new(*r, &scene).with_reason(why.clone()));
+            out.reasons.push(reason);
         }
         out.evaluations += sw.evaluations;
         if k == 0 {
@@ -295,7 +304,8 @@ fn knob_row(pt: &KnobPoint, pressure: f64, unit: f64) -> (Row, Option<String>) {
         (Ok(_), Ok(_)) => None,
     };
     let r = pt.row(pressure, unit);
-    (Row::new(r, &pt.scene), reason)
+    let reason = reason.map(|r| asperity::theory::sweep::one_line(&r));
+    (Row::new(r, &pt.scene).with_reason(reason.clone()), reason)
 }
 
 /// The knob sweep of `scene` over `values` of `knob` at the scene's p* (module docs).
