@@ -15,12 +15,12 @@
 //! 1024², λ_r/λ_s = 32 and 64), tabulated over W(0) like the first stage
 //! ([`super::set_gauge::tabulate`]). Cross-validation leaves one grid out, or one thickness.
 
-use super::set_gauge::{gauge_residuals, CaseTable};
+use super::set_gauge::{central_jacobian, gauge_residuals, CaseTable};
 use crate::error::{Error, Result};
 use crate::input::model_five::{BandwidthGauge, Gauge};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra::storage::Owned;
-use nalgebra::{DMatrix, DVector, Dyn, Matrix};
+use nalgebra::{DVector, Dyn, Matrix};
 
 /// e_a at every gauge point of `tables` under the gauge over bandwidths `gauge` (each table at
 /// its own bandwidth).
@@ -73,16 +73,7 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for OctaveProblem<'_> {
     }
 
     fn jacobian(&self) -> Option<Matrix<f64, Dyn, Dyn, Owned<f64, Dyn, Dyn>>> {
-        let r = self.at(&self.x);
-        let mut j = DMatrix::zeros(r.len(), 3);
-        for k in 0..3 {
-            let h = 1e-4;
-            let (mut xp, mut xm) = (self.x.clone(), self.x.clone());
-            xp[k] += h;
-            xm[k] -= h;
-            j.set_column(k, &((self.at(&xp) - self.at(&xm)) / (2.0 * h)));
-        }
-        Some(j)
+        Some(central_jacobian(|x| self.at(x), &self.x))
     }
 }
 

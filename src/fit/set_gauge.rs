@@ -424,17 +424,22 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for GaugeProblem<'_> {
     }
 
     fn jacobian(&self) -> Option<Matrix<f64, Dyn, Dyn, Owned<f64, Dyn, Dyn>>> {
-        let r = self.at(&self.x);
-        let mut j = nalgebra::DMatrix::zeros(r.len(), 2);
-        for k in 0..2 {
-            let h = 1e-4;
-            let (mut xp, mut xm) = (self.x.clone(), self.x.clone());
-            xp[k] += h;
-            xm[k] -= h;
-            j.set_column(k, &((self.at(&xp) - self.at(&xm)) / (2.0 * h)));
-        }
-        Some(j)
+        Some(central_jacobian(|x| self.at(x), &self.x))
     }
+}
+
+/// The Jacobian of the residuals `at` at `x` by central differences of step 10⁻⁴ (the gauge's
+/// residuals are piecewise linear in its parameters, read off tables).
+pub(crate) fn central_jacobian(at: impl Fn(&DVector<f64>) -> DVector<f64>, x: &DVector<f64>) -> nalgebra::DMatrix<f64> {
+    let h = 1e-4;
+    let mut j = nalgebra::DMatrix::zeros(at(x).len(), x.len());
+    for k in 0..x.len() {
+        let (mut xp, mut xm) = (x.clone(), x.clone());
+        xp[k] += h;
+        xm[k] -= h;
+        j.set_column(k, &((at(&xp) - at(&xm)) / (2.0 * h)));
+    }
+    j
 }
 
 /// Fits w_f, w_b and w_s to the gauge points of `tables` (least squares in e_a): for each
