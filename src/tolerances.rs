@@ -374,3 +374,12 @@ pub const MODEL5_GAUGE_REFIT_ABS: f64 = 0.06;
 /// set's gauge held at every bandwidth (measured 0.63 on the whole bandwidth set,
 /// docs/physics.md §3.6).
 pub const MODEL5_BANDWIDTH_HELD_OUT: f64 = 0.8;
+
+/// The theory's contact branch at p* = 0 (the tensile continuation, physics.md §6.2) against
+/// the same branch at p* = 1e-7 from the solver of p* > 0: relative a_r (the load itself moves
+/// a_r by ~1e-6 there; chart accuracy).
+pub const TENSION_CONTINUITY_REL: f64 = 1e-3;
+
+/// The coarsest scale's Griffith stress min(k_G √(q_L E* f(q_L t) γ_s), γ_s/ρ) recomputed from
+/// its closed form against the library's tension bound: relative.
+pub const TENSION_BOUND_REL: f64 = 1e-12;

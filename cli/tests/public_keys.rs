@@ -762,6 +762,11 @@ fn gfmd_cycle_keys_and_columns() {
             "seed",
             "reduction",
             "theory",
+            "theory_cycle",
+            "theory_cycle.pull_off_pressure",
+            "theory_cycle.pull_off_bracket",
+            "theory_cycle.tension_bound",
+            "theory_cycle.note",
             "theory_error",
             "iterations",
             "elapsed_s",
@@ -791,6 +796,7 @@ fn gfmd_cycle_keys_and_columns() {
     let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
     assert_eq!(header, format!("{},branch", asperity_cli::cli::gfmd::GFMD_CSV_HEADER));
     assert!(text.contains("# pull_off_pressure: "), "{text}");
+    assert!(text.contains("# theory_pull_off_pressure: "), "{text}");
 }
 
 /// `sweep --cycle`: the load sweep's keys and `cycle` (rows with `branch`); the CSV's columns.
@@ -812,6 +818,9 @@ fn sweep_cycle_keys_and_columns() {
             "cycle.rows",
             "cycle.note",
             "cycle.unloading_branch_ends",
+            "cycle.pull_off_pressure",
+            "cycle.pull_off_bracket",
+            "cycle.tension_bound",
         ],
         "sweep --cycle",
     );

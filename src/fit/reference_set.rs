@@ -130,6 +130,41 @@ pub fn reference_set() -> &'static [ReferencePoint] {
     SET.get_or_init(|| parse(SET_CSV, CASES_CSV))
 }
 
+/// One case's pull-off in the stored set (`pull-off-256.csv`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ReferencePullOff {
+    /// 1 or 2.
+    pub system: u8,
+    /// t·q_r (∞: half-space).
+    pub thickness_qr: f64,
+    /// γ_s as a multiple of the preset's.
+    pub gamma_factor: f64,
+    /// γ̃_glo of the reduced system.
+    pub gamma_glo: f64,
+    /// The pull-off p* (mean over seeds, ≤ 0) and its standard error.
+    pub pressure: (f64, f64),
+    /// Maps averaged.
+    pub seeds: usize,
+}
+
+/// The stored set's pull-offs, one per case, parsed once.
+pub fn pull_offs() -> &'static [ReferencePullOff] {
+    static SET: OnceLock<Vec<ReferencePullOff>> = OnceLock::new();
+    SET.get_or_init(|| {
+        rows(CASES_CSV)
+            .iter()
+            .map(|r| ReferencePullOff {
+                system: system_of(r),
+                thickness_qr: num(r, "thickness_qr"),
+                gamma_factor: num(r, "gamma_factor"),
+                gamma_glo: num(r, "gamma_glo"),
+                pressure: (num(r, "pull_off_pressure"), num(r, "pull_off_pressure_err")),
+                seeds: num(r, "seeds") as usize,
+            })
+            .collect()
+    })
+}
+
 /// The bandwidth set (system II, adhesive, loading, p* ≥ 10⁻³ on grids wider than 256²), parsed
 /// once.
 pub fn bandwidth_set() -> &'static [ReferencePoint] {
@@ -152,6 +187,12 @@ mod tests {
             assert!(p.grid > SET_GRID, "{p:?}");
             assert!(p.gamma_glo > 0.0 && p.a_r.0 > 0.0 && p.a_r.0 <= 1.0, "{p:?}");
             assert_eq!(p.branch, PathBranch::Loading);
+        }
+        let po = pull_offs();
+        assert_eq!(po.len(), 29);
+        for c in po {
+            assert!(c.pressure.0 <= 0.0 && c.pressure.1 >= 0.0 && c.seeds == 3, "{c:?}");
+            assert_eq!(c.pressure.0 == 0.0, c.gamma_factor == 0.0, "{c:?}");
         }
     }
 }

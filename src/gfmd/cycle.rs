@@ -29,6 +29,7 @@ use super::sweep::GfmdSweepRow;
 use super::{prepare, GfmdOptions, GfmdSetup, Prepared, Progress, Stage};
 use crate::error::{Error, Field, Result};
 pub use crate::theory::cycle::PathBranch;
+use crate::theory::cycle::{path_through_tension, TheoryCycle};
 use crate::theory::engine::Options;
 use crate::theory::sweep::{self, Sweep, SweepSpec};
 use serde::Serialize;
@@ -138,6 +139,10 @@ pub struct GfmdCycle {
     pub reduction: Option<super::reduction::Reduction>,
     /// The theory's sweep on the map's discrete spectrum over the positive loads.
     pub theory: Option<Sweep>,
+    /// The theory's path on the same scene: loading, unloading and on into tension at GFMD's
+    /// tensile loads (p* = 0, −p₁, −2p₁, …) to the theory's own pull-off (its
+    /// `pull_off_pressure`), or the reason it stops.
+    pub theory_cycle: Option<TheoryCycle>,
     /// Why `theory` is null.
     pub theory_error: Option<String>,
     /// Total solver steps (tensile loads lost included).
@@ -220,7 +225,7 @@ impl PathWalk {
     /// why it is missing) and the map's facts.
     pub(crate) fn into_cycle(
         self,
-        theory: (Option<Sweep>, Option<String>),
+        theory: TheoryBeside,
         map: (usize, Option<u64>, Option<super::reduction::Reduction>),
         iterations: usize,
         t0: Instant,
@@ -236,7 +241,8 @@ impl PathWalk {
             seed: map.1,
             reduction: map.2,
             theory: theory.0,
-            theory_error: theory.1,
+            theory_cycle: theory.1,
+            theory_error: theory.2,
             iterations,
             elapsed_s: t0.elapsed().as_secs_f64(),
         }
@@ -336,8 +342,13 @@ pub fn run_cycle(
     Ok(path.into_cycle(theory, map, walker.iterations, t0))
 }
 
-/// The theory's sweep over the positive loads of a path on the map's scene: the sweep, or why
-/// it is missing.
+/// The theory beside a path: its sweep over the positive loads on the map's scene, the sweep's
+/// path continued into tension to the theory's pull-off
+/// ([`crate::theory::cycle::path_through_tension`]), or why the sweep is missing.
+pub(crate) type TheoryBeside = (Option<Sweep>, Option<TheoryCycle>, Option<String>);
+
+/// The theory beside a path (see [`TheoryBeside`]). Where the tensile continuation fails the
+/// theory's cycle stops at the smallest load and its note says why.
 ///
 /// # Errors
 /// [`Error::Cancelled`] only (any other failure is reported beside the rows).
@@ -345,12 +356,27 @@ pub(crate) fn theory_sweep(
     scene: Result<crate::input::scene::Scene>,
     rising: &SweepSpec,
     cancel: &AtomicBool,
-) -> Result<(Option<Sweep>, Option<String>)> {
-    match scene.and_then(|sc| sweep::sweep(&sc, rising, &Options::default(), Some(cancel))) {
-        Err(Error::Cancelled) => Err(Error::Cancelled),
-        Ok(s) => Ok((Some(s), None)),
-        Err(e) => Ok((None, Some(e.to_string()))),
-    }
+) -> Result<TheoryBeside> {
+    let sc = match scene {
+        Ok(sc) => sc,
+        Err(e) => return Ok((None, None, Some(e.to_string()))),
+    };
+    let opts = Options::default();
+    let sw = match sweep::sweep(&sc, rising, &opts, Some(cancel)) {
+        Err(Error::Cancelled) => return Err(Error::Cancelled),
+        Ok(s) => s,
+        Err(e) => return Ok((None, None, Some(e.to_string()))),
+    };
+    let cycle = match path_through_tension(&sw, &sc, &opts.adhesion, Some(cancel)) {
+        Err(Error::Cancelled) => return Err(Error::Cancelled),
+        Ok(c) => c,
+        Err(e) => {
+            let mut c = crate::theory::cycle::path(&sw);
+            c.note = format!("the theory's continuation into tension failed: {e}");
+            c
+        }
+    };
+    Ok((Some(sw), Some(cycle), None))
 }
 
 /// The pull-off found by [`tension`].

@@ -5,12 +5,20 @@
 //! stable root of §4 of physics.md, `a_r`); unloading back down stays on the unloading branch
 //! (the highest stable root, `a_r_unloading`) while it exists, and where it ends (the
 //! window's lower edge, the sweep's `pull_off_pressure`) the contact drops to the only
-//! branch left. Below the smallest load the theory is not continued: its tensile
-//! continuation (p* < 0, physics.md §6.2) is derived but not computed, and [`TheoryCycle::note`]
-//! says so in one line.
+//! branch left. [`path_through_tension`] continues the path below the smallest load p₁ into
+//! tension as GFMD's cycle does, p* = 0, −p₁, −2p₁, … ([`crate::theory::adhesion::pull_off`],
+//! physics.md §6.2), to the theory's pull-off; [`path`] alone stops at p₁, and
+//! [`TheoryCycle::note`] says in one line why the path ends where it does.
 
+use super::adhesion::{pull_off, AdhesionAccuracy, TensilePullOff};
 use super::sweep::{Sweep, SweepRow};
+use crate::error::Result;
+use crate::input::scene::Scene;
 use serde::Serialize;
+use std::sync::atomic::AtomicBool;
+
+/// Relative precision of the theory's pull-off (GFMD's cycle bisects to the same 3 %).
+pub const PULL_OFF_REL: f64 = 0.03;
 
 /// Which way the load was moving when a row was measured.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -61,6 +69,16 @@ pub struct TheoryCycle {
     /// The load above which the loading branch no longer exists (jump-in), where the range
     /// holds it.
     pub jump_in_pressure: Option<f64>,
+    /// The theory's pull-off where the path was continued into tension: the most tensile p*
+    /// its contact branch holds (≤ 0; 0 where no contact branch exists at p* = 0); null for
+    /// [`path`] alone.
+    pub pull_off_pressure: Option<f64>,
+    /// (the first p* lost, the last p* held) around `pull_off_pressure`, as GFMD's
+    /// `pull_off_bracket`.
+    pub pull_off_bracket: Option<[f64; 2]>,
+    /// The most tension any contact branch could hold, min(σ_a*(q_L; γ_s), γ_s/ρ) (the
+    /// coarsest scale's Griffith stress, physics.md §6.2), where the path was continued.
+    pub tension_bound: Option<f64>,
     /// Why the path stops where it does.
     pub note: String,
 }
@@ -110,6 +128,65 @@ pub fn path(sweep: &Sweep) -> TheoryCycle {
         rows,
         unloading_branch_ends: sweep.pull_off_pressure,
         jump_in_pressure: sweep.jump_in_pressure,
+        pull_off_pressure: None,
+        pull_off_bracket: None,
+        tension_bound: None,
         note,
+    }
+}
+
+/// [`path`] continued into tension (see the module docs): after the unloading rows, the
+/// contact branch of `scene` (the sweep's scene) at p* = 0, −p₁, −2p₁, … down to its pull-off,
+/// p₁ the sweep's smallest load; the mean gap is not defined there (null).
+///
+/// # Errors
+/// As [`pull_off`].
+pub fn path_through_tension(
+    sweep: &Sweep,
+    scene: &Scene,
+    acc: &AdhesionAccuracy,
+    cancel: Option<&AtomicBool>,
+) -> Result<TheoryCycle> {
+    let mut cycle = path(sweep);
+    let Some(p1) = sweep.rows.first().map(|r| r.p) else {
+        return Ok(cycle);
+    };
+    if scene.gamma <= 0.0 {
+        cycle.pull_off_pressure = Some(0.0);
+        cycle.note =
+            "without adhesion the contact holds no tension: the theory's path ends at p* -> 0 (pull-off 0)".into();
+        return Ok(cycle);
+    }
+    let po = pull_off(scene, p1, PULL_OFF_REL, acc, cancel)?;
+    cycle.rows.extend(po.path.iter().map(|s| TheoryPathRow {
+        branch: PathBranch::Unloading,
+        p: s.pressure,
+        a_r: s.a_r,
+        mean_gap_rel: f64::NAN,
+        mean_contact_stress: s.mean_contact_stress,
+        on_unloading_branch: true,
+    }));
+    cycle.note = tension_note(&po);
+    cycle.pull_off_pressure = Some(po.pressure);
+    cycle.pull_off_bracket = Some([po.lost, po.pressure]);
+    cycle.tension_bound = Some(po.bound);
+    Ok(cycle)
+}
+
+/// One line on where the tensile path ended and why.
+fn tension_note(po: &TensilePullOff) -> String {
+    if po.path.is_empty() {
+        format!(
+            "the theory has no contact branch at p* = 0: its contact ends at p* -> 0+ (a_r falls to zero with the load), \
+             so its pull-off is 0 (no tension held; the most any contact branch could hold is {:.3e}, docs/physics.md §6.2)",
+            po.bound
+        )
+    } else {
+        format!(
+            "the theory's contact branch holds tension down to p* = {:.3e} (lost at {:.3e}); no contact branch can hold \
+             more than {:.3e}, the coarsest scale's Griffith stress; the mean gap is not defined under tension \
+             (docs/physics.md §6.2)",
+            po.pressure, po.lost, po.bound
+        )
     }
 }

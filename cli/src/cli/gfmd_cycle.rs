@@ -1,11 +1,21 @@
 //! `asperity gfmd --cycle` (and a sweep downwards) as CSV: the columns of a GFMD sweep
 //! ([`super::gfmd_csv::GFMD_CSV_HEADER`]) and `branch`, after `#` lines giving the pull-off and the
 //! jump-in. The theory's columns are its branch at the same load: the unloading branch where
-//! the theory has two (inside a hysteresis window) on unloading rows, empty on tensile rows
-//! (the theory's sweep covers the positive loads).
+//! the theory has two (inside a hysteresis window) on unloading rows, and on tensile rows its
+//! contact branch under tension (a_r and σ̄_c*; the mean gap is not defined there), empty
+//! beyond the theory's own pull-off.
 
 use super::gfmd_csv::{csv_row, GFMD_CSV_HEADER};
 use asperity::gfmd::cycle::{GfmdCycle, PathBranch};
+use asperity::theory::cycle::TheoryPathRow;
+
+/// The theory's row under tension at GFMD's load `p` ≤ 0 (the same loads: 0, −p₁, −2p₁, …).
+fn tensile_row(c: &GfmdCycle, p: f64) -> Option<&TheoryPathRow> {
+    let t = c.theory_cycle.as_ref()?;
+    t.rows
+        .iter()
+        .find(|r| r.p <= 0.0 && (r.p - p).abs() <= 1e-12 * p.abs().max(1e-300))
+}
 
 /// The CSV of a GFMD load path (see the module docs).
 pub fn cycle_csv(c: &GfmdCycle) -> String {
@@ -23,6 +33,12 @@ pub fn cycle_csv(c: &GfmdCycle) -> String {
     if let Some(n) = &c.note {
         out.push_str(&format!("# note: {n}\n"));
     }
+    if let Some(t) = &c.theory_cycle {
+        if let Some(p) = t.pull_off_pressure {
+            out.push_str(&format!("# theory_pull_off_pressure: {}\n", f(p)));
+        }
+        out.push_str(&format!("# theory_note: {}\n", t.note));
+    }
     out.push_str(GFMD_CSV_HEADER);
     out.push_str(",branch");
     for r in &c.rows {
@@ -33,12 +49,17 @@ pub fn cycle_csv(c: &GfmdCycle) -> String {
             .and_then(|t| t.rows.iter().find(|t| (t.p / g.p - 1.0).abs() < 1e-12));
         let unloading = r.branch == PathBranch::Unloading;
         let pick = |load: f64, unload: f64| if unloading && unload.is_finite() { unload } else { load };
-        let theory = [
-            th.map(|t| pick(t.a_r, t.a_r_unloading)),
-            th.map(|t| pick(t.mean_gap_rel, t.mean_gap_unloading_rel)),
-            th.filter(|t| !(unloading && t.a_r_unloading.is_finite()))
-                .map(|t| t.mean_contact_stress),
-        ];
+        let theory = if g.p > 0.0 {
+            [
+                th.map(|t| pick(t.a_r, t.a_r_unloading)),
+                th.map(|t| pick(t.mean_gap_rel, t.mean_gap_unloading_rel)),
+                th.filter(|t| !(unloading && t.a_r_unloading.is_finite()))
+                    .map(|t| t.mean_contact_stress),
+            ]
+        } else {
+            let tr = tensile_row(c, g.p);
+            [tr.map(|t| t.a_r), None, tr.map(|t| t.mean_contact_stress)]
+        };
         out.push('\n');
         out.push_str(&csv_row(
             [

@@ -168,8 +168,9 @@ pub struct SweepOutput {
     /// thickness and gamma sweeps: every edge between two neighbouring values that differ in
     /// the number of stable branches, refined by bisection.
     pub window_edges: Vec<asperity::theory::hysteresis::KnobEdge>,
-    /// With `--cycle`: the theory's path up and back down (rows with `branch`), where the
-    /// unloading branch ends, and why the path stops at the smallest load.
+    /// With `--cycle`: the theory's path up, back down and on into tension (rows with
+    /// `branch`), where the unloading branch ends, the theory's pull-off, and why the path
+    /// stops where it does.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cycle: Option<asperity::theory::cycle::TheoryCycle>,
 }
@@ -250,7 +251,16 @@ pub fn compute(args: &SweepArgs) -> Result<SweepOutput> {
             spec.validate()?;
             let (preset, scene) = args.scene.resolve(Some(args.from))?;
             let sw: Sweep = sweep::sweep(&scene, &spec, &Options::default(), None)?;
-            let cycle = args.cycle.then(|| asperity::theory::cycle::path(&sw));
+            let cycle = if args.cycle {
+                Some(asperity::theory::cycle::path_through_tension(
+                    &sw,
+                    &scene,
+                    &Options::default().adhesion,
+                    None,
+                )?)
+            } else {
+                None
+            };
             let rows = sw
                 .rows
                 .iter()
@@ -367,6 +377,15 @@ pub fn cycle_csv(c: &asperity::theory::cycle::TheoryCycle) -> String {
     }
     if let Some(p) = c.jump_in_pressure {
         out.push_str(&format!("# jump_in_pressure: {}\n", f(p)));
+    }
+    if let Some(p) = c.pull_off_pressure {
+        out.push_str(&format!("# pull_off_pressure: {}\n", f(p)));
+    }
+    if let Some([lost, held]) = c.pull_off_bracket {
+        out.push_str(&format!("# pull_off_bracket: {} {}\n", f(lost), f(held)));
+    }
+    if let Some(b) = c.tension_bound {
+        out.push_str(&format!("# tension_bound: {}\n", f(b)));
     }
     out.push_str(&format!("# note: {}\n", c.note));
     out.push_str(CYCLE_CSV_HEADER);

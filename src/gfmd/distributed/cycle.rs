@@ -98,7 +98,7 @@ pub fn run_cycle_slab(
     let theory = if comm.rank() == 0 {
         theory_sweep(Ok(walker.prep.theory_scene(rising.from)), &rising, cancel)?
     } else {
-        (None, None)
+        (None, None, None)
     };
     let map = (
         walker.prep.slab.nx,

@@ -77,7 +77,8 @@
 //! `propagator` (the march for given walls, one step at a time), `regrid` (shift, refine and
 //! re-offset the march's grid),
 //! `walls` (σ_a(q) for γ(q)), `shooting` (the forward march for given C), `roots` (all roots
-//! of H), `pair` (whether the pair of roots that merges at a fold persists), `strategy` (the branch chosen and the solution assembled), and this module
+//! of H), `pair` (whether the pair of roots that merges at a fold persists), `strategy` (the branch chosen and the solution assembled), `tension` (the contact branch
+//! under tension, p* ≤ 0, and the theory's pull-off), and this module
 //! (accuracy, result types, entry points).
 
 mod grid;
@@ -90,11 +91,13 @@ mod roots;
 pub mod scales;
 mod shooting;
 mod strategy;
+mod tension;
 mod walls;
 
 pub use pair::pair_at;
 pub(crate) use strategy::solve_checked;
 pub use strategy::{solve, solve_continued, EXTRAPOLATE_MAX};
+pub use tension::{pull_off, tensile_branch, tension_bound, TensilePullOff};
 
 use crate::error::{check_in, Field, Result};
 use crate::input::scene::Scene;

@@ -377,6 +377,13 @@ impl<'a> Marcher<'a> {
         };
         let v = cur.v;
         let forced = self.force_grid_from == Some(k) && v > 0.0;
+        if cur.a <= 0.0 {
+            // everything has crossed the wall (only under tension: p* + σ_a ≤ 0 at some
+            // scale, physics.md §6.2); detached area never returns, whatever the wall does
+            cur.wall = s_k;
+            cur.v += st.b * model.broadening(0.0);
+            return 0.0;
+        }
         if let State::Analytic = cur.state {
             if s_k != cur.wall || forced {
                 let wall = cur.wall;

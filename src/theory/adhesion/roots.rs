@@ -352,11 +352,11 @@ pub(super) fn warm_bracket(
 
 /// A scan point: w, H and its rising part F = C + I, and G = γ_s a_r(q_s) (H = F − G).
 #[derive(Clone, Copy)]
-struct Point {
-    w: f64,
-    h: f64,
-    f: f64,
-    g: f64,
+pub(super) struct Point {
+    pub(super) w: f64,
+    pub(super) h: f64,
+    pub(super) f: f64,
+    pub(super) g: f64,
 }
 
 /// The scan of H over [w_lo, w_hi]: [`SCAN_PER_DECADE`] points per decade of |C|, then every
@@ -369,7 +369,7 @@ struct Point {
 /// (a_r ≤ 1) and F only rises, so H > 0 beyond it and no root lies there. Those marches are
 /// the dearest of the scan (a wall from the coarsest scale on), and the flat stretch of H
 /// around C = 0 was a third of a cold solve's time.
-fn scan(
+pub(super) fn scan(
     s: &mut Shooter<'_>,
     scale: &Scale,
     w_lo: f64,
@@ -523,7 +523,7 @@ const SLOW_STEPS: usize = 3;
 /// below round-off, or a bracket across a jump of H ([`JUMP_WIDTH`]); the root's march
 /// recorded.
 #[allow(clippy::too_many_arguments)]
-fn refine(
+pub(super) fn refine(
     s: &mut Shooter<'_>,
     scale: &Scale,
     a: f64,

@@ -15,7 +15,7 @@ use std::sync::atomic::AtomicBool;
 
 /// The largest residual |γ(q_s)/γ_s − 1| accepted for a root whose bracket collapsed onto a
 /// jump of the discrete H (measured: up to 1.4e-4 on system 2, model 4, t·q_r = 0.15).
-const COLLAPSED: f64 = 1e-3;
+pub(super) const COLLAPSED: f64 = 1e-3;
 
 /// Solves the adhesive theory for a scene with γ_s > 0 (see the module docs). `warm` is a
 /// previous solution of a nearby scene: its branches' C = γ(q_L) are re-bracketed first
@@ -199,7 +199,7 @@ fn final_distribution(scene: &Scene, grid: &Grid, rec: &super::shooting::Record)
 
 /// The solution at a root: Pr(σ*) at q_s and its moments from the recorded march's final
 /// state (the wall moved to σ_a(q_s)), γ(q) and σ_a(q) at the nodes, and the energy.
-fn finish(scene: &Scene, grid: &Grid, root: &Root, iterations: usize) -> Result<AdhesiveSolution> {
+pub(super) fn finish(scene: &Scene, grid: &Grid, root: &Root, iterations: usize) -> Result<AdhesiveSolution> {
     let rec = &root.record;
     let fin = &rec.end;
     let gs = scene.gamma;
