@@ -31,7 +31,7 @@
 //! w_b(ℓ) = w_b + ℓ·δw_b,   w_s(ℓ) = w_s + ℓ·δw_s,   w_f(ℓ) = w_f + ℓ·δw_f
 //! ```
 //!
-//! with δw_b = 0.0527, δw_s = −0.1809, δw_f = 0.0356 ([`PER_OCTAVE`]). Outside λ_r/λ_s ∈
+//! with δw_b = 0.0320, δw_s = −0.1268, δw_f = 0.0435 ([`PER_OCTAVE`]). Outside λ_r/λ_s ∈
 //! [16/1.5, 128·1.5] the trust read-out says the gauge was not checked
 //! ([`crate::fit::trust::assess`]).
 
@@ -76,9 +76,9 @@ pub const BANDWIDTH_MEASURED: f64 = 128.0;
 /// The change of the gauge per octave of bandwidth (fitted on the bandwidth set,
 /// [`crate::fit::set_gauge`]): w_b, w_s and w_f move by these per doubling of λ_r/λ_s.
 pub const PER_OCTAVE: Gauge = Gauge {
-    base: 0.0527,
-    slope: -0.1809,
-    floor: 0.0356,
+    base: 0.0320,
+    slope: -0.1268,
+    floor: 0.0435,
 };
 
 /// Octaves ℓ = log₂(B/16) of a bandwidth B = q_s/q_r above the set's, clamped to the measured

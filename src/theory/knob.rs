@@ -37,13 +37,15 @@ impl Knob {
         }
     }
 
-    /// The scene with the knob set to `v`.
+    /// The scene with the knob set to `v`, its model resolved for the new scene (model 5's
+    /// coefficients follow γ̃_glo, which both knobs move).
     pub fn apply(self, scene: &Scene, v: f64) -> Scene {
         let mut s = scene.clone();
         match self {
             Knob::Thickness => s.thickness_qr = v,
             Knob::Gamma => s.gamma = v,
         }
+        s.resolve_model();
         s
     }
 }
@@ -306,5 +308,30 @@ mod tests {
         // a thinner slab on a constant-stress base is softer at long wavelengths: more contact
         let a: Vec<f64> = pts.iter().map(|p| p.result.as_ref().unwrap().stats.a_r).collect();
         assert!(a[0] > a[1] && a[1] > a[2], "{a:?}");
+    }
+
+    #[test]
+    fn model_5_is_resolved_for_each_value() {
+        // the reference: the public setters, which resolve model 5 for the scene they make
+        let base = Preset::resolve("system-2")
+            .unwrap()
+            .scene()
+            .unwrap()
+            .with_model(crate::input::model::Model::named(5).unwrap())
+            .unwrap();
+        for (knob, v) in [(Knob::Thickness, 0.15), (Knob::Gamma, 0.3)] {
+            let swept = knob.apply(&base, v);
+            let direct = match knob {
+                Knob::Thickness => base.clone().with_thickness_qr(v),
+                Knob::Gamma => base.clone().with_surface_energy_j_m2(v),
+            }
+            .unwrap();
+            assert_eq!(swept.model(), direct.model(), "{knob:?} = {v}");
+            assert_ne!(
+                swept.model(),
+                base.model(),
+                "{knob:?} = {v}: model 5 moves with gamma_glo"
+            );
+        }
     }
 }
