@@ -197,7 +197,10 @@ fn bad_figure_arguments_exit_2_with_one_line() {
 /// The ids that `figure --list` names (the first word of each line).
 fn listed_ids() -> Vec<String> {
     let list = ok(&["figure", "--list"]);
-    list.lines().filter_map(|l| l.split_whitespace().next()).map(str::to_string).collect()
+    list.lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .map(str::to_string)
+        .collect()
 }
 
 /// The comma-separated ids of an "allowed …, … or a figure TOML file" text.

@@ -298,6 +298,23 @@ fn all_models_overlay() {
     assert!(render(&a, 160, 48).contains("▀ custom"));
 }
 
+/// `M` on an adhesive slab: model 5 joins models 1–4 with its own colour and marker.
+#[test]
+fn all_models_on_an_adhesive_slab() {
+    let mut a = app("system-2");
+    a.set_typed(asperity_cli::tui::app::Param::Thickness, "0.15").unwrap();
+    assert!(a.params.scene.surface_energy_j_m2() > 0.0);
+    a.set_charts([ChartKind::AreaRatio, ChartKind::Gap, ChartKind::Area]);
+    key(&mut a, KeyCode::Char('M'));
+    compute_now(&mut a, &mut Caches::default());
+    let s = render(&a, 160, 48);
+    for needle in ["• model 1", "▄ model 2", "⣿ model 3", "█ model 4", "∗ model 5"] {
+        assert!(s.contains(needle), "{needle}: {s}");
+    }
+    insta::assert_snapshot!("all_models_adhesive_slab_160x48", s);
+    insta::assert_snapshot!("all_models_adhesive_slab_80x24", render(&a, 80, 24));
+}
+
 /// A tour step: the preset state, its charts and the caption box.
 #[test]
 fn tour_step() {

@@ -134,7 +134,7 @@ pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T
     if !app.ui.all_models {
         return Vec::new();
     }
-    overlay_models(&app.params.scene.model())
+    overlay_models(&app.params.scene)
         .into_iter()
         .filter(|m| slot(m) != slot(&app.params.scene.model()))
         .filter_map(|m| get(app, &m).map(|d| (slot(&m), d)))
