@@ -275,9 +275,16 @@ fn tour_in_tmux() {
         }
         assert!(dir.join(format!("asperity-system-2-1-{chart}.png")).is_file());
     }
+    // the last step: models 4 and 5 against the GFMD points the library stores
+    t.keys(&["Right"]);
+    let s = t.wait("the last step solved", |s| {
+        s.contains("tour 12/12") && s.contains("Theory against brute force") && solved(s)
+    });
+    assert!(s.contains("model 5") && s.contains("t·q_r = 0.15"), "{s}");
+    t.wait("the stored GFMD points in a key", |s| s.contains("◆ GFMD ("));
     t.keys(&["Escape"]);
     t.wait("the tour to end", |s| {
-        s.contains("left the tour") && !s.contains("tour 11/12")
+        s.contains("left the tour") && !s.contains("tour 12/12")
     });
     t.keys(&["q"]);
     let s = t.wait("a clean exit", |s| s.contains("TTY="));
