@@ -132,8 +132,9 @@ pub struct Look {
     pub bold: bool,
 }
 
-/// The colours of model slots 0–6: models 1–4, custom, YP08, Xu24 (Okabe–Ito, then two earth
-/// tones).
+/// The colours of model slots 0–7: models 1–4, custom, YP08, Xu24, model 5 (Okabe–Ito, then
+/// two earth tones and a pink that none of the other roles uses, so model 5 is told apart from
+/// the GFMD points it is compared with).
 pub const MODEL_COLOURS: [Rgb; 8] = [
     Rgb(230, 159, 0),
     Rgb(0, 158, 115),
@@ -142,7 +143,7 @@ pub const MODEL_COLOURS: [Rgb; 8] = [
     Rgb(204, 121, 167),
     Rgb(140, 86, 75),
     Rgb(127, 60, 141),
-    Rgb(240, 228, 66),
+    Rgb(255, 170, 187),
 ];
 
 /// The glyphs of model slots 0–7.
@@ -154,7 +155,7 @@ pub const MODEL_GLYPHS: [Glyph; 8] = [
     Glyph::HalfBlock,
     Glyph::Quadrant,
     Glyph::Char('+'),
-    Glyph::Char('×'),
+    Glyph::Char('∗'),
 ];
 
 /// The colours of the pins (apart from the models' and the roles').
@@ -205,7 +206,7 @@ pub fn model_colour(slot: usize) -> Rgb {
 
 /// The names of the colours of the table, as a caption says them (`{look:NAME}`, see
 /// [`describe`]).
-pub const COLOUR_NAMES: [(Rgb, &str); 24] = [
+pub const COLOUR_NAMES: [(Rgb, &str); 25] = [
     (Rgb(230, 159, 0), "orange"),
     (Rgb(0, 158, 115), "bluish green"),
     (Rgb(0, 114, 178), "blue"),
@@ -230,6 +231,7 @@ pub const COLOUR_NAMES: [(Rgb, &str); 24] = [
     (Rgb(68, 170, 153), "teal"),
     (Rgb(102, 153, 204), "steel blue"),
     (Rgb(119, 136, 153), "slate"),
+    (Rgb(255, 170, 187), "pink"),
 ];
 
 /// Words that name a colour: a caption may say them only through a `{look:NAME}` reference.
@@ -273,12 +275,13 @@ pub fn colour_name(ink: Ink) -> &'static str {
 
 impl Role {
     /// The roles a caption can name (`{look:NAME}`), and their names.
-    pub const NAMED: [(&'static str, Role); 16] = [
+    pub const NAMED: [(&'static str, Role); 17] = [
         ("theory", Role::Theory),
         ("model1", Role::Model(0)),
         ("model2", Role::Model(1)),
         ("model3", Role::Model(2)),
         ("model4", Role::Model(3)),
+        ("model5", Role::Model(7)),
         ("adhesionless", Role::Compare),
         ("closed-form", Role::Closed),
         ("closed-form-2", Role::Closed2),

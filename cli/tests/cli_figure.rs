@@ -194,6 +194,40 @@ fn bad_figure_arguments_exit_2_with_one_line() {
     );
 }
 
+/// The ids that `figure --list` names (the first word of each line).
+fn listed_ids() -> Vec<String> {
+    let list = ok(&["figure", "--list"]);
+    list.lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .map(str::to_string)
+        .collect()
+}
+
+/// The comma-separated ids of an "allowed …, … or a figure TOML file" text.
+fn ids_named(text: &str) -> Vec<String> {
+    let list = text.split(" or a figure TOML file").next().unwrap();
+    let list = list.rsplit("allowed ").next().unwrap().trim();
+    list.split(", ").map(str::to_string).collect()
+}
+
+#[test]
+fn the_error_and_the_help_name_every_listed_figure() {
+    let listed = listed_ids();
+    assert!(listed.contains(&"8-log".to_string()), "{listed:?}");
+    for args in [&["figure", "9"][..], &["figure"][..]] {
+        let out = asperity(args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(ids_named(&err), listed, "{args:?}: {err}");
+    }
+    let help = ok(&["figure", "--help"]);
+    let line = help
+        .lines()
+        .map(str::trim)
+        .find(|l| l.ends_with("or a figure TOML file"))
+        .unwrap_or_else(|| panic!("no figure list in the help: {help}"));
+    assert_eq!(ids_named(line), listed, "{help}");
+}
+
 #[test]
 fn bad_figure_files_give_the_preset_errors() {
     let dir = std::env::temp_dir().join(format!("asperity-figtoml-{}", std::process::id()));

@@ -224,7 +224,7 @@ fn tour_in_tmux() {
     let dir = std::env::temp_dir().join(format!("asperity-e2e-tour-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let t = Tmux::start_with("tour", &dir, "", "tour");
-    let s = t.wait("the first step", |s| s.contains("tour 1/11") && solved(s));
+    let s = t.wait("the first step", |s| s.contains("tour 1/12") && solved(s));
     assert!(s.contains("Roughness, scale by scale") && s.contains("[S-1]"), "{s}");
     for (i, title) in [
         (2, "How much area?"),
@@ -232,22 +232,24 @@ fn tour_in_tmux() {
         (4, "What no W(a_r) can fix"),
     ] {
         t.keys(&["Right"]);
-        let s = t.wait(title, |s| s.contains(&format!("tour {i}/11")) && solved(s));
+        let s = t.wait(title, |s| s.contains(&format!("tour {i}/12")) && solved(s));
         assert!(s.contains(title), "{s}");
     }
     let s = t.screen();
     assert!(s.contains("Pr(σ*) log–log") && s.contains("σ→0 asymptote"), "{s}");
     // a knob still turns inside a step (p* is selected: l steps it up)
     t.keys(&["l"]);
-    t.wait("p* = 0.01122", |s| s.contains("0.01122") && s.contains("tour 4/11"));
+    t.wait("p* = 0.01122", |s| s.contains("0.01122") && s.contains("tour 4/12"));
     t.keys(&["Left"]);
-    t.wait("step 3", |s| s.contains("tour 3/11") && s.contains("0.01000"));
-    // through the adhesive steps to the last
+    t.wait("step 3", |s| s.contains("tour 3/12") && s.contains("0.01000"));
+    // through the adhesive steps to the jump into contact
     for i in 4..=11 {
         t.keys(&["Right"]);
-        t.wait("the next step", |s| s.contains(&format!("tour {i}/11")));
+        t.wait("the next step", |s| s.contains(&format!("tour {i}/12")));
     }
-    let s = t.wait("the last step solved", |s| s.contains("Jump into contact") && solved(s));
+    let s = t.wait("the jump-in step solved", |s| {
+        s.contains("Jump into contact") && solved(s)
+    });
     assert!(s.contains("system-2") && s.contains("a_r(t·q_r)"), "{s}");
     // s: the visible charts as SVG (and PNG) next to the CSV export, paths in the status line
     t.wait("every chart of the step", |s| {
@@ -273,9 +275,16 @@ fn tour_in_tmux() {
         }
         assert!(dir.join(format!("asperity-system-2-1-{chart}.png")).is_file());
     }
+    // the last step: models 4 and 5 against the GFMD points the library stores
+    t.keys(&["Right"]);
+    let s = t.wait("the last step solved", |s| {
+        s.contains("tour 12/12") && s.contains("Theory against brute force") && solved(s)
+    });
+    assert!(s.contains("model 5") && s.contains("t·q_r = 0.15"), "{s}");
+    t.wait("the stored GFMD points in a key", |s| s.contains("◆ GFMD ("));
     t.keys(&["Escape"]);
     t.wait("the tour to end", |s| {
-        s.contains("left the tour") && !s.contains("tour 11/11")
+        s.contains("left the tour") && !s.contains("tour 12/12")
     });
     t.keys(&["q"]);
     let s = t.wait("a clean exit", |s| s.contains("TTY="));
@@ -374,7 +383,7 @@ fn tui_and_tour_flags_are_validated_like_run() {
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
         String::from_utf8_lossy(&out.stderr).trim(),
-        "asperity: invalid --step = 99: allowed 1 <= step <= 11"
+        "asperity: invalid --step = 99: allowed 1 <= step <= 12"
     );
     let out = Command::new(BIN).args(["tour", "no-such-tour"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2));
@@ -436,13 +445,13 @@ fn scale_view_plays_in_tmux() {
     let s = t.wait("the play to reach q_s", |s| {
         s.contains(" 48/48 ") && !s.contains("/48 ▶")
     });
-    assert!(s.contains("tour 1/11"), "{s}");
+    assert!(s.contains("tour 1/12"), "{s}");
     t.keys(&["["]);
     t.wait("one frame back", |s| s.contains(" 47/48 "));
     t.keys(&["Space"]);
     t.wait("playing on", |s| s.contains("/48 ▶") || s.contains(" 48/48 "));
     t.keys(&["Escape"]);
-    t.wait("the tour to close", |s| !s.contains("tour 1/11"));
+    t.wait("the tour to close", |s| !s.contains("tour 1/12"));
     t.keys(&["q"]);
     let s = t.wait("a clean exit", |s| s.contains("TTY="));
     assert!(s.contains("EXIT=0") && s.contains("TTY=icanon"), "{s}");
@@ -461,7 +470,7 @@ fn hysteresis_followed_in_tmux() {
     let dir = std::env::temp_dir().join(format!("asperity-e2e-hyst-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let t = Tmux::start_with("hyst", &dir, "", "tour --step 11");
-    t.wait("the jump-in step", |s| s.contains("tour 11/11") && solved(s));
+    t.wait("the jump-in step", |s| s.contains("tour 11/12") && solved(s));
     // ⇧→ twice (L is the same key): 1e-4 → 1.78e-4 → 3.16e-4, above jump-in
     t.keys(&["L"]);
     t.keys(&["L"]);

@@ -298,6 +298,47 @@ fn all_models_overlay() {
     assert!(render(&a, 160, 48).contains("▀ custom"));
 }
 
+/// `M` on an adhesive slab: model 5 joins models 1–4 with its own colour and marker.
+#[test]
+fn all_models_on_an_adhesive_slab() {
+    let mut a = app("system-2");
+    a.set_typed(asperity_cli::tui::app::Param::Thickness, "0.15").unwrap();
+    assert!(a.params.scene.surface_energy_j_m2() > 0.0);
+    a.set_charts([ChartKind::AreaRatio, ChartKind::Gap, ChartKind::Area]);
+    key(&mut a, KeyCode::Char('M'));
+    compute_now(&mut a, &mut Caches::default());
+    let s = render(&a, 160, 48);
+    for needle in ["• model 1", "▄ model 2", "⣿ model 3", "█ model 4", "∗ model 5"] {
+        assert!(s.contains(needle), "{needle}: {s}");
+    }
+    insta::assert_snapshot!("all_models_adhesive_slab_160x48", s);
+    insta::assert_snapshot!("all_models_adhesive_slab_80x24", render(&a, 80, 24));
+}
+
+/// The tour's last step: models 4 and 5 on a thin adhesive slab against the GFMD points the
+/// library stores for it.
+#[test]
+fn tour_step_theory_against_brute_force() {
+    use asperity_cli::tui::tour::Tour;
+    let mut a = app("system-1");
+    let tour = Tour::resolve("wang-muser").unwrap();
+    let last = tour.steps.len() - 1;
+    a.start_tour(tour, last);
+    compute_now(&mut a, &mut Caches::default());
+    assert_eq!(a.params.scene.model().number(), Some(5));
+    let s = render(&a, 160, 48);
+    for needle in [
+        "Theory against brute force",
+        "∗ model 5",
+        "█ model 4",
+        "◆ GFMD (1024^2)",
+    ] {
+        assert!(s.contains(needle), "{needle}: {s}");
+    }
+    insta::assert_snapshot!("tour_step12_160x48", s);
+    insta::assert_snapshot!("tour_step12_80x24", render(&a, 80, 24));
+}
+
 /// A tour step: the preset state, its charts and the caption box.
 #[test]
 fn tour_step() {
@@ -308,7 +349,7 @@ fn tour_step() {
     assert_eq!(a.ui.charts[0], ChartKind::AreaRatio);
     assert!(a.ui.all_models && a.params.scene.surface_energy_j_m2() == 0.0);
     let s = render(&a, 80, 24);
-    assert!(s.contains("tour 2/11") && s.contains("How much area?"), "{s}");
+    assert!(s.contains("tour 2/12") && s.contains("How much area?"), "{s}");
     insta::assert_snapshot!("tour_step2_80x24", s);
     insta::assert_snapshot!("tour_step2_160x48", render(&a, 160, 48));
     // every size, tiny ones included, draws without a panic
@@ -488,7 +529,7 @@ fn scale_view() {
     compute_now(&mut t, &mut Caches::default());
     assert!(t.ui.playing && t.scale_frame().map(|f| f.0) == Some(0));
     let s = render(&t, 80, 24);
-    assert!(s.contains("tour 1/11") && s.contains("1/48 ▶"), "{s}");
+    assert!(s.contains("tour 1/12") && s.contains("1/48 ▶"), "{s}");
     insta::assert_snapshot!("tour_step1_80x24", s);
     for (w, h) in [(60, 20), (20, 5), (1, 1)] {
         draw_only(&t, w, h);

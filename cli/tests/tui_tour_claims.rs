@@ -7,15 +7,17 @@
 //! bounds, or an order against another quantity or scene. It also checks that every number
 //! a caption quotes is covered by a check, that a step selects the knob its caption tells the
 //! class to turn, and that a caption citing GFMD shows GFMD data (the preset's reference
-//! points) in one of its charts.
+//! points or the GFMD points the library stores for the scene) in one of its charts.
 
 use asperity::input::model::Model;
+use asperity::input::preset::ReferencePoint;
 use asperity::input::scene::Scene;
 use asperity::theory::closed_form;
 use asperity::theory::engine::{self, Options};
 use asperity::theory::sweep::SweepSpec;
 use asperity_cli::tui::charts::ChartKind;
 use asperity_cli::tui::effects::worker;
+use asperity_cli::tui::model::stored_gfmd::stored_gfmd;
 use asperity_cli::tui::tour::{Check, Knob, Side, Step, Tour, BUILTIN};
 use std::sync::atomic::AtomicBool;
 
@@ -37,13 +39,19 @@ fn scene_of(step: &Step, model: Option<u8>, p: Option<f64>, g: Option<f64>, t: O
     s
 }
 
+/// The reference points the explorer draws for `scene`: the preset's, then the GFMD points
+/// the library stores for the scene's case.
+fn shown_references(step: &Step, scene: &Scene) -> Vec<ReferencePoint> {
+    let mut out = step.preset.reference.clone();
+    out.extend(stored_gfmd(&step.preset, scene));
+    out
+}
+
 /// The engine's value of `quantity` at `scene` (`a_r` for `W`).
 fn quantity(step: &Step, q: &str, scene: &Scene, a_r: Option<f64>) -> f64 {
     let p = scene.pressure();
     if let Some(r) = q.strip_prefix("reference:") {
-        let hits: Vec<f64> = step
-            .preset
-            .reference
+        let hits: Vec<f64> = shown_references(step, scene)
             .iter()
             .filter(|x| x.quantity == r && (x.pressure / p - 1.0).abs() < 1e-9)
             .map(|x| x.value)
@@ -262,7 +270,7 @@ fn a_caption_citing_gfmd_shows_gfmd_data() {
             }
             seen += 1;
             let s = &step.scene;
-            let shown = step.preset.reference.iter().any(|r| {
+            let shown = shown_references(step, s).iter().any(|r| {
                 r.gamma.is_none_or(|g| g == s.surface_energy_j_m2())
                     && step.charts.iter().any(|k| shows_reference(*k, &r.quantity))
             });

@@ -3,7 +3,7 @@
 //!
 //! ```text
 //! asperity figure --list
-//! asperity figure 1|2|...|8|table-1|FILE.toml [--format chart|table|csv|json]
+//! asperity figure 1|2|...|8|8-log|table-1|FILE.toml [--format chart|table|csv|json]
 //!                 [--svg FILE] [--png FILE] [--gfmd [--grid N] [--seed S]] [--points N]
 //!                 [--model 1,2,3,4,yp08,xu24]
 //!                 [--surface FILE [--size L] [--height-unit U] [--periodic] | --psd FILE.csv]
@@ -38,8 +38,8 @@ pub enum FigureFormat {
 /// Arguments of `figure`.
 #[derive(Debug, Clone, Args)]
 pub struct FigureArgs {
-    /// 1 … 8, table-1, or a figure TOML file.
-    #[arg(allow_hyphen_values = true)]
+    /// The figure: one of `spec::ids()` or a figure TOML file (the help lists them).
+    #[arg(allow_hyphen_values = true, help = spec::allowed())]
     pub id: Option<String>,
     /// Name every figure with one line.
     #[arg(long)]
@@ -123,7 +123,7 @@ pub fn run(args: &FigureArgs) -> Result<()> {
         return Err(Error::field(
             "figure",
             "(none)",
-            "1, 2, 3, 4, 5, 6, 7, 8, table-1 or a figure TOML file (--list names them)",
+            format!("{} (--list names them)", spec::allowed()),
         ));
     };
     let gfmd = if args.gfmd {
@@ -143,7 +143,7 @@ pub fn run(args: &FigureArgs) -> Result<()> {
         return Err(Error::field("--height", args.height, "10 <= height <= 1000"));
     }
     let on = measured(args)?;
-    let data = if id == "table-1" {
+    let data = if id == spec::TABLE_1 {
         if let Some(m) = &on {
             return Err(Error::field(
                 if args.source.psd.is_some() {

@@ -61,7 +61,7 @@ pub enum Command {
     Sweep(sweep::SweepArgs),
     /// Brute-force GFMD run on a reduced grid, compared with the theory on the same surface.
     Gfmd(gfmd::GfmdArgs),
-    /// A figure or table of the paper (1-8, table-1): data, a text chart, SVG/PNG (--list names them).
+    /// A figure or table of the paper: data, a text chart, SVG/PNG (--list names them).
     Figure(figure::FigureArgs),
     /// Fit coefficients of the custom model (c1, c2, alpha, k_griffith, w0) to reference data.
     Gauge(gauge::GaugeArgs),

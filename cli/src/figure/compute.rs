@@ -279,7 +279,9 @@ fn paper_series(spec: &FigureSpec, on: Option<&Measured>, data: &mut FigureData)
         let colour = of
             .clone()
             .find_map(|p| p.model)
-            .map_or(role_colour(Role::Reference), |m| model_colour(usize::from(m) - 1));
+            .map_or(role_colour(Role::Reference), |m| {
+                model_colour(Model::named(m).map_or(4, |m| model_slot(&m)))
+            });
         data.series.push(DataSeries {
             name: l.to_string(),
             style: SeriesStyle::Points,

@@ -186,7 +186,7 @@ pub fn list() -> Vec<(String, String)> {
             (id.to_string(), d)
         })
         .collect();
-    out.push(("table-1".into(), table1::DESCRIPTION.into()));
+    out.push((spec::TABLE_1.into(), table1::DESCRIPTION.into()));
     out
 }
 

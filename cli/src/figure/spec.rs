@@ -57,6 +57,19 @@ pub const BUILTIN: [(&str, &str); 9] = [
     ("8-log", include_str!("../../../figures/fig-8-log.toml")),
 ];
 
+/// The id of Table 1 of \[S\], the one figure id that is computed without a figure file.
+pub const TABLE_1: &str = "table-1";
+
+/// Every id `asperity figure` accepts, in the order `--list` names them.
+pub fn ids() -> Vec<&'static str> {
+    BUILTIN.iter().map(|(id, _)| *id).chain([TABLE_1]).collect()
+}
+
+/// The ids a message or the help names as allowed: "1, 2, …, table-1 or a figure TOML file".
+pub fn allowed() -> String {
+    format!("{} or a figure TOML file", ids().join(", "))
+}
+
 /// The x axis of a figure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -353,11 +366,7 @@ pub fn resolve(id_or_path: &str) -> Result<FigureSpec> {
     if p.is_file() {
         return FigureSpec::load(p);
     }
-    Err(Error::field(
-        "figure",
-        asperity::error::fmt_text(id_or_path),
-        "1, 2, 3, 4, 5, 6, 7, 8, 8-log, table-1 or a figure TOML file",
-    ))
+    Err(Error::field("figure", asperity::error::fmt_text(id_or_path), allowed()))
 }
 /// The scene of a curve: the preset's, then the figure's overrides, then the curve's.
 pub fn curve_scene(

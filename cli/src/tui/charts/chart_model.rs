@@ -7,6 +7,7 @@ use crate::tui::charts::plot::{self, Scale};
 use crate::tui::model::app::App;
 use crate::tui::model::data::{PointData, SweepData};
 use crate::tui::model::kinds::{overlay_models, slot, slot_name, ChartKind};
+use crate::tui::model::stored_gfmd::stored_gfmd;
 use asperity::input::model::Model;
 
 /// How a series is drawn: the file renderer's style, so the screen and the `s` export agree
@@ -134,7 +135,7 @@ pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T
     if !app.ui.all_models {
         return Vec::new();
     }
-    overlay_models(&app.params.scene.model())
+    overlay_models(&app.params.scene)
         .into_iter()
         .filter(|m| slot(m) != slot(&app.params.scene.model()))
         .filter_map(|m| get(app, &m).map(|d| (slot(&m), d)))
@@ -234,17 +235,21 @@ pub fn path_row(app: &App) -> Option<&crate::tui::model::data::BranchRow> {
         .flatten()
 }
 
-pub fn references<'a>(
-    app: &'a App,
-    quantity: &'a str,
-) -> impl Iterator<Item = &'a asperity::input::preset::ReferencePoint> {
+/// The reference points of `quantity`: the preset's `[[reference]]` values, then the GFMD
+/// points the library stores for the scene's case ([`stored_gfmd`]).
+pub fn references(app: &App, quantity: &str) -> Vec<asperity::input::preset::ReferencePoint> {
     // a measured surface is another system: the preset's reference values are not its own
-    let own = crate::tui::model::words::surface_name(&app.params.scene).is_none();
-    app.params
-        .preset
+    if crate::tui::model::words::surface_name(&app.params.scene).is_some() {
+        return Vec::new();
+    }
+    let preset = &app.params.preset;
+    preset
         .reference
         .iter()
-        .filter(move |r| own && r.quantity == quantity)
+        .cloned()
+        .chain(stored_gfmd(preset, &app.params.scene))
+        .filter(|r| r.quantity == quantity)
+        .collect()
 }
 
 /// Legend name of a reference point: its source, and its conditions where they differ from
@@ -273,7 +278,7 @@ pub fn reference_name(app: &App, r: &asperity::input::preset::ReferencePoint, wi
 pub fn reference_series(app: &App, quantity: &str, y: impl Fn(f64, f64) -> f64) -> Vec<Series> {
     let mut out: Vec<Series> = Vec::new();
     for r in references(app, quantity) {
-        let name = reference_name(app, r, true);
+        let name = reference_name(app, &r, true);
         let pt = (r.pressure, y(r.pressure, r.value));
         match out.iter_mut().find(|s| s.name == name) {
             Some(s) => s.points.push(pt),

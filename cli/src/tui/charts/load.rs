@@ -362,7 +362,7 @@ pub fn thickness(app: &App) -> ChartModel {
         if (r.pressure / app.params.scene.pressure() - 1.0).abs() > 1e-9 {
             continue;
         }
-        let name = reference_name(app, r, false);
+        let name = reference_name(app, &r, false);
         match refs.iter_mut().find(|s| s.name == name) {
             Some(s) => s.points.push((t, r.value)),
             None => refs.push(Series {

@@ -19,8 +19,8 @@
 //! | `psd`        | C(q) of the scene's spectrum (a preset's or a measured one), cut-offs, self-affine fit | §1 |
 //!
 //! Stresses and pressures are reduced by E*ḡ (σ* = σ/E*ḡ, p* = p/E*ḡ), the gap by h_rms;
-//! Pr(σ*) is a density in σ* (∫Pr dσ* = a_r). With `M` every model (1–4, and the custom one
-//! when it is selected) is drawn with its own colour and marker. The preset's `[[reference]]`
+//! Pr(σ*) is a density in σ* (∫Pr dσ* = a_r). With `M` every model (1–4, model 5 on an
+//! adhesive scene, and the custom one when it is selected) is drawn with its own colour and marker. The preset's `[[reference]]`
 //! points are drawn as points named by their source (and the conditions, where they differ
 //! from the scene's).
 

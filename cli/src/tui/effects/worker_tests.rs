@@ -76,6 +76,32 @@ fn thickness_sweep_tends_to_the_semi_infinite_body() {
         .is_none());
 }
 
+/// Model 5 takes its W(0) from each scene's own γ̃_glo, which the slab's thickness sets: the
+/// thickness chart's a_r at a thin slab is the engine's for that scene (the model resolved at
+/// that thickness), not the model as resolved for the preset's half-space.
+#[test]
+fn the_thickness_chart_resolves_model_5_at_each_thickness() {
+    let mut scene = asperity::input::preset::Preset::resolve("system-2")
+        .unwrap()
+        .scene()
+        .unwrap();
+    scene.set_model(Model::named(5).unwrap()).unwrap();
+    let td = thickness_sweep(&scene, &AtomicBool::new(false)).unwrap();
+    let i = td.t.iter().position(|&t| t >= 0.15).unwrap();
+    let mut thin = scene.clone();
+    thin.set_thickness_qr(td.t[i]).unwrap();
+    assert_ne!(thin.model(), scene.model(), "the model follows the thickness");
+    let ev = engine::evaluate(&thin, &Options::default()).unwrap();
+    let rel = asperity::tolerances::CHART_ACCURACY_REL;
+    assert!(
+        (td.a_r[i] / ev.stats.a_r - 1.0).abs() < rel,
+        "t·q_r {}: chart {} against the engine's {}",
+        td.t[i],
+        td.a_r[i],
+        ev.stats.a_r
+    );
+}
+
 #[test]
 #[ignore = "slow (~30 s on a loaded 2-core machine: a hard adhesive case); cargo test -- --ignored"]
 fn a_point_without_error_bar_is_shown_with_the_reason() {

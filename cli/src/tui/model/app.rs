@@ -146,7 +146,7 @@ impl App {
         self.jobs.busy = true;
         self.jobs.busy_since = Some(std::time::Instant::now());
         let models = if self.ui.all_models {
-            charts::overlay_models(&self.params.scene.model())
+            charts::overlay_models(&self.params.scene)
                 .into_iter()
                 .filter(|m| charts::slot(m) != charts::slot(&self.params.scene.model()))
                 .collect()
@@ -312,7 +312,7 @@ impl App {
         let mut sw = Vec::new();
         let mut t = Vec::new();
         if self.ui.all_models {
-            for s in charts::overlay_models(&self.params.scene.model())
+            for s in charts::overlay_models(&self.params.scene)
                 .iter()
                 .filter_map(|m| self.with_model(m))
             {

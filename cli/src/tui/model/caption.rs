@@ -26,7 +26,7 @@ pub struct Press {
     /// The keys pressed, as `{key:KEY}` writes them, separated by spaces; the claims are
     /// about the last.
     pub key: String,
-    /// The model number (1–4) after the press.
+    /// The model number (1–5) after the press.
     pub model: Option<u8>,
     /// All models overlaid after the press.
     pub models: Option<bool>,

@@ -215,7 +215,7 @@ pub const TABLE: &[Binding] = &[
         keys: &[Key(KeyCode::Char('M'), NONE)],
         label: "M",
         action: Action::Models,
-        help: "overlay all models (1-4, custom) on the charts",
+        help: "overlay all models (1-5, custom) on the charts",
     },
     Binding {
         keys: &[Key(KeyCode::Char('t'), NONE)],

@@ -3,6 +3,7 @@
 //! the model slots are [`crate::looks`]'s).
 
 use asperity::input::model::{Model, ModelKind, FUDGE_GAMMA_DEFAULT};
+use asperity::input::scene::Scene;
 
 /// One chart of the selector.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -161,16 +162,21 @@ pub fn variants(current: &Model) -> [Model; 2] {
     })
 }
 
-/// The models drawn with `M`: 1–4, the current one when it is custom, and, when the current
-/// one is YP08 or Xu24, both variants (the explorer skips any the scene does not take:
-/// adhesion or a slab). The paper's four stay uncluttered where no variant is looked at.
-pub fn overlay_models(current: &Model) -> Vec<Model> {
+/// The models drawn with `M`: 1–4; model 5 on an adhesive scene (without adhesion it is model
+/// 3 exactly, so it would only hide model 3's curve); the current one when it is custom; and,
+/// when the current one is YP08 or Xu24, both variants (the explorer skips any the scene does
+/// not take: adhesion or a slab). The paper's four stay uncluttered where no variant is looked at.
+pub fn overlay_models(scene: &Scene) -> Vec<Model> {
+    let current = scene.model();
     let mut v: Vec<Model> = (1..=4).filter_map(|n| Model::named(n).ok()).collect();
+    if scene.surface_energy_j_m2() > 0.0 {
+        v.extend(Model::named(5).ok());
+    }
     if current.kind == ModelKind::Custom {
-        v.push(*current);
+        v.push(current);
     }
     if current.kind.is_fudge_variant() {
-        v.extend(variants(current));
+        v.extend(variants(&current));
     }
     v
 }

@@ -16,6 +16,7 @@ pub mod pins;
 pub mod progress;
 pub mod protocol;
 pub mod results;
+pub mod stored_gfmd;
 pub mod tour;
 pub mod tour_check;
 pub mod ui;

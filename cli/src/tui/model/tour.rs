@@ -15,7 +15,7 @@
 //! [[step]]
 //! title = "Roughness, scale by scale"
 //! preset = "system-1"          # optional (default: the tour's)
-//! model = 3                    # optional: 1-4 (default: the preset's)
+//! model = 3                    # optional: 1-5 (default: the preset's)
 //! pressure = 0.01              # optional p* (default: the preset's)
 //! thickness_qr = inf           # optional t*q_r (default: the preset's)
 //! gamma = 0.0                  # optional gamma_s in J/m^2 (default: the preset's)
@@ -291,9 +291,9 @@ fn parse_step(
         Some(m) => Some(
             u8::try_from(m)
                 .ok()
-                .filter(|m| (1..=4).contains(m))
+                .filter(|m| (1..=5).contains(m))
                 .and_then(|m| Model::named(m).ok())
-                .ok_or_else(|| err(at, "model", format!("{m}; allowed 1, 2, 3 or 4")))?,
+                .ok_or_else(|| err(at, "model", format!("{m}; allowed 1, 2, 3, 4 or 5")))?,
         ),
         None => None,
     };
@@ -441,6 +441,31 @@ caption = "a\nb\nc"
         assert_eq!(s.caption, ["a", "b", "c"]);
     }
 
+    #[test]
+    fn a_step_takes_model_5_resolved_for_its_scene() {
+        let text = GOOD
+            .replace("model = 2", "model = 5")
+            .replace("gamma = 0.0", "gamma = 0.1");
+        let t = Tour::parse(&text, "good").unwrap();
+        let m = t.steps[1].scene.model();
+        assert_eq!(m.number(), Some(5));
+        // its coefficients are the step's own scene's (γ̃_glo), as `m` or `--model 5` give them
+        let want = Preset::resolve("system-1")
+            .unwrap()
+            .scene()
+            .unwrap()
+            .apply(&Overrides {
+                model: Some(Model::named(5).unwrap()),
+                pressure: Some(0.02),
+                surface_energy_j_m2: Some(0.1),
+                ..Overrides::default()
+            })
+            .unwrap()
+            .model();
+        assert_eq!(m, want);
+        assert_ne!(m, Model::named(5).unwrap(), "model 5 left at γ̃_glo = 0");
+    }
+
     fn error(text: &str) -> String {
         Tour::parse(text, "bad.toml").unwrap_err().to_string()
     }
@@ -459,7 +484,7 @@ caption = "a\nb\nc"
              pr-loglog, area, area-ratio, thickness, scales, scales-area, stress, gap, psd"
         );
         let e = error(&GOOD.replace("model = 2", "model = 7"));
-        assert_eq!(e, "preset bad.toml: line 15: step[1].model: 7; allowed 1, 2, 3 or 4");
+        assert_eq!(e, "preset bad.toml: line 15: step[1].model: 7; allowed 1, 2, 3, 4 or 5");
         let e = error(&GOOD.replace("pressure = 0.02", "pressure = -1"));
         assert!(e.starts_with("preset bad.toml: line 16: step[1].pressure: "), "{e}");
         let e = error(&GOOD.replace("caption = \"a\\nb\\nc\"", "caption = \"only one\""));

@@ -136,9 +136,9 @@ fn chart_selector_focus_and_models_ask_for_data() {
     assert!(r.models.is_empty());
     key(&mut a, KeyCode::Char('M'));
     let r = a.take_request().unwrap();
-    // models 1, 2, 4 besides the current model 3
+    // models 1, 2, 4 and, on this adhesive scene, model 5 besides the current model 3
     let n: Vec<u8> = r.models.iter().filter_map(|m| m.number()).collect();
-    assert_eq!(n, [1, 2, 4]);
+    assert_eq!(n, [1, 2, 4, 5]);
     // only what is visible is asked for
     a.set_charts([ChartKind::Pr, ChartKind::PrLog, ChartKind::Pr]);
     let r = a.take_request().unwrap();
@@ -260,7 +260,7 @@ fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() 
     key(&mut a, KeyCode::Char('m'));
     assert_eq!(a.params.scene.model().kind, ModelKind::Xu24);
     // with a variant current, M draws both variants beside models 1–4
-    let kinds: Vec<ModelKind> = crate::tui::model::kinds::overlay_models(&a.params.scene.model())
+    let kinds: Vec<ModelKind> = crate::tui::model::kinds::overlay_models(&a.params.scene)
         .iter()
         .filter_map(|m| a.params.scene.clone().with_model(*m).ok())
         .map(|s| s.model().kind)
@@ -274,10 +274,7 @@ fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() 
     assert_eq!(a.params.scene.model().number(), Some(5));
     key(&mut a, KeyCode::Char('m'));
     assert_eq!(a.params.scene.model().number(), Some(1));
-    assert_eq!(
-        crate::tui::model::kinds::overlay_models(&a.params.scene.model()).len(),
-        4
-    );
+    assert_eq!(crate::tui::model::kinds::overlay_models(&a.params.scene).len(), 4);
     // a slab is refused while a variant is current, and the scene stays as it was
     for _ in 0..5 {
         key(&mut a, KeyCode::Char('m'));
@@ -356,10 +353,11 @@ fn a_tour_step_selects_the_knob_its_caption_names() {
     let mut a = app();
     a.start_tour(Tour::resolve("wang-muser").unwrap(), 0);
     assert_eq!(a.selected_param(), Param::Pressure);
-    let n = a.ui.tour.as_ref().unwrap().tour.steps.len();
+    let steps = &a.ui.tour.as_ref().unwrap().tour.steps;
+    let jump = steps.iter().position(|s| s.title == "Jump into contact").unwrap();
     a.act(Action::Up);
-    a.tour_go(n as i32);
-    let step = &a.ui.tour.as_ref().unwrap().tour.steps[n - 1];
+    a.tour_go(jump as i32);
+    let step = &a.ui.tour.as_ref().unwrap().tour.steps[jump];
     assert_eq!(step.select, Some(crate::tui::model::tour::Knob::Pressure));
     assert_eq!(a.selected_param(), Param::Pressure);
     a.tour_go(-2);
@@ -535,4 +533,33 @@ fn j_and_k_scroll_a_cut_caption_and_a_new_step_starts_at_its_top() {
     assert_eq!(a.ui.caption_scroll, most - 2);
     key(&mut a, KeyCode::Right);
     assert_eq!(a.ui.caption_scroll, 0);
+}
+
+#[test]
+fn m_overlays_model_5_where_adhesion_sets_it_apart_from_model_3() {
+    let mut a = app();
+    assert!(a.params.scene.surface_energy_j_m2() > 0.0);
+    a.take_request();
+    key(&mut a, KeyCode::Char('M'));
+    let r = a.take_request().unwrap();
+    let five: Vec<&Model> = r.models.iter().filter(|m| m.number() == Some(5)).collect();
+    assert_eq!(five.len(), 1, "{:?}", r.models);
+    // the request carries model 5 as the scene resolves it (W(0) from its own γ̃_glo), so the
+    // overlay's keys find the reply
+    let scene = a.params.scene.clone().with_model(*five[0]).unwrap();
+    assert_eq!(scene.model().kind, ModelKind::Five);
+    assert_eq!(a.overlay_keys().0.len(), 5);
+    // without adhesion model 5 is model 3: it is left out, not drawn over model 3
+    a.set_typed(Param::Gamma, "0").unwrap();
+    let r = a.take_request().unwrap();
+    let n: Vec<u8> = r.models.iter().filter_map(|m| m.number()).collect();
+    assert_eq!(n, [1, 2, 4]);
+    // with model 5 current, the paper's four are overlaid besides it
+    a.set_typed(Param::Gamma, "0.1").unwrap();
+    while a.params.scene.model().number() != Some(5) {
+        key(&mut a, KeyCode::Char('m'));
+    }
+    let r = a.take_request().unwrap();
+    let n: Vec<u8> = r.models.iter().filter_map(|m| m.number()).collect();
+    assert_eq!(n, [1, 2, 3, 4]);
 }
