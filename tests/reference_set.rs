@@ -15,6 +15,7 @@ use std::sync::atomic::AtomicBool;
 const GRID: usize = 256;
 const RUNS: &str = include_str!("../data/reference/runs-256.csv");
 const SET: &str = include_str!("../data/reference/reference-set-256.csv");
+const MODEL5: &str = include_str!("../data/reference/theory-model5-256.csv");
 
 /// The rows of a CSV with a header, as maps from column to cell.
 fn table(text: &str) -> Vec<HashMap<String, String>> {
@@ -115,7 +116,7 @@ fn a_subset_of_the_reference_set_is_reproduced_within_its_error_bars() {
 }
 
 mod trust {
-    use super::{num, table, SET};
+    use super::{num, table, MODEL5, SET};
     use asperity::fit::trust::assess;
     use asperity::input::preset::Preset;
 
@@ -158,6 +159,34 @@ mod trust {
         assert!(tr.same_model);
         assert!(tr.a_r_worst_ratio >= (tr.a_r_log_error).exp() - 1e-12);
         assert!(tr.summary.starts_with("inside"), "{}", tr.summary);
+    }
+
+    #[test]
+    fn model_5_reads_its_own_measured_error() {
+        // the same stored point as above, with model 5: the error of model 5's own column
+        let five = table(MODEL5);
+        let row = five
+            .iter()
+            .find(|r| {
+                r["thickness_qr"] == "inf"
+                    && r["gamma_factor"] == "1"
+                    && r["branch"] == "loading"
+                    && (num(r, "p").unwrap() / 1e-3 - 1.0).abs() < 1e-9
+            })
+            .expect("model 5's column at the stored point");
+        let p = num(row, "p").unwrap();
+        let scene = system2(f64::INFINITY, 0.157, p)
+            .with_model(asperity::input::model::Model::named(5).unwrap())
+            .unwrap();
+        let tr = assess(&scene);
+        assert_eq!(tr.measured_model, 5);
+        assert!(tr.same_model, "{}", tr.summary);
+        let first = tr.nearest[0];
+        assert!(first.distance < 1e-3, "{first:?}");
+        assert!((first.a_r_theory / num(row, "theory_a_r").unwrap() - 1.0).abs() < 1e-9);
+        // and it is not model 4's
+        let m4 = assess(&system2(f64::INFINITY, 0.157, p));
+        assert_ne!(m4.nearest[0].a_r_theory, first.a_r_theory);
     }
 
     #[test]

@@ -8,6 +8,10 @@
 //! The data are `data/reference/reference-set-256.csv` (one row per case, branch and load) and
 //! `data/reference/pull-off-256.csv` (per case: γ̃_glo, the pull-off), read once.
 //!
+//! Model 5's theory columns (`data/reference/theory-model5-256.csv`, the same points, model 5 on
+//! the same maps) are attached to system II's points, so that the trust read-out can give
+//! model 5's own measured error.
+//!
 //! Beside it, the *bandwidth set* ([`bandwidth_set`], `data/reference/bandwidth-set.csv`): the
 //! adhesive system II cases' loading sweeps at p* = 10⁻³…10⁻² on wider grids (512², 1024²:
 //! λ_r/λ_s = 32, 64), the data that tell how the theory's error moves with the bandwidth.
@@ -19,6 +23,7 @@ use std::sync::OnceLock;
 const SET_CSV: &str = include_str!("../../data/reference/reference-set-256.csv");
 const CASES_CSV: &str = include_str!("../../data/reference/pull-off-256.csv");
 const BANDWIDTH_CSV: &str = include_str!("../../data/reference/bandwidth-set.csv");
+const MODEL5_CSV: &str = include_str!("../../data/reference/theory-model5-256.csv");
 /// Grid side of the stored set.
 pub const SET_GRID: usize = 256;
 
@@ -54,6 +59,10 @@ pub struct ReferencePoint {
     pub theory_a_r: f64,
     /// The theory's ū/h_rms on the same maps; NaN where it has none.
     pub theory_mean_gap_rel: f64,
+    /// Model 5's a_r on the same maps and branch (mean over seeds; NaN where not computed).
+    pub theory5_a_r: f64,
+    /// Model 5's ū/h_rms there (NaN where not computed).
+    pub theory5_mean_gap_rel: f64,
 }
 
 /// The cells of a CSV with a header, row by row.
@@ -80,9 +89,24 @@ fn system_of(row: &HashMap<&str, &str>) -> u8 {
         .unwrap_or(0)
 }
 
-/// One set's rows; γ̃_glo from the row's own `gamma_glo` column, else from `cases`.
-fn parse(set_csv: &str, cases_csv: &str) -> Vec<ReferencePoint> {
+/// One set's rows; γ̃_glo from the row's own `gamma_glo` column, else from `cases`; model 5's
+/// columns from `model5` where it has the point.
+fn parse(set_csv: &str, cases_csv: &str, model5: &str) -> Vec<ReferencePoint> {
     let cases = rows(cases_csv);
+    let five = rows(model5);
+    let five_at = |sys: u8, t: f64, f: f64, branch: &str, p: f64| {
+        five.iter()
+            .find(|c| {
+                system_of(c) == sys
+                    && num(c, "thickness_qr") == t
+                    && num(c, "gamma_factor") == f
+                    && c.get("branch") == Some(&branch)
+                    && (num(c, "p") / p - 1.0).abs() < 1e-6
+            })
+            .map_or((f64::NAN, f64::NAN), |c| {
+                (num(c, "theory_a_r"), num(c, "theory_mean_gap_rel"))
+            })
+    };
     let glo = |sys: u8, t: f64, f: f64| {
         cases
             .iter()
@@ -96,6 +120,7 @@ fn parse(set_csv: &str, cases_csv: &str) -> Vec<ReferencePoint> {
             let pair = |k: &str| (num(r, k), num(r, &format!("{k}_err")));
             let grid = num(r, "grid");
             let own_glo = num(r, "gamma_glo");
+            let five = five_at(system, t, f, r.get("branch").copied().unwrap_or(""), num(r, "p"));
             ReferencePoint {
                 system,
                 grid: if grid.is_finite() { grid as usize } else { SET_GRID },
@@ -119,6 +144,8 @@ fn parse(set_csv: &str, cases_csv: &str) -> Vec<ReferencePoint> {
                 theory_model: if system == 1 { 3 } else { 4 },
                 theory_a_r: num(r, "theory_a_r"),
                 theory_mean_gap_rel: num(r, "theory_mean_gap_rel"),
+                theory5_a_r: five.0,
+                theory5_mean_gap_rel: five.1,
             }
         })
         .collect()
@@ -127,7 +154,7 @@ fn parse(set_csv: &str, cases_csv: &str) -> Vec<ReferencePoint> {
 /// The stored set (256²), parsed once.
 pub fn reference_set() -> &'static [ReferencePoint] {
     static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
-    SET.get_or_init(|| parse(SET_CSV, CASES_CSV))
+    SET.get_or_init(|| parse(SET_CSV, CASES_CSV, MODEL5_CSV))
 }
 
 /// One case's pull-off in the stored set (`pull-off-256.csv`).
@@ -169,7 +196,7 @@ pub fn pull_offs() -> &'static [ReferencePullOff] {
 /// once.
 pub fn bandwidth_set() -> &'static [ReferencePoint] {
     static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
-    SET.get_or_init(|| parse(BANDWIDTH_CSV, ""))
+    SET.get_or_init(|| parse(BANDWIDTH_CSV, "", ""))
 }
 
 #[cfg(test)]
@@ -187,6 +214,11 @@ mod tests {
             assert!(p.grid > SET_GRID, "{p:?}");
             assert!(p.gamma_glo > 0.0 && p.a_r.0 > 0.0 && p.a_r.0 <= 1.0, "{p:?}");
             assert_eq!(p.branch, PathBranch::Loading);
+        }
+        // model 5's columns: on every system II point with a theory, none elsewhere
+        for p in reference_set() {
+            let want = p.system == 2 && p.p > 0.0 && p.theory_a_r.is_finite();
+            assert_eq!(p.theory5_a_r.is_finite(), want, "{p:?}");
         }
         let po = pull_offs();
         assert_eq!(po.len(), 29);

@@ -12,8 +12,9 @@
 //!
 //! The error read-out is over the [`NEAREST`] nearest loading points that have a theory value:
 //! the mean and largest |ln(theory/GFMD)| of a_r and of ū/h_rms, for the model the set's theory
-//! columns hold (the preset's: 4 for system II). For another model the numbers are still
-//! given, labelled with the model they were measured for.
+//! columns hold (the preset's: 4 for system II, 3 for system I; model 5 has its own columns on
+//! system II). For another model the numbers are still given, labelled with the model they were
+//! measured for.
 
 use super::reference_set::{reference_set, ReferencePoint, SET_GRID};
 use crate::input::scene::Scene;
@@ -151,9 +152,18 @@ pub fn assess(scene: &Scene) -> Trust {
     if let Some(line) = model_five_bandwidth(scene) {
         outside.push(line);
     }
+    // model 5 reads its own columns where the set has them, any other model the set's
+    let five = scene.model().kind == crate::input::model::ModelKind::Five;
+    let theory = |r: &ReferencePoint| -> (f64, f64, u8) {
+        if five && r.theory5_a_r > 0.0 {
+            (r.theory5_a_r, r.theory5_mean_gap_rel, 5)
+        } else {
+            (r.theory_a_r, r.theory_mean_gap_rel, r.theory_model)
+        }
+    };
     let mut near: Vec<(f64, &ReferencePoint)> = reference_set()
         .iter()
-        .filter(|r| r.branch == PathBranch::Loading && r.p > 0.0 && r.theory_a_r > 0.0 && r.a_r.0 > 0.0)
+        .filter(|r| r.branch == PathBranch::Loading && r.p > 0.0 && theory(r).0 > 0.0 && r.a_r.0 > 0.0)
         .map(|r| (distance(p, glo, tau, r), r))
         .collect();
     near.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -166,9 +176,9 @@ pub fn assess(scene: &Scene) -> Trust {
             gamma_glo: r.gamma_glo,
             p: r.p,
             a_r_gfmd: r.a_r.0,
-            a_r_theory: r.theory_a_r,
+            a_r_theory: theory(r).0,
             mean_gap_rel_gfmd: r.mean_gap_rel.0,
-            mean_gap_rel_theory: r.theory_mean_gap_rel.is_finite().then_some(r.theory_mean_gap_rel),
+            mean_gap_rel_theory: theory(r).1.is_finite().then_some(theory(r).1),
             distance: d,
         })
         .collect();
@@ -180,9 +190,9 @@ pub fn assess(scene: &Scene) -> Trust {
         .filter_map(|n| n.mean_gap_rel_theory.map(|g| (g / n.mean_gap_rel_gfmd).ln().abs()))
         .collect();
     let mean_gap_log_error = (!gaps.is_empty()).then(|| gaps.iter().sum::<f64>() / gaps.len() as f64);
-    let measured_model = near.first().map_or(4, |(_, r)| r.theory_model);
+    let measured_model = near.first().map_or(4, |(_, r)| theory(r).2);
     let same_model = scene.model.number() == Some(measured_model);
-    let summary = summary(
+    let mut summary = summary(
         &outside,
         measured_model,
         same_model,
@@ -190,6 +200,11 @@ pub fn assess(scene: &Scene) -> Trust {
         a_r_worst_ratio,
         mean_gap_log_error,
     );
+    // the set's maps are narrower than most scenes: say at which bandwidth it was measured
+    let bw = scene.spectrum().q_s() / scene.spectrum().q_r();
+    if bw > 1.5 * SET_BANDWIDTH && bw.is_finite() {
+        summary += &format!(" (measured on the set's maps, λ_r/λ_s = {SET_BANDWIDTH:.0}; this scene has {bw:.0})");
+    }
     Trust {
         inside: outside.is_empty(),
         outside,

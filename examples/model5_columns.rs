@@ -1,0 +1,50 @@
+//! Model 5's theory columns for the reference set (docs/reference-set.md, "The trust
+//! read-out"): at every stored point of system II (adhesive or not), model 5's a_r and ū/h_rms on each map GFMD
+//! ran, mean over the maps, the branch the path is on (as the set's model-4 columns).
+//!
+//! `cargo run --release --example model5_columns > data/reference/theory-model5-256.csv`
+use asperity::fit::reference_set::reference_set;
+use asperity::fit::set_gauge::{case_errors, cases_of, ModelChoice};
+use asperity::input::model::Model;
+use asperity::theory::cycle::PathBranch;
+use asperity::theory::engine::Options;
+use rayon::prelude::*;
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let cases = cases_of(reference_set(), 3)?;
+    let model = ModelChoice::Fixed(Model::named(5)?);
+    let opts = Options::default();
+    let rows: Vec<Vec<String>> = cases
+        .par_iter()
+        .map(|c| -> Result<Vec<String>, asperity::error::Error> {
+            let errs = case_errors(c, &model, &opts)?;
+            Ok(c.points
+                .iter()
+                .filter_map(|p| {
+                    let e = errs.iter().find(|e| e.branch == p.branch && e.p == p.p)?;
+                    let branch = match p.branch {
+                        PathBranch::Loading => "loading",
+                        PathBranch::Unloading => "unloading",
+                    };
+                    let t = if c.thickness_qr.is_finite() {
+                        format!("{}", c.thickness_qr)
+                    } else {
+                        "inf".into()
+                    };
+                    Some(format!(
+                        "system-2,{t},{},{branch},{:.10e},{:.10e},{:.10e}",
+                        c.gamma_factor,
+                        p.p,
+                        p.a_r.0 * e.ln_a_r.exp(),
+                        p.mean_gap_rel.0 * e.ln_mean_gap.exp()
+                    ))
+                })
+                .collect())
+        })
+        .collect::<Result<_, _>>()?;
+    println!("system,thickness_qr,gamma_factor,branch,p,theory_a_r,theory_mean_gap_rel");
+    for r in rows.into_iter().flatten() {
+        println!("{r}");
+    }
+    Ok(())
+}
