@@ -1,5 +1,5 @@
 //! The parameter panel: the knobs, the read-outs of the current point (a_r, σ̄_c*, ū/h_rms,
-//! γ̃_glo, convergence, error, time), the branches of a hysteresis window, the GFMD numbers and
+//! γ̃_glo, convergence, error, the trust read-out, time), the branches of a hysteresis window, the GFMD numbers and
 //! the scene in physical units.
 
 use crate::tui::charts::plot;
@@ -140,6 +140,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
             }
         }),
     );
+    row("trust", trust_value(&app.params.scene));
     for (k, v) in gfmd_rows(app) {
         row(&k, v);
     }
@@ -181,6 +182,18 @@ fn branch_lines(
 }
 
 /// The scene in physical units: p, E*, h_rms, ḡ, λ_r/λ_s.
+/// The panel's short form of the trust read-out ([`asperity::fit::trust`]): the theory's
+/// measured a_r error at the nearest GFMD reference points and whose model it is, or that the
+/// scene lies outside the reference set (`run`'s `trust` line says how far).
+fn trust_value(sc: &asperity::input::scene::Scene) -> String {
+    let t = asperity::fit::trust::assess(sc);
+    if !t.inside {
+        return "outside GFMD set".into();
+    }
+    let pct = 100.0 * (t.a_r_log_error.exp() - 1.0);
+    format!("±{pct:.0}% a_r (m{})", t.measured_model)
+}
+
 fn scene_rows(sc: &asperity::input::scene::Scene) -> Vec<Line<'static>> {
     [
         ("p", si(sc.pressure() * sc.stress_unit(), "Pa")),
