@@ -759,3 +759,24 @@ fn the_gap_bracket_is_a_filled_band_in_the_files() {
     );
     assert!(text.contains("<polygon"), "no filled band");
 }
+
+#[test]
+fn the_too_small_screen_is_drawn_exactly_where_the_update_ignores_keys() {
+    use asperity_cli::tui::model::ui::too_small;
+    let a = app("system-1");
+    let (w, h) = view::MIN_SIZE;
+    for (cols, rows) in [(w, h), (w - 1, h), (w, h - 1), (w + 20, h + 4), (50, 15), (40, 4)] {
+        let s = render(&a, cols, rows);
+        assert_eq!(
+            s.contains("terminal too small"),
+            too_small(cols, rows),
+            "{cols}×{rows}\n{s}"
+        );
+    }
+    // where it has room, the screen says that other keys do nothing
+    let s = render(&a, 50, 15);
+    assert!(s.contains("q quits") && s.contains(view::TOO_SMALL_OTHER_KEYS), "{s}");
+    // where not, it still says how to quit
+    let s = render(&a, 30, 3);
+    assert!(s.contains("q quits") && !s.contains("other keys"), "{s}");
+}

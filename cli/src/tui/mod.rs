@@ -189,11 +189,19 @@ pub fn run_app(mut app: App) -> Result<()> {
             .map_err(|e| Error::io("capture the mouse", e))?;
     }
     spawn_input(tx)?;
+    // the update knows the terminal's size (a key on the "too small" screen only quits)
+    let size = terminal.size().map_err(|e| Error::io("read the terminal size", e))?;
+    let mut todo: Vec<Command> = update::update(
+        &mut app,
+        Msg::Resize {
+            cols: size.width,
+            rows: size.height,
+        },
+    );
 
     let mut trace = Trace::from_env();
     let panic_key = std::env::var("ASPERITY_PANIC_KEY").ok().and_then(|k| k.chars().next());
     // the one route out of the update: its commands, run in order before the next frame
-    let mut todo: Vec<Command> = Vec::new();
     loop {
         if run_commands(&mut app, &mut todo, &worker, &replies, &mut trace)? {
             return Ok(());
@@ -233,6 +241,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                     let size = terminal.size().map_err(|e| Error::io("read the terminal size", e))?;
                     pointer(&app, ratatui::layout::Rect::new(0, 0, size.width, size.height), m).map(|m| (m, None))
                 }
+                Incoming::Input(Event::Resize(cols, rows)) => Some((Msg::Resize { cols, rows }, None)),
                 Incoming::Input(_) => None,
                 Incoming::Reply(r) => Some((Msg::Reply(r), None)),
                 Incoming::InputClosed => return Ok(()),

@@ -9,6 +9,7 @@ use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use asperity::surface::heightmap::Surface;
 use asperity::theory::engine::{self, Options};
+use asperity::theory::knob::{knob_sweep, Knob, KnobPoint, KnobSpec};
 use asperity::theory::sweep::{self, SweepSpec};
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
@@ -115,18 +116,27 @@ pub fn preview_sweep(scene: &Scene, range: (f64, f64), cancel: &AtomicBool) -> R
     Ok(sd)
 }
 
-/// a_r at [`THICKNESS_POINTS`] log-spaced t·q_r in [`THICKNESS_RANGE`] and at t = ∞ (chart
-/// accuracy, each solve warm-started from the neighbouring thickness); a thickness where the
-/// solver fails is a gap (NaN), not an error. With adhesion also the adhesionless curve, and
-/// the hysteresis windows in t·q_r at this p*: every branch is found at each thickness (a_r of
-/// the loading branch, and of the unloading one where two are stable), a jump between two
-/// neighbours (a_r changing by more than [`JUMP_FACTOR`]) is searched for a thickness inside a
-/// window ([`window_between`], added to the curve), and each window's edges are found by
-/// bisection ([`asperity::theory::hysteresis::knob_edges_to`]).
+/// The chart's thicknesses: [`THICKNESS_POINTS`] log-spaced t·q_r over [`THICKNESS_RANGE`].
+pub fn thickness_spec() -> KnobSpec {
+    KnobSpec {
+        knob: Knob::Thickness,
+        from: THICKNESS_RANGE.0,
+        to: THICKNESS_RANGE.1,
+        points: THICKNESS_POINTS,
+    }
+}
+
+/// a_r at the chart's thicknesses ([`thickness_spec`]) by the library's knob sweep
+/// ([`knob_sweep`] at chart accuracy: each thickness its own scene, its model resolved for it)
+/// and at t = ∞; a thickness where the solver fails is a gap (NaN), not an error. With
+/// adhesion also the adhesionless curve, and the hysteresis windows in t·q_r at this p*: every
+/// branch is found at each thickness (a_r of the loading branch, and of the unloading one
+/// where two are stable), a jump between two neighbours (a_r changing by more than
+/// [`JUMP_FACTOR`]) is searched for a thickness inside a window ([`window_between`], added to
+/// the curve), and each window's edges are found by bisection
+/// ([`asperity::theory::hysteresis::knob_edges_to`]).
 pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessData> {
     use asperity::theory::hysteresis::{knob_edges_to, EdgeKind};
-    use asperity::theory::knob::{Knob, KnobPoint};
-    let grid = data::log_grid(THICKNESS_RANGE.0, THICKNESS_RANGE.1, THICKNESS_POINTS);
     let gamma = scene.surface_energy_j_m2();
     let mut opts = Options {
         sigma_points: 2,
@@ -134,65 +144,23 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
     };
     // every branch at each thickness: the windows' two stable ones
     opts.adhesion.explore_branches = gamma > 0.0;
-    let at = |th: f64, gamma: f64, warm: Option<&engine::Evaluation>| {
-        let mut s = scene.clone();
-        s.set_thickness_qr(th)?;
-        s.set_surface_energy_j_m2(gamma)?;
-        engine::evaluate_warm(&s, &opts, warm, Some(cancel))
-    };
-    // a solve that fails leaves a gap; cancelling ends the sweep
-    let keep = |r: Result<engine::Evaluation>| match r {
-        Err(Error::Cancelled) => Err(Error::Cancelled),
-        r => Ok(r),
-    };
-    // from thick to thin: the thick slab is the easier start
-    let mut evs: Vec<(f64, Result<engine::Evaluation>)> = Vec::with_capacity(grid.len());
-    for &th in grid.iter().rev() {
-        let warm = evs.last().and_then(|(_, e)| e.as_ref().ok());
-        let ev = keep(at(th, gamma, warm))?;
-        evs.push((th, ev));
-    }
-    evs.reverse();
+    let mut points = knob_sweep(scene, &thickness_spec(), &opts, false, Some(cancel))?;
     if gamma > 0.0 {
-        let probe = |th: f64| keep(at(th, gamma, None)).map(|r| r.ok());
-        let mut k = 0;
-        while k + 1 < evs.len() {
-            let inside = match (&evs[k], &evs[k + 1]) {
-                ((t0, Ok(lo)), (t1, Ok(hi))) => window_between(&probe, (*t0, lo), (*t1, hi))?,
-                _ => None,
-            };
-            if let Some((th, ev)) = inside {
-                evs.insert(k + 1, (th, Ok(ev)));
-            }
-            k += 1;
-        }
+        add_windows(scene, &opts, cancel, &mut points)?;
     }
-    let t: Vec<f64> = evs.iter().map(|(t, _)| *t).collect();
-    let a_r: Vec<f64> = evs
-        .iter()
-        .map(|(_, e)| e.as_ref().map_or(f64::NAN, |e| e.stats.a_r))
-        .collect();
+    let a_r: Vec<f64> = points.iter().map(a_r_of).collect();
     if a_r.iter().all(|a| !a.is_finite()) {
         return Err(Error::NotConverged {
             solver: asperity::error::Solver::ThicknessSweep,
             reason: "no thickness converged".into(),
         });
     }
-    let unloading: Vec<f64> = evs
+    let unloading: Vec<f64> = points
         .iter()
-        .map(|(_, e)| e.as_ref().ok().and_then(|e| e.unloading_a_r).unwrap_or(f64::NAN))
+        .map(|p| p.result.as_ref().ok().and_then(|e| e.unloading_a_r).unwrap_or(f64::NAN))
         .collect();
     let (mut jump_in, mut pull_off) = (Vec::new(), Vec::new());
-    if gamma > 0.0 && evs.len() > 1 {
-        let points: Vec<KnobPoint> = evs
-            .into_iter()
-            .map(|(value, e)| KnobPoint {
-                value,
-                scene: Knob::Thickness.apply(scene, value),
-                result: e,
-                gap: Ok(None),
-            })
-            .collect();
+    if gamma > 0.0 && points.len() > 1 {
         // the edges to a chart's precision: 3 % in t·q_r, under half a braille dot of a
         // 60-column chart over four decades
         let rel = engine::CHART_EDGE_REL;
@@ -203,13 +171,15 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
             }
         }
     }
-    let a_r_inf = keep(at(f64::INFINITY, gamma, None))?.map_or(f64::NAN, |e| e.stats.a_r);
+    // the half-space lies outside a knob sweep's (finite) values
+    let half_space = Knob::Thickness.apply(scene, f64::INFINITY);
+    let a_r_inf = match engine::evaluate_warm(&half_space, &opts, None, Some(cancel)) {
+        Err(Error::Cancelled) => return Err(Error::Cancelled),
+        r => r.map_or(f64::NAN, |e| e.stats.a_r),
+    };
+    let t: Vec<f64> = points.iter().map(|p| p.value).collect();
     let adhesionless = if gamma > 0.0 {
-        let mut v = Vec::with_capacity(t.len());
-        for &th in &t {
-            v.push(keep(at(th, 0.0, None))?.map_or(f64::NAN, |e| e.stats.a_r));
-        }
-        Some(v)
+        Some(adhesionless_at(scene, &t, &opts, cancel)?)
     } else {
         None
     };
@@ -226,6 +196,59 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
         jump_in,
         pull_off,
     })
+}
+
+/// a_r of a knob sweep's point (NaN where its solve failed).
+fn a_r_of(p: &KnobPoint) -> f64 {
+    p.result.as_ref().map_or(f64::NAN, |e| e.stats.a_r)
+}
+
+/// The knob sweep of `scene` at the single thickness `t` (its one point).
+fn one_thickness(scene: &Scene, t: f64, opts: &Options, cancel: &AtomicBool) -> Result<Option<KnobPoint>> {
+    let spec = KnobSpec {
+        knob: Knob::Thickness,
+        from: t,
+        to: t,
+        points: 1,
+    };
+    Ok(knob_sweep(scene, &spec, opts, false, Some(cancel))?.pop())
+}
+
+/// Adds to `points` (ascending in t·q_r) a thickness inside each hysteresis window found
+/// between two neighbours ([`window_between`]).
+fn add_windows(scene: &Scene, opts: &Options, cancel: &AtomicBool, points: &mut Vec<KnobPoint>) -> Result<()> {
+    let probe = |t: f64| one_thickness(scene, t, opts, cancel).map(|p| p.and_then(|p| p.result.ok()));
+    let mut k = 0;
+    while k + 1 < points.len() {
+        let inside = match (&points[k].result, &points[k + 1].result) {
+            (Ok(lo), Ok(hi)) => window_between(&probe, (points[k].value, lo), (points[k + 1].value, hi))?,
+            _ => None,
+        };
+        if let Some((value, ev)) = inside {
+            let p = KnobPoint {
+                value,
+                scene: Knob::Thickness.apply(scene, value),
+                result: Ok(ev),
+                gap: Ok(None),
+            };
+            points.insert(k + 1, p);
+        }
+        k += 1;
+    }
+    Ok(())
+}
+
+/// The adhesionless a_r of `scene` at the thicknesses `t`: the chart's grid in one knob
+/// sweep, a thickness added inside a window on its own.
+fn adhesionless_at(scene: &Scene, t: &[f64], opts: &Options, cancel: &AtomicBool) -> Result<Vec<f64>> {
+    let dry = scene.without_adhesion();
+    let grid = knob_sweep(&dry, &thickness_spec(), opts, false, Some(cancel))?;
+    t.iter()
+        .map(|&v| match grid.iter().find(|p| p.value == v) {
+            Some(p) => Ok(a_r_of(p)),
+            None => one_thickness(&dry, v, opts, cancel).map(|p| p.as_ref().map_or(f64::NAN, a_r_of)),
+        })
+        .collect()
 }
 
 /// Neighbouring thicknesses whose a_r differ by more than this factor (both with one stable

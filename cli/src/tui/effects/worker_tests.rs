@@ -44,7 +44,7 @@ fn thickness_sweep_tends_to_the_semi_infinite_body() {
         td.pull_off
     );
     // the chart's grid, and any thickness found inside a window between two of its points
-    let grid = super::data::log_grid(THICKNESS_RANGE.0, THICKNESS_RANGE.1, THICKNESS_POINTS);
+    let grid = thickness_spec().values();
     assert!(grid.iter().all(|g| td.t.contains(g)), "{:?}", td.t);
     assert!(td.t.len() >= THICKNESS_POINTS && td.t.windows(2).all(|w| w[0] < w[1]));
     assert_eq!(td.adhesionless.as_ref().map(|v| v.len()), Some(td.t.len()));

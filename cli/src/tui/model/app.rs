@@ -87,6 +87,7 @@ impl App {
                 color: true,
                 mouse: false,
                 spinner: 0,
+                size: None,
             },
             results: Results {
                 overlay_points: HashMap::new(),

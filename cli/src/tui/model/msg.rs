@@ -19,6 +19,13 @@ pub enum Msg {
     Reply(Box<Reply>),
     /// Time passed with nothing else happening (the spinner; a playing scale view).
     Tick,
+    /// The terminal's size, at the start and whenever it changes.
+    Resize {
+        /// Columns.
+        cols: u16,
+        /// Rows.
+        rows: u16,
+    },
     /// The preset asked for by [`crate::tui::model::command::Command::LoadPreset`].
     PresetLoaded {
         /// The name or path it was asked by.

@@ -2,6 +2,13 @@
 
 use crate::tui::model::kinds::ChartKind;
 use crate::tui::model::tour::Tour;
+use crate::tui::model::wrap::MIN_SIZE;
+
+/// Whether a terminal of `cols`×`rows` is smaller than [`MIN_SIZE`]: the view then shows
+/// only the "terminal too small" screen, and the update takes only the keys that quit.
+pub fn too_small(cols: u16, rows: u16) -> bool {
+    cols < MIN_SIZE.0 || rows < MIN_SIZE.1
+}
 
 /// What covers the main view.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -76,4 +83,17 @@ pub struct Ui {
     pub color: bool,
     /// Spinner phase (advanced by ticks while busy).
     pub spinner: usize,
+    /// The terminal's size (columns, rows) as last reported ([`Msg::Resize`]); `None` until
+    /// known.
+    ///
+    /// [`Msg::Resize`]: crate::tui::model::msg::Msg::Resize
+    pub size: Option<(u16, u16)>,
+}
+
+impl Ui {
+    /// Whether the terminal, as last reported, is too small ([`too_small`]); not while its
+    /// size is unknown.
+    pub fn too_small(&self) -> bool {
+        self.size.is_some_and(|(cols, rows)| too_small(cols, rows))
+    }
 }

@@ -66,6 +66,15 @@ impl App {
         self.act(action);
     }
 
+    /// Handles one key press while the terminal is too small ([`Ui::too_small`]): the keys
+    /// that quit (q, Ctrl-C: the key table's [`keys::Action::Quit`]) quit, even while a value
+    /// is typed; every other key does nothing, as the screen says.
+    pub fn on_key_too_small(&mut self, ev: KeyEvent) {
+        if keys::action_for(&ev) == Some(keys::Action::Quit) {
+            self.ui.quit = true;
+        }
+    }
+
     pub(crate) fn on_edit_key(&mut self, ev: KeyEvent) {
         let Some(buf) = self.ui.edit.as_mut() else {
             return;

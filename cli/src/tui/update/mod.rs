@@ -34,9 +34,13 @@ use std::sync::Arc;
 /// Takes one message: the next state, and the commands it asks for, in order (`Quit` last).
 pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
     match msg {
+        // the "terminal too small" screen shows nothing to act on: only quitting acts
+        Msg::Key(ev) if app.ui.too_small() => app.on_key_too_small(ev),
+        Msg::Mouse(_) if app.ui.too_small() => {}
         Msg::Key(ev) => app.on_key(ev),
         Msg::Reply(r) => app.on_reply(*r),
         Msg::Tick => app.tick(),
+        Msg::Resize { cols, rows } => app.ui.size = Some((cols, rows)),
         Msg::PresetLoaded { source, result } => app.preset_loaded(&source, result),
         Msg::TourLoaded(result) => app.tour_loaded(result),
         Msg::Written(w) => app.written(w),

@@ -421,3 +421,84 @@ fn the_mouse_focuses_selects_and_steps_only_when_asked_for() {
     update(&mut a, click(Target::Chart(1)));
     assert_eq!(a.ui.focus, 2);
 }
+
+#[test]
+fn a_resize_is_kept_and_decides_whether_the_screen_is_too_small() {
+    use crate::tui::model::wrap::MIN_SIZE;
+    let mut a = app();
+    // unknown size (a test's state, before the first frame): keys act
+    assert_eq!(a.ui.size, None);
+    assert!(!a.ui.too_small());
+    let (w, h) = MIN_SIZE;
+    for (cols, rows, small) in [
+        (w, h, false),
+        (w - 1, h, true),
+        (w, h - 1, true),
+        (200, 60, false),
+        (0, 0, true),
+    ] {
+        assert!(update(&mut a, Msg::Resize { cols, rows }).is_empty());
+        assert_eq!(a.ui.size, Some((cols, rows)));
+        assert_eq!(a.ui.too_small(), small, "{cols}×{rows}");
+    }
+}
+
+#[test]
+fn on_the_too_small_screen_only_q_and_ctrl_c_act() {
+    let mut a = app();
+    let _ = a.take_request();
+    update(&mut a, Msg::Resize { cols: 50, rows: 15 });
+    let before = format!("{:?}", a.ui);
+    let p0 = a.params.scene.pressure();
+    // the tour, the zoom, a knob step, typing, the help, the picker, Esc, a GFMD run, files
+    for code in [
+        KeyCode::Char('t'),
+        KeyCode::Char('z'),
+        KeyCode::Right,
+        KeyCode::Down,
+        KeyCode::Char('1'),
+        KeyCode::Char('?'),
+        KeyCode::F(1),
+        KeyCode::Char('p'),
+        KeyCode::Esc,
+        KeyCode::Char('g'),
+        KeyCode::Char('e'),
+        KeyCode::Char('s'),
+        KeyCode::Enter,
+    ] {
+        assert!(key(&mut a, code).is_empty(), "{code:?} asked for work unseen");
+    }
+    // nor the mouse (even where captured)
+    a.ui.mouse = true;
+    use crate::tui::model::msg::{Pointer, Target};
+    assert!(update(&mut a, Msg::Mouse(Pointer::Click(Target::Chart(2)))).is_empty());
+    assert!(update(&mut a, Msg::Mouse(Pointer::WheelUp)).is_empty());
+    a.ui.mouse = false;
+    assert_eq!(format!("{:?}", a.ui), before, "the screen's state is unchanged");
+    assert_eq!(a.params.scene.pressure(), p0);
+    assert!(!a.has_pending() && a.ui.tour.is_none() && !a.ui.zoom);
+    // q quits (as the screen says), and so does Ctrl-C
+    assert_eq!(names(&key(&mut a, KeyCode::Char('q'))), ["quit"]);
+    let mut b = app();
+    update(&mut b, Msg::Resize { cols: 30, rows: 8 });
+    let ctrl_c = KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL);
+    assert_eq!(names(&update(&mut b, Msg::Key(ctrl_c))), ["quit"]);
+}
+
+#[test]
+fn q_quits_a_too_small_screen_while_a_value_is_typed_and_a_bigger_one_acts_again() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('1'));
+    assert_eq!(a.ui.edit.as_deref(), Some("1"));
+    // shrunk while typing: q quits (on a big screen it would cancel the field)
+    update(&mut a, Msg::Resize { cols: 40, rows: 10 });
+    assert_eq!(names(&key(&mut a, KeyCode::Char('q'))), ["quit"]);
+    // grown again: the keys act as before
+    let mut b = app();
+    update(&mut b, Msg::Resize { cols: 40, rows: 10 });
+    assert!(key(&mut b, KeyCode::Char('t')).is_empty());
+    update(&mut b, Msg::Resize { cols: 80, rows: 24 });
+    assert_eq!(names(&key(&mut b, KeyCode::Char('t'))), ["tour"]);
+    assert!(key(&mut b, KeyCode::Char('z')).is_empty());
+    assert!(b.ui.zoom);
+}

@@ -30,7 +30,7 @@ use ratatui::Frame;
 pub fn draw(f: &mut Frame, app: &App) {
     let area = f.area();
     let pal = Palette { color: app.ui.color };
-    if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
+    if crate::tui::model::ui::too_small(area.width, area.height) {
         too_small(f, area);
         return;
     }
@@ -163,8 +163,12 @@ fn caption_text(app: &App) -> Vec<String> {
         .unwrap_or_default()
 }
 
+/// What the "terminal too small" screen says last, where it has room: the update takes no
+/// other key there ([`crate::tui::model::ui::too_small`]).
+pub const TOO_SMALL_OTHER_KEYS: &str = "other keys wait for a bigger terminal";
+
 fn too_small(f: &mut Frame, area: Rect) {
-    let text = vec![
+    let mut text = vec![
         Line::from("terminal too small"),
         Line::from(format!(
             "{}×{}, need {}×{}",
@@ -172,6 +176,9 @@ fn too_small(f: &mut Frame, area: Rect) {
         )),
         Line::from("q quits"),
     ];
+    if area.height > text.len() as u16 && usize::from(area.width) >= TOO_SMALL_OTHER_KEYS.len() {
+        text.push(Line::from(TOO_SMALL_OTHER_KEYS));
+    }
     let h = (text.len() as u16).min(area.height);
     let y = area.y + area.height.saturating_sub(h) / 2;
     f.render_widget(Paragraph::new(text).centered(), Rect::new(area.x, y, area.width, h));
