@@ -127,10 +127,10 @@ mod tests {
             assert_eq!(r.value, stored.a_r.0);
             assert_eq!(r.thickness_qr, Some(0.15));
         }
-        // where only 512² is stored (γ_s = ½ the preset's), 512² is shown
-        let half = stored_gfmd(&p, &scene(&p, 0.15, 0.5));
-        assert!(!half.is_empty());
-        assert!(half.iter().all(|r| r.source == "GFMD (512^2)"), "{half:?}");
+        // where 2048² is stored too (the half-space at the preset's γ_s), 2048² is shown
+        let half_space = stored_gfmd(&p, &scene(&p, f64::INFINITY, 1.0));
+        assert!(!half_space.is_empty());
+        assert!(half_space.iter().all(|r| r.source == "GFMD (2048^2)"), "{half_space:?}");
     }
 
     #[test]
