@@ -117,11 +117,11 @@ pub fn path(sweep: &Sweep) -> TheoryCycle {
     let note = if still_unloading {
         format!(
             "the theory's unloading branch still exists at the smallest load p* = {lowest:e}: its pull-off lies below, \
-             at p* <= 0, where the theory is not continued (docs/physics.md §6.2)"
+             at p* <= 0, beyond this path (the path through tension continues it: docs/physics.md §6.2)"
         )
     } else {
         format!(
-            "the theory is not continued below the smallest load p* = {lowest:e} into tension (docs/physics.md §6.2)"
+            "this path stops at the smallest load p* = {lowest:e} (the path through tension continues it: docs/physics.md §6.2)"
         )
     };
     TheoryCycle {
