@@ -392,7 +392,7 @@ pub(super) fn scan(
 }
 
 /// H and its parts at w.
-fn point(s: &mut Shooter<'_>, scale: &Scale, w: f64, gs: f64) -> Point {
+pub(super) fn point(s: &mut Shooter<'_>, scale: &Scale, w: f64, gs: f64) -> Point {
     let shot = s.h(scale.c(w));
     Point {
         w,

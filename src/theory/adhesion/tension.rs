@@ -34,7 +34,7 @@
 
 use super::grid::build_grid;
 use super::propagator::Marcher;
-use super::roots::{check_bounded, refine, scan, Point, Scale, Shooter};
+use super::roots::{check_bounded, point, refine, scan, Point, Scale, Shooter};
 use super::strategy::{finish, COLLAPSED};
 use super::walls::WallCoefficients;
 use super::{AdhesionAccuracy, AdhesiveSolution, Branch};
@@ -125,15 +125,7 @@ pub fn tensile_branch(
 /// merge.
 fn dip(sh: &mut Shooter<'_>, scale: &Scale, pts: &[Point], gs: f64) -> Option<Point> {
     let k = (1..pts.len().saturating_sub(1)).min_by(|&i, &j| pts[i].h.total_cmp(&pts[j].h))?;
-    let at = |sh: &mut Shooter<'_>, w: f64| -> Point {
-        let shot = sh.h(scale.c(w));
-        Point {
-            w,
-            h: shot.h,
-            f: shot.f,
-            g: gs * shot.a_s,
-        }
-    };
+    let at = |sh: &mut Shooter<'_>, w: f64| point(sh, scale, w, gs);
     let r = 0.5 * (5f64.sqrt() - 1.0);
     let (mut lo, mut hi) = (pts[k - 1].w, pts[k + 1].w);
     let mut x1 = at(sh, hi - r * (hi - lo));
