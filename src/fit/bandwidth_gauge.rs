@@ -15,12 +15,11 @@
 //! 1024², λ_r/λ_s = 32 and 64), tabulated over W(0) like the first stage
 //! ([`super::set_gauge::tabulate`]). Cross-validation leaves one grid out, or one thickness.
 
-use super::set_gauge::{central_jacobian, gauge_residuals, CaseTable};
+use super::set_gauge::{gauge_residuals, CaseTable, ResidualProblem};
 use crate::error::{Error, Result};
 use crate::input::model_five::{BandwidthGauge, Gauge};
-use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
-use nalgebra::storage::Owned;
-use nalgebra::{DVector, Dyn, Matrix};
+use levenberg_marquardt::LevenbergMarquardt;
+use nalgebra::DVector;
 
 /// e_a at every gauge point of `tables` under the gauge over bandwidths `gauge` (each table at
 /// its own bandwidth).
@@ -39,41 +38,6 @@ fn with_steps(at_set: Gauge, d: &[f64]) -> BandwidthGauge {
             slope: d[1],
             floor: d[2],
         },
-    }
-}
-
-/// The least-squares problem in the three steps per octave.
-struct OctaveProblem<'a> {
-    tables: &'a [CaseTable],
-    at_set: Gauge,
-    x: DVector<f64>,
-}
-
-impl OctaveProblem<'_> {
-    fn at(&self, x: &DVector<f64>) -> DVector<f64> {
-        DVector::from_vec(bandwidth_residuals(self.tables, &with_steps(self.at_set, x.as_slice())))
-    }
-}
-
-impl LeastSquaresProblem<f64, Dyn, Dyn> for OctaveProblem<'_> {
-    type ResidualStorage = Owned<f64, Dyn>;
-    type JacobianStorage = Owned<f64, Dyn, Dyn>;
-    type ParameterStorage = Owned<f64, Dyn>;
-
-    fn set_params(&mut self, x: &DVector<f64>) {
-        self.x = x.clone();
-    }
-
-    fn params(&self) -> DVector<f64> {
-        self.x.clone()
-    }
-
-    fn residuals(&self) -> Option<DVector<f64>> {
-        Some(self.at(&self.x))
-    }
-
-    fn jacobian(&self) -> Option<Matrix<f64, Dyn, Dyn, Owned<f64, Dyn, Dyn>>> {
-        Some(central_jacobian(|x| self.at(x), &self.x))
     }
 }
 
@@ -108,9 +72,8 @@ pub fn fit_per_octave(tables: &[CaseTable], at_set: Gauge) -> Result<BandwidthGa
             }
         }
     }
-    let problem = OctaveProblem {
-        tables,
-        at_set,
+    let problem = ResidualProblem {
+        residual: |x: &DVector<f64>| DVector::from_vec(bandwidth_residuals(tables, &with_steps(at_set, x.as_slice()))),
         x: DVector::from_row_slice(&best.1),
     };
     let (problem, _) = LevenbergMarquardt::new().minimize(problem);

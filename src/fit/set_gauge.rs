@@ -388,25 +388,17 @@ pub fn gauge_residuals(tables: &[CaseTable], gauge: Gauge) -> Vec<f64> {
     tables.iter().flat_map(|t| t.at(gauge.w0(t.gamma_glo))).collect()
 }
 
-/// The least-squares problem of the gauge on tabulated residuals.
-struct GaugeProblem<'a> {
-    tables: &'a [CaseTable],
-    floor: f64,
-    x: DVector<f64>,
+/// A least-squares problem given by its residual function, the Jacobian by central
+/// differences ([`central_jacobian`]): the gauge fits of this module and of
+/// [`super::bandwidth_gauge`].
+pub(crate) struct ResidualProblem<F: Fn(&DVector<f64>) -> DVector<f64>> {
+    /// The residuals at parameters x.
+    pub(crate) residual: F,
+    /// The current parameters.
+    pub(crate) x: DVector<f64>,
 }
 
-impl GaugeProblem<'_> {
-    fn at(&self, x: &DVector<f64>) -> DVector<f64> {
-        let g = Gauge {
-            base: x[0],
-            slope: x[1],
-            floor: self.floor,
-        };
-        DVector::from_vec(gauge_residuals(self.tables, g))
-    }
-}
-
-impl LeastSquaresProblem<f64, Dyn, Dyn> for GaugeProblem<'_> {
+impl<F: Fn(&DVector<f64>) -> DVector<f64>> LeastSquaresProblem<f64, Dyn, Dyn> for ResidualProblem<F> {
     type ResidualStorage = Owned<f64, Dyn>;
     type JacobianStorage = Owned<f64, Dyn, Dyn>;
     type ParameterStorage = Owned<f64, Dyn>;
@@ -420,11 +412,11 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for GaugeProblem<'_> {
     }
 
     fn residuals(&self) -> Option<DVector<f64>> {
-        Some(self.at(&self.x))
+        Some((self.residual)(&self.x))
     }
 
     fn jacobian(&self) -> Option<Matrix<f64, Dyn, Dyn, Owned<f64, Dyn, Dyn>>> {
-        Some(central_jacobian(|x| self.at(x), &self.x))
+        Some(central_jacobian(&self.residual, &self.x))
     }
 }
 
@@ -474,9 +466,15 @@ pub fn fit_gauge(tables: &[CaseTable]) -> Result<Gauge> {
                 }
             }
         }
-        let problem = GaugeProblem {
-            tables,
-            floor,
+        let problem = ResidualProblem {
+            residual: |x: &DVector<f64>| {
+                let g = Gauge {
+                    base: x[0],
+                    slope: x[1],
+                    floor,
+                };
+                DVector::from_vec(gauge_residuals(tables, g))
+            },
             x: DVector::from_vec(vec![start.1.base, start.1.slope]),
         };
         let (problem, _) = LevenbergMarquardt::new().minimize(problem);
