@@ -16,7 +16,8 @@ Example::
     sw = asperity.sweep(scene, np.geomspace(1e-3, 0.1, 20))
 
 Functions: :func:`evaluate`, :func:`sweep` (:func:`sweep_thickness`, :func:`sweep_gamma`),
-:func:`gfmd`, :func:`psd`, :func:`read_surface`, :func:`gauge`. Errors: :class:`InputError`
+:func:`cycle` (the theory's load cycle through tension to pull-off), :func:`gfmd`,
+:func:`gfmd_cycle` (GFMD's), :func:`psd`, :func:`read_surface`, :func:`gauge`. Errors: :class:`InputError`
 (a ValueError naming the argument, its value and the allowed range), :class:`NotConverged`,
 :class:`InternalError`. See docs/python.md in the repository.
 """
@@ -24,9 +25,9 @@ Functions: :func:`evaluate`, :func:`sweep` (:func:`sweep_thickness`, :func:`swee
 from __future__ import annotations
 
 from . import _native
-from ._api import evaluate, gauge, gfmd, psd, read_surface, sweep, sweep_gamma, sweep_thickness
+from ._api import cycle, evaluate, gauge, gfmd, gfmd_cycle, psd, read_surface, sweep, sweep_gamma, sweep_thickness
 from ._errors import InputError, InternalError, NotConverged
-from ._results import GfmdResult, PsdResult, Report, Result, SweepResult
+from ._results import CycleResult, GfmdCycleResult, GfmdResult, PsdResult, Report, Result, SweepResult
 from ._scene import Scene, Surface
 
 __version__: str = _native.__version__
@@ -38,7 +39,9 @@ __all__ = [
     "sweep",
     "sweep_thickness",
     "sweep_gamma",
+    "cycle",
     "gfmd",
+    "gfmd_cycle",
     "psd",
     "read_surface",
     "gauge",
@@ -46,6 +49,8 @@ __all__ = [
     "SweepResult",
     "GfmdResult",
     "PsdResult",
+    "CycleResult",
+    "GfmdCycleResult",
     "Result",
     "InputError",
     "NotConverged",

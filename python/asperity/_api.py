@@ -19,10 +19,21 @@ import numpy as np
 
 from . import _native
 from ._errors import InputError
-from ._results import GfmdResult, PsdResult, Report, Result, SweepResult
+from ._results import CycleResult, GfmdCycleResult, GfmdResult, PsdResult, Report, Result, SweepResult
 from ._scene import Scene, Surface, as_map
 
-__all__ = ["evaluate", "sweep", "sweep_thickness", "sweep_gamma", "gfmd", "psd", "read_surface", "gauge"]
+__all__ = [
+    "evaluate",
+    "sweep",
+    "sweep_thickness",
+    "sweep_gamma",
+    "cycle",
+    "gfmd",
+    "gfmd_cycle",
+    "psd",
+    "read_surface",
+    "gauge",
+]
 
 Progress = Optional[Callable[[Dict[str, Any]], Any]]
 
@@ -99,6 +110,7 @@ def sweep(
     over: str = "pressure",
     values: Any = None,
     progress: Progress = None,
+    cycle: bool = False,
 ) -> SweepResult:
     """A sweep of the theory over p* (``over="pressure"``, library
     ``asperity::theory::sweep::sweep``: continuation in the load, one shared energy table for
@@ -116,6 +128,10 @@ def sweep(
     ``elastic_energy`` (J/m²), ``thickness_qr``, ``gamma``, ...), NaN where a row failed and
     ``reasons`` beside them; ``window_edges``, ``jump_in_pressure``, ``pull_off_pressure``;
     ``to_dict()`` has the keys of ``asperity sweep --format json``.
+
+    ``cycle=True`` (load sweeps over log-spaced loads, ``np.geomspace``): also the theory's
+    path along the load cycle, ``res.cycle`` (a :class:`CycleResult`, see :func:`cycle`), as
+    ``asperity sweep --cycle``.
     """
     knob = _OVER.get(over)
     if knob is None:
@@ -129,7 +145,7 @@ def sweep(
         raise TypeError("sweep() takes the values to sweep once: as `pressures` (positional) or as `values`")
     field = {"pressure": "pressures", "thickness": "thickness_qr", "gamma": "surface_energy_j_m2"}[knob]
     given = pressures if values is None else values
-    return SweepResult(_native.sweep(_scene(scene), _values(given, field), knob, progress))
+    return SweepResult(_native.sweep(_scene(scene), _values(given, field), knob, progress, bool(cycle)))
 
 
 def sweep_thickness(scene: Scene, thickness_qr: Any, *, progress: Progress = None) -> SweepResult:
@@ -140,6 +156,50 @@ def sweep_thickness(scene: Scene, thickness_qr: Any, *, progress: Progress = Non
 def sweep_gamma(scene: Scene, surface_energy_j_m2: Any, *, progress: Progress = None) -> SweepResult:
     """:func:`sweep` over γ_s in J/m² (ascending, from 0 allowed) at the scene's p*."""
     return sweep(scene, over="gamma", values=surface_energy_j_m2, progress=progress)
+
+
+def _number(x: Any, field: str) -> float:
+    if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
+        raise InputError(
+            f"invalid {field} = {x!r}: allowed a number",
+            field=field,
+            value=repr(x),
+            allowed="a number",
+        )
+    return float(x)
+
+
+def _count(x: Any, field: str) -> int:
+    if isinstance(x, bool) or not isinstance(x, (int, np.integer)) or x < 1:
+        raise InputError(
+            f"invalid {field} = {x!r}: allowed a whole number >= 1",
+            field=field,
+            value=repr(x),
+            allowed="a whole number >= 1",
+        )
+    return int(x)
+
+
+def cycle(scene: Scene, from_: float, to: float, *, points: int = 64, progress: Progress = None) -> CycleResult:
+    """The theory's path along a load cycle (``asperity sweep --cycle``): library
+    ``asperity::theory::sweep::sweep`` over ``points`` log-spaced loads from ``from_`` up to
+    ``to``, then ``asperity::theory::cycle::path_through_tension``.
+
+    The path goes up on the loading branch (the lowest stable root, [S-3, S-14]), back down on
+    the unloading branch (the highest stable root) while it exists, and on below ``from_`` into
+    tension at p* = 0, −p₁, −2p₁, … (p₁ = ``from_``) on the contact branch to the theory's
+    pull-off, bisected to 3 % (docs/physics.md §6.2); without adhesion it ends at p* → 0.
+
+    Returns a :class:`CycleResult`: columns ``branch`` ("loading"/"unloading"), ``p``,
+    ``a_r``, ``mean_gap_rel`` (NaN under tension), ``mean_contact_stress``,
+    ``on_unloading_branch``; ``pull_off_pressure`` with ``pull_off_bracket``,
+    ``tension_bound``, ``unloading_branch_ends``, ``jump_in_pressure``, ``note``;
+    ``to_dict()`` is the ``cycle`` object of ``asperity sweep --cycle --format json``.
+    Raises :class:`InputError` for loads out of range (``from_``, ``to`` > ``from_``,
+    ``points``).
+    """
+    f, t, n = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
+    return CycleResult(_native.cycle(_scene(scene), f, t, n, progress))
 
 
 def gfmd(
@@ -188,6 +248,74 @@ def gfmd(
     return GfmdResult(
         _native.gfmd(
             _scene(scene), arr, size_m, grid, seed, tolerance, max_iterations, bins, method, rescale, progress
+        )
+    )
+
+
+def gfmd_cycle(
+    scene: Scene,
+    from_: float,
+    to: float,
+    *,
+    points: int = 8,
+    heights: Any = None,
+    size: Optional[float] = None,
+    grid: Optional[int] = None,
+    seed: int = 1,
+    tolerance: float = 1e-8,
+    max_iterations: Optional[int] = None,
+    bins: Optional[int] = None,
+    method: str = "auto",
+    rescale: bool = True,
+    progress: Progress = None,
+) -> GfmdCycleResult:
+    """GFMD through the adhesive load cycle (``asperity gfmd --cycle``): library
+    ``asperity::gfmd::cycle::run_cycle`` on one map (generated or given as for :func:`gfmd`),
+    every load warm-started from the last relaxed state (quasi-static, load control).
+
+    Loading from p* = ``from_`` up to ``to`` over ``points`` log-spaced loads, unloading back
+    down to ``from_``, then (with adhesion) into tension at p* = 0, −p₁, −2p₁, … until the body
+    leaves the substrate, the bracket bisected to 3 % of the pull-off. Without adhesion
+    unloading retraces loading and the pull-off is 0; with adhesion unloading keeps more
+    contact than loading at the same load.
+
+    Returns a :class:`GfmdCycleResult`: columns ``branch``, ``p``, ``a_r``, ``mean_gap_rel``,
+    ``mean_contact_stress``, ... in the order visited; ``pull_off_pressure`` with
+    ``pull_off_bracket``, ``jump_in_pressure`` with ``jump_in_bracket``, ``note``, ``theory``
+    (the theory's sweep on the same map) and ``theory_cycle`` (its path along the same cycle, a
+    :class:`CycleResult`); ``to_dict()`` has the keys of ``asperity gfmd --cycle --format
+    json``. Raises :class:`InputError` before any work for bad input (``to`` below ``from_``,
+    ``grid`` < 4, ...), :class:`NotConverged` when a load misses its tolerance; Ctrl-C stops it
+    within one relaxation step.
+    """
+    f, t, n = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
+    arr: Optional[np.ndarray] = None
+    size_m: Optional[float] = None
+    if heights is not None:
+        arr, size_m, _ = as_map(heights, size)
+    elif size is not None:
+        raise InputError(
+            "invalid size: allowed None without heights",
+            field="size",
+            value=repr(size),
+            allowed="None without heights",
+        )
+    return GfmdCycleResult(
+        _native.gfmd_cycle(
+            _scene(scene),
+            f,
+            t,
+            n,
+            arr,
+            size_m,
+            grid,
+            seed,
+            tolerance,
+            max_iterations,
+            bins,
+            method,
+            rescale,
+            progress,
         )
     )
 

@@ -44,9 +44,28 @@ def evaluate(
     adhesion_tol: Optional[float] = ...,
     progress: Progress = ...,
 ) -> Dict[str, Any]: ...
-def sweep(scene: SceneCore, values: Sequence[float], over: str = ..., progress: Progress = ...) -> Dict[str, Any]: ...
+def sweep(
+    scene: SceneCore, values: Sequence[float], over: str = ..., progress: Progress = ..., cycle: bool = ...
+) -> Dict[str, Any]: ...
+def cycle(scene: SceneCore, from_: float, to: float, points: int = ..., progress: Progress = ...) -> Dict[str, Any]: ...
 def gfmd(
     scene: SceneCore,
+    heights: Optional[npt.NDArray[np.float64]] = ...,
+    size_m: Optional[float] = ...,
+    grid: Optional[int] = ...,
+    seed: int = ...,
+    tolerance: float = ...,
+    max_iterations: Optional[int] = ...,
+    bins: Optional[int] = ...,
+    method: str = ...,
+    rescale: bool = ...,
+    progress: Progress = ...,
+) -> Dict[str, Any]: ...
+def gfmd_cycle(
+    scene: SceneCore,
+    from_: float,
+    to: float,
+    points: int = ...,
     heights: Optional[npt.NDArray[np.float64]] = ...,
     size_m: Optional[float] = ...,
     grid: Optional[int] = ...,

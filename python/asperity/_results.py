@@ -10,11 +10,11 @@ from __future__ import annotations
 
 import copy
 import math
-from typing import Any, Dict, Iterator, List, Tuple
+from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 import numpy as np
 
-__all__ = ["Result", "Report", "SweepResult", "GfmdResult", "PsdResult"]
+__all__ = ["Result", "Report", "SweepResult", "GfmdResult", "PsdResult", "CycleResult", "GfmdCycleResult"]
 
 
 def _is_number(x: Any) -> bool:
@@ -34,6 +34,27 @@ def _wrap(v: Any) -> Any:
         if all(_is_number(x) for x in v):
             return np.array([math.nan if x is None else x for x in v], dtype=float)
     return v
+
+
+def _column(rows: List[Dict[str, Any]], name: str) -> Optional[np.ndarray]:
+    """The column `name` of `rows` as an array (bools: bool, strings: str, numbers: float with
+    None as NaN); None where the rows have no such key."""
+    if not rows or name not in rows[0]:
+        return None
+    col = [r.get(name) for r in rows]
+    if all(isinstance(x, bool) for x in col):
+        return np.array(col, dtype=bool)
+    if all(isinstance(x, str) for x in col):
+        return np.array(col, dtype=str)
+    return np.array([math.nan if x is None else x for x in col], dtype=float)
+
+
+def _opt(x: Any) -> Optional[float]:
+    return None if x is None else float(x)
+
+
+def _pair(x: Any) -> Optional[Tuple[float, float]]:
+    return None if x is None else (_num(x[0]), _num(x[1]))
 
 
 class Result:
@@ -157,6 +178,13 @@ class SweepResult(Result):
         """Per row: None where it converged, else the reason it has no numbers."""
         return list(self._data.get("reasons", []))
 
+    @property
+    def cycle(self) -> Optional["CycleResult"]:
+        """With ``cycle=True``: the theory's path along the load cycle (the CLI's
+        ``sweep --cycle`` key ``cycle``); else None."""
+        c = self._data.get("cycle")
+        return None if c is None else CycleResult(c)
+
     def __len__(self) -> int:
         return len(self._data.get("rows", []))
 
@@ -188,3 +216,148 @@ class PsdResult(Result):
     @property
     def modes(self) -> np.ndarray:
         return np.array([b["modes"] for b in self._data["table"]], dtype=int)
+
+
+class _Rows(Result):
+    """A result with ``rows``: a row key reads as a column array (``res.a_r``), after the
+    result's own keys."""
+
+    def __getattr__(self, name: str) -> Any:
+        data = object.__getattribute__(self, "_data")
+        if name in data:
+            return _wrap(data[name])
+        col = _column(data.get("rows", []), name)
+        if col is None:
+            raise AttributeError(f"{type(self).__name__} has no field or column {name!r}")
+        return col
+
+    def __len__(self) -> int:
+        return len(self._data.get("rows", []))
+
+    def _col(self, name: str) -> np.ndarray:
+        col = _column(self._data.get("rows", []), name)
+        return np.array([], dtype=float) if col is None else col
+
+    @property
+    def branch(self) -> np.ndarray:
+        """Per row: ``"loading"`` (rising load) or ``"unloading"`` (falling load, on through
+        tension to pull-off)."""
+        return self._col("branch")
+
+    @property
+    def p(self) -> np.ndarray:
+        """Per row: the load p* (negative: tension), in the order the path visits them."""
+        return self._col("p")
+
+    @property
+    def a_r(self) -> np.ndarray:
+        """Per row: the relative contact area a_r [S-3]."""
+        return self._col("a_r")
+
+    @property
+    def mean_gap_rel(self) -> np.ndarray:
+        """Per row: the mean gap ū/h_rms (NaN where it is not defined)."""
+        return self._col("mean_gap_rel")
+
+    @property
+    def mean_contact_stress(self) -> np.ndarray:
+        """Per row: σ̄_c*, the mean stress in the contact (reduced by E*ḡ; NaN where missing)."""
+        return self._col("mean_contact_stress")
+
+    @property
+    def loading(self) -> np.ndarray:
+        """Per row: whether it is on the loading leg (``branch == "loading"``)."""
+        return np.asarray(self.branch == "loading", dtype=bool)
+
+    @property
+    def pull_off_pressure(self) -> Optional[float]:
+        """The pull-off p* (≤ 0: the most tension the contact held; 0 without adhesion);
+        None where the path was not continued into tension."""
+        return _opt(self._data.get("pull_off_pressure"))
+
+    @property
+    def pull_off_bracket(self) -> Optional[Tuple[float, float]]:
+        """(the first p* lost, the last p* held) around the pull-off; None where there is none."""
+        return _pair(self._data.get("pull_off_bracket"))
+
+    @property
+    def jump_in_pressure(self) -> Optional[float]:
+        """The load at which loading jumps into more contact; None: no jump in the range."""
+        return _opt(self._data.get("jump_in_pressure"))
+
+
+class CycleResult(_Rows):
+    """The theory's path along a load cycle (:func:`asperity.cycle`, ``SweepResult.cycle``):
+    the object under ``cycle`` of ``asperity sweep --cycle --format json``.
+
+    Columns by row (in the order the path visits the loads: loading up, unloading back down and
+    on into tension at p* = 0, −p₁, −2p₁, … to the pull-off): ``branch``, ``p``, ``a_r``,
+    ``mean_gap_rel`` (NaN under tension, where the mean gap is not defined),
+    ``mean_contact_stress`` (NaN on the unloading branch inside a hysteresis window),
+    ``on_unloading_branch`` (bool: the theory's unloading, highest stable branch). Fields:
+    ``unloading_branch_ends`` (p* below which the unloading branch no longer exists, where the
+    range holds it), ``jump_in_pressure``, ``pull_off_pressure`` (the theory's pull-off, ≤ 0)
+    with ``pull_off_bracket``, ``tension_bound`` (the most tension any contact branch could
+    hold, the coarsest scale's Griffith stress) and ``note`` (why the path ends where it does).
+    """
+
+    @property
+    def on_unloading_branch(self) -> np.ndarray:
+        """Per row: whether a_r is the theory's unloading branch (else its loading/only one)."""
+        return self._col("on_unloading_branch")
+
+    @property
+    def unloading_branch_ends(self) -> Optional[float]:
+        """p* below which the unloading branch no longer exists, where the range holds it."""
+        return _opt(self._data.get("unloading_branch_ends"))
+
+    @property
+    def tension_bound(self) -> Optional[float]:
+        """min(σ_a*(q_L; γ_s), γ_s/ρ): the most tension any contact branch could hold."""
+        return _opt(self._data.get("tension_bound"))
+
+    @property
+    def note(self) -> str:
+        """One line: why the path stops where it does."""
+        return str(self._data.get("note", ""))
+
+    def __repr__(self) -> str:
+        d = self._data
+        return (
+            f"CycleResult(rows={len(self)}, pull_off_pressure={d.get('pull_off_pressure')!r}, "
+            f"jump_in_pressure={d.get('jump_in_pressure')!r}, ...)"
+        )
+
+
+class GfmdCycleResult(_Rows):
+    """GFMD's load cycle (:func:`asperity.gfmd_cycle`): the object of
+    ``asperity gfmd --cycle --format json``.
+
+    Columns by row (loads in the order visited; tensile loads lost are not rows): ``branch``,
+    ``p``, ``a_r``, ``mean_gap_rel``, ``mean_gap`` (m), ``mean_contact_stress``,
+    ``contact_stress_variance``, ``elastic_energy``, ``converged``, ``residual``, ... Fields:
+    ``pull_off_pressure`` (the most tensile p* the contact held; 0 without adhesion) with
+    ``pull_off_bracket``, ``jump_in_pressure`` with ``jump_in_bracket``, ``note``, ``grid``,
+    ``seed``, ``reduction``, ``theory`` (the theory's sweep on the same map, both branches),
+    ``theory_cycle`` (its path along the same cycle to its own pull-off, a
+    :class:`CycleResult`), ``theory_error``, ``iterations`` (all steps), ``elapsed_s``.
+    """
+
+    @property
+    def theory_cycle(self) -> Optional[CycleResult]:
+        """The theory's path along the same cycle on the map's spectrum (None where the
+        theory failed: ``theory_error`` says why)."""
+        c = self._data.get("theory_cycle")
+        return None if c is None else CycleResult(c)
+
+    @property
+    def jump_in_bracket(self) -> Optional[Tuple[float, float]]:
+        """(the load before the jump-in, the load after it); None: no jump."""
+        return _pair(self._data.get("jump_in_bracket"))
+
+    def __repr__(self) -> str:
+        d = self._data
+        return (
+            f"GfmdCycleResult(grid={d.get('grid')!r}, rows={len(self)}, "
+            f"pull_off_pressure={d.get('pull_off_pressure')!r}, jump_in_pressure={d.get('jump_in_pressure')!r}, ...)"
+        )

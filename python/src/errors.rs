@@ -16,12 +16,14 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// The Python argument name of a library field: the key's last segment (`load.thickness_qr`
-/// → `thickness_qr`), `model` for the variant.
+/// → `thickness_qr`), `model` for the variant, `from_` for a sweep's first load (`from` is a
+/// Python keyword).
 pub fn python_name(field: &Field) -> String {
     match field {
         Field::Model => "model".into(),
         Field::HeightMap => "heights".into(),
         Field::SystemSize => "system_size_m".into(),
+        Field::SweepFrom => "from_".into(),
         Field::Other(k) => {
             let k = k.trim_start_matches('-').replace('-', "_");
             k.rsplit('.').next().unwrap_or(&k).to_string()

@@ -22,11 +22,10 @@ pub const DEFAULT_GRID: GridSpec = GridSpec {
     points_per_short_wavelength: 8.0,
 };
 
-/// `gfmd(scene, heights=None, size_m=None, grid=None, seed=1, ...)`: see the module docs.
-#[pyfunction]
-#[pyo3(name = "gfmd", signature = (scene, heights = None, size_m = None, grid = None, seed = 1, tolerance = 1e-8, max_iterations = None, bins = None, method = "auto", rescale = true, progress = None))]
+/// The run's setup and solver options from the arguments of `gfmd` and `gfmd_cycle`, every one
+/// checked before any work.
 #[allow(clippy::too_many_arguments)]
-pub fn run_gfmd<'py>(
+pub fn setup<'py>(
     py: Python<'py>,
     scene: &SceneCore,
     heights: Option<PyReadonlyArray2<'py, f64>>,
@@ -38,8 +37,7 @@ pub fn run_gfmd<'py>(
     bins: Option<usize>,
     method: &str,
     rescale: bool,
-    progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyAny>> {
+) -> PyResult<(GfmdSetup, GfmdOptions)> {
     let surface = match (&heights, size_m) {
         (Some(h), Some(l)) => Some(map_of(py, h, l)?),
         (Some(_), None) => {
@@ -97,17 +95,55 @@ pub fn run_gfmd<'py>(
             rescale,
         })
     })?;
+    Ok((setup, opts))
+}
+
+/// The progress report of a relaxation step or of the theory beside it (`total`: the step
+/// limit).
+pub fn info(p: Progress, total: usize) -> Info {
+    Info {
+        stage: if p.stage == Stage::Theory { "theory" } else { "relax" },
+        done: p.iteration,
+        total,
+        residual: p.residual,
+        contact_fraction: p.contact_fraction,
+    }
+}
+
+/// `gfmd(scene, heights=None, size_m=None, grid=None, seed=1, ...)`: see the module docs.
+#[pyfunction]
+#[pyo3(name = "gfmd", signature = (scene, heights = None, size_m = None, grid = None, seed = 1, tolerance = 1e-8, max_iterations = None, bins = None, method = "auto", rescale = true, progress = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn run_gfmd<'py>(
+    py: Python<'py>,
+    scene: &SceneCore,
+    heights: Option<PyReadonlyArray2<'py, f64>>,
+    size_m: Option<f64>,
+    grid: Option<i64>,
+    seed: u64,
+    tolerance: f64,
+    max_iterations: Option<usize>,
+    bins: Option<usize>,
+    method: &str,
+    rescale: bool,
+    progress: Option<Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (setup, opts) = setup(
+        py,
+        scene,
+        heights,
+        size_m,
+        grid,
+        seed,
+        tolerance,
+        max_iterations,
+        bins,
+        method,
+        rescale,
+    )?;
     let total = opts.max_iterations;
     let mut r = work::run(py, progress.as_ref(), move |ctx| {
-        let mut report = |p: Progress| {
-            ctx.report(Info {
-                stage: if p.stage == Stage::Theory { "theory" } else { "relax" },
-                done: p.iteration,
-                total,
-                residual: p.residual,
-                contact_fraction: p.contact_fraction,
-            })
-        };
+        let mut report = |p: Progress| ctx.report(info(p, total));
         gfmd::run(&setup, &opts, &mut report, &ctx.cancel)
     })?;
     let map = r.surface.take();

@@ -6,8 +6,10 @@
 //! pure-Python package in `python/asperity/`; this module is its engine.
 //!
 //! - [`scene`]: the validated scene (`Scene.preset`, `Scene(...)`, `Scene.replace`);
-//! - [`theory`]: `evaluate` ([`asperity::report::point()`]), `sweep` (loads, t·q_r, γ_s);
-//! - [`gfmd`]: one GFMD run on a generated or given map;
+//! - [`theory`]: `evaluate` ([`asperity::report::point()`]), `sweep` (loads, t·q_r, γ_s),
+//!   `cycle` (the theory's path along a load cycle);
+//! - [`gfmd`]: one GFMD run on a generated or given map; [`gfmd_cycle`]: GFMD's load cycle
+//!   through tension to pull-off;
 //! - [`surface`]: `read_surface`, `psd`;
 //! - [`gauge`]: fitting the custom model to a reference;
 //! - [`work`]: long work off the GIL, cancelled by Ctrl-C;
@@ -17,6 +19,7 @@
 pub mod errors;
 pub mod gauge;
 pub mod gfmd;
+pub mod gfmd_cycle;
 pub mod scene;
 pub mod surface;
 pub mod theory;
@@ -70,7 +73,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(theory::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(theory::options_check, m)?)?;
     m.add_function(wrap_pyfunction!(theory::run_sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(theory::run_cycle, m)?)?;
     m.add_function(wrap_pyfunction!(gfmd::run_gfmd, m)?)?;
+    m.add_function(wrap_pyfunction!(gfmd_cycle::run_gfmd_cycle, m)?)?;
     m.add_function(wrap_pyfunction!(surface::read_surface, m)?)?;
     m.add_function(wrap_pyfunction!(surface::map_psd, m)?)?;
     m.add_function(wrap_pyfunction!(gauge::run_gauge, m)?)?;

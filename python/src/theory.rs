@@ -9,6 +9,12 @@
 //! the CLI's `--from --to --points`; any other ascending list runs as one single-value sweep
 //! per value. A value that does not converge leaves NaN (None in `to_dict()`) in its row with
 //! the reason in `reasons`; invalid input fails the call before any work.
+//!
+//! A load sweep with `cycle` (`asperity sweep --cycle`) adds the theory's path along the load
+//! cycle under `cycle` ([`asperity::theory::cycle::path_through_tension`]: up on the loading
+//! branch, back down on the unloading branch and on into tension to the theory's pull-off);
+//! `cycle(scene, from_, to, points)` is that path over the CLI's loads (`--from --to
+//! --points`, log-spaced).
 
 use crate::errors;
 use crate::scene::SceneCore;
@@ -18,6 +24,7 @@ use asperity::error::{Error, Field, Result};
 use asperity::input::scene::{Scene, PRESSURE_RANGE};
 use asperity::theory::adhesion::AdhesionAccuracy;
 use asperity::theory::closed_form::eq18_area;
+use asperity::theory::cycle::{path_through_tension, TheoryCycle};
 use asperity::theory::engine::Options;
 use asperity::theory::hysteresis::{self, EdgeKind, KnobEdge};
 use asperity::theory::knob::{self, Knob, KnobPoint, KnobSpec};
@@ -162,6 +169,9 @@ struct SweepOut {
     jump_in_pressure: Option<f64>,
     pull_off_pressure: Option<f64>,
     window_edges: Vec<KnobEdge>,
+    /// With `cycle`: the theory's path along the load cycle (the CLI's `sweep --cycle`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    cycle: Option<TheoryCycle>,
     #[serde(skip)]
     reasons: Vec<Option<String>>,
 }
@@ -202,8 +212,10 @@ fn check_ascending(values: &[f64], field: &str) -> Result<()> {
     Ok(())
 }
 
-/// The load sweep of `scene` over `pressures` (module docs).
-fn pressure_sweep(core: &SceneCore, pressures: &[f64], opts: &Options, ctx: &work::Ctx) -> Result<SweepOut> {
+/// The library sweeps that give `pressures` (module docs): one sweep where they are evenly
+/// log-spaced, else one single-load sweep per value. With `cycle` the loads must be one sweep's
+/// (the path follows the sweep's branches).
+fn pressure_specs(pressures: &[f64], cycle: bool) -> Result<Vec<SweepSpec>> {
     check_ascending(pressures, "pressures")?;
     for &p in pressures {
         asperity::error::check_in(Field::Pressure, p, PRESSURE_RANGE.0, PRESSURE_RANGE.1)?;
@@ -214,19 +226,46 @@ fn pressure_sweep(core: &SceneCore, pressures: &[f64], opts: &Options, ctx: &wor
         to: pressures[n - 1],
         points: n,
     };
-    let scene = core.scene.clone().with_pressure(pressures[0])?;
-    let specs: Vec<SweepSpec> = if same_values(pressures, &spec.pressures()) {
-        vec![spec]
-    } else {
-        pressures
+    let even = spec.pressures();
+    if same_values(pressures, &even) {
+        return Ok(vec![spec]);
+    }
+    if cycle {
+        let (k, &v) = pressures
             .iter()
-            .map(|&p| SweepSpec {
-                from: p,
-                to: p,
-                points: 1,
-            })
-            .collect()
-    };
+            .enumerate()
+            .find(|(k, p)| !same_values(&[**p], &[even[*k]]))
+            .expect("a value off the log-spaced loads");
+        return Err(Error::invalid(
+            Field::Other("pressures".into()),
+            v,
+            format!(
+                "log-spaced loads with cycle=True (np.geomspace(first, last, n)): {} at position {k}",
+                asperity::error::fmt_value(even[k])
+            ),
+        ));
+    }
+    Ok(pressures
+        .iter()
+        .map(|&p| SweepSpec {
+            from: p,
+            to: p,
+            points: 1,
+        })
+        .collect())
+}
+
+/// The load sweep of `core`'s scene over the loads of `specs` (`n` in all; module docs), with
+/// the theory's path along the cycle when `cycle` (`specs` then one sweep).
+fn pressure_sweep(
+    core: &SceneCore,
+    specs: &[SweepSpec],
+    opts: &Options,
+    ctx: &work::Ctx,
+    cycle: bool,
+) -> Result<SweepOut> {
+    let n: usize = specs.iter().map(|s| s.points).sum();
+    let scene = core.scene.clone().with_pressure(specs[0].from)?;
     let single = specs.len() == 1;
     let mut out = SweepOut {
         preset: core.preset.name.clone(),
@@ -242,6 +281,7 @@ fn pressure_sweep(core: &SceneCore, pressures: &[f64], opts: &Options, ctx: &wor
         jump_in_pressure: None,
         pull_off_pressure: None,
         window_edges: Vec::new(),
+        cycle: None,
         reasons: Vec::new(),
     };
     let mut notes = Vec::new();
@@ -254,6 +294,9 @@ fn pressure_sweep(core: &SceneCore, pressures: &[f64], opts: &Options, ctx: &wor
             contact_fraction: f64::NAN,
         });
         let sw = sweep::sweep(&scene, sp, opts, Some(&*ctx.cancel))?;
+        if cycle && single {
+            out.cycle = Some(path_through_tension(&sw, &scene, &opts.adhesion, Some(&*ctx.cancel))?);
+        }
         for (r, why) in sw.rows.iter().zip(&sw.reasons) {
             // the row's own reason (the solver's error at that load)
             let reason = (!r.converged).then(|| {
@@ -407,28 +450,42 @@ fn knob_sweep(core: &SceneCore, kn: Knob, values: &[f64], opts: &Options, ctx: &
         jump_in_pressure: None,
         pull_off_pressure: None,
         window_edges,
+        cycle: None,
         reasons,
     })
 }
 
-/// `sweep(scene, values, over)`: a sweep over p* (`over="pressure"`), t·q_r (`"thickness"`)
-/// or γ_s in J/m² (`"gamma"`), as a dict with the keys of `asperity sweep --format json` and
-/// `reasons` (module docs).
+/// `sweep(scene, values, over, progress, cycle)`: a sweep over p* (`over="pressure"`), t·q_r
+/// (`"thickness"`) or γ_s in J/m² (`"gamma"`), as a dict with the keys of
+/// `asperity sweep --format json` and `reasons`; a load sweep with `cycle` adds the theory's
+/// path along the cycle (module docs).
 #[pyfunction]
-#[pyo3(name = "sweep", signature = (scene, values, over = "pressure", progress = None))]
+#[pyo3(name = "sweep", signature = (scene, values, over = "pressure", progress = None, cycle = false))]
 pub fn run_sweep<'py>(
     py: Python<'py>,
     scene: &SceneCore,
     values: Vec<f64>,
     over: &str,
     progress: Option<Bound<'py, PyAny>>,
+    cycle: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
     let opts = Options::default();
     let core = scene.clone();
+    if cycle && !matches!(over, "pressure") {
+        return Err(errors::input(
+            py,
+            "cycle",
+            "True",
+            "only with over=\"pressure\" (a load cycle runs over p*)",
+        ));
+    }
     let out = match over {
-        "pressure" => work::run(py, progress.as_ref(), move |ctx| {
-            pressure_sweep(&core, &values, &opts, ctx)
-        })?,
+        "pressure" => {
+            let specs = errors::guard(py, || pressure_specs(&values, cycle))?;
+            work::run(py, progress.as_ref(), move |ctx| {
+                pressure_sweep(&core, &specs, &opts, ctx, cycle)
+            })?
+        }
         "thickness" | "thickness_qr" => work::run(py, progress.as_ref(), move |ctx| {
             knob_sweep(&core, Knob::Thickness, &values, &opts, ctx)
         })?,
@@ -438,4 +495,31 @@ pub fn run_sweep<'py>(
         other => return Err(errors::input(py, "over", other, "pressure, thickness or gamma")),
     };
     out.into_py(py)
+}
+
+/// `cycle(scene, from_, to, points)`: the theory's path along the load cycle over the loads of
+/// `asperity sweep --from --to --points` (log-spaced), as the dict under `cycle` of
+/// `asperity sweep --cycle --format json` (module docs).
+#[pyfunction]
+#[pyo3(name = "cycle", signature = (scene, from_, to, points = 64, progress = None))]
+pub fn run_cycle<'py>(
+    py: Python<'py>,
+    scene: &SceneCore,
+    from_: f64,
+    to: f64,
+    points: usize,
+    progress: Option<Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let spec = SweepSpec {
+        from: from_,
+        to,
+        points,
+    };
+    errors::guard(py, || spec.validate())?;
+    let opts = Options::default();
+    let core = scene.clone();
+    let out = work::run(py, progress.as_ref(), move |ctx| {
+        pressure_sweep(&core, &[spec], &opts, ctx, true)
+    })?;
+    value::ser(py, &out.cycle)
 }

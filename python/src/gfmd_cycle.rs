@@ -1,0 +1,69 @@
+//! GFMD's load cycle from Python ([`asperity::gfmd::cycle::run_cycle`], the object of
+//! `asperity gfmd --cycle --from A --to B --points N --format json`): on one map, loading from
+//! p* = A up to B (log-spaced, warm-started), unloading back down to A and on into tension
+//! (p* = 0, −A, −2A, …, then bisection) until the contact is lost, the pull-off with its
+//! bracket, the jump-in, the theory's sweep on the same map (`theory`) and its path along the
+//! same cycle to its own pull-off (`theory_cycle`). The map is generated or given as for
+//! `gfmd` ([`crate::gfmd::setup`]); every argument is checked before any work, and the walk
+//! runs on a worker thread that stops within one relaxation step on Ctrl-C
+//! ([`crate::work`]).
+
+use crate::errors;
+use crate::gfmd::{info, setup};
+use crate::scene::SceneCore;
+use crate::value;
+use crate::work;
+use asperity::gfmd::cycle::{run_cycle, CycleSpec};
+use asperity::gfmd::Progress;
+use numpy::PyReadonlyArray2;
+use pyo3::prelude::*;
+
+/// `gfmd_cycle(scene, from_, to, points=8, heights=None, size_m=None, grid=None, seed=1, ...)`:
+/// see the module docs.
+#[pyfunction]
+#[pyo3(name = "gfmd_cycle", signature = (scene, from_, to, points = 8, heights = None, size_m = None, grid = None, seed = 1, tolerance = 1e-8, max_iterations = None, bins = None, method = "auto", rescale = true, progress = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn run_gfmd_cycle<'py>(
+    py: Python<'py>,
+    scene: &SceneCore,
+    from_: f64,
+    to: f64,
+    points: usize,
+    heights: Option<PyReadonlyArray2<'py, f64>>,
+    size_m: Option<f64>,
+    grid: Option<i64>,
+    seed: u64,
+    tolerance: f64,
+    max_iterations: Option<usize>,
+    bins: Option<usize>,
+    method: &str,
+    rescale: bool,
+    progress: Option<Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let spec = CycleSpec {
+        from: from_,
+        to,
+        points,
+        cycle: true,
+    };
+    errors::guard(py, || spec.validate())?;
+    let (setup, opts) = setup(
+        py,
+        scene,
+        heights,
+        size_m,
+        grid,
+        seed,
+        tolerance,
+        max_iterations,
+        bins,
+        method,
+        rescale,
+    )?;
+    let total = opts.max_iterations;
+    let c = work::run(py, progress.as_ref(), move |ctx| {
+        let mut report = |_: usize, p: Progress| ctx.report(info(p, total));
+        run_cycle(&setup, &spec, &opts, &mut report, &ctx.cancel)
+    })?;
+    value::ser(py, &c)
+}
