@@ -81,6 +81,7 @@ pub fn setup<'py>(
         .unwrap_or(DEFAULT_GRID);
     let setup = errors::guard(py, || {
         opts.validate()?;
+        method.check_on(&scene.scene)?;
         if let Some(n) = grid {
             if n < 4 {
                 return Err(Error::invalid(Field::Grid, n as f64, "an integer N >= 4"));

@@ -188,6 +188,8 @@ BAD = [
     (lambda pr: asperity.gfmd_cycle(S, 0.0, 0.01, grid=32, progress=pr), "from_", "allowed 1e-12 <= p* <= 1e3"),
     (lambda pr: asperity.gfmd_cycle(S, 0.002, 0.01, grid=2, progress=pr), "grid", "an integer N >= 4"),
     (lambda pr: asperity.gfmd_cycle(S, 0.002, 0.01, method="cg", progress=pr), "method", "auto, pk or fire"),
+    (lambda pr: asperity.gfmd_cycle(S.replace(thickness_qr=0.5), 0.002, 0.01, method="pk", progress=pr), "method", "pk on a slab"),
+    (lambda pr: asperity.gfmd(S.replace(thickness_qr=0.5), method="pk", progress=pr), "method", "pk on a slab"),
     (lambda pr: asperity.gfmd_cycle(S, 0.002, 0.01, tolerance=2.0, progress=pr), "tolerance", "allowed"),
     (lambda pr: asperity.gfmd_cycle(S, 0.002, 0.01, size=1e-6, progress=pr), "size", "None without heights"),
 ]

@@ -27,6 +27,25 @@ pub enum Method {
 pub const PK_MAX_NODES: usize = 2048 * 2048;
 
 impl Method {
+    /// Refuses Polonsky–Keer on a slab, before any step: its constrained CG does not reach the
+    /// tolerance on a body of finite thickness (residual 0.2–0.98 after every step of the
+    /// limit), where FIRE ([`Method::Auto`] picks it there) converges in a few hundred steps.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `method` for [`Method::PolonskyKeer`] when `scene`'s t·q_r is
+    /// finite.
+    pub fn check_on(self, scene: &crate::input::scene::Scene) -> Result<()> {
+        let t = scene.thickness_qr();
+        if self == Method::PolonskyKeer && t.is_finite() {
+            return Err(Error::invalid_text(
+                Field::Other("method".into()),
+                format!("pk on a slab (t·q_r = {})", crate::error::fmt_value(t)),
+                "auto or fire on a slab (Polonsky-Keer converges on a semi-infinite body only)",
+            ));
+        }
+        Ok(())
+    }
+
     /// Whether a hard-wall run (no adhesion) on `nodes` grid nodes of a body that is
     /// `semi_infinite` (else a slab) relaxes with Polonsky–Keer.
     pub fn uses_pk(self, nodes: usize, semi_infinite: bool) -> bool {

@@ -37,6 +37,7 @@ pub fn field_name(field: &Field) -> &str {
         Field::Other(k) if k == asperity::input::model::FUDGE_GAMMA_KEY => "--fudge-gamma",
         Field::Other(k) if k == "fit" => "--fit",
         Field::Other(k) if k == "reference" => "--reference",
+        Field::Other(k) if k == "method" => "--method",
         other => other.key(),
     }
 }
@@ -269,20 +270,13 @@ pub fn step(s: &str) -> std::result::Result<i64, String> {
     }
 }
 
-/// `--method pk` on a slab, refused before any step: Polonsky–Keer's CG does not reach the
-/// tolerance on a finite-thickness body (residual 0.2–0.98 after every step of the limit),
-/// where FIRE (`auto` picks it there) converges in a few hundred steps.
+/// `--method pk` on a slab, refused before any step ([`asperity::gfmd::Method::check_on`]).
 ///
 /// # Errors
 /// [`Error::Invalid`] naming `--method` for `pk` (`pk` true) when the scene's t·q_r is finite.
 pub fn refuse_pk_on_slab(pk: bool, scene: &asperity::input::scene::Scene) -> asperity::error::Result<()> {
-    let t = scene.thickness_qr();
-    if pk && t.is_finite() {
-        return Err(Error::invalid_text(
-            Field::Other("--method".into()),
-            format!("pk on a slab (t·q_r = {})", asperity::error::fmt_value(t)),
-            "auto or fire on a slab (Polonsky-Keer converges on a semi-infinite body only)",
-        ));
+    if pk {
+        asperity::gfmd::Method::PolonskyKeer.check_on(scene)?;
     }
     Ok(())
 }
