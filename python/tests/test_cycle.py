@@ -206,3 +206,16 @@ def test_bad_input_is_refused_before_any_work(call, field, allowed):
     assert allowed in msg and "\n" not in msg, msg
     assert e.value.value is not None and e.value.allowed is not None
     assert seen == [], "no work before the error"
+
+
+def test_the_cycle_names_are_public():
+    # Python names are a public interface: pinned here, extended only
+    import inspect
+
+    assert {"cycle", "gfmd_cycle", "CycleResult", "GfmdCycleResult"} <= set(asperity.__all__)
+    assert list(inspect.signature(asperity.cycle).parameters) == ["scene", "from_", "to", "points", "progress"]
+    assert list(inspect.signature(asperity.gfmd_cycle).parameters) == [
+        "scene", "from_", "to", "points", "heights", "size", "grid", "seed", "tolerance",
+        "max_iterations", "bins", "method", "rescale", "progress",
+    ]
+    assert "cycle" in inspect.signature(asperity.sweep).parameters
