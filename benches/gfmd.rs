@@ -44,5 +44,28 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+/// One periodic convolution (`RealFft2::convolve`: forward real FFT, a real kernel, inverse),
+/// the unit of GFMD's cost: Polonsky–Keer does two per iteration, FIRE one per step.
+fn convolve(c: &mut Criterion) {
+    use asperity::numerics::fft2::RealFft2;
+    use rustfft::num_complex::Complex64;
+    let mut g = c.benchmark_group("fft2 convolve");
+    g.sample_size(10);
+    for n in [1024usize, 2048] {
+        let mut plan = RealFft2::new(n, n);
+        let input: Vec<f64> = (0..n * n).map(|k| ((k * 7919) % 13) as f64 - 6.0).collect();
+        let values: Vec<f64> = (0..plan.spectrum_len())
+            .map(|k| 1.0 / (1.0 + (k % 97) as f64))
+            .collect();
+        let kernel = plan.kernel(&values);
+        let mut spec = vec![Complex64::new(0.0, 0.0); plan.spectrum_len()];
+        let mut out = vec![0.0; n * n];
+        g.bench_function(format!("{n}x{n}"), |b| {
+            b.iter(|| plan.convolve(black_box(&input), &kernel, &mut spec, &mut out))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench, convolve);
 criterion_main!(benches);

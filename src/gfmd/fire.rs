@@ -34,7 +34,7 @@
 
 use super::{GfmdOptions, Problem, Progress, Solution, Stage};
 use crate::error::{Error, Result};
-use crate::numerics::fft2::RealFft2;
+use crate::numerics::fft2::{RealFft2, SpectralKernel};
 use crate::surface::heightmap::wave_number_sq;
 use crate::theory::slab::slab_factor_at;
 use rustfft::num_complex::Complex64;
@@ -127,7 +127,7 @@ struct State {
     n: usize,
     plan: RealFft2,
     /// φ(q)/n (half spectrum), the convolution kernel.
-    kernel: Vec<f64>,
+    kernel: SpectralKernel,
     h: Vec<f64>,
     w: Vec<f64>,
     v: Vec<f64>,
@@ -327,18 +327,13 @@ pub fn relax_from(
     let (nx, ny, da) = (s.nx, s.ny, s.spacing);
     let n = nx * ny;
     let e = problem.modulus;
-    let plan = RealFft2::new(nx, ny);
+    let mut plan = RealFft2::new(nx, ny);
     let nh = plan.nh();
     let (phi, phi_max) = stiffness(problem, nh);
     let h: Vec<f64> = s.heights.iter().map(|x| x / da).collect();
-    // γ/ρ in E* and 1/ρ in 1/Δa (0 without adhesion)
-    let (adh_stress, inv_range) = match problem.gamma > 0.0 {
-        true => (problem.gamma / (problem.range * e), da / problem.range),
-        false => (0.0, 0.0),
-    };
+    let (adh_stress, inv_range) = adhesion_units(problem, da);
     let mut w0 = start_positions(&h, start_gap, da)?;
     let mut pk_steps = 0;
-    let mut plan = plan;
     if problem.gamma == 0.0 && opts.method.uses_pk(n, problem.thickness.is_infinite()) {
         let start = PkStart {
             phi: &phi,
@@ -350,10 +345,11 @@ pub fn relax_from(
     let omega = (phi_max + adh_stress * inv_range).sqrt();
     let dt_max = DT_MAX / omega;
     let dt_min = 0.02 * dt_max;
+    let kernel = plan.kernel(&phi.iter().map(|p| p * (1.0 / n as f64)).collect::<Vec<_>>());
     let mut st = State {
         n,
         plan,
-        kernel: phi.iter().map(|p| p * (1.0 / n as f64)).collect(),
+        kernel,
         w: w0,
         h,
         v: vec![0.0; n],
@@ -452,6 +448,14 @@ fn stiffness(problem: &Problem<'_>, nh: usize) -> (Vec<f64>, f64) {
     (phi, phi_max)
 }
 
+/// γ/ρ in E* and 1/ρ in 1/Δa (both 0 without adhesion).
+fn adhesion_units(problem: &Problem<'_>, da: f64) -> (f64, f64) {
+    match problem.gamma > 0.0 {
+        true => (problem.gamma / (problem.range * problem.modulus), da / problem.range),
+        false => (0.0, 0.0),
+    }
+}
+
 /// The body's start (in Δa): the flat body on the highest summit, or the heights plus a given
 /// gap (m, one finite value per node).
 fn start_positions(h: &[f64], start_gap: Option<&[f64]>, da: f64) -> Result<Vec<f64>> {
@@ -501,7 +505,7 @@ fn pk_start(
             let mut p0s = vec![0.0; n];
             let mut spec = vec![Complex64::new(0.0, 0.0); nh * ny];
             let kern: Vec<f64> = phi.iter().map(|f| f / n as f64).collect();
-            plan.convolve(&w0, &kern, &mut spec, &mut p0s);
+            plan.convolve(&w0, &plan.kernel(&kern), &mut spec, &mut p0s);
             w0.iter()
                 .zip(h)
                 .zip(&p0s)

@@ -77,6 +77,14 @@ impl std::fmt::Debug for RealFft2 {
     }
 }
 
+/// A real convolution kernel on the half spectrum of a [`RealFft2`], stored column by column
+/// (`values[kx * ny + ky]`) so that the column pass of a convolution reads it in order. Made
+/// once per kernel with [`RealFft2::kernel`].
+#[derive(Debug, Clone)]
+pub struct SpectralKernel {
+    columns: Vec<f64>,
+}
+
 /// Grids with at least this many points are transformed with rayon.
 const PARALLEL_MIN_POINTS: usize = 1 << 15;
 
@@ -125,6 +133,20 @@ impl RealFft2 {
         } else {
             2.0
         }
+    }
+
+    /// The kernel with half-spectrum values `values` (row-major, `values[ky * nh + kx]`, the
+    /// layout of [`RealFft2::forward`]'s output).
+    pub fn kernel(&self, values: &[f64]) -> SpectralKernel {
+        let (ny, nh) = (self.ny, self.nh);
+        assert_eq!(values.len(), nh * ny, "RealFft2::kernel: size");
+        let mut columns = vec![0.0; nh * ny];
+        for ky in 0..ny {
+            for kx in 0..nh {
+                columns[kx * ny + ky] = values[ky * nh + kx];
+            }
+        }
+        SpectralKernel { columns }
     }
 
     /// Unnormalised forward transform of the real field `input` (nx·ny) into `spec` (half
@@ -190,11 +212,12 @@ impl RealFft2 {
 
     /// Periodic convolution with a real, even-in-k kernel given in Fourier space:
     /// `out = inverse(kernel · forward(input))` (unnormalised: include 1/(nx·ny) in the
-    /// kernel). `kernel` has the half-spectrum layout, `spec` is scratch of
+    /// kernel). `kernel` is made by [`RealFft2::kernel`], `spec` is scratch of
     /// [`RealFft2::spectrum_len`]. Same result, bit for bit, as `forward`, a multiplication and
     /// `inverse`, in fewer passes over memory.
-    pub fn convolve(&mut self, input: &[f64], kernel: &[f64], spec: &mut [Complex64], out: &mut [f64]) {
+    pub fn convolve(&mut self, input: &[f64], kernel: &SpectralKernel, spec: &mut [Complex64], out: &mut [f64]) {
         let (nx, ny, nh) = (self.nx, self.ny, self.nh);
+        let kernel = &kernel.columns[..];
         assert!(
             input.len() == nx * ny && out.len() == nx * ny && spec.len() == nh * ny && kernel.len() == nh * ny,
             "RealFft2::convolve: sizes"
@@ -216,6 +239,94 @@ impl RealFft2 {
             }
         };
         run_chunks(self.parallel, out, nx, spec, nh, ny, rows);
+    }
+}
+
+impl RealFft2 {
+    /// [`RealFft2::convolve`] with work fused into its two row passes, while each row is in
+    /// the cache: `prepare(y, row)` may change row y of `input` just before it is transformed
+    /// (the changed row stays in `input`), and `finish(y, input_row, out_row)` returns four
+    /// partial results of row y once its output is made. The partials come back one per row,
+    /// in row order, so a caller that combines them in that order gets the same bits whatever
+    /// the thread count. The convolution itself is the same, bit for bit, as `convolve` of the
+    /// prepared input.
+    #[allow(clippy::too_many_arguments)]
+    pub fn convolve_rows<P, F>(
+        &mut self,
+        input: &mut [f64],
+        kernel: &SpectralKernel,
+        spec: &mut [Complex64],
+        out: &mut [f64],
+        prepare: P,
+        finish: F,
+    ) -> Vec<[f64; 4]>
+    where
+        P: Fn(usize, &mut [f64]) + Sync,
+        F: Fn(usize, &[f64], &[f64]) -> [f64; 4] + Sync,
+    {
+        let (nx, ny, nh) = (self.nx, self.ny, self.nh);
+        let kernel = &kernel.columns[..];
+        assert!(
+            input.len() == nx * ny && out.len() == nx * ny && spec.len() == nh * ny && kernel.len() == nh * ny,
+            "RealFft2::convolve_rows: sizes"
+        );
+        let r2c = &self.r2c;
+        let forward = |y0: usize, (rin, rout): (&mut [f64], &mut [Complex64])| {
+            let mut scratch = r2c.make_scratch_vec();
+            let mut row = vec![0.0; nx];
+            for (k, (a, b)) in rin.chunks_exact_mut(nx).zip(rout.chunks_exact_mut(nh)).enumerate() {
+                prepare(y0 + k, a);
+                row.copy_from_slice(a);
+                r2c.process_with_scratch(&mut row, b, &mut scratch)
+                    .expect("planned sizes");
+            }
+        };
+        let per = self.rows_per_block();
+        if self.parallel {
+            use rayon::prelude::*;
+            input
+                .par_chunks_mut(per * nx)
+                .zip(spec.par_chunks_mut(per * nh))
+                .enumerate()
+                .for_each(|(b, blk)| forward(b * per, blk));
+        } else {
+            forward(0, (input, spec));
+        }
+        columns_with(
+            self.parallel,
+            &*self.col_fwd,
+            Some((kernel, &*self.col_inv)),
+            spec,
+            nh,
+            ny,
+        );
+        let c2r = &self.c2r;
+        let input = &*input;
+        let inverse = |y0: usize, (rout, rin): (&mut [f64], &mut [Complex64]), parts: &mut [[f64; 4]]| {
+            let mut scratch = c2r.make_scratch_vec();
+            for (k, (a, b)) in rout.chunks_exact_mut(nx).zip(rin.chunks_exact_mut(nh)).enumerate() {
+                let _ = c2r.process_with_scratch(b, a, &mut scratch);
+                let y = y0 + k;
+                parts[k] = finish(y, &input[y * nx..(y + 1) * nx], a);
+            }
+        };
+        let mut parts = vec![[0.0; 4]; ny];
+        if self.parallel {
+            use rayon::prelude::*;
+            out.par_chunks_mut(per * nx)
+                .zip(spec.par_chunks_mut(per * nh))
+                .zip(parts.par_chunks_mut(per))
+                .enumerate()
+                .for_each(|(b, (blk, pt))| inverse(b * per, blk, pt));
+        } else {
+            inverse(0, (out, spec), &mut parts);
+        }
+        parts
+    }
+
+    /// Rows per parallel block of the row passes (four blocks per thread).
+    fn rows_per_block(&self) -> usize {
+        self.ny.div_ceil(rayon::current_num_threads().max(1) * 4).max(1)
     }
 }
 
@@ -250,7 +361,7 @@ fn columns(parallel: bool, fft: &dyn rustfft::Fft<f64>, data: &mut [Complex64], 
 }
 
 /// As [`columns`]; with `then = Some((kernel, inverse))` each strip is also multiplied by the
-/// real `kernel` (row-major like `data`) and transformed back with `inverse` while it is in
+/// real `kernel` (column by column, as [`SpectralKernel`] stores it) and transformed back with `inverse` while it is in
 /// the cache (a convolution in one pass over the spectrum).
 fn columns_with(
     parallel: bool,
@@ -286,11 +397,9 @@ fn columns_with(
             }
             fft.process_with_scratch(&mut buf, &mut scratch);
             if let Some((kernel, inverse)) = then {
-                for c in 0..w {
-                    let col = &mut buf[c * ny..(c + 1) * ny];
-                    for (r, x) in col.iter_mut().enumerate() {
-                        *x *= kernel[r * nc + c0 + c];
-                    }
+                let k = &kernel[c0 * ny..(c0 + w) * ny];
+                for (x, &f) in buf.iter_mut().zip(k) {
+                    *x *= f;
                 }
                 inverse.process_with_scratch(&mut buf, &mut scratch);
             }
@@ -354,11 +463,12 @@ mod tests {
                 }
             }
             // convolve == forward · kernel · inverse, bit for bit
-            let kernel: Vec<f64> = (0..plan.spectrum_len()).map(|k| 1.0 + (k % 7) as f64 * 0.25).collect();
+            let values: Vec<f64> = (0..plan.spectrum_len()).map(|k| 1.0 + (k % 7) as f64 * 0.25).collect();
+            let kernel = plan.kernel(&values);
             let mut a = vec![0.0; nx * ny];
             let mut b = vec![0.0; nx * ny];
             let mut s2 = spec.clone();
-            for (c, &k) in s2.iter_mut().zip(&kernel) {
+            for (c, &k) in s2.iter_mut().zip(&values) {
                 *c *= k;
             }
             plan.inverse(&mut s2, &mut a);
