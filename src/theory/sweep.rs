@@ -481,11 +481,13 @@ fn is_monotone(rows: &[SweepRow]) -> bool {
     })
 }
 
+/// Per grid load, the gap of the loading branch and of the unloading one where distinct (None
+/// where unknown).
+type NodeGaps = Vec<Option<(gap::BranchGap, Option<gap::BranchGap>)>>;
+
 /// Per grid load, the adhesionless mean gap by the energy route on the sweep's own table (see
 /// the module docs), and a note where part of it is unknown: below the highest failed load,
 /// or below a load where the stored energy falls (not one stable branch).
-type NodeGaps = Vec<Option<(gap::BranchGap, Option<gap::BranchGap>)>>;
-
 fn dry_sweep_gaps(
     scene: &Scene,
     ps: &[f64],
