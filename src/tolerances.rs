@@ -298,7 +298,7 @@ pub const PSD_WINDOWED_MOMENT_REL: f64 = 0.08;
 /// A march whose wall runs away from the distribution (to σ_a* = 1e3…1e9 in one step): once
 /// the wall is far no more contact is lost, so a_r after the jump stays as it was up to the
 /// round-off of the marches that follow (the runaway step drops an image of less than 1e-9 of
-/// a_r, `propagator::IMAGE_NEGLIGIBLE`).
+/// a_r, `wall_motion::IMAGE_NEGLIGIBLE`).
 pub const RUNAWAY_WALL_REL: f64 = 1e-8;
 
 /// The same jump to σ_a* = 1e3, 1e6 and 1e9: a_r at q_s agrees to this (measured 3e-5: the

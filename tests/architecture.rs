@@ -218,25 +218,6 @@ mod fn_length;
 /// Longest function of the library (lines, from `fn` to its closing brace).
 const MAX_FN_LINES: usize = 120;
 
-/// Library functions over [`MAX_FN_LINES`], each kept whole on purpose: numerical kernels
-/// whose steps share many locals, split only where the oracle tests stand guard. The test
-/// fails when one of them is split under the limit (delete its entry) and when a function
-/// not listed grows over it, so the list cannot go stale.
-const LONG_FUNCTIONS: [&str; 6] = [
-    // the GFMD reference fit: runs, seeds and the residual table in one pass
-    "src/fit/gfmd_reference.rs::gfmd_reference",
-    // Levenberg–Marquardt driver with bounds, restarts and the covariance
-    "src/fit/mod.rs::fit",
-    // the load sweep: the branch scan pattern, the window refinement and the gap table
-    "src/theory/sweep.rs::sweep",
-    // the adhesionless ODE with its dense output along the resolution
-    "src/theory/persson.rs::solve",
-    // the shooting root finder over C = γ(q_L): bracketing, trends, Brent
-    "src/theory/adhesion/roots.rs::find_roots",
-    // one piece of the propagator: the sine-series semigroup and the wall's shift
-    "src/theory/adhesion/propagator.rs::advance_piece",
-];
-
 #[test]
 fn library_functions_stay_short() {
     let mut files = Vec::new();
@@ -259,19 +240,9 @@ fn library_functions_stay_short() {
             }
         }
     }
-    let names: Vec<&str> = long.iter().map(|(n, _, _)| n.as_str()).collect();
-    let unlisted: Vec<String> = long
+    let long: Vec<String> = long
         .iter()
-        .filter(|(n, _, _)| !LONG_FUNCTIONS.contains(&n.as_str()))
         .map(|(n, l, c)| format!("{n} (line {l}, {c} lines)"))
         .collect();
-    let stale: Vec<&&str> = LONG_FUNCTIONS.iter().filter(|n| !names.contains(n)).collect();
-    assert!(
-        unlisted.is_empty(),
-        "functions over {MAX_FN_LINES} lines: {unlisted:#?}"
-    );
-    assert!(
-        stale.is_empty(),
-        "listed as long but now within {MAX_FN_LINES} lines (delete them from LONG_FUNCTIONS): {stale:?}"
-    );
+    assert!(long.is_empty(), "functions over {MAX_FN_LINES} lines: {long:#?}");
 }

@@ -128,46 +128,98 @@ pub fn gfmd_reference(
     cancel: &AtomicBool,
 ) -> Result<GfmdReference> {
     let t0 = Instant::now();
-    if !(1..=MAX_SEEDS).contains(&spec.seeds) {
-        return Err(Error::invalid(
-            Field::Seeds,
-            spec.seeds as f64,
-            format!("1 <= seeds <= {MAX_SEEDS}"),
-        ));
+    let plan = Plan::new(setup, spec)?;
+    let mut runs = Runs::default();
+    for (si, &seed) in plan.seeds.iter().enumerate() {
+        let per_rung = plan.run_rungs(si, seed, opts, progress, cancel, &mut runs)?;
+        plan.reduce_seed(&per_rung, &mut runs)?;
     }
-    let rungs: Vec<f64> = match &spec.ladder {
-        Some(l) => {
-            let mut l = l.clone();
-            l.sort_by(f64::total_cmp);
-            l.dedup();
-            if l.len() < 2 {
-                return Err(Error::invalid_text(
-                    Field::Ladder,
-                    format!("{} distinct rung(s)", l.len()),
-                    "two or more distinct lambda_s/da",
-                ));
-            }
-            l
+    let scene = runs.scene.expect("at least one sweep ran");
+    let rows = reference_rows(&plan.loads, &runs.values, &runs.ext_err);
+    let reference = to_reference(&rows, scene.gamma > 0.0);
+    Ok(GfmdReference {
+        grid: setup.surface.as_ref().map_or(setup.grid.n(), |s| s.nx),
+        ladder: spec.ladder.as_ref().map(|_| plan.rungs.clone()),
+        seeds: plan.seeds,
+        rows,
+        reduction: runs.reduction,
+        iterations: runs.iterations,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+        scene,
+        reference,
+    })
+}
+
+/// What a reference runs, checked before any run: the seeds, the ladder's rungs (sorted,
+/// distinct; the setup's resolution alone without a ladder) and the loads.
+struct Plan<'a> {
+    setup: &'a GfmdSetup,
+    spec: &'a GfmdReferenceSpec,
+    /// λ_s/Δa of each rung.
+    rungs: Vec<f64>,
+    /// The loads p*.
+    loads: Vec<f64>,
+    /// The seeds s, s+1, …, s+K−1.
+    seeds: Vec<u64>,
+}
+
+impl<'a> Plan<'a> {
+    /// The plan of `spec` on `setup` (errors: see [`gfmd_reference`]).
+    fn new(setup: &'a GfmdSetup, spec: &'a GfmdReferenceSpec) -> Result<Plan<'a>> {
+        if !(1..=MAX_SEEDS).contains(&spec.seeds) {
+            return Err(Error::invalid(
+                Field::Seeds,
+                spec.seeds as f64,
+                format!("1 <= seeds <= {MAX_SEEDS}"),
+            ));
         }
-        None => vec![setup.grid.points_per_short_wavelength],
-    };
-    if setup.surface.is_some() && (spec.seeds > 1 || spec.ladder.is_some()) {
-        return Err(Error::Unsupported(
-            "a loaded map is one realisation at one resolution: no ensemble over seeds, no ladder".into(),
-        ));
+        let rungs: Vec<f64> = match &spec.ladder {
+            Some(l) => {
+                let mut l = l.clone();
+                l.sort_by(f64::total_cmp);
+                l.dedup();
+                if l.len() < 2 {
+                    return Err(Error::invalid_text(
+                        Field::Ladder,
+                        format!("{} distinct rung(s)", l.len()),
+                        "two or more distinct lambda_s/da",
+                    ));
+                }
+                l
+            }
+            None => vec![setup.grid.points_per_short_wavelength],
+        };
+        if setup.surface.is_some() && (spec.seeds > 1 || spec.ladder.is_some()) {
+            return Err(Error::Unsupported(
+                "a loaded map is one realisation at one resolution: no ensemble over seeds, no ladder".into(),
+            ));
+        }
+        spec.loads.validate()?;
+        let loads = spec.loads.pressures();
+        let seeds: Vec<u64> = (0..spec.seeds as u64).map(|k| setup.seed.wrapping_add(k)).collect();
+        Ok(Plan {
+            setup,
+            spec,
+            rungs,
+            loads,
+            seeds,
+        })
     }
-    spec.loads.validate()?;
-    let loads = spec.loads.pressures();
-    let seeds: Vec<u64> = (0..spec.seeds as u64).map(|k| setup.seed.wrapping_add(k)).collect();
-    // values[seed][observable][load] (limits with a ladder), errors likewise
-    let mut values: Vec<[Vec<f64>; 3]> = Vec::new();
-    let mut ext_err: Vec<[Vec<f64>; 3]> = Vec::new();
-    let mut iterations = 0;
-    let mut scene = None;
-    let mut reduction = None;
-    for (si, &seed) in seeds.iter().enumerate() {
+
+    /// The load sweep of realisation `si` (seed `seed`) on every rung, finest last; the
+    /// solver steps, and the scene and reduction of the first sweep, go to `runs`.
+    fn run_rungs(
+        &self,
+        si: usize,
+        seed: u64,
+        opts: &GfmdOptions,
+        progress: &mut dyn FnMut(&Stage, Progress),
+        cancel: &AtomicBool,
+        runs: &mut Runs,
+    ) -> Result<Vec<Vec<GfmdSweepRow>>> {
+        let (setup, spec) = (self.setup, self.spec);
         let mut per_rung: Vec<Vec<GfmdSweepRow>> = Vec::new();
-        for (ri, &pts) in rungs.iter().enumerate() {
+        for (ri, &pts) in self.rungs.iter().enumerate() {
             let grid = GridSpec {
                 points_per_short_wavelength: pts,
                 ..setup.grid
@@ -179,11 +231,11 @@ pub fn gfmd_reference(
             };
             let mut stage = Stage {
                 seed_index: si,
-                seeds: seeds.len(),
+                seeds: self.seeds.len(),
                 rung: ri,
-                rungs: rungs.len(),
+                rungs: self.rungs.len(),
                 load: 0,
-                loads: loads.len(),
+                loads: self.loads.len(),
                 grid: setup.surface.as_ref().map_or(s.grid.n(), |m| m.nx),
             };
             let (prep, rows, it) = run_loads(
@@ -196,43 +248,72 @@ pub fn gfmd_reference(
                 },
                 cancel,
             )?;
-            iterations += it;
-            if scene.is_none() {
-                scene = Some(prep.scene);
-                reduction = prep.reduction;
+            runs.iterations += it;
+            if runs.scene.is_none() {
+                runs.scene = Some(prep.scene);
+                runs.reduction = prep.reduction;
             }
             per_rung.push(rows);
         }
-        let col = |rows: &[GfmdSweepRow], j: usize| -> Vec<f64> {
-            rows.iter()
-                .map(|r| match j {
-                    0 => r.a_r,
-                    1 => r.mean_contact_stress,
-                    _ => r.mean_gap_rel,
-                })
-                .collect()
-        };
-        if spec.ladder.is_some() {
-            // Δa ∝ 1/(λ_s/Δa) at fixed λ_s
-            let h: Vec<f64> = rungs.iter().map(|p| 1.0 / p).collect();
+        Ok(per_rung)
+    }
+
+    /// One realisation's values per observable and load into `runs`: with a ladder each
+    /// load's Δa → 0 limit over the rungs ([`extrapolate`], Δa ∝ 1/(λ_s/Δa) at fixed λ_s) and
+    /// its error, else the single rung's values.
+    fn reduce_seed(&self, per_rung: &[Vec<GfmdSweepRow>], runs: &mut Runs) -> Result<()> {
+        if self.spec.ladder.is_some() {
+            let h: Vec<f64> = self.rungs.iter().map(|p| 1.0 / p).collect();
             let mut v: [Vec<f64>; 3] = Default::default();
             let mut e: [Vec<f64>; 3] = Default::default();
             for j in 0..3 {
-                for k in 0..loads.len() {
-                    let x: Vec<f64> = per_rung.iter().map(|rows| col(rows, j)[k]).collect();
+                for k in 0..self.loads.len() {
+                    let x: Vec<f64> = per_rung.iter().map(|rows| column(rows, j)[k]).collect();
                     let ex = extrapolate(&h, &x)?;
                     v[j].push(ex.limit);
                     e[j].push(ex.error);
                 }
             }
-            values.push(v);
-            ext_err.push(e);
+            runs.values.push(v);
+            runs.ext_err.push(e);
         } else {
             let rows = &per_rung[0];
-            values.push([col(rows, 0), col(rows, 1), col(rows, 2)]);
+            runs.values.push([column(rows, 0), column(rows, 1), column(rows, 2)]);
         }
+        Ok(())
     }
-    let scene = scene.expect("at least one sweep ran");
+}
+
+/// What the sweeps leave for the statistics of [`reference_rows`].
+#[derive(Default)]
+struct Runs {
+    /// values[seed][observable][load] (limits with a ladder), observables as in [`column`].
+    values: Vec<[Vec<f64>; 3]>,
+    /// The extrapolation errors likewise (empty without a ladder).
+    ext_err: Vec<[Vec<f64>; 3]>,
+    /// Total solver steps.
+    iterations: usize,
+    /// The scene of the first sweep.
+    scene: Option<Scene>,
+    /// Its reduction.
+    reduction: Option<Reduction>,
+}
+
+/// Observable j of a sweep's rows, one value per load: a_r (0), σ̄_c* (1), ū/h_rms (2).
+fn column(rows: &[GfmdSweepRow], j: usize) -> Vec<f64> {
+    rows.iter()
+        .map(|r| match j {
+            0 => r.a_r,
+            1 => r.mean_contact_stress,
+            _ => r.mean_gap_rel,
+        })
+        .collect()
+}
+
+/// Per load, the mean over the seeds and the standard error s_X of the module docs from the
+/// seeds' `values` and extrapolation errors `ext_err` ([`Runs`]); an error that is not
+/// measured, not finite or not positive is left out.
+fn reference_rows(loads: &[f64], values: &[[Vec<f64>; 3]], ext_err: &[[Vec<f64>; 3]]) -> Vec<GfmdReferenceRow> {
     let mut rows = Vec::with_capacity(loads.len());
     for (k, &p) in loads.iter().enumerate() {
         let stat = |j: usize| -> (f64, Option<f64>) {
@@ -258,18 +339,7 @@ pub fn gfmd_reference(
             mean_gap_rel_err,
         });
     }
-    let reference = to_reference(&rows, scene.gamma > 0.0);
-    Ok(GfmdReference {
-        grid: setup.surface.as_ref().map_or(setup.grid.n(), |s| s.nx),
-        seeds,
-        ladder: spec.ladder.as_ref().map(|_| rungs.clone()),
-        rows,
-        reduction,
-        iterations,
-        elapsed_s: t0.elapsed().as_secs_f64(),
-        scene,
-        reference,
-    })
+    rows
 }
 
 /// The rows as a [`Reference`] named "gfmd": a_r and ū/h_rms, and σ̄_c* when `adhesive`

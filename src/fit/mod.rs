@@ -24,6 +24,7 @@ pub mod gfmd_reference;
 pub mod predict;
 pub mod reference;
 pub mod reference_set;
+mod residuals;
 pub mod set_gauge;
 pub mod trust;
 
@@ -31,10 +32,10 @@ use crate::error::{Error, Field, Result};
 use crate::input::model::{Model, ModelKind};
 use crate::input::scene::Scene;
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
-use nalgebra::storage::Owned;
-use nalgebra::{DMatrix, DVector, Dyn};
+use nalgebra::{DMatrix, DVector};
 pub use predict::predict;
-use reference::{Observable, Reference};
+use reference::Reference;
+use residuals::Problem;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -203,139 +204,6 @@ pub struct Fit {
     pub elapsed_s: f64,
 }
 
-struct Problem<'a> {
-    scene: &'a Scene,
-    reference: &'a Reference,
-    params: &'a [Param],
-    base: Model,
-    x: DVector<f64>,
-    scale: Vec<f64>,
-    r: Option<DVector<f64>>,
-    evaluations: usize,
-    error: Option<Error>,
-}
-
-/// A residual that stands in where the theory cannot be evaluated (a coefficient set outside
-/// the model's range during a trial step): large, so the optimiser steps back.
-const PENALTY: f64 = 1e6;
-
-impl Problem<'_> {
-    fn model_at(&self, x: &DVector<f64>) -> Model {
-        let mut m = self.base;
-        // w₀ moves c₁ at the new c₂: set it last
-        for pass_w0 in [false, true] {
-            for (p, v) in self.params.iter().zip(x.iter()) {
-                if (*p == Param::W0) == pass_w0 {
-                    p.set(&mut m, *v);
-                }
-            }
-        }
-        m
-    }
-
-    fn residuals_at(&mut self, x: &DVector<f64>) -> DVector<f64> {
-        self.evaluations += 1;
-        let m = self.model_at(x);
-        let n = self.reference.points.len();
-        if m.validate().is_err() {
-            return DVector::from_element(n, PENALTY);
-        }
-        match predict(self.scene, &m, self.reference) {
-            Ok(y) => DVector::from_iterator(
-                n,
-                y.iter()
-                    .zip(&self.reference.points)
-                    .zip(&self.scale)
-                    .map(|((y, o), s)| (y - o.value) / s),
-            ),
-            Err(e) => {
-                if self.error.is_none() {
-                    self.error = Some(e);
-                }
-                DVector::from_element(n, PENALTY)
-            }
-        }
-    }
-
-    fn jacobian_at(&mut self, x: &DVector<f64>) -> DMatrix<f64> {
-        let n = self.reference.points.len();
-        let mut j = DMatrix::zeros(n, x.len());
-        for k in 0..x.len() {
-            let h = 1e-4 * x[k].abs().max(0.1);
-            let mut xp = x.clone();
-            xp[k] += h;
-            let mut xm = x.clone();
-            xm[k] -= h;
-            // one-sided where a step leaves the model's range (at its edge)
-            let col = match (
-                self.model_at(&xp).validate().is_ok(),
-                self.model_at(&xm).validate().is_ok(),
-            ) {
-                (true, false) => (self.residuals_at(&xp) - self.residuals_at(x)) / h,
-                (false, true) => (self.residuals_at(x) - self.residuals_at(&xm)) / h,
-                _ => (self.residuals_at(&xp) - self.residuals_at(&xm)) / (2.0 * h),
-            };
-            j.set_column(k, &col);
-        }
-        j
-    }
-}
-
-impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
-    type ResidualStorage = Owned<f64, Dyn>;
-    type JacobianStorage = Owned<f64, Dyn, Dyn>;
-    type ParameterStorage = Owned<f64, Dyn>;
-
-    fn set_params(&mut self, x: &DVector<f64>) {
-        self.x = x.clone();
-        let r = self.residuals_at(x);
-        self.r = Some(r);
-    }
-
-    fn params(&self) -> DVector<f64> {
-        self.x.clone()
-    }
-
-    fn residuals(&self) -> Option<DVector<f64>> {
-        self.r.clone()
-    }
-
-    fn jacobian(&self) -> Option<DMatrix<f64>> {
-        // the trait takes &self; the difference quotient needs evaluations of its own
-        let mut me = Problem {
-            scene: self.scene,
-            reference: self.reference,
-            params: self.params,
-            base: self.base,
-            x: self.x.clone(),
-            scale: self.scale.clone(),
-            r: None,
-            evaluations: 0,
-            error: None,
-        };
-        Some(me.jacobian_at(&self.x))
-    }
-}
-
-/// The weights s_i of the residuals (module docs).
-fn scales(reference: &Reference) -> Vec<f64> {
-    reference
-        .points
-        .iter()
-        .map(|o| match (o.error, o.observable) {
-            (Some(e), _) => e,
-            (None, Observable::Pr) => reference
-                .points
-                .iter()
-                .filter(|q| q.observable == Observable::Pr && q.p == o.p)
-                .map(|q| q.value)
-                .fold(0.0f64, f64::max)
-                .max(f64::MIN_POSITIVE),
-            (None, _) => o.value.abs().max(f64::MIN_POSITIVE),
-        })
-        .collect()
-}
-
 /// The starting model of a fit: `m`'s coefficients as a custom model.
 ///
 /// # Errors
@@ -366,32 +234,9 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
     let start = custom_start(&scene.model)?;
     let n = reference.points.len();
     let k = params.len();
-    if k == 0 {
-        return Err(Error::invalid_text(
-            Field::Other("fit".into()),
-            "(none)",
-            "at least one of c1, c2, alpha, k_griffith, w0",
-        ));
-    }
-    if n <= k {
-        return Err(Error::invalid(
-            Field::Other("reference".into()),
-            n as f64,
-            format!("more points than fitted parameters ({k})"),
-        ));
-    }
+    check_sizes(n, k)?;
     let x0 = DVector::from_iterator(k, params.iter().map(|p| p.get(&start)));
-    let mut problem = Problem {
-        scene,
-        reference,
-        params,
-        base: start,
-        x: x0.clone(),
-        scale: scales(reference),
-        r: None,
-        evaluations: 0,
-        error: None,
-    };
+    let mut problem = Problem::new(scene, reference, params, start, x0.clone());
     // the starting point must be computable: a bad scene or reference is the user's to fix
     predict(scene, &start, reference)?;
     let r0 = problem.residuals_at(&x0);
@@ -414,6 +259,56 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
         });
     }
     let model = problem.model_at(&x);
+    check_within_range(&model, &r, n)?;
+    let j = problem.jacobian_at(&x);
+    let cond = check_identifiable(&j, params)?;
+    let chi2 = r.norm_squared();
+    let dof = (n - k) as f64;
+    let with_errors = reference.has_errors();
+    let s2 = if with_errors { 1.0 } else { chi2 / dof };
+    let cov = covariance(&j, s2)?;
+    let fitted = fitted_params(params, &x, &x0, &cov)?;
+    Ok(Fit {
+        params: fitted,
+        correlation: correlation(&cov, k),
+        condition_number: cond,
+        residuals: observable_residuals(reference, &r, &r0),
+        chi2,
+        chi2_reduced: with_errors.then_some(chi2 / dof),
+        points: n,
+        evaluations,
+        termination: format!("{:?}", report.termination),
+        model,
+        start,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// [`Error::Invalid`] for no parameter to fit (k = 0) or no more points than parameters
+/// (n ≤ k: nothing left to estimate the misfit from).
+fn check_sizes(n: usize, k: usize) -> Result<()> {
+    if k == 0 {
+        return Err(Error::invalid_text(
+            Field::Other("fit".into()),
+            "(none)",
+            "at least one of c1, c2, alpha, k_griffith, w0",
+        ));
+    }
+    if n <= k {
+        return Err(Error::invalid(
+            Field::Other("reference".into()),
+            n as f64,
+            format!("more points than fitted parameters ({k})"),
+        ));
+    }
+    Ok(())
+}
+
+/// [`Error::NotConverged`] where the best fit `model` (residuals `r` at n points) leaves the
+/// model's range or runs into its edge (min W < [`EDGE_W`], α within [`EDGE_ALPHA`] of 0 or
+/// 4): the reference asks for more than the model can give, and error bars there would mean
+/// nothing.
+fn check_within_range(model: &Model, r: &DVector<f64>, n: usize) -> Result<()> {
     model.validate().map_err(|e| Error::NotConverged {
         solver: crate::error::Solver::Gauge,
         reason: format!(
@@ -432,8 +327,14 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
             ),
         });
     }
-    let j = problem.jacobian_at(&x);
-    let (cond, weakest) = identifiability(&j);
+    Ok(())
+}
+
+/// The condition number of the Jacobian `j` at the optimum ([`identifiability`]), or
+/// [`Error::NotConverged`] naming the unconstrained combination of `params` where it exceeds
+/// [`MAX_CONDITION`] (module docs).
+fn check_identifiable(j: &DMatrix<f64>, params: &[Param]) -> Result<f64> {
+    let (cond, weakest) = identifiability(j);
     if cond.is_nan() || cond > MAX_CONDITION {
         let combo: Vec<String> = params
             .iter()
@@ -450,15 +351,27 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
             ),
         });
     }
-    let chi2 = r.norm_squared();
-    let dof = (n - k) as f64;
-    let with_errors = reference.has_errors();
-    let s2 = if with_errors { 1.0 } else { chi2 / dof };
-    let jtj = j.transpose() * &j;
-    let cov = jtj.try_inverse().ok_or_else(|| Error::NotConverged {
+    Ok(cond)
+}
+
+/// The covariance C = s²(JᵀJ)⁻¹ of the fitted coefficients (module docs).
+fn covariance(j: &DMatrix<f64>, s2: f64) -> Result<DMatrix<f64>> {
+    let jtj = j.transpose() * j;
+    Ok(jtj.try_inverse().ok_or_else(|| Error::NotConverged {
         solver: crate::error::Solver::Gauge,
         reason: "JᵀJ is singular at the optimum: the data cannot identify the parameters".into(),
-    })? * s2;
+    })? * s2)
+}
+
+/// The fitted coefficients with their standard errors √C_jj, or [`Error::NotConverged`] for
+/// the first whose standard error exceeds [`WEAK_SE_FACTOR`] × max(|value|, 0.1): the data do
+/// not pin it down.
+fn fitted_params(
+    params: &[Param],
+    x: &DVector<f64>,
+    x0: &DVector<f64>,
+    cov: &DMatrix<f64>,
+) -> Result<Vec<FittedParam>> {
     let fitted: Vec<FittedParam> = params
         .iter()
         .enumerate()
@@ -483,14 +396,25 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
             ),
         });
     }
-    let correlation = (0..k)
+    Ok(fitted)
+}
+
+/// The correlations C_ab/√(C_aa C_bb) of the k fitted coefficients.
+fn correlation(cov: &DMatrix<f64>, k: usize) -> Vec<Vec<f64>> {
+    (0..k)
         .map(|a| {
             (0..k)
                 .map(|b| cov[(a, b)] / (cov[(a, a)] * cov[(b, b)]).sqrt())
                 .collect()
         })
-        .collect();
-    let residuals = reference
+        .collect()
+}
+
+/// Per observable of the reference, the misfit of the residuals `r` at the optimum and `r0`
+/// at the start.
+fn observable_residuals(reference: &Reference, r: &DVector<f64>, r0: &DVector<f64>) -> Vec<ObservableResidual> {
+    let n = reference.points.len();
+    reference
         .observables()
         .into_iter()
         .map(|o| {
@@ -499,26 +423,12 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
             ObservableResidual {
                 observable: o.key(),
                 points: idx.len(),
-                rms: rms(&r),
+                rms: rms(r),
                 max_abs: idx.iter().map(|&i| r[i].abs()).fold(0.0, f64::max),
-                rms_start: rms(&r0),
+                rms_start: rms(r0),
             }
         })
-        .collect();
-    Ok(Fit {
-        params: fitted,
-        correlation,
-        condition_number: cond,
-        residuals,
-        chi2,
-        chi2_reduced: with_errors.then_some(chi2 / dof),
-        points: n,
-        evaluations,
-        termination: format!("{:?}", report.termination),
-        model,
-        start,
-        elapsed_s: t0.elapsed().as_secs_f64(),
-    })
+        .collect()
 }
 
 /// Condition number of J with unit-norm columns, and the right singular vector of its smallest

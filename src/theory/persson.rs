@@ -31,7 +31,7 @@
 use crate::error::Result;
 use crate::input::scene::Scene;
 use crate::numerics::ode::{Control, Trajectory};
-use crate::surface::spectrum::Spectrum;
+use crate::surface::spectrum::{Discrete, Spectrum};
 use crate::theory::mirror;
 use serde::Serialize;
 use statrs::function::erf::erf;
@@ -262,132 +262,16 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
         return solve_xu24(scene, acc);
     }
     let p = scene.pressure;
-    let g2 = scene.spectrum.moment(2);
-    let t = scene.thickness_m();
-    let model = scene.model;
-    let q_l = scene.spectrum.q_l();
-    let q_s = scene.spectrum.q_s();
     let out_q = resolution_grid(scene, acc.resolution_points);
-
-    let (v_end, err_v, evaluations, resolution, trajectory) = match &scene.spectrum {
-        Spectrum::SelfAffine(_) | Spectrum::Tabulated(_) => {
-            let spec = &scene.spectrum;
-            let mut rhs = |s: f64, v: f64| -> f64 {
-                let q = s.exp();
-                let a = area_of_variance(p, v);
-                let f = crate::elastic::slab::slab_factor_at(q, t);
-                model.broadening(a) * f * f * q * q * spec.dm_dlnq(q) / (4.0 * g2)
-            };
-            // Absolute tolerance, scaled by the size of the answer: v(q_s) lies between
-            // W_min^{2α}·v₁ and v₁ with v₁ = ∫f²q²dm/(4ḡ²) (the W = 1 variance). Errors below
-            // rtol·1e-3·v₁ cannot move a_r by more than ~rtol. (Scaling by p*² instead would
-            // ask to resolve the a_r drop at v ≈ p*², which for p* = 1e-8 lies within 1e-13
-            // of ln q_L: below the spacing of doubles, and irrelevant for v(q_s).)
-            let v1 = if t.is_infinite() {
-                0.25
-            } else {
-                // only its order of magnitude matters: coarse panels (1 in ln q) suffice
-                scene
-                    .spectrum
-                    .nodes(1.0)
-                    .iter()
-                    .map(|m| {
-                        let f = crate::elastic::slab::slab_factor_at(m.q, t);
-                        f * f * m.q * m.q * m.dm
-                    })
-                    .sum::<f64>()
-                    / (4.0 * g2)
-            };
-            let ctl = Control {
-                rtol: acc.rtol,
-                atol: acc.rtol * 1e-3 * v1,
-                max_steps: 200_000,
-            };
-            let bp = scene.spectrum.breakpoints();
-            let mut traj = Trajectory::start(bp[0].ln(), 0.0, &mut rhs);
-            for w in bp.windows(2) {
-                // the plateau's right end and the tail's left end differ: restart the
-                // derivative record at the kink so the dense output does not smear it
-                let (s0, s1) = (w[0].ln(), w[1].ln());
-                let h0 = traj.last_step((s1 - s0) / 16.0).min((s1 - s0) / 4.0);
-                if traj.s.len() > 1 {
-                    let (s, v) = traj.last();
-                    let d = rhs(s, v);
-                    *traj.dy.last_mut().unwrap() = d;
-                }
-                traj.advance(s1, h0, &ctl, &mut rhs)?;
-            }
-            let (_, mut v_end) = traj.last();
-            let mut err_sum = traj.err_sum;
-            if model.constant_broadening() {
-                // W^{2α} ≡ 1: v(q_s) = ∫f²q²dm/(4ḡ²) exactly (Gauss–Legendre, ~1e-14); the ODE
-                // above only provides a_r(q) along the resolution.
-                v_end = if t.is_infinite() {
-                    0.25
-                } else {
-                    scene.spectrum.integrate(|q| {
-                        let f = crate::elastic::slab::slab_factor_at(q, t);
-                        f * f * q * q
-                    }) / (4.0 * g2)
-                };
-                err_sum = v_end * 1e-14;
-            }
-            let resolution = out_q
-                .iter()
-                .map(|&q| {
-                    let v = traj.eval_monotone(q.ln().clamp(bp[0].ln(), q_s.ln()));
-                    ResolutionPoint {
-                        q,
-                        a_r: area_of_variance(p, v),
-                        variance: v,
-                    }
-                })
-                .collect();
-            (v_end, err_sum, traj.evaluations, resolution, traj)
-        }
-        Spectrum::Discrete(d) => {
-            let mut v = 0.0;
-            let mut shells = Vec::with_capacity(d.modes.len());
-            for m in &d.modes {
-                let f = crate::elastic::slab::slab_factor_at(m.q, t);
-                let base = f * f * m.q * m.q * m.dm / (4.0 * g2);
-                // midpoint in the shell: predict with W at the start, correct at the middle
-                let pred = v + 0.5 * model.broadening(area_of_variance(p, v)) * base;
-                v += model.broadening(area_of_variance(p, pred)) * base;
-                shells.push((m.q, v));
-            }
-            let resolution = out_q
-                .iter()
-                .map(|&q| {
-                    let i = shells.partition_point(|&(qq, _)| qq <= q * (1.0 + 1e-12));
-                    let v = if i == 0 { 0.0 } else { shells[i - 1].1 };
-                    ResolutionPoint {
-                        q,
-                        a_r: area_of_variance(p, v),
-                        variance: v,
-                    }
-                })
-                .collect();
-            // step-function record: v is constant between shells (zero slope)
-            let mut traj = Trajectory::default();
-            let mut prev = 0.0;
-            for &(q, vv) in &shells {
-                let s = q.ln();
-                traj.s.push(s - 1e-12);
-                traj.y.push(prev);
-                traj.dy.push(0.0);
-                traj.s.push(s);
-                traj.y.push(vv);
-                traj.dy.push(0.0);
-                prev = vv;
-            }
-            if traj.s.is_empty() {
-                traj.s.push(q_l.ln());
-                traj.y.push(0.0);
-                traj.dy.push(0.0);
-            }
-            (v, 0.0, 2 * d.modes.len(), resolution, traj)
-        }
+    let Integrated {
+        v_end,
+        err_v,
+        evaluations,
+        resolution,
+        trajectory,
+    } = match &scene.spectrum {
+        Spectrum::SelfAffine(_) | Spectrum::Tabulated(_) => integrate_continuous(scene, acc, &out_q)?,
+        Spectrum::Discrete(d) => sum_shells(scene, d, &out_q),
     };
 
     let width = v_end.max(0.0).sqrt();
@@ -411,4 +295,176 @@ pub fn solve(scene: &Scene, acc: &Accuracy) -> Result<Solution> {
         evaluations,
         trajectory,
     })
+}
+
+/// The variance ODE integrated over the resolution by one of [`integrate_continuous`] and
+/// [`sum_shells`]: what [`solve`] turns into the mirror Gaussian at q_s.
+struct Integrated {
+    /// v(q_s).
+    v_end: f64,
+    /// Estimated absolute error of v(q_s).
+    err_v: f64,
+    /// Right-hand-side evaluations (work measure).
+    evaluations: usize,
+    /// a_r and v at the reported resolutions.
+    resolution: Vec<ResolutionPoint>,
+    /// Dense record of v(q) for [`Solution::variance_at`].
+    trajectory: Trajectory,
+}
+
+/// The variance ODE of the module docs for a continuous spectrum (self-affine or tabulated):
+/// Dormand–Prince segment by segment between the PSD's breakpoints, so that the dense output
+/// does not smear the kinks of the PSD; with a constant broadening (W^{2α} ≡ 1) v(q_s) is
+/// replaced by its quadrature ([`plain_variance`]), the ODE then only giving a_r(q) along the
+/// resolution.
+fn integrate_continuous(scene: &Scene, acc: &Accuracy, out_q: &[f64]) -> Result<Integrated> {
+    let p = scene.pressure;
+    let g2 = scene.spectrum.moment(2);
+    let t = scene.thickness_m();
+    let model = scene.model;
+    let q_s = scene.spectrum.q_s();
+    let spec = &scene.spectrum;
+    let mut rhs = |s: f64, v: f64| -> f64 {
+        let q = s.exp();
+        let a = area_of_variance(p, v);
+        let f = crate::elastic::slab::slab_factor_at(q, t);
+        model.broadening(a) * f * f * q * q * spec.dm_dlnq(q) / (4.0 * g2)
+    };
+    let ctl = Control {
+        rtol: acc.rtol,
+        atol: acc.rtol * 1e-3 * variance_scale(scene, t, g2),
+        max_steps: 200_000,
+    };
+    let bp = scene.spectrum.breakpoints();
+    let mut traj = Trajectory::start(bp[0].ln(), 0.0, &mut rhs);
+    for w in bp.windows(2) {
+        // the plateau's right end and the tail's left end differ: restart the
+        // derivative record at the kink so the dense output does not smear it
+        let (s0, s1) = (w[0].ln(), w[1].ln());
+        let h0 = traj.last_step((s1 - s0) / 16.0).min((s1 - s0) / 4.0);
+        if traj.s.len() > 1 {
+            let (s, v) = traj.last();
+            let d = rhs(s, v);
+            *traj.dy.last_mut().unwrap() = d;
+        }
+        traj.advance(s1, h0, &ctl, &mut rhs)?;
+    }
+    let (_, mut v_end) = traj.last();
+    let mut err_sum = traj.err_sum;
+    if model.constant_broadening() {
+        v_end = plain_variance(scene, t, g2);
+        err_sum = v_end * 1e-14;
+    }
+    let resolution = out_q
+        .iter()
+        .map(|&q| {
+            let v = traj.eval_monotone(q.ln().clamp(bp[0].ln(), q_s.ln()));
+            ResolutionPoint {
+                q,
+                a_r: area_of_variance(p, v),
+                variance: v,
+            }
+        })
+        .collect();
+    Ok(Integrated {
+        v_end,
+        err_v: err_sum,
+        evaluations: traj.evaluations,
+        resolution,
+        trajectory: traj,
+    })
+}
+
+/// The scale of the ODE's absolute tolerance: the W = 1 variance v₁ = ∫f²q²dm/(4ḡ²) (1/4 on
+/// a half-space). v(q_s) lies between W_min^{2α}·v₁ and v₁, so errors below rtol·1e-3·v₁
+/// cannot move a_r by more than ~rtol. (Scaling by p*² instead would ask to resolve the a_r
+/// drop at v ≈ p*², which for p* = 1e-8 lies within 1e-13 of ln q_L: below the spacing of
+/// doubles, and irrelevant for v(q_s).) Only its order of magnitude matters, so on a slab
+/// coarse panels (1 in ln q) suffice.
+fn variance_scale(scene: &Scene, t: f64, g2: f64) -> f64 {
+    if t.is_infinite() {
+        0.25
+    } else {
+        scene
+            .spectrum
+            .nodes(1.0)
+            .iter()
+            .map(|m| {
+                let f = crate::elastic::slab::slab_factor_at(m.q, t);
+                f * f * m.q * m.q * m.dm
+            })
+            .sum::<f64>()
+            / (4.0 * g2)
+    }
+}
+
+/// v(q_s) for W^{2α} ≡ 1: ∫f²q²dm/(4ḡ²) exactly (Gauss–Legendre, ~1e-14), 1/4 on a
+/// half-space.
+fn plain_variance(scene: &Scene, t: f64, g2: f64) -> f64 {
+    if t.is_infinite() {
+        0.25
+    } else {
+        scene.spectrum.integrate(|q| {
+            let f = crate::elastic::slab::slab_factor_at(q, t);
+            f * f * q * q
+        }) / (4.0 * g2)
+    }
+}
+
+/// The variance ODE for a discrete spectrum (the modes of a height map): the paper's sum over
+/// modes, one midpoint step per |q| shell (predicted with W at the shell's start, corrected at
+/// its middle), and v recorded as a step function of ln q.
+fn sum_shells(scene: &Scene, d: &Discrete, out_q: &[f64]) -> Integrated {
+    let p = scene.pressure;
+    let g2 = scene.spectrum.moment(2);
+    let t = scene.thickness_m();
+    let model = scene.model;
+    let q_l = scene.spectrum.q_l();
+    let mut v = 0.0;
+    let mut shells = Vec::with_capacity(d.modes.len());
+    for m in &d.modes {
+        let f = crate::elastic::slab::slab_factor_at(m.q, t);
+        let base = f * f * m.q * m.q * m.dm / (4.0 * g2);
+        // midpoint in the shell: predict with W at the start, correct at the middle
+        let pred = v + 0.5 * model.broadening(area_of_variance(p, v)) * base;
+        v += model.broadening(area_of_variance(p, pred)) * base;
+        shells.push((m.q, v));
+    }
+    let resolution = out_q
+        .iter()
+        .map(|&q| {
+            let i = shells.partition_point(|&(qq, _)| qq <= q * (1.0 + 1e-12));
+            let v = if i == 0 { 0.0 } else { shells[i - 1].1 };
+            ResolutionPoint {
+                q,
+                a_r: area_of_variance(p, v),
+                variance: v,
+            }
+        })
+        .collect();
+    // step-function record: v is constant between shells (zero slope)
+    let mut traj = Trajectory::default();
+    let mut prev = 0.0;
+    for &(q, vv) in &shells {
+        let s = q.ln();
+        traj.s.push(s - 1e-12);
+        traj.y.push(prev);
+        traj.dy.push(0.0);
+        traj.s.push(s);
+        traj.y.push(vv);
+        traj.dy.push(0.0);
+        prev = vv;
+    }
+    if traj.s.is_empty() {
+        traj.s.push(q_l.ln());
+        traj.y.push(0.0);
+        traj.dy.push(0.0);
+    }
+    Integrated {
+        v_end: v,
+        err_v: 0.0,
+        evaluations: 2 * d.modes.len(),
+        resolution,
+        trajectory: traj,
+    }
 }

@@ -262,34 +262,8 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
     let mut s0 = scene.clone();
     s0.pressure = spec.from;
     s0.validate()?;
-    // grid: requested points refined by an integer factor m, extended to full contact
-    let x0 = spec.from.ln();
-    let (step, m) = if spec.points > 1 {
-        let hs = (spec.to / spec.from).ln() / (spec.points - 1) as f64;
-        let m = (hs / opts.sweep_step_ln).ceil().max(1.0) as usize;
-        (hs / m as f64, m)
-    } else {
-        (gap::GAP_STEP_LN, 1)
-    };
-    let p_full = gap::full_contact_pressure(scene);
-    let last_req = (spec.points - 1) * m;
-    let x_top = p_full.ln().max(spec.to.ln());
-    let mut n = last_req + 1;
-    while x0 + (n - 1) as f64 * step < x_top - 1e-12 || n < 9 {
-        n += 1;
-    }
-    let requested = spec.pressures();
-    let ps: Vec<f64> = (0..n)
-        .map(|i| {
-            if i % m == 0 && i / m < spec.points {
-                // requested points exactly as the spec computes them
-                requested[i / m]
-            } else {
-                (x0 + i as f64 * step).exp()
-            }
-        })
-        .map(|p: f64| p.min(PRESSURE_RANGE.1))
-        .collect();
+    let SweepGrid { ps, step, m, p_full } = SweepGrid::new(scene, spec, opts);
+    let n = ps.len();
     let evs = node_results(scene, &ps, opts, cancel)?;
     let unit = crate::theory::energy::energy_unit(scene);
     // the hysteresis window: the first run of grid loads with two stable branches, each edge
@@ -303,19 +277,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
     // the mean gap (physics.md §5.1): without adhesion the energy route on this grid's own
     // table; with adhesion the load each branch's contact carries on the adhesionless table of the scene
     let (gaps, gap_note) = if scene.gamma > 0.0 {
-        match gap::DryGap::new_cancellable(scene, spec.from, opts, cancel) {
-            Ok(dry) => {
-                let gaps = (0..n)
-                    .map(|i| match &evs[i] {
-                        Ok(e) if i % m == 0 => gap::branch_gaps(&dry, ps[i], e).ok(),
-                        _ => None,
-                    })
-                    .collect();
-                (gaps, None)
-            }
-            Err(Error::Cancelled) => return Err(Error::Cancelled),
-            Err(e) => (vec![None; n], Some(format!("mean gap unavailable: {e}"))),
-        }
+        adhesive_gaps(scene, spec.from, &ps, m, &evs, opts, cancel)?
     } else {
         dry_sweep_gaps(scene, &ps, step, &evs, unit)?
     };
@@ -327,40 +289,8 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
     let rows: Vec<SweepRow> = (0..spec.points)
         .map(|k| {
             let i = k * m;
-            let nan = f64::NAN;
-            let (l, u) = gaps[i].unwrap_or((
-                gap::BranchGap {
-                    relative: nan,
-                    error: nan,
-                    lower: nan,
-                    upper: nan,
-                    contact_load: nan,
-                },
-                None,
-            ));
-            let un = |f: fn(&gap::BranchGap) -> f64| u.as_ref().map_or(nan, f);
             match &evs[i] {
-                Ok(e) => SweepRow {
-                    p: ps[i],
-                    a_r: e.stats.a_r,
-                    mean_gap_rel: l.relative,
-                    mean_gap: l.relative * h_rms,
-                    mean_contact_stress: e.stats.mean_contact_stress,
-                    elastic_energy: e.elastic_energy,
-                    converged: true,
-                    elastic_energy_reduced: e.elastic_energy / unit,
-                    mean_gap_error: l.error,
-                    contact_stress_variance: e.stats.contact_stress_variance,
-                    mean_gap_lower_rel: l.lower,
-                    a_r_unloading: e.unloading_a_r.unwrap_or(f64::NAN),
-                    branches: e.branches.len().max(1),
-                    mean_gap_upper_rel: l.upper,
-                    contact_load: l.contact_load,
-                    mean_gap_unloading_rel: un(|b| b.relative),
-                    mean_gap_unloading_error: un(|b| b.error),
-                    mean_gap_unloading_lower_rel: un(|b| b.lower),
-                    contact_load_unloading: un(|b| b.contact_load),
-                },
+                Ok(e) => converged_row(ps[i], e, gaps[i], h_rms, unit),
                 Err(_) => {
                     failed_loads.push(ps[i]);
                     SweepRow::empty(ps[i])
@@ -368,7 +298,155 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
             }
         })
         .collect();
-    let note = evs.iter().rposition(|e| e.is_err()).map(|f| {
+    let note = failure_note(scene, &ps, &evs);
+    let note = match (note, gap_note.clone()) {
+        (Some(a), Some(b)) => Some(format!("{a}; {b}")),
+        (a, b) => a.or(b),
+    };
+    let monotone = is_monotone(&rows);
+    Ok(Sweep {
+        rows,
+        evaluations: n,
+        full_contact_pressure: p_full,
+        monotone,
+        failed_loads,
+        reasons,
+        note,
+        gap_note,
+        jump_in_pressure,
+        pull_off_pressure,
+    })
+}
+
+/// The loads a sweep evaluates: one uniform grid in ln p* through the requested points,
+/// refined by an integer factor m where their spacing exceeds the options' `sweep_step_ln`,
+/// and extended with the same step to full contact (and to 9 loads at least) for the gap
+/// table (module docs).
+struct SweepGrid {
+    /// The grid's loads: requested point k is load k·m, exactly as [`SweepSpec::pressures`]
+    /// computes it.
+    ps: Vec<f64>,
+    /// The grid's step in ln p*.
+    step: f64,
+    /// The refinement factor m.
+    m: usize,
+    /// p* of full contact ([`gap::full_contact_pressure`]).
+    p_full: f64,
+}
+
+impl SweepGrid {
+    fn new(scene: &Scene, spec: &SweepSpec, opts: &Options) -> SweepGrid {
+        let x0 = spec.from.ln();
+        let (step, m) = if spec.points > 1 {
+            let hs = (spec.to / spec.from).ln() / (spec.points - 1) as f64;
+            let m = (hs / opts.sweep_step_ln).ceil().max(1.0) as usize;
+            (hs / m as f64, m)
+        } else {
+            (gap::GAP_STEP_LN, 1)
+        };
+        let p_full = gap::full_contact_pressure(scene);
+        let last_req = (spec.points - 1) * m;
+        let x_top = p_full.ln().max(spec.to.ln());
+        let mut n = last_req + 1;
+        while x0 + (n - 1) as f64 * step < x_top - 1e-12 || n < 9 {
+            n += 1;
+        }
+        let requested = spec.pressures();
+        let ps: Vec<f64> = (0..n)
+            .map(|i| {
+                if i % m == 0 && i / m < spec.points {
+                    // requested points exactly as the spec computes them
+                    requested[i / m]
+                } else {
+                    (x0 + i as f64 * step).exp()
+                }
+            })
+            .map(|p: f64| p.min(PRESSURE_RANGE.1))
+            .collect();
+        SweepGrid { ps, step, m, p_full }
+    }
+}
+
+/// Per grid load, the mean gap of each branch with adhesion: the load its contact carries on
+/// one adhesionless table of the scene from `p_lo` (physics.md §5.1), at the requested loads
+/// only (every m-th); a table that cannot be built leaves every row without a gap and says
+/// why in the note.
+fn adhesive_gaps(
+    scene: &Scene,
+    p_lo: f64,
+    ps: &[f64],
+    m: usize,
+    evs: &[Result<crate::theory::engine::Evaluation>],
+    opts: &Options,
+    cancel: Option<&AtomicBool>,
+) -> Result<(NodeGaps, Option<String>)> {
+    let n = ps.len();
+    match gap::DryGap::new_cancellable(scene, p_lo, opts, cancel) {
+        Ok(dry) => {
+            let gaps = (0..n)
+                .map(|i| match &evs[i] {
+                    Ok(e) if i % m == 0 => gap::branch_gaps(&dry, ps[i], e).ok(),
+                    _ => None,
+                })
+                .collect();
+            Ok((gaps, None))
+        }
+        Err(Error::Cancelled) => Err(Error::Cancelled),
+        Err(e) => Ok((vec![None; n], Some(format!("mean gap unavailable: {e}")))),
+    }
+}
+
+/// The row of a converged load at p*: the evaluation's statistics with the loading branch's
+/// gap (and the unloading branch's, where a hysteresis window makes it distinct); a gap that
+/// is unknown leaves its columns NaN.
+fn converged_row(
+    p: f64,
+    e: &crate::theory::engine::Evaluation,
+    gaps: Option<(gap::BranchGap, Option<gap::BranchGap>)>,
+    h_rms: f64,
+    unit: f64,
+) -> SweepRow {
+    let nan = f64::NAN;
+    let (l, u) = gaps.unwrap_or((
+        gap::BranchGap {
+            relative: nan,
+            error: nan,
+            lower: nan,
+            upper: nan,
+            contact_load: nan,
+        },
+        None,
+    ));
+    let un = |f: fn(&gap::BranchGap) -> f64| u.as_ref().map_or(nan, f);
+    SweepRow {
+        p,
+        a_r: e.stats.a_r,
+        mean_gap_rel: l.relative,
+        mean_gap: l.relative * h_rms,
+        mean_contact_stress: e.stats.mean_contact_stress,
+        elastic_energy: e.elastic_energy,
+        converged: true,
+        elastic_energy_reduced: e.elastic_energy / unit,
+        mean_gap_error: l.error,
+        contact_stress_variance: e.stats.contact_stress_variance,
+        mean_gap_lower_rel: l.lower,
+        a_r_unloading: e.unloading_a_r.unwrap_or(f64::NAN),
+        branches: e.branches.len().max(1),
+        mean_gap_upper_rel: l.upper,
+        contact_load: l.contact_load,
+        mean_gap_unloading_rel: un(|b| b.relative),
+        mean_gap_unloading_error: un(|b| b.error),
+        mean_gap_unloading_lower_rel: un(|b| b.lower),
+        contact_load_unloading: un(|b| b.contact_load),
+    }
+}
+
+/// What failed and what it means for the other rows: how many grid loads did not converge,
+/// the first one's error, and without adhesion that the gap (which integrates over every load
+/// above) is unknown at and below the highest of them; None when every load converged.
+fn failure_note(scene: &Scene, ps: &[f64], evs: &[Result<crate::theory::engine::Evaluation>]) -> Option<String> {
+    let n = ps.len();
+    evs.iter().rposition(|e| e.is_err()).map(|f| {
         let first_err = evs
             .iter()
             .find_map(|e| e.as_ref().err())
@@ -389,38 +467,27 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
             evs.iter().filter(|e| e.is_err()).count(),
             n,
         )
-    });
-    let note = match (note, gap_note.clone()) {
-        (Some(a), Some(b)) => Some(format!("{a}; {b}")),
-        (a, b) => a.or(b),
-    };
-    // monotone over the rows with numbers
+    })
+}
+
+/// Whether a_r rises and ū falls (where both rows have one) over the rows with numbers.
+fn is_monotone(rows: &[SweepRow]) -> bool {
     let finite: Vec<&SweepRow> = rows.iter().filter(|r| r.a_r.is_finite()).collect();
-    let monotone = finite.windows(2).all(|w| {
+    finite.windows(2).all(|w| {
         w[1].a_r >= w[0].a_r
             && (!w[0].mean_gap_rel.is_finite()
                 || !w[1].mean_gap_rel.is_finite()
                 || w[1].mean_gap_rel <= w[0].mean_gap_rel)
-    });
-    Ok(Sweep {
-        rows,
-        evaluations: n,
-        full_contact_pressure: p_full,
-        monotone,
-        failed_loads,
-        reasons,
-        note,
-        gap_note,
-        jump_in_pressure,
-        pull_off_pressure,
     })
 }
+
+/// Per grid load, the gap of the loading branch and of the unloading one where distinct (None
+/// where unknown).
+type NodeGaps = Vec<Option<(gap::BranchGap, Option<gap::BranchGap>)>>;
 
 /// Per grid load, the adhesionless mean gap by the energy route on the sweep's own table (see
 /// the module docs), and a note where part of it is unknown: below the highest failed load,
 /// or below a load where the stored energy falls (not one stable branch).
-type NodeGaps = Vec<Option<(gap::BranchGap, Option<gap::BranchGap>)>>;
-
 fn dry_sweep_gaps(
     scene: &Scene,
     ps: &[f64],

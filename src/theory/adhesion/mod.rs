@@ -74,10 +74,11 @@
 //!
 //! `grid` (resolution steps), `heat` (the exact drift–diffusion step with an absorbing wall),
 //! `moments` (the final distribution's moments),
-//! `propagator` (the march for given walls, one step at a time), `regrid` (shift, refine and
-//! re-offset the march's grid),
-//! `walls` (σ_a(q) for γ(q)), `shooting` (the forward march for given C), `roots` (all roots
-//! of H), `pair` (whether the pair of roots that merges at a fold persists), `strategy` (the branch chosen and the solution assembled), `tension` (the contact branch
+//! `propagator` (the march for given walls, one step at a time), `wall_motion` (the wall's
+//! move on the march's grid within a piece), `regrid` (shift, refine and re-offset the
+//! march's grid),
+//! `walls` (σ_a(q) for γ(q)), `shooting` (the forward march for given C), `shooter` (H(C)
+//! shot by shot, in the scan variable), `roots` (all roots of H), `pair` (whether the pair of roots that merges at a fold persists), `strategy` (the branch chosen and the solution assembled), `tension` (the contact branch
 //! under tension, p* ≤ 0, and the theory's pull-off), and this module
 //! (accuracy, result types, entry points).
 
@@ -89,9 +90,11 @@ mod propagator;
 mod regrid;
 mod roots;
 pub mod scales;
+mod shooter;
 mod shooting;
 mod strategy;
 mod tension;
+mod wall_motion;
 mod walls;
 
 pub use pair::pair_at;

@@ -10,7 +10,8 @@
 
 use super::grid::build_grid;
 use super::propagator::Marcher;
-use super::roots::{check_bounded, warm_bracket, Scale, Shooter, WARM_MAX};
+use super::roots::{warm_bracket, WARM_MAX};
+use super::shooter::{check_bounded, Scale, Shooter};
 use super::walls::WallCoefficients;
 use super::AdhesionAccuracy;
 use crate::error::{Error, Result};

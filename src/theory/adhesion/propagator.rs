@@ -29,9 +29,9 @@
 //! A wall running away from the distribution at speed c weights its image by e^{−2cy}. Right
 //! after an onset σ_a ∝ √γ leaves zero at infinite speed, and at 10 points per width 2c·h
 //! reached 15 in the first onset piece: the weighted extension was not resolved and the error
-//! fell only like h² (2e-4 in a_r). Where 2c·h > `REFINE_DRIFT` the grid is refined (spacing
-//! halved by interpolation, `regrid`) before the step, and coarsened back by the usual rule as
-//! √v grows: the same test wall then agrees with 80 points per width to 2e-7.
+//! fell only like h² (2e-4 in a_r). Where 2c·h > `REFINE_DRIFT` (`wall_motion`) the grid is
+//! refined (spacing halved by interpolation, `regrid`) before the step, and coarsened back by
+//! the usual rule as √v grows: the same test wall then agrees with 80 points per width to 2e-7.
 //!
 //! While the wall has not moved (or is > 8.5√v away) the state is the mirror Gaussian about
 //! the wall and no grid is used. On the grid, spacing h ~ √v/`points_per_width` (coarsened by
@@ -47,8 +47,9 @@
 use super::grid::{Grid, Step};
 pub(super) use super::heat::Heat;
 pub(super) use super::moments::state_moments;
+use super::regrid::reoffset;
 pub(super) use super::regrid::shift;
-use super::regrid::{refine, reoffset};
+use super::wall_motion::WallMove;
 use super::AdhesionAccuracy;
 use crate::input::scene::Scene;
 use statrs::function::erf::erf;
@@ -145,51 +146,14 @@ const FIRST_PIECE: f64 = 1e-6;
 /// scenes the worst error against a 4× finer run fell from 6.7e-4 at 0.9 to 2.4e-4).
 const ONSET_GROWTH: f64 = 0.95;
 
-/// The largest 2c·h on a grid that starts at the wall: the image of a wall running away at
-/// speed c is weighted by e^{−2cy}, which must not fall by more than e^{−2} per cell (finer:
-/// the grid is refined). Measured on a prescribed σ_a ∝ √(q-onset) wall (system 1, model 1,
-/// 24 steps per ln q, 10 points per width): a_r error 2.1e-4 without, 2e-7 with; 2c·h reached
-/// 15 in the first onset piece.
-const REFINE_DRIFT: f64 = 2.0;
 /// The most nodes of a march's grid (with [`Marcher::max_nodes`]): about 20 MB of transform
 /// buffers. The grid follows the distribution (~25·`points_per_width` nodes) and is refined to
-/// at most [`REFINE_MAX_NODES`], so a march that asks for more has lost the distribution (a
+/// at most `wall_motion::REFINE_MAX_NODES`, so a march that asks for more has lost the distribution (a
 /// wall far from it that the grid cannot follow): it is cut here and flagged
 /// ([`Marcher::overflow`]) instead of allocating without bound (a wall that jumps from 0 to
 /// σ_a* = 1e7 in one step, as the root scan asks at p* = 1e-12, would need 9e9 nodes on a
 /// grid that spans it).
 const GRID_MAX_NODES: usize = 1 << 18;
-/// The grid is refined no further than this many nodes.
-const REFINE_MAX_NODES: usize = 1 << 16;
-/// No refinement for [`REFINE_DRIFT`] where the image the refinement would resolve carries
-/// less than this fraction of the contact area ([`image_mass`]): next to the wall the density
-/// is then nil (the wall has run ahead of the distribution), and its speed alone had refined
-/// the grid to 27 000 nodes for nothing (an onset right at a step's end: system II,
-/// t·q_r = 0.1, p* = 2.29e-4, marches 30× dearer than their neighbours). Where the refinement
-/// matters the image carries 1e-5–3e-3 of it.
-const IMAGE_NEGLIGIBLE: f64 = 1e-9;
-
-/// A wall that runs away by more than this many times the span of the grid in one piece,
-/// carrying a negligible image ([`IMAGE_NEGLIGIBLE`]), leaves the distribution behind: the
-/// step is free diffusion and the grid is offset instead of stretched (see
-/// [`Marcher::advance`]).
-const RUNAWAY_SPAN: f64 = 4.0;
-
-/// Zero nodes put below the content of a grid that a runaway wall leaves behind: ten standard
-/// deviations of the step's spread (variance `dv`) and the shift's stencil.
-fn runaway_pad(dv: f64, h: f64) -> usize {
-    (10.0 * dv.sqrt() / h).ceil() as usize + 8
-}
-
-/// The mass ∫₀^∞ e^{−2cy} p(y) dy of the weighted image of a wall running away at speed c
-/// from the grid values `p` (p[0] = 0 at the wall, spacing h), where 2c·h ≫ 1: p'(0)/(4c²),
-/// with p'(0) the steepest chord from the wall over the first four nodes (a bound where the
-/// first node is flat).
-fn image_mass(p: &[f64], h: f64, c: f64) -> f64 {
-    let slope = (1..p.len().min(5)).map(|j| p[j] / (j as f64 * h)).fold(0.0, f64::max);
-    slope / (4.0 * c * c)
-}
-
 pub(super) struct Marcher<'a> {
     pub(super) scene: &'a Scene,
     pub(super) grid: &'a Grid,
@@ -212,7 +176,7 @@ pub(super) struct Marcher<'a> {
 impl<'a> Marcher<'a> {
     /// The most nodes a march's grid may hold: [`GRID_MAX_NODES`], or 400 per
     /// `points_per_width` where that is more (a grid spans ~25 widths at most, refined up to
-    /// [`REFINE_MAX_NODES`] right after an onset).
+    /// `wall_motion::REFINE_MAX_NODES` right after an onset).
     pub(super) fn max_nodes(&self) -> usize {
         GRID_MAX_NODES.max((400.0 * self.acc.points_per_width) as usize)
     }
@@ -366,11 +330,12 @@ impl<'a> Marcher<'a> {
         }
     }
 
-    /// [`Marcher::advance`] without the sub-division.
+    /// [`Marcher::advance`] without the sub-division: the piece on the stage the march is
+    /// on, the analytic one (the mirror Gaussian, its variance by RK4) until the wall moves
+    /// near the distribution, then the grid ([`Marcher::grid_piece`]).
     fn advance_piece(&mut self, cur: &mut Cursor, s_k: f64, k: usize, b: f64, b_cum: f64, commit: bool) -> f64 {
         let p0 = self.pressure;
         let model = self.scene.model;
-        let ppw = self.acc.points_per_width;
         let st = Step {
             b,
             ..self.grid.steps[k]
@@ -386,32 +351,7 @@ impl<'a> Marcher<'a> {
         }
         if let State::Analytic = cur.state {
             if s_k != cur.wall || forced {
-                let wall = cur.wall;
-                let d_min = p0 + wall.min(s_k);
-                let v_next = v + st.b;
-                let far = d_min > 8.5 * v_next.sqrt();
-                if (far || v == 0.0) && self.force_grid_from.is_none_or(|f| k < f) {
-                    // the image is negligible before and after (or nothing has diffused
-                    // yet: still δ(σ − p*)): the wall may move freely
-                    cur.wall = s_k;
-                } else {
-                    // switch to the grid, starting from the mirror Gaussian about `wall`
-                    let h = v.sqrt() / ppw;
-                    let d = p0 + wall;
-                    let x_max = d + 10.0 * v.sqrt();
-                    let n = (x_max / h).ceil() as usize + 1;
-                    let p: Vec<f64> = (0..=n)
-                        .map(|j| {
-                            if j == 0 || j == n {
-                                0.0
-                            } else {
-                                let x = j as f64 * h;
-                                gauss(x - d, v) - gauss(x + d, v)
-                            }
-                        })
-                        .collect();
-                    cur.state = State::Grid { h, m: 0, p };
-                }
+                self.leave_analytic(cur, s_k, k, st.b);
             }
         }
         match &mut cur.state {
@@ -423,164 +363,169 @@ impl<'a> Marcher<'a> {
                 cur.a = mirror_area(d, cur.v);
                 cur.a
             }
-            State::Grid { h: h_ref, m, p } => {
-                let mut h = *h_ref;
-                let w0 = cur.wall;
-                let delta = s_k - w0;
-                // the wall moves linearly in v from w0 to s_k: drift c = δ/Δv, Δv from the
-                // rate at the step's start, corrected until c·Δv hits δ (to 1e-3 of δ; the
-                // next step starts from where the wall ended)
-                let mut dv_guess = model.broadening(cur.a) * st.b;
-                reoffset(p, m, h, 3.0 * (v + st.b).sqrt() + (-delta).max(0.0) + 2.0 * h);
-                // a wall running away from the distribution at speed c weights its image by
-                // e^{−2cy}: where that falls by more than e^{−REFINE_DRIFT} per cell (the
-                // first pieces after an onset, where σ_a ∝ √γ starts at infinite speed) the
-                // weighted extension is not resolved and the step's error is O(h²) instead of
-                // spectral, so the grid is refined (the coarsening below undoes it as the wall
-                // slows)
-                if *m == 0
-                    && delta > 0.0
-                    && dv_guess > 0.0
-                    && image_mass(p, h, delta / dv_guess) > IMAGE_NEGLIGIBLE * cur.a
-                {
-                    // (bounded by the grid the step will need, which reaches past the new
-                    // wall: a wall jumping far in a tiny piece must not ask for 1e9 nodes)
-                    let reach = p0 + cur.wall.max(s_k) + 10.0 * (v + st.b).sqrt();
-                    while 2.0 * delta / dv_guess * h > REFINE_DRIFT
-                        && p.len() < REFINE_MAX_NODES
-                        && reach / (0.5 * h) < REFINE_MAX_NODES as f64
-                    {
-                        refine(p);
-                        h *= 0.5;
-                        *h_ref = h;
-                    }
-                }
-                let mut drift = 0.0;
-                // the second half of a receding wall's shift, after the heat step
-                let mut receding = 0.0;
-                // a wall that runs away from the distribution by more than RUNAWAY_SPAN times
-                // the grid's span, so fast that its image carries a negligible mass: the step
-                // is free diffusion carried `delta` from the wall (the image dropped, an error
-                // below IMAGE_NEGLIGIBLE of a_r), the grid offset by whole cells as for a wall
-                // ahead of the distribution, with zeros below the content for the step's
-                // spread. A grid that spanned the whole new distance from the wall to the
-                // distribution would need σ_a*/h nodes: the root scan puts σ_a* at 1e4 after
-                // one step at p* = 1e-9 (γ = (C + I)/a_r at tiny a_r), 9e6 nodes, and 9e9 at
-                // p* = 1e-12
-                let runaway = *m == 0 && delta > 0.0 && dv_guess > 0.0 && {
-                    let span = (p.len() - 1) as f64 * h;
-                    let pad = runaway_pad(st.b.max(dv_guess), h);
-                    delta > RUNAWAY_SPAN * span
-                        && (delta / h).floor() >= pad as f64
-                        && image_mass(p, h, delta / dv_guess) <= IMAGE_NEGLIGIBLE * cur.a
-                };
-                if runaway {
-                    let pad = runaway_pad(st.b.max(dv_guess), h);
-                    let cells = (delta / h).floor();
-                    p.splice(0..0, std::iter::repeat_n(0.0, pad));
-                    *m = cells as usize - pad;
-                    cur.wall += cells * h;
-                } else if delta != 0.0 && *m > 0 {
-                    // the distribution is far from the wall: move it by whole cells through
-                    // the grid's offset, by the remaining fraction of a cell spectrally
-                    let cells = (delta / h).floor();
-                    let new_m = *m as f64 + cells;
-                    if new_m < 0.0 {
-                        p.splice(0..0, std::iter::repeat_n(0.0, (-new_m) as usize));
-                        *m = 0;
-                    } else {
-                        *m = new_m as usize;
-                    }
-                    cur.wall += cells * h;
-                } else if delta < 0.0 {
-                    // a wall moving into the distribution: the weighted extension would grow
-                    // as exp(2|c|y); Strang splitting instead: half the shift (8-point
-                    // Lagrange, mass below the wall removed), the heat step with the wall
-                    // held, the other half (second order: the state inside the step is off
-                    // by ± half a shift's loss at its ends, which cancels in ∫W(a)dB)
-                    shift(p, h, 0.5 * delta);
-                    cur.wall += 0.5 * delta;
-                    receding = 0.5 * delta;
-                } else if delta != 0.0 && dv_guess <= 0.0 {
-                    // no variance to move the wall in: shift, then the (empty) heat step
-                    // (a shift that would grow the grid beyond its bound is flagged instead)
-                    if delta / h > self.max_nodes() as f64 {
-                        self.overflow = true;
-                    } else {
-                        shift(p, h, delta);
-                    }
-                    cur.wall = s_k;
-                }
-                let rest = if receding < 0.0 { 0.0 } else { s_k - cur.wall };
-                // the grid reaches p + σ_a + 10√v after this step (beyond it the density is
-                // below e⁻⁵⁰ of its peak): extended with zeros or cut there, to an FFT-friendly
-                // size 2^a·3^b·5^c (the transform has length 2N, and a prime factor would
-                // cost a Rader transform)
-                let need = p0 + cur.wall.max(s_k) + 10.0 * (v + st.b).sqrt() + 0.01 * rest.abs() + 2.0 * h;
-                let top = ((need / h).ceil() as usize + 1).saturating_sub(*m).max(8);
-                let n = smooth_size(top);
-                // the grid's hard bound (see GRID_MAX_NODES): beyond it the march is flagged
-                // and cut, and the solve refuses
-                let n = if n > self.max_nodes() {
-                    self.overflow = true;
-                    self.max_nodes()
-                } else {
-                    n
-                };
-                p.resize(n + 1, 0.0);
-                p[n] = 0.0;
-                let mut dv = 0.0;
-                for attempt in 0..4 {
-                    if rest != 0.0 && dv_guess > 0.0 {
-                        drift = rest / dv_guess;
-                    }
-                    // the same RK4 rule in B as the analytic stage, with a(v) from the loaded
-                    // coefficients: the switch between the stages is continuous
-                    let ext = if *m == 0 { 2.0 * drift } else { 0.0 };
-                    self.heat.load(p, h, ext, drift);
-                    let heat = &self.heat;
-                    let rate = |u: f64| model.broadening(heat.mass(u).clamp(0.0, 1.0));
-                    dv = variance_step(&rate, b_cum, st.b);
-                    if drift == 0.0 || (drift * dv - rest).abs() <= 1e-3 * rest.abs() || attempt == 3 {
-                        break;
-                    }
-                    dv_guess = dv;
-                }
-                let mut a = self.heat.mass(dv).clamp(0.0, 1.0);
-                cur.v += dv;
-                cur.wall += drift * dv;
-                if receding < 0.0 {
-                    // the second half-shift, and the mass after it (spectral again)
-                    self.heat.finish(p, dv);
-                    shift(p, h, receding);
-                    cur.wall += receding;
-                    self.heat.load(p, h, 0.0, 0.0);
-                    a = self.heat.mass(0.0).clamp(0.0, 1.0);
-                }
-                cur.a = a;
-                if commit {
-                    if receding == 0.0 {
-                        self.heat.finish(p, dv);
-                    }
-                    // coarsen: keep every other node (of the lattice x = j h through the wall)
-                    if cur.v.sqrt() > 2.0 * ppw * h {
-                        if *m % 2 == 1 {
-                            p.insert(0, 0.0);
-                            *m -= 1;
-                        }
-                        if (p.len() - 1) % 2 == 1 {
-                            p.push(0.0);
-                        }
-                        let coarse: Vec<f64> = p.iter().step_by(2).copied().collect();
-                        *p = coarse;
-                        *m /= 2;
-                        *h_ref *= 2.0;
-                    }
-                }
-                a
-            }
+            State::Grid { .. } => self.grid_piece(cur, s_k, st.b, b_cum, commit),
         }
     }
+
+    /// A wall about to move on the analytic stage (or a grid forced from step `k`): where the
+    /// image is negligible before and after the piece (variance measure `b`), or nothing has
+    /// diffused yet (still δ(σ − p*)), the wall moves freely; else the march switches to the
+    /// grid, starting from the mirror Gaussian about the wall.
+    fn leave_analytic(&mut self, cur: &mut Cursor, s_k: f64, k: usize, b: f64) {
+        let p0 = self.pressure;
+        let ppw = self.acc.points_per_width;
+        let v = cur.v;
+        let wall = cur.wall;
+        let d_min = p0 + wall.min(s_k);
+        let v_next = v + b;
+        let far = d_min > 8.5 * v_next.sqrt();
+        if (far || v == 0.0) && self.force_grid_from.is_none_or(|f| k < f) {
+            cur.wall = s_k;
+        } else {
+            let h = v.sqrt() / ppw;
+            let d = p0 + wall;
+            let x_max = d + 10.0 * v.sqrt();
+            let n = (x_max / h).ceil() as usize + 1;
+            let p: Vec<f64> = (0..=n)
+                .map(|j| {
+                    if j == 0 || j == n {
+                        0.0
+                    } else {
+                        let x = j as f64 * h;
+                        gauss(x - d, v) - gauss(x + d, v)
+                    }
+                })
+                .collect();
+            cur.state = State::Grid { h, m: 0, p };
+        }
+    }
+
+    /// One piece on the grid (variance measure `b`, the wall moving to `s_k`): the wall moved
+    /// linearly in v from where it stands to `s_k` at drift c = δ/Δv, Δv from the rate at the
+    /// piece's start, corrected until c·Δv hits δ (to 1e-3 of δ; the next step starts from
+    /// where the wall ended); before the heat step the grid is refined, offset or shifted as
+    /// the wall's motion asks ([`WallMove`]), and sized for the step. `commit` = false skips
+    /// writing the evolved grid back.
+    fn grid_piece(&mut self, cur: &mut Cursor, s_k: f64, b: f64, b_cum: f64, commit: bool) -> f64 {
+        let State::Grid { h: h_ref, m, p } = &mut cur.state else {
+            unreachable!("a grid piece of a march on the analytic stage")
+        };
+        let p0 = self.pressure;
+        let v = cur.v;
+        let w0 = cur.wall;
+        let delta = s_k - w0;
+        let dv_guess = self.scene.model.broadening(cur.a) * b;
+        reoffset(p, m, *h_ref, 3.0 * (v + b).sqrt() + (-delta).max(0.0) + 2.0 * *h_ref);
+        let mv = WallMove {
+            target: s_k,
+            delta,
+            dv_guess,
+            b,
+            a: cur.a,
+        };
+        let h = mv.refine_grid(p, *m, *h_ref, p0 + cur.wall.max(s_k) + 10.0 * (v + b).sqrt());
+        *h_ref = h;
+        let (receding, overflow) = mv.apply(p, m, h, &mut cur.wall, self.max_nodes());
+        if overflow {
+            self.overflow = true;
+        }
+        let rest = if receding < 0.0 { 0.0 } else { s_k - cur.wall };
+        // the grid reaches p + σ_a + 10√v after this step (beyond it the density is
+        // below e⁻⁵⁰ of its peak)
+        let need = p0 + cur.wall.max(s_k) + 10.0 * (v + b).sqrt() + 0.01 * rest.abs() + 2.0 * h;
+        self.size_grid(p, *m, h, need);
+        let (dv, drift) = self.heat_step(p, *m, h, rest, dv_guess, (b_cum, b));
+        let mut a = self.heat.mass(dv).clamp(0.0, 1.0);
+        cur.v += dv;
+        cur.wall += drift * dv;
+        if receding < 0.0 {
+            // the second half-shift, and the mass after it (spectral again)
+            self.heat.finish(p, dv);
+            shift(p, h, receding);
+            cur.wall += receding;
+            self.heat.load(p, h, 0.0, 0.0);
+            a = self.heat.mass(0.0).clamp(0.0, 1.0);
+        }
+        cur.a = a;
+        if commit {
+            if receding == 0.0 {
+                self.heat.finish(p, dv);
+            }
+            if cur.v.sqrt() > 2.0 * self.acc.points_per_width * h {
+                coarsen(p, m, h_ref);
+            }
+        }
+        a
+    }
+
+    /// The grid `p` (offset `m`, spacing `h`) extended with zeros or cut to reach `need`, to
+    /// an FFT-friendly size 2^a·3^b·5^c (the transform has length 2N, and a prime factor
+    /// would cost a Rader transform), at most [`Marcher::max_nodes`]: beyond it the march is
+    /// flagged and cut (see [`GRID_MAX_NODES`]), and the solve refuses.
+    fn size_grid(&mut self, p: &mut Vec<f64>, m: usize, h: f64, need: f64) {
+        let top = ((need / h).ceil() as usize + 1).saturating_sub(m).max(8);
+        let n = smooth_size(top);
+        let n = if n > self.max_nodes() {
+            self.overflow = true;
+            self.max_nodes()
+        } else {
+            n
+        };
+        p.resize(n + 1, 0.0);
+        p[n] = 0.0;
+    }
+
+    /// The heat step of a grid piece (the grid `p`, offset `m`, spacing `h`; variance measure
+    /// `b` after `b_cum` of the step): the drift c = `rest`/Δv, Δv by the same RK4 rule in B
+    /// as the analytic stage with a(v) from the loaded coefficients (so the switch between
+    /// the stages is continuous), c re-solved from the new Δv until c·Δv hits `rest` to 1e-3
+    /// (at most 4 tries, from Δv ≈ `dv_guess`). Leaves the step loaded in the heat operator;
+    /// returns Δv and c.
+    fn heat_step(
+        &mut self,
+        p: &[f64],
+        m: usize,
+        h: f64,
+        rest: f64,
+        mut dv_guess: f64,
+        (b_cum, b): (f64, f64),
+    ) -> (f64, f64) {
+        let model = self.scene.model;
+        let mut drift = 0.0;
+        let mut dv = 0.0;
+        for attempt in 0..4 {
+            if rest != 0.0 && dv_guess > 0.0 {
+                drift = rest / dv_guess;
+            }
+            let ext = if m == 0 { 2.0 * drift } else { 0.0 };
+            self.heat.load(p, h, ext, drift);
+            let heat = &self.heat;
+            let rate = |u: f64| model.broadening(heat.mass(u).clamp(0.0, 1.0));
+            dv = variance_step(&rate, b_cum, b);
+            if drift == 0.0 || (drift * dv - rest).abs() <= 1e-3 * rest.abs() || attempt == 3 {
+                break;
+            }
+            dv_guess = dv;
+        }
+        (dv, drift)
+    }
+}
+
+/// Coarsens the grid `p` (offset `m`, spacing `h`) by 2: every other node of the lattice
+/// x = jh through the wall kept (padded by a zero where the offset or the end is odd). The
+/// spacing follows √v of the distribution it holds, `points_per_width` nodes per width.
+fn coarsen(p: &mut Vec<f64>, m: &mut usize, h: &mut f64) {
+    if *m % 2 == 1 {
+        p.insert(0, 0.0);
+        *m -= 1;
+    }
+    if (p.len() - 1) % 2 == 1 {
+        p.push(0.0);
+    }
+    let coarse: Vec<f64> = p.iter().step_by(2).copied().collect();
+    *p = coarse;
+    *m /= 2;
+    *h *= 2.0;
 }
 
 /// Where a march stands between steps.

@@ -32,12 +32,13 @@
 
 use super::grid::build_grid;
 use super::propagator::Marcher;
+use super::shooter::{check_bounded, check_cancel, point, Point, Scale, Shooter};
 use super::shooting::{Record, Shot};
 use super::walls::WallCoefficients;
 use super::AdhesionAccuracy;
 use crate::error::Result;
 use crate::input::scene::Scene;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 
 /// Scan points per decade of |C| before the refinement (at least 3 points): the bisection by
 /// the monotone bound places the others. 0.5 (a point every 2 decades) spent most of a cold
@@ -66,62 +67,6 @@ pub(super) struct Root {
     pub(super) h_rel: f64,
 }
 
-/// The scan variable w = asinh(C/c₀) and back.
-pub(super) struct Scale {
-    pub(super) c0: f64,
-}
-
-impl Scale {
-    pub(super) fn w(&self, c: f64) -> f64 {
-        (c / self.c0).asinh()
-    }
-    pub(super) fn c(&self, w: f64) -> f64 {
-        self.c0 * w.sinh()
-    }
-}
-
-/// The solver for one scene and resolution: the marcher and the wall constants.
-pub(super) struct Shooter<'a> {
-    pub(super) m: Marcher<'a>,
-    pub(super) coef: WallCoefficients,
-    pub(super) shots: usize,
-}
-
-impl<'a> Shooter<'a> {
-    pub(super) fn h(&mut self, c: f64) -> Shot {
-        self.shots += 1;
-        self.m.shoot(&self.coef, c, false)
-    }
-}
-
-/// [`crate::error::Error::NotConverged`] where a march of `s` needed a grid beyond its bound
-/// (`propagator::GRID_MAX_NODES`): its H is not to be trusted, so neither are the roots.
-pub(super) fn check_bounded(s: &Shooter<'_>) -> Result<()> {
-    if s.m.overflow {
-        Err(crate::error::Error::NotConverged {
-            solver: crate::error::Solver::AdhesiveMarch,
-            reason: format!(
-                "the stress distribution would need more than {} grid nodes at p* = {:.3e} \
-                 (the adhesive wall ran further from it in one resolution step than the grid can \
-                 follow); a finer resolution in ln q may resolve it",
-                s.m.max_nodes(),
-                s.m.pressure
-            ),
-        })
-    } else {
-        Ok(())
-    }
-}
-
-/// [`crate::error::Error::Cancelled`] once `cancel` is set.
-fn check_cancel(cancel: Option<&AtomicBool>) -> Result<()> {
-    if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
-        Err(crate::error::Error::Cancelled)
-    } else {
-        Ok(())
-    }
-}
-
 /// All roots of H for `scene` at resolution `acc`, lowest C first. `warm`: C values of a
 /// nearby scene's roots, tried first; `trend`: the roots one step further back and the ratio
 /// r of this step to that one, to start each warm bracket at w + r·(w − w_older) (linear
@@ -145,48 +90,14 @@ pub(super) fn find_roots(
     let scale = Scale { c0: 1e-3 * e0.min(gs) };
     let (w_lo, w_hi) = (scale.w(-i_full), scale.w(gs));
     let tol = acc.tol * gs;
-    let mut roots: Vec<Root> = Vec::new();
 
-    // warm start: a bracket of up to ±WARM_MAX around each old root, at the fine resolution
-    if !warm.is_empty() {
-        let mut ok = true;
-        let mut found = Vec::new();
-        for (i, &c) in warm.iter().enumerate() {
-            check_cancel(cancel)?;
-            let w0 = match trend {
-                Some((older, r)) if older.len() == warm.len() => {
-                    let w = scale.w(c);
-                    w + r * (w - scale.w(older[i]))
-                }
-                _ => scale.w(c),
-            }
-            .clamp(w_lo, w_hi);
-            match warm_bracket(&mut fine, &scale, w0, i % 2 == 0, (w_lo, w_hi), WARM_MAX) {
-                Some(br) => found.push(br),
-                None => {
-                    ok = false;
-                    break;
-                }
-            }
+    if let Some(roots) = warm_roots(&mut fine, &scale, warm, trend, (w_lo, w_hi), tol, cancel)? {
+        check_bounded(&fine)?;
+        let shots = fine.shots;
+        if std::env::var_os("ASPERITY_DEBUG").is_some() {
+            eprintln!("roots: warm, {shots} fine shots, {} roots", roots.len());
         }
-        // the warm roots must account for the whole sign pattern: lowest rises from −, and
-        // consecutive roots alternate
-        if ok && !found.is_empty() {
-            let alternate = found
-                .windows(2)
-                .all(|p| (p[0].1 < 0.0) != (p[1].1 < 0.0) && p[0].2 < p[1].0);
-            if alternate && found[0].1 < 0.0 && found[found.len() - 1].3 > 0.0 {
-                for (a, ha, b, hb) in found {
-                    roots.push(refine(&mut fine, &scale, a, ha, b, hb, tol, cancel)?);
-                }
-                check_bounded(&fine)?;
-                let shots = fine.shots;
-                if std::env::var_os("ASPERITY_DEBUG").is_some() {
-                    eprintln!("roots: warm, {shots} fine shots, {} roots", roots.len());
-                }
-                return Ok((roots, shots));
-            }
-        }
+        return Ok((roots, shots));
     }
 
     // coarse scan
@@ -202,67 +113,11 @@ pub(super) fn find_roots(
         shots: 0,
     };
     let pts = scan(&mut coarse, &scale, w_lo, w_hi, gs, cancel)?;
-    let n = pts.len() - 1;
-    // the fine resolution moves the roots, a fold's nearly merged pair most: each coarse sign
-    // change opens a region, its cell (merged with the next where they touch), H is taken at
-    // the fine resolution at the region's scan points, and where that
-    // shows fewer sign changes than the coarse scan did, the region's cells are bisected at
-    // the fine resolution as the scan bisects (a pair that is still missing then has merged:
-    // a fold, dropped). Consecutive sign changes of one sampled H alternate, so the roots of
-    // a region do too.
-    let mut regions: Vec<(usize, usize, usize)> = Vec::new();
-    for i in (0..n).filter(|&i| (pts[i].h < 0.0) != (pts[i + 1].h < 0.0)) {
-        let (lo, hi) = (i, i + 1);
-        match regions.last_mut() {
-            Some(r) if lo <= r.1 => {
-                r.1 = hi;
-                r.2 += 1;
-            }
-            _ => regions.push((lo, hi, 1)),
-        }
-    }
-    // a region is widened, one scan point at a time, until H at the fine resolution has the
-    // coarse scan's sign at both its ends (a root moved out of it), swallowing the regions it
-    // reaches; it never reaches back into the previous region
-    let mut fine_pts: Vec<Option<Point>> = vec![None; pts.len()];
-    let mut fine_at = |fine: &mut Shooter<'_>, i: usize| -> Point {
-        *fine_pts[i].get_or_insert_with(|| point(fine, &scale, pts[i].w, gs))
-    };
-    let mut floor = 0usize;
-    let mut ri = 0usize;
-    while ri < regions.len() {
-        check_cancel(cancel)?;
-        let (mut lo, mut hi, mut count) = regions[ri];
-        lo = lo.max(floor);
-        loop {
-            if lo > floor && (fine_at(&mut fine, lo).h < 0.0) != (pts[lo].h < 0.0) {
-                lo -= 1;
-                continue;
-            }
-            if hi < n && (fine_at(&mut fine, hi).h < 0.0) != (pts[hi].h < 0.0) {
-                hi += 1;
-                while ri + 1 < regions.len() && regions[ri + 1].0 <= hi {
-                    ri += 1;
-                    hi = hi.max(regions[ri].1);
-                    count += regions[ri].2;
-                }
-                continue;
-            }
-            break;
-        }
-        let mut fp: Vec<Point> = (lo..=hi).map(|i| fine_at(&mut fine, i)).collect();
-        if sign_changes(&fp) < count {
-            fp = bisect_cells(&mut fine, &scale, fp, gs, cancel)?;
-        }
-        refine_sign_changes(&mut fine, &scale, &fp, tol, cancel, &mut roots)?;
-        floor = hi;
-        ri += 1;
-    }
+    let regions = sign_change_regions(&pts);
+    let mut roots = refine_regions(&mut fine, &scale, &pts, regions, (gs, tol), cancel)?;
     // the whole sign pattern is −…+ with alternating roots; where a root moved beyond its
     // region at the fine resolution that fails, and the scan is repeated at the fine one
-    let alternate = roots.first().is_some_and(|r| r.stable)
-        && roots.last().is_some_and(|r| r.stable)
-        && roots.windows(2).all(|p| p[0].stable != p[1].stable);
+    let alternate = alternates(&roots);
     if !alternate {
         roots.clear();
         let fp = scan(&mut fine, &scale, w_lo, w_hi, gs, cancel)?;
@@ -288,6 +143,140 @@ pub(super) fn find_roots(
     check_bounded(&coarse)?;
     check_bounded(&fine)?;
     Ok((roots, fine.shots + coarse.shots / 4))
+}
+
+/// The warm start of [`find_roots`]: a bracket of up to ±[`WARM_MAX`] around each old root
+/// (`warm`, moved along `trend` where given) at the fine resolution `s`, each refined by
+/// Brent's method — or None where a bracket is not found or the brackets do not account for
+/// the whole sign pattern (the lowest rises from −, consecutive roots alternate, the highest
+/// ends at +): then the scan runs.
+fn warm_roots(
+    s: &mut Shooter<'_>,
+    scale: &Scale,
+    warm: &[f64],
+    trend: Option<(&[f64], f64)>,
+    (w_lo, w_hi): (f64, f64),
+    tol: f64,
+    cancel: Option<&AtomicBool>,
+) -> Result<Option<Vec<Root>>> {
+    if warm.is_empty() {
+        return Ok(None);
+    }
+    let mut found = Vec::new();
+    for (i, &c) in warm.iter().enumerate() {
+        check_cancel(cancel)?;
+        let w0 = match trend {
+            Some((older, r)) if older.len() == warm.len() => {
+                let w = scale.w(c);
+                w + r * (w - scale.w(older[i]))
+            }
+            _ => scale.w(c),
+        }
+        .clamp(w_lo, w_hi);
+        match warm_bracket(s, scale, w0, i % 2 == 0, (w_lo, w_hi), WARM_MAX) {
+            Some(br) => found.push(br),
+            None => return Ok(None),
+        }
+    }
+    // the warm roots must account for the whole sign pattern: lowest rises from −, and
+    // consecutive roots alternate
+    if found.is_empty() {
+        return Ok(None);
+    }
+    let alternate = found
+        .windows(2)
+        .all(|p| (p[0].1 < 0.0) != (p[1].1 < 0.0) && p[0].2 < p[1].0);
+    if !(alternate && found[0].1 < 0.0 && found[found.len() - 1].3 > 0.0) {
+        return Ok(None);
+    }
+    let mut roots = Vec::with_capacity(found.len());
+    for (a, ha, b, hb) in found {
+        roots.push(refine(s, scale, a, ha, b, hb, tol, cancel)?);
+    }
+    Ok(Some(roots))
+}
+
+/// The regions of the coarse scan `pts` that hold its sign changes: (first point, last
+/// point, number of sign changes), one per sign-change cell, cells that touch merged.
+fn sign_change_regions(pts: &[Point]) -> Vec<(usize, usize, usize)> {
+    let n = pts.len() - 1;
+    let mut regions: Vec<(usize, usize, usize)> = Vec::new();
+    for i in (0..n).filter(|&i| (pts[i].h < 0.0) != (pts[i + 1].h < 0.0)) {
+        let (lo, hi) = (i, i + 1);
+        match regions.last_mut() {
+            Some(r) if lo <= r.1 => {
+                r.1 = hi;
+                r.2 += 1;
+            }
+            _ => regions.push((lo, hi, 1)),
+        }
+    }
+    regions
+}
+
+/// The roots of the coarse scan's `regions` at the fine resolution `s` (`gs` = γ_s, `tol` as
+/// in [`refine`]), lowest first. The fine resolution moves the roots, a fold's nearly merged
+/// pair most: H is taken at the fine resolution at each region's scan points, and where that
+/// shows fewer sign changes than the coarse scan did, the region's cells are bisected at the
+/// fine resolution as the scan bisects (a pair that is still missing then has merged: a fold,
+/// dropped). Consecutive sign changes of one sampled H alternate, so the roots of a region do
+/// too.
+fn refine_regions(
+    s: &mut Shooter<'_>,
+    scale: &Scale,
+    pts: &[Point],
+    regions: Vec<(usize, usize, usize)>,
+    (gs, tol): (f64, f64),
+    cancel: Option<&AtomicBool>,
+) -> Result<Vec<Root>> {
+    let n = pts.len() - 1;
+    let mut roots = Vec::new();
+    // a region is widened, one scan point at a time, until H at the fine resolution has the
+    // coarse scan's sign at both its ends (a root moved out of it), swallowing the regions it
+    // reaches; it never reaches back into the previous region
+    let mut fine_pts: Vec<Option<Point>> = vec![None; pts.len()];
+    let mut fine_at = |fine: &mut Shooter<'_>, i: usize| -> Point {
+        *fine_pts[i].get_or_insert_with(|| point(fine, scale, pts[i].w, gs))
+    };
+    let mut floor = 0usize;
+    let mut ri = 0usize;
+    while ri < regions.len() {
+        check_cancel(cancel)?;
+        let (mut lo, mut hi, mut count) = regions[ri];
+        lo = lo.max(floor);
+        loop {
+            if lo > floor && (fine_at(s, lo).h < 0.0) != (pts[lo].h < 0.0) {
+                lo -= 1;
+                continue;
+            }
+            if hi < n && (fine_at(s, hi).h < 0.0) != (pts[hi].h < 0.0) {
+                hi += 1;
+                while ri + 1 < regions.len() && regions[ri + 1].0 <= hi {
+                    ri += 1;
+                    hi = hi.max(regions[ri].1);
+                    count += regions[ri].2;
+                }
+                continue;
+            }
+            break;
+        }
+        let mut fp: Vec<Point> = (lo..=hi).map(|i| fine_at(s, i)).collect();
+        if sign_changes(&fp) < count {
+            fp = bisect_cells(s, scale, fp, gs, cancel)?;
+        }
+        refine_sign_changes(s, scale, &fp, tol, cancel, &mut roots)?;
+        floor = hi;
+        ri += 1;
+    }
+    Ok(roots)
+}
+
+/// Whether `roots` make the whole sign pattern −…+: the lowest and the highest stable, stable
+/// and unstable alternating.
+fn alternates(roots: &[Root]) -> bool {
+    roots.first().is_some_and(|r| r.stable)
+        && roots.last().is_some_and(|r| r.stable)
+        && roots.windows(2).all(|p| p[0].stable != p[1].stable)
 }
 
 /// Half-width in w of the first warm bracket (about 2 % in C): a neighbouring load's root
@@ -350,15 +339,6 @@ pub(super) fn warm_bracket(
     }
 }
 
-/// A scan point: w, H and its rising part F = C + I, and G = γ_s a_r(q_s) (H = F − G).
-#[derive(Clone, Copy)]
-pub(super) struct Point {
-    pub(super) w: f64,
-    pub(super) h: f64,
-    pub(super) f: f64,
-    pub(super) g: f64,
-}
-
 /// The scan of H over [w_lo, w_hi]: [`SCAN_PER_DECADE`] points per decade of |C|, then every
 /// cell that may hold a root bisected down to [`SCAN_MIN_CELL`]. F = C + I and G = γ_s a_r
 /// both rise with C (more adhesion at the coarse scales means more contact at every scale),
@@ -389,17 +369,6 @@ pub(super) fn scan(
         }
     }
     bisect_cells(s, scale, pts, gs, cancel)
-}
-
-/// H and its parts at w.
-pub(super) fn point(s: &mut Shooter<'_>, scale: &Scale, w: f64, gs: f64) -> Point {
-    let shot = s.h(scale.c(w));
-    Point {
-        w,
-        h: shot.h,
-        f: shot.f,
-        g: gs * shot.a_s,
-    }
 }
 
 /// The number of sign changes of H along `pts`.

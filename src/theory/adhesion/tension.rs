@@ -34,7 +34,8 @@
 
 use super::grid::build_grid;
 use super::propagator::Marcher;
-use super::roots::{check_bounded, point, refine, scan, Point, Scale, Shooter};
+use super::roots::{refine, scan};
+use super::shooter::{check_bounded, point, Point, Scale, Shooter};
 use super::strategy::{finish, COLLAPSED};
 use super::walls::WallCoefficients;
 use super::{AdhesionAccuracy, AdhesiveSolution, Branch};
