@@ -11,9 +11,9 @@
 //! reproducible whatever the thread count. Internally lengths are in units of Δa and stresses
 //! in units of E* (inputs and outputs are SI). Typical cost of FIRE alone at p* = 0.01,
 //! tolerance 1e-8: ~300 steps on 128², ~475 on 512² (≈ 1 s), ~585 on 1024²; adhesion adds
-//! ~10–100 %. Without adhesion, on a semi-infinite body, the default [`super::Method::Auto`] uses Polonsky–Keer up to 2048², which relaxes the contact in
-//! 57–153 CG iterations (256²–1024², two convolutions each) and FIRE then finds the force
-//! residual already met (BENCHMARKS.md).
+//! ~10–100 %. Without adhesion, on a semi-infinite body, the default [`super::Method::Auto`]
+//! uses Polonsky–Keer, which relaxes the contact in 60–160 CG iterations (256²–4096², two
+//! convolutions each) and FIRE then finds the force residual already met (BENCHMARKS.md).
 //! (A mass-weighted variant, m(q) ∝ φ(q) with the same projection, stalled at a residual of
 //! order 1 on these problems, as physics.md §6 warns; it is not offered.)
 //!
@@ -289,7 +289,7 @@ pub fn solve(
 
 /// [`solve`] from a given start: `start_gap` (m, one per node, e.g. the relaxed gap of a
 /// neighbouring load) instead of the flat body touching the highest summit. Without adhesion
-/// and with Polonsky–Keer ([`super::Method::uses_pk`]: the default on a half-space up to 2048²) the contact is first relaxed by
+/// and with Polonsky–Keer ([`super::Method::uses_pk`]: the default on a half-space) the contact is first relaxed by
 /// Polonsky–Keer CG ([`super::pk`]) and FIRE then checks, and if needed finishes, the same
 /// force residual; with adhesion FIRE does all the work.
 pub fn solve_from(

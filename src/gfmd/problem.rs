@@ -2,17 +2,18 @@
 //! (see the [module docs](super) for the model).
 
 use crate::error::{Bound, Error, Field, Range, Result};
-use crate::surface::heightmap::Surface;
+use crate::surface::heightmap::{Surface, MAX_GRID};
 
 /// The minimiser.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Method {
     /// Polonsky–Keer where it is cheaper, FIRE elsewhere: PK for the hard wall of a
-    /// semi-infinite body on grids of at most [`PK_MAX_NODES`] nodes; FIRE alone on slabs, above
-    /// that size (PK's iterations grow ∝ N^0.9, FIRE's ∝ N^0.3: at 4096² FIRE took 107 s where
-    /// PK took ≈ 150–220 s) and with adhesion (BENCHMARKS.md). On a slab PK's iterations grow as
-    /// the slab thins (system II, 256², p* = 0.009: 54 on a half-space, 342 at t·q_r = 1, 19 138
-    /// at 0.3, where FIRE needs 446–661 steps, 160× faster at 0.3).
+    /// semi-infinite body on grids of at most [`PK_MAX_NODES`] nodes (every generated grid:
+    /// system I at p* = 0.01 takes 108, 126 and 159 PK iterations at 1024², 2048² and 4096²,
+    /// where FIRE takes ≈ 600–1 000 steps; at 4096² PK is 4× faster); FIRE alone on slabs and
+    /// with adhesion (BENCHMARKS.md). On a slab PK's iterations grow as the slab thins
+    /// (system II, 256², p* = 0.009: 54 on a half-space, 342 at t·q_r = 1, 19 138 at 0.3, where
+    /// FIRE needs 446–661 steps, 160× faster at 0.3).
     #[default]
     Auto,
     /// Polonsky–Keer constrained CG for the hard wall, FIRE to check and finish (FIRE alone
@@ -23,8 +24,10 @@ pub enum Method {
     Fire,
 }
 
-/// Largest grid (nodes) on which [`Method::Auto`] uses Polonsky–Keer: 2048².
-pub const PK_MAX_NODES: usize = 2048 * 2048;
+/// Largest grid (nodes) on which [`Method::Auto`] uses Polonsky–Keer: the largest generated
+/// grid, [`MAX_GRID`]². A measured map with more nodes relaxes with FIRE, whose memory per node
+/// is smaller.
+pub const PK_MAX_NODES: usize = MAX_GRID * MAX_GRID;
 
 impl Method {
     /// Refuses Polonsky–Keer on a slab, before any step: its constrained CG does not reach the

@@ -437,6 +437,40 @@ mod tests {
     }
 
     #[test]
+    fn fused_row_passes_equal_the_plain_convolution_bit_for_bit() {
+        for (nx, ny) in [(8, 8), (7, 5), (256, 256)] {
+            let h: Vec<f64> = (0..nx * ny).map(|k| (((k * 7919) % 13) as f64 - 6.0) * 0.1).collect();
+            let mut plan = RealFft2::new(nx, ny);
+            let values: Vec<f64> = (0..plan.spectrum_len()).map(|k| 1.0 / (1.0 + (k % 11) as f64)).collect();
+            let kernel = plan.kernel(&values);
+            let mut spec = vec![Complex64::new(0.0, 0.0); plan.spectrum_len()];
+            // plain: the input scaled beforehand, the row sums afterwards
+            let scaled: Vec<f64> = h.iter().map(|x| x * 1.5).collect();
+            let mut want = vec![0.0; nx * ny];
+            plan.convolve(&scaled, &kernel, &mut spec, &mut want);
+            let want_sums: Vec<[f64; 4]> = want
+                .chunks(nx)
+                .zip(scaled.chunks(nx))
+                .map(|(o, i)| [o.iter().sum(), i.iter().sum(), 0.0, 0.0])
+                .collect();
+            // fused
+            let mut input = h.clone();
+            let mut got = vec![0.0; nx * ny];
+            let sums = plan.convolve_rows(
+                &mut input,
+                &kernel,
+                &mut spec,
+                &mut got,
+                |_, row| row.iter_mut().for_each(|x| *x *= 1.5),
+                |_, i, o| [o.iter().sum(), i.iter().sum(), 0.0, 0.0],
+            );
+            assert_eq!(input, scaled, "{nx}x{ny}: the prepared input stays");
+            assert_eq!(got, want, "{nx}x{ny}: the convolution");
+            assert_eq!(sums, want_sums, "{nx}x{ny}: the row partials, in row order");
+        }
+    }
+
+    #[test]
     fn planned_real_fft_matches_full_transform_and_round_trips() {
         for (nx, ny) in [(8, 8), (12, 6), (7, 5), (256, 256)] {
             let h: Vec<f64> = (0..nx * ny).map(|k| (((k * 7919) % 13) as f64 - 6.0) * 0.1).collect();

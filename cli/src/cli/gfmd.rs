@@ -72,7 +72,7 @@ pub struct GfmdArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = GfmdFormat::Json, allow_hyphen_values = true)]
     pub format: GfmdFormat,
-    /// Minimiser: auto (pk on a half-space up to 2048^2 nodes, fire on slabs and above), pk
+    /// Minimiser: auto (pk on a half-space, fire on slabs), pk
     /// (Polonsky-Keer CG for the hard wall, FIRE with adhesion) or fire (FIRE alone).
     #[arg(long, value_enum, default_value_t = MethodArg::Auto, allow_hyphen_values = true)]
     pub method: MethodArg,
@@ -107,7 +107,7 @@ pub struct GfmdArgs {
 /// `--method`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum MethodArg {
-    /// Polonsky-Keer on a half-space up to 2048^2 nodes, FIRE on slabs, above and with adhesion.
+    /// Polonsky-Keer on a half-space, FIRE on slabs and with adhesion.
     Auto,
     /// Polonsky-Keer CG, FIRE to check (FIRE alone with adhesion).
     Pk,
