@@ -441,7 +441,9 @@ mod tests {
         for (nx, ny) in [(8, 8), (7, 5), (256, 256)] {
             let h: Vec<f64> = (0..nx * ny).map(|k| (((k * 7919) % 13) as f64 - 6.0) * 0.1).collect();
             let mut plan = RealFft2::new(nx, ny);
-            let values: Vec<f64> = (0..plan.spectrum_len()).map(|k| 1.0 / (1.0 + (k % 11) as f64)).collect();
+            let values: Vec<f64> = (0..plan.spectrum_len())
+                .map(|k| 1.0 / (1.0 + (k % 11) as f64))
+                .collect();
             let kernel = plan.kernel(&values);
             let mut spec = vec![Complex64::new(0.0, 0.0); plan.spectrum_len()];
             // plain: the input scaled beforehand, the row sums afterwards
