@@ -17,7 +17,7 @@ Example::
 
 Functions: :func:`evaluate`, :func:`sweep` (:func:`sweep_thickness`, :func:`sweep_gamma`),
 :func:`cycle` (the theory's load cycle through tension to pull-off), :func:`gfmd`,
-:func:`gfmd_cycle` (GFMD's), :func:`psd`, :func:`read_surface`, :func:`gauge`. Errors: :class:`InputError`
+:func:`gfmd_cycle` (GFMD's), :func:`gfmd_sweep` (a one-way GFMD load sweep), :func:`psd`, :func:`read_surface`, :func:`gauge`. Errors: :class:`InputError`
 (a ValueError naming the argument, its value and the allowed range), :class:`NotConverged`,
 :class:`InternalError`. See docs/python.md in the repository.
 """
@@ -25,9 +25,9 @@ Functions: :func:`evaluate`, :func:`sweep` (:func:`sweep_thickness`, :func:`swee
 from __future__ import annotations
 
 from . import _native
-from ._api import cycle, evaluate, gauge, gfmd, gfmd_cycle, psd, read_surface, sweep, sweep_gamma, sweep_thickness
+from ._api import cycle, evaluate, gauge, gfmd, gfmd_cycle, gfmd_sweep, psd, read_surface, sweep, sweep_gamma, sweep_thickness
 from ._errors import InputError, InternalError, NotConverged
-from ._results import CycleResult, GfmdCycleResult, GfmdResult, PsdResult, Report, Result, SweepResult
+from ._results import CycleResult, GfmdCycleResult, GfmdResult, GfmdSweepResult, PsdResult, Report, Result, SweepResult
 from ._scene import Scene, Surface
 
 __version__: str = _native.__version__
@@ -42,6 +42,7 @@ __all__ = [
     "cycle",
     "gfmd",
     "gfmd_cycle",
+    "gfmd_sweep",
     "psd",
     "read_surface",
     "gauge",
@@ -51,6 +52,7 @@ __all__ = [
     "PsdResult",
     "CycleResult",
     "GfmdCycleResult",
+    "GfmdSweepResult",
     "Result",
     "InputError",
     "NotConverged",

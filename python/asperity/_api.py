@@ -19,7 +19,7 @@ import numpy as np
 
 from . import _native
 from ._errors import InputError
-from ._results import CycleResult, GfmdCycleResult, GfmdResult, PsdResult, Report, Result, SweepResult
+from ._results import CycleResult, GfmdCycleResult, GfmdResult, GfmdSweepResult, PsdResult, Report, Result, SweepResult
 from ._scene import Scene, Surface, as_map
 
 __all__ = [
@@ -288,6 +288,64 @@ def gfmd_cycle(
     ``grid`` < 4, ...), :class:`NotConverged` when a load misses its tolerance; Ctrl-C stops it
     within one relaxation step.
     """
+    return GfmdCycleResult(
+        _gfmd_walk(scene, from_, to, points, heights, size, grid, seed, tolerance, max_iterations, bins, method, rescale, progress, True)
+    )
+
+
+def gfmd_sweep(
+    scene: Scene,
+    from_: float,
+    to: float,
+    *,
+    points: int = 8,
+    heights: Any = None,
+    size: Optional[float] = None,
+    grid: Optional[int] = None,
+    seed: int = 1,
+    tolerance: float = 1e-8,
+    max_iterations: Optional[int] = None,
+    bins: Optional[int] = None,
+    method: str = "auto",
+    rescale: bool = True,
+    progress: Progress = None,
+) -> GfmdSweepResult:
+    """A one-way GFMD load sweep on one map (``asperity gfmd --from A --to B``): ``points``
+    log-spaced loads from p* = ``from_`` to ``to``, each warm-started from the last relaxed
+    state. ``to`` ≥ ``from_`` loads (library ``asperity::gfmd::sweep::run_sweep``, with the
+    theory's sweep on the same map under ``theory``); ``to`` < ``from_`` unloads (the cycle's
+    walk without the way up: rows with ``branch``, and ``pull_off_pressure`` and
+    ``theory_cycle`` as in :func:`gfmd_cycle`).
+
+    Returns a :class:`GfmdSweepResult` with the keys of ``asperity gfmd --from A --to B
+    --format json`` (columns ``p``, ``a_r``, ``mean_gap_rel``, ``mean_contact_stress``, ...).
+    Raises :class:`InputError` before any work for bad input, :class:`NotConverged` when a load
+    misses its tolerance; Ctrl-C stops it within one relaxation step.
+    """
+    return GfmdSweepResult(
+        _gfmd_walk(scene, from_, to, points, heights, size, grid, seed, tolerance, max_iterations, bins, method, rescale, progress, False)
+    )
+
+
+def _gfmd_walk(
+    scene: Scene,
+    from_: float,
+    to: float,
+    points: int,
+    heights: Any,
+    size: Optional[float],
+    grid: Optional[int],
+    seed: int,
+    tolerance: float,
+    max_iterations: Optional[int],
+    bins: Optional[int],
+    method: str,
+    rescale: bool,
+    progress: Progress,
+    cycle: bool,
+) -> Dict[str, Any]:
+    """The arguments of :func:`gfmd_cycle` and :func:`gfmd_sweep` checked and passed to the
+    library's walk over loads."""
     f, t, n = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
     arr: Optional[np.ndarray] = None
     size_m: Optional[float] = None
@@ -300,23 +358,8 @@ def gfmd_cycle(
             value=repr(size),
             allowed="None without heights",
         )
-    return GfmdCycleResult(
-        _native.gfmd_cycle(
-            _scene(scene),
-            f,
-            t,
-            n,
-            arr,
-            size_m,
-            grid,
-            seed,
-            tolerance,
-            max_iterations,
-            bins,
-            method,
-            rescale,
-            progress,
-        )
+    return _native.gfmd_cycle(
+        _scene(scene), f, t, n, arr, size_m, grid, seed, tolerance, max_iterations, bins, method, rescale, progress, cycle
     )
 
 

@@ -76,6 +76,7 @@ def gfmd_cycle(
     method: str = ...,
     rescale: bool = ...,
     progress: Progress = ...,
+    cycle: bool = ...,
 ) -> Dict[str, Any]: ...
 def read_surface(path: Union[str, Any], size: Optional[float] = ..., height_unit: Optional[str] = ...) -> Dict[str, Any]: ...
 def psd(

@@ -14,7 +14,7 @@ from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 import numpy as np
 
-__all__ = ["Result", "Report", "SweepResult", "GfmdResult", "PsdResult", "CycleResult", "GfmdCycleResult"]
+__all__ = ["Result", "Report", "SweepResult", "GfmdResult", "PsdResult", "CycleResult", "GfmdCycleResult", "GfmdSweepResult"]
 
 
 def _is_number(x: Any) -> bool:
@@ -361,3 +361,20 @@ class GfmdCycleResult(_Rows):
             f"GfmdCycleResult(grid={d.get('grid')!r}, rows={len(self)}, "
             f"pull_off_pressure={d.get('pull_off_pressure')!r}, jump_in_pressure={d.get('jump_in_pressure')!r}, ...)"
         )
+
+
+class GfmdSweepResult(_Rows):
+    """A one-way GFMD load sweep (:func:`asperity.gfmd_sweep`): the object of
+    ``asperity gfmd --from A --to B --format json``.
+
+    Columns by row, in the order the loads were visited: ``p``, ``a_r``, ``mean_gap_rel``,
+    ``mean_gap`` (m), ``mean_contact_stress``, ``contact_stress_variance``, ``elastic_energy``,
+    ``converged``, ``residual``, ``iterations``. Fields: ``grid``, ``seed``, ``reduction``,
+    ``theory`` (the theory's sweep on the same map), ``theory_error``, ``iterations``,
+    ``elapsed_s``; an unloading sweep (B < A) also has ``branch`` per row and the fields of
+    :class:`GfmdCycleResult` (``pull_off_pressure``, ``note``, ``theory_cycle``, ...).
+    """
+
+    def __repr__(self) -> str:
+        d = self._data
+        return f"GfmdSweepResult(grid={d.get('grid')!r}, rows={len(self)}, ...)"

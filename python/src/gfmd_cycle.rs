@@ -7,6 +7,10 @@
 //! `gfmd` ([`crate::gfmd::setup`]); every argument is checked before any work, and the walk
 //! runs on a worker thread that stops within one relaxation step on Ctrl-C
 //! ([`crate::work`]).
+//!
+//! With `cycle = false` it is the one-way sweep of `asperity gfmd --from A --to B`: loading
+//! ([`asperity::gfmd::sweep::run_sweep`]) when B ≥ A, unloading (the cycle's walk without the
+//! way up) when B < A.
 
 use crate::errors;
 use crate::gfmd::{info, setup};
@@ -14,14 +18,16 @@ use crate::scene::SceneCore;
 use crate::value;
 use crate::work;
 use asperity::gfmd::cycle::{run_cycle, CycleSpec};
+use asperity::gfmd::sweep::run_sweep;
 use asperity::gfmd::Progress;
+use asperity::theory::sweep::SweepSpec;
 use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
 
 /// `gfmd_cycle(scene, from_, to, points=8, heights=None, size_m=None, grid=None, seed=1, ...)`:
 /// see the module docs.
 #[pyfunction]
-#[pyo3(name = "gfmd_cycle", signature = (scene, from_, to, points = 8, heights = None, size_m = None, grid = None, seed = 1, tolerance = 1e-8, max_iterations = None, bins = None, method = "auto", rescale = true, progress = None))]
+#[pyo3(name = "gfmd_cycle", signature = (scene, from_, to, points = 8, heights = None, size_m = None, grid = None, seed = 1, tolerance = 1e-8, max_iterations = None, bins = None, method = "auto", rescale = true, progress = None, cycle = true))]
 #[allow(clippy::too_many_arguments)]
 pub fn run_gfmd_cycle<'py>(
     py: Python<'py>,
@@ -39,12 +45,13 @@ pub fn run_gfmd_cycle<'py>(
     method: &str,
     rescale: bool,
     progress: Option<Bound<'py, PyAny>>,
+    cycle: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
     let spec = CycleSpec {
         from: from_,
         to,
         points,
-        cycle: true,
+        cycle,
     };
     errors::guard(py, || spec.validate())?;
     let (setup, opts) = setup(
@@ -61,6 +68,18 @@ pub fn run_gfmd_cycle<'py>(
         rescale,
     )?;
     let total = opts.max_iterations;
+    if !cycle && to >= from_ {
+        let rising = SweepSpec {
+            from: from_,
+            to,
+            points,
+        };
+        let sw = work::run(py, progress.as_ref(), move |ctx| {
+            let mut report = |_: usize, p: Progress| ctx.report(info(p, total));
+            run_sweep(&setup, &rising, &opts, &mut report, &ctx.cancel)
+        })?;
+        return value::ser(py, &sw);
+    }
     let c = work::run(py, progress.as_ref(), move |ctx| {
         let mut report = |_: usize, p: Progress| ctx.report(info(p, total));
         run_cycle(&setup, &spec, &opts, &mut report, &ctx.cancel)

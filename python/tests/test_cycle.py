@@ -174,6 +174,30 @@ def test_ctrl_c_stops_a_gfmd_cycle():
     assert latency < STALL_S, latency
 
 
+def test_gfmd_sweep_equals_the_cli_both_ways(cli):
+    # rising: the loading sweep of `gfmd --from A --to B`; falling: its unloading walk
+    scene = asperity.Scene.preset("system-2").replace(surface_energy_j_m2=0.3)
+    for a, b in [(0.002, 0.02), (0.02, 0.002)]:
+        g = asperity.gfmd_sweep(scene, a, b, points=3, grid=32)
+        ref = cli("gfmd", "--preset", "system-2", "--grid", "32", "--gamma", "0.3", "--from", str(a), "--to", str(b), "--points", "3", "--format", "json")
+        assert compare(g.to_dict(), ref, REL) == [], (a, b)
+        assert set(g.to_dict()) == set(ref)
+        assert isinstance(g, asperity.GfmdSweepResult) and len(g) == 3
+        # more load, more contact along the walk; the rows in the order visited
+        order = np.argsort(g.p)
+        assert np.all(np.diff(g.a_r[order]) > 0), g.a_r
+        assert (g.p[0] < g.p[-1]) == (a < b)
+
+
+def test_gfmd_sweep_loading_agrees_with_the_cycle_loading_branch(adhesive_gfmd):
+    # the same map and loads: the rising sweep is the cycle's way up, warm start for warm start
+    scene = asperity.Scene.preset("system-2").replace(surface_energy_j_m2=0.3)
+    g = asperity.gfmd_sweep(scene, 0.002, 0.02, points=3, grid=64)
+    up = adhesive_gfmd.loading
+    assert np.allclose(g.p, adhesive_gfmd.p[up], rtol=1e-15)
+    assert np.allclose(g.a_r, adhesive_gfmd.a_r[up], rtol=0, atol=RETRACE)
+
+
 S = asperity.Scene.preset("system-2")
 
 # call, the error's field, a piece of the message (the allowed range)
@@ -192,6 +216,8 @@ BAD = [
     (lambda pr: asperity.gfmd(S.replace(thickness_qr=0.5), method="pk", progress=pr), "method", "pk on a slab"),
     (lambda pr: asperity.gfmd_cycle(S, 0.002, 0.01, tolerance=2.0, progress=pr), "tolerance", "allowed"),
     (lambda pr: asperity.gfmd_cycle(S, 0.002, 0.01, size=1e-6, progress=pr), "size", "None without heights"),
+    (lambda pr: asperity.gfmd_sweep(S, 0.002, 0.01, points=0, grid=32, progress=pr), "points", "invalid points = 0"),
+    (lambda pr: asperity.gfmd_sweep(S, 0.002, 1e9, grid=32, progress=pr), "to", "allowed 1e-12 <= p* <= 1e3"),
 ]
 
 
@@ -212,7 +238,8 @@ def test_the_cycle_names_are_public():
     # Python names are a public interface: pinned here, extended only
     import inspect
 
-    assert {"cycle", "gfmd_cycle", "CycleResult", "GfmdCycleResult"} <= set(asperity.__all__)
+    assert {"cycle", "gfmd_cycle", "gfmd_sweep", "CycleResult", "GfmdCycleResult", "GfmdSweepResult"} <= set(asperity.__all__)
+    assert list(inspect.signature(asperity.gfmd_sweep).parameters) == list(inspect.signature(asperity.gfmd_cycle).parameters)
     assert list(inspect.signature(asperity.cycle).parameters) == ["scene", "from_", "to", "points", "progress"]
     assert list(inspect.signature(asperity.gfmd_cycle).parameters) == [
         "scene", "from_", "to", "points", "heights", "size", "grid", "seed", "tolerance",
