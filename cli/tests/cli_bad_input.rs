@@ -149,6 +149,18 @@ fn gfmd_blames_the_map_not_the_pressure() {
         &["gfmd", "--grid", "32", "--extrapolate", "--ladder", "8"],
         &["--ladder", "two or more"],
     );
+    // a flag that would be ignored is refused: the ladder needs --extrapolate, the number of
+    // loads a sweep, and a sweep or cycle runs on one map (no --seeds)
+    fails(&["gfmd", "--grid", "32", "--ladder", "4,8"], &["missing --extrapolate"]);
+    fails(
+        &["gauge", "--fit", "w0", "--reference", "gfmd", "--ladder", "4,8"],
+        &["missing --extrapolate"],
+    );
+    fails(&["gfmd", "--grid", "32", "--points", "5"], &["missing --to, --from"]);
+    fails(
+        &["gfmd", "--grid", "32", "--from", "1e-3", "--to", "1e-2", "--seeds", "3"],
+        &["--from", "--seeds"],
+    );
     fails(
         &["gfmd", "--grid", "32", "--extrapolate", "--ladder", "1,8"],
         &["--ladder = 1", "<= lambda_s/da"],

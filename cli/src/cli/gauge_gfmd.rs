@@ -44,7 +44,7 @@ pub struct GfmdRefArgs {
     #[arg(long)]
     pub extrapolate: bool,
     /// --reference gfmd: points per short wavelength lambda_s/da of the --extrapolate ladder.
-    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, value_parser = ladder_rung)]
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, requires = "extrapolate", value_parser = ladder_rung)]
     pub ladder: Vec<f64>,
     /// --reference gfmd: minimiser (auto, pk or fire; see gfmd --method).
     #[arg(long, value_enum, allow_hyphen_values = true)]

@@ -84,19 +84,19 @@ pub struct GfmdArgs {
     #[arg(long, conflicts_with = "surface")]
     pub extrapolate: bool,
     /// Points per short wavelength lambda_s/da of the --extrapolate ladder.
-    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, value_parser = ladder_rung)]
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, requires = "extrapolate", value_parser = ladder_rung)]
     pub ladder: Vec<f64>,
     /// Repeat over K realisations (seeds S..S+K-1) and report mean +- standard error.
     #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::parse::count_in("seeds", 1, MAX_SEEDS), conflicts_with = "surface")]
     pub seeds: usize,
     /// Load sweep: first p* (warm-started loads from --from to --to).
-    #[arg(long, allow_hyphen_values = true, requires = "to", conflicts_with_all = ["extrapolate", "pressure"], value_parser = super::number(Field::Pressure))]
+    #[arg(long, allow_hyphen_values = true, requires = "to", conflicts_with_all = ["extrapolate", "pressure", "seeds"], value_parser = super::number(Field::Pressure))]
     pub from: Option<f64>,
     /// Load sweep: last p*.
     #[arg(long, allow_hyphen_values = true, requires = "from", value_parser = super::number(Field::Pressure))]
     pub to: Option<f64>,
     /// Load sweep: number of log-spaced loads.
-    #[arg(long, default_value_t = 8, allow_hyphen_values = true, value_parser = super::parse::count_in("points", 1, 100_000))]
+    #[arg(long, default_value_t = 8, allow_hyphen_values = true, requires = "from", value_parser = super::parse::count_in("points", 1, 100_000))]
     pub points: usize,
     /// Load cycle: load from --from up to --to, unload back down and on into tension until the
     /// contact is lost (pull-off, with adhesion); rows carry their branch.
