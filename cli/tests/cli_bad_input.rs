@@ -151,6 +151,11 @@ fn gfmd_blames_the_map_not_the_pressure() {
     );
     // a flag that would be ignored is refused: the ladder needs --extrapolate, the number of
     // loads a sweep, and a sweep or cycle runs on one map (no --seeds)
+    // an unknown flag names the command whose --help lists the flags, not the flags given
+    fails(
+        &["run", "--format", "json", "--branch", "x"],
+        &["'--branch'", "allowed the flags of `asperity run --help`"],
+    );
     fails(&["gfmd", "--grid", "32", "--ladder", "4,8"], &["missing --extrapolate"]);
     fails(
         &["gauge", "--fit", "w0", "--reference", "gfmd", "--ladder", "4,8"],

@@ -251,11 +251,21 @@ pub fn clap_error_line(e: &clap::Error) -> String {
     let first = first.strip_prefix("error: ").unwrap_or(first);
     if e.kind() == clap::error::ErrorKind::UnknownArgument {
         // name the command whose flags are allowed
-        let cmd = rendered
+        // (the usage line names the command, then the arguments given: keep the command)
+        let cmd: Vec<&str> = rendered
             .lines()
             .find_map(|l| l.trim().strip_prefix("Usage: "))
-            .and_then(|u| u.split(" [").next())
-            .unwrap_or("asperity");
+            .map(|u| {
+                u.split_whitespace()
+                    .take_while(|w| !w.starts_with(['-', '<', '[']))
+                    .collect()
+            })
+            .unwrap_or_default();
+        let cmd = if cmd.is_empty() {
+            "asperity".to_string()
+        } else {
+            cmd.join(" ")
+        };
         return format!("{first}: allowed the flags of `{cmd} --help`");
     }
     first.to_string()
