@@ -7,7 +7,7 @@ use asperity::error::Error;
 use asperity::input::scene::Scene;
 use asperity::theory::adhesion::{self, AdhesionAccuracy};
 use asperity::theory::{engine, hysteresis};
-use asperity::tolerances::{RUNAWAY_WALL_REL, RUNAWAY_WALL_SPREAD_REL};
+use asperity::tolerances::{ADHESION_DEFAULT_REL, RUNAWAY_WALL_REL, RUNAWAY_WALL_SPREAD_REL};
 
 fn scene(model: u8, t: f64, gamma: f64, p: f64) -> Scene {
     common::at(2, model, t, gamma, p)
@@ -149,4 +149,33 @@ fn a_wall_that_runs_away_leaves_the_contact_as_it_was() {
     for e in &ends[1..] {
         assert!((e / ends[0] - 1.0).abs() < RUNAWAY_WALL_SPREAD_REL, "{ends:?}");
     }
+}
+
+/// Issue 40 (system II, model 4, t·q_r = 0.1186, γ_s = 0.157 J/m², p* = 3.5e-7): at the
+/// default resolution the loading root sits on a jump of the discrete H (where γ at the end of
+/// the march's first step changes sign; `adhesion::strategy::RESTEP`), Brent's bracket
+/// collapsed at a residual of 3.2e-3 and the solve was an error. It is now solved again at
+/// slightly more steps per ln q: it meets its tolerance, and a_r agrees with a 4× finer march
+/// with twice the points per width within the default's error bar and within
+/// [`ADHESION_DEFAULT_REL`].
+#[test]
+fn a_root_where_the_first_steps_end_gamma_changes_sign_converges() {
+    let s = scene(4, 0.11858657076247323, 0.157, 3.5030939862794857e-07);
+    let opts = engine::Options::default();
+    let ev = engine::evaluate(&s, &opts).expect("converges");
+    assert!(ev.residual <= opts.adhesion.tol, "residual {}", ev.residual);
+    let fine = AdhesionAccuracy {
+        steps_per_ln_q: 4.0 * AdhesionAccuracy::default().steps_per_ln_q,
+        points_per_width: 2.0 * AdhesionAccuracy::default().points_per_width,
+        ..AdhesionAccuracy::default()
+    };
+    let reference = adhesion::solve(&s, &fine, None, None).unwrap();
+    assert_eq!(ev.branches.len(), reference.branches.len(), "{:?}", ev.branches);
+    let (a, b) = (ev.stats.a_r, reference.a_r);
+    assert!(
+        (a - b).abs() <= ev.error_estimate,
+        "a_r {a} against {b}, error bar {}",
+        ev.error_estimate
+    );
+    assert!((a / b - 1.0).abs() <= ADHESION_DEFAULT_REL, "a_r {a} against {b}");
 }
