@@ -151,11 +151,11 @@ fn a_wall_that_runs_away_leaves_the_contact_as_it_was() {
     }
 }
 
-/// Issue 40 (system II, model 4, t·q_r = 0.1186, γ_s = 0.157 J/m², p* = 3.5e-7): at the
-/// default resolution the loading root sits on a jump of the discrete H (where γ at the end of
-/// the march's first step changes sign; `adhesion::strategy::RESTEP`), Brent's bracket
-/// collapsed at a residual of 3.2e-3 and the solve was an error. It is now solved again at
-/// slightly more steps per ln q: it meets its tolerance, and a_r agrees with a 4× finer march
+/// System II, model 4, t·q_r = 0.1186, γ_s = 0.157 J/m², p* = 3.5e-7: at the default
+/// resolution the loading root sits on a jump of the discrete H (where γ at the end of the
+/// march's first step changes sign; `adhesion::strategy::RESTEP`), where Brent's bracket
+/// collapses at a residual of 3.2e-3. The solve tries again at slightly more steps per ln q:
+/// it meets its tolerance, and a_r agrees with a 4× finer march
 /// with twice the points per width within the default's error bar and within
 /// [`ADHESION_DEFAULT_REL`].
 #[test]
