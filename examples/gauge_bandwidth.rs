@@ -117,7 +117,7 @@ fn full_system(opts: &Options, fitted: &BandwidthGauge) -> Result<(), Box<dyn st
         );
         let custom = |g: Gauge| Model {
             kind: asperity::input::model::ModelKind::Custom,
-            ..g.model(scene.gamma_glo())
+            ..g.model(scene.gamma_glo(), scene.tabor())
         };
         let bw = scene.spectrum().q_s() / scene.spectrum().q_r();
         for (name, m) in [

@@ -5,12 +5,10 @@
 //!
 //! `cargo run --release --example gauge_full_system` prints the fitted steps per octave, the
 //! error of model 4, of the stored model 5 and of the fit on those points, and the folds.
-use asperity::fit::bandwidth_gauge::{bandwidth_residuals, fit_per_octave, leave_out};
-use asperity::fit::reference_set::{bandwidth_set, ReferencePoint};
-use asperity::fit::set_gauge::{case_errors, tabulate, CaseTable, ModelChoice, SetCase};
+use asperity::fit::bandwidth_gauge::{bandwidth_residuals, fit_per_octave, full_system_cases, leave_out};
+use asperity::fit::set_gauge::{case_errors, tabulate, CaseTable, ModelChoice};
 use asperity::input::model::Model;
 use asperity::input::model_five::{BANDWIDTH_GAUGE, GAUGE};
-use asperity::input::preset::Preset;
 use asperity::theory::engine::Options;
 
 fn stats(e: &[f64]) -> (f64, f64, usize) {
@@ -23,49 +21,9 @@ fn stats(e: &[f64]) -> (f64, f64, usize) {
     )
 }
 
-/// One case per (t·q_r, γ_s) on the full system, with the points of its widest GFMD grid.
-fn full_cases() -> Result<Vec<SetCase>, Box<dyn std::error::Error>> {
-    let preset = Preset::resolve("system-2")?;
-    let base = preset.scene()?;
-    let mut keys: Vec<(f64, f64)> = bandwidth_set()
-        .iter()
-        .map(|p| (p.thickness_qr, p.gamma_factor))
-        .collect();
-    keys.sort_by(|a, b| a.partial_cmp(b).unwrap());
-    keys.dedup();
-    let mut out = Vec::new();
-    for (t, f) in keys {
-        let of_case = |p: &&ReferencePoint| p.thickness_qr == t && p.gamma_factor == f;
-        let widest = bandwidth_set()
-            .iter()
-            .filter(of_case)
-            .map(|p| p.grid)
-            .max()
-            .unwrap_or(0);
-        let points: Vec<ReferencePoint> = bandwidth_set()
-            .iter()
-            .filter(|p| of_case(p) && p.grid == widest)
-            .copied()
-            .collect();
-        let scene = base
-            .clone()
-            .with_thickness_qr(t)?
-            .with_surface_energy_j_m2(base.surface_energy_j_m2() * f)?;
-        out.push(SetCase {
-            grid: widest,
-            thickness_qr: t,
-            gamma_factor: f,
-            gamma_glo: scene.gamma_glo(),
-            scenes: vec![scene],
-            points,
-        });
-    }
-    Ok(out)
-}
-
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let opts = Options::chart();
-    let cases = full_cases()?;
+    let cases = full_system_cases()?;
     let t0 = std::time::Instant::now();
     let nodes: Vec<f64> = (2..=20).map(|k| 0.05 * k as f64).collect();
     let tables = tabulate(&cases, &nodes, &opts)?;

@@ -360,10 +360,11 @@ pub const PYTHON_CLI_REL: f64 = 1e-12;
 /// |ln(a_r theory/GFMD)| at the gauge points at most this fraction of model 4's on the same
 /// points.
 pub const MODEL5_VS_MODEL4: f64 = 0.5;
-/// What model 5 reaches when a whole γ_s factor is left out (0.53 of model 4's held-out error,
-/// docs/physics.md §3.6): the target of [`MODEL5_VS_MODEL4`] is met leaving a thickness out,
-/// not leaving a γ_s out; this bound guards what is reached.
-pub const MODEL5_VS_MODEL4_GAMMA_OUT: f64 = 0.6;
+/// What model 5 reaches on the set's own bandwidth when a whole γ_s factor is left out (0.67
+/// of model 4's held-out error, docs/physics.md §3.6): the target of [`MODEL5_VS_MODEL4`] is
+/// met leaving a thickness out, not leaving a γ_s out, where the fit extrapolates the Tabor
+/// parameter's weight from two surface energies; this bound guards what is reached.
+pub const MODEL5_VS_MODEL4_GAMMA_OUT: f64 = 0.75;
 /// The stored gauge against a refit in the test, which tabulates e_a(W(0)) on a grid three times
 /// as coarse (step 0.075 from 0.1) as the gauge's own (0.025) and scans the floor on the same
 /// grid: interpolation moves w_b and w_s by a few 0.01 and the floor by up to two grid steps.
@@ -374,6 +375,10 @@ pub const MODEL5_GAUGE_REFIT_ABS: f64 = 0.06;
 /// set's gauge held at every bandwidth (measured 0.63 on the whole bandwidth set,
 /// docs/physics.md §3.6).
 pub const MODEL5_BANDWIDTH_HELD_OUT: f64 = 0.8;
+/// The target for `run --model 5` on the full system II (λ_r/λ_s = 128, never a
+/// table of the fit) against the widest GFMD of the bandwidth set's 21 adhesive cases: mean
+/// |ln(a_r theory/GFMD)| at most this fraction of model 4's on the same 84 points.
+pub const MODEL5_FULL_VS_MODEL4: f64 = 0.5;
 
 /// The theory's contact branch at p* = 0 (the tensile continuation, physics.md §6.2) against
 /// the same branch at p* = 1e-7 from the solver of p* > 0: relative a_r (the load itself moves

@@ -8,7 +8,7 @@ use asperity::fit::set_gauge::{
     ModelChoice, SetCase,
 };
 use asperity::input::model::Model;
-use asperity::input::model_five::{BANDWIDTH_GAUGE, GAUGE};
+use asperity::input::model_five::{adhesion_measure, BANDWIDTH_GAUGE, GAUGE};
 use asperity::input::preset::Preset;
 use asperity::theory::engine::Options;
 use asperity::tolerances::{MODEL5_GAUGE_REFIT_ABS, MODEL5_VS_MODEL4, MODEL5_VS_MODEL4_GAMMA_OUT};
@@ -83,11 +83,22 @@ fn model_5_follows_the_scene_and_is_model_3_without_adhesion() {
     let five = Model::named(5).unwrap();
     let scene = preset.scene().unwrap().with_model(five).unwrap();
     let m = scene.model();
-    // W(0) is the gauge's w₀ at the scene's bandwidth (the full system: λ_r/λ_s = 128) up to
-    // the crossover's e^{−γ̃/γ_c} (γ̃ = 0.1: 5e-5 of model 3's)
+    // W(0) is the gauge's w₀ at the scene's bandwidth (the full system: λ_r/λ_s = 128) and
+    // adhesion measure γ̃_glo·√μ_T, up to the crossover's e^{−γ̃/γ_c} (γ̃ = 0.1: 5e-5 of model
+    // 3's)
     let bw = scene.spectrum().q_s() / scene.spectrum().q_r();
     assert!((bw - 128.0).abs() < 1e-9);
-    assert!((m.w(0.0) - BANDWIDTH_GAUGE.at(bw).w0(scene.gamma_glo())).abs() < 1e-4);
+    let measure = adhesion_measure(scene.gamma_glo(), scene.tabor());
+    assert!((measure / (scene.gamma_glo() * scene.tabor().sqrt()) - 1.0).abs() < 1e-12);
+    assert!((m.w(0.0) - BANDWIDTH_GAUGE.at(bw).w0(measure)).abs() < 1e-4);
+    // more surface energy at the same γ̃_glo is a larger μ_T, so a larger W(0): a thicker slab
+    // with twice γ_s against a thinner one of the same γ̃_glo
+    let stronger = scene
+        .clone()
+        .with_surface_energy_j_m2(2.0 * scene.surface_energy_j_m2())
+        .unwrap();
+    assert!(stronger.tabor() > scene.tabor() * 1.5);
+    assert!(stronger.model().w(0.0) > m.w(0.0));
     // a thinner slab has more γ̃_glo, so a larger W(0); without adhesion model 3
     let thin = scene.clone().with_thickness_qr(0.15).unwrap();
     assert!(thin.gamma_glo() > scene.gamma_glo());

@@ -189,16 +189,23 @@ class SweepResult(Result):
         return len(self._data.get("rows", []))
 
 
-class GfmdResult(Result):
-    """A GFMD run (:func:`asperity.gfmd`): the object of ``asperity gfmd --format json``
-    (``a_r``, ``mean_contact_stress``, ``contact_stress_variance``, ``pr``, ``mean_gap``,
-    ``mean_gap_rel``, ``iterations``, ``residual``, ``converged``, ``grid``, ``theory`` on the
-    same map, ``reduction``, timings) and ``heights``, the map it ran on (m, rows along y)."""
+class _OnMap(Result):
+    """A GFMD result with ``heights``: the map it ran on (m, rows along y), kept out of
+    ``to_dict()`` (the CLI's JSON has no map)."""
+
+    heights: Optional[np.ndarray]
 
     def __init__(self, data: Dict[str, Any]) -> None:
         heights = data.pop("heights", None)
         super().__init__(data)
         object.__setattr__(self, "heights", heights)
+
+
+class GfmdResult(_OnMap):
+    """A GFMD run (:func:`asperity.gfmd`): the object of ``asperity gfmd --format json``
+    (``a_r``, ``mean_contact_stress``, ``contact_stress_variance``, ``pr``, ``mean_gap``,
+    ``mean_gap_rel``, ``iterations``, ``residual``, ``converged``, ``grid``, ``theory`` on the
+    same map, ``reduction``, timings) and ``heights``, the map it ran on (m, rows along y)."""
 
 
 class PsdResult(Result):
@@ -329,7 +336,7 @@ class CycleResult(_Rows):
         )
 
 
-class GfmdCycleResult(_Rows):
+class GfmdCycleResult(_OnMap, _Rows):
     """GFMD's load cycle (:func:`asperity.gfmd_cycle`): the object of
     ``asperity gfmd --cycle --format json``.
 
@@ -340,7 +347,8 @@ class GfmdCycleResult(_Rows):
     ``pull_off_bracket``, ``jump_in_pressure`` with ``jump_in_bracket``, ``note``, ``grid``,
     ``seed``, ``reduction``, ``theory`` (the theory's sweep on the same map, both branches),
     ``theory_cycle`` (its path along the same cycle to its own pull-off, a
-    :class:`CycleResult`), ``theory_error``, ``iterations`` (all steps), ``elapsed_s``.
+    :class:`CycleResult`), ``theory_error``, ``iterations`` (all steps), ``elapsed_s``; and
+    ``heights``, the map it ran on (m, rows along y), as :class:`GfmdResult`'s.
     """
 
     @property
@@ -363,7 +371,7 @@ class GfmdCycleResult(_Rows):
         )
 
 
-class GfmdSweepResult(_Rows):
+class GfmdSweepResult(_OnMap, _Rows):
     """A one-way GFMD load sweep (:func:`asperity.gfmd_sweep`): the object of
     ``asperity gfmd --from A --to B --format json``.
 
@@ -372,7 +380,8 @@ class GfmdSweepResult(_Rows):
     ``converged``, ``residual``, ``iterations``. Fields: ``grid``, ``seed``, ``reduction``,
     ``theory`` (the theory's sweep on the same map), ``theory_error``, ``iterations``,
     ``elapsed_s``; an unloading sweep (B < A) also has ``branch`` per row and the fields of
-    :class:`GfmdCycleResult` (``pull_off_pressure``, ``note``, ``theory_cycle``, ...).
+    :class:`GfmdCycleResult` (``pull_off_pressure``, ``note``, ``theory_cycle``, ...); and
+    ``heights``, the map it ran on (m, rows along y).
     """
 
     def __repr__(self) -> str:

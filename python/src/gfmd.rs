@@ -7,7 +7,7 @@
 
 use crate::errors;
 use crate::scene::SceneCore;
-use crate::surface::{heights_of, map_of};
+use crate::surface::{map_of, with_heights};
 use crate::value;
 use crate::work::{self, Info};
 use asperity::error::{Error, Field};
@@ -148,9 +148,5 @@ pub fn run_gfmd<'py>(
         gfmd::run(&setup, &opts, &mut report, &ctx.cancel)
     })?;
     let map = r.surface.take();
-    let d = value::ser(py, &r)?;
-    if let Some(m) = map {
-        d.set_item("heights", heights_of(py, &m)?)?;
-    }
-    Ok(d)
+    with_heights(py, value::ser(py, &r)?, map)
 }

@@ -15,6 +15,7 @@
 use crate::errors;
 use crate::gfmd::{info, setup};
 use crate::scene::SceneCore;
+use crate::surface::with_heights;
 use crate::value;
 use crate::work;
 use asperity::gfmd::cycle::{run_cycle, CycleSpec};
@@ -74,15 +75,17 @@ pub fn run_gfmd_cycle<'py>(
             to,
             points,
         };
-        let sw = work::run(py, progress.as_ref(), move |ctx| {
+        let mut sw = work::run(py, progress.as_ref(), move |ctx| {
             let mut report = |_: usize, p: Progress| ctx.report(info(p, total));
             run_sweep(&setup, &rising, &opts, &mut report, &ctx.cancel)
         })?;
-        return value::ser(py, &sw);
+        let map = sw.surface.take();
+        return with_heights(py, value::ser(py, &sw)?, map);
     }
-    let c = work::run(py, progress.as_ref(), move |ctx| {
+    let mut c = work::run(py, progress.as_ref(), move |ctx| {
         let mut report = |_: usize, p: Progress| ctx.report(info(p, total));
         run_cycle(&setup, &spec, &opts, &mut report, &ctx.cancel)
     })?;
-    value::ser(py, &c)
+    let map = c.surface.take();
+    with_heights(py, value::ser(py, &c)?, map)
 }

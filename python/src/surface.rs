@@ -30,6 +30,15 @@ pub fn map_of(py: Python<'_>, heights: &PyReadonlyArray2<'_, f64>, size_m: f64) 
     errors::guard(py, || Surface::new(nx, ny, size_m / nx as f64, values))
 }
 
+/// A result's dict with `heights`, the map a GFMD run walked on (m, rows along y), where it
+/// has one.
+pub fn with_heights<'py>(py: Python<'py>, d: Bound<'py, PyAny>, map: Option<Surface>) -> PyResult<Bound<'py, PyAny>> {
+    if let Some(m) = map {
+        d.set_item("heights", heights_of(py, &m)?)?;
+    }
+    Ok(d)
+}
+
 /// The heights of `s` as a numpy array of shape (n_y, n_x).
 pub fn heights_of<'py>(py: Python<'py>, s: &Surface) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let rows: Vec<Vec<f64>> = s.heights.chunks(s.nx).map(<[f64]>::to_vec).collect();

@@ -198,6 +198,18 @@ def test_gfmd_sweep_loading_agrees_with_the_cycle_loading_branch(adhesive_gfmd):
     assert np.allclose(g.a_r, adhesive_gfmd.a_r[up], rtol=0, atol=RETRACE)
 
 
+def test_gfmd_walks_carry_the_map_they_ran_on(adhesive_gfmd):
+    # the same seed and grid generate the same map as a single `gfmd` run; it stays out of the
+    # JSON dict, as `gfmd`'s does
+    scene = asperity.Scene.preset("system-2").replace(surface_energy_j_m2=0.3)
+    one = asperity.gfmd(scene.replace(pressure=0.002), grid=64)
+    sweep = asperity.gfmd_sweep(scene, 0.02, 0.002, points=2, grid=64)
+    for walk in (adhesive_gfmd, sweep):
+        assert isinstance(walk.heights, np.ndarray) and walk.heights.shape == (64, 64)
+        assert np.array_equal(walk.heights, one.heights)
+        assert "heights" not in walk.to_dict()
+
+
 S = asperity.Scene.preset("system-2")
 
 # call, the error's field, a piece of the message (the allowed range)

@@ -15,9 +15,11 @@
 //! 1024², λ_r/λ_s = 32 and 64), tabulated over W(0) like the first stage
 //! ([`super::set_gauge::tabulate`]). Cross-validation leaves one grid out, or one thickness.
 
-use super::set_gauge::{gauge_residuals, CaseTable, ResidualProblem};
+use super::reference_set::{bandwidth_set, ReferencePoint};
+use super::set_gauge::{gauge_residuals, CaseTable, ResidualProblem, SetCase};
 use crate::error::{Error, Result};
 use crate::input::model_five::{BandwidthGauge, Gauge};
+use crate::input::preset::Preset;
 use levenberg_marquardt::LevenbergMarquardt;
 use nalgebra::DVector;
 
@@ -128,4 +130,50 @@ pub fn leave_out(
         held_out_worst: e.iter().map(|v| v.abs()).fold(0.0, f64::max),
         held_out_points: e.len(),
     })
+}
+
+/// The bandwidth set's adhesive cases on the *full* system II (the continuum spectrum `run`
+/// uses, λ_r/λ_s = 128), each with the points of its widest GFMD grid: what `run --model 5`
+/// is judged on. The theory runs on the full scene, not on a map, so these cases test the
+/// gauge at a bandwidth no table of the fit was at.
+///
+/// # Errors
+/// Those of the preset.
+pub fn full_system_cases() -> Result<Vec<SetCase>> {
+    let preset = Preset::resolve("system-2")?;
+    let base = preset.scene()?;
+    let mut keys: Vec<(f64, f64)> = bandwidth_set()
+        .iter()
+        .map(|p| (p.thickness_qr, p.gamma_factor))
+        .collect();
+    keys.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    keys.dedup();
+    let mut out = Vec::new();
+    for (t, f) in keys {
+        let of_case = |p: &&ReferencePoint| p.thickness_qr == t && p.gamma_factor == f;
+        let widest = bandwidth_set()
+            .iter()
+            .filter(of_case)
+            .map(|p| p.grid)
+            .max()
+            .unwrap_or(0);
+        let points: Vec<ReferencePoint> = bandwidth_set()
+            .iter()
+            .filter(|p| of_case(p) && p.grid == widest)
+            .copied()
+            .collect();
+        let scene = base
+            .clone()
+            .with_thickness_qr(t)?
+            .with_surface_energy_j_m2(base.surface_energy_j_m2() * f)?;
+        out.push(SetCase {
+            grid: widest,
+            thickness_qr: t,
+            gamma_factor: f,
+            gamma_glo: scene.gamma_glo(),
+            scenes: vec![scene],
+            points,
+        });
+    }
+    Ok(out)
 }

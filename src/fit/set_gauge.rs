@@ -29,7 +29,7 @@ use crate::error::{Error, Result};
 use crate::gfmd::result::prepare;
 use crate::gfmd::{GfmdSetup, GridSpec};
 use crate::input::model::{Model, ModelKind};
-use crate::input::model_five::{Gauge, GAUGE, W0_MIN};
+use crate::input::model_five::{adhesion_measure, Gauge, GAUGE, W0_MIN};
 use crate::input::preset::Preset;
 use crate::input::scene::Scene;
 use crate::theory::cycle::PathBranch;
@@ -82,7 +82,7 @@ pub struct PointError {
 pub enum ModelChoice {
     /// The same model on every scene (model 5 follows each scene's γ̃_glo with the stored gauge).
     Fixed(Model),
-    /// Model 5's form with this gauge (coefficients from each scene's γ̃_glo).
+    /// Model 5's form with this gauge (coefficients from each scene's γ̃_glo and μ_T).
     Gauged(Gauge),
 }
 
@@ -93,7 +93,7 @@ impl ModelChoice {
             // marked custom so that the scene keeps the trial coefficients
             ModelChoice::Gauged(g) => Model {
                 kind: ModelKind::Custom,
-                ..g.model(scene.gamma_glo())
+                ..g.model(scene.gamma_glo(), scene.tabor())
             },
         };
         scene.clone().with_model(m)
@@ -278,7 +278,7 @@ pub fn is_gauge_point(e: &PointError) -> bool {
 
 /// The gauge points' e_a of one case tabulated over model 5's W(0) (w₀ of
 /// [`crate::input::model_five`], the only number of the adhesive weight that moves with the
-/// gauge): the fit then reads e_a(w_b + w_s·γ̃_glo) off the table instead of re-solving the
+/// gauge): the fit then reads e_a(w_b + w_s·m) (m = [`CaseTable::measure`]) off the table instead of re-solving the
 /// theory (linear interpolation in w₀ between nodes).
 #[derive(Debug, Clone)]
 pub struct CaseTable {
@@ -292,6 +292,11 @@ pub struct CaseTable {
     pub gamma_factor: f64,
     /// γ̃_glo of the case (the w₀ of its nodes is this case's).
     pub gamma_glo: f64,
+    /// The Tabor parameter μ_T of the case's maps (kept by the reduction: the full system's).
+    pub tabor: f64,
+    /// The adhesion measure m = γ̃_glo·μ_T^κ of the case, which the gauge's W(0) reads
+    /// ([`adhesion_measure`]).
+    pub measure: f64,
     /// The w₀ nodes (ascending).
     pub w0: Vec<f64>,
     /// e_a at each gauge point (outer) and node (inner).
@@ -320,7 +325,7 @@ fn model_at_w0(gamma_glo: f64, w0: f64) -> Model {
     };
     Model {
         kind: ModelKind::Custom,
-        ..g.model(gamma_glo)
+        ..g.model(gamma_glo, 0.0)
     }
 }
 
@@ -368,12 +373,16 @@ pub fn tabulate(cases: &[SetCase], w0_nodes: &[f64], opts: &Options) -> Result<V
                 .scenes
                 .first()
                 .map_or(f64::NAN, |s| s.spectrum().q_s() / s.spectrum().q_r());
+            // μ_T is kept by the reduction, so the case's maps share it up to rounding
+            let tabor = c.scenes.iter().map(Scene::tabor).sum::<f64>() / c.scenes.len().max(1) as f64;
             Ok(CaseTable {
                 grid: c.grid,
                 bandwidth,
                 thickness_qr: c.thickness_qr,
                 gamma_factor: c.gamma_factor,
                 gamma_glo: c.gamma_glo,
+                tabor,
+                measure: adhesion_measure(c.gamma_glo, tabor),
                 w0: w0_nodes.to_vec(),
                 ln_a_r: (0..points)
                     .map(|k| per_node.iter().map(|col| col[k]).collect())
@@ -385,7 +394,7 @@ pub fn tabulate(cases: &[SetCase], w0_nodes: &[f64], opts: &Options) -> Result<V
 
 /// The gauge's residuals: e_a at every gauge point of `tables` under `gauge`.
 pub fn gauge_residuals(tables: &[CaseTable], gauge: Gauge) -> Vec<f64> {
-    tables.iter().flat_map(|t| t.at(gauge.w0(t.gamma_glo))).collect()
+    tables.iter().flat_map(|t| t.at(gauge.w0(t.measure))).collect()
 }
 
 /// A least-squares problem given by its residual function, the Jacobian by central

@@ -28,6 +28,7 @@ use super::fire::{relax_from, Relaxation};
 use super::sweep::GfmdSweepRow;
 use super::{prepare, GfmdOptions, GfmdSetup, Prepared, Progress, Stage};
 use crate::error::{Error, Field, Result};
+use crate::surface::heightmap::Surface;
 pub use crate::theory::cycle::PathBranch;
 use crate::theory::cycle::{path_through_tension, TheoryCycle};
 use crate::theory::engine::Options;
@@ -149,6 +150,10 @@ pub struct GfmdCycle {
     pub iterations: usize,
     /// Wall time (s).
     pub elapsed_s: f64,
+    /// The map the path ran on (not serialised; null over MPI ranks, where no rank holds it
+    /// whole).
+    #[serde(skip)]
+    pub surface: Option<Surface>,
 }
 
 /// One relaxation at a time along a path, warm-started from the last state held: the serial
@@ -245,6 +250,7 @@ impl PathWalk {
             theory_error: theory.2,
             iterations,
             elapsed_s: t0.elapsed().as_secs_f64(),
+            surface: None,
         }
     }
 }
@@ -339,7 +345,9 @@ pub fn run_cycle(
         setup.surface.is_none().then_some(setup.seed),
         walker.prep.reduction.clone(),
     );
-    Ok(path.into_cycle(theory, map, walker.iterations, t0))
+    let mut cycle = path.into_cycle(theory, map, walker.iterations, t0);
+    cycle.surface = Some(walker.prep.surface);
+    Ok(cycle)
 }
 
 /// The theory beside a path: its sweep over the positive loads on the map's scene, the sweep's

@@ -15,6 +15,7 @@
 
 use super::{measure, prepare, solve_from, GfmdOptions, GfmdSetup, Prepared, Problem, Progress, Solution, Stage};
 use crate::error::{Error, Result};
+use crate::surface::heightmap::Surface;
 use crate::theory::engine::Options;
 use crate::theory::sweep::{self, Sweep, SweepSpec};
 use serde::Serialize;
@@ -65,6 +66,10 @@ pub struct GfmdSweep {
     pub iterations: usize,
     /// Wall time (s).
     pub elapsed_s: f64,
+    /// The map the sweep ran on (not serialised; null over MPI ranks, where no rank holds it
+    /// whole).
+    #[serde(skip)]
+    pub surface: Option<Surface>,
 }
 
 impl GfmdSweepRow {
@@ -173,6 +178,7 @@ pub fn run_sweep(
         theory_error,
         iterations,
         elapsed_s: t0.elapsed().as_secs_f64(),
+        surface: Some(prep.surface),
     })
 }
 

@@ -183,18 +183,19 @@ impl Model {
         }
     }
 
-    /// This model as a scene of global adhesion `gamma_glo` at the reference set's bandwidth
-    /// uses it (model 5, [`super::model_five`]); every other kind is returned unchanged.
-    pub fn for_scene(&self, gamma_glo: f64) -> Model {
-        self.for_scene_at(gamma_glo, super::model_five::SET_BANDWIDTH)
+    /// This model as a scene of global adhesion `gamma_glo` and Tabor parameter `tabor` at the
+    /// reference set's bandwidth uses it (model 5, [`super::model_five`]); every other kind is
+    /// returned unchanged.
+    pub fn for_scene(&self, gamma_glo: f64, tabor: f64) -> Model {
+        self.for_scene_at(gamma_glo, tabor, super::model_five::SET_BANDWIDTH)
     }
 
-    /// The coefficients this model takes on a scene of global adhesion `gamma_glo` and
-    /// bandwidth q_s/q_r = `bandwidth` (model 5: [`super::model_five::BANDWIDTH_GAUGE`]; every
-    /// other model is itself).
-    pub fn for_scene_at(&self, gamma_glo: f64, bandwidth: f64) -> Model {
+    /// The coefficients this model takes on a scene of global adhesion `gamma_glo`, Tabor
+    /// parameter `tabor` and bandwidth q_s/q_r = `bandwidth` (model 5:
+    /// [`super::model_five::BANDWIDTH_GAUGE`]; every other model is itself).
+    pub fn for_scene_at(&self, gamma_glo: f64, tabor: f64, bandwidth: f64) -> Model {
         match self.kind {
-            ModelKind::Five => super::model_five::BANDWIDTH_GAUGE.model(gamma_glo, bandwidth),
+            ModelKind::Five => super::model_five::BANDWIDTH_GAUGE.model(gamma_glo, tabor, bandwidth),
             _ => *self,
         }
     }
@@ -231,13 +232,13 @@ impl Model {
     }
 
     /// Model 1–4 of \[S\] (model 4 with erratum 2 applied); model 5 at γ̃_glo = 0 (a scene
-    /// sets its coefficients from its own γ̃_glo, [`Model::for_scene`]).
+    /// sets its coefficients from its own γ̃_glo and μ_T, [`Model::for_scene`]).
     ///
     /// # Errors
     /// [`Error::Invalid`] for [`Field::Model`] when `n` is not 1–5.
     pub fn named(n: u8) -> Result<Model> {
         if n == 5 {
-            return Ok(super::model_five::GAUGE.model(0.0));
+            return Ok(super::model_five::GAUGE.model(0.0, 0.0));
         }
         let m = match n {
             1 => (ModelKind::One, 0.0, 0.0, 0.5, 1.0, false),

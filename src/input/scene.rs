@@ -137,11 +137,13 @@ impl Scene {
         Ok(s)
     }
 
-    /// Sets the coefficients of a model that follows the scene (model 5: from γ̃_glo and the
-    /// bandwidth q_s/q_r, [`crate::input::model_five`]) after an input it depends on changed.
+    /// Sets the coefficients of a model that follows the scene (model 5: from γ̃_glo, the Tabor
+    /// parameter and the bandwidth q_s/q_r, [`crate::input::model_five`]) after an input it
+    /// depends on changed.
     pub(crate) fn resolve_model(&mut self) {
         let bandwidth = self.spectrum.q_s() / self.spectrum.q_r();
-        self.model = self.model.for_scene_at(self.gamma_glo(), bandwidth);
+        let tabor = if self.gamma > 0.0 { self.tabor() } else { 0.0 };
+        self.model = self.model.for_scene_at(self.gamma_glo(), tabor, bandwidth);
     }
 
     /// Hashes every input but the load (the key of a load curve).

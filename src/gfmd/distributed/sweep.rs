@@ -146,5 +146,6 @@ pub fn run_sweep_slab(
         theory_error,
         iterations,
         elapsed_s: t0.elapsed().as_secs_f64(),
+        surface: None,
     })
 }
