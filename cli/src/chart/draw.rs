@@ -2,7 +2,8 @@
 //! backend and the (linear or logarithmic) axis types.
 
 use super::font::FAMILY;
-use super::{axis_range, dashes, drawable, on_white, tick_label, ChartSpec, SeriesStyle, Shape};
+use super::{axis_range, dashes, drawable, on_white, ChartSpec, SeriesStyle, Shape};
+use crate::numfmt::tick as tick_label;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;

@@ -258,11 +258,11 @@ pub fn reference_name(app: &App, r: &asperity::input::preset::ReferencePoint, wi
     let mut cond = Vec::new();
     let gamma = r.gamma.unwrap_or(app.params.preset.adhesion.surface_energy_j_m2);
     if gamma != app.params.scene.surface_energy_j_m2() {
-        cond.push(format!("γ_s={}", plot::format_number(gamma)));
+        cond.push(format!("γ_s={}", crate::numfmt::short(gamma)));
     }
     let t = r.thickness_qr.unwrap_or(f64::INFINITY);
     if with_thickness && t.to_bits() != app.params.scene.thickness_qr().to_bits() {
-        cond.push(format!("t·q_r={}", plot::format_number(t)));
+        cond.push(format!("t·q_r={}", crate::numfmt::short(t)));
     }
     if let Some(n) = r.model {
         cond.push(format!("model {n}"));

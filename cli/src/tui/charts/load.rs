@@ -126,7 +126,7 @@ fn push_window(m: &mut ChartModel, points: Vec<(f64, f64)>, [jump_in, pull_off]:
             m.vlines.push(VLine {
                 x,
                 role,
-                name: format!("{what} {unit}{}", crate::tui::model::words::sig(x, 2)),
+                name: format!("{what} {unit}{}", crate::numfmt::sig(x, 2)),
             });
         }
     }
@@ -307,7 +307,7 @@ fn gap_failure(app: &App, sw: &SweepData) -> Option<String> {
 pub fn thickness(app: &App) -> ChartModel {
     let title = format!(
         "a_r(t·q_r) at p* = {}",
-        crate::tui::model::words::sig(app.params.scene.pressure(), 3)
+        crate::numfmt::sig(app.params.scene.pressure(), 3)
     );
     let mut m = base(ChartKind::Thickness, title, "t·q_r", "a_r", Scale::Log10, Scale::Linear);
     let Some(td) = app.results.thickness.as_ref().and_then(|r| r.as_ref().ok()) else {

@@ -82,10 +82,7 @@ pub fn build_own(app: &App, kind: ChartKind) -> ChartModel {
 }
 
 fn pr_linear(app: &App) -> ChartModel {
-    let mut title = format!(
-        "Pr(σ*) at p* = {}",
-        crate::tui::model::words::sig(app.params.scene.pressure(), 3)
-    );
+    let mut title = format!("Pr(σ*) at p* = {}", crate::numfmt::sig(app.params.scene.pressure(), 3));
     if crate::tui::charts::chart_model::path_row(app).is_some() {
         // the engine computes the loading branch's distribution only
         title.push_str(", loading branch");
@@ -180,7 +177,7 @@ fn positive(pr: &[(f64, f64)]) -> Vec<(f64, f64)> {
 fn pr_loglog(app: &App) -> ChartModel {
     let title = format!(
         "Pr(σ*) log–log at p* = {}",
-        crate::tui::model::words::sig(app.params.scene.pressure(), 3)
+        crate::numfmt::sig(app.params.scene.pressure(), 3)
     );
     let mut m = base(ChartKind::PrLog, title, "σ* = σ/E*ḡ", "Pr", Scale::Log10, Scale::Log10);
     m.clip_y = true;

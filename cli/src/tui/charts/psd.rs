@@ -16,11 +16,11 @@
 //!
 //! The chart depends on the scene's spectrum only (no knob changes it), so it needs no job.
 
+use crate::numfmt::sig;
 use crate::tui::charts::chart_model::{base, ChartModel, Draw, Role, Series, VLine};
 use crate::tui::charts::plot::{self, Scale};
 use crate::tui::model::app::App;
 use crate::tui::model::kinds::ChartKind;
-use crate::tui::model::words::sig;
 use asperity::surface::fit::fit_self_affine;
 use asperity::surface::spectrum::{Spectrum, HURST_RANGE};
 use asperity::surface::tabulated::Tabulated;

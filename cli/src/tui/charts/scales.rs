@@ -6,11 +6,11 @@
 //! Space plays them from q_L to q_s. The frames are the engine's own march
 //! ([`crate::tui::model::data::ScalesData`]); nothing here computes.
 
+use crate::numfmt::sig;
 use crate::tui::charts::chart_model::{base, set_empty, ChartModel, Draw, Role, Series, VLine};
 use crate::tui::charts::plot::{self, Scale};
 use crate::tui::model::app::App;
 use crate::tui::model::kinds::ChartKind;
-use crate::tui::model::words::sig;
 
 /// Why a scale chart is empty.
 fn empty(app: &App, m: &mut ChartModel) {

@@ -449,14 +449,14 @@ pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
     let t = if sc.thickness_qr().is_infinite() {
         "∞".to_string()
     } else {
-        crate::tui::charts::plot::format_number(sc.thickness_qr())
+        crate::numfmt::short(sc.thickness_qr())
     };
     let system = crate::tui::model::words::surface_name(sc).unwrap_or_else(|| app.params.preset.name.clone());
     let note = format!(
         "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
         system,
         sc.model().label(),
-        crate::tui::charts::plot::format_number(sc.surface_energy_j_m2())
+        crate::numfmt::short(sc.surface_energy_j_m2())
     );
     let mut paths = Vec::new();
     for (k, m) in &models {

@@ -5,8 +5,8 @@
 //! keeps the pins, the chart builder draws them ([`crate::tui::charts::build`]), `e`/`s` export
 //! them.
 
+use crate::numfmt::short as format_number;
 use crate::tui::model::kinds::ChartKind;
-use crate::tui::model::words::format_number;
 use asperity::input::scene::Scene;
 
 /// Most pins kept (each has its own colour; the oldest goes first).

@@ -11,11 +11,11 @@ pub mod panel;
 
 use crate::chart::dashes;
 use crate::looks::Glyph;
+pub use crate::numfmt::sig;
 use crate::tui::charts::plot;
 use crate::tui::charts::{self, ChartModel, Draw};
 use crate::tui::model::app::{App, Overlay};
 use crate::tui::model::keys;
-pub use crate::tui::model::words::sig;
 pub use crate::tui::view::layout::MIN_SIZE;
 pub use crate::tui::view::palette::{Palette, SPINNER, SPINNER_DELAY};
 use crate::tui::view::panel::draw_panel;
