@@ -1,4 +1,4 @@
-//! Numbers as the front ends write them: one routine ([`format`]) behind every tick label
+//! Numbers as the front ends write them: one routine ([`format()`]) behind every tick label
 //! (terminal, text chart, SVG/PNG), legend name, caption and panel value, one for durations
 //! ([`duration`]), and one for round tick values ([`nice_step`], [`nice_ticks`]).
 //!

@@ -2,8 +2,8 @@
 //! backend and the (linear or logarithmic) axis types.
 
 use super::font::FAMILY;
-use super::{axis_range, dashes, drawable, on_white, ChartSpec, SeriesStyle, Shape};
-use crate::numfmt::tick as tick_label;
+use super::{axis_range, dashes, drawable, on_white, Flat, SeriesStyle, Shape};
+use crate::numfmt::tick;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -13,7 +13,7 @@ fn io_err<E: std::fmt::Display>(e: E) -> std::io::Error {
 }
 
 /// Draws `spec` on `backend` (font sizes and line widths times `scale`) and writes the file.
-pub(crate) fn draw<DB: DrawingBackend>(backend: DB, spec: &ChartSpec, scale: f64) -> std::io::Result<()> {
+pub(crate) fn draw<DB: DrawingBackend>(backend: DB, spec: &Flat, scale: f64) -> std::io::Result<()> {
     let root = backend.into_drawing_area();
     root.fill(&WHITE).map_err(io_err)?;
     let (x0, x1) = axis_range(spec, true);
@@ -42,7 +42,7 @@ fn runs(points: &[(f64, f64)], x_log: bool, y_log: bool) -> Vec<Vec<(f64, f64)>>
 }
 
 /// The corner of the plot with the fewest points near it, for the legend.
-fn legend_corner(spec: &ChartSpec) -> SeriesLabelPosition {
+fn legend_corner(spec: &Flat) -> SeriesLabelPosition {
     let (x0, x1) = axis_range(spec, true);
     let (y0, y1) = axis_range(spec, false);
     let norm = |v: f64, lo: f64, hi: f64, log: bool| {
@@ -93,7 +93,7 @@ pub(crate) fn snap_zero(v: f64, span: f64, log: bool) -> f64 {
     }
 }
 
-fn plot<DB, X, Y>(root: &DrawingArea<DB, Shift>, spec: &ChartSpec, scale: f64, x: X, y: Y) -> std::io::Result<()>
+fn plot<DB, X, Y>(root: &DrawingArea<DB, Shift>, spec: &Flat, scale: f64, x: X, y: Y) -> std::io::Result<()>
 where
     DB: DrawingBackend,
     X: AsRangedCoord<Value = f64>,
@@ -113,8 +113,8 @@ where
     // a tick at zero on a linear axis comes out of the tick arithmetic as ±1e-18 or so
     let (x0, x1) = axis_range(spec, true);
     let (y0, y1) = axis_range(spec, false);
-    let fmt_x = |v: &f64| tick_label(snap_zero(*v, x1 - x0, spec.x_log));
-    let fmt_y = |v: &f64| tick_label(snap_zero(*v, y1 - y0, spec.y_log));
+    let fmt_x = |v: &f64| tick(snap_zero(*v, x1 - x0, spec.x_log));
+    let fmt_y = |v: &f64| tick(snap_zero(*v, y1 - y0, spec.y_log));
     chart
         .configure_mesh()
         .x_desc(spec.x_label.as_str())

@@ -88,8 +88,9 @@ fn every_character_of_the_labels_has_a_glyph() {
     .unwrap();
     crate::tui::drive::compute_now(&mut app, &mut Default::default());
     for k in crate::tui::model::kinds::ChartKind::ALL {
-        let spec =
-            crate::tui::effects::export::chart_spec(&crate::tui::charts::build(&app, k), "γ_s = 0.05 J/m², t·q_r = ∞");
+        let chart =
+            crate::tui::effects::export::file_chart(&crate::tui::charts::build(&app, k), "γ_s = 0.05 J/m², t·q_r = ∞");
+        let spec = crate::chart::flatten(&chart);
         let mut text = vec![spec.title, spec.x_label, spec.y_label];
         text.extend(spec.series.into_iter().map(|s| s.name));
         for t in text {

@@ -2,14 +2,15 @@
 //! the axis titles and a legend. No colours or escape codes, so the output can be piped,
 //! pasted into a README or compared in a test.
 
-use super::{axis_range, drawable, ChartSpec, SeriesStyle};
-use crate::numfmt::{nice_ticks, tick as tick_label};
+use super::{axis_range, drawable, flatten, Chart, Flat, SeriesStyle};
+use crate::numfmt::{nice_ticks, tick};
 
 /// Glyphs of the series, in order (then repeated).
 pub const GLYPHS: [char; 10] = ['*', 'o', '+', 'x', '#', '@', '%', '&', '=', '~'];
 
-/// Renders `spec` as text, `width` × `height` characters overall (at least 40 × 12).
-pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
+/// Renders `chart` as text, `width` × `height` characters overall (at least 40 × 12).
+pub fn render_text(chart: &Chart, width: usize, height: usize) -> String {
+    let spec = &flatten(chart);
     let (width, height) = (width.max(40), height.max(12));
     let (x0, x1) = axis_range(spec, true);
     let (y0, y1) = axis_range(spec, false);
@@ -20,7 +21,7 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
             (v - lo) / (hi - lo)
         }
     };
-    let label = |v: f64| tick_label(v);
+    let label = tick;
     let legend = legend_lines(spec, width);
     // rows: title, y title, plot, x axis line, x ticks, x title, legend
     let plot_h = height.saturating_sub(5 + legend.len()).max(4);
@@ -129,7 +130,7 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
 }
 
 /// The legend: one entry per series (glyph, name, line style), wrapped to `width`.
-fn legend_lines(spec: &ChartSpec, width: usize) -> Vec<String> {
+fn legend_lines(spec: &Flat, width: usize) -> Vec<String> {
     let mut legend: Vec<String> = vec![String::new()];
     for (i, s) in spec.series.iter().enumerate() {
         let entry = format!("{} {} ({})", GLYPHS[i % GLYPHS.len()], s.name, s.style.name());
@@ -148,7 +149,7 @@ fn legend_lines(spec: &ChartSpec, width: usize) -> Vec<String> {
 
 /// The x tick labels at round values, left out where they would overlap, under a plot of
 /// `plot_w` columns after a `margin`.
-fn x_tick_row(spec: &ChartSpec, (x0, x1): (f64, f64), margin: usize, plot_w: usize) -> String {
+fn x_tick_row(spec: &Flat, (x0, x1): (f64, f64), margin: usize, plot_w: usize) -> String {
     let tx = |v: f64| {
         if spec.x_log {
             (v / x0).ln() / (x1 / x0).ln()
@@ -160,7 +161,7 @@ fn x_tick_row(spec: &ChartSpec, (x0, x1): (f64, f64), margin: usize, plot_w: usi
     let mut free_from = 0usize;
     for v in nice_ticks(x0, x1, spec.x_log, (plot_w / 12).max(2)) {
         let t = tx(v);
-        let text = tick_label(v);
+        let text = tick(v);
         let pos = margin + 1 + (t * (plot_w - 1) as f64).round() as usize;
         let n = text.chars().count();
         let start = pos.saturating_sub(n / 2);
@@ -179,33 +180,22 @@ fn x_tick_row(spec: &ChartSpec, (x0, x1): (f64, f64), margin: usize, plot_w: usi
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chart::{Rgb, Series, Shape};
+    use crate::chart::{Rgb, Scale, Series, Shape};
 
     #[test]
     fn a_rising_line_runs_from_lower_left_to_upper_right() {
-        let spec = ChartSpec {
-            title: "t".into(),
-            x_label: "x (1)".into(),
-            y_label: "y (1)".into(),
-            x_log: false,
-            y_log: false,
-            series: vec![
-                Series {
-                    name: "up".into(),
-                    points: vec![(0.0, 0.0), (1.0, 1.0)],
-                    style: SeriesStyle::Line,
-                    colour: Rgb(0, 0, 0),
-                    shape: Shape::Circle,
-                },
-                Series {
-                    name: "dots".into(),
-                    points: vec![(0.5, f64::NAN), (1.0, 0.0)],
-                    style: SeriesStyle::Points,
-                    colour: Rgb(0, 0, 0),
-                    shape: Shape::Circle,
-                },
-            ],
-        };
+        let mut spec = Chart::new("t", "x (1)", "y (1)", Scale::Linear, Scale::Linear);
+        let black = (Rgb(0, 0, 0), Shape::Circle);
+        spec.series = vec![
+            Series::painted("up", vec![(0.0, 0.0), (1.0, 1.0)], SeriesStyle::Line, black.0, black.1),
+            Series::painted(
+                "dots",
+                vec![(0.5, f64::NAN), (1.0, 0.0)],
+                SeriesStyle::Points,
+                black.0,
+                black.1,
+            ),
+        ];
         let text = render_text(&spec, 60, 20);
         let rows: Vec<&str> = text.lines().filter(|l| l.contains('|')).collect();
         let col = |l: &str, c: char| l.split_once('|').and_then(|(_, r)| r.find(c));

@@ -6,6 +6,7 @@
 //!
 //! - [`Scale`]: linear or log10 axes; data are transformed before drawing, labels are written
 //!   in data units ([`ticks`], with [`crate::numfmt`]).
+//! - [`runs`]: a series of a [`Chart`] as the runs to draw.
 //! - [`segments`]: drops points that are not finite (or not positive on a log axis) and splits
 //!   the curve at every dropped point, so a gap is never bridged.
 //! - [`decimate`]: keeps at most a few points per braille column.
@@ -14,32 +15,27 @@
 
 use crate::numfmt::{nice_step, tick};
 
-/// How an axis maps data to the drawing plane.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Scale {
-    /// x ↦ x.
-    Linear,
-    /// x ↦ log10 x (x > 0 only).
-    Log10,
-}
+pub use crate::chart::Scale;
+use crate::chart::{Chart, Series};
 
-impl Scale {
-    /// Data value to plane coordinate; `None` where the scale is undefined or the value is
-    /// not finite.
-    pub fn forward(self, x: f64) -> Option<f64> {
-        match self {
-            Scale::Linear => x.is_finite().then_some(x),
-            Scale::Log10 => (x.is_finite() && x > 0.0).then(|| x.log10()),
-        }
-    }
-
-    /// Plane coordinate back to a data value.
-    pub fn inverse(self, v: f64) -> f64 {
-        match self {
-            Scale::Linear => v,
-            Scale::Log10 => 10f64.powf(v),
-        }
-    }
+/// Plane points of series `s` of chart `m` drawn with y bounds `yb`, split at gaps, y outside
+/// `yb` dropped when the chart clips, decimated to about `max_points`.
+pub fn runs(m: &Chart, s: &Series, yb: [f64; 2], max_points: usize) -> Vec<Vec<(f64, f64)>> {
+    let pts: Vec<(f64, f64)> = if m.clip_y {
+        s.points
+            .iter()
+            .map(|&(x, y)| match m.ys.forward(y) {
+                Some(v) if v >= yb[0] && v <= yb[1] => (x, y),
+                _ => (x, f64::NAN),
+            })
+            .collect()
+    } else {
+        s.points.clone()
+    };
+    segments(&pts, m.xs, m.ys)
+        .into_iter()
+        .map(|r| decimate(&r, max_points))
+        .collect()
 }
 
 /// Transforms `points` to the plane and splits them into drawable runs: every point that
