@@ -130,7 +130,7 @@ pub fn nice_step(x: f64) -> f64 {
 }
 
 /// About `n` round tick values in [lo, hi]: decades (and 2, 5 times them when there are
-/// fewer than three) on a log axis, 1/2/5 × 10^k steps on a linear one.
+/// fewer than three) on a log axis, multiples of a [`nice_step`] on a linear one.
 pub fn nice_ticks(lo: f64, hi: f64, log: bool, n: usize) -> Vec<f64> {
     if !(lo.is_finite() && hi.is_finite() && hi > lo) || (log && lo <= 0.0) {
         return vec![lo];
@@ -153,23 +153,15 @@ pub fn nice_ticks(lo: f64, hi: f64, log: bool, n: usize) -> Vec<f64> {
         }
         return out;
     }
-    let raw = (hi - lo) / n.max(1) as f64;
-    let e = raw.log10().floor() as i32;
-    let m = [1.0, 2.0, 5.0, 10.0]
-        .into_iter()
-        .find(|m| m * 10f64.powi(e) >= raw)
-        .unwrap_or(10.0);
-    // v = k·m·10^e, divided rather than multiplied by a negative power so that 0.6 is 0.6
+    let step = nice_step((hi - lo) / n.max(1) as f64);
+    // v = k·step, rounded to the step's digits so that 0.6 is 0.6 (not 0.6000000000000001)
+    let digits = (-step.log10().floor()).max(0.0) as i32 + 2;
     let value = |k: i64| {
-        if e < 0 {
-            k as f64 * m / 10f64.powi(-e)
-        } else {
-            k as f64 * m * 10f64.powi(e)
-        }
+        let f = 10f64.powi(digits);
+        ((k as f64 * step) * f).round() / f
     };
-    let step = value(1);
-    let first = (lo / step).ceil() as i64;
-    let last = (hi / step).floor() as i64;
+    let first = (lo / step - 1e-9).ceil() as i64;
+    let last = (hi / step + 1e-9).floor() as i64;
     (first..=last).map(value).collect()
 }
 
@@ -273,6 +265,9 @@ mod tests {
         assert_eq!(nice_ticks(8e-4, 1.2, true, 8), vec![1e-3, 1e-2, 1e-1, 1.0]);
         assert_eq!(nice_ticks(0.3, 4.0, true, 8), vec![0.5, 1.0, 2.0]);
         assert_eq!(nice_ticks(1.0, 1.0, false, 4), vec![1.0]);
+        assert_eq!(nice_ticks(0.0, 1.0, false, 4), vec![0.0, 0.25, 0.5, 0.75, 1.0]);
+        assert_eq!(nice_ticks(-3e-5, 1.1e-4, false, 3), vec![0.0, 5e-5, 1e-4]);
+        assert_eq!(nice_ticks(1.0, 1.04, false, 2), vec![1.0, 1.02, 1.04]);
         assert_eq!(nice_ticks(-1.0, 1.0, true, 4), vec![-1.0]);
         for t in nice_ticks(-0.05, 1.05, false, 6) {
             assert_eq!(tick(t).len(), if t == 0.0 || t == 1.0 { 1 } else { 3 }, "{t}");

@@ -1,8 +1,8 @@
 //! The load and thickness charts: a_r(p*), a_r/p*, σ̄_c*(p*), ū/h_rms(p*) with the hysteresis
 //! window's branches and edges, and a_r(t·q_r).
 
-use crate::tui::charts::chart_model::*;
 use crate::tui::charts::plot::{self, Scale};
+use crate::tui::charts::shared::*;
 use crate::tui::model::app::App;
 use crate::tui::model::data::{self, SweepData, ThicknessData};
 use crate::tui::model::kinds::{slot_name, ChartKind};

@@ -24,15 +24,15 @@
 //! points are drawn as points named by their source (and the conditions, where they differ
 //! from the scene's).
 
-pub mod chart_model;
 pub mod load;
 pub mod plot;
 pub mod psd;
 pub mod scales;
+pub mod shared;
 
-use crate::tui::charts::chart_model::{base, current_point, data_bounds, others, set_empty, theory_name, theory_role};
-pub use crate::tui::charts::chart_model::{Chart, Draw, Role, Series, VLine};
 use crate::tui::charts::load::{area, loads, thickness};
+use crate::tui::charts::shared::{base, current_point, data_bounds, others, set_empty, theory_name, theory_role};
+pub use crate::tui::charts::shared::{Chart, Draw, Role, Series, VLine};
 use crate::tui::model::app::App;
 use crate::tui::model::data::{self, PointData};
 pub use crate::tui::model::kinds::{overlay_models, slot, slot_name, ChartKind, Needs};
@@ -83,7 +83,7 @@ pub fn build_own(app: &App, kind: ChartKind) -> Chart {
 
 fn pr_linear(app: &App) -> Chart {
     let mut title = format!("Pr(σ*) at p* = {}", crate::numfmt::sig(app.params.scene.pressure(), 3));
-    if crate::tui::charts::chart_model::path_row(app).is_some() {
+    if crate::tui::charts::shared::path_row(app).is_some() {
         // the engine computes the loading branch's distribution only
         title.push_str(", loading branch");
     }

@@ -17,8 +17,8 @@
 //! The chart depends on the scene's spectrum only (no knob changes it), so it needs no job.
 
 use crate::numfmt::sig;
-use crate::tui::charts::chart_model::{base, Chart, Draw, Role, Series, VLine};
 use crate::tui::charts::plot::{self, Scale};
+use crate::tui::charts::shared::{base, Chart, Draw, Role, Series, VLine};
 use crate::tui::model::app::App;
 use asperity::surface::fit::fit_self_affine;
 use asperity::surface::spectrum::{Spectrum, HURST_RANGE};

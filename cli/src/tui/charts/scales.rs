@@ -7,8 +7,8 @@
 //! ([`crate::tui::model::data::ScalesData`]); nothing here computes.
 
 use crate::numfmt::sig;
-use crate::tui::charts::chart_model::{base, set_empty, Chart, Draw, Role, Series, VLine};
 use crate::tui::charts::plot::{self, Scale};
+use crate::tui::charts::shared::{base, set_empty, Chart, Draw, Role, Series, VLine};
 use crate::tui::model::app::App;
 
 /// Why a scale chart is empty.

@@ -6,7 +6,7 @@
 //! at the top of the chart: no entry is ever left out.
 
 use crate::looks::Look;
-use crate::tui::charts::chart_model::{Chart, Draw, Role};
+use crate::tui::charts::shared::{Chart, Draw, Role};
 use crate::tui::view::palette::Palette;
 use ratatui::text::{Line, Span};
 

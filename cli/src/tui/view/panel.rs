@@ -75,8 +75,8 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         }
     };
     // the branch the load history has reached (the engine's point is the loading branch's)
-    let on_unloading = crate::tui::charts::chart_model::path_row(app).is_some();
-    let a_r = crate::tui::charts::chart_model::path_a_r(app);
+    let on_unloading = crate::tui::charts::shared::path_row(app).is_some();
+    let a_r = crate::tui::charts::shared::path_a_r(app);
     row_styled("a_r", a_r.map_or_else(dash, |a| sig(a, 4)), stale_point);
     // inside a hysteresis window: the branch the load history reached, next to its a_r
     // (the branch alone where the reason does not fit: the status line said it)
@@ -97,7 +97,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         _ => dash(),
     };
     row_styled("σ̄_c*", stress, stale_point);
-    let gap = crate::tui::charts::chart_model::path_gap(app).map_or_else(dash, |g| sig(g, 4));
+    let gap = crate::tui::charts::shared::path_gap(app).map_or_else(dash, |g| sig(g, 4));
     row_styled("ū/h_rms", gap, stale_gap && app.results.gap.is_some());
     // with adhesion: which branch the gap is of, and its bracket (docs/physics.md §5.1)
     if app.params.scene.is_adhesive() {
