@@ -155,3 +155,35 @@ fn light_colours_are_drawn_darker_on_white() {
     assert!(fills.contains(&hex(yellow)), "the markers lost their colour: {fills:?}");
     assert!(strokes.contains(&hex(blue)), "a readable colour changed: {strokes:?}");
 }
+
+/// A file's ticks are the one nice-ticks routine's round values, written by the one number
+/// formatter (as on screen and in the text chart): 0, 0.2, …, 1 on a linear axis over
+/// [0, 1], the decades 0.001 … 1 on a log axis over [10⁻³, 1].
+#[test]
+fn file_ticks_are_the_shared_round_values() {
+    let mut c = Chart::new("t", "x", "y", Scale::Linear, Scale::Log10);
+    c.series.push(Series::painted(
+        "s",
+        vec![(0.0, 1e-3), (1.0, 1.0)],
+        SeriesStyle::Line,
+        Rgb(0, 0, 0),
+        Shape::Circle,
+    ));
+    let path = tmp("ticks.svg");
+    write_svg(&c, &path).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let texts: Vec<String> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text().map(|t| t.trim().to_string()))
+        .collect();
+    let values = asperity_cli::numfmt::nice_ticks(-0.05, 1.05, false, 8);
+    assert_eq!(values, [0.0, 0.2, 0.4, 0.6, 0.8, 1.0]);
+    for v in values.into_iter().chain([1e-3, 1e-2, 0.1]) {
+        let l = asperity_cli::numfmt::tick(v);
+        assert!(texts.contains(&l), "{l} not among {texts:?}");
+    }
+    // nothing else: no 0.1 step on x, no 1e-3 spelling on y
+    assert!(!texts.iter().any(|t| t == "0.5" || t == "1e-3"), "{texts:?}");
+}

@@ -15,8 +15,9 @@
 //! Points with a non-finite coordinate (a load that did not converge), and on a log axis
 //! points ≤ 0, are left out; a line is broken where they were. Every series' look comes from
 //! [`crate::looks`] (its role's, or one its producer fixed), so a model has the same colour
-//! on screen and in every file; every series gets a legend entry with its name. Tick labels
-//! are written by [`crate::numfmt`] in every renderer. On the white page of a file a colour
+//! on screen and in every file; every series gets a legend entry with its name. Ticks are
+//! round values of [`crate::numfmt`] (multiples of its one nice step; decades on log axes),
+//! labelled by its one number writer, in every renderer. On the white page of a file a colour
 //! too light to read is drawn darker ([`contrast`]).
 
 pub mod contrast;
