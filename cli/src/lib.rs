@@ -7,5 +7,6 @@ pub mod chart;
 pub mod cli;
 pub mod figure;
 pub mod looks;
+pub mod numfmt;
 pub mod report;
 pub mod tui;

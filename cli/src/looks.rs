@@ -25,7 +25,7 @@
 //! The theory and the models never share a chart (with `M` the current model is drawn as a
 //! model). `cli/tests/looks.rs` checks every chart kind with every overlay.
 
-use crate::chart::{Rgb, Shape};
+use crate::chart::style::{Rgb, Shape};
 use asperity::input::model::{Model, ModelKind};
 
 /// What a series is.

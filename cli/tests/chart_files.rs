@@ -1,52 +1,54 @@
 //! The chart renderer's files: SVG parses as XML and names every series; PNG is a PNG of the
 //! promised size; empty and gappy series do not break either.
 
-use asperity_cli::chart::{write_png, write_svg, ChartSpec, Rgb, Series, SeriesStyle, Shape, PNG_SIZE};
+use asperity_cli::chart::{write_png, write_svg, Chart, Rgb, Scale, Series, SeriesStyle, Shape, PNG_SIZE};
 use asperity_cli::looks::{look, model_colour, Role};
 
-fn spec(x_log: bool, y_log: bool) -> ChartSpec {
+fn spec(x_log: bool, y_log: bool) -> Chart {
     let curve: Vec<(f64, f64)> = (0..50)
         .map(|i| {
             let p = 10f64.powf(-3.0 + 3.0 * i as f64 / 49.0);
             (p, 2.0 - p)
         })
         .collect();
-    ChartSpec {
-        title: "a_r/p* against p*".into(),
-        x_label: "p* = p/(E*ḡ)".into(),
-        y_label: "σ̄_c* ū/h_rms γ̃".into(),
-        x_log,
-        y_log,
+    Chart {
         series: vec![
-            Series {
-                name: "model 3".into(),
-                points: curve.clone(),
-                style: SeriesStyle::Line,
-                colour: model_colour(2),
-                shape: Shape::Circle,
-            },
-            Series {
-                name: "eq. (18)".into(),
-                points: curve.iter().map(|&(x, y)| (x, 0.9 * y)).collect(),
-                style: SeriesStyle::Dashed,
-                colour: look(Role::Closed, 0, 0).ink.rgb(),
-                shape: Shape::Circle,
-            },
-            Series {
-                name: "GFMD (512²)".into(),
-                points: vec![(1e-2, 1.9), (f64::NAN, 1.0), (1e-1, -1.0), (0.5, 1.5)],
-                style: SeriesStyle::Points,
-                colour: look(Role::Gfmd, 0, 0).ink.rgb(),
-                shape: Shape::Diamond,
-            },
-            Series {
-                name: "failed series".into(),
-                points: vec![],
-                style: SeriesStyle::Dotted,
-                colour: Rgb(0, 0, 0),
-                shape: Shape::Circle,
-            },
+            Series::painted(
+                "model 3",
+                curve.clone(),
+                SeriesStyle::Line,
+                model_colour(2),
+                Shape::Circle,
+            ),
+            Series::painted(
+                "eq. (18)",
+                curve.iter().map(|&(x, y)| (x, 0.9 * y)).collect(),
+                SeriesStyle::Dashed,
+                look(Role::Closed, 0, 0).ink.rgb(),
+                Shape::Circle,
+            ),
+            Series::painted(
+                "GFMD (512²)",
+                vec![(1e-2, 1.9), (f64::NAN, 1.0), (1e-1, -1.0), (0.5, 1.5)],
+                SeriesStyle::Points,
+                look(Role::Gfmd, 0, 0).ink.rgb(),
+                Shape::Diamond,
+            ),
+            Series::painted(
+                "failed series",
+                vec![],
+                SeriesStyle::Dotted,
+                Rgb(0, 0, 0),
+                Shape::Circle,
+            ),
         ],
+        ..Chart::new(
+            "a_r/p* against p*",
+            "p* = p/(E*ḡ)",
+            "σ̄_c* ū/h_rms γ̃",
+            Scale::of(x_log),
+            Scale::of(y_log),
+        )
     }
 }
 
@@ -119,24 +121,14 @@ fn light_colours_are_drawn_darker_on_white() {
     let blue = model_colour(2);
     assert_eq!(on_white(blue), blue);
     let pts = vec![(0.1, 0.2), (0.5, 0.6), (0.9, 0.4)];
-    let series = |name: &str, style, colour| Series {
-        name: name.into(),
-        points: pts.clone(),
-        style,
-        colour,
-        shape: Shape::Circle,
-    };
-    let spec = ChartSpec {
-        title: "t".into(),
-        x_label: "x".into(),
-        y_label: "y".into(),
-        x_log: false,
-        y_log: false,
+    let series = |name: &str, style, colour| Series::painted(name, pts.clone(), style, colour, Shape::Circle);
+    let spec = Chart {
         series: vec![
             series("a light line", SeriesStyle::Line, yellow),
             series("light points", SeriesStyle::Points, yellow),
             series("a dark line", SeriesStyle::Line, blue),
         ],
+        ..Chart::new("t", "x", "y", Scale::Linear, Scale::Linear)
     };
     let path = tmp("light.svg");
     write_svg(&spec, &path).unwrap();
@@ -162,4 +154,36 @@ fn light_colours_are_drawn_darker_on_white() {
     );
     assert!(fills.contains(&hex(yellow)), "the markers lost their colour: {fills:?}");
     assert!(strokes.contains(&hex(blue)), "a readable colour changed: {strokes:?}");
+}
+
+/// A file's ticks are the one nice-ticks routine's round values, written by the one number
+/// formatter (as on screen and in the text chart): 0, 0.2, …, 1 on a linear axis over
+/// [0, 1], the decades 0.001 … 1 on a log axis over [10⁻³, 1].
+#[test]
+fn file_ticks_are_the_shared_round_values() {
+    let mut c = Chart::new("t", "x", "y", Scale::Linear, Scale::Log10);
+    c.series.push(Series::painted(
+        "s",
+        vec![(0.0, 1e-3), (1.0, 1.0)],
+        SeriesStyle::Line,
+        Rgb(0, 0, 0),
+        Shape::Circle,
+    ));
+    let path = tmp("ticks.svg");
+    write_svg(&c, &path).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let texts: Vec<String> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text().map(|t| t.trim().to_string()))
+        .collect();
+    let values = asperity_cli::numfmt::nice_ticks(-0.05, 1.05, false, 8);
+    assert_eq!(values, [0.0, 0.2, 0.4, 0.6, 0.8, 1.0]);
+    for v in values.into_iter().chain([1e-3, 1e-2, 0.1]) {
+        let l = asperity_cli::numfmt::tick(v);
+        assert!(texts.contains(&l), "{l} not among {texts:?}");
+    }
+    // nothing else: no 0.1 step on x, no 1e-3 spelling on y
+    assert!(!texts.iter().any(|t| t == "0.5" || t == "1e-3"), "{texts:?}");
 }

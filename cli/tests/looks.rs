@@ -20,13 +20,13 @@ use asperity::input::model::ModelKind;
 use asperity::input::preset::{Preset, ReferencePoint};
 use asperity::surface::spectrum::Spectrum;
 use asperity::surface::tabulated::Tabulated;
-use asperity_cli::chart::{on_white, ChartSpec, SeriesStyle};
+use asperity_cli::chart::{flatten, on_white, Flat, SeriesStyle};
 use asperity_cli::looks::{model_colour, Ink, Role};
 use asperity_cli::tui::app::{App, Param};
 use asperity_cli::tui::charts::plot;
-use asperity_cli::tui::charts::{self, ChartKind, ChartModel};
+use asperity_cli::tui::charts::{self, Chart, ChartKind};
 use asperity_cli::tui::drive::{compute_now, Caches, Reply};
-use asperity_cli::tui::effects::export::chart_spec;
+use asperity_cli::tui::effects::export::file_chart;
 use asperity_cli::tui::model::data::SweepData;
 use asperity_cli::tui::model::pins::{Pin, MAX_PINS};
 use asperity_cli::tui::view;
@@ -192,7 +192,7 @@ fn clashes(entries: &[Entry]) -> Vec<String> {
 
 /// The clashes of a file chart: colour and line style, points also shape; and the same with
 /// the shade a colour is drawn in on the white page.
-fn file_clashes(spec: &ChartSpec) -> Vec<String> {
+fn file_clashes(spec: &Flat) -> Vec<String> {
     let (mut seen, mut inked) = (HashSet::new(), HashSet::new());
     let mut out = Vec::new();
     for s in &spec.series {
@@ -207,7 +207,7 @@ fn file_clashes(spec: &ChartSpec) -> Vec<String> {
     out
 }
 
-fn entries(m: &ChartModel) -> Vec<Entry> {
+fn entries(m: &Chart) -> Vec<Entry> {
     legend::entries(m, plot::ticks(m.yb, m.ys, true).0)
 }
 
@@ -250,7 +250,7 @@ fn every_chart_with_every_overlay_tells_its_curves_apart() {
                 for c in clashes(&e) {
                     failures.push(format!("{what}, {k:?}: {c}"));
                 }
-                let spec = chart_spec(&m, "test");
+                let spec = flatten(&file_chart(&m, "test"));
                 for c in file_clashes(&spec) {
                     failures.push(format!("{what}, {k:?} (file): {c}"));
                 }
@@ -353,7 +353,7 @@ fn a_model_has_one_colour_in_every_figure_and_its_curves_are_told_apart() {
         // few points: the looks, not the values, are under test
         spec.points = spec.points.min(if spec.from.is_none() { 41 } else { 3 });
         let data = compute(&spec, None).unwrap();
-        let chart = data.chart();
+        let chart = flatten(&data.chart());
         let clashes = file_clashes(&chart);
         assert!(clashes.is_empty(), "figure {id}: {clashes:?}");
         let mut colours = Vec::new();

@@ -10,7 +10,7 @@ use asperity::input::preset::Preset;
 use asperity::surface::spectrum::Spectrum;
 use asperity::surface::tabulated::{to_csv, Tabulated};
 use asperity_cli::tui::app::App;
-use asperity_cli::tui::charts::chart_model::Role;
+use asperity_cli::tui::charts::shared::Role;
 use asperity_cli::tui::charts::{build, ChartKind};
 use asperity_cli::tui::drive::{compute_now, Caches};
 use asperity_cli::tui::view;

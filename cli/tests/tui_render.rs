@@ -480,7 +480,7 @@ fn hysteresis_on_the_area_chart() {
         draw_only(&a, w, h);
     }
     // the export draws the same: the unloading curve and both markers as dashed series
-    let spec = asperity_cli::tui::effects::export::chart_spec(&m, "test");
+    let spec = asperity_cli::chart::flatten(&asperity_cli::tui::effects::export::file_chart(&m, "test"));
     for name in ["unloading", "jump-in 0.030", "pull-off 0.0050"] {
         let s = spec
             .series
@@ -728,8 +728,8 @@ fn the_gap_bracket_is_a_filled_band_in_the_files() {
         .iter()
         .find(|s| s.role == Role::Band)
         .expect("a bracket with adhesion");
-    assert_eq!(band.draw, SeriesStyle::Points);
-    let spec = asperity_cli::tui::effects::export::chart_spec(&m, "test");
+    assert_eq!(band.style, SeriesStyle::Points);
+    let spec = asperity_cli::chart::flatten(&asperity_cli::tui::effects::export::file_chart(&m, "test"));
     let file = spec.series.iter().find(|s| s.name == band.name).unwrap();
     assert_eq!(file.style, SeriesStyle::Band);
     // its outline: every column's lower end left to right, then its upper end back
@@ -750,7 +750,7 @@ fn the_gap_bracket_is_a_filled_band_in_the_files() {
     }
     // the SVG draws it as one polygon, not a marker per point
     let svg = std::env::temp_dir().join(format!("asperity-band-{}.svg", std::process::id()));
-    asperity_cli::chart::write_svg(&spec, &svg).unwrap();
+    asperity_cli::chart::write_svg(&asperity_cli::tui::effects::export::file_chart(&m, "test"), &svg).unwrap();
     let text = std::fs::read_to_string(&svg).unwrap();
     let _ = std::fs::remove_file(&svg);
     assert!(
@@ -779,4 +779,72 @@ fn the_too_small_screen_is_drawn_exactly_where_the_update_ignores_keys() {
     // where not, it still says how to quit
     let s = render(&a, 30, 3);
     assert!(s.contains("q quits") && !s.contains("other keys"), "{s}");
+}
+
+/// The `s` export hands the file renderer the chart the view drew: the same value (its title
+/// followed by the scene), each series in the file in the view's colour, style and marker, the
+/// text chart of that value names every series, and every tick label on screen is a round
+/// value written by the one number formatter.
+#[test]
+fn the_export_is_the_chart_the_view_drew() {
+    use asperity_cli::chart::{flatten, render_text, Chart, SeriesStyle};
+    use asperity_cli::numfmt;
+    use asperity_cli::tui::charts::{self, plot, Role};
+    use asperity_cli::tui::effects::export::file_chart;
+    let mut a = app("system-1");
+    let mut checked = 0;
+    for all_models in [false, true] {
+        a.ui.all_models = all_models;
+        compute_now(&mut a, &mut Caches::default());
+        for k in ChartKind::ALL {
+            let m = charts::build(&a, k);
+            if m.empty.is_some() {
+                continue;
+            }
+            checked += 1;
+            let file = file_chart(&m, "system-1, model 3");
+            assert_eq!(file.title, format!("{} — system-1, model 3", m.title), "{k:?}");
+            assert_eq!(
+                Chart {
+                    title: m.title.clone(),
+                    ..file.clone()
+                },
+                m,
+                "{k:?}"
+            );
+            // the file's series: the markers it draws, then the view's series in order
+            let flat = flatten(&file);
+            let markers = flat.series.len() - m.series.len();
+            for (i, s) in m.series.iter().enumerate() {
+                let (f, look) = (&flat.series[markers + i], m.series_look(i));
+                assert!(f.name.ends_with(&s.name), "{k:?}: {} / {}", f.name, s.name);
+                assert_eq!(f.colour, look.ink.rgb(), "{k:?}: {}", s.name);
+                if s.role == Role::Band {
+                    assert_eq!(f.style, SeriesStyle::Band, "{k:?}: {}", s.name);
+                } else {
+                    assert_eq!(f.style, s.style, "{k:?}: {}", s.name);
+                }
+                if s.style == SeriesStyle::Points {
+                    assert_eq!(f.shape, look.shape, "{k:?}: {}", s.name);
+                }
+            }
+            let text = render_text(&file, 400, 60);
+            for f in flat.series.iter().filter(|f| !f.name.is_empty()) {
+                assert!(
+                    text.contains(&format!("{} ({})", f.name, f.style.name())),
+                    "{k:?}: {}\n{text}",
+                    f.name
+                );
+            }
+            for three in [false, true] {
+                let (_, xl) = plot::ticks(m.xb, m.xs, three);
+                let (_, yl) = plot::ticks(m.yb, m.ys, three);
+                for l in xl.iter().chain(&yl) {
+                    let v: f64 = l.parse().unwrap_or_else(|_| panic!("{k:?}: {l}"));
+                    assert_eq!(numfmt::tick(v), *l, "{k:?}");
+                }
+            }
+        }
+    }
+    assert!(checked >= 12, "{checked}");
 }

@@ -180,7 +180,7 @@ fn every_look_a_caption_names_is_drawn_so() {
             let mut keyed = 0;
             for m in &models {
                 for (j, ser) in m.series.iter().enumerate() {
-                    if ser.role == role && !m.runs(ser, m.yb, usize::MAX).is_empty() {
+                    if ser.role == role && !asperity_cli::tui::charts::plot::runs(m, ser, m.yb, usize::MAX).is_empty() {
                         keyed += 1;
                         if m.series_look(j) == want {
                             drawn += 1;

@@ -2,8 +2,10 @@
 //! backend and the (linear or logarithmic) axis types.
 
 use super::font::FAMILY;
-use super::{axis_range, dashes, drawable, on_white, tick_label, ChartSpec, SeriesStyle, Shape};
+use super::{axis_range, dashes, drawable, on_white, Flat, SeriesStyle, Shape};
+use crate::numfmt::{nice_ticks, tick};
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -12,18 +14,99 @@ fn io_err<E: std::fmt::Display>(e: E) -> std::io::Error {
 }
 
 /// Draws `spec` on `backend` (font sizes and line widths times `scale`) and writes the file.
-pub(crate) fn draw<DB: DrawingBackend>(backend: DB, spec: &ChartSpec, scale: f64) -> std::io::Result<()> {
+pub(crate) fn draw<DB: DrawingBackend>(backend: DB, spec: &Flat, scale: f64) -> std::io::Result<()> {
     let root = backend.into_drawing_area();
     root.fill(&WHITE).map_err(io_err)?;
     let (x0, x1) = axis_range(spec, true);
     let (y0, y1) = axis_range(spec, false);
+    // the ticks of the one nice-ticks routine (labels and bold grid lines), finer ones for
+    // the light grid
+    let (bx, by) = (ticks(x0, x1, spec.x_log, 8), ticks(y0, y1, spec.y_log, 8));
+    let (lx, ly) = (ticks(x0, x1, spec.x_log, 40), ticks(y0, y1, spec.y_log, 40));
     match (spec.x_log, spec.y_log) {
-        (false, false) => plot(&root, spec, scale, x0..x1, y0..y1),
-        (true, false) => plot(&root, spec, scale, (x0..x1).log_scale(), y0..y1),
-        (false, true) => plot(&root, spec, scale, x0..x1, (y0..y1).log_scale()),
-        (true, true) => plot(&root, spec, scale, (x0..x1).log_scale(), (y0..y1).log_scale()),
+        (false, false) => plot(&root, spec, scale, (x0..x1).ticked(bx, lx), (y0..y1).ticked(by, ly)),
+        (true, false) => plot(
+            &root,
+            spec,
+            scale,
+            (x0..x1).log_scale().ticked(bx, lx),
+            (y0..y1).ticked(by, ly),
+        ),
+        (false, true) => plot(
+            &root,
+            spec,
+            scale,
+            (x0..x1).ticked(bx, lx),
+            (y0..y1).log_scale().ticked(by, ly),
+        ),
+        (true, true) => plot(
+            &root,
+            spec,
+            scale,
+            (x0..x1).log_scale().ticked(bx, lx),
+            (y0..y1).log_scale().ticked(by, ly),
+        ),
     }?;
     root.present().map_err(io_err)
+}
+
+/// An axis whose ticks are given: `bold` labelled (with a bold grid line), `light` the
+/// light grid (plotters' own `WithKeyPoints` loses the label formatting of an f64 axis).
+struct Ticked<R: Ranged<ValueType = f64>> {
+    inner: R,
+    bold: Vec<f64>,
+    light: Vec<f64>,
+}
+
+impl<R: Ranged<ValueType = f64>> Ranged for Ticked<R> {
+    type ValueType = f64;
+    type FormatOption = DefaultFormatting;
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.inner.range()
+    }
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.inner.map(value, limit)
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.light.clone()
+        } else {
+            self.bold.clone()
+        }
+    }
+
+    fn axis_pixel_range(&self, limit: (i32, i32)) -> std::ops::Range<i32> {
+        self.inner.axis_pixel_range(limit)
+    }
+}
+
+/// `.ticked(bold, light)` on anything that is an f64 axis.
+trait Tick: AsRangedCoord<Value = f64> + Sized {
+    fn ticked(self, bold: Vec<f64>, light: Vec<f64>) -> Ticked<Self::CoordDescType> {
+        Ticked {
+            inner: self.into(),
+            bold,
+            light,
+        }
+    }
+}
+
+impl<T: AsRangedCoord<Value = f64>> Tick for T {}
+
+/// About `n` tick values in [lo, hi] ([`nice_ticks`]); on a log axis with `n` beyond the
+/// decades, every 1–9 × 10^k in range (the light grid).
+fn ticks(lo: f64, hi: f64, log: bool, n: usize) -> Vec<f64> {
+    if !log || n <= 8 || !(lo > 0.0 && hi > lo) {
+        return nice_ticks(lo, hi, log, n);
+    }
+    let (a, b) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+    (a..=b)
+        .flat_map(|k| (1..10).map(move |m| f64::from(m) * 10f64.powi(k)))
+        .filter(|v| *v >= lo && *v <= hi)
+        .collect()
 }
 
 /// The runs of consecutive drawable points (a line is broken at a gap).
@@ -41,7 +124,7 @@ fn runs(points: &[(f64, f64)], x_log: bool, y_log: bool) -> Vec<Vec<(f64, f64)>>
 }
 
 /// The corner of the plot with the fewest points near it, for the legend.
-fn legend_corner(spec: &ChartSpec) -> SeriesLabelPosition {
+fn legend_corner(spec: &Flat) -> SeriesLabelPosition {
     let (x0, x1) = axis_range(spec, true);
     let (y0, y1) = axis_range(spec, false);
     let norm = |v: f64, lo: f64, hi: f64, log: bool| {
@@ -92,7 +175,7 @@ pub(crate) fn snap_zero(v: f64, span: f64, log: bool) -> f64 {
     }
 }
 
-fn plot<DB, X, Y>(root: &DrawingArea<DB, Shift>, spec: &ChartSpec, scale: f64, x: X, y: Y) -> std::io::Result<()>
+fn plot<DB, X, Y>(root: &DrawingArea<DB, Shift>, spec: &Flat, scale: f64, x: X, y: Y) -> std::io::Result<()>
 where
     DB: DrawingBackend,
     X: AsRangedCoord<Value = f64>,
@@ -112,8 +195,8 @@ where
     // a tick at zero on a linear axis comes out of the tick arithmetic as ±1e-18 or so
     let (x0, x1) = axis_range(spec, true);
     let (y0, y1) = axis_range(spec, false);
-    let fmt_x = |v: &f64| tick_label(snap_zero(*v, x1 - x0, spec.x_log));
-    let fmt_y = |v: &f64| tick_label(snap_zero(*v, y1 - y0, spec.y_log));
+    let fmt_x = |v: &f64| tick(snap_zero(*v, x1 - x0, spec.x_log));
+    let fmt_y = |v: &f64| tick(snap_zero(*v, y1 - y0, spec.y_log));
     chart
         .configure_mesh()
         .x_desc(spec.x_label.as_str())

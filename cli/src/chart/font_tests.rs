@@ -44,8 +44,10 @@ fn literal_chars(text: &str, out: &mut std::collections::BTreeMap<char, String>,
 
 /// The files whose strings end up in chart and figure files: titles, axis titles, legend
 /// names (the explorer's chart builders, the figure specs and presets, the model names).
-const LABEL_SOURCES: [&str; 18] = [
+const LABEL_SOURCES: [&str; 20] = [
     "src/chart/mod.rs",
+    "src/chart/flat.rs",
+    "src/numfmt.rs",
     "src/chart/draw.rs",
     "src/figure/mod.rs",
     "src/figure/compute.rs",
@@ -55,7 +57,7 @@ const LABEL_SOURCES: [&str; 18] = [
     "src/tui/charts/load.rs",
     "src/tui/charts/psd.rs",
     "src/tui/charts/scales.rs",
-    "src/tui/charts/chart_model.rs",
+    "src/tui/charts/shared.rs",
     "src/tui/effects/export.rs",
     "src/tui/model/kinds.rs",
     "src/tui/model/pins.rs",
@@ -88,8 +90,9 @@ fn every_character_of_the_labels_has_a_glyph() {
     .unwrap();
     crate::tui::drive::compute_now(&mut app, &mut Default::default());
     for k in crate::tui::model::kinds::ChartKind::ALL {
-        let spec =
-            crate::tui::effects::export::chart_spec(&crate::tui::charts::build(&app, k), "γ_s = 0.05 J/m², t·q_r = ∞");
+        let chart =
+            crate::tui::effects::export::file_chart(&crate::tui::charts::build(&app, k), "γ_s = 0.05 J/m², t·q_r = ∞");
+        let spec = crate::chart::flatten(&chart);
         let mut text = vec![spec.title, spec.x_label, spec.y_label];
         text.extend(spec.series.into_iter().map(|s| s.name));
         for t in text {

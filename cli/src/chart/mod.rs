@@ -1,6 +1,9 @@
-//! Charts for files and terminals: one [`ChartSpec`] (title, axis titles, linear or log axes,
-//! named series drawn as lines, dashed lines or points) rendered three ways:
+//! Charts for files and terminals: one model, [`Chart`] (title, axis titles, linear or log
+//! [`Scale`]s, named series drawn as lines, dashed lines, points or bands, vertical markers),
+//! built by the explorer's chart builders, `asperity figure`, `gauge` and `surface psd`, and
+//! drawn four ways:
 //!
+//! - the explorer's terminal view (`tui::view`, ratatui);
 //! - [`write_svg`]: an SVG file (plotters' SVG backend; text stays text, no font needed by
 //!   the reader);
 //! - [`write_png`]: a PNG file (plotters' bitmap backend; the text is rasterised with the
@@ -10,137 +13,50 @@
 //!   is not a terminal).
 //!
 //! Points with a non-finite coordinate (a load that did not converge), and on a log axis
-//! points ≤ 0, are left out; a line is broken where they were. Every series carries its
-//! colour, line style and point shape (set by the caller from [`crate::looks`], so a model
-//! has the same colour in every file); every series gets a legend entry with its name. On the
-//! white page of a file a colour too light to read is drawn darker ([`contrast`]).
+//! points ≤ 0, are left out; a line is broken where they were. Every series' look comes from
+//! [`crate::looks`] (its role's, or one its producer fixed), so a model has the same colour
+//! on screen and in every file; every series gets a legend entry with its name. Ticks are
+//! round values of [`crate::numfmt`] (multiples of its one nice step; decades on log axes),
+//! labelled by its one number writer, in every renderer. On the white page of a file a colour
+//! too light to read is drawn darker ([`contrast`]).
 
 pub mod contrast;
 mod draw;
+pub mod flat;
 mod font;
+pub mod model;
+pub mod scale;
+pub mod style;
 mod text;
 
 pub use contrast::on_white;
+pub use flat::{flatten, Flat, FlatSeries};
 pub use font::{has_glyph, png_text, COMPOSED};
+pub use model::{Chart, Series, VLine};
+pub use scale::Scale;
+pub use style::{Rgb, SeriesStyle, Shape};
 pub use text::render_text;
-
-/// How a series is drawn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum SeriesStyle {
-    /// A solid line through the points (a model curve).
-    Line,
-    /// Markers only (simulation points, reference values).
-    Points,
-    /// A dashed line (a closed form, an asymptote, a reference curve).
-    Dashed,
-    /// A dotted line (a pinned curve of an earlier scene).
-    Dotted,
-    /// A dash-dotted line (a further curve of a model already drawn).
-    DashDot,
-    /// A filled band (the bracket of the mean gap): the points are its outline, each run
-    /// between gaps one closed polygon ([`band_outline`]).
-    Band,
-}
-
-impl SeriesStyle {
-    /// The line styles, solid first.
-    pub const LINES: [SeriesStyle; 4] = [
-        SeriesStyle::Line,
-        SeriesStyle::Dashed,
-        SeriesStyle::Dotted,
-        SeriesStyle::DashDot,
-    ];
-
-    /// The on/off lengths of a broken line, starting with a stroke, in units of about a
-    /// line's width (a terminal cell, 2.5 px of a file); `None` for a solid line or points.
-    pub fn pattern(self) -> Option<&'static [f64]> {
-        match self {
-            SeriesStyle::Line | SeriesStyle::Points | SeriesStyle::Band => None,
-            SeriesStyle::Dashed => Some(&[3.0, 2.0]),
-            SeriesStyle::Dotted => Some(&[1.0, 2.0]),
-            SeriesStyle::DashDot => Some(&[3.0, 1.5, 1.0, 1.5]),
-        }
-    }
-
-    /// Its name in figure files and text charts.
-    pub fn name(self) -> &'static str {
-        match self {
-            SeriesStyle::Line => "line",
-            SeriesStyle::Points => "points",
-            SeriesStyle::Dashed => "dashed",
-            SeriesStyle::Dotted => "dotted",
-            SeriesStyle::DashDot => "dash-dot",
-            SeriesStyle::Band => "band",
-        }
-    }
-}
-
-/// A colour (sRGB).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Rgb(pub u8, pub u8, pub u8);
-
-/// The marker of a series of points.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Shape {
-    /// A filled disc.
-    Circle,
-    /// An open square.
-    Square,
-    /// A filled diamond.
-    Diamond,
-    /// A filled triangle, point up.
-    Triangle,
-    /// A filled triangle, point down.
-    TriangleDown,
-    /// A diagonal cross.
-    Cross,
-    /// An upright cross.
-    Plus,
-}
-
-impl Shape {
-    /// Every shape.
-    pub const ALL: [Shape; 7] = [
-        Shape::Circle,
-        Shape::Square,
-        Shape::Diamond,
-        Shape::Triangle,
-        Shape::TriangleDown,
-        Shape::Cross,
-        Shape::Plus,
-    ];
-}
-
-/// One named series.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Series {
-    /// Legend entry (also the SVG's text for this series).
-    pub name: String,
-    /// (x, y) in data units; non-finite points are gaps.
-    pub points: Vec<(f64, f64)>,
-    /// Line (solid, dashed, dotted, dash-dotted) or points.
-    pub style: SeriesStyle,
-    /// Colour (a model has one colour in every file: see [`crate::looks`]).
-    pub colour: Rgb,
-    /// Marker of a [`SeriesStyle::Points`] series.
-    pub shape: Shape,
-}
 
 /// Tells apart the series that share a colour, the colour kept (a model has one colour in
 /// every figure): a line with the colour and style of an earlier one takes the next free line
 /// style (solid, dashed, dotted, dash-dotted), points with the colour and shape of earlier
 /// ones the next free shape.
+/// Series without a fixed look ([`Series::look`]) are left as they are ([`Chart::tell_apart`]
+/// fixes every look first).
 pub fn tell_apart(series: &mut [Series]) {
     for i in 1..series.len() {
         let (before, rest) = series.split_at_mut(i);
         let s = &mut rest[0];
-        let colour = s.colour;
+        let Some(mut look) = s.look else { continue };
+        let colour = look.ink.rgb();
         let clash = |style: SeriesStyle, shape: Shape| {
-            before
-                .iter()
-                .any(|e| e.colour == colour && e.style == style && (style != SeriesStyle::Points || e.shape == shape))
+            before.iter().any(|e| {
+                e.look.is_some_and(|l| {
+                    l.ink.rgb() == colour && e.style == style && (style != SeriesStyle::Points || l.shape == shape)
+                })
+            })
         };
-        if !clash(s.style, s.shape) {
+        if !clash(s.style, look.shape) {
             continue;
         }
         let free = if s.style == SeriesStyle::Points {
@@ -151,11 +67,12 @@ pub fn tell_apart(series: &mut [Series]) {
         } else {
             SeriesStyle::LINES
                 .into_iter()
-                .find(|&style| !clash(style, s.shape))
-                .map(|style| (style, s.shape))
+                .find(|&style| !clash(style, look.shape))
+                .map(|style| (style, look.shape))
         };
         if let Some((style, shape)) = free {
-            (s.style, s.shape) = (style, shape);
+            look.shape = shape;
+            (s.style, s.look) = (style, Some(look));
         }
     }
 }
@@ -236,47 +153,31 @@ pub fn dashes(run: &[(f64, f64)], pattern: &[f64], scale: (f64, f64)) -> Vec<Vec
     out
 }
 
-/// What to draw.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ChartSpec {
-    /// Title above the plot.
-    pub title: String,
-    /// x-axis title, with units.
-    pub x_label: String,
-    /// y-axis title, with units.
-    pub y_label: String,
-    /// Logarithmic x axis.
-    pub x_log: bool,
-    /// Logarithmic y axis.
-    pub y_log: bool,
-    /// The series, drawn in order (the legend lists them in the same order).
-    pub series: Vec<Series>,
-}
-
 /// Size of the SVG drawing in pixels (the viewBox).
 pub const SVG_SIZE: (u32, u32) = (800, 560);
 /// Size of the PNG image in pixels (twice the SVG's, for slides).
 pub const PNG_SIZE: (u32, u32) = (1600, 1120);
 
-/// Writes `spec` as an SVG file.
-pub fn write_svg(spec: &ChartSpec, path: &std::path::Path) -> std::io::Result<()> {
+/// Writes `chart` as an SVG file.
+pub fn write_svg(chart: &Chart, path: &std::path::Path) -> std::io::Result<()> {
     font::register();
     let root = plotters::prelude::SVGBackend::new(path, SVG_SIZE);
-    draw::draw(root, spec, 1.0)
+    draw::draw(root, &flatten(chart), 1.0)
 }
 
-/// Writes `spec` as a PNG file (its text with the composite glyphs of [`png_text`]).
-pub fn write_png(spec: &ChartSpec, path: &std::path::Path) -> std::io::Result<()> {
+/// Writes `chart` as a PNG file (its text with the composite glyphs of [`png_text`]).
+pub fn write_png(chart: &Chart, path: &std::path::Path) -> std::io::Result<()> {
     font::register();
+    let spec = flatten(chart);
     let text = |s: &String| png_text(s).into_owned();
-    let spec = ChartSpec {
+    let spec = Flat {
         title: text(&spec.title),
         x_label: text(&spec.x_label),
         y_label: text(&spec.y_label),
         series: spec
             .series
             .iter()
-            .map(|s| Series {
+            .map(|s| FlatSeries {
                 name: text(&s.name),
                 ..s.clone()
             })
@@ -294,7 +195,7 @@ pub(crate) fn drawable(p: (f64, f64), x_log: bool, y_log: bool) -> bool {
 
 /// The data range of the drawable points of all series on one axis, padded (5 % of the
 /// span, or a factor on a log axis); `(0, 1)` (or `(0.1, 1)`) when there are none.
-pub(crate) fn axis_range(spec: &ChartSpec, x_axis: bool) -> (f64, f64) {
+pub(crate) fn axis_range(spec: &Flat, x_axis: bool) -> (f64, f64) {
     let log = if x_axis { spec.x_log } else { spec.y_log };
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for s in &spec.series {
@@ -325,48 +226,17 @@ pub(crate) fn axis_range(spec: &ChartSpec, x_axis: bool) -> (f64, f64) {
     }
 }
 
-/// Tick-label text: short, round numbers (`0.001`, `0.5`, `2`, `1e-5`).
-pub(crate) fn tick_label(v: f64) -> String {
-    if v == 0.0 {
-        return "0".into();
-    }
-    let a = v.abs();
-    if !(1e-3..1e4).contains(&a) {
-        let e = a.log10().floor() as i32;
-        let m = v / 10f64.powi(e);
-        if (m.abs() - 1.0).abs() < 1e-9 {
-            return format!("{}1e{e}", if v < 0.0 { "-" } else { "" });
-        }
-        return format!("{}e{e}", trim(format!("{m:.2}")));
-    }
-    trim(format!("{v:.4}"))
-}
-
-fn trim(s: String) -> String {
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn tick_labels_are_short() {
-        assert_eq!(tick_label(0.0), "0");
-        assert_eq!(tick_label(0.001), "0.001");
-        assert_eq!(tick_label(0.5), "0.5");
-        assert_eq!(tick_label(2.0), "2");
-        assert_eq!(tick_label(1e-5), "1e-5");
-        assert_eq!(tick_label(2.5e-5), "2.5e-5");
-        assert_eq!(tick_label(-0.25), "-0.25");
+    fn a_zero_tick_reads_zero() {
+        use crate::numfmt::tick;
         // a zero tick off by round-off reads 0 on a linear axis, not 1.73e-18
-        assert_eq!(tick_label(draw::snap_zero(1.73e-18, 0.045, false)), "0");
-        assert_eq!(tick_label(draw::snap_zero(1e-5, 0.045, false)), "1e-5");
-        assert_eq!(tick_label(draw::snap_zero(1e-18, 1.0, true)), "1e-18");
+        assert_eq!(tick(draw::snap_zero(1.73e-18, 0.045, false)), "0");
+        assert_eq!(tick(draw::snap_zero(1e-5, 0.045, false)), "1e-5");
+        assert_eq!(tick(draw::snap_zero(1e-18, 1.0, true)), "1e-18");
     }
 
     #[test]
@@ -391,20 +261,15 @@ mod tests {
 
     #[test]
     fn ranges_skip_gaps_and_non_positive_values_on_log_axes() {
-        let spec = ChartSpec {
-            title: String::new(),
-            x_label: String::new(),
-            y_label: String::new(),
-            x_log: true,
-            y_log: false,
-            series: vec![Series {
-                name: "a".into(),
-                points: vec![(0.0, 5.0), (1e-3, f64::NAN), (1e-2, 1.0), (1.0, 3.0)],
-                style: SeriesStyle::Line,
-                colour: Rgb(0, 0, 0),
-                shape: Shape::Circle,
-            }],
-        };
+        let mut chart = Chart::new("", "", "", Scale::Log10, Scale::Linear);
+        chart.series.push(Series::painted(
+            "a",
+            vec![(0.0, 5.0), (1e-3, f64::NAN), (1e-2, 1.0), (1.0, 3.0)],
+            SeriesStyle::Line,
+            Rgb(0, 0, 0),
+            Shape::Circle,
+        ));
+        let spec = flatten(&chart);
         let (x0, x1) = axis_range(&spec, true);
         assert!(x0 < 1e-2 && x0 > 5e-3 && x1 > 1.0 && x1 < 1.3, "{x0} {x1}");
         let (y0, y1) = axis_range(&spec, false);

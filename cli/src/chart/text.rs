@@ -2,13 +2,15 @@
 //! the axis titles and a legend. No colours or escape codes, so the output can be piped,
 //! pasted into a README or compared in a test.
 
-use super::{axis_range, drawable, tick_label, ChartSpec, SeriesStyle};
+use super::{axis_range, drawable, flatten, Chart, Flat, SeriesStyle};
+use crate::numfmt::{nice_ticks, tick};
 
 /// Glyphs of the series, in order (then repeated).
 pub const GLYPHS: [char; 10] = ['*', 'o', '+', 'x', '#', '@', '%', '&', '=', '~'];
 
-/// Renders `spec` as text, `width` × `height` characters overall (at least 40 × 12).
-pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
+/// Renders `chart` as text, `width` × `height` characters overall (at least 40 × 12).
+pub fn render_text(chart: &Chart, width: usize, height: usize) -> String {
+    let spec = &flatten(chart);
     let (width, height) = (width.max(40), height.max(12));
     let (x0, x1) = axis_range(spec, true);
     let (y0, y1) = axis_range(spec, false);
@@ -19,7 +21,7 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
             (v - lo) / (hi - lo)
         }
     };
-    let label = |v: f64| tick_label(round_sig(v, 3));
+    let label = tick;
     let legend = legend_lines(spec, width);
     // rows: title, y title, plot, x axis line, x ticks, x title, legend
     let plot_h = height.saturating_sub(5 + legend.len()).max(4);
@@ -128,7 +130,7 @@ pub fn render_text(spec: &ChartSpec, width: usize, height: usize) -> String {
 }
 
 /// The legend: one entry per series (glyph, name, line style), wrapped to `width`.
-fn legend_lines(spec: &ChartSpec, width: usize) -> Vec<String> {
+fn legend_lines(spec: &Flat, width: usize) -> Vec<String> {
     let mut legend: Vec<String> = vec![String::new()];
     for (i, s) in spec.series.iter().enumerate() {
         let entry = format!("{} {} ({})", GLYPHS[i % GLYPHS.len()], s.name, s.style.name());
@@ -147,7 +149,7 @@ fn legend_lines(spec: &ChartSpec, width: usize) -> Vec<String> {
 
 /// The x tick labels at round values, left out where they would overlap, under a plot of
 /// `plot_w` columns after a `margin`.
-fn x_tick_row(spec: &ChartSpec, (x0, x1): (f64, f64), margin: usize, plot_w: usize) -> String {
+fn x_tick_row(spec: &Flat, (x0, x1): (f64, f64), margin: usize, plot_w: usize) -> String {
     let tx = |v: f64| {
         if spec.x_log {
             (v / x0).ln() / (x1 / x0).ln()
@@ -159,7 +161,7 @@ fn x_tick_row(spec: &ChartSpec, (x0, x1): (f64, f64), margin: usize, plot_w: usi
     let mut free_from = 0usize;
     for v in nice_ticks(x0, x1, spec.x_log, (plot_w / 12).max(2)) {
         let t = tx(v);
-        let text = tick_label(round_sig(v, 3));
+        let text = tick(v);
         let pos = margin + 1 + (t * (plot_w - 1) as f64).round() as usize;
         let n = text.chars().count();
         let start = pos.saturating_sub(n / 2);
@@ -175,96 +177,25 @@ fn x_tick_row(spec: &ChartSpec, (x0, x1): (f64, f64), margin: usize, plot_w: usi
     ticks.iter().collect()
 }
 
-/// Round tick values in [lo, hi]: decades (and 2, 5 times them when there are few) on a log
-/// axis, 1/2/5 × 10^k steps on a linear one; about `n` of them.
-pub(crate) fn nice_ticks(lo: f64, hi: f64, log: bool, n: usize) -> Vec<f64> {
-    if !(lo.is_finite() && hi.is_finite() && hi > lo) {
-        return vec![lo];
-    }
-    if log {
-        let (a, b) = (lo.log10().ceil() as i32, hi.log10().floor() as i32);
-        let decades = b - a + 1;
-        let step = ((decades as f64 / n as f64).ceil() as i32).max(1);
-        let mut out: Vec<f64> = (a..=b).filter(|k| (k - a) % step == 0).map(|k| 10f64.powi(k)).collect();
-        if out.len() < 3 {
-            out.clear();
-            for k in (lo.log10().floor() as i32)..=(hi.log10().ceil() as i32) {
-                for m in [1.0, 2.0, 5.0] {
-                    let v = m * 10f64.powi(k);
-                    if v >= lo && v <= hi {
-                        out.push(v);
-                    }
-                }
-            }
-        }
-        return out;
-    }
-    let raw = (hi - lo) / n.max(1) as f64;
-    let e = raw.log10().floor() as i32;
-    let m = [1.0, 2.0, 5.0, 10.0]
-        .into_iter()
-        .find(|m| m * 10f64.powi(e) >= raw)
-        .unwrap_or(10.0);
-    // v = k·m·10^e, divided rather than multiplied by a negative power so that 0.6 is 0.6
-    let value = |k: i64| {
-        if e < 0 {
-            k as f64 * m / 10f64.powi(-e)
-        } else {
-            k as f64 * m * 10f64.powi(e)
-        }
-    };
-    let step = value(1);
-    let first = (lo / step).ceil() as i64;
-    let last = (hi / step).floor() as i64;
-    (first..=last).map(value).collect()
-}
-
-fn round_sig(v: f64, digits: i32) -> f64 {
-    if v == 0.0 || !v.is_finite() {
-        return v;
-    }
-    let e = v.abs().log10().floor() as i32;
-    let f = 10f64.powi(digits - 1 - e);
-    (v * f).round() / f
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chart::{Rgb, Series, Shape};
-
-    #[test]
-    fn ticks_are_round() {
-        assert_eq!(nice_ticks(-0.05, 1.05, false, 6), vec![0.0, 0.2, 0.4, 0.6, 0.8, 1.0]);
-        assert_eq!(nice_ticks(8e-4, 1.2, true, 8), vec![1e-3, 1e-2, 1e-1, 1.0]);
-        assert_eq!(nice_ticks(0.3, 4.0, true, 8), vec![0.5, 1.0, 2.0]);
-    }
+    use crate::chart::{Rgb, Scale, Series, Shape};
 
     #[test]
     fn a_rising_line_runs_from_lower_left_to_upper_right() {
-        let spec = ChartSpec {
-            title: "t".into(),
-            x_label: "x (1)".into(),
-            y_label: "y (1)".into(),
-            x_log: false,
-            y_log: false,
-            series: vec![
-                Series {
-                    name: "up".into(),
-                    points: vec![(0.0, 0.0), (1.0, 1.0)],
-                    style: SeriesStyle::Line,
-                    colour: Rgb(0, 0, 0),
-                    shape: Shape::Circle,
-                },
-                Series {
-                    name: "dots".into(),
-                    points: vec![(0.5, f64::NAN), (1.0, 0.0)],
-                    style: SeriesStyle::Points,
-                    colour: Rgb(0, 0, 0),
-                    shape: Shape::Circle,
-                },
-            ],
-        };
+        let mut spec = Chart::new("t", "x (1)", "y (1)", Scale::Linear, Scale::Linear);
+        let black = (Rgb(0, 0, 0), Shape::Circle);
+        spec.series = vec![
+            Series::painted("up", vec![(0.0, 0.0), (1.0, 1.0)], SeriesStyle::Line, black.0, black.1),
+            Series::painted(
+                "dots",
+                vec![(0.5, f64::NAN), (1.0, 0.0)],
+                SeriesStyle::Points,
+                black.0,
+                black.1,
+            ),
+        ];
         let text = render_text(&spec, 60, 20);
         let rows: Vec<&str> = text.lines().filter(|l| l.contains('|')).collect();
         let col = |l: &str, c: char| l.split_once('|').and_then(|(_, r)| r.find(c));

@@ -15,7 +15,7 @@
 
 use super::gauge_gfmd::{self, GfmdRefArgs};
 use super::{emit, Format, SceneArgs};
-use crate::chart::{self, ChartSpec, Series, SeriesStyle};
+use crate::chart::{self, Chart, Scale, Series, SeriesStyle};
 use crate::looks;
 use asperity::error::{Error, Field, Result};
 use asperity::fit::gfmd_reference::GfmdReference;
@@ -287,7 +287,7 @@ fn y_of(o: Observable, p: f64, v: f64) -> f64 {
 
 /// The reference as points and each model as a line, one chart per observable stacked in
 /// one figure's series (a_r shown as a_r/p* like \[S\] Fig. 1).
-pub fn overlay(scene: &Scene, r: &Reference, models: &[(&str, Model)], what: &str) -> Result<ChartSpec> {
+pub fn overlay(scene: &Scene, r: &Reference, models: &[(&str, Model)], what: &str) -> Result<Chart> {
     let obs: Vec<Observable> = r.observables().into_iter().filter(|o| *o != Observable::Pr).collect();
     let first = obs.first().copied().unwrap_or(Observable::Area);
     let (lo, hi) = {
@@ -315,48 +315,46 @@ pub fn overlay(scene: &Scene, r: &Reference, models: &[(&str, Model)], what: &st
             })
             .collect(),
     };
-    let mut series = vec![Series {
-        name: format!("reference {}", r.name),
-        points: r
-            .points
+    let mut series = vec![Series::new(
+        format!("reference {}", r.name),
+        r.points
             .iter()
             .filter(|o| o.observable == first)
             .map(|o| (o.p, y_of(first, o.p, o.value)))
             .collect(),
-        style: SeriesStyle::Points,
-        colour: looks::look(looks::Role::Reference, 0, 0).ink.rgb(),
-        shape: looks::REFERENCE_MARKS[0].1,
-    }];
+        looks::Role::Reference,
+        SeriesStyle::Points,
+    )];
     for (label, m) in models {
         let y = fit::predict(scene, m, &dense)?;
-        series.push(Series {
-            name: (*label).to_string(),
-            points: grid.iter().zip(&y).map(|(&p, &v)| (p, y_of(first, p, v))).collect(),
-            style: SeriesStyle::Line,
-            colour: looks::model_colour(looks::model_slot(m)),
-            shape: chart::Shape::Circle,
-        });
+        series.push(Series::new(
+            *label,
+            grid.iter().zip(&y).map(|(&p, &v)| (p, y_of(first, p, v))).collect(),
+            looks::Role::Model(looks::model_slot(m)),
+            SeriesStyle::Line,
+        ));
     }
-    // two custom models (the start and the fit) share a colour: the second is dashed
-    chart::tell_apart(&mut series);
     let y_label = match first {
         Observable::Area => "a_r / p*",
         Observable::MeanContactStress => "mean contact stress / (E* g)",
         Observable::MeanGapRel => "mean gap / h_rms",
         Observable::Pr => "Pr",
     };
-    Ok(ChartSpec {
-        title: format!("asperity {what}: {} against {}", y_label, r.name),
-        x_label: "p* = p / (E* g)".into(),
-        y_label: y_label.into(),
-        x_log: hi > lo,
-        y_log: false,
-        series,
-    })
+    let mut c = Chart::new(
+        format!("asperity {what}: {} against {}", y_label, r.name),
+        "p* = p / (E* g)",
+        y_label,
+        Scale::of(hi > lo),
+        Scale::Linear,
+    );
+    c.series = series;
+    // two custom models (the start and the fit) share a colour: the second is dashed
+    c.tell_apart();
+    Ok(c)
 }
 
 /// Writes the chart files asked for.
-pub fn write_charts(spec: &ChartSpec, svg: Option<&Path>, png: Option<&Path>) -> Result<()> {
+pub fn write_charts(spec: &Chart, svg: Option<&Path>, png: Option<&Path>) -> Result<()> {
     if let Some(p) = svg {
         chart::write_svg(spec, p).map_err(|e| Error::io_file("write", "", p, &e))?;
     }

@@ -401,18 +401,23 @@ fn check_measurable(s: &Surface, file: &std::path::Path) -> Result<()> {
     ))
 }
 
-fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::ChartSpec {
-    use crate::chart::{ChartSpec, Series, SeriesStyle};
-    use crate::looks::{look, Role};
-    // the explorer's psd chart's looks: the table as reference points, the fit as a closed form
-    let (table, fit) = (look(Role::Reference, 0, 0), look(Role::Closed, 0, 0));
-    let mut series = vec![Series {
-        name: "C(q), radial average".into(),
-        points: a.bins.iter().map(|b| (b.q, b.psd)).collect(),
-        style: SeriesStyle::Points,
-        colour: table.ink.rgb(),
-        shape: table.shape,
-    }];
+fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::Chart {
+    use crate::chart::{Chart, Scale, Series, SeriesStyle};
+    use crate::looks::Role;
+    // the explorer's psd chart's roles: the table as reference points, the fit as a closed form
+    let mut c = Chart::new(
+        format!("PSD of {}", o.file),
+        "q (1/m)",
+        "C(q) (m^4)",
+        Scale::Log10,
+        Scale::Log10,
+    );
+    c.series.push(Series::new(
+        "C(q), radial average",
+        a.bins.iter().map(|b| (b.q, b.psd)).collect(),
+        Role::Reference,
+        SeriesStyle::Points,
+    ));
     if let (Some(f), Some(first), true) = (&a.fit, a.bins.first(), is_self_affine(a)) {
         // the fitted law through the bins: plateau to q_r, power law to q_s
         let c_r = a
@@ -423,22 +428,14 @@ fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::ChartSpec {
             .sum::<f64>()
             / a.bins.iter().filter(|b| b.q <= f.q_s).count().max(1) as f64;
         let law = |q: f64| (c_r - f.exponent * (q / f.q_r).ln().max(0.0)).exp();
-        series.push(Series {
-            name: format!("self-affine fit, H = {:.3}", f.hurst),
-            points: vec![(first.q, law(first.q)), (f.q_r, law(f.q_r)), (f.q_s, law(f.q_s))],
-            style: SeriesStyle::Dashed,
-            colour: fit.ink.rgb(),
-            shape: fit.shape,
-        });
+        c.series.push(Series::new(
+            format!("self-affine fit, H = {}", crate::numfmt::sig(f.hurst, 3)),
+            vec![(first.q, law(first.q)), (f.q_r, law(f.q_r)), (f.q_s, law(f.q_s))],
+            Role::Closed,
+            SeriesStyle::Dashed,
+        ));
     }
-    ChartSpec {
-        title: format!("PSD of {}", o.file),
-        x_label: "q (1/m)".into(),
-        y_label: "C(q) (m^4)".into(),
-        x_log: true,
-        y_log: true,
-        series,
-    }
+    c
 }
 
 fn table(o: &PsdOutput) -> String {

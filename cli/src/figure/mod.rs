@@ -3,7 +3,7 @@
 //!
 //! Figures 1–8 are described by TOML files ([`spec`], `figures/` in the repository, built
 //! into the binary); Table 1 is [`table1`]. [`compute`] evaluates the curves, [`FigureData`]
-//! holds the result and turns into a [`crate::chart::ChartSpec`].
+//! holds the result and turns into the one chart model, [`crate::chart::Chart`].
 
 pub mod compute;
 mod curves;
@@ -11,7 +11,7 @@ pub mod refine;
 pub mod spec;
 pub mod table1;
 
-use crate::chart::{tell_apart, ChartSpec, Rgb, Series, SeriesStyle, Shape};
+use crate::chart::{Chart, Rgb, Scale, Series, SeriesStyle, Shape};
 use serde::Serialize;
 
 /// One point of a series; `y` is None where the solver did not converge (with the reason).
@@ -84,32 +84,29 @@ impl FigureData {
     /// ([`crate::chart::tell_apart`]). On a log y axis with [`FigureData::y_decades`], values
     /// more than that many decades below the largest are left out (gaps), so the axis spans
     /// those decades.
-    pub fn chart(&self) -> ChartSpec {
+    pub fn chart(&self) -> Chart {
         let floor = self.y_floor();
-        let mut series: Vec<Series> = self
+        let mut c = Chart::new(
+            self.title.clone(),
+            &self.x_label,
+            &self.y_label,
+            Scale::of(self.x_log),
+            Scale::of(self.y_log),
+        );
+        c.series = self
             .series
             .iter()
-            .map(|s| Series {
-                name: s.name.clone(),
-                points: s
+            .map(|s| {
+                let points = s
                     .points
                     .iter()
                     .map(|p| (p.x, p.y.filter(|&y| y >= floor).unwrap_or(f64::NAN)))
-                    .collect(),
-                style: s.style,
-                colour: s.colour,
-                shape: s.shape,
+                    .collect();
+                Series::painted(s.name.clone(), points, s.style, s.colour, s.shape)
             })
             .collect();
-        tell_apart(&mut series);
-        ChartSpec {
-            title: self.title.clone(),
-            x_label: self.x_label.clone(),
-            y_label: self.y_label.clone(),
-            x_log: self.x_log,
-            y_log: self.y_log,
-            series,
-        }
+        c.tell_apart();
+        c
     }
 
     /// The least value the chart draws: [`FigureData::y_decades`] below the largest finite
@@ -274,7 +271,7 @@ mod tests {
         // the floor is 2 / 10³ = 2e-3: 1e-300 and 1e-4 become gaps, 2e-3 stays
         let drawn: Vec<bool> = data.chart().series[0].points.iter().map(|p| p.1.is_finite()).collect();
         assert_eq!(drawn, [false, false, true, true, true]);
-        let (lo, hi) = crate::chart::axis_range(&data.chart(), false);
+        let (lo, hi) = crate::chart::axis_range(&crate::chart::flatten(&data.chart()), false);
         assert!(lo > 1e-3 && hi < 3.0, "{lo} {hi}");
         assert_eq!(data.csv().lines().count(), 6);
         // on a linear axis, or without y_decades, every value is drawn
@@ -289,7 +286,7 @@ mod tests {
     fn figure_8_on_a_log_axis_lifts_the_thick_slabs_off_the_bottom_rows() {
         // the height of each curve's peak as a fraction of its axis
         let peaks = |id: &str| -> Vec<(String, f64)> {
-            let chart = compute::compute(&spec::resolve(id).unwrap(), None).unwrap().chart();
+            let chart = crate::chart::flatten(&compute::compute(&spec::resolve(id).unwrap(), None).unwrap().chart());
             let (lo, hi) = crate::chart::axis_range(&chart, false);
             let height = |y: f64| {
                 if chart.y_log {

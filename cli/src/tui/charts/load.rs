@@ -1,19 +1,19 @@
 //! The load and thickness charts: a_r(p*), a_r/p*, σ̄_c*(p*), ū/h_rms(p*) with the hysteresis
 //! window's branches and edges, and a_r(t·q_r).
 
-use crate::tui::charts::chart_model::*;
 use crate::tui::charts::plot::{self, Scale};
+use crate::tui::charts::shared::*;
 use crate::tui::model::app::App;
 use crate::tui::model::data::{self, SweepData, ThicknessData};
 use crate::tui::model::kinds::{slot_name, ChartKind};
 
-pub fn area(app: &App, ratio: bool) -> ChartModel {
+pub fn area(app: &App, ratio: bool) -> Chart {
     let (kind, title, ylab, ys) = if ratio {
         (ChartKind::AreaRatio, "a_r/p*", "a_r/p*", Scale::Linear)
     } else {
         (ChartKind::Area, "a_r(p*)", "a_r", Scale::Log10)
     };
-    let mut m = base(kind, title.into(), "p* = p/E*ḡ", ylab, Scale::Log10, ys);
+    let mut m = base(title.into(), "p* = p/E*ḡ", ylab, Scale::Log10, ys);
     let y_of = |p: f64, a: f64| if ratio { a / p } else { a };
     let curve =
         |sw: &SweepData| -> Vec<(f64, f64)> { sw.p.iter().zip(&sw.a_r).map(|(&p, &a)| (p, y_of(p, a))).collect() };
@@ -28,7 +28,8 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
             name: "eq. (18)".into(),
             points: sw.p.iter().map(|&p| (p, y_of(p, data::eq18_area(p)))).collect(),
             role: Role::Closed,
-            draw: Draw::Dashed,
+            style: Draw::Dashed,
+            look: None,
         });
     }
     for (i, o) in others(app, App::model_sweep) {
@@ -36,7 +37,8 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
             name: slot_name(i),
             points: curve(o),
             role: Role::Model(i),
-            draw: Draw::Line,
+            style: Draw::Line,
+            look: None,
         });
     }
     if !app.ui.all_models {
@@ -46,7 +48,8 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
         name: theory_name(app),
         points: curve(sw),
         role: theory_role(app),
-        draw: Draw::Line,
+        style: Draw::Line,
+        look: None,
     });
     m.series
         .extend(reference_series(app, kind.reference_quantity().unwrap_or("a_r"), y_of));
@@ -57,7 +60,8 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
                 name: "theory on the GFMD map".into(),
                 points: g.theory_sweep.iter().map(|&(p, a, _)| (p, y_of(p, a))).collect(),
                 role: Role::GfmdTheory,
-                draw: Draw::Dashed,
+                style: Draw::Dashed,
+                look: None,
             });
         }
         m.series.push(Series {
@@ -67,7 +71,8 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
                 .map(|(p, a)| (p, y_of(p, a)))
                 .collect(),
             role: Role::Gfmd,
-            draw: Draw::Points,
+            style: Draw::Points,
+            look: None,
         });
     }
     let p = app.params.scene.pressure();
@@ -87,7 +92,7 @@ pub fn area(app: &App, ratio: bool) -> ChartModel {
 /// The unloading branch of a hysteresis (a dashed curve over the loads where it is distinct
 /// from the loading one, joined to the curve it merges into at the window's top) and the
 /// jump-in and pull-off loads as vertical markers named with their p*.
-fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64) {
+fn hysteresis(m: &mut Chart, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64) {
     let n = sw.p.len().min(sw.a_r_unloading.len());
     let mut points: Vec<(f64, f64)> = Vec::new();
     for k in 0..n {
@@ -109,13 +114,14 @@ fn hysteresis(m: &mut ChartModel, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64
 
 /// A hysteresis window on a chart: the unloading branch (dashed, where it has a point) and
 /// the jump-in and pull-off edges as vertical markers named `jump-in {unit}x`.
-fn push_window(m: &mut ChartModel, points: Vec<(f64, f64)>, [jump_in, pull_off]: [Vec<f64>; 2], unit: &str) {
+fn push_window(m: &mut Chart, points: Vec<(f64, f64)>, [jump_in, pull_off]: [Vec<f64>; 2], unit: &str) {
     if points.iter().any(|q| q.0.is_finite() && q.1.is_finite()) {
         m.series.push(Series {
             name: "unloading".into(),
             points,
             role: Role::Unloading,
-            draw: Draw::Dashed,
+            style: Draw::Dashed,
+            look: None,
         });
     }
     for (xs, role, what) in [
@@ -126,7 +132,7 @@ fn push_window(m: &mut ChartModel, points: Vec<(f64, f64)>, [jump_in, pull_off]:
             m.vlines.push(VLine {
                 x,
                 role,
-                name: format!("{what} {unit}{}", crate::tui::model::words::sig(x, 2)),
+                name: format!("{what} {unit}{}", crate::numfmt::sig(x, 2)),
             });
         }
     }
@@ -137,7 +143,7 @@ fn push_window(m: &mut ChartModel, points: Vec<(f64, f64)>, [jump_in, pull_off]:
 /// neighbour where it goes on as the only branch (the one nearer in ln a_r), and the edges as
 /// vertical markers named with their t·q_r: jump-in where the loading branch (small contact)
 /// ends, pull-off where the unloading branch ends.
-fn thickness_window(m: &mut ChartModel, td: &ThicknessData) {
+fn thickness_window(m: &mut Chart, td: &ThicknessData) {
     let n = td.t.len().min(td.a_r_unloading.len()).min(td.a_r.len());
     let u = &td.a_r_unloading;
     let near = |a: f64, b: f64| (a.ln() - b.ln()).abs();
@@ -181,11 +187,12 @@ pub fn gap_band(sw: &SweepData) -> Option<Series> {
         name: "bracket (same a_r … same load)".into(),
         points,
         role: Role::Band,
-        draw: Draw::Points,
+        style: Draw::Points,
+        look: None,
     })
 }
 
-pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
+pub fn loads(app: &App, kind: ChartKind) -> Chart {
     let gap = kind == ChartKind::Gap;
     let (title, ylab) = if gap {
         ("ū/h_rms(p*)", "ū/h_rms")
@@ -193,7 +200,7 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
         ("σ̄_c*(p*)", "σ̄_c*")
     };
     let quantity = kind.reference_quantity().unwrap_or("mean_contact_stress");
-    let mut m = base(kind, title.into(), "p* = p/E*ḡ", ylab, Scale::Log10, Scale::Linear);
+    let mut m = base(title.into(), "p* = p/E*ḡ", ylab, Scale::Log10, Scale::Linear);
     let pick = |sw: &SweepData| -> Vec<(f64, f64)> {
         let ys = if gap { &sw.gap_rel } else { &sw.mean_contact_stress };
         sw.p.iter().copied().zip(ys.iter().copied()).collect()
@@ -221,21 +228,24 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
             name: slot_name(i),
             points: pick(o),
             role: Role::Model(i),
-            draw: Draw::Line,
+            style: Draw::Line,
+            look: None,
         });
     }
     m.series.push(Series {
         name: theory_name(app),
         points: pick(sw),
         role: theory_role(app),
-        draw: Draw::Line,
+        style: Draw::Line,
+        look: None,
     });
     if gap && sw.gap_unloading.len() == sw.p.len() {
         m.series.push(Series {
             name: "unloading".into(),
             points: sw.p.iter().copied().zip(sw.gap_unloading.iter().copied()).collect(),
             role: Role::Unloading,
-            draw: Draw::Dashed,
+            style: Draw::Dashed,
+            look: None,
         });
     }
     m.series.extend(reference_series(app, quantity, |_, v| v));
@@ -248,7 +258,8 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
                     name: "theory on the GFMD map".into(),
                     points: g.theory_sweep.iter().map(|&(p, _, u)| (p, u)).collect(),
                     role: Role::GfmdTheory,
-                    draw: Draw::Dashed,
+                    style: Draw::Dashed,
+                    look: None,
                 });
             }
             points.extend(g.sweep.iter().map(|&(p, _, u)| (p, u)));
@@ -257,7 +268,8 @@ pub fn loads(app: &App, kind: ChartKind) -> ChartModel {
             name: "GFMD".into(),
             points,
             role: Role::Gfmd,
-            draw: Draw::Points,
+            style: Draw::Points,
+            look: None,
         });
     }
     let y = if gap {
@@ -304,12 +316,12 @@ fn gap_failure(app: &App, sw: &SweepData) -> Option<String> {
     )
 }
 
-pub fn thickness(app: &App) -> ChartModel {
+pub fn thickness(app: &App) -> Chart {
     let title = format!(
         "a_r(t·q_r) at p* = {}",
-        crate::tui::model::words::sig(app.params.scene.pressure(), 3)
+        crate::numfmt::sig(app.params.scene.pressure(), 3)
     );
-    let mut m = base(ChartKind::Thickness, title, "t·q_r", "a_r", Scale::Log10, Scale::Linear);
+    let mut m = base(title, "t·q_r", "a_r", Scale::Log10, Scale::Linear);
     let Some(td) = app.results.thickness.as_ref().and_then(|r| r.as_ref().ok()) else {
         set_empty(&mut m, app, app.results.thickness.as_ref());
         return m;
@@ -325,7 +337,8 @@ pub fn thickness(app: &App) -> ChartModel {
             name: "γ_s=0".into(),
             points: td.t.iter().copied().zip(a0.iter().copied()).collect(),
             role: Role::Compare,
-            draw: Draw::Line,
+            style: Draw::Line,
+            look: None,
         });
     }
     if td.a_r_inf.is_finite() {
@@ -333,7 +346,8 @@ pub fn thickness(app: &App) -> ChartModel {
             name: "t=∞".into(),
             points: vec![(t0, td.a_r_inf), (t1, td.a_r_inf)],
             role: Role::Closed,
-            draw: Draw::Dashed,
+            style: Draw::Dashed,
+            look: None,
         });
     }
     for (i, o) in others(app, App::model_thickness) {
@@ -341,7 +355,8 @@ pub fn thickness(app: &App) -> ChartModel {
             name: slot_name(i),
             points: curve(o),
             role: Role::Model(i),
-            draw: Draw::Line,
+            style: Draw::Line,
+            look: None,
         });
     }
     if !app.ui.all_models {
@@ -351,7 +366,8 @@ pub fn thickness(app: &App) -> ChartModel {
         name: theory_name(app),
         points: curve(td),
         role: theory_role(app),
-        draw: Draw::Line,
+        style: Draw::Line,
+        look: None,
     });
     // reference a_r points at this p* with a finite thickness
     let mut refs: Vec<Series> = Vec::new();
@@ -369,7 +385,8 @@ pub fn thickness(app: &App) -> ChartModel {
                 name,
                 points: vec![(t, r.value)],
                 role: Role::Reference,
-                draw: Draw::Points,
+                style: Draw::Points,
+                look: None,
             }),
         }
     }

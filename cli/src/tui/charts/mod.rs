@@ -1,5 +1,5 @@
 //! The explorer's charts as plain data: [`build`] turns the [`App`]'s results into a
-//! [`ChartModel`] (title, axis titles, scales, series in data units, vertical markers). The
+//! [`Chart`] (title, axis titles, scales, series in data units, vertical markers). The
 //! terminal view ([`crate::tui::view`]) draws a model with ratatui; `s` ([`crate::tui::effects::export`]) hands
 //! the same models to the SVG/PNG renderer, so an exported chart is what was on screen.
 //!
@@ -24,15 +24,15 @@
 //! points are drawn as points named by their source (and the conditions, where they differ
 //! from the scene's).
 
-pub mod chart_model;
 pub mod load;
 pub mod plot;
 pub mod psd;
 pub mod scales;
+pub mod shared;
 
-use crate::tui::charts::chart_model::{base, current_point, data_bounds, others, set_empty, theory_name, theory_role};
-pub use crate::tui::charts::chart_model::{ChartModel, Draw, Role, Series, VLine};
 use crate::tui::charts::load::{area, loads, thickness};
+use crate::tui::charts::shared::{base, current_point, data_bounds, others, set_empty, theory_name, theory_role};
+pub use crate::tui::charts::shared::{Chart, Draw, Role, Series, VLine};
 use crate::tui::model::app::App;
 use crate::tui::model::data::{self, PointData};
 pub use crate::tui::model::kinds::{overlay_models, slot, slot_name, ChartKind, Needs};
@@ -40,10 +40,10 @@ use crate::tui::model::pins::{self, Pin};
 use asperity::input::scene::Scene;
 use plot::Scale;
 /// Builds the chart `kind` from the app's results.
-pub fn build(app: &App, kind: ChartKind) -> ChartModel {
+pub fn build(app: &App, kind: ChartKind) -> Chart {
     let mut m = build_own(app, kind);
     m.model = slot(&app.params.scene.model());
-    draw_pins(&mut m, &app.results.pins, &app.params.scene);
+    draw_pins(&mut m, kind, &app.results.pins, &app.params.scene);
     m
 }
 
@@ -67,7 +67,7 @@ pub fn pin_curves(app: &App) -> Vec<(ChartKind, Vec<(f64, f64)>)> {
 }
 
 /// The chart without the pins.
-pub fn build_own(app: &App, kind: ChartKind) -> ChartModel {
+pub fn build_own(app: &App, kind: ChartKind) -> Chart {
     match kind {
         ChartKind::Pr => pr_linear(app),
         ChartKind::PrLog => pr_loglog(app),
@@ -81,19 +81,16 @@ pub fn build_own(app: &App, kind: ChartKind) -> ChartModel {
     }
 }
 
-fn pr_linear(app: &App) -> ChartModel {
-    let mut title = format!(
-        "Pr(σ*) at p* = {}",
-        crate::tui::model::words::sig(app.params.scene.pressure(), 3)
-    );
-    if crate::tui::charts::chart_model::path_row(app).is_some() {
+fn pr_linear(app: &App) -> Chart {
+    let mut title = format!("Pr(σ*) at p* = {}", crate::numfmt::sig(app.params.scene.pressure(), 3));
+    if crate::tui::charts::shared::path_row(app).is_some() {
         // the engine computes the loading branch's distribution only
         title.push_str(", loading branch");
     }
     // `y`: a log density axis, for the small distributions beside a large one (thick slabs
     // beside thin ones, the tails)
     let ys = if app.ui.log_pr { Scale::Log10 } else { Scale::Linear };
-    let mut m = base(ChartKind::Pr, title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, ys);
+    let mut m = base(title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, ys);
     m.clip_y = app.ui.log_pr;
     let Some(p) = current_point(app) else {
         set_empty(&mut m, app, app.results.point.as_ref());
@@ -105,7 +102,8 @@ fn pr_linear(app: &App) -> ChartModel {
             name: "γ_s=0".into(),
             points: c.clone(),
             role: Role::Compare,
-            draw: Draw::Line,
+            style: Draw::Line,
+            look: None,
         });
     }
     if let Some(g) = app.gfmd_for_scene() {
@@ -113,7 +111,8 @@ fn pr_linear(app: &App) -> ChartModel {
             name: "GFMD".into(),
             points: g.pr.iter().copied().filter(|(_, d)| *d > 0.0).collect(),
             role: Role::Gfmd,
-            draw: Draw::Points,
+            style: Draw::Points,
+            look: None,
         });
     }
     for (i, o) in others(app, App::model_point) {
@@ -121,14 +120,16 @@ fn pr_linear(app: &App) -> ChartModel {
             name: slot_name(i),
             points: o.pr.clone(),
             role: Role::Model(i),
-            draw: Draw::Line,
+            style: Draw::Line,
+            look: None,
         });
     }
     m.series.push(Series {
         name: theory_name(app),
         points: p.pr.clone(),
         role: theory_role(app),
-        draw: Draw::Line,
+        style: Draw::Line,
+        look: None,
     });
     if let Some(w) = p.wall {
         m.vlines.push(VLine {
@@ -177,12 +178,12 @@ fn positive(pr: &[(f64, f64)]) -> Vec<(f64, f64)> {
     pr.iter().copied().filter(|(s, d)| *s > 0.0 && *d > 0.0).collect()
 }
 
-fn pr_loglog(app: &App) -> ChartModel {
+fn pr_loglog(app: &App) -> Chart {
     let title = format!(
         "Pr(σ*) log–log at p* = {}",
-        crate::tui::model::words::sig(app.params.scene.pressure(), 3)
+        crate::numfmt::sig(app.params.scene.pressure(), 3)
     );
-    let mut m = base(ChartKind::PrLog, title, "σ* = σ/E*ḡ", "Pr", Scale::Log10, Scale::Log10);
+    let mut m = base(title, "σ* = σ/E*ḡ", "Pr", Scale::Log10, Scale::Log10);
     m.clip_y = true;
     let Some(p) = current_point(app) else {
         set_empty(&mut m, app, app.results.point.as_ref());
@@ -202,7 +203,8 @@ fn pr_loglog(app: &App) -> ChartModel {
             name: "γ_s=0".into(),
             points: positive(c),
             role: Role::Compare,
-            draw: Draw::Line,
+            style: Draw::Line,
+            look: None,
         });
     }
     if app.params.scene.surface_energy_j_m2() == 0.0 && p.width > 0.0 {
@@ -218,7 +220,8 @@ fn pr_loglog(app: &App) -> ChartModel {
                 .map(|&s| (s, data::pr_small_stress(s, pp, d)))
                 .collect(),
             role: Role::Closed,
-            draw: Draw::Dashed,
+            style: Draw::Dashed,
+            look: None,
         });
         m.series.push(Series {
             name: "large-σ asymptote".into(),
@@ -228,7 +231,8 @@ fn pr_loglog(app: &App) -> ChartModel {
                 .map(|&s| (s, data::pr_large_stress(s, pp, d)))
                 .collect(),
             role: Role::Closed2,
-            draw: Draw::Dashed,
+            style: Draw::Dashed,
+            look: None,
         });
     }
     if let Some(g) = app.gfmd_for_scene() {
@@ -236,7 +240,8 @@ fn pr_loglog(app: &App) -> ChartModel {
             name: "GFMD".into(),
             points: positive(&g.pr),
             role: Role::Gfmd,
-            draw: Draw::Points,
+            style: Draw::Points,
+            look: None,
         });
     }
     for (i, o) in others(app, App::model_point) {
@@ -244,14 +249,16 @@ fn pr_loglog(app: &App) -> ChartModel {
             name: slot_name(i),
             points: curve(o),
             role: Role::Model(i),
-            draw: Draw::Line,
+            style: Draw::Line,
+            look: None,
         });
     }
     m.series.push(Series {
         name: theory_name(app),
         points: theory.clone(),
         role: theory_role(app),
-        draw: Draw::Line,
+        style: Draw::Line,
+        look: None,
     });
     // x: the theory's σ* range; y: from 10⁻⁶ of the peak to twice the peak
     let runs = plot::segments(&theory, m.xs, m.ys);
@@ -264,18 +271,19 @@ fn pr_loglog(app: &App) -> ChartModel {
 
 /// Draws the pins that have a curve of this chart's kind under its series (before them), and
 /// widens the chart's plane bounds to show them.
-fn draw_pins(m: &mut ChartModel, pins: &[Pin], now: &Scene) {
+fn draw_pins(m: &mut Chart, kind: ChartKind, pins: &[Pin], now: &Scene) {
     if m.empty.is_some() {
         return;
     }
     let mut added = Vec::new();
     for (i, p) in pins.iter().enumerate() {
-        if let Some((_, pts)) = p.curves.iter().find(|(k, _)| *k == m.kind) {
+        if let Some((_, pts)) = p.curves.iter().find(|(k, _)| *k == kind) {
             added.push(Series {
                 name: pins::label(&p.scene, now),
                 points: pts.clone(),
                 role: Role::Pin(i),
-                draw: Draw::Dotted,
+                style: Draw::Dotted,
+                look: None,
             });
         }
     }
@@ -291,7 +299,7 @@ fn draw_pins(m: &mut ChartModel, pins: &[Pin], now: &Scene) {
                 continue;
             }
             // Pr charts: the flat tails do not widen the σ* axis
-            let tail = matches!(m.kind, ChartKind::Pr) && y <= 1e-3 * m.ys.inverse(m.yb[1]);
+            let tail = matches!(kind, ChartKind::Pr) && y <= 1e-3 * m.ys.inverse(m.yb[1]);
             if !tail {
                 m.xb = [m.xb[0].min(px), m.xb[1].max(px)];
             }

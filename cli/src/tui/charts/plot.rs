@@ -5,41 +5,37 @@
 //! draws nothing when an axis has min == max. Every workaround lives here, with unit tests:
 //!
 //! - [`Scale`]: linear or log10 axes; data are transformed before drawing, labels are written
-//!   in data units ([`axis_labels`]).
+//!   in data units ([`ticks`], with [`crate::numfmt`]).
+//! - [`runs`]: a series of a [`Chart`] as the runs to draw.
 //! - [`segments`]: drops points that are not finite (or not positive on a log axis) and splits
 //!   the curve at every dropped point, so a gap is never bridged.
 //! - [`decimate`]: keeps at most a few points per braille column.
 //! - [`bounds`], [`guard`]: data bounds with padding; min == max or non-finite bounds widened.
-//! - [`axis_labels`]: exactly two or three labels (the upstream spacing bug starts at four).
+//! - [`ticks`]: exactly two or three round labels (the upstream spacing bug starts at four).
 
-pub use crate::tui::model::words::format_number;
+use crate::numfmt::{nice_step, tick};
 
-/// How an axis maps data to the drawing plane.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Scale {
-    /// x ↦ x.
-    Linear,
-    /// x ↦ log10 x (x > 0 only).
-    Log10,
-}
+pub use crate::chart::Scale;
+use crate::chart::{Chart, Series};
 
-impl Scale {
-    /// Data value to plane coordinate; `None` where the scale is undefined or the value is
-    /// not finite.
-    pub fn forward(self, x: f64) -> Option<f64> {
-        match self {
-            Scale::Linear => x.is_finite().then_some(x),
-            Scale::Log10 => (x.is_finite() && x > 0.0).then(|| x.log10()),
-        }
-    }
-
-    /// Plane coordinate back to a data value.
-    pub fn inverse(self, v: f64) -> f64 {
-        match self {
-            Scale::Linear => v,
-            Scale::Log10 => 10f64.powf(v),
-        }
-    }
+/// Plane points of series `s` of chart `m` drawn with y bounds `yb`, split at gaps, y outside
+/// `yb` dropped when the chart clips, decimated to about `max_points`.
+pub fn runs(m: &Chart, s: &Series, yb: [f64; 2], max_points: usize) -> Vec<Vec<(f64, f64)>> {
+    let pts: Vec<(f64, f64)> = if m.clip_y {
+        s.points
+            .iter()
+            .map(|&(x, y)| match m.ys.forward(y) {
+                Some(v) if v >= yb[0] && v <= yb[1] => (x, y),
+                _ => (x, f64::NAN),
+            })
+            .collect()
+    } else {
+        s.points.clone()
+    };
+    segments(&pts, m.xs, m.ys)
+        .into_iter()
+        .map(|r| decimate(&r, max_points))
+        .collect()
 }
 
 /// Transforms `points` to the plane and splits them into drawable runs: every point that
@@ -135,34 +131,9 @@ pub fn bounds(runs: &[&[(f64, f64)]], pick_x: bool, pad: f64) -> Option<[f64; 2]
     Some(guard(lo - d, hi + d))
 }
 
-/// Two or three axis labels for plane bounds `b` on `scale`, written in data units:
-/// [low, middle, high]; only [low, high] when `three` is false.
-pub fn axis_labels(b: [f64; 2], scale: Scale, three: bool) -> Vec<String> {
-    let pts: Vec<f64> = if three {
-        vec![b[0], 0.5 * (b[0] + b[1]), b[1]]
-    } else {
-        vec![b[0], b[1]]
-    };
-    pts.into_iter().map(|v| format_number(scale.inverse(v))).collect()
-}
-
-/// A 1–2–2.5–5 × 10^k step not smaller than `x` (> 0).
-pub fn nice_step(x: f64) -> f64 {
-    if !(x.is_finite() && x > 0.0) {
-        return 1.0;
-    }
-    let e = 10f64.powf(x.log10().floor());
-    for m in [1.0, 2.0, 2.5, 5.0, 10.0] {
-        if m * e >= x * (1.0 - 1e-12) {
-            return m * e;
-        }
-    }
-    10.0 * e
-}
-
 /// Round axis bounds and their labels (in data units) for plane bounds `b`:
 ///
-/// - linear: multiples of a [`nice_step`]; with `three`, exactly two steps apart so the middle
+/// - linear: multiples of a [`crate::numfmt::nice_step`]; with `three`, exactly two steps apart so the middle
 ///   label is round too;
 /// - log10: whole decades; with `three`, an even number of decades (else two labels), so
 ///   every label is a power of ten.
@@ -183,10 +154,7 @@ pub fn ticks(b: [f64; 2], scale: Scale, three: bool) -> ([f64; 2], Vec<String>) 
             } else {
                 vec![l, h]
             };
-            (
-                [l, h],
-                labels.into_iter().map(|v| format_number(10f64.powf(v))).collect(),
-            )
+            ([l, h], labels.into_iter().map(|v| tick(10f64.powf(v))).collect())
         }
         Scale::Linear => {
             // two labels: a finer step, so the bounds stay close to the data
@@ -203,7 +171,7 @@ pub fn ticks(b: [f64; 2], scale: Scale, three: bool) -> ([f64; 2], Vec<String>) 
                     let clean = |v: f64| if v.abs() < 1e-9 * step { 0.0 } else { v };
                     let (l, h) = (clean(l), clean(h));
                     let labels = if three { vec![l, l + step, h] } else { vec![l, h] };
-                    return ([l, h], labels.into_iter().map(|v| format_number(clean(v))).collect());
+                    return ([l, h], labels.into_iter().map(|v| tick(clean(v))).collect());
                 }
                 step = nice_step(step * 1.0001);
             }
@@ -293,20 +261,6 @@ mod tests {
     }
 
     #[test]
-    fn labels_are_two_or_three_in_data_units() {
-        let l = axis_labels([-3.0, 0.0], Scale::Log10, true);
-        assert_eq!(l, vec!["1e-3", "0.032", "1"]);
-        let l = axis_labels([0.0, 2.5], Scale::Linear, false);
-        assert_eq!(l, vec!["0", "2.5"]);
-        assert_eq!(format_number(f64::NAN), "–");
-        assert_eq!(format_number(f64::INFINITY), "∞");
-        assert_eq!(format_number(1234.0), "1234");
-        assert_eq!(format_number(-0.5), "-0.5");
-        assert_eq!(format_number(2.5e-5), "2.5e-5");
-        assert_eq!(format_number(12.34), "12.3");
-    }
-
-    #[test]
     fn vertical_marker() {
         assert_eq!(vertical(1.0, [0.0, 2.0]), vec![(1.0, 0.0), (1.0, 2.0)]);
         assert!(vertical(f64::NAN, [0.0, 2.0]).is_empty());
@@ -326,13 +280,10 @@ mod tests {
         // log: whole decades, three labels only on an even count
         let (b, l) = ticks([-2.7, -0.2], Scale::Log10, true);
         assert_eq!(b, [-3.0, 0.0]);
-        assert_eq!(l, vec!["1e-3", "1"]);
+        assert_eq!(l, vec!["0.001", "1"]);
         let (b, l) = ticks([-3.5, -0.2], Scale::Log10, true);
         assert_eq!(b, [-4.0, 0.0]);
         assert_eq!(l, vec!["1e-4", "0.01", "1"]);
-        assert_eq!(nice_step(0.3), 0.5);
-        assert_eq!(nice_step(0.02), 0.02);
-        assert_eq!(nice_step(0.021), 0.025);
         // degenerate input stays drawable
         let (b, _) = ticks([1.0, 1.0], Scale::Linear, true);
         assert!(b[1] > b[0]);

@@ -16,25 +16,17 @@
 //!
 //! The chart depends on the scene's spectrum only (no knob changes it), so it needs no job.
 
-use crate::tui::charts::chart_model::{base, ChartModel, Draw, Role, Series, VLine};
+use crate::numfmt::sig;
 use crate::tui::charts::plot::{self, Scale};
+use crate::tui::charts::shared::{base, Chart, Draw, Role, Series, VLine};
 use crate::tui::model::app::App;
-use crate::tui::model::kinds::ChartKind;
-use crate::tui::model::words::sig;
 use asperity::surface::fit::fit_self_affine;
 use asperity::surface::spectrum::{Spectrum, HURST_RANGE};
 use asperity::surface::tabulated::Tabulated;
 
 /// The `psd` chart of the app's scene.
-pub fn psd(app: &App) -> ChartModel {
-    let mut m = base(
-        ChartKind::Psd,
-        String::new(),
-        "q (1/m)",
-        "C(q) (m⁴)",
-        Scale::Log10,
-        Scale::Log10,
-    );
+pub fn psd(app: &App) -> Chart {
+    let mut m = base(String::new(), "q (1/m)", "C(q) (m⁴)", Scale::Log10, Scale::Log10);
     let spectrum = app.params.scene.spectrum();
     match spectrum {
         Spectrum::SelfAffine(s) => {
@@ -44,7 +36,8 @@ pub fn psd(app: &App) -> ChartModel {
                 name: "C(q)".into(),
                 points: corners,
                 role: Role::Theory,
-                draw: Draw::Line,
+                style: Draw::Line,
+                look: None,
             });
         }
         Spectrum::Tabulated(t) => tabulated(&mut m, t),
@@ -89,14 +82,15 @@ pub fn psd(app: &App) -> ChartModel {
 }
 
 /// The table, the interpolant the theory integrates, and the self-affine fit.
-fn tabulated(m: &mut ChartModel, t: &Tabulated) {
+fn tabulated(m: &mut Chart, t: &Tabulated) {
     let name = crate::tui::model::words::surface_name_of(t);
     m.title = format!("C(q) of {name}");
     m.series.push(Series {
         name: "table".into(),
         points: t.q.iter().copied().zip(t.psd.iter().copied()).collect(),
         role: Role::Reference,
-        draw: Draw::Points,
+        style: Draw::Points,
+        look: None,
     });
     let mut used: Vec<(f64, f64)> = vec![(t.q_min, t.psd_at(t.q_min))];
     used.extend(
@@ -110,7 +104,8 @@ fn tabulated(m: &mut ChartModel, t: &Tabulated) {
         name: "C(q) used".into(),
         points: used.clone(),
         role: Role::Theory,
-        draw: Draw::Line,
+        style: Draw::Line,
+        look: None,
     });
     let (q, c): (Vec<f64>, Vec<f64>) = used.iter().copied().unzip();
     let fit = fit_self_affine(&q, &c, &vec![1.0; q.len()]);
@@ -135,6 +130,7 @@ fn tabulated(m: &mut ChartModel, t: &Tabulated) {
         name: format!("fit H={}±{}", sig(fit.hurst, 3), sig(fit.hurst_error, 1)),
         points: pts,
         role: Role::Closed,
-        draw: Draw::Dashed,
+        style: Draw::Dashed,
+        look: None,
     });
 }

@@ -6,21 +6,19 @@
 //! Space plays them from q_L to q_s. The frames are the engine's own march
 //! ([`crate::tui::model::data::ScalesData`]); nothing here computes.
 
-use crate::tui::charts::chart_model::{base, set_empty, ChartModel, Draw, Role, Series, VLine};
+use crate::numfmt::sig;
 use crate::tui::charts::plot::{self, Scale};
+use crate::tui::charts::shared::{base, set_empty, Chart, Draw, Role, Series, VLine};
 use crate::tui::model::app::App;
-use crate::tui::model::kinds::ChartKind;
-use crate::tui::model::words::sig;
 
 /// Why a scale chart is empty.
-fn empty(app: &App, m: &mut ChartModel) {
+fn empty(app: &App, m: &mut Chart) {
     set_empty(m, app, app.results.scales.as_ref());
 }
 
 /// Pr(σ*, q) at the current frame.
-pub fn scales(app: &App) -> ChartModel {
+pub fn scales(app: &App) -> Chart {
     let mut m = base(
-        ChartKind::Scales,
         "Pr(σ*, q) scale by scale".into(),
         "σ* = σ/E*ḡ",
         "Pr",
@@ -45,14 +43,16 @@ pub fn scales(app: &App) -> ChartModel {
             name: "q = q_s".into(),
             points: last.pr.clone(),
             role: Role::Compare,
-            draw: Draw::Line,
+            style: Draw::Line,
+            look: None,
         });
     }
     m.series.push(Series {
         name: format!("q/q_L = {}", sig(f.q_rel, 3)),
         points: f.pr.clone(),
         role: Role::Theory,
-        draw: Draw::Line,
+        style: Draw::Line,
+        look: None,
     });
     let lo = f.pr.first().map_or(0.0, |p| p.0);
     let hi = f.pr.last().map_or(1.0, |p| p.0);
@@ -86,9 +86,8 @@ pub fn scales(app: &App) -> ChartModel {
 }
 
 /// a_r(q) along the march, the current frame marked.
-pub fn scales_area(app: &App) -> ChartModel {
+pub fn scales_area(app: &App) -> Chart {
     let mut m = base(
-        ChartKind::ScalesArea,
         "a_r(q) along the resolution".into(),
         "q/q_L",
         "a_r(q)",
@@ -109,7 +108,8 @@ pub fn scales_area(app: &App) -> ChartModel {
         name: "a_r(q)".into(),
         points: d.area.clone(),
         role: Role::Theory,
-        draw: Draw::Line,
+        style: Draw::Line,
+        look: None,
     });
     let x = f.q_rel.log10();
     m.vlines.push(VLine {
@@ -121,7 +121,8 @@ pub fn scales_area(app: &App) -> ChartModel {
         name: "q".into(),
         points: vec![(f.q_rel, f.a_r)],
         role: Role::Current,
-        draw: Draw::Points,
+        style: Draw::Points,
+        look: None,
     });
     // a_r(q) falls from 1 at q_L over decades: log axes, the top at a_r = 1
     let q_hi = d.area.last().map_or(10.0, |p| p.0).max(1.0 + 1e-9);

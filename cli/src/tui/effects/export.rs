@@ -8,11 +8,10 @@
 //! unavailable values are empty cells.
 //!
 //! `s`: writes the visible charts as SVG and PNG (`asperity-NAME-N-CHART.svg|png`) through
-//! the chart renderer ([`crate::chart`]), from the same [`ChartModel`]s the screen shows.
+//! the chart renderer ([`crate::chart`]), from the same [`Chart`]s the screen shows.
 
-use crate::chart::{self, ChartSpec, Series, SeriesStyle};
-use crate::tui::charts::plot::Scale;
-use crate::tui::charts::{self, ChartKind, ChartModel, Role};
+use crate::chart;
+use crate::tui::charts::{self, Chart, ChartKind};
 use crate::tui::model::app::App;
 use crate::tui::model::data::{GfmdView, SweepData, ThicknessData};
 use asperity::error::{Error, Result};
@@ -277,104 +276,13 @@ pub fn gfmd_csv(g: &GfmdView) -> String {
     t
 }
 
-/// The chart of the renderer ([`crate::chart`]) for a chart model, as drawn on screen: the
-/// same series, names and colours ([`crate::looks`]); the −σ_a* wall becomes a dashed vertical line, the current point a
-/// point; guide lines (σ* = 0, the p* line) are left out; on a clipped log axis the points
-/// below the chart's range are gaps, as on screen.
-pub fn chart_spec(m: &ChartModel, scene_note: &str) -> ChartSpec {
-    let mut series = Vec::new();
-    let ylo = m.ys.inverse(m.yb[0]);
-    let (y0, y1) = {
-        let mut lo = f64::INFINITY;
-        let mut hi = f64::NEG_INFINITY;
-        for s in &m.series {
-            for &(_, y) in &s.points {
-                if y.is_finite() && (!m.clip_y || y >= ylo) {
-                    lo = lo.min(y);
-                    hi = hi.max(y);
-                }
-            }
-        }
-        (lo, hi)
-    };
-    // vertical markers span the data's y range (> 0 on a log axis); the markers of one role
-    // (the two cut-offs of a spectrum) are one series, one legend entry
-    let lo = if m.ys == Scale::Log10 {
-        m.series
-            .iter()
-            .flat_map(|s| s.points.iter())
-            .map(|q| q.1)
-            .filter(|y| y.is_finite() && *y > 0.0)
-            .fold(f64::INFINITY, f64::min)
-    } else {
-        y0.min(0.0)
-    };
-    let mut marked: Vec<(Role, usize)> = Vec::new();
-    for v in &m.vlines {
-        let marked_role = matches!(v.role, Role::Wall | Role::JumpIn | Role::PullOff);
-        if !(marked_role && lo.is_finite() && y1.is_finite()) {
-            continue;
-        }
-        let line = [(v.x, lo), (v.x, y1)];
-        match marked.iter().find(|(r, _)| *r == v.role) {
-            Some(&(_, i)) => {
-                let s: &mut Series = &mut series[i];
-                s.points.push((f64::NAN, f64::NAN));
-                s.points.extend(line);
-                if s.name.is_empty() {
-                    s.name = v.name.clone();
-                }
-            }
-            None => {
-                let look = m.vline_look(v);
-                marked.push((v.role, series.len()));
-                series.push(Series {
-                    name: v.name.clone(),
-                    points: line.to_vec(),
-                    style: SeriesStyle::Dashed,
-                    colour: look.ink.rgb(),
-                    shape: look.shape,
-                });
-            }
-        }
-    }
-    for (i, s) in m.series.iter().enumerate() {
-        let look = m.series_look(i);
-        let mut points: Vec<(f64, f64)> = if m.clip_y {
-            s.points
-                .iter()
-                .map(|&(x, y)| if y >= ylo { (x, y) } else { (x, f64::NAN) })
-                .collect()
-        } else {
-            s.points.clone()
-        };
-        // the terminal shades a band with columns of points; a file fills its outline
-        let style = if s.role == Role::Band {
-            points = chart::band_outline(&points);
-            SeriesStyle::Band
-        } else {
-            s.draw
-        };
-        series.push(Series {
-            // the current point is p* on the load charts, q on the scale view's
-            name: if s.role == Role::Current {
-                format!("current {}", s.name)
-            } else {
-                s.name.clone()
-            },
-            points,
-            style,
-            colour: look.ink.rgb(),
-            shape: look.shape,
-        });
-    }
-    ChartSpec {
+/// The chart `m` as the `s` export writes it: the same value the view drew, its title
+/// followed by the scene (`scene_note`). The file renderer draws it its own way
+/// ([`crate::chart::flat`]).
+pub fn file_chart(m: &Chart, scene_note: &str) -> Chart {
+    Chart {
         title: format!("{} — {scene_note}", m.title),
-        x_label: m.x_label.clone(),
-        y_label: m.y_label.clone(),
-        x_log: m.xs == Scale::Log10,
-        y_log: m.ys == Scale::Log10,
-        series,
+        ..m.clone()
     }
 }
 
@@ -435,7 +343,7 @@ pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
             kinds.push(k);
         }
     }
-    let models: Vec<(ChartKind, ChartModel)> = kinds
+    let models: Vec<(ChartKind, Chart)> = kinds
         .into_iter()
         .map(|k| (k, charts::build(app, k)))
         .filter(|(_, m)| m.empty.is_none())
@@ -449,20 +357,20 @@ pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
     let t = if sc.thickness_qr().is_infinite() {
         "∞".to_string()
     } else {
-        crate::tui::charts::plot::format_number(sc.thickness_qr())
+        crate::numfmt::short(sc.thickness_qr())
     };
     let system = crate::tui::model::words::surface_name(sc).unwrap_or_else(|| app.params.preset.name.clone());
     let note = format!(
         "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
         system,
         sc.model().label(),
-        crate::tui::charts::plot::format_number(sc.surface_energy_j_m2())
+        crate::numfmt::short(sc.surface_energy_j_m2())
     );
     let mut paths = Vec::new();
     for (k, m) in &models {
-        let spec = chart_spec(m, &note);
+        let spec = file_chart(m, &note);
         for (ext, write) in [
-            ("svg", chart::write_svg as fn(&ChartSpec, &Path) -> std::io::Result<()>),
+            ("svg", chart::write_svg as fn(&Chart, &Path) -> std::io::Result<()>),
             ("png", chart::write_png),
         ] {
             let path = dir.join(format!("asperity-{name}-{n}-{}.{ext}", k.name()));

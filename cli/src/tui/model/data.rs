@@ -84,13 +84,13 @@ pub fn extra_readouts(ev: &Evaluation) -> Vec<(String, String)> {
         return Vec::new();
     }
     let mut v = vec![
-        ("σ_a*".into(), format!("{:.4}", ev.sigma_a)),
-        ("tensile".into(), crate::tui::model::words::sig(ev.tensile_area, 3)),
-        ("residual".into(), format!("{:.1e}", ev.residual)),
+        ("σ_a*".into(), crate::numfmt::sig(ev.sigma_a, 4)),
+        ("tensile".into(), crate::numfmt::sig(ev.tensile_area, 3)),
+        ("residual".into(), crate::numfmt::sig(ev.residual, 2)),
     ];
     if ev.branches.len() < 2 {
         if let Some(u) = ev.unloading_a_r {
-            v.push(("unload a_r".into(), format!("{u:.5}")));
+            v.push(("unload a_r".into(), crate::numfmt::sig(u, 4)));
         }
     }
     v
@@ -494,18 +494,26 @@ fn invariant_rows(r: &asperity::gfmd::reduction::Reduction) -> Vec<(String, Stri
         // ratios like 200.000000000 (a quotient of lengths) in four significant digits
         format!(
             "{} (full {})",
-            crate::tui::model::words::sig(r.reduced.bandwidth, 4),
-            crate::tui::model::words::sig(r.full.bandwidth, 4)
+            crate::numfmt::sig(r.reduced.bandwidth, 4),
+            crate::numfmt::sig(r.full.bandwidth, 4)
         ),
     )];
     if r.full.gamma > 0.0 {
         v.push((
             "GFMD γ̃".to_string(),
-            format!("{:.3} (full {:.3})", r.reduced.gamma_glo, r.full.gamma_glo),
+            format!(
+                "{} (full {})",
+                crate::numfmt::sig(r.reduced.gamma_glo, 3),
+                crate::numfmt::sig(r.full.gamma_glo, 3)
+            ),
         ));
         v.push((
             "GFMD μT".to_string(),
-            format!("{:.3} (full {:.3})", r.reduced.tabor, r.full.tabor),
+            format!(
+                "{} (full {})",
+                crate::numfmt::sig(r.reduced.tabor, 3),
+                crate::numfmt::sig(r.full.tabor, 3)
+            ),
         ));
     }
     let lost: Vec<&str> = r

@@ -144,7 +144,7 @@ impl LoadHistory {
 
     /// One line: the branch and why (the status line says it when the branch changes).
     pub fn describe(&self) -> String {
-        let s = crate::tui::model::words::sig;
+        let s = crate::numfmt::sig;
         match (self.on, self.why) {
             (Path::Unloading, Why::JumpedIn(j)) => format!(
                 "unloading branch: the loading branch ended at p* = {} (jump-in); stepping down stays here until pull-off; r resets",

@@ -5,8 +5,8 @@
 //! keeps the pins, the chart builder draws them ([`crate::tui::charts::build`]), `e`/`s` export
 //! them.
 
+use crate::numfmt::short;
 use crate::tui::model::kinds::ChartKind;
-use crate::tui::model::words::format_number;
 use asperity::input::scene::Scene;
 
 /// Most pins kept (each has its own colour; the oldest goes first).
@@ -32,10 +32,10 @@ pub fn label(pin: &Scene, now: &Scene) -> String {
         parts.push(format!("t·q_r={}", thickness(pin.thickness_qr())));
     }
     if pin.surface_energy_j_m2() != now.surface_energy_j_m2() {
-        parts.push(format!("γ_s={}", format_number(pin.surface_energy_j_m2())));
+        parts.push(format!("γ_s={}", short(pin.surface_energy_j_m2())));
     }
     if pin.pressure() != now.pressure() {
-        parts.push(format!("p*={}", format_number(pin.pressure())));
+        parts.push(format!("p*={}", short(pin.pressure())));
     }
     if pin.spectrum() != now.spectrum()
         || pin.contact_modulus_pa() != now.contact_modulus_pa()
@@ -54,7 +54,7 @@ fn thickness(t: f64) -> String {
     if t.is_infinite() {
         "∞".into()
     } else {
-        format_number(t)
+        short(t)
     }
 }
 

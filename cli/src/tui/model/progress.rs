@@ -63,7 +63,7 @@ impl GfmdPhase {
 
     /// What the status line says the job is doing.
     pub fn sentence(&self) -> String {
-        let p = |p: &f64| crate::tui::model::words::sig(*p, 3);
+        let p = |p: &f64| crate::numfmt::sig(*p, 3);
         match self {
             GfmdPhase::Relax { p: x } => format!("relaxing at p* = {}", p(x)),
             GfmdPhase::Theory => "the theory on the map's spectrum at p*".into(),
@@ -185,22 +185,7 @@ pub fn eta_s(plan: &[GfmdPhase], done: &[f64], current_elapsed: f64) -> Option<f
     Some(current + rest.map(estimate).sum::<f64>())
 }
 
-/// A duration: "12 ms", "0.4 s", "12 s", "2 min 05 s".
-pub fn format_secs(s: f64) -> String {
-    if !s.is_finite() || s < 0.0 {
-        return "–".into();
-    }
-    if s < 0.1 {
-        format!("{:.0} ms", s * 1e3)
-    } else if s < 10.0 {
-        format!("{s:.1} s")
-    } else if s < 60.0 {
-        format!("{s:.0} s")
-    } else {
-        let m = (s / 60.0).floor();
-        format!("{m:.0} min {:02.0} s", (s - 60.0 * m).floor())
-    }
-}
+pub use crate::numfmt::duration as format_secs;
 
 /// "12 s, about 38 s left", or "3.2 s, estimating the time left".
 pub fn time_text(elapsed: f64, left: Option<f64>) -> String {

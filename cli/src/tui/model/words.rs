@@ -47,23 +47,6 @@ pub fn brief(msg: &str) -> String {
     s[..cut].trim().trim_end_matches(',').to_string()
 }
 
-/// A value with `n` significant digits, compact.
-pub fn sig(x: f64, n: usize) -> String {
-    if !x.is_finite() {
-        return format_number(x);
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let e = x.abs().log10().floor() as i32;
-    if (-3..5).contains(&e) {
-        let d = (n as i32 - 1 - e).max(0) as usize;
-        format!("{x:.d$}")
-    } else {
-        format!("{x:.*e}", n.saturating_sub(1))
-    }
-}
-
 /// The file a measured spectrum came from (its name, without the directories), or None for
 /// the preset's own spectrum.
 pub fn surface_name(scene: &asperity::input::scene::Scene) -> Option<String> {
@@ -78,44 +61,6 @@ pub fn surface_name_of(t: &asperity::surface::tabulated::Tabulated) -> String {
     std::path::Path::new(&t.source)
         .file_name()
         .map_or_else(|| t.source.clone(), |n| n.to_string_lossy().into_owned())
-}
-
-/// A number in at most `width`-ish characters: 0.0123, 1.2e-5, 350, 1e3.
-pub fn format_number(x: f64) -> String {
-    if !x.is_finite() {
-        return if x.is_nan() {
-            "–".into()
-        } else if x > 0.0 {
-            "∞".into()
-        } else {
-            "-∞".into()
-        };
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let a = x.abs();
-    if (1e-2..1e4).contains(&a) {
-        let digits = if a >= 100.0 {
-            0
-        } else if a >= 10.0 {
-            1
-        } else if a >= 1.0 {
-            2
-        } else {
-            3
-        };
-        let s = format!("{x:.digits$}");
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    } else {
-        let s = format!("{x:.1e}");
-        // 1.0e-5 → 1e-5
-        s.replace(".0e", "e")
-    }
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 //! at the top of the chart: no entry is ever left out.
 
 use crate::looks::Look;
-use crate::tui::charts::chart_model::{ChartModel, Draw, Role};
+use crate::tui::charts::shared::{Chart, Draw, Role};
 use crate::tui::view::palette::Palette;
 use ratatui::text::{Line, Span};
 
@@ -37,7 +37,7 @@ impl Entry {
 
 /// The entries of `m`'s key when drawn with plane y bounds `yb`: the named vertical markers,
 /// the series with something to draw, then the jump-in and pull-off markers.
-pub fn entries(m: &ChartModel, yb: [f64; 2]) -> Vec<Entry> {
+pub fn entries(m: &Chart, yb: [f64; 2]) -> Vec<Entry> {
     let mut out = Vec::new();
     let mut last = Vec::new();
     for v in &m.vlines {
@@ -57,14 +57,14 @@ pub fn entries(m: &ChartModel, yb: [f64; 2]) -> Vec<Entry> {
         }
     }
     for (i, s) in m.series.iter().enumerate() {
-        if m.runs(s, yb, usize::MAX).is_empty() {
+        if crate::tui::charts::plot::runs(m, s, yb, usize::MAX).is_empty() {
             continue;
         }
         out.push(Entry {
             name: s.name.clone(),
             role: s.role,
             look: m.series_look(i),
-            draw: s.draw,
+            draw: s.style,
         });
     }
     out.extend(last);

@@ -11,11 +11,11 @@ pub mod panel;
 
 use crate::chart::dashes;
 use crate::looks::Glyph;
+pub use crate::numfmt::sig;
 use crate::tui::charts::plot;
-use crate::tui::charts::{self, ChartModel, Draw};
+use crate::tui::charts::{self, Draw};
 use crate::tui::model::app::{App, Overlay};
 use crate::tui::model::keys;
-pub use crate::tui::model::words::sig;
 pub use crate::tui::view::layout::MIN_SIZE;
 pub use crate::tui::view::palette::{Palette, SPINNER, SPINNER_DELAY};
 use crate::tui::view::panel::draw_panel;
@@ -254,7 +254,7 @@ fn marker(g: Glyph) -> Marker {
 type Drawn = (Vec<(f64, f64)>, Style, Marker, GraphType);
 
 /// Draws one chart model into `area`; `focused` highlights the panel the selector changes.
-pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, focused: bool) {
+pub fn render_model(f: &mut Frame, area: Rect, m: &crate::chart::Chart, pal: Palette, focused: bool) {
     let mark = if focused { "▸" } else { "" };
     let mut title = vec![Span::raw(format!(" {mark}{} ", m.title))];
     if m.stale {
@@ -303,10 +303,10 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &ChartModel, pal: Palette, foc
     for (i, s) in m.series.iter().enumerate() {
         let lk = m.series_look(i);
         let (style, mk) = (pal.look(lk), marker(lk.glyph));
-        for r in m.runs(s, yb, max_points) {
-            if s.draw == Draw::Points {
+        for r in plot::runs(m, s, yb, max_points) {
+            if s.style == Draw::Points {
                 drawn.push((r, style, mk, GraphType::Scatter));
-            } else if let Some(p) = s.draw.pattern() {
+            } else if let Some(p) = s.style.pattern() {
                 // a broken line as its strokes, each a line of its own
                 drawn.extend(dashes(&r, p, cell).into_iter().map(|d| (d, style, mk, GraphType::Line)));
             } else {

@@ -2,10 +2,9 @@
 //! γ̃_glo, convergence, error, the trust read-out, time), the branches of a hysteresis window, the GFMD numbers and
 //! the scene in physical units.
 
-use crate::tui::charts::plot;
+use crate::numfmt::sig;
 use crate::tui::model::app::{App, GfmdState, Param};
 use crate::tui::model::progress::format_secs;
-use crate::tui::model::words::sig;
 use crate::tui::view::palette::{Palette, SPINNER};
 use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
@@ -76,8 +75,8 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         }
     };
     // the branch the load history has reached (the engine's point is the loading branch's)
-    let on_unloading = crate::tui::charts::chart_model::path_row(app).is_some();
-    let a_r = crate::tui::charts::chart_model::path_a_r(app);
+    let on_unloading = crate::tui::charts::shared::path_row(app).is_some();
+    let a_r = crate::tui::charts::shared::path_a_r(app);
     row_styled("a_r", a_r.map_or_else(dash, |a| sig(a, 4)), stale_point);
     // inside a hysteresis window: the branch the load history reached, next to its a_r
     // (the branch alone where the reason does not fit: the status line said it)
@@ -98,7 +97,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         _ => dash(),
     };
     row_styled("σ̄_c*", stress, stale_point);
-    let gap = crate::tui::charts::chart_model::path_gap(app).map_or_else(dash, |g| sig(g, 4));
+    let gap = crate::tui::charts::shared::path_gap(app).map_or_else(dash, |g| sig(g, 4));
     row_styled("ū/h_rms", gap, stale_gap && app.results.gap.is_some());
     // with adhesion: which branch the gap is of, and its bracket (docs/physics.md §5.1)
     if app.params.scene.is_adhesive() {
@@ -134,7 +133,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         "err a_r",
         pt.map_or_else(dash, |p| {
             if p.error_estimate.is_finite() {
-                format!("{:.1e}", p.error_estimate)
+                sig(p.error_estimate, 2)
             } else {
                 dash()
             }
@@ -147,7 +146,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     row(
         "time",
         match pt {
-            Some(p) if app.ui.show_timing => format_time(p.elapsed_s),
+            Some(p) if app.ui.show_timing => format_secs(p.elapsed_s),
             Some(_) => "(hidden)".into(),
             None => dash(),
         },
@@ -272,7 +271,7 @@ pub use crate::tui::model::words::{surface_name, surface_name_of};
 /// A value with an SI prefix: 250.0 kPa, 0.7766 µm.
 pub fn si(x: f64, unit: &str) -> String {
     if !x.is_finite() || x == 0.0 {
-        return format!("{} {unit}", plot::format_number(x));
+        return format!("{} {unit}", crate::numfmt::short(x));
     }
     const PREFIXES: [(f64, &str); 9] = [
         (1e12, "T"),
@@ -294,35 +293,11 @@ pub fn si(x: f64, unit: &str) -> String {
         .copied()
         .unwrap_or((smallest, if unit == "Pa" { "" } else { "p" }));
     let v = x / f;
-    let text = if (1e-3..1e4).contains(&v.abs()) {
-        trim_zeros(&sig(v, 4))
-    } else {
-        sig(v, 3)
-    };
-    format!("{text} {p}{unit}")
-}
-
-/// "250.0" → "250", "0.7770" → "0.777" (numbers without an exponent only).
-fn trim_zeros(s: &str) -> String {
-    if s.contains('.') && !s.contains('e') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s.to_string()
-    }
+    format!("{} {p}{unit}", crate::numfmt::format(v, 4, true))
 }
 
 /// `s` padded with spaces to `w` display columns (combining accents take none).
 fn pad(s: &str, w: usize) -> String {
     let n = Span::raw(s).width();
     format!("{s}{}", " ".repeat(w.saturating_sub(n)))
-}
-
-pub fn format_time(s: f64) -> String {
-    if s < 1e-3 {
-        format!("{:.0} µs", s * 1e6)
-    } else if s < 1.0 {
-        format!("{:.1} ms", s * 1e3)
-    } else {
-        format!("{s:.2} s")
-    }
 }

@@ -1,118 +1,22 @@
-//! A chart as plain data ([`ChartModel`]: title, axes, series in data units, vertical
-//! markers) and the helpers every chart builder shares (the theory's role and name, the other
-//! models' data, the preset's reference points, the current-point marker).
+//! The helpers every chart builder shares: the theory's role and name, the other models'
+//! data, the preset's reference points, the current-point marker. The chart they build is
+//! the one chart model, [`crate::chart::Chart`].
 
-use crate::looks::{look, Look};
 use crate::tui::charts::plot::{self, Scale};
 use crate::tui::model::app::App;
 use crate::tui::model::data::{PointData, SweepData};
-use crate::tui::model::kinds::{overlay_models, slot, slot_name, ChartKind};
+use crate::tui::model::kinds::{overlay_models, slot, slot_name};
 use crate::tui::model::stored_gfmd::stored_gfmd;
 use asperity::input::model::Model;
 
-/// How a series is drawn: the file renderer's style, so the screen and the `s` export agree
-/// by construction.
+/// How a series is drawn: the one chart model's style, so the screen and the `s` export
+/// agree by construction.
 pub use crate::chart::SeriesStyle as Draw;
 
-/// What a series is (the view and the `s` export take its colour and marker from
-/// [`crate::looks`]).
+/// What a series is (every renderer takes its colour and marker from [`crate::looks`]).
 pub use crate::looks::Role;
 
-/// One series, in data units (NaN marks a gap).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Series {
-    /// Legend name.
-    pub name: String,
-    /// Points (data units).
-    pub points: Vec<(f64, f64)>,
-    /// What it is.
-    pub role: Role,
-    /// How it is drawn.
-    pub draw: Draw,
-}
-
-/// A vertical marker across the whole y range.
-#[derive(Debug, Clone, PartialEq)]
-pub struct VLine {
-    /// x (data units).
-    pub x: f64,
-    /// What it is ([`Role::Guide`], [`Role::Wall`], [`Role::JumpIn`], [`Role::PullOff`]).
-    pub role: Role,
-    /// Legend name (empty: no legend entry).
-    pub name: String,
-}
-
-/// A chart ready to draw.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ChartModel {
-    /// Which chart.
-    pub kind: ChartKind,
-    /// Title (the quantity and the load it is drawn at).
-    pub title: String,
-    /// x axis title, with units.
-    pub x_label: String,
-    /// y axis title, with units.
-    pub y_label: String,
-    /// x scale.
-    pub xs: Scale,
-    /// y scale.
-    pub ys: Scale,
-    /// Plane bounds of x before rounding (the view rounds them to [`plot::ticks`]).
-    pub xb: [f64; 2],
-    /// Plane bounds of y before rounding.
-    pub yb: [f64; 2],
-    /// Series, drawn in this order (the key curve last).
-    pub series: Vec<Series>,
-    /// Vertical markers.
-    pub vlines: Vec<VLine>,
-    /// Why there is nothing to draw.
-    pub empty: Option<String>,
-    /// The data belong to an earlier scene (a newer one is being computed).
-    pub stale: bool,
-    /// Points of the y data outside [`ChartModel::yb`] are dropped (log axes spanning many
-    /// decades).
-    pub clip_y: bool,
-    /// Model slot of the current scene (the theory's colour).
-    pub model: usize,
-    /// The y axis hugs the data (two labels, a fine step) instead of three round labels
-    /// that may double its span (σ̄_c*: the models' differences stay visible).
-    pub fit_y: bool,
-}
-
-impl ChartModel {
-    /// The look of series `i`: its role's, the k-th reference source of the chart its k-th
-    /// marker.
-    pub fn series_look(&self, i: usize) -> Look {
-        let role = self.series[i].role;
-        let nth = self.series[..i].iter().filter(|s| s.role == role).count();
-        look(role, self.model, nth)
-    }
-
-    /// The look of a vertical marker.
-    pub fn vline_look(&self, v: &VLine) -> Look {
-        look(v.role, self.model, 0)
-    }
-
-    /// Plane points of series `s` drawn with y bounds `yb`, split at gaps, y outside `yb`
-    /// dropped when clipping, decimated to about `max_points`.
-    pub fn runs(&self, s: &Series, yb: [f64; 2], max_points: usize) -> Vec<Vec<(f64, f64)>> {
-        let pts: Vec<(f64, f64)> = if self.clip_y {
-            s.points
-                .iter()
-                .map(|&(x, y)| match self.ys.forward(y) {
-                    Some(v) if v >= yb[0] && v <= yb[1] => (x, y),
-                    _ => (x, f64::NAN),
-                })
-                .collect()
-        } else {
-            s.points.clone()
-        };
-        plot::segments(&pts, self.xs, self.ys)
-            .into_iter()
-            .map(|r| plot::decimate(&r, max_points))
-            .collect()
-    }
-}
+pub use crate::chart::{Chart, Series, VLine};
 
 pub fn theory_role(app: &App) -> Role {
     if app.ui.all_models {
@@ -145,7 +49,7 @@ pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T
 /// Marks a chart with nothing to draw: where the result it draws failed, its title says why in
 /// brief and its body in full (another quantity's failure does not concern it); else
 /// "computing…" while the worker runs, or "no data".
-pub fn set_empty<T>(m: &mut ChartModel, app: &App, own: Option<&asperity::error::Result<T>>) {
+pub fn set_empty<T>(m: &mut Chart, app: &App, own: Option<&asperity::error::Result<T>>) {
     match own {
         Some(Err(e)) => mark_failed(m, &crate::tui::model::words::describe(e)),
         _ => m.empty = Some(if app.jobs.busy { "computing…" } else { "no data" }.into()),
@@ -154,34 +58,18 @@ pub fn set_empty<T>(m: &mut ChartModel, app: &App, own: Option<&asperity::error:
 
 /// A chart whose quantity failed: `" · failed: <gist>"` in the title and the whole reason in
 /// the body.
-pub fn mark_failed(m: &mut ChartModel, why: &str) {
+pub fn mark_failed(m: &mut Chart, why: &str) {
     m.title
         .push_str(&format!(" · failed: {}", crate::tui::model::words::brief(why)));
     m.empty = Some(format!("no data: {why}"));
 }
 
-pub fn base(kind: ChartKind, title: String, x: &str, y: &str, xs: Scale, ys: Scale) -> ChartModel {
-    ChartModel {
-        kind,
-        title,
-        x_label: x.into(),
-        y_label: y.into(),
-        xs,
-        ys,
-        xb: [0.0, 1.0],
-        yb: [0.0, 1.0],
-        series: Vec::new(),
-        vlines: Vec::new(),
-        empty: None,
-        stale: false,
-        clip_y: false,
-        model: 2,
-        fit_y: false,
-    }
+pub fn base(title: String, x: &str, y: &str, xs: Scale, ys: Scale) -> Chart {
+    Chart::new(title, x, y, xs, ys)
 }
 
 /// Plane bounds of every series (and vertical line, for x).
-pub fn data_bounds(m: &ChartModel) -> (Option<[f64; 2]>, Option<[f64; 2]>) {
+pub fn data_bounds(m: &Chart) -> (Option<[f64; 2]>, Option<[f64; 2]>) {
     let runs: Vec<Vec<(f64, f64)>> = m
         .series
         .iter()
@@ -258,11 +146,11 @@ pub fn reference_name(app: &App, r: &asperity::input::preset::ReferencePoint, wi
     let mut cond = Vec::new();
     let gamma = r.gamma.unwrap_or(app.params.preset.adhesion.surface_energy_j_m2);
     if gamma != app.params.scene.surface_energy_j_m2() {
-        cond.push(format!("γ_s={}", plot::format_number(gamma)));
+        cond.push(format!("γ_s={}", crate::numfmt::short(gamma)));
     }
     let t = r.thickness_qr.unwrap_or(f64::INFINITY);
     if with_thickness && t.to_bits() != app.params.scene.thickness_qr().to_bits() {
-        cond.push(format!("t·q_r={}", plot::format_number(t)));
+        cond.push(format!("t·q_r={}", crate::numfmt::short(t)));
     }
     if let Some(n) = r.model {
         cond.push(format!("model {n}"));
@@ -286,7 +174,8 @@ pub fn reference_series(app: &App, quantity: &str, y: impl Fn(f64, f64) -> f64) 
                 name,
                 points: vec![pt],
                 role: Role::Reference,
-                draw: Draw::Points,
+                style: Draw::Points,
+                look: None,
             }),
         }
     }
@@ -294,7 +183,7 @@ pub fn reference_series(app: &App, quantity: &str, y: impl Fn(f64, f64) -> f64) 
 }
 
 /// A preview sweep's chart says that the full one is on its way.
-pub fn mark_preview(m: &mut ChartModel, sw: &SweepData) {
+pub fn mark_preview(m: &mut Chart, sw: &SweepData) {
     if sw.preview {
         m.title.push_str(" · refining…");
     }
@@ -312,7 +201,7 @@ pub fn load_x(app: &App) -> [f64; 2] {
 
 /// Marks the current load: a guide at `x` and the current point (drawn under the reference
 /// points, which a caption may point at).
-pub fn add_current(m: &mut ChartModel, x: f64, y: Option<f64>) {
+pub fn add_current(m: &mut Chart, x: f64, y: Option<f64>) {
     m.vlines.insert(
         0,
         VLine {
@@ -334,7 +223,8 @@ pub fn add_current(m: &mut ChartModel, x: f64, y: Option<f64>) {
                 name: "p*".into(),
                 points: vec![(x, y)],
                 role: Role::Current,
-                draw: Draw::Points,
+                style: Draw::Points,
+                look: None,
             },
         );
     }
