@@ -136,7 +136,7 @@ def test_sweep_takes_its_values_once():
 
 def test_model5_is_model3_without_adhesion_and_follows_gamma_glo():
     """Model 5 (docs/physics.md §3.6): model 3's coefficients at γ_s = 0 (so the same a_r), and
-    with adhesion W(0) rising with γ̃_glo in model 4's form (at the scene's bandwidth), through the scene."""
+    with adhesion W(0) rising with γ̃_glo·√μ_T in model 4's form (at the scene's bandwidth), through the scene."""
     dry = asperity.Scene.preset("system-1").replace(surface_energy_j_m2=0.0, thickness_qr=math.inf, pressure=0.01)
     assert asperity.evaluate(dry.replace(model=5)).a_r == asperity.evaluate(dry.replace(model=3)).a_r
 
@@ -146,7 +146,7 @@ def test_model5_is_model3_without_adhesion_and_follows_gamma_glo():
 
     half = asperity.Scene.preset("system-2").replace(model=5, thickness_qr=math.inf)
     assert half.model == "5"
-    # the full bandwidth λ_r/λ_s = 128 (3 octaves above the set's 16): floor 0.15 + 3 x 0.0435
-    assert abs(w0(half) - (0.15 + 3 * 0.0435)) < 1e-3  # γ̃_glo = 0.10: the floor
+    # the full bandwidth λ_r/λ_s = 128 (3 octaves above the set's 16): floor 0.125 + 3 x 0.0411
+    assert abs(w0(half) - (0.125 + 3 * 0.0411)) < 1e-3  # γ̃_glo = 0.10, μ_T = 1.00: the floor
     # thinner slabs store less elastic energy in full contact: more γ̃_glo, more W(0)
     assert 0.25 < w0(half.replace(thickness_qr=0.3)) < w0(half.replace(thickness_qr=0.15)) < 1.0
