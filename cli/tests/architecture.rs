@@ -381,3 +381,38 @@ fn functions_of_the_binary_crate_stay_short() {
     }
     assert!(long.is_empty(), "functions over {MAX_FN_LINES} lines: {long:#?}");
 }
+
+/// The pure parts of the explorer (update, view and the chart builders) read no clock and no
+/// file: time enters as `Msg::Clock`, files as the messages of the effects.
+#[test]
+fn update_and_view_read_no_clock_and_no_file() {
+    const IMPURE: [&str; 7] = [
+        "Instant::now",
+        ".elapsed()",
+        "SystemTime",
+        "std::fs",
+        "File::",
+        ".is_file()",
+        "read_dir",
+    ];
+    let c = load();
+    let mut seen = 0;
+    let mut found = Vec::new();
+    for (m, (path, text)) in &c.files {
+        let pure = ["tui::update", "tui::view", "tui::charts"]
+            .iter()
+            .any(|p| m == p || m.starts_with(&format!("{p}::")));
+        if !pure || m.ends_with("_tests") {
+            continue;
+        }
+        seen += 1;
+        let code = code_of(text);
+        for bad in IMPURE {
+            if code.contains(bad) {
+                found.push(format!("{} uses {bad}", path.display()));
+            }
+        }
+    }
+    assert!(seen > 20, "only {seen} files of update, view and charts read");
+    assert!(found.is_empty(), "{}", found.join("\n"));
+}

@@ -223,6 +223,7 @@ pub fn run_app(mut app: App) -> Result<()> {
                 Err(_) => return Ok(()),
             }
         };
+        todo.extend(update::update(&mut app, Msg::Clock(Instant::now())));
         let Some(first) = first else {
             todo.extend(update::update(&mut app, Msg::Tick));
             continue;

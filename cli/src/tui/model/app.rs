@@ -87,6 +87,7 @@ impl App {
                 color: true,
                 mouse: false,
                 spinner: 0,
+                now: None,
                 size: None,
             },
             results: Results {
@@ -145,7 +146,7 @@ impl App {
         self.jobs.pending = false;
         self.jobs.gen += 1;
         self.jobs.busy = true;
-        self.jobs.busy_since = Some(std::time::Instant::now());
+        self.jobs.busy_since = self.ui.now;
         let models = if self.ui.all_models {
             charts::overlay_models(&self.params.scene)
                 .into_iter()

@@ -19,6 +19,9 @@ pub enum Msg {
     Reply(Box<Reply>),
     /// Time passed with nothing else happening (the spinner; a playing scale view).
     Tick,
+    /// The loop's clock, read once per batch of messages (before them) and per tick: the only
+    /// way time enters the state.
+    Clock(std::time::Instant),
     /// The terminal's size, at the start and whenever it changes.
     Resize {
         /// Columns.

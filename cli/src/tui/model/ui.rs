@@ -83,6 +83,11 @@ pub struct Ui {
     pub color: bool,
     /// Spinner phase (advanced by ticks while busy).
     pub spinner: usize,
+    /// The loop's clock as of its last [`Msg::Clock`]: update and view read no clock of their
+    /// own, they take the time from here (`None` until the first).
+    ///
+    /// [`Msg::Clock`]: crate::tui::model::msg::Msg::Clock
+    pub now: Option<std::time::Instant>,
     /// The terminal's size (columns, rows) as last reported ([`Msg::Resize`]); `None` until
     /// known.
     ///
@@ -91,6 +96,14 @@ pub struct Ui {
 }
 
 impl Ui {
+    /// Seconds from `since` to the loop's clock ([`Ui::now`]); 0 when either is unknown.
+    pub fn elapsed_s(&self, since: Option<std::time::Instant>) -> f64 {
+        match (self.now, since) {
+            (Some(now), Some(t)) => now.saturating_duration_since(t).as_secs_f64(),
+            _ => 0.0,
+        }
+    }
+
     /// Whether the terminal, as last reported, is too small ([`too_small`]); not while its
     /// size is unknown.
     pub fn too_small(&self) -> bool {

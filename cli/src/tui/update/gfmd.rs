@@ -112,13 +112,9 @@ impl App {
     /// times only with [`Ui::show_timing`](crate::tui::model::ui::Ui::show_timing)).
     pub fn gfmd_status(&self) -> Option<String> {
         match &self.jobs.gfmd {
-            GfmdState::Running { progress, started, .. } => Some(
-                progress.status_text(
-                    self.ui
-                        .show_timing
-                        .then(|| started.map_or(0.0, |s| s.elapsed().as_secs_f64())),
-                ),
-            ),
+            GfmdState::Running { progress, started, .. } => {
+                Some(progress.status_text(self.ui.show_timing.then(|| self.ui.elapsed_s(*started))))
+            }
             _ => None,
         }
     }

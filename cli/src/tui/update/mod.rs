@@ -40,6 +40,7 @@ pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
         Msg::Key(ev) => app.on_key(ev),
         Msg::Reply(r) => app.on_reply(*r),
         Msg::Tick => app.tick(),
+        Msg::Clock(now) => app.ui.now = Some(now),
         Msg::Resize { cols, rows } => app.ui.size = Some((cols, rows)),
         Msg::PresetLoaded { source, result } => app.preset_loaded(&source, result),
         Msg::TourLoaded(result) => app.tour_loaded(result),

@@ -172,6 +172,35 @@ fn a_tick_turns_the_spinner_and_plays_the_scale_view_to_its_end() {
 }
 
 #[test]
+fn the_clock_is_the_loops_and_times_the_busy_state_and_the_gfmd_run() {
+    let mut a = app();
+    assert_eq!(a.ui.now, None);
+    assert_eq!(a.ui.elapsed_s(Some(std::time::Instant::now())), 0.0, "no clock yet");
+    let t0 = std::time::Instant::now();
+    assert!(update(&mut a, Msg::Clock(t0)).is_empty());
+    assert_eq!(a.ui.now, Some(t0));
+    // a request is busy since the loop's clock, not since a clock update read itself
+    a.refresh();
+    a.take_request().unwrap();
+    assert_eq!(a.jobs.busy_since, Some(t0));
+    let later = t0 + std::time::Duration::from_millis(1500);
+    update(&mut a, Msg::Clock(later));
+    assert!((a.ui.elapsed_s(a.jobs.busy_since) - 1.5).abs() < 1e-9);
+    // an earlier instant than the clock's reads as no time, never negative
+    assert_eq!(a.ui.elapsed_s(Some(later + std::time::Duration::from_secs(1))), 0.0);
+    // the GFMD status line's time is the clock's since the run started
+    a.ui.show_timing = true;
+    let cs = key(&mut a, KeyCode::Char('g'));
+    let [Command::StartGfmd { id, .. }] = cs[..] else {
+        panic!("{cs:?}")
+    };
+    update(&mut a, Msg::GfmdStarted { id, grid: 32, at: t0 });
+    let status = a.gfmd_status().unwrap();
+    update(&mut a, Msg::Clock(later + std::time::Duration::from_secs(60)));
+    assert_ne!(a.gfmd_status().unwrap(), status, "the status follows the loop's clock");
+}
+
+#[test]
 fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
     let mut a = app();
     let (src, scene) = (a.params.source.clone(), a.params.scene.clone());

@@ -225,7 +225,7 @@ fn gfmd_rows(app: &App) -> Vec<(String, String)> {
                 row("  steps", st);
             }
             if app.ui.show_timing {
-                let t = started.map_or(0.0, |s| s.elapsed().as_secs_f64());
+                let t = app.ui.elapsed_s(*started);
                 row("  time", format_secs(t));
                 row(
                     "  left",
