@@ -163,7 +163,8 @@ mod trust {
 
     #[test]
     fn model_5_reads_its_own_measured_error() {
-        // the same stored point as above, with model 5: the error of model 5's own column
+        // the same stored point as above on the set's own bandwidth (the 256² reduction of the
+        // scene, λ_r/λ_s = 16): the error of model 5's own column there
         let five = table(MODEL5);
         let row = five
             .iter()
@@ -175,18 +176,46 @@ mod trust {
             })
             .expect("model 5's column at the stored point");
         let p = num(row, "p").unwrap();
-        let scene = system2(f64::INFINITY, 0.157, p)
+        let preset = Preset::resolve("system-2").unwrap();
+        let full = system2(f64::INFINITY, 0.157, p)
             .with_model(asperity::input::model::Model::named(5).unwrap())
             .unwrap();
-        let tr = assess(&scene);
+        let grid = asperity::gfmd::GridSpec::from_preset(preset.gfmd.as_ref().unwrap())
+            .with_grid(256)
+            .unwrap();
+        let (reduced, _) = asperity::gfmd::reduction::reduce(&full, &grid, true).unwrap();
+        let tr = assess(&reduced);
         assert_eq!(tr.measured_model, 5);
         assert!(tr.same_model, "{}", tr.summary);
         let first = tr.nearest[0];
-        assert!(first.distance < 1e-3, "{first:?}");
+        assert!(first.distance < 1e-2, "{first:?}");
         assert!((first.a_r_theory / num(row, "theory_a_r").unwrap() - 1.0).abs() < 1e-9);
         // and it is not model 4's
         let m4 = assess(&system2(f64::INFINITY, 0.157, p));
         assert_ne!(m4.nearest[0].a_r_theory, first.a_r_theory);
+
+        // the full system (λ_r/λ_s = 128) reads model 5 on the full system against the widest
+        // GFMD of the bandwidth set (2048² for this case), a_r only; its theory is `run`'s
+        let tr = assess(&full);
+        assert_eq!(tr.measured_model, 5);
+        assert!(tr.summary.contains("full system II"), "{}", tr.summary);
+        let first = tr.nearest[0];
+        assert!(first.distance < 1e-2, "{first:?}");
+        let widest = asperity::fit::reference_set::bandwidth_set()
+            .iter()
+            .find(|r| {
+                r.thickness_qr.is_infinite() && r.gamma_factor == 1.0 && r.grid == 2048 && (r.p / p - 1.0).abs() < 1e-9
+            })
+            .expect("the 2048² half-space point");
+        assert_eq!(first.a_r_gfmd, widest.a_r.0);
+        let run = asperity::theory::engine::evaluate(&full, &asperity::theory::engine::Options::default()).unwrap();
+        assert!(
+            (first.a_r_theory / run.stats.a_r - 1.0).abs() < 1e-6,
+            "{} against run's {}",
+            first.a_r_theory,
+            run.stats.a_r
+        );
+        assert!(tr.mean_gap_log_error.is_none());
     }
 
     #[test]

@@ -14,7 +14,10 @@
 //!
 //! Beside it, the *bandwidth set* ([`bandwidth_set`], `data/reference/bandwidth-set.csv`): the
 //! adhesive system II cases' loading sweeps at p* = 10⁻³…10⁻² on wider grids (512², 1024²:
-//! λ_r/λ_s = 32, 64), the data that tell how the theory's error moves with the bandwidth.
+//! λ_r/λ_s = 32, 64), the data that tell how the theory's error moves with the bandwidth. Its
+//! model 5 columns (`data/reference/theory-model5-full.csv`) are model 5 on the *full* system II
+//! (λ_r/λ_s = 128) at the same loads, a_r only: what the trust read-out gives a model 5 scene of
+//! the full bandwidth.
 
 use crate::theory::cycle::PathBranch;
 use std::collections::HashMap;
@@ -24,6 +27,7 @@ const SET_CSV: &str = include_str!("../../data/reference/reference-set-256.csv")
 const CASES_CSV: &str = include_str!("../../data/reference/pull-off-256.csv");
 const BANDWIDTH_CSV: &str = include_str!("../../data/reference/bandwidth-set.csv");
 const MODEL5_CSV: &str = include_str!("../../data/reference/theory-model5-256.csv");
+const MODEL5_FULL_CSV: &str = include_str!("../../data/reference/theory-model5-full.csv");
 /// Grid side of the stored set.
 pub const SET_GRID: usize = 256;
 
@@ -196,7 +200,7 @@ pub fn pull_offs() -> &'static [ReferencePullOff] {
 /// once.
 pub fn bandwidth_set() -> &'static [ReferencePoint] {
     static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
-    SET.get_or_init(|| parse(BANDWIDTH_CSV, "", ""))
+    SET.get_or_init(|| parse(BANDWIDTH_CSV, "", MODEL5_FULL_CSV))
 }
 
 #[cfg(test)]
@@ -214,6 +218,9 @@ mod tests {
             assert!(p.grid > SET_GRID, "{p:?}");
             assert!(p.gamma_glo > 0.0 && p.a_r.0 > 0.0 && p.a_r.0 <= 1.0, "{p:?}");
             assert_eq!(p.branch, PathBranch::Loading);
+            // model 5 on the full system at every load, a_r only
+            assert!(p.theory5_a_r > 0.0 && p.theory5_a_r <= 1.0, "{p:?}");
+            assert!(p.theory5_mean_gap_rel.is_nan(), "{p:?}");
         }
         // model 5's columns: on every system II point with a theory, none elsewhere
         for p in reference_set() {

@@ -15,8 +15,14 @@
 //! columns hold (the preset's: 4 for system II, 3 for system I; model 5 has its own columns on
 //! system II). For another model the numbers are still given, labelled with the model they were
 //! measured for.
+//!
+//! An adhesive model 5 scene whose bandwidth λ_r/λ_s is nearer the full system's 128 than the
+//! set's 16 (above √(16·128) ≈ 45) reads its error from the bandwidth set instead: model 5 on
+//! the full system II against the widest GFMD of each case (1024², λ_r/λ_s = 64; 2048² for the
+//! half-space at the preset's γ_s), a_r only. There the set's 256² maps would misstate it: the
+//! gauge's measure γ̃_glo·√μ_T serves the wide bandwidths best (docs/physics.md §3.6).
 
-use super::reference_set::{reference_set, ReferencePoint, SET_GRID};
+use super::reference_set::{bandwidth_set, reference_set, ReferencePoint, SET_GRID};
 use crate::input::scene::Scene;
 use crate::theory::cycle::PathBranch;
 use serde::Serialize;
@@ -161,8 +167,15 @@ pub fn assess(scene: &Scene) -> Trust {
             (r.theory_a_r, r.theory_mean_gap_rel, r.theory_model)
         }
     };
-    let mut near: Vec<(f64, &ReferencePoint)> = reference_set()
-        .iter()
+    let bw = scene.spectrum().q_s() / scene.spectrum().q_r();
+    let wide = five && scene.is_adhesive() && bw.is_finite() && bw > WIDE_BANDWIDTH;
+    let points: Vec<&ReferencePoint> = if wide {
+        widest_rows(bandwidth_set())
+    } else {
+        reference_set().iter().collect()
+    };
+    let mut near: Vec<(f64, &ReferencePoint)> = points
+        .into_iter()
         .filter(|r| r.branch == PathBranch::Loading && r.p > 0.0 && theory(r).0 > 0.0 && r.a_r.0 > 0.0)
         .map(|r| (distance(p, glo, tau, r), r))
         .collect();
@@ -201,8 +214,9 @@ pub fn assess(scene: &Scene) -> Trust {
         mean_gap_log_error,
     );
     // the set's maps are narrower than most scenes: say at which bandwidth it was measured
-    let bw = scene.spectrum().q_s() / scene.spectrum().q_r();
-    if bw > 1.5 * SET_BANDWIDTH && bw.is_finite() {
+    if wide {
+        summary += " (model 5 on the full system II against GFMD at λ_r/λ_s = 64–128)";
+    } else if bw > 1.5 * SET_BANDWIDTH && bw.is_finite() {
         summary += &format!(" (measured on the set's maps, λ_r/λ_s = {SET_BANDWIDTH:.0}; this scene has {bw:.0})");
     }
     Trust {
@@ -217,6 +231,22 @@ pub fn assess(scene: &Scene) -> Trust {
         mean_gap_log_error,
         summary,
     }
+}
+
+/// Above this λ_r/λ_s an adhesive model 5 scene reads its error from the bandwidth set (see
+/// the module docs): √(16·128), the midpoint in octaves of the set's and the full system's.
+pub const WIDE_BANDWIDTH: f64 = 45.254_833_995_939_04;
+
+/// The rows of each case's widest grid.
+fn widest_rows(rows: &[ReferencePoint]) -> Vec<&ReferencePoint> {
+    let widest = |r: &ReferencePoint| {
+        rows.iter()
+            .filter(|o| o.thickness_qr == r.thickness_qr && o.gamma_factor == r.gamma_factor)
+            .map(|o| o.grid)
+            .max()
+            .unwrap_or(0)
+    };
+    rows.iter().filter(|r| r.grid == widest(r)).collect()
 }
 
 /// The bandwidth λ_r/λ_s of the set's grid (256² at L/λ_r = 2, λ_s/Δa = 8).
