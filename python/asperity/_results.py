@@ -193,7 +193,7 @@ class _OnMap(Result):
     """A GFMD result with ``heights``: the map it ran on (m, rows along y), kept out of
     ``to_dict()`` (the CLI's JSON has no map)."""
 
-    heights: Optional[np.ndarray]
+    heights: Any  # a 2-D numpy array (m, rows along y)
 
     def __init__(self, data: Dict[str, Any]) -> None:
         heights = data.pop("heights", None)
