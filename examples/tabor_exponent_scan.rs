@@ -7,7 +7,9 @@
 //! `cargo run --release --example tabor_exponent_scan` (about 20 CPU minutes: the tables).
 use asperity::fit::bandwidth_gauge::full_system_cases;
 use asperity::fit::reference_set::bandwidth_set;
-use asperity::fit::set_gauge::{cases_of, fit_gauge, gauge_residuals, system_two_cases, tabulate, CaseTable};
+use asperity::fit::set_gauge::{
+    cases_of, cross_validate, fit_gauge, gauge_residuals, system_two_cases, tabulate, CaseTable,
+};
 use asperity::theory::engine::Options;
 
 fn mean_worst(e: &[f64]) -> (f64, f64) {
@@ -15,17 +17,25 @@ fn mean_worst(e: &[f64]) -> (f64, f64) {
     (a.clone().sum::<f64>() / e.len().max(1) as f64, a.fold(0.0, f64::max))
 }
 
-/// Held-out e_a of the folds that leave out each value `key` takes.
-fn folds(tables: &[CaseTable], key: impl Fn(&CaseTable) -> f64) -> Result<Vec<f64>, Box<dyn std::error::Error>> {
-    let mut values: Vec<f64> = tables.iter().map(&key).collect();
+/// Pooled held-out mean and worst |e_a| of the folds that leave out each value of the
+/// thickness (`by_thickness`) or of the γ_s factor ([`cross_validate`]).
+fn folds(tables: &[CaseTable], by_thickness: bool) -> Result<(f64, f64), Box<dyn std::error::Error>> {
+    let key = |t: &CaseTable| if by_thickness { t.thickness_qr } else { t.gamma_factor };
+    let mut values: Vec<f64> = tables.iter().map(key).collect();
     values.sort_by(f64::total_cmp);
     values.dedup();
-    let mut held = Vec::new();
+    let (mut sum, mut n, mut worst) = (0.0, 0, 0.0f64);
     for v in values {
-        let (test, train): (Vec<CaseTable>, Vec<CaseTable>) = tables.iter().cloned().partition(|t| key(t) == v);
-        held.extend(gauge_residuals(&test, fit_gauge(&train)?));
+        let f = if by_thickness {
+            cross_validate(tables, Some(v), None)?
+        } else {
+            cross_validate(tables, None, Some(v))?
+        };
+        sum += f.held_out_mean * f.held_out_points as f64;
+        n += f.held_out_points;
+        worst = worst.max(f.held_out_worst);
     }
-    Ok(held)
+    Ok((sum / n.max(1) as f64, worst))
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -65,8 +75,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .collect();
             let g = fit_gauge(&ts)?;
             let (m, w) = mean_worst(&gauge_residuals(&ts, g));
-            let (tm, tw) = mean_worst(&folds(&ts, |t| t.thickness_qr)?);
-            let (gm, gw) = mean_worst(&folds(&ts, |t| t.gamma_factor)?);
+            let (tm, tw) = folds(&ts, true)?;
+            let (gm, gw) = folds(&ts, false)?;
             println!(
                 "| {name} | {kappa} | {:.3} | {:.3} | {:.3} | {m:.3} / {w:.3} | {tm:.3} / {tw:.3} | {gm:.3} / {gw:.3} |",
                 g.floor, g.base, g.slope
