@@ -207,7 +207,7 @@ mod trust {
                 r.thickness_qr.is_infinite() && r.gamma_factor == 1.0 && r.grid == 2048 && (r.p / p - 1.0).abs() < 1e-9
             })
             .expect("the 2048² half-space point");
-        assert_eq!(first.a_r_gfmd, widest.a_r.0);
+        assert!((first.a_r_gfmd / widest.a_r.0 - 1.0).abs() < 1e-12);
         let run = asperity::theory::engine::evaluate(&full, &asperity::theory::engine::Options::default()).unwrap();
         assert!(
             (first.a_r_theory / run.stats.a_r - 1.0).abs() < 1e-6,
@@ -226,5 +226,20 @@ mod trust {
         let tr = assess(&system2(0.05, 0.157, 1e-3));
         assert!(tr.outside.iter().any(|o| o.contains("thinner")), "{:?}", tr.outside);
         assert!(tr.summary.starts_with("outside"), "{}", tr.summary);
+    }
+
+    #[test]
+    fn far_from_every_stored_load_no_error_is_claimed() {
+        // two decades below the set's smallest load: no case has a point within reach
+        let tr = assess(&system2(f64::INFINITY, 0.157, 1e-7));
+        assert!(!tr.known);
+        assert!(tr.a_r_log_error.is_nan() && tr.a_r_band_ratio.is_nan());
+        assert!(tr.summary.contains("no error known"), "{}", tr.summary);
+        // at a stored load the band holds the case's own error and GFMD's standard error
+        let tr = assess(&system2(0.3, 0.157, 1e-3));
+        assert!(tr.known, "{}", tr.summary);
+        let own = tr.nearest[0];
+        assert!(own.distance < 1e-9, "{own:?}");
+        assert!(tr.a_r_band_ratio.ln() >= own.log_error().abs() + 2.0 * own.a_r_rel_se - 1e-12);
     }
 }
