@@ -22,7 +22,7 @@
 //! half-space at the preset's γ_s), a_r only, at p* = 10⁻³…10⁻². Below those loads it falls back
 //! to the set's 256² columns and says at which bandwidth they were measured.
 
-use super::reference_set::{bandwidth_set, reference_set, ReferencePoint, SET_GRID};
+use super::reference_set::{bandwidth_set, combined_set, ReferencePoint, MODELS, SET_GRID};
 use super::trust_band::{band, CaseError, Place, TheoryOf, LOAD_REACH, MIN_CASES};
 use crate::input::scene::Scene;
 use serde::Serialize;
@@ -81,7 +81,7 @@ pub struct Trust {
 
 /// The ranges of the stored set.
 pub fn set_range() -> SetRange {
-    let set = reference_set();
+    let set = combined_set();
     let pos = set.iter().filter(|r| r.p > 0.0);
     let (lo, hi) = pos
         .clone()
@@ -133,11 +133,18 @@ fn outside_lines(scene: &Scene, set: &SetRange) -> Vec<String> {
     outside
 }
 
-/// The theory column a scene's model reads at a stored point: model 5's own where the point
-/// has one, else the set's.
-fn theory_column(five: bool) -> impl Fn(&ReferencePoint) -> Option<(f64, f64, u8)> {
+/// The theory column a scene's model reads at a stored point: the model's own where the point
+/// has it (the small-load set holds models 1–5; the 256² set model 5's), else the set's.
+pub fn theory_column(model: Option<u8>) -> impl Fn(&ReferencePoint) -> Option<(f64, f64, u8)> {
+    let five = model == Some(5);
     move |r: &ReferencePoint| {
-        if five && r.theory5_a_r > 0.0 {
+        let own = model
+            .filter(|m| (1..=MODELS as u8).contains(m))
+            .map(|m| (m, r.theory_models[m as usize - 1]))
+            .filter(|(_, (a, _))| *a > 0.0);
+        if let Some((m, (a, u))) = own {
+            Some((a, u, m))
+        } else if five && r.theory5_a_r > 0.0 {
             Some((r.theory5_a_r, r.theory5_mean_gap_rel, 5))
         } else {
             (r.theory_a_r > 0.0).then_some((r.theory_a_r, r.theory_mean_gap_rel, r.theory_model))
@@ -155,32 +162,31 @@ pub fn assess(scene: &Scene) -> Trust {
         thickness_qr: scene.thickness_qr(),
     };
     let five = scene.model().kind == crate::input::model::ModelKind::Five;
-    let theory = theory_column(five);
+    let theory = theory_column(scene.model.number());
     let bw = scene.spectrum().q_s() / scene.spectrum().q_r();
     let wide_scene = five && scene.is_adhesive() && bw.is_finite() && bw > WIDE_BANDWIDTH;
-    let set_points: Vec<&ReferencePoint> = reference_set().iter().collect();
+    let set_points: Vec<&ReferencePoint> = combined_set().iter().collect();
     let mut wide = false;
-    let mut band = band(&set_points, place, &theory);
+    let (mut band, finite_size_log_error) = stated_band(&set_points, place, scene.model.number());
     if wide_scene {
-        let widest = band_of_widest(place, &theory);
+        let mut widest = band_of_widest(place, &theory);
         if widest.known {
+            widest.half_width += finite_size_log_error.unwrap_or(0.0);
             band = widest;
             wide = true;
         }
     }
-    let finite_size_log_error = finite_size_error(place);
     let logs: Vec<f64> = band.cases.iter().map(|c| c.log_error().abs()).collect();
     let nan_unless = |x: f64| if band.known { x } else { f64::NAN };
     let a_r_log_error = nan_unless(logs.iter().sum::<f64>() / logs.len().max(1) as f64);
     let a_r_worst_ratio = nan_unless(logs.iter().cloned().fold(0.0, f64::max).exp());
-    let a_r_band_ratio = nan_unless((band.half_width + finite_size_log_error.unwrap_or(0.0)).exp());
+    let a_r_band_ratio = nan_unless(band.half_width.exp());
     let gaps: Vec<f64> = band
         .cases
         .iter()
         .filter_map(|n| n.mean_gap_rel_theory.map(|g| (g / n.mean_gap_rel_gfmd).ln().abs()))
         .collect();
-    let mean_gap_log_error =
-        (band.known && !gaps.is_empty()).then(|| gaps.iter().sum::<f64>() / gaps.len() as f64);
+    let mean_gap_log_error = (band.known && !gaps.is_empty()).then(|| gaps.iter().sum::<f64>() / gaps.len() as f64);
     let default_model = if five { 5 } else { 4 };
     let measured_model = band.cases.first().map_or(default_model, |c| c.model);
     let same_model = scene.model.number() == Some(measured_model);
@@ -216,6 +222,23 @@ pub fn assess(scene: &Scene) -> Trust {
         mean_gap_log_error,
         summary,
     }
+}
+
+/// The band the read-out states at `place` from `points` for `model`'s columns: the
+/// neighbouring cases' band ([`super::trust_band::band`]) widened by GFMD's finite-size error
+/// where it was measured (returned beside it).
+pub fn stated_band(
+    points: &[&ReferencePoint],
+    place: Place,
+    model: Option<u8>,
+) -> (super::trust_band::Band, Option<f64>) {
+    let theory = theory_column(model);
+    let mut b = band(points, place, &theory);
+    let finite = finite_size_error(place);
+    if b.known {
+        b.half_width += finite.unwrap_or(0.0);
+    }
+    (b, finite)
 }
 
 /// The band over the bandwidth set's widest rows (model 5 on the full system).

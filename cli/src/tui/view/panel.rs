@@ -193,7 +193,11 @@ fn trust_value(sc: &asperity::input::scene::Scene) -> String {
     if !t.inside {
         return "outside GFMD set".into();
     }
-    format!("a_r ×/÷{} (m{})", crate::numfmt::sig(t.a_r_band_ratio, 2), t.measured_model)
+    format!(
+        "a_r ×/÷{} (m{})",
+        crate::numfmt::sig(t.a_r_band_ratio, 2),
+        t.measured_model
+    )
 }
 
 fn scene_rows(sc: &asperity::input::scene::Scene) -> Vec<Line<'static>> {
