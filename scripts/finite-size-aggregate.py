@@ -52,6 +52,13 @@ def main(l2, l2_cases, l4, l8, out):
         w.writeheader()
         w.writerows(rows)
     print(f"{len(rows)} rows -> {out}", file=sys.stderr)
+    print("| t·q_r | γ_s × | p* | a_r at L/λ_r = 2 | 4 | 8 | \\|ln(a_r(2)/a_r(largest))\\| |")
+    print("|---|---|---|---|---|---|---|")
+    pm = lambda m, e: "–" if not m else (f"{float(m):.3g}" + (f" ± {float(e):.1g}" if e else ""))
+    for r in rows:
+        print(f"| {r['thickness_qr']} | {r['gamma_factor']} | {float(r['p']):.3g} | "
+              f"{pm(r['a_r_L2'], r['a_r_L2_err'])} | {pm(r['a_r_L4'], r['a_r_L4_err'])} | "
+              f"{pm(r['a_r_L8'], r['a_r_L8_err'])} | {r['log_error']} |")
 
 
 if __name__ == "__main__":

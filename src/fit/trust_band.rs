@@ -177,8 +177,11 @@ fn group<'a>(points: &[&'a ReferencePoint]) -> BTreeMap<(u8, u64, u64, usize), V
 }
 
 /// One case's values at load `p` (see the module docs), None where it has none there.
+/// A stored point with the theory's (a_r, ū/h_rms, model) there.
+type WithTheory<'a> = (&'a ReferencePoint, (f64, f64, u8));
+
 fn at_load(rows: &[&ReferencePoint], p: f64, theory: &TheoryOf) -> Option<CaseError> {
-    let rows: Vec<(&ReferencePoint, (f64, f64, u8))> = rows
+    let rows: Vec<WithTheory> = rows
         .iter()
         .filter_map(|r| theory(r).filter(|t| t.0 > 0.0).map(|t| (*r, t)))
         .collect();
@@ -194,7 +197,7 @@ fn at_load(rows: &[&ReferencePoint], p: f64, theory: &TheoryOf) -> Option<CaseEr
         let w = (x - a.0.p.log10()) / (b.0.p.log10() - a.0.p.log10());
         (a, b, w, p)
     };
-    let lerp = |f: &dyn Fn(&(&ReferencePoint, (f64, f64, u8))) -> f64| (1.0 - w) * f(lo) + w * f(hi);
+    let lerp = |f: &dyn Fn(&WithTheory) -> f64| (1.0 - w) * f(lo) + w * f(hi);
     let rel_se = |r: &ReferencePoint| {
         let s = r.a_r.1 / r.a_r.0;
         if s.is_finite() {
