@@ -167,6 +167,7 @@ fn run_keys() {
                 "trust.a_r_band_ratio",
                 "trust.known",
                 "trust.finite_size_log_error",
+                "trust.bandwidth_log_error",
                 "trust.mean_gap_log_error",
                 "trust.summary",
             ],

@@ -22,10 +22,12 @@
 //! half-space at the preset's γ_s), a_r only, at p* = 10⁻³…10⁻². Below those loads it falls back
 //! to the set's 256² columns and says at which bandwidth they were measured.
 
-use super::reference_set::{bandwidth_set, combined_set, ReferencePoint, MODELS, SET_GRID};
+use super::reference_set::{bandwidth_set, combined_set, reference_set, ReferencePoint, MODELS, SET_GRID};
 use super::trust_band::{band, CaseError, Place, TheoryOf, LOAD_REACH, MIN_CASES};
 use crate::input::scene::Scene;
+use crate::theory::cycle::PathBranch;
 use serde::Serialize;
+use std::sync::OnceLock;
 
 /// Cases the error read-out averages over.
 pub const NEAREST: usize = super::trust_band::NEAREST;
@@ -73,6 +75,9 @@ pub struct Trust {
     pub a_r_band_ratio: f64,
     /// GFMD's finite-size error in ln a_r at this load (null where not measured).
     pub finite_size_log_error: Option<f64>,
+    /// Where the error is read off the set's narrower maps for a wider scene: the error of
+    /// that transfer added to the band ([`bandwidth_transfer_error`]; null where not added).
+    pub bandwidth_log_error: Option<f64>,
     /// Mean |ln(theory/GFMD)| of ū/h_rms (null where no case has a theory gap).
     pub mean_gap_log_error: Option<f64>,
     /// One line for a table.
@@ -176,6 +181,10 @@ pub fn assess(scene: &Scene) -> Trust {
             wide = true;
         }
     }
+    // read off the set's narrower maps: add the error of that transfer, measured where both exist
+    let narrow_read = !wide && bw.is_finite() && bw > 1.5 * SET_BANDWIDTH;
+    let bandwidth_log_error = (band.known && narrow_read).then(|| bandwidth_transfer_error(five));
+    band.half_width += bandwidth_log_error.unwrap_or(0.0);
     let logs: Vec<f64> = band.cases.iter().map(|c| c.log_error().abs()).collect();
     let nan_unless = |x: f64| if band.known { x } else { f64::NAN };
     let a_r_log_error = nan_unless(logs.iter().sum::<f64>() / logs.len().max(1) as f64);
@@ -204,8 +213,11 @@ pub fn assess(scene: &Scene) -> Trust {
     // the set's maps are narrower than most scenes: say at which bandwidth it was measured
     if band.known && wide {
         summary += " (model 5 on the full system II against GFMD at λ_r/λ_s = 64–128)";
-    } else if band.known && bw > 1.5 * SET_BANDWIDTH && bw.is_finite() {
-        summary += &format!(" (measured on the set's maps, λ_r/λ_s = {SET_BANDWIDTH:.0}; this scene has {bw:.0})");
+    } else if let Some(b) = bandwidth_log_error {
+        summary += &format!(
+            " (measured on the set's maps, λ_r/λ_s = {SET_BANDWIDTH:.0}; this scene has {bw:.0}: the band adds ×/÷ {:.2} for that)",
+            b.exp()
+        );
     }
     Trust {
         inside: outside.is_empty(),
@@ -219,9 +231,48 @@ pub fn assess(scene: &Scene) -> Trust {
         a_r_worst_ratio,
         a_r_band_ratio,
         finite_size_log_error,
+        bandwidth_log_error,
         mean_gap_log_error,
         summary,
     }
+}
+
+/// Quantile of the transfer errors taken as the band's bandwidth term.
+const TRANSFER_QUANTILE: f64 = 0.9;
+
+/// The error of reading a wider scene's error off the set's λ_r/λ_s = 16 maps: over the
+/// bandwidth set's widest rows that the 256² set also holds (adhesive system II, loading,
+/// p* = 10⁻³…10⁻²), the [`TRANSFER_QUANTILE`] quantile of |e_wide − e_16|, e = ln(theory/GFMD):
+/// for model 5 its full-system column against the widest GFMD; for the other models model 4's
+/// columns on each map (the only other model the bandwidth set holds).
+pub fn bandwidth_transfer_error(five: bool) -> f64 {
+    static CACHE: OnceLock<[f64; 2]> = OnceLock::new();
+    CACHE.get_or_init(|| [transfer_quantile(false), transfer_quantile(true)])[usize::from(five)]
+}
+
+fn transfer_quantile(five: bool) -> f64 {
+    let narrow = reference_set();
+    let column = |r: &ReferencePoint| if five { r.theory5_a_r } else { r.theory_a_r };
+    let mut d: Vec<f64> = widest_rows(bandwidth_set())
+        .into_iter()
+        .filter(|w| w.branch == PathBranch::Loading && column(w) > 0.0)
+        .filter_map(|w| {
+            let n = narrow.iter().find(|n| {
+                n.system == w.system
+                    && n.branch == PathBranch::Loading
+                    && n.thickness_qr == w.thickness_qr
+                    && n.gamma_factor == w.gamma_factor
+                    && (n.p / w.p - 1.0).abs() < 1e-6
+            })?;
+            let e16 = (column(n) / n.a_r.0).ln();
+            let ewide = (column(w) / w.a_r.0).ln();
+            (e16.is_finite() && ewide.is_finite()).then_some((ewide - e16).abs())
+        })
+        .collect();
+    d.sort_by(f64::total_cmp);
+    d.get(((d.len() as f64 * TRANSFER_QUANTILE) as usize).min(d.len().saturating_sub(1)))
+        .copied()
+        .unwrap_or(0.0)
 }
 
 /// The band the read-out states at `place` from `points` for `model`'s columns: the
