@@ -303,6 +303,21 @@ mod trust {
     }
 
     #[test]
+    fn gfmds_pull_off_is_read_at_the_nearest_measured_case() {
+        let tr = assess(&system2(0.3, 0.157, 1e-3));
+        let po = tr.pull_off.expect("a measured case");
+        assert!(po.distance < 1e-9, "{po:?}");
+        assert_eq!((po.thickness_qr, po.gamma_factor), (Some(0.3), 1.0));
+        let stored = asperity::fit::reference_set::small_load_pull_offs()
+            .iter()
+            .find(|r| r.thickness_qr == 0.3 && r.gamma_factor == 1.0)
+            .expect("the stored case");
+        assert_eq!(po.pull_off_pressure, stored.pressure.0);
+        assert!(po.pull_off_pressure < 0.0);
+        assert!(assess(&system2(0.3, 0.0, 1e-3)).pull_off.is_none());
+    }
+
+    #[test]
     fn far_from_every_stored_load_no_error_is_claimed() {
         // three decades below the set's smallest load: no case has a point within reach
         let tr = assess(&system2(f64::INFINITY, 0.157, 1e-8));

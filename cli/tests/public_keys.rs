@@ -168,6 +168,7 @@ fn run_keys() {
                 "trust.known",
                 "trust.finite_size_log_error",
                 "trust.bandwidth_log_error",
+                "trust.pull_off",
                 "trust.mean_gap_log_error",
                 "trust.summary",
             ],

@@ -80,6 +80,9 @@ pub struct Trust {
     pub bandwidth_log_error: Option<f64>,
     /// Mean |ln(theory/GFMD)| of ū/h_rms (null where no case has a theory gap).
     pub mean_gap_log_error: Option<f64>,
+    /// GFMD's pull-off at the measured case nearest an adhesive scene (null without adhesion
+    /// or where no case is within reach): the number to hold the theory's pull-off against.
+    pub pull_off: Option<PullOffReference>,
     /// One line for a table.
     pub summary: String,
 }
@@ -233,8 +236,61 @@ pub fn assess(scene: &Scene) -> Trust {
         finite_size_log_error,
         bandwidth_log_error,
         mean_gap_log_error,
+        pull_off: scene.is_adhesive().then(|| pull_off_reference(place)).flatten(),
         summary,
     }
+}
+
+/// GFMD's measured pull-off near a scene.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PullOffReference {
+    /// t·q_r of the case (null: a half-space).
+    pub thickness_qr: Option<f64>,
+    /// γ_s of the case over the preset's.
+    pub gamma_factor: f64,
+    /// γ̃_glo of the case.
+    pub gamma_glo: f64,
+    /// GFMD's pull-off p* (mean over the maps, ≤ 0).
+    pub pull_off_pressure: f64,
+    /// Its standard error over the maps (null with one map).
+    pub pull_off_pressure_err: Option<f64>,
+    /// Maps averaged.
+    pub seeds: usize,
+    /// Distance of the case from the scene (units of [`super::trust_band`]).
+    pub distance: f64,
+}
+
+/// The measured case nearest `place` within [`super::trust_band::CASE_REACH`], from the
+/// small-load set's cycles where it holds the case, else the 256² set's.
+pub fn pull_off_reference(place: Place) -> Option<PullOffReference> {
+    use super::reference_set::{pull_offs, small_load_pull_offs, ReferencePullOff};
+    use super::trust_band::{coords, CASE_REACH};
+    let small = small_load_pull_offs();
+    let held = |r: &ReferencePullOff| {
+        small
+            .iter()
+            .any(|s| s.system == r.system && s.thickness_qr == r.thickness_qr && s.gamma_factor == r.gamma_factor)
+    };
+    let (tau, ell) = coords(place.thickness_qr, place.gamma_glo);
+    small
+        .iter()
+        .chain(pull_offs().iter().filter(|r| !held(r)))
+        .filter(|r| r.gamma_factor > 0.0 && r.pressure.0.is_finite())
+        .map(|r| {
+            let (t, l) = coords(r.thickness_qr, r.gamma_glo);
+            (((t - tau).powi(2) + (l - ell).powi(2)).sqrt(), r)
+        })
+        .filter(|(d, _)| *d <= CASE_REACH)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(distance, r)| PullOffReference {
+            thickness_qr: r.thickness_qr.is_finite().then_some(r.thickness_qr),
+            gamma_factor: r.gamma_factor,
+            gamma_glo: r.gamma_glo,
+            pull_off_pressure: r.pressure.0,
+            pull_off_pressure_err: r.pressure.1.is_finite().then_some(r.pressure.1),
+            seeds: r.seeds,
+            distance,
+        })
 }
 
 /// Quantile of the transfer errors taken as the band's bandwidth term.
