@@ -65,7 +65,7 @@ def main(runs_dir, set_csv, pull_csv, seed_csv=None):
         for seed, run in runs:
             for i, r in enumerate(run["rows"]):
                 row = {"system": sys_, "thickness_qr": t, "gamma_factor": g, "seed": seed,
-                       "step": i, "branch": r["branch"], "p": f"{r['p']:.10e}"}
+                       "step": i, "branch": r.get("branch", "loading"), "p": f"{r['p']:.10e}"}
                 row.update({o: fmt(r[o]) for o in OBS})
                 seed_rows.append(row)
             if run.get("pull_off_pressure") is not None:
@@ -78,7 +78,7 @@ def main(runs_dir, set_csv, pull_csv, seed_csv=None):
         for _, run in runs:
             d = {}
             for i, r in enumerate(run["rows"]):
-                d.setdefault((r["branch"], r["p"]), r)
+                d.setdefault((r.get("branch", "loading"), r["p"]), r)
             keyed.append(d)
         common = [key for key in keyed[0] if all(key in d for d in keyed[1:])]
         order = {key: i for i, key in enumerate(keyed[0])}

@@ -388,3 +388,10 @@ pub const TENSION_CONTINUITY_REL: f64 = 1e-3;
 /// The coarsest scale's Griffith stress min(k_G √(q_L E* f(q_L t) γ_s), γ_s/ρ) recomputed from
 /// its closed form against the library's tension bound: relative.
 pub const TENSION_BOUND_REL: f64 = 1e-12;
+
+/// Coverage the trust read-out's a_r band must reach on held-out GFMD points of the reference
+/// set (each case left out in turn; `tests/trust_coverage.rs`), at every load band.
+pub const TRUST_BAND_COVERAGE: f64 = 0.85;
+
+/// Largest fraction of held-out points at which the trust read-out may say "no error known".
+pub const TRUST_UNKNOWN_MAX: f64 = 0.25;

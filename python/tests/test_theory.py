@@ -150,3 +150,16 @@ def test_model5_is_model3_without_adhesion_and_follows_gamma_glo():
     assert abs(w0(half) - (0.125 + 3 * 0.0411)) < 1e-3  # γ̃_glo = 0.10, μ_T = 1.00: the floor
     # thinner slabs store less elastic energy in full contact: more γ̃_glo, more W(0)
     assert 0.25 < w0(half.replace(thickness_qr=0.3)) < w0(half.replace(thickness_qr=0.15)) < 1.0
+
+
+def test_trust_says_no_error_known_far_from_the_reference_set():
+    """The trust read-out quotes an error only where GFMD was measured near the scene's load."""
+    s = asperity.Scene.preset("system-2").replace(model=5)
+    near = asperity.evaluate(s.replace(pressure=1e-3)).trust
+    assert near["known"] is True
+    assert near["a_r_band_ratio"] >= math.exp(near["a_r_log_error"])
+    assert near["measured_model"] == 5
+    far = asperity.evaluate(s.replace(pressure=1e-8)).trust
+    assert far["known"] is False
+    assert far["a_r_band_ratio"] is None and far["a_r_log_error"] is None
+    assert "no error known" in far["summary"]

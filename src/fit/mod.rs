@@ -20,6 +20,7 @@
 
 pub mod bandwidth_gauge;
 pub mod compare;
+pub mod finite_size;
 pub mod gfmd_reference;
 pub mod predict;
 pub mod reference;
@@ -27,6 +28,7 @@ pub mod reference_set;
 mod residuals;
 pub mod set_gauge;
 pub mod trust;
+pub mod trust_band;
 
 use crate::error::{Error, Field, Result};
 use crate::input::model::{Model, ModelKind};

@@ -28,6 +28,11 @@ const CASES_CSV: &str = include_str!("../../data/reference/pull-off-256.csv");
 const BANDWIDTH_CSV: &str = include_str!("../../data/reference/bandwidth-set.csv");
 const MODEL5_CSV: &str = include_str!("../../data/reference/theory-model5-256.csv");
 const MODEL5_FULL_CSV: &str = include_str!("../../data/reference/theory-model5-full.csv");
+const SMALL_CSV: &str = include_str!("../../data/reference/small-load-256.csv");
+const SMALL_CASES_CSV: &str = include_str!("../../data/reference/pull-off-small-256.csv");
+const SMALL_MODELS_CSV: &str = include_str!("../../data/reference/theory-models-small-256.csv");
+/// Models whose theory columns the small-load set holds (1–5).
+pub const MODELS: usize = 5;
 /// Grid side of the stored set.
 pub const SET_GRID: usize = 256;
 
@@ -67,6 +72,9 @@ pub struct ReferencePoint {
     pub theory5_a_r: f64,
     /// Model 5's ū/h_rms there (NaN where not computed).
     pub theory5_mean_gap_rel: f64,
+    /// The theory's (a_r, ū/h_rms) on the same maps for models 1–5 (index model − 1), on the
+    /// branch the path is on; NaN where not computed (the small-load set holds all five).
+    pub theory_models: [(f64, f64); MODELS],
 }
 
 /// The cells of a CSV with a header, row by row.
@@ -95,9 +103,26 @@ fn system_of(row: &HashMap<&str, &str>) -> u8 {
 
 /// One set's rows; γ̃_glo from the row's own `gamma_glo` column, else from `cases`; model 5's
 /// columns from `model5` where it has the point.
-fn parse(set_csv: &str, cases_csv: &str, model5: &str) -> Vec<ReferencePoint> {
+fn parse(set_csv: &str, cases_csv: &str, model5: &str, models_csv: &str) -> Vec<ReferencePoint> {
     let cases = rows(cases_csv);
     let five = rows(model5);
+    let models = rows(models_csv);
+    let models_at = |sys: u8, t: f64, f: f64, branch: &str, p: f64| {
+        let mut out = [(f64::NAN, f64::NAN); MODELS];
+        for c in models.iter().filter(|c| {
+            system_of(c) == sys
+                && num(c, "thickness_qr") == t
+                && num(c, "gamma_factor") == f
+                && c.get("branch") == Some(&branch)
+                && (num(c, "p") / p - 1.0).abs() < 1e-6
+        }) {
+            let m = num(c, "model");
+            if (1.0..=MODELS as f64).contains(&m) {
+                out[m as usize - 1] = (num(c, "theory_a_r"), num(c, "theory_mean_gap_rel"));
+            }
+        }
+        out
+    };
     let five_at = |sys: u8, t: f64, f: f64, branch: &str, p: f64| {
         five.iter()
             .find(|c| {
@@ -124,7 +149,9 @@ fn parse(set_csv: &str, cases_csv: &str, model5: &str) -> Vec<ReferencePoint> {
             let pair = |k: &str| (num(r, k), num(r, &format!("{k}_err")));
             let grid = num(r, "grid");
             let own_glo = num(r, "gamma_glo");
-            let five = five_at(system, t, f, r.get("branch").copied().unwrap_or(""), num(r, "p"));
+            let branch = r.get("branch").copied().unwrap_or("");
+            let five = five_at(system, t, f, branch, num(r, "p"));
+            let theory_models = models_at(system, t, f, branch, num(r, "p"));
             ReferencePoint {
                 system,
                 grid: if grid.is_finite() { grid as usize } else { SET_GRID },
@@ -150,6 +177,7 @@ fn parse(set_csv: &str, cases_csv: &str, model5: &str) -> Vec<ReferencePoint> {
                 theory_mean_gap_rel: num(r, "theory_mean_gap_rel"),
                 theory5_a_r: five.0,
                 theory5_mean_gap_rel: five.1,
+                theory_models,
             }
         })
         .collect()
@@ -158,7 +186,34 @@ fn parse(set_csv: &str, cases_csv: &str, model5: &str) -> Vec<ReferencePoint> {
 /// The stored set (256²), parsed once.
 pub fn reference_set() -> &'static [ReferencePoint] {
     static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
-    SET.get_or_init(|| parse(SET_CSV, CASES_CSV, MODEL5_CSV))
+    SET.get_or_init(|| parse(SET_CSV, CASES_CSV, MODEL5_CSV, ""))
+}
+
+/// The small-load set (256², L/λ_r = 2, loads 10⁻⁵…10⁻², docs/reference-set.md "Small loads
+/// and finite size"), with the theory columns of models 1–5 on the same maps, parsed once.
+/// Its cases' pull-offs are [`small_load_pull_offs`].
+pub fn small_load_set() -> &'static [ReferencePoint] {
+    static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
+    SET.get_or_init(|| parse(SMALL_CSV, SMALL_CASES_CSV, "", SMALL_MODELS_CSV))
+}
+
+/// The points the trust read-out and the held-out checks use: the small-load set, and the
+/// 256² set's cases that the small-load set does not hold.
+pub fn combined_set() -> &'static [ReferencePoint] {
+    static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
+    SET.get_or_init(|| {
+        let small = small_load_set();
+        let held = |r: &ReferencePoint| {
+            small
+                .iter()
+                .any(|s| s.system == r.system && s.thickness_qr == r.thickness_qr && s.gamma_factor == r.gamma_factor)
+        };
+        small
+            .iter()
+            .copied()
+            .chain(reference_set().iter().copied().filter(|r| !held(r)))
+            .collect()
+    })
 }
 
 /// One case's pull-off in the stored set (`pull-off-256.csv`).
@@ -181,26 +236,34 @@ pub struct ReferencePullOff {
 /// The stored set's pull-offs, one per case, parsed once.
 pub fn pull_offs() -> &'static [ReferencePullOff] {
     static SET: OnceLock<Vec<ReferencePullOff>> = OnceLock::new();
-    SET.get_or_init(|| {
-        rows(CASES_CSV)
-            .iter()
-            .map(|r| ReferencePullOff {
-                system: system_of(r),
-                thickness_qr: num(r, "thickness_qr"),
-                gamma_factor: num(r, "gamma_factor"),
-                gamma_glo: num(r, "gamma_glo"),
-                pressure: (num(r, "pull_off_pressure"), num(r, "pull_off_pressure_err")),
-                seeds: num(r, "seeds") as usize,
-            })
-            .collect()
-    })
+    SET.get_or_init(|| parse_pull_offs(CASES_CSV))
+}
+
+/// The small-load set's cases' pull-offs (`pull-off-small-256.csv`: the cycles from p* = 10⁻⁵).
+pub fn small_load_pull_offs() -> &'static [ReferencePullOff] {
+    static SET: OnceLock<Vec<ReferencePullOff>> = OnceLock::new();
+    SET.get_or_init(|| parse_pull_offs(SMALL_CASES_CSV))
+}
+
+fn parse_pull_offs(text: &str) -> Vec<ReferencePullOff> {
+    rows(text)
+        .iter()
+        .map(|r| ReferencePullOff {
+            system: system_of(r),
+            thickness_qr: num(r, "thickness_qr"),
+            gamma_factor: num(r, "gamma_factor"),
+            gamma_glo: num(r, "gamma_glo"),
+            pressure: (num(r, "pull_off_pressure"), num(r, "pull_off_pressure_err")),
+            seeds: num(r, "seeds") as usize,
+        })
+        .collect()
 }
 
 /// The bandwidth set (system II, adhesive, loading, p* ≥ 10⁻³ on grids wider than 256²), parsed
 /// once.
 pub fn bandwidth_set() -> &'static [ReferencePoint] {
     static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
-    SET.get_or_init(|| parse(BANDWIDTH_CSV, "", MODEL5_FULL_CSV))
+    SET.get_or_init(|| parse(BANDWIDTH_CSV, "", MODEL5_FULL_CSV, ""))
 }
 
 #[cfg(test)]

@@ -1,36 +1,36 @@
 //! How far to trust the theory for a scene: where the scene lies relative to asperity's GFMD
 //! reference set ([`super::reference_set`]) and how far the theory was measured from brute
-//! force at the nearest stored points.
+//! force at the scene's own load, at the stored cases nearest it ([`super::trust_band`]).
 //!
-//! The scene is placed by three dimensionless numbers: p* (log), γ̃_glo [S-24] of the scene
-//! (the slab's; it carries the thickness and the surface energy together) and the thinness
-//! τ = log₁₀(1 + 1/(t·q_r)) (0 for a half-space, 1.04 at t·q_r = 0.1). Distance to a stored
-//! point: √((Δlog₁₀p*)² + (Δγ̃_glo/0.1)² + (Δτ)²), so one step of the set (a factor ≈ 2 in
-//! p*, a thickness, γ_s × 2 at the half-space) is about one unit. Inside the set means p* and
-//! t·q_r inside the ranges the set covers and γ̃_glo at most its largest; outside, each
-//! excess is named ("p* 1e-06 is 2.0 decades below the set's 1e-4").
+//! Inside the set means p* and t·q_r inside the ranges the set covers and γ̃_glo at most its
+//! largest; outside, each excess is named ("p* 1e-06 is 2.0 decades below the set's 1e-5").
 //!
-//! The error read-out is over the [`NEAREST`] nearest loading points that have a theory value:
-//! the mean and largest |ln(theory/GFMD)| of a_r and of ū/h_rms, for the model the set's theory
-//! columns hold (the preset's: 4 for system II, 3 for system I; model 5 has its own columns on
-//! system II). For another model the numbers are still given, labelled with the model they were
-//! measured for.
+//! The error read-out is the band of [`super::trust_band`]: each of the nearest cases'
+//! ln(a_r theory / a_r GFMD) interpolated in log p* to the scene's load (never a point more
+//! than [`super::trust_band::LOAD_REACH`] decades away), GFMD's own standard error added, and
+//! GFMD's finite-size error where the finite-size study measured it. Where fewer than
+//! [`super::trust_band::MIN_CASES`] cases have a value at the load, the read-out says
+//! "no error known" (`known` false, the error fields NaN: null in JSON) instead.
+//!
+//! The theory columns are those of the scene's model where the set holds them (model 5 on
+//! system II has its own), else the set's (the preset's model: 4 for system II, 3 for system
+//! I), labelled with the model they were measured for.
 //!
 //! An adhesive model 5 scene whose bandwidth λ_r/λ_s is nearer the full system's 128 than the
 //! set's 16 (above √(16·128) ≈ 45) reads its error from the bandwidth set instead: model 5 on
 //! the full system II against the widest GFMD of each case (1024², λ_r/λ_s = 64; 2048² for the
-//! half-space at the preset's γ_s), a_r only. There the set's 256² maps would misstate it: the
-//! gauge's measure γ̃_glo·√μ_T serves the wide bandwidths best (docs/physics.md §3.6).
+//! half-space at the preset's γ_s), a_r only, at p* = 10⁻³…10⁻². Below those loads it falls back
+//! to the set's 256² columns and says at which bandwidth they were measured.
 
-use super::reference_set::{bandwidth_set, reference_set, ReferencePoint, SET_GRID};
+use super::reference_set::{bandwidth_set, combined_set, reference_set, ReferencePoint, MODELS, SET_GRID};
+use super::trust_band::{band, CaseError, Place, TheoryOf, LOAD_REACH, MIN_CASES};
 use crate::input::scene::Scene;
 use crate::theory::cycle::PathBranch;
 use serde::Serialize;
+use std::sync::OnceLock;
 
-/// Stored points the error read-out averages over.
-pub const NEAREST: usize = 4;
-/// γ̃_glo per unit of distance.
-const GAMMA_GLO_UNIT: f64 = 0.1;
+/// Cases the error read-out averages over.
+pub const NEAREST: usize = super::trust_band::NEAREST;
 
 /// The ranges the reference set covers.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -45,28 +45,8 @@ pub struct SetRange {
     pub grid: usize,
 }
 
-/// One stored point near the scene, with the theory's error there.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct NearPoint {
-    /// System of \[S\] (1 or 2).
-    pub system: u8,
-    /// t·q_r (null: a half-space).
-    pub thickness_qr: Option<f64>,
-    /// γ̃_glo.
-    pub gamma_glo: f64,
-    /// p*.
-    pub p: f64,
-    /// GFMD's a_r (mean over seeds).
-    pub a_r_gfmd: f64,
-    /// The theory's a_r on the same maps.
-    pub a_r_theory: f64,
-    /// GFMD's ū/h_rms.
-    pub mean_gap_rel_gfmd: f64,
-    /// The theory's ū/h_rms on the same maps (null where it has none).
-    pub mean_gap_rel_theory: Option<f64>,
-    /// Distance from the scene (see the module docs).
-    pub distance: f64,
-}
+/// One stored case near the scene, with the theory's error there, at the scene's load.
+pub type NearPoint = CaseError;
 
 /// Where a scene lies relative to the reference set and the theory's measured error near it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -77,37 +57,39 @@ pub struct Trust {
     pub outside: Vec<String>,
     /// The set's ranges.
     pub set: SetRange,
-    /// The nearest stored loading points with a theory value.
+    /// Whether an error is known at the scene's load (see the module docs).
+    pub known: bool,
+    /// The cases the error is read from, nearest first, at the scene's load.
     pub nearest: Vec<NearPoint>,
     /// The model whose error was measured there.
     pub measured_model: u8,
     /// Whether that is the scene's model.
     pub same_model: bool,
-    /// Mean |ln(theory/GFMD)| of a_r over the nearest points.
+    /// Mean |ln(theory/GFMD)| of a_r over the cases (NaN where unknown).
     pub a_r_log_error: f64,
-    /// Largest theory/GFMD (or GFMD/theory) ratio of a_r among them.
+    /// Largest theory/GFMD (or GFMD/theory) ratio of a_r among them (NaN where unknown).
     pub a_r_worst_ratio: f64,
-    /// Mean |ln(theory/GFMD)| of ū/h_rms (null where no point has a theory gap).
+    /// The band: GFMD's a_r lies within this factor of the theory's, as far as the cases tell
+    /// (their worst error, GFMD's standard error and, where measured, its finite-size error;
+    /// NaN where unknown).
+    pub a_r_band_ratio: f64,
+    /// GFMD's finite-size error in ln a_r at this load (null where not measured).
+    pub finite_size_log_error: Option<f64>,
+    /// Where the error is read off the set's narrower maps for a wider scene: the error of
+    /// that transfer added to the band ([`bandwidth_transfer_error`]; null where not added).
+    pub bandwidth_log_error: Option<f64>,
+    /// Mean |ln(theory/GFMD)| of ū/h_rms (null where no case has a theory gap).
     pub mean_gap_log_error: Option<f64>,
+    /// GFMD's pull-off at the measured case nearest an adhesive scene (null without adhesion
+    /// or where no case is within reach): the number to hold the theory's pull-off against.
+    pub pull_off: Option<PullOffReference>,
     /// One line for a table.
     pub summary: String,
 }
 
-/// τ = log₁₀(1 + 1/(t·q_r)).
-fn thinness(t: f64) -> f64 {
-    (1.0 + 1.0 / t).log10()
-}
-
-fn distance(p: f64, glo: f64, tau: f64, r: &ReferencePoint) -> f64 {
-    let dp = (p / r.p).log10();
-    let dg = (glo - r.gamma_glo) / GAMMA_GLO_UNIT;
-    let dt = tau - thinness(r.thickness_qr);
-    (dp * dp + dg * dg + dt * dt).sqrt()
-}
-
 /// The ranges of the stored set.
 pub fn set_range() -> SetRange {
-    let set = reference_set();
+    let set = combined_set();
     let pos = set.iter().filter(|r| r.p > 0.0);
     let (lo, hi) = pos
         .clone()
@@ -124,11 +106,9 @@ pub fn set_range() -> SetRange {
     }
 }
 
-/// The trust read-out of `scene` (see the module docs).
-pub fn assess(scene: &Scene) -> Trust {
+/// Each way `scene` lies outside the set's ranges, in words.
+fn outside_lines(scene: &Scene, set: &SetRange) -> Vec<String> {
     let (p, t, glo) = (scene.pressure(), scene.thickness_qr(), scene.gamma_glo());
-    let tau = thinness(t);
-    let set = set_range();
     let mut outside = Vec::new();
     if p < set.pressure[0] {
         outside.push(format!(
@@ -158,79 +138,225 @@ pub fn assess(scene: &Scene) -> Trust {
     if let Some(line) = model_five_bandwidth(scene) {
         outside.push(line);
     }
-    // model 5 reads its own columns where the set has them, any other model the set's
-    let five = scene.model().kind == crate::input::model::ModelKind::Five;
-    let theory = |r: &ReferencePoint| -> (f64, f64, u8) {
-        if five && r.theory5_a_r > 0.0 {
-            (r.theory5_a_r, r.theory5_mean_gap_rel, 5)
+    outside
+}
+
+/// The theory column a scene's model reads at a stored point: the model's own where the point
+/// has it (the small-load set holds models 1–5; the 256² set model 5's), else the set's.
+pub fn theory_column(model: Option<u8>) -> impl Fn(&ReferencePoint) -> Option<(f64, f64, u8)> {
+    let five = model == Some(5);
+    move |r: &ReferencePoint| {
+        let own = model
+            .filter(|m| (1..=MODELS as u8).contains(m))
+            .map(|m| (m, r.theory_models[m as usize - 1]))
+            .filter(|(_, (a, _))| *a > 0.0);
+        if let Some((m, (a, u))) = own {
+            Some((a, u, m))
+        } else if five && r.theory5_a_r > 0.0 {
+            Some((r.theory5_a_r, r.theory5_mean_gap_rel, 5))
         } else {
-            (r.theory_a_r, r.theory_mean_gap_rel, r.theory_model)
+            (r.theory_a_r > 0.0).then_some((r.theory_a_r, r.theory_mean_gap_rel, r.theory_model))
         }
+    }
+}
+
+/// The trust read-out of `scene` (see the module docs).
+pub fn assess(scene: &Scene) -> Trust {
+    let set = set_range();
+    let outside = outside_lines(scene, &set);
+    let place = Place {
+        p: scene.pressure(),
+        gamma_glo: scene.gamma_glo(),
+        thickness_qr: scene.thickness_qr(),
     };
+    let five = scene.model().kind == crate::input::model::ModelKind::Five;
+    let theory = theory_column(scene.model.number());
     let bw = scene.spectrum().q_s() / scene.spectrum().q_r();
-    let wide = five && scene.is_adhesive() && bw.is_finite() && bw > WIDE_BANDWIDTH;
-    let points: Vec<&ReferencePoint> = if wide {
-        widest_rows(bandwidth_set())
-    } else {
-        reference_set().iter().collect()
-    };
-    let mut near: Vec<(f64, &ReferencePoint)> = points
-        .into_iter()
-        .filter(|r| r.branch == PathBranch::Loading && r.p > 0.0 && theory(r).0 > 0.0 && r.a_r.0 > 0.0)
-        .map(|r| (distance(p, glo, tau, r), r))
-        .collect();
-    near.sort_by(|a, b| a.0.total_cmp(&b.0));
-    near.truncate(NEAREST);
-    let nearest: Vec<NearPoint> = near
-        .iter()
-        .map(|&(d, r)| NearPoint {
-            system: r.system,
-            thickness_qr: r.thickness_qr.is_finite().then_some(r.thickness_qr),
-            gamma_glo: r.gamma_glo,
-            p: r.p,
-            a_r_gfmd: r.a_r.0,
-            a_r_theory: theory(r).0,
-            mean_gap_rel_gfmd: r.mean_gap_rel.0,
-            mean_gap_rel_theory: theory(r).1.is_finite().then_some(theory(r).1),
-            distance: d,
-        })
-        .collect();
-    let logs: Vec<f64> = nearest.iter().map(|n| (n.a_r_theory / n.a_r_gfmd).ln().abs()).collect();
-    let a_r_log_error = logs.iter().sum::<f64>() / logs.len().max(1) as f64;
-    let a_r_worst_ratio = logs.iter().cloned().fold(0.0, f64::max).exp();
-    let gaps: Vec<f64> = nearest
+    let wide_scene = five && scene.is_adhesive() && bw.is_finite() && bw > WIDE_BANDWIDTH;
+    let set_points: Vec<&ReferencePoint> = combined_set().iter().collect();
+    let mut wide = false;
+    let (mut band, finite_size_log_error) = stated_band(&set_points, place, scene.model.number());
+    if wide_scene {
+        let mut widest = band_of_widest(place, &theory);
+        if widest.known {
+            widest.half_width += finite_size_log_error.unwrap_or(0.0);
+            band = widest;
+            wide = true;
+        }
+    }
+    // read off the set's narrower maps: add the error of that transfer, measured where both exist
+    let narrow_read = !wide && bw.is_finite() && bw > 1.5 * SET_BANDWIDTH;
+    let bandwidth_log_error = (band.known && narrow_read).then(|| bandwidth_transfer_error(five));
+    band.half_width += bandwidth_log_error.unwrap_or(0.0);
+    let logs: Vec<f64> = band.cases.iter().map(|c| c.log_error().abs()).collect();
+    let nan_unless = |x: f64| if band.known { x } else { f64::NAN };
+    let a_r_log_error = nan_unless(logs.iter().sum::<f64>() / logs.len().max(1) as f64);
+    let a_r_worst_ratio = nan_unless(logs.iter().cloned().fold(0.0, f64::max).exp());
+    let a_r_band_ratio = nan_unless(band.half_width.exp());
+    let gaps: Vec<f64> = band
+        .cases
         .iter()
         .filter_map(|n| n.mean_gap_rel_theory.map(|g| (g / n.mean_gap_rel_gfmd).ln().abs()))
         .collect();
-    let mean_gap_log_error = (!gaps.is_empty()).then(|| gaps.iter().sum::<f64>() / gaps.len() as f64);
-    let measured_model = near.first().map_or(4, |(_, r)| theory(r).2);
+    let mean_gap_log_error = (band.known && !gaps.is_empty()).then(|| gaps.iter().sum::<f64>() / gaps.len() as f64);
+    let default_model = if five { 5 } else { 4 };
+    let measured_model = band.cases.first().map_or(default_model, |c| c.model);
     let same_model = scene.model.number() == Some(measured_model);
-    let mut summary = summary(
-        &outside,
-        measured_model,
+    let error = Error {
+        known: band.known,
+        p: place.p,
+        model: measured_model,
         same_model,
-        a_r_log_error,
-        a_r_worst_ratio,
-        mean_gap_log_error,
-    );
+        mean: a_r_log_error,
+        band: a_r_band_ratio,
+        finite_size: finite_size_log_error.is_some(),
+        gap: mean_gap_log_error,
+    };
+    let mut summary = summary(&outside, &error);
     // the set's maps are narrower than most scenes: say at which bandwidth it was measured
-    if wide {
+    if band.known && wide {
         summary += " (model 5 on the full system II against GFMD at λ_r/λ_s = 64–128)";
-    } else if bw > 1.5 * SET_BANDWIDTH && bw.is_finite() {
-        summary += &format!(" (measured on the set's maps, λ_r/λ_s = {SET_BANDWIDTH:.0}; this scene has {bw:.0})");
+    } else if let Some(b) = bandwidth_log_error {
+        summary += &format!(
+            " (measured on the set's maps, λ_r/λ_s = {SET_BANDWIDTH:.0}; this scene has {bw:.0}: the band adds ×/÷ {:.2} for that)",
+            b.exp()
+        );
     }
     Trust {
         inside: outside.is_empty(),
         outside,
         set,
-        nearest,
+        known: band.known,
+        nearest: band.cases,
         measured_model,
         same_model,
         a_r_log_error,
         a_r_worst_ratio,
+        a_r_band_ratio,
+        finite_size_log_error,
+        bandwidth_log_error,
         mean_gap_log_error,
+        pull_off: scene.is_adhesive().then(|| pull_off_reference(place)).flatten(),
         summary,
     }
+}
+
+/// GFMD's measured pull-off near a scene.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PullOffReference {
+    /// t·q_r of the case (null: a half-space).
+    pub thickness_qr: Option<f64>,
+    /// γ_s of the case over the preset's.
+    pub gamma_factor: f64,
+    /// γ̃_glo of the case.
+    pub gamma_glo: f64,
+    /// GFMD's pull-off p* (mean over the maps, ≤ 0).
+    pub pull_off_pressure: f64,
+    /// Its standard error over the maps (null with one map).
+    pub pull_off_pressure_err: Option<f64>,
+    /// Maps averaged.
+    pub seeds: usize,
+    /// Distance of the case from the scene (units of [`super::trust_band`]).
+    pub distance: f64,
+}
+
+/// The measured case nearest `place` within [`super::trust_band::CASE_REACH`], from the
+/// small-load set's cycles where it holds the case, else the 256² set's.
+pub fn pull_off_reference(place: Place) -> Option<PullOffReference> {
+    use super::reference_set::{pull_offs, small_load_pull_offs, ReferencePullOff};
+    use super::trust_band::{coords, CASE_REACH};
+    let small = small_load_pull_offs();
+    let held = |r: &ReferencePullOff| {
+        small
+            .iter()
+            .any(|s| s.system == r.system && s.thickness_qr == r.thickness_qr && s.gamma_factor == r.gamma_factor)
+    };
+    let (tau, ell) = coords(place.thickness_qr, place.gamma_glo);
+    small
+        .iter()
+        .chain(pull_offs().iter().filter(|r| !held(r)))
+        .filter(|r| r.gamma_factor > 0.0 && r.pressure.0.is_finite())
+        .map(|r| {
+            let (t, l) = coords(r.thickness_qr, r.gamma_glo);
+            (((t - tau).powi(2) + (l - ell).powi(2)).sqrt(), r)
+        })
+        .filter(|(d, _)| *d <= CASE_REACH)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(distance, r)| PullOffReference {
+            thickness_qr: r.thickness_qr.is_finite().then_some(r.thickness_qr),
+            gamma_factor: r.gamma_factor,
+            gamma_glo: r.gamma_glo,
+            pull_off_pressure: r.pressure.0,
+            pull_off_pressure_err: r.pressure.1.is_finite().then_some(r.pressure.1),
+            seeds: r.seeds,
+            distance,
+        })
+}
+
+/// Quantile of the transfer errors taken as the band's bandwidth term.
+const TRANSFER_QUANTILE: f64 = 0.9;
+
+/// The error of reading a wider scene's error off the set's λ_r/λ_s = 16 maps: over the
+/// bandwidth set's widest rows that the 256² set also holds (adhesive system II, loading,
+/// p* = 10⁻³…10⁻²), the [`TRANSFER_QUANTILE`] quantile of |e_wide − e_16|, e = ln(theory/GFMD):
+/// for model 5 its full-system column against the widest GFMD; for the other models model 4's
+/// columns on each map (the only other model the bandwidth set holds).
+pub fn bandwidth_transfer_error(five: bool) -> f64 {
+    static CACHE: OnceLock<[f64; 2]> = OnceLock::new();
+    CACHE.get_or_init(|| [transfer_quantile(false), transfer_quantile(true)])[usize::from(five)]
+}
+
+fn transfer_quantile(five: bool) -> f64 {
+    let narrow = reference_set();
+    let column = |r: &ReferencePoint| if five { r.theory5_a_r } else { r.theory_a_r };
+    let mut d: Vec<f64> = widest_rows(bandwidth_set())
+        .into_iter()
+        .filter(|w| w.branch == PathBranch::Loading && column(w) > 0.0)
+        .filter_map(|w| {
+            let n = narrow.iter().find(|n| {
+                n.system == w.system
+                    && n.branch == PathBranch::Loading
+                    && n.thickness_qr == w.thickness_qr
+                    && n.gamma_factor == w.gamma_factor
+                    && (n.p / w.p - 1.0).abs() < 1e-6
+            })?;
+            let e16 = (column(n) / n.a_r.0).ln();
+            let ewide = (column(w) / w.a_r.0).ln();
+            (e16.is_finite() && ewide.is_finite()).then_some((ewide - e16).abs())
+        })
+        .collect();
+    d.sort_by(f64::total_cmp);
+    d.get(((d.len() as f64 * TRANSFER_QUANTILE) as usize).min(d.len().saturating_sub(1)))
+        .copied()
+        .unwrap_or(0.0)
+}
+
+/// The band the read-out states at `place` from `points` for `model`'s columns: the
+/// neighbouring cases' band ([`super::trust_band::band`]) widened by GFMD's finite-size error
+/// where it was measured (returned beside it).
+pub fn stated_band(
+    points: &[&ReferencePoint],
+    place: Place,
+    model: Option<u8>,
+) -> (super::trust_band::Band, Option<f64>) {
+    let theory = theory_column(model);
+    let mut b = band(points, place, &theory);
+    let finite = finite_size_error(place);
+    if b.known {
+        b.half_width += finite.unwrap_or(0.0);
+    }
+    (b, finite)
+}
+
+/// The band over the bandwidth set's widest rows (model 5 on the full system).
+fn band_of_widest(place: Place, theory: &TheoryOf) -> super::trust_band::Band {
+    let widest = widest_rows(bandwidth_set());
+    band(&widest, place, theory)
+}
+
+/// GFMD's finite-size error in ln a_r at the place, where the finite-size study measured it.
+fn finite_size_error(place: Place) -> Option<f64> {
+    super::finite_size::log_error(place)
 }
 
 /// Above this λ_r/λ_s an adhesive model 5 scene reads its error from the bandwidth set (see
@@ -270,22 +396,47 @@ fn model_five_bandwidth(scene: &Scene) -> Option<String> {
     })
 }
 
-fn summary(outside: &[String], model: u8, same: bool, ar: f64, worst: f64, gap: Option<f64>) -> String {
+/// What the summary line says of the error.
+struct Error {
+    known: bool,
+    p: f64,
+    model: u8,
+    same_model: bool,
+    mean: f64,
+    band: f64,
+    finite_size: bool,
+    gap: Option<f64>,
+}
+
+fn summary(outside: &[String], e: &Error) -> String {
     let place = if outside.is_empty() {
         "inside the GFMD reference set".to_string()
     } else {
         format!("outside the GFMD reference set: {}", outside.join("; "))
     };
-    let gap = gap.map_or(String::new(), |g| {
+    if !e.known {
+        return format!(
+            "{place}; outside the measured range: no error known (fewer than {MIN_CASES} reference cases within reach have GFMD within {LOAD_REACH} decades of p* = {:.3e})",
+            e.p
+        );
+    }
+    let gap = e.gap.map_or(String::new(), |g| {
         format!(", mean gap off by {:.0} %", 100.0 * (g.exp() - 1.0))
     });
-    let whose = if same {
-        format!("model {model}")
+    let whose = if e.same_model {
+        format!("model {}", e.model)
     } else {
-        format!("model {model} (not this scene's model)")
+        format!("model {} (not this scene's model)", e.model)
+    };
+    let parts = if e.finite_size {
+        "their worst error, GFMD's standard error and finite size"
+    } else {
+        "their worst error and GFMD's standard error"
     };
     format!(
-        "{place}; {whose} vs GFMD at the {NEAREST} nearest points: a_r off by {:.0} % on average (worst {worst:.2}x){gap}",
-        100.0 * (ar.exp() - 1.0)
+        "{place}; {whose} vs GFMD at this load at the {} nearest cases: a_r off by {:.0} % on average, within ×/÷ {:.2} ({parts}){gap}",
+        NEAREST,
+        100.0 * (e.mean.exp() - 1.0),
+        e.band
     )
 }

@@ -181,16 +181,23 @@ fn branch_lines(
 }
 
 /// The scene in physical units: p, E*, h_rms, ḡ, λ_r/λ_s.
-/// The panel's short form of the trust read-out ([`asperity::fit::trust`]): the theory's
-/// measured a_r error at the nearest GFMD reference points and whose model it is, or that the
-/// scene lies outside the reference set (`run`'s `trust` line says how far).
+/// The panel's short form of the trust read-out ([`asperity::fit::trust`]): the band within
+/// which GFMD's a_r was measured from the theory's at this load and whose model it is, that no
+/// error is known at this load, or that the scene lies outside the reference set (`run`'s
+/// `trust` line says how far).
 fn trust_value(sc: &asperity::input::scene::Scene) -> String {
     let t = asperity::fit::trust::assess(sc);
+    if !t.known {
+        return "no error known here".into();
+    }
     if !t.inside {
         return "outside GFMD set".into();
     }
-    let pct = 100.0 * (t.a_r_log_error.exp() - 1.0);
-    format!("±{pct:.0}% a_r (m{})", t.measured_model)
+    format!(
+        "a_r ×/÷{} (m{})",
+        crate::numfmt::sig(t.a_r_band_ratio, 2),
+        t.measured_model
+    )
 }
 
 fn scene_rows(sc: &asperity::input::scene::Scene) -> Vec<Line<'static>> {
