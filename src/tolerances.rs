@@ -400,5 +400,5 @@ pub const ROUTE_PATCH_GAP_REL: f64 = 0.01;
 /// The DMT routes' pull-off over GFMD's stored pull-off on the cases of `tests/pull_off.rs`
 /// (one map of three): the ratio measured by `examples/pull_off_routes.rs` (7–150, the routes
 /// overshoot, docs/physics.md §6.3) must hold within this factor either way, which fails if a
-/// route fell back to [S]'s near-zero pull-off or moved by a map-to-map scatter.
+/// route fell back to \[S\]'s near-zero pull-off or moved by a map-to-map scatter.
 pub const ROUTE_PULL_OFF_RATIO_FACTOR: f64 = 1.5;
