@@ -158,3 +158,49 @@ fn both_routes_give_the_pull_off_measured_against_gfmd_not_the_zero_of_s() {
         }
     }
 }
+
+#[test]
+fn the_branches_carry_their_load_and_unloading_keeps_more_contact_than_loading() {
+    let scene = system2(0.5, 1.0);
+    let h = scene.spectrum().moment(0).sqrt();
+    let (range, strength) = (
+        scene.range_m() / h,
+        scene.surface_energy_j_m2() / scene.range_m() / scene.stress_unit(),
+    );
+    let probe = pull_off_route(&scene, Route::BearingArea, &[], &opts()).unwrap();
+    // BAM: the far state's attraction (a Gaussian tail in ū) decays faster than p_rep, so a
+    // loading branch exists and snaps in at a small positive load (physics.md §6.3)
+    let w = probe.hysteresis.expect("a window");
+    assert!(w.upper > 0.0 && w.lower < 0.0 && w.lower == probe.pull_off, "{w:?}");
+    let loads = [
+        1e-2,
+        1e-3,
+        0.5 * w.upper,
+        0.0,
+        0.5 * probe.pull_off,
+        2.0 * probe.pull_off,
+    ];
+    let r = pull_off_route(&scene, Route::BearingArea, &loads, &opts()).unwrap();
+    let mut last = f64::INFINITY;
+    for b in &r.branch[..5] {
+        let s = b.unloading.unwrap();
+        // p = p_rep − p_att(ū) on the branch (interpolated between the table's nodes)
+        let net = s.contact_load - bearing_area(s.gap, range, strength);
+        assert!((net - b.pressure).abs() < 1e-2 * s.contact_load, "{b:?}: {net}");
+        assert!(s.a_r <= last, "unloading a_r falls with the load: {b:?}");
+        last = s.a_r;
+        if let Some(l) = b.loading {
+            assert!(l.a_r <= s.a_r, "{b:?}");
+        }
+    }
+    let inside = r.branch[2];
+    assert!(
+        inside.loading.unwrap().a_r < 0.1 * inside.unloading.unwrap().a_r,
+        "{inside:?}"
+    );
+    assert!(r.branch[3].loading.is_none() && r.branch[5].unloading.is_none());
+    // the gap route on a slab: sticky at any contact, no window at positive loads
+    let g = pull_off_route(&scene, Route::GapDistribution, &[1e-3], &opts()).unwrap();
+    assert!(g.hysteresis.is_none() && g.pull_off < 0.0, "{:?}", g.hysteresis);
+    assert_eq!(g.branch[0].loading, g.branch[0].unloading);
+}
