@@ -395,3 +395,16 @@ pub const TRUST_BAND_COVERAGE: f64 = 0.85;
 
 /// Largest fraction of held-out points at which the trust read-out may say "no error known".
 pub const TRUST_UNKNOWN_MAX: f64 = 0.25;
+/// A DMT route's pull-off (the fold of its tabulated net pressure, refined by a parabola over
+/// three nodes 0.1 apart in ln p_rep*) against the minimum of the same bearing-area model by
+/// direct quadrature on a 40-times finer grid of loads (docs/physics.md §6.3): relative.
+pub const ROUTE_FOLD_REL: f64 = 0.01;
+/// The gap distribution's patch gap at the coarsest resolution (a sum over the spectrum's
+/// nodes) against the Yang–Persson closed form of the same scene (model 1, half-space):
+/// relative.
+pub const ROUTE_PATCH_GAP_REL: f64 = 0.01;
+/// The DMT routes' pull-off over GFMD's stored pull-off on the cases of `tests/pull_off.rs`
+/// (one map of three): the ratio measured by `examples/pull_off_routes.rs` (7–150, the routes
+/// overshoot, docs/physics.md §6.3) must hold within this factor either way, which fails if a
+/// route fell back to \[S\]'s near-zero pull-off or moved by a map-to-map scatter.
+pub const ROUTE_PULL_OFF_RATIO_FACTOR: f64 = 1.5;

@@ -6,6 +6,7 @@
 pub mod adhesion;
 pub mod closed_form;
 pub mod cycle;
+pub mod dmt;
 pub mod energy;
 pub mod engine;
 pub mod gap;

@@ -1,0 +1,206 @@
+//! The DMT routes to pull-off (docs/physics.md §6.3): closed-form limits, an independent
+//! minimisation of the bearing-area model, the gap distribution's coarsest patch gap against
+//! the Yang–Persson closed form, and both routes against GFMD's stored pull-offs.
+
+use asperity::fit::reference_set::pull_offs;
+use asperity::gfmd::result::prepare;
+use asperity::gfmd::{GfmdSetup, GridSpec};
+use asperity::input::model::Model;
+use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use asperity::theory::dmt::attraction::{bearing_area, SpectralNodes};
+use asperity::theory::dmt::{pull_off_route, Route, RouteOptions};
+use asperity::theory::gap::{closed_form, DryGap};
+use asperity::theory::persson;
+use asperity::tolerances::*;
+
+/// Cheaper options for the continuum scenes (the default resolves 10⁻¹⁰).
+fn opts() -> RouteOptions {
+    RouteOptions {
+        p_lo: 1e-8,
+        zeta_points: 24,
+        ..RouteOptions::default()
+    }
+}
+
+fn system2(t: f64, gamma_factor: f64) -> Scene {
+    let s = Preset::resolve("system-2").unwrap().scene().unwrap();
+    let g = s.surface_energy_j_m2() * gamma_factor;
+    s.with_thickness_qr(t).unwrap().with_surface_energy_j_m2(g).unwrap()
+}
+
+#[test]
+fn without_adhesion_there_is_no_pull_off_and_it_vanishes_continuously_with_gamma() {
+    for route in Route::ALL {
+        let r = pull_off_route(&system2(0.3, 0.0), route, &[1e-4, 0.0], &opts()).unwrap();
+        assert_eq!(r.pull_off, 0.0, "{route:?}");
+        assert!(r.hysteresis.is_none() && r.at_pull_off.is_none());
+        assert!(
+            r.branch[1].unloading.is_none(),
+            "no contact at zero load without adhesion"
+        );
+        let b = r.branch[0].unloading.unwrap();
+        assert!((b.contact_load / 1e-4 - 1.0).abs() < 2e-3, "{b:?}");
+        // |pull-off| grows with γ_s and goes to 0 with it
+        let mut last = 0.0;
+        for f in [1e-3, 0.03, 0.5, 1.0, 2.0] {
+            let p = pull_off_route(&system2(0.3, f), route, &[], &opts()).unwrap().pull_off;
+            assert!(p <= 0.0 && -p >= last, "{route:?} x{f}: {p} after {last}");
+            if f == 1e-3 {
+                assert!(-p < 1e-6, "{route:?}: {p} at 1e-3 of γ_s");
+            }
+            last = -p;
+        }
+        assert!(last > 1e-4, "{route:?}: {last} at 2 γ_s");
+    }
+}
+
+#[test]
+fn the_bearing_area_pull_off_is_the_minimum_found_by_direct_quadrature() {
+    let scene = system2(0.5, 1.0);
+    let r = pull_off_route(&scene, Route::BearingArea, &[], &opts()).unwrap();
+    // independently: ū₀(p) from the adhesionless table, the bearing area by quadrature of the
+    // Gaussian height density, the minimum over a fine grid of loads
+    let dry = DryGap::new(&scene, 1e-8, &Default::default()).unwrap();
+    let h = scene.spectrum().moment(0).sqrt();
+    let (range, strength) = (
+        scene.range_m() / h,
+        scene.surface_energy_j_m2() / scene.range_m() / scene.stress_unit(),
+    );
+    let area = |gap: f64| {
+        let (lo, n) = (gap - range, 20_000);
+        let dx = (12.0 - lo.max(-12.0)) / n as f64;
+        (0..n)
+            .map(|i| {
+                let x = lo.max(-12.0) + (i as f64 + 0.5) * dx;
+                (-0.5 * x * x).exp() / (2.0 * std::f64::consts::PI).sqrt() * dx
+            })
+            .sum::<f64>()
+    };
+    let mut best = f64::INFINITY;
+    for i in 0..=4000 {
+        let p = (1e-7f64.ln() + i as f64 * (1e-1f64.ln() - 1e-7f64.ln()) / 4000.0).exp();
+        let (g, _) = dry.gap_at(p).unwrap();
+        assert!((bearing_area(g, range, strength) / (strength * area(g)) - 1.0).abs() < 1e-6 || g > 8.0);
+        best = best.min(p - strength * area(g));
+    }
+    assert!(best < 0.0);
+    assert!(
+        (r.pull_off / best - 1.0).abs() < ROUTE_FOLD_REL,
+        "route {} vs direct {best}",
+        r.pull_off
+    );
+}
+
+#[test]
+fn the_coarsest_patch_gap_is_the_yang_persson_gap() {
+    // at ζ = q_L the patches are the whole surface: ū_ζ is the closed form of physics.md §5
+    // (model 1, half-space, where it is exact)
+    let scene = system2(f64::INFINITY, 0.0)
+        .with_model(Model::named(1).unwrap())
+        .unwrap();
+    let nodes = SpectralNodes::new(&scene, 16);
+    for p in [1e-4, 1e-3, 1e-2] {
+        let s = scene.clone().with_pressure(p).unwrap();
+        let sol = persson::solve(&s, &Default::default()).unwrap();
+        let (g, s2) = nodes.patch_gap_at(&sol, scene.spectrum().q_l());
+        let exact = closed_form(&s, &[p]).unwrap()[0];
+        assert!((g / exact - 1.0).abs() < ROUTE_PATCH_GAP_REL, "p* {p}: {g} vs {exact}");
+        assert!((s2 - 1.0).abs() < 1e-9, "all the roughness is finer than q_L: {s2}");
+    }
+}
+
+/// Route and scene of one case of the reference set (one map: seed 1).
+fn reference_scene(t: f64, gamma_factor: f64) -> Scene {
+    let preset = Preset::resolve("system-2").unwrap();
+    let grid = GridSpec::from_preset(preset.gfmd.as_ref().unwrap())
+        .with_grid(256)
+        .unwrap();
+    let full = preset.scene().unwrap().with_thickness_qr(t).unwrap();
+    let g = full.surface_energy_j_m2() * gamma_factor;
+    let setup = GfmdSetup {
+        scene: full.with_surface_energy_j_m2(g).unwrap(),
+        grid,
+        seed: 1,
+        surface: None,
+        rescale: true,
+    };
+    prepare(&setup).unwrap().theory_scene(1e-3).unwrap()
+}
+
+#[test]
+fn both_routes_give_the_pull_off_measured_against_gfmd_not_the_zero_of_s() {
+    // a half-space, a slab and a thin slab; [S]'s formulation gives 0 … 4 % of GFMD here
+    // (physics.md §6.2). The DMT routes overshoot instead (physics.md §6.3): the ratios
+    // route/GFMD measured on this map (seed 1) by `examples/pull_off_routes.rs` are pinned
+    // within a factor ROUTE_PULL_OFF_RATIO_FACTOR, and each must stay above GFMD's.
+    let cases = [
+        (f64::INFINITY, 1.0, 147.3, 7.41),
+        (0.3, 1.0, 82.2, 38.9),
+        (0.15, 2.0, 18.4, 21.7),
+    ];
+    for (t, f, bam, gap) in cases {
+        let g = pull_offs()
+            .iter()
+            .find(|r| r.system == 2 && r.thickness_qr == t && r.gamma_factor == f)
+            .unwrap()
+            .pressure
+            .0;
+        let scene = reference_scene(t, f);
+        for (route, measured) in [(Route::BearingArea, bam), (Route::GapDistribution, gap)] {
+            let r = pull_off_route(&scene, route, &[], &RouteOptions::default()).unwrap();
+            let ratio = r.pull_off / g;
+            assert!(
+                ratio > 1.0 && (ratio / measured).ln().abs() < ROUTE_PULL_OFF_RATIO_FACTOR.ln(),
+                "{route:?} t·q_r {t} γ x{f}: {} vs GFMD {g} (ratio {ratio}, measured {measured})",
+                r.pull_off
+            );
+        }
+    }
+}
+
+#[test]
+fn the_branches_carry_their_load_and_unloading_keeps_more_contact_than_loading() {
+    let scene = system2(0.5, 1.0);
+    let h = scene.spectrum().moment(0).sqrt();
+    let (range, strength) = (
+        scene.range_m() / h,
+        scene.surface_energy_j_m2() / scene.range_m() / scene.stress_unit(),
+    );
+    let probe = pull_off_route(&scene, Route::BearingArea, &[], &opts()).unwrap();
+    // BAM: the far state's attraction (a Gaussian tail in ū) decays faster than p_rep, so a
+    // loading branch exists and snaps in at a small positive load (physics.md §6.3)
+    let w = probe.hysteresis.expect("a window");
+    assert!(w.upper > 0.0 && w.lower < 0.0 && w.lower == probe.pull_off, "{w:?}");
+    let loads = [
+        1e-2,
+        1e-3,
+        0.5 * w.upper,
+        0.0,
+        0.5 * probe.pull_off,
+        2.0 * probe.pull_off,
+    ];
+    let r = pull_off_route(&scene, Route::BearingArea, &loads, &opts()).unwrap();
+    let mut last = f64::INFINITY;
+    for b in &r.branch[..5] {
+        let s = b.unloading.unwrap();
+        // p = p_rep − p_att(ū) on the branch (interpolated between the table's nodes)
+        let net = s.contact_load - bearing_area(s.gap, range, strength);
+        assert!((net - b.pressure).abs() < 1e-2 * s.contact_load, "{b:?}: {net}");
+        assert!(s.a_r <= last, "unloading a_r falls with the load: {b:?}");
+        last = s.a_r;
+        if let Some(l) = b.loading {
+            assert!(l.a_r <= s.a_r, "{b:?}");
+        }
+    }
+    let inside = r.branch[2];
+    assert!(
+        inside.loading.unwrap().a_r < 0.1 * inside.unloading.unwrap().a_r,
+        "{inside:?}"
+    );
+    assert!(r.branch[3].loading.is_none() && r.branch[5].unloading.is_none());
+    // the gap route on a slab: sticky at any contact, no window at positive loads
+    let g = pull_off_route(&scene, Route::GapDistribution, &[1e-3], &opts()).unwrap();
+    assert!(g.hysteresis.is_none() && g.pull_off < 0.0, "{:?}", g.hysteresis);
+    assert_eq!(g.branch[0].loading, g.branch[0].unloading);
+}
