@@ -388,3 +388,11 @@ pub const TENSION_CONTINUITY_REL: f64 = 1e-3;
 /// The coarsest scale's Griffith stress min(k_G √(q_L E* f(q_L t) γ_s), γ_s/ρ) recomputed from
 /// its closed form against the library's tension bound: relative.
 pub const TENSION_BOUND_REL: f64 = 1e-12;
+
+/// Weak adhesion (γ_s ≤ 1e-9 J/m², subnormals included) against the adhesionless theory of the
+/// same scene: relative a_r and mean gap. The adhesive march with its walls at zero differs
+/// from the adhesionless ODE by its discretisation error (1e-4 relative on system I at the
+/// default resolution), and walls that weak move a_r by less than a_r·σ_a*/p* ≈ 1e-5 a_r
+/// (`theory::adhesion`, "Weak adhesion"); also the allowance, beyond that wall effect, between
+/// neighbouring surface energies of `tests/weak_adhesion.rs`.
+pub const WEAK_ADHESION_REL: f64 = 1e-3;
