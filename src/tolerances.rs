@@ -408,3 +408,10 @@ pub const ROUTE_PATCH_GAP_REL: f64 = 0.01;
 /// overshoot, docs/physics.md §6.3) must hold within this factor either way, which fails if a
 /// route fell back to \[S\]'s near-zero pull-off or moved by a map-to-map scatter.
 pub const ROUTE_PULL_OFF_RATIO_FACTOR: f64 = 1.5;
+/// Weak adhesion (γ_s ≤ 1e-9 J/m², subnormals included) against the adhesionless theory of the
+/// same scene: relative a_r and mean gap. The adhesive march with its walls at zero differs
+/// from the adhesionless ODE by its discretisation error (1e-4 relative on system I at the
+/// default resolution), and walls that weak move a_r by less than a_r·σ_a*/p* ≈ 1e-5 a_r
+/// (`theory::adhesion`, "Weak adhesion"); also the allowance, beyond that wall effect, between
+/// neighbouring surface energies of `tests/weak_adhesion.rs`.
+pub const WEAK_ADHESION_REL: f64 = 1e-3;

@@ -148,7 +148,7 @@ fn pr_options(max_sigma: f64) -> Options {
 fn one_load(s: &Scene, p: f64, want_pr: bool, max_sigma: f64) -> Result<AtLoad> {
     let mut s = s.clone();
     s.pressure = p;
-    if s.gamma == 0.0 {
+    if !s.is_adhesive() {
         let acc = Accuracy {
             rtol: FIT_RTOL,
             ..Accuracy::default()

@@ -224,7 +224,7 @@ fn unconverged_reason(scene: &Scene, ev: &Evaluation, opts: &Options) -> Option<
     if !(0.0..=1.0).contains(&ev.stats.a_r) {
         return Some(format!("a_r = {} lies outside [0, 1]", fmt_value(ev.stats.a_r)));
     }
-    if scene.gamma == 0.0 {
+    if !scene.is_adhesive() {
         return None;
     }
     let tol = opts.adhesion.tol;
@@ -270,7 +270,7 @@ fn assemble(
         mean_gap_upper_rel: gap.as_ref().map(|g| g.upper),
         mean_gap_error: gap.as_ref().map(|g| g.error),
         contact_load: gap.as_ref().map(|g| g.contact_load),
-        mean_gap_about: mean_gap_about(scene.gamma > 0.0),
+        mean_gap_about: mean_gap_about(scene.is_adhesive()),
         mean_gap_note,
         elastic_energy: ev.elastic_energy,
         sigma_a: ev.sigma_a,

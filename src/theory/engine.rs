@@ -227,7 +227,7 @@ pub fn evaluate_continued(
     crate::work::start();
     opts.validate()?;
     let t0 = Instant::now();
-    if scene.gamma > 0.0 {
+    if scene.is_adhesive() {
         return evaluate_adhesive(scene, opts, path, cancel, t0);
     }
     // the elastic energy and a_r(q) near q_L need the ODE resolved where v passes p*²: at

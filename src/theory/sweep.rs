@@ -276,7 +276,7 @@ pub fn sweep(scene: &Scene, spec: &SweepSpec, opts: &Options, cancel: Option<&At
     let (jump_in_pressure, pull_off_pressure) = (window.jump_in_pressure, window.pull_off_pressure);
     // the mean gap (physics.md §5.1): without adhesion the energy route on this grid's own
     // table; with adhesion the load each branch's contact carries on the adhesionless table of the scene
-    let (gaps, gap_note) = if scene.gamma > 0.0 {
+    let (gaps, gap_note) = if scene.is_adhesive() {
         adhesive_gaps(scene, spec.from, &ps, m, &evs, opts, cancel)?
     } else {
         dry_sweep_gaps(scene, &ps, step, &evs, unit)?
@@ -454,7 +454,7 @@ fn failure_note(scene: &Scene, ps: &[f64], evs: &[Result<crate::theory::engine::
             .unwrap_or_default();
         // without adhesion the gap integrates over every load above; with adhesion each row's
         // gap is its own state's
-        let below = if scene.gamma > 0.0 {
+        let below = if scene.is_adhesive() {
             String::new()
         } else {
             format!(

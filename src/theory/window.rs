@@ -405,7 +405,7 @@ pub const WINDOW_STEP: f64 = 4.0;
 /// assert!(w.pull_off_pressure.map_or(true, |p| p < 1e-5));
 /// ```
 pub fn window_around(scene: &Scene, acc: &AdhesionAccuracy, cancel: Option<&AtomicBool>) -> Result<Option<Window>> {
-    if scene.gamma == 0.0 {
+    if !scene.is_adhesive() {
         return Ok(None);
     }
     let all = AdhesionAccuracy {
@@ -434,7 +434,7 @@ pub fn window_around_from(
     cancel: Option<&AtomicBool>,
 ) -> Result<Option<Window>> {
     let p0 = scene.pressure;
-    if scene.gamma == 0.0 || stable_count(&at_p0.branches) < 2 {
+    if !scene.is_adhesive() || stable_count(&at_p0.branches) < 2 {
         return Ok(None);
     }
     let gamma = scene.gamma;

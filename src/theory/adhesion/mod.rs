@@ -70,6 +70,23 @@
 //! where it differs, is the unloading branch (hysteresis), reported as `unloading_a_r` and in
 //! `branches`. `residual` is |H|/(γ_s a_r(q_s)) = |γ(q_s)/γ_s − 1| at the root (≤ `tol`).
 //!
+//! # Weak adhesion: the limit γ_s → 0
+//!
+//! Where γ_s a_r(q_s) is tiny against the elastic energy I (≈ the full-contact u_ela^(f)),
+//! the root sits at C ≈ −I and H = C + I − γ_s a_r is a near-cancellation: it is known only to
+//! its round-off, ~ε(1 + |w|)|C| (`shooter::BALANCE_ULPS`), and the relative tolerance
+//! tol·γ_s·a_r can lie below that (γ_s ≲ 1e-7 J/m² on system II at the default tol = 1e-8).
+//! There Brent's bracket narrows to the scan variable's ulps, the balance is met to round-off,
+//! and the reported residual is the mismatch beyond it. What that round-off leaves open moves
+//! a_r by less than the weak walls' whole effect, a_r·σ_a*/p* with σ_a* ∝ √γ_s (1e-7 a_r at
+//! γ_s = 1e-12 J/m² on systems I and II), far below the discretisation error. Where γ_s is
+//! below one ulp of u_ela^(f) (γ̃_glo ≤ ε, [`crate::input::scene::WEAK_ADHESION_GLO`]) it
+//! cannot move the balance at all: the scene is not adhesive ([`Scene::is_adhesive`]) and
+//! every front end evaluates it with the adhesionless theory, its γ_s → 0 limit. The two
+//! answers meet to the adhesive march's discretisation error (the march with the walls at
+//! zero against the adhesionless ODE: 1e-4 relative on system I at the default resolution);
+//! `tests/weak_adhesion.rs` sweeps γ_s from 5e-324 to 1e-3 J/m².
+//!
 //! # Files
 //!
 //! `grid` (resolution steps), `heat` (the exact drift–diffusion step with an absorbing wall),

@@ -32,7 +32,7 @@
 
 use super::grid::build_grid;
 use super::propagator::Marcher;
-use super::shooter::{check_bounded, check_cancel, point, Point, Scale, Shooter};
+use super::shooter::{balance_floor, check_bounded, check_cancel, point, smooth_cell, Point, Scale, Shooter};
 use super::shooting::{Record, Shot};
 use super::walls::WallCoefficients;
 use super::AdhesionAccuracy;
@@ -63,7 +63,8 @@ pub(super) struct Root {
     pub(super) record: Record,
     /// H rises through the root.
     pub(super) stable: bool,
-    /// |H|/(γ_s a_r(q_s)) at the root = |γ(q_s)/γ_s − 1|: the energy balance's mismatch.
+    /// |H|/(γ_s a_r(q_s)) at the root = |γ(q_s)/γ_s − 1|: the energy balance's mismatch
+    /// (beyond its round-off where the tolerance lies below that, see `shooter::BALANCE_ULPS`).
     pub(super) h_rel: f64,
 }
 
@@ -408,45 +409,6 @@ fn bisect_cells(
     }
 }
 
-/// Cells narrower than this in w (a factor 1.65 in C) may be left unsplit on the curvature
-/// test of [`smooth_cell`]; wider ones only on the monotone bound.
-const CURVATURE_CELL: f64 = 0.5;
-/// Safety factor on the curvature estimate of [`smooth_cell`].
-const CURVATURE_SAFETY: f64 = 4.0;
-
-/// Whether cell i of `pts` (narrower than [`CURVATURE_CELL`]) can hold no root beyond what
-/// its end values show, judging H'' by the largest second difference K of H at the cell's
-/// ends and next to them (four neighbouring points at least): with |H''| ≤ K, H differs from
-/// the chord by at most Kδ²/8 on a cell of width δ, so a cell whose ends have one sign holds
-/// no pair of roots while min|H₀|, |H₁| > S·Kδ²/8, and a cell with a sign change holds one
-/// root (H monotone) while |H₁ − H₀| > S·Kδ². S = [`CURVATURE_SAFETY`].
-///
-/// The monotone bound [F₀ − G₁, F₁ − G₀] alone cannot rule out a pair where H is small
-/// against the rise of F and G (tiny loads with strong adhesion, where H ≈ 1e-3 γ_s while F
-/// and G each rise by 0.4 γ_s: every cell was bisected down to [`SCAN_MIN_CELL`]).
-fn smooth_cell(pts: &[Point], i: usize) -> bool {
-    let delta = pts[i + 1].w - pts[i].w;
-    if delta > CURVATURE_CELL || i == 0 || i + 2 >= pts.len() {
-        return false;
-    }
-    let d2 = |j: usize| -> f64 {
-        let (a, b, c) = (pts[j - 1], pts[j], pts[j + 1]);
-        2.0 * ((c.h - b.h) / (c.w - b.w) - (b.h - a.h) / (b.w - a.w)) / (c.w - a.w)
-    };
-    let lo = i.saturating_sub(1).max(1);
-    let hi = (i + 2).min(pts.len() - 2);
-    let k = (lo..=hi).map(|j| d2(j).abs()).fold(0.0, f64::max);
-    if !k.is_finite() {
-        return false;
-    }
-    let (h0, h1) = (pts[i].h, pts[i + 1].h);
-    if (h0 < 0.0) == (h1 < 0.0) {
-        h0.abs().min(h1.abs()) > CURVATURE_SAFETY * k * delta * delta / 8.0
-    } else {
-        (h1 - h0).abs() > CURVATURE_SAFETY * k * delta * delta
-    }
-}
-
 /// Every sign change of H along `pts` refined (see [`refine`]) and appended to `roots`.
 fn refine_sign_changes(
     s: &mut Shooter<'_>,
@@ -522,8 +484,15 @@ pub(super) fn refine(
         check_cancel(cancel)?;
         let ((a, fa, _), (b, fb, ab), (c, fc, _)) = (pa, pb, pc);
         let width = (b - a).abs();
+        // where the tolerance lies below the balance's round-off (weak adhesion), the bracket
+        // narrows down to w's own ulps: |H| then reaches that round-off
+        let min_width = if tol * ab < balance_floor(scale, b) {
+            4.0 * f64::EPSILON
+        } else {
+            1e-13
+        };
         if fb.abs() <= tol * ab
-            || width <= 1e-13 * (1.0 + b.abs())
+            || width <= min_width * (1.0 + b.abs())
             || (width < JUMP_WIDTH && (fb - fa).abs() > JUMP_SLOPE * mean_slope * width)
         {
             break;
@@ -582,7 +551,15 @@ pub(super) fn refine(
             s.m.shoot(&s.coef, scale.c(pb.0), true)
         }
     };
-    let h_rel = (shot.h / (gs * shot.a_s.max(1e-300))).abs();
+    // the energy balance's relative mismatch; where the tolerance lies below the balance's
+    // round-off (weak adhesion), the mismatch in excess of that round-off (see `balance_floor`)
+    let rel = gs * shot.a_s.max(1e-300);
+    let (h, floor) = (shot.h.abs(), balance_floor(scale, pb.0));
+    let h_rel = if floor > tol * shot.a_s {
+        (h - floor).max(0.0) / rel
+    } else {
+        h / rel
+    };
     Ok(Root {
         c: shot.c,
         h_rel,

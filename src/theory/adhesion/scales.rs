@@ -90,7 +90,7 @@ pub fn snapshots(
     // (node, state, wall the density is read with)
     let mut states: Vec<(usize, Cursor, f64)> = Vec::with_capacity(frames);
     let (a_q, sigma_a_q);
-    if scene.gamma > 0.0 {
+    if scene.is_adhesive() {
         let solved;
         let sol = match solution {
             Some(s) => s,

@@ -23,7 +23,9 @@ pub(super) const COLLAPSED: f64 = 1e-3;
 /// every sign change). `cancel` aborts between marches.
 ///
 /// # Errors
-/// [`Error::Invalid`] for a bad scene or accuracy, [`Error::Cancelled`], and
+/// [`Error::Invalid`] for a bad scene or accuracy (γ_s at most
+/// [`crate::input::scene::WEAK_ADHESION_GLO`]·u_ela^(f) included: no adhesion the balance
+/// resolves), [`Error::Cancelled`], and
 /// [`Error::NotConverged`] when no root met the tolerance.
 pub fn solve(
     scene: &Scene,
@@ -69,6 +71,18 @@ pub(crate) fn solve_checked(
     path: &[&AdhesiveSolution],
     cancel: Option<&AtomicBool>,
 ) -> Result<AdhesiveSolution> {
+    // below the weakest adhesion the balance resolves the scene is adhesionless (module docs)
+    if !scene.is_adhesive() {
+        return Err(Error::invalid(
+            crate::error::Field::SurfaceEnergy,
+            scene.gamma,
+            format!(
+                "gamma > {} J/m^2 for the adhesive solver (weaker adhesion is below the round-off \
+                 of the energy balance: the adhesionless theory answers)",
+                crate::error::fmt_value(crate::input::scene::WEAK_ADHESION_GLO * scene.full_contact_energy())
+            ),
+        ));
+    }
     match solve_at(scene, acc, path, cancel) {
         // the loading root on a jump of the discrete H: the same equations at a resolution
         // whose steps end elsewhere (see RESTEP)

@@ -39,7 +39,7 @@ use std::f64::consts::PI;
 pub fn closed_form_gamma_p(scene: &Scene) -> Option<f64> {
     let m = &scene.model;
     let unweighted = m.alpha == 0.0 || (m.c1 == 0.0 && m.c2 == 0.0);
-    (m.c2 == 0.0 && unweighted && scene.gamma == 0.0).then_some(1.0 - m.c1)
+    (m.c2 == 0.0 && unweighted && !scene.is_adhesive()).then_some(1.0 - m.c1)
 }
 
 /// Yang–Persson closed form (module docs), ū/h_rms at reduced pressures `ps`, for an
