@@ -436,13 +436,13 @@ pub fn reduction_table(r: &Reduction) -> String {
         ("t*q_r", thick(r.full.thickness_qr), thick(r.reduced.thickness_qr)),
         (
             "L/lambda_r",
-            format!("{}", r.full.system_size_ratio),
-            format!("{}", r.reduced.system_size_ratio),
+            num(r.full.system_size_ratio),
+            num(r.reduced.system_size_ratio),
         ),
         (
             "lambda_r/lambda_s",
-            format!("{}", r.full.bandwidth),
-            format!("{}", r.reduced.bandwidth),
+            num(r.full.bandwidth),
+            num(r.reduced.bandwidth),
         ),
         (
             "gamma/(rho E* g)",
@@ -469,6 +469,12 @@ pub fn reduction_table(r: &Reduction) -> String {
     t
 }
 
+/// A ratio or an input in the table: six significant digits, trailing zeros dropped (a
+/// ratio computed as 200.0000000000000332 reads 200), as [`crate::numfmt`] writes numbers.
+fn num(x: f64) -> String {
+    crate::numfmt::format(x, 6, true)
+}
+
 /// The human-readable table of one run.
 pub fn table(o: &GfmdResult) -> String {
     let mut t = String::new();
@@ -484,9 +490,9 @@ pub fn table(o: &GfmdResult) -> String {
     line("p*", format!("{:.6e}  ({:.4e} Pa)", o.pressure, o.pressure_pa));
     line(
         "t*q_r",
-        o.thickness_qr.map_or("inf (semi-infinite)".into(), |t| t.to_string()),
+        o.thickness_qr.map_or("inf (semi-infinite)".into(), num),
     );
-    line("gamma_s", format!("{} J/m^2", o.gamma));
+    line("gamma_s", format!("{} J/m^2", num(o.gamma)));
     let th = o.theory.as_ref();
     let both = |g: f64, t: Option<f64>| match t {
         Some(t) => format!(
