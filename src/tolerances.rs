@@ -388,3 +388,14 @@ pub const TENSION_CONTINUITY_REL: f64 = 1e-3;
 /// The coarsest scale's Griffith stress min(k_G √(q_L E* f(q_L t) γ_s), γ_s/ρ) recomputed from
 /// its closed form against the library's tension bound: relative.
 pub const TENSION_BOUND_REL: f64 = 1e-12;
+
+/// ḡ or h_rms of a map written by `asperity surface generate` and read back, against the
+/// requested value (relative): the formats that keep every digit (text, NumPy f64) give it to
+/// round-off.
+pub const GENERATED_NORM_REL: f64 = 1e-9;
+/// The same for Gwyddion's `.gsf`, which stores f32 (7 digits).
+pub const GENERATED_NORM_F32_REL: f64 = 1e-5;
+/// Hurst exponent of the PSD fit of a map from `asperity surface generate` against the requested
+/// H (absolute): the generator's amplitudes are the PSD's own (no scatter, only random phases),
+/// so the fit recovers H to the bins' discretisation (7e-4 measured at 128², λ_r/λ_s = 16).
+pub const GENERATED_HURST_ABS: f64 = 0.01;

@@ -30,6 +30,7 @@ pub mod flags;
 pub mod heartbeat;
 pub mod parse;
 pub mod surface;
+pub mod surface_generate;
 pub mod sweep;
 
 pub use parse::{clap_error_line, count, field_name, number, render_error, whole_number, whole_number_u64};
@@ -69,6 +70,8 @@ pub enum Command {
     Compare(gauge::CompareArgs),
     /// The PSD of a measured height map: radial average, h_rms, rms gradient and curvature, self-affine fit.
     Psd(surface::PsdArgs),
+    /// Make a surface: `surface generate` writes a seeded self-affine height map (.txt .asc .dat .xyz .npy .gsf).
+    Surface(surface_generate::SurfaceCmdArgs),
 }
 
 /// Output format of `run`.
@@ -358,6 +361,7 @@ fn run_cli() -> i32 {
         Some(Command::Gauge(args)) => gauge::run(&args),
         Some(Command::Compare(args)) => gauge::compare(&args),
         Some(Command::Psd(args)) => surface::run_psd(&args),
+        Some(Command::Surface(args)) => surface_generate::run(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let beat = heartbeat::start("run");
             let out = asperity::report::point(&scene, &run_options(&args));
