@@ -29,6 +29,7 @@ use std::io::Write;
 pub mod flags;
 pub mod heartbeat;
 pub mod parse;
+pub mod progress;
 pub mod surface;
 pub mod surface_generate;
 pub mod sweep;
@@ -42,6 +43,9 @@ pub struct Cli {
     /// What to do; without a subcommand the terminal explorer opens.
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// No progress on stderr (bars and progress lines; errors and notes still print).
+    #[arg(long, global = true)]
+    pub quiet: bool,
 }
 
 /// Subcommands.
@@ -331,6 +335,7 @@ fn run_cli() -> i32 {
             return 2;
         }
     };
+    progress::set_quiet(cli.quiet);
     let mut unconverged = false;
     let result = match cli.command {
         None => tui_entry(preset::DEFAULT_PRESET, None, None, false),
