@@ -225,13 +225,13 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
                 points: args.points,
                 cycle: args.cycle,
             };
-            let labels = path_labels(&spec);
+            let labels = super::gfmd_cycle::path_labels(&spec);
             let mut steps = Steps::new("gfmd", "load", labels.len());
             let c = gfmd::cycle::run_cycle(
                 &setup,
                 &spec,
                 &opts,
-                &mut |k, p| report(&mut steps, k, &p, &opts, |k| path_label(&labels, k)),
+                &mut |k, p| report(&mut steps, k, &p, &opts, |k| super::gfmd_cycle::path_label(&labels, k)),
                 &cancel,
             );
             steps.finish();
@@ -329,43 +329,6 @@ pub fn report(steps: &mut Steps, k: usize, p: &Progress, opts: &GfmdOptions, lab
         "step {}, residual {:.1e} (target {:.0e}), contact {:.4}",
         p.iteration, p.residual, opts.tolerance, p.contact_fraction
     ));
-}
-
-/// The loads of a load path in the order GFMD walks them (the tension steps that follow a
-/// cycle are not known in advance).
-fn path_labels(spec: &CycleSpec) -> Vec<String> {
-    let rising = SweepSpec {
-        from: spec.from.min(spec.to),
-        to: spec.from.max(spec.to),
-        points: spec.points,
-    }
-    .pressures();
-    let top = rising.len().saturating_sub(1);
-    let mut out = Vec::new();
-    if spec.cycle || spec.from <= spec.to {
-        out.extend(rising.iter().map(|&p| format!("loading, {}", load_label(p))));
-    } else {
-        out.push(format!("loading, {}", load_label(rising[top])));
-    }
-    if spec.cycle || spec.from > spec.to {
-        out.extend(
-            rising[..top]
-                .iter()
-                .rev()
-                .map(|&p| format!("unloading, {}", load_label(p))),
-        );
-    }
-    out
-}
-
-/// The label of step `k` of a load path: its load, or a tension step past the listed loads.
-fn path_label(labels: &[String], k: usize) -> Option<String> {
-    Some(
-        labels
-            .get(k)
-            .cloned()
-            .unwrap_or_else(|| "tension, towards pull-off".into()),
-    )
 }
 
 /// Prints a single run with its study (ladder, seeds) as the format asks, after the notes.
