@@ -415,3 +415,13 @@ pub const ROUTE_PULL_OFF_RATIO_FACTOR: f64 = 1.5;
 /// (`theory::adhesion`, "Weak adhesion"); also the allowance, beyond that wall effect, between
 /// neighbouring surface energies of `tests/weak_adhesion.rs`.
 pub const WEAK_ADHESION_REL: f64 = 1e-3;
+/// ḡ or h_rms of a map written by `asperity surface generate` and read back, against the
+/// requested value (relative): the formats that keep every digit (text, NumPy f64) give it to
+/// round-off.
+pub const GENERATED_NORM_REL: f64 = 1e-9;
+/// The same for Gwyddion's `.gsf`, which stores f32 (7 digits).
+pub const GENERATED_NORM_F32_REL: f64 = 1e-5;
+/// Hurst exponent of the PSD fit of a map from `asperity surface generate` against the requested
+/// H (absolute): the generator's amplitudes are the PSD's own (no scatter, only random phases),
+/// so the fit recovers H to the bins' discretisation (7e-4 measured at 128², λ_r/λ_s = 16).
+pub const GENERATED_HURST_ABS: f64 = 0.01;

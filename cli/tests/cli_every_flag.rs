@@ -102,11 +102,14 @@ fn allowed(kind: &Kind, arg: &clap::Arg, v: &str) -> bool {
 
 /// Flags a command needs to get to its own checks, with values that pass them (a psd map).
 fn context(sub: &str, skip: &str, map: &str) -> Vec<String> {
+    // a map to write, beside the map read
+    let out = format!("{map}.npy");
     let all: Vec<(&str, &str)> = match sub {
         "sweep" => vec![("--from", "0.01"), ("--to", "0.1")],
         "gauge" => vec![("--fit", "w0"), ("--reference", "eq18")],
         "compare" => vec![("--reference", "eq18")],
         "psd" => vec![("file", map)],
+        "surface" => vec![("action", "generate"), ("--output", out.as_str())],
         _ => vec![],
     };
     let mut out = Vec::new();

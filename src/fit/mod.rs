@@ -249,10 +249,14 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
     let evaluations = problem.evaluations + report.number_of_evaluations * (2 * k);
     if !report.termination.was_successful() {
         let why = match problem.error.take() {
-            Some(e) => format!("{:?}; the theory failed on the way: {e}", report.termination),
+            Some(e) => format!(
+                "{}; the theory failed on the way: {e}",
+                termination_words(&report.termination)
+            ),
             None => format!(
-                "{:?} after {} evaluations",
-                report.termination, report.number_of_evaluations
+                "{} after {} evaluations",
+                termination_words(&report.termination),
+                report.number_of_evaluations
             ),
         };
         return Err(Error::NotConverged {
@@ -279,7 +283,7 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
         chi2_reduced: with_errors.then_some(chi2 / dof),
         points: n,
         evaluations,
-        termination: format!("{:?}", report.termination),
+        termination: termination_words(&report.termination),
         model,
         start,
         elapsed_s: t0.elapsed().as_secs_f64(),
@@ -469,4 +473,23 @@ pub fn identifiability(j: &DMatrix<f64>) -> (f64, Vec<f64>) {
         .map(|vt| vt.row(imin).iter().copied().collect())
         .unwrap_or_else(|| vec![0.0; k]);
     (cond, v)
+}
+
+/// Why Levenberg–Marquardt stopped, in words (not the solver's type names).
+fn termination_words(t: &levenberg_marquardt::TerminationReason) -> String {
+    use levenberg_marquardt::TerminationReason as T;
+    match t {
+        T::Converged { ftol: true, xtol: true } => "converged (the misfit and the parameters stopped changing)".into(),
+        T::Converged { ftol: true, .. } => "converged (the misfit stopped changing)".into(),
+        T::Converged { .. } => "converged (the parameters stopped changing)".into(),
+        T::ResidualsZero => "converged (the model meets every point)".into(),
+        T::Orthogonal => "converged (the misfit is orthogonal to every parameter's effect)".into(),
+        T::LostPatience => "stopped: the evaluation budget ran out".into(),
+        T::NoImprovementPossible(what) => format!("stopped: no improvement possible ({what})"),
+        T::Numerical(what) => format!("stopped: a non-finite value ({what})"),
+        T::User(what) => format!("stopped: {what}"),
+        T::NoParameters => "stopped: no parameters to fit".into(),
+        T::NoResiduals => "stopped: no reference points".into(),
+        T::WrongDimensions(what) => format!("stopped: wrong dimensions ({what})"),
+    }
 }

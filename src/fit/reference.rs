@@ -8,7 +8,9 @@
 //! ```
 //!
 //! `p` (p* = p/(E*ḡ)) and at least one observable column are required; an empty cell means
-//! "not measured at this load". Pr CSV: `p,sigma,density` (σ* reduced by E*ḡ, ∫density dσ* =
+//! "not measured at this load". The other columns of `gfmd --format csv`
+//! ([`GFMD_CSV_EXTRA_COLUMNS`]) are read past, so its output is a reference as written: rows
+//! with `converged` false and a cycle's rows whose `branch` is not `loading` are skipped. Pr CSV: `p,sigma,density` (σ* reduced by E*ḡ, ∫density dσ* =
 //! a_r), one row per bin, histograms grouped by p*. A bad cell is reported as one line naming
 //! the file, the line, the column, the value and what is allowed.
 
@@ -164,7 +166,28 @@ fn lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
         .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
 }
 
+/// The columns of `gfmd --format csv` (runs, sweeps, cycles) that a reference file may carry
+/// besides its own: read past, so that GFMD's CSV is a reference as written (its rows that did
+/// not converge, and a cycle's rows off the loading branch, are skipped).
+pub const GFMD_CSV_EXTRA_COLUMNS: [&str; 10] = [
+    "mean_gap",
+    "elastic_energy",
+    "converged",
+    "contact_stress_variance",
+    "iterations",
+    "residual",
+    "theory_a_r",
+    "theory_mean_gap_rel",
+    "theory_mean_contact_stress",
+    "branch",
+];
+
 fn header<'a>(source: &str, text: &'a str, known: &[&str]) -> Result<(usize, Vec<&'a str>)> {
+    header_with(source, text, known, &[])
+}
+
+/// As [`header`], also taking the columns `extra` (not named in the message).
+fn header_with<'a>(source: &str, text: &'a str, known: &[&str], extra: &[&str]) -> Result<(usize, Vec<&'a str>)> {
     let Some((n, h)) = lines(text).next() else {
         return Err(cell_error(
             source,
@@ -176,7 +199,7 @@ fn header<'a>(source: &str, text: &'a str, known: &[&str]) -> Result<(usize, Vec
     };
     let cols: Vec<&str> = h.split(',').map(str::trim).collect();
     for (i, c) in cols.iter().enumerate() {
-        if !known.contains(c) {
+        if !known.contains(c) && !extra.contains(c) {
             return Err(cell_error(
                 source,
                 n,
@@ -224,7 +247,7 @@ pub fn parse_csv(text: &str, source: &str) -> Result<Reference> {
         "mean_gap_rel",
         "mean_gap_rel_err",
     ];
-    let (hline, cols) = header(source, text, &known)?;
+    let (hline, cols) = header_with(source, text, &known, &GFMD_CSV_EXTRA_COLUMNS)?;
     if !cols.contains(&"p") || !Observable::COLUMNS.iter().any(|o| cols.contains(&o.key())) {
         return Err(cell_error(
             source,
@@ -260,6 +283,11 @@ pub fn parse_csv(text: &str, source: &str) -> Result<Reference> {
             ));
         }
         let at = |name: &str| cols.iter().position(|c| *c == name).map(|i| cells[i]);
+        // GFMD's own CSV: a load that did not converge, or a cycle's row off the loading
+        // branch (unloading, tension), is not a loading reference point
+        if at("converged") == Some("false") || at("branch").is_some_and(|b| b != "loading") {
+            continue;
+        }
         let p = load(source, n, at("p").unwrap_or(""))?;
         for o in Observable::COLUMNS {
             let Some(v) = at(o.key()).filter(|v| !v.is_empty()) else {

@@ -47,14 +47,16 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         rep.rungs.extend(r.rungs);
         rep.hard_cases.extend(r.hard_cases);
     };
-    eprintln!("asperity bench: adhesionless theory ...");
+    let mut steps = super::progress::Steps::new("bench", "ladder", 4);
+    steps.step(0, "adhesionless theory");
     add(benchmark::adhesionless(args.quick)?);
-    eprintln!("asperity bench: adhesive theory ...");
+    steps.step(1, "adhesive theory");
     add(benchmark::adhesive(args.quick)?);
-    eprintln!("asperity bench: load sweeps ...");
+    steps.step(2, "load sweeps");
     add(benchmark::sweeps(args.quick)?);
-    eprintln!("asperity bench: GFMD ...");
+    steps.step(3, "GFMD");
     add(benchmark::gfmd(args.quick)?);
+    steps.finish();
     let tables = benchmark::markdown(&rep);
     super::emit(&tables);
     if !args.quick {

@@ -95,6 +95,8 @@ const SVG: &[&str] = &["svg"];
 const PNG: &[&str] = &["png"];
 /// The text formats a map is saved in (and read back from).
 const MAP_TEXT: &[&str] = &["txt", "asc", "dat"];
+/// Every format a map is written in (and read back from).
+const MAP_ALL: &[&str] = &["txt", "asc", "dat", "xyz", "npy", "gsf"];
 
 /// The whole table: every flag of every command.
 pub fn table() -> Vec<Flag> {
@@ -197,6 +199,15 @@ pub fn table() -> Vec<Flag> {
             )),
             "per decade",
         ),
+        // surface generate
+        only(&["surface"], "action", Choice, ""),
+        only(&["surface"], "--output", OutFile(MAP_ALL), ""),
+        row("--hurst", Number(Field::Hurst), ""),
+        row("--rolloff-wavelength", Number(Field::RolloffWavelength), "m"),
+        row("--short-wavelength", Number(Field::ShortWavelength), "m"),
+        row("--rms-gradient", Number(Field::RmsGradient), ""),
+        row("--rms-height", Number(Field::RmsHeight), "m"),
+        row("--non-periodic", Switch, ""),
     ]
 }
 

@@ -9,6 +9,7 @@
 
 use super::gfmd::{ladder_rung, MethodArg, DEFAULT_GRID};
 use super::parse;
+use super::progress::Steps;
 use asperity::error::{Error, Field, Result};
 use asperity::fit::gfmd_reference::{self, GfmdReference, GfmdReferenceSpec, Stage};
 use asperity::gfmd::{GfmdOptions, GfmdSetup, GridSpec, Method, Progress};
@@ -17,9 +18,7 @@ use asperity::input::scene::Scene;
 use asperity::surface::heightmap::Surface;
 use asperity::theory::sweep::SweepSpec;
 use clap::Args;
-use std::io::{IsTerminal, Write};
 use std::sync::atomic::AtomicBool;
-use std::time::{Duration, Instant};
 
 /// Largest default grid side of `--reference gfmd` (a larger preset grid is narrowed to it).
 pub const DEFAULT_MAX_GRID: usize = 256;
@@ -128,44 +127,29 @@ pub fn resolve(
         rescale: true,
     };
     let cancel = AtomicBool::new(false);
-    let tty = std::io::stderr().is_terminal();
-    let start = Instant::now();
-    let mut last = Instant::now();
-    let mut live = false;
+    let rungs = spec.ladder.as_ref().map_or(1, Vec::len);
+    let total = spec.seeds * rungs * spec.loads.points;
+    let mut steps = Steps::new("gauge", "gfmd load", total);
     let mut report = |st: &Stage, pr: Progress| {
-        let what = format!(
-            "gauge: gfmd reference: seed {}/{}, {}{}^2, load {}/{}",
+        let k = (st.seed_index * st.rungs + st.rung) * st.loads + st.load;
+        let rung = if st.rungs > 1 {
+            format!("rung {}/{}, ", st.rung + 1, st.rungs)
+        } else {
+            String::new()
+        };
+        let label = format!(
+            "seed {}/{}, {rung}{}^2, load {}/{}",
             st.seed_index + 1,
             st.seeds,
-            if st.rungs > 1 {
-                format!("rung {}/{}, ", st.rung + 1, st.rungs)
-            } else {
-                String::new()
-            },
             st.grid,
             st.load + 1,
             st.loads
         );
-        if pr.iteration == 0 && !tty {
-            eprintln!("{what} ({:.1} s)", start.elapsed().as_secs_f64());
-        } else if tty && last.elapsed() > Duration::from_millis(100) {
-            last = Instant::now();
-            live = true;
-            let mut e = std::io::stderr().lock();
-            let _ = write!(
-                e,
-                "\r{what}: step {:>7}, contact {:.4}, {:.1} s ",
-                pr.iteration,
-                pr.contact_fraction,
-                start.elapsed().as_secs_f64()
-            );
-            let _ = e.flush();
-        }
+        steps.step(k, &label);
+        steps.detail(&format!("step {}, contact {:.4}", pr.iteration, pr.contact_fraction));
     };
     let out = gfmd_reference::gfmd_reference(&setup, &spec, &opts, &mut report, &cancel);
-    if live {
-        eprintln!();
-    }
+    steps.finish();
     let out = out?;
     if let Some(path) = &args.save_reference {
         std::fs::write(

@@ -8,6 +8,7 @@
 //!               [--extrapolate [--ladder 4,8,16]] [--seeds K] [--from P --to P --points N]
 //! ```
 
+use super::progress::{load_label, Steps};
 use super::{emit, SceneArgs};
 use asperity::error::{Error, Field, Result};
 use asperity::gfmd::cycle::CycleSpec;
@@ -17,10 +18,8 @@ use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec, Progres
 use asperity::theory::sweep::SweepSpec;
 use clap::Args;
 use serde::Serialize;
-use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
-use std::time::{Duration, Instant};
 
 /// Default reduced grid when a preset has no `[gfmd]` table.
 pub const DEFAULT_GRID: GridSpec = GridSpec {
@@ -218,41 +217,6 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
 pub fn run(args: &GfmdArgs) -> Result<()> {
     let (setup, opts) = setup(args)?;
     let cancel = AtomicBool::new(false);
-    let tty = std::io::stderr().is_terminal();
-    let start = Instant::now();
-    let mut last = Instant::now();
-    let mut shown = false;
-    let mut bar = |p: Progress| {
-        let theory = p.stage == Stage::Theory;
-        if tty
-            && start.elapsed() > Duration::from_millis(500)
-            && (theory || last.elapsed() > Duration::from_millis(100))
-        {
-            last = Instant::now();
-            shown = true;
-            let mut e = std::io::stderr().lock();
-            let _ = if theory {
-                // the theory reports nothing while it runs: say what the wait is for
-                write!(
-                    e,
-                    "\rgfmd: relaxed in {} steps; the theory on the map's spectrum ({:.1} s)          ",
-                    p.iteration,
-                    start.elapsed().as_secs_f64()
-                )
-            } else {
-                write!(
-                    e,
-                    "\rgfmd: step {:>7}  residual {:.2e} (target {:.0e})  contact {:.4}  {:.1} s ",
-                    p.iteration,
-                    p.residual,
-                    opts.tolerance,
-                    p.contact_fraction,
-                    start.elapsed().as_secs_f64()
-                )
-            };
-            let _ = e.flush();
-        }
-    };
     if let (Some(from), Some(to)) = (args.from, args.to) {
         if args.cycle || to < from {
             let spec = CycleSpec {
@@ -261,11 +225,17 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
                 points: args.points,
                 cycle: args.cycle,
             };
-            let result = gfmd::cycle::run_cycle(&setup, &spec, &opts, &mut |_, p| bar(p), &cancel);
-            if shown {
-                eprintln!();
-            }
-            let c = result?;
+            let labels = super::gfmd_cycle::path_labels(&spec);
+            let mut steps = Steps::new("gfmd", "load", labels.len());
+            let c = gfmd::cycle::run_cycle(
+                &setup,
+                &spec,
+                &opts,
+                &mut |k, p| report(&mut steps, k, &p, &opts, |k| super::gfmd_cycle::path_label(&labels, k)),
+                &cancel,
+            );
+            steps.finish();
+            let c = c?;
             match args.format {
                 GfmdFormat::Json => emit(&serde_json::to_string_pretty(&c).expect("serialisable")),
                 GfmdFormat::Table | GfmdFormat::Csv => emit(&super::gfmd_cycle::cycle_csv(&c)),
@@ -277,50 +247,97 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
             to,
             points: args.points,
         };
-        let result = gfmd::sweep::run_sweep(&setup, &spec, &opts, &mut |_, p| bar(p), &cancel);
-        if shown {
-            eprintln!();
-        }
-        let sw = result?;
+        let loads = spec.pressures();
+        let mut steps = Steps::new("gfmd", "load", loads.len());
+        let sw = gfmd::sweep::run_sweep(
+            &setup,
+            &spec,
+            &opts,
+            &mut |k, p| report(&mut steps, k, &p, &opts, |k| loads.get(k).map(|&p| load_label(p))),
+            &cancel,
+        );
+        steps.finish();
+        let sw = sw?;
         match args.format {
             GfmdFormat::Json => emit(&serde_json::to_string_pretty(&sw).expect("serialisable")),
             GfmdFormat::Table | GfmdFormat::Csv => emit(&sweep_csv(&sw)),
         }
         return Ok(());
     }
-    let result = gfmd::run(&setup, &opts, &mut bar, &cancel);
+    let pressure = setup.scene.pressure();
+    let mut steps = Steps::new("gfmd", "run", 1);
+    let result = gfmd::run(
+        &setup,
+        &opts,
+        &mut |p| report(&mut steps, 0, &p, &opts, |_| Some(load_label(pressure))),
+        &cancel,
+    );
+    steps.finish();
     let study = result.and_then(|base| {
         if !args.extrapolate && args.seeds == 1 {
             return Ok((base, None, None));
         }
         let ladder = args.extrapolate.then_some(args.ladder.as_slice());
         let ex = match ladder {
-            Some(l) => Some(gfmd::ladder::run_ladder(&setup, l, &opts, &mut |_, p| bar(p), &cancel)?),
+            Some(l) => {
+                let mut steps = Steps::new("gfmd", "rung", l.len());
+                let label = |k: usize| l.get(k).map(|x| format!("lambda_s/da = {x}"));
+                let r = gfmd::ladder::run_ladder(
+                    &setup,
+                    l,
+                    &opts,
+                    &mut |k, p| report(&mut steps, k, &p, &opts, label),
+                    &cancel,
+                );
+                steps.finish();
+                Some(r?)
+            }
             None => None,
         };
         let ens = if args.seeds > 1 {
-            Some(gfmd::ladder::run_seeds(
+            let mut steps = Steps::new("gfmd", "seed", args.seeds);
+            let label = |k: usize| Some(format!("seed {}", args.seed + k as u64));
+            let r = gfmd::ladder::run_seeds(
                 &setup,
                 args.seeds,
                 ladder,
                 &opts,
-                &mut |_, p| bar(p),
+                &mut |k, p| report(&mut steps, k, &p, &opts, label),
                 &cancel,
-            )?)
+            );
+            steps.finish();
+            Some(r?)
         } else {
             None
         };
         Ok((base, ex, ens))
     });
-    if shown {
-        eprintln!();
-    }
     let (out, extrapolation, ensemble) = study?;
-    report(args, out, extrapolation, ensemble)
+    print_run(args, out, extrapolation, ensemble)
+}
+
+/// One progress report of a GFMD run: step `k` (its label from `label`) and what the solver
+/// is doing.
+pub fn report(steps: &mut Steps, k: usize, p: &Progress, opts: &GfmdOptions, label: impl Fn(usize) -> Option<String>) {
+    if p.stage == Stage::Theory {
+        // the theory reports nothing while it runs: say what the wait is for
+        steps.detail("the theory on the map's spectrum");
+        return;
+    }
+    steps.step(k, &label(k).unwrap_or_default());
+    steps.detail(&format!(
+        "step {}, residual {:.1e} (target {:.0e}), contact {:.4}",
+        p.iteration, p.residual, opts.tolerance, p.contact_fraction
+    ));
 }
 
 /// Prints a single run with its study (ladder, seeds) as the format asks, after the notes.
-fn report(args: &GfmdArgs, out: GfmdResult, extrapolation: Option<Ladder>, ensemble: Option<Ensemble>) -> Result<()> {
+fn print_run(
+    args: &GfmdArgs,
+    out: GfmdResult,
+    extrapolation: Option<Ladder>,
+    ensemble: Option<Ensemble>,
+) -> Result<()> {
     if let Some(r) = out.reduction.as_ref().filter(|r| !r.rescaled && r.full.gamma > 0.0) {
         eprintln!(
             "asperity gfmd: note: --raw-adhesion: gamma_glo {:.3} on this grid against {:.3} in the full system",
@@ -436,14 +453,10 @@ pub fn reduction_table(r: &Reduction) -> String {
         ("t*q_r", thick(r.full.thickness_qr), thick(r.reduced.thickness_qr)),
         (
             "L/lambda_r",
-            format!("{}", r.full.system_size_ratio),
-            format!("{}", r.reduced.system_size_ratio),
+            num(r.full.system_size_ratio),
+            num(r.reduced.system_size_ratio),
         ),
-        (
-            "lambda_r/lambda_s",
-            format!("{}", r.full.bandwidth),
-            format!("{}", r.reduced.bandwidth),
-        ),
+        ("lambda_r/lambda_s", num(r.full.bandwidth), num(r.reduced.bandwidth)),
         (
             "gamma/(rho E* g)",
             format!("{:.4}", r.full.tensile_stress),
@@ -469,6 +482,12 @@ pub fn reduction_table(r: &Reduction) -> String {
     t
 }
 
+/// A ratio or an input in the table: six significant digits, trailing zeros dropped (a
+/// ratio computed as 200.0000000000000332 reads 200), as [`crate::numfmt`] writes numbers.
+fn num(x: f64) -> String {
+    crate::numfmt::format(x, 6, true)
+}
+
 /// The human-readable table of one run.
 pub fn table(o: &GfmdResult) -> String {
     let mut t = String::new();
@@ -482,11 +501,8 @@ pub fn table(o: &GfmdResult) -> String {
     );
     line("seed", o.seed.map_or("(loaded map)".into(), |s| s.to_string()));
     line("p*", format!("{:.6e}  ({:.4e} Pa)", o.pressure, o.pressure_pa));
-    line(
-        "t*q_r",
-        o.thickness_qr.map_or("inf (semi-infinite)".into(), |t| t.to_string()),
-    );
-    line("gamma_s", format!("{} J/m^2", o.gamma));
+    line("t*q_r", o.thickness_qr.map_or("inf (semi-infinite)".into(), num));
+    line("gamma_s", format!("{} J/m^2", num(o.gamma)));
     let th = o.theory.as_ref();
     let both = |g: f64, t: Option<f64>| match t {
         Some(t) => format!(

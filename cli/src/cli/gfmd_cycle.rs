@@ -3,11 +3,13 @@
 //! jump-in. The theory's columns are its branch at the same load: the unloading branch where
 //! the theory has two (inside a hysteresis window) on unloading rows, and on tensile rows its
 //! contact branch under tension (a_r and σ̄_c*; the mean gap is not defined there), empty
-//! beyond the theory's own pull-off.
+//! beyond the theory's own pull-off. Also the labels of a load path's steps for its progress.
 
 use super::gfmd_csv::{csv_row, GFMD_CSV_HEADER};
-use asperity::gfmd::cycle::{GfmdCycle, PathBranch};
+use super::progress::load_label;
+use asperity::gfmd::cycle::{CycleSpec, GfmdCycle, PathBranch};
 use asperity::theory::cycle::TheoryPathRow;
+use asperity::theory::sweep::SweepSpec;
 
 /// The theory's row under tension at GFMD's load `p` ≤ 0 (the same loads: 0, −p₁, −2p₁, …).
 fn tensile_row(c: &GfmdCycle, p: f64) -> Option<&TheoryPathRow> {
@@ -78,4 +80,41 @@ pub fn cycle_csv(c: &GfmdCycle) -> String {
         out.push_str(r.branch.name());
     }
     out
+}
+
+/// The loads of a load path in the order GFMD walks them (the tension steps that follow a
+/// cycle are not known in advance).
+pub fn path_labels(spec: &CycleSpec) -> Vec<String> {
+    let rising = SweepSpec {
+        from: spec.from.min(spec.to),
+        to: spec.from.max(spec.to),
+        points: spec.points,
+    }
+    .pressures();
+    let top = rising.len().saturating_sub(1);
+    let mut out = Vec::new();
+    if spec.cycle || spec.from <= spec.to {
+        out.extend(rising.iter().map(|&p| format!("loading, {}", load_label(p))));
+    } else {
+        out.push(format!("loading, {}", load_label(rising[top])));
+    }
+    if spec.cycle || spec.from > spec.to {
+        out.extend(
+            rising[..top]
+                .iter()
+                .rev()
+                .map(|&p| format!("unloading, {}", load_label(p))),
+        );
+    }
+    out
+}
+
+/// The label of step `k` of a load path: its load, or a tension step past the listed loads.
+pub fn path_label(labels: &[String], k: usize) -> Option<String> {
+    Some(
+        labels
+            .get(k)
+            .cloned()
+            .unwrap_or_else(|| "tension, towards pull-off".into()),
+    )
 }

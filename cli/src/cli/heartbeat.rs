@@ -1,8 +1,9 @@
 //! Progress of a long headless command on stderr: after [`FIRST_S`] seconds, and then every
 //! [`EVERY_S`] seconds, one updated line (`asperity sweep: working, 12 s, 40 computations
 //! started`) counted by [`asperity::work::started`], for the commands that print no progress
-//! of their own. Only on a terminal (a script reading stderr gets its lines unchanged); the
-//! line is cleared when the command ends.
+//! of their own. Only on a terminal (a script reading stderr gets its lines unchanged) and
+//! without `--quiet`; the line is cleared when the command ends. Work counted in steps shows
+//! [`super::progress`]'s bar instead.
 
 use std::io::{IsTerminal, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -22,7 +23,7 @@ pub struct Heartbeat {
 
 /// Starts the heartbeat of command `name` (None off a terminal).
 pub fn start(name: &'static str) -> Option<Heartbeat> {
-    if !std::io::stderr().is_terminal() {
+    if !std::io::stderr().is_terminal() || super::progress::is_quiet() {
         return None;
     }
     let done = Arc::new(AtomicBool::new(false));

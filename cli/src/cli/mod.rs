@@ -29,7 +29,9 @@ use std::io::Write;
 pub mod flags;
 pub mod heartbeat;
 pub mod parse;
+pub mod progress;
 pub mod surface;
+pub mod surface_generate;
 pub mod sweep;
 
 pub use parse::{clap_error_line, count, field_name, number, render_error, whole_number, whole_number_u64};
@@ -41,6 +43,9 @@ pub struct Cli {
     /// What to do; without a subcommand the terminal explorer opens.
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// No progress on stderr (bars and progress lines; errors and notes still print).
+    #[arg(long, global = true)]
+    pub quiet: bool,
 }
 
 /// Subcommands.
@@ -69,6 +74,8 @@ pub enum Command {
     Compare(gauge::CompareArgs),
     /// The PSD of a measured height map: radial average, h_rms, rms gradient and curvature, self-affine fit.
     Psd(surface::PsdArgs),
+    /// Make a surface: `surface generate` writes a seeded self-affine height map (.txt .asc .dat .xyz .npy .gsf).
+    Surface(surface_generate::SurfaceCmdArgs),
 }
 
 /// Output format of `run`.
@@ -328,6 +335,7 @@ fn run_cli() -> i32 {
             return 2;
         }
     };
+    progress::set_quiet(cli.quiet);
     let mut unconverged = false;
     let result = match cli.command {
         None => tui_entry(preset::DEFAULT_PRESET, None, None, false),
@@ -358,6 +366,7 @@ fn run_cli() -> i32 {
         Some(Command::Gauge(args)) => gauge::run(&args),
         Some(Command::Compare(args)) => gauge::compare(&args),
         Some(Command::Psd(args)) => surface::run_psd(&args),
+        Some(Command::Surface(args)) => surface_generate::run(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let beat = heartbeat::start("run");
             let out = asperity::report::point(&scene, &run_options(&args));

@@ -7,6 +7,7 @@ use super::refine::{self, Refined, Sample};
 use super::spec::{ClosedFormKind, FigureSpec, Overrides, XAxis, YAxis};
 use super::{DataPoint, DataSeries, FigureData};
 use crate::chart::{Rgb, SeriesStyle, Shape};
+use crate::cli::progress::Steps;
 use crate::looks::{look, model_colour, model_slot, Role, REFERENCE_MARKS};
 use asperity::error::{Error, Result};
 use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec};
@@ -317,8 +318,15 @@ fn role_colour(role: Role) -> Rgb {
     look(role, 0, 0).ink.rgb()
 }
 
-/// One GFMD run of `scene` on the chosen grid, or on `map` where one is given.
-pub fn gfmd_run(preset: &Preset, scene: &Scene, choice: GfmdChoice, map: Option<&Surface>) -> Result<GfmdResult> {
+/// One GFMD run of `scene` on the chosen grid, or on `map` where one is given: step `k` of
+/// `steps` (the figure's GFMD points).
+pub fn gfmd_run(
+    preset: &Preset,
+    scene: &Scene,
+    choice: GfmdChoice,
+    map: Option<&Surface>,
+    (steps, k): (&mut Steps, usize),
+) -> Result<GfmdResult> {
     let mut grid = preset
         .gfmd
         .as_ref()
@@ -339,7 +347,13 @@ pub fn gfmd_run(preset: &Preset, scene: &Scene, choice: GfmdChoice, map: Option<
         tolerance: 1e-8,
         ..GfmdOptions::default()
     };
-    gfmd::run(&setup, &opts, &mut |_| {}, &AtomicBool::new(false))
+    let label = crate::cli::progress::load_label(scene.pressure());
+    gfmd::run(
+        &setup,
+        &opts,
+        &mut |p| crate::cli::gfmd::report(steps, k, &p, &opts, |_| Some(label.clone())),
+        &AtomicBool::new(false),
+    )
 }
 
 /// A stress-axis figure's GFMD: Pr(σ*) of one run per distinct scene of the curves.
@@ -353,6 +367,7 @@ fn gfmd_pr_series(
 ) {
     let map = on.and_then(|m| m.map.as_ref());
     let mut done: Vec<(f64, f64, f64)> = Vec::new();
+    let mut steps = Steps::new("figure", "GFMD run", scenes.len());
     for (c, s) in spec.curve.iter().zip(scenes) {
         let key = (s.pressure(), s.thickness_qr(), s.surface_energy_j_m2());
         if !spec.gfmd || done.contains(&key) {
@@ -364,7 +379,7 @@ fn gfmd_pr_series(
         } else {
             format!("GFMD, {}", c.label)
         };
-        match gfmd_run(preset, s, choice, map) {
+        match gfmd_run(preset, s, choice, map, (&mut steps, done.len() - 1)) {
             Ok(r) => {
                 let map_words = match on {
                     Some(m) => format!("on {}", m.name()),
@@ -419,14 +434,15 @@ fn gfmd_series(
     let mut on_map: Vec<DataPoint> = Vec::new();
     let mut grid = 0;
     let mut map_note = String::new();
-    for &x in &spec.gfmd_at {
+    let mut steps = Steps::new("figure", "GFMD run", spec.gfmd_at.len());
+    for (k, &x) in spec.gfmd_at.iter().enumerate() {
         let s = match spec.x {
             XAxis::Pressure => base.clone().with_pressure(x),
             XAxis::Thickness => base.clone().with_thickness_qr(x),
             XAxis::Gamma => base.clone().with_surface_energy_j_m2(x),
             XAxis::Stress => Ok(base.clone()),
         };
-        let run = s.and_then(|s| Ok((gfmd_run(preset, &s, choice, map)?, s)));
+        let run = s.and_then(|s| Ok((gfmd_run(preset, &s, choice, map, (&mut steps, k))?, s)));
         match run {
             Ok((r, s)) => {
                 grid = r.grid;

@@ -76,7 +76,8 @@ pub fn compute(gfmd: Option<GfmdChoice>) -> Result<Table1> {
     };
     if let Some(choice) = gfmd {
         let scene = curve_scene(&preset, &fig, &Overrides::default())?;
-        match gfmd_run(&preset, &scene, choice, None) {
+        let mut steps = crate::cli::progress::Steps::new("figure", "GFMD run", 1);
+        match gfmd_run(&preset, &scene, choice, None, (&mut steps, 0)) {
             Ok(r) => {
                 g.column = format!("{name} ({}²)", r.grid);
                 g.mean_contact_stress = Some(r.stats.mean_contact_stress);
