@@ -150,3 +150,23 @@ def test_model5_is_model3_without_adhesion_and_follows_gamma_glo():
     assert abs(w0(half) - (0.125 + 3 * 0.0411)) < 1e-3  # γ̃_glo = 0.10, μ_T = 1.00: the floor
     # thinner slabs store less elastic energy in full contact: more γ̃_glo, more W(0)
     assert 0.25 < w0(half.replace(thickness_qr=0.3)) < w0(half.replace(thickness_qr=0.15)) < 1.0
+
+
+def _jump_scene() -> "asperity.Scene":
+    """The tour's "Jump into contact" scene (tours/wang-muser.toml): system II, model 3,
+    γ_s = 0.1256 J/m², p* = 1e-4; its hysteresis window in t·q_r lies at 0.099–0.101."""
+    return asperity.Scene.preset("system-2").replace(model=3, surface_energy_j_m2=0.1256, pressure=1e-4)
+
+
+@pytest.mark.parametrize("points", [8, 16])
+def test_sweep_thickness_finds_the_window_between_its_values(points):
+    """The window is far narrower than the sweep's step: the library's probe finds it in the
+    jump of a_r between two rows, as the explorer's chart and `asperity sweep --over thickness`
+    do (the edges bracket two stable branches: src/report/sweep_tests.rs)."""
+    t = np.geomspace(0.05, 1.0, points)
+    sw = asperity.sweep_thickness(_jump_scene(), t)
+    assert len(sw) == points
+    edges = {e["kind"]: e["value"] for e in sw.to_dict()["window_edges"]}
+    assert set(edges) == {"jump_in", "pull_off"}, sw.to_dict()["window_edges"]
+    assert 0.09 < edges["jump_in"] < edges["pull_off"] < 0.11, edges
+
