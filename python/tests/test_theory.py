@@ -170,3 +170,17 @@ def test_sweep_thickness_finds_the_window_between_its_values(points):
     assert set(edges) == {"jump_in", "pull_off"}, sw.to_dict()["window_edges"]
     assert 0.09 < edges["jump_in"] < edges["pull_off"] < 0.11, edges
 
+
+def test_one_name_per_quantity():
+    """Each quantity has one preferred name; an alias (asperity::report::names) carries the
+    same number, and `pressure` is not a sweep's keyword (the error names `pressures`)."""
+    r = asperity.evaluate(_jump_scene().replace(thickness_qr=0.1))
+    assert r.a_r_unloading is not None and r.a_r_unloading == r.unloading_a_r
+    assert r.variance == r.contact_stress_variance
+    for b in r.to_dict()["branches"]:
+        assert b["mean_gap_reversible_rel"] == b["mean_gap_upper_rel"]
+    sw = asperity.sweep(asperity.Scene.preset("system-1"), [0.01, 0.1])
+    assert "a_r_unloading" in sw.to_dict()["rows"][0] and "unloading_a_r" not in sw.to_dict()["rows"][0]
+    with pytest.raises(asperity.InputError, match="pressures") as e:
+        asperity.sweep(asperity.Scene.preset("system-1"), pressure=[0.01, 0.1])
+    assert e.value.field == "pressure"

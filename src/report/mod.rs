@@ -9,7 +9,9 @@
 //! - [`mod@point`]: one scene at one load, everything `asperity run` prints.
 //! - [`mod@sweep`]: a sweep over the load, t·q_r or γ_s with its hysteresis windows,
 //!   everything `asperity sweep` prints.
+//! - [`mod@names`]: the public names kept as aliases of a preferred one.
 
+pub mod names;
 pub mod point;
 pub mod sweep;
 
