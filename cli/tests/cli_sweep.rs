@@ -272,3 +272,69 @@ fn bad_sweep_knobs_are_one_line_errors() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
 }
+
+/// The tour's "Jump into contact" scene (tours/wang-muser.toml: system II, model 3,
+/// γ_s = 0.1256 J/m², p* = 1e-4) swept over t·q_r from 0.05 to 1: its hysteresis window
+/// (t·q_r ≈ 0.099–0.101) is far narrower than the step, and `sweep --over thickness` reports
+/// the window the explorer's thickness chart finds (the same probe, edges to 0.5 % against the
+/// chart's 3 %), at 8 and at 16 points.
+#[test]
+fn a_thickness_sweep_reports_the_window_the_explorer_finds() {
+    use asperity::theory::engine::{CHART_EDGE_REL, EDGE_REL};
+    use asperity_cli::tui::effects::engine::thickness_sweep;
+    let scene = Preset::resolve("system-2")
+        .unwrap()
+        .scene()
+        .unwrap()
+        .with_model(Model::named(3).unwrap())
+        .unwrap()
+        .with_surface_energy_j_m2(0.1256)
+        .unwrap()
+        .with_pressure(1e-4)
+        .unwrap();
+    let chart = thickness_sweep(&scene, &std::sync::atomic::AtomicBool::new(false)).unwrap();
+    assert_eq!((chart.jump_in.len(), chart.pull_off.len()), (1, 1), "{chart:?}");
+    let near = |a: f64, b: f64| (a / b - 1.0).abs() <= CHART_EDGE_REL + EDGE_REL;
+    for points in ["8", "16"] {
+        let sw = run_json(&[
+            "sweep",
+            "--preset",
+            "system-2",
+            "--model",
+            "3",
+            "--gamma",
+            "0.1256",
+            "--pressure",
+            "1e-4",
+            "--over",
+            "thickness",
+            "--from",
+            "0.05",
+            "--to",
+            "1",
+            "--points",
+            points,
+            "--format",
+            "json",
+        ]);
+        assert_eq!(sw["rows"].as_array().unwrap().len(), points.parse::<usize>().unwrap());
+        let edges = sw["window_edges"].as_array().unwrap();
+        let edge = |kind: &str| {
+            let v: Vec<f64> = edges
+                .iter()
+                .filter(|e| e["kind"] == kind)
+                .map(|e| e["value"].as_f64().unwrap())
+                .collect();
+            assert_eq!(v.len(), 1, "{points} points: {edges:?}");
+            v[0]
+        };
+        let (jump_in, pull_off) = (edge("jump_in"), edge("pull_off"));
+        assert!(jump_in < pull_off, "{jump_in} {pull_off}");
+        assert!(
+            near(jump_in, chart.jump_in[0]) && near(pull_off, chart.pull_off[0]),
+            "{points} points: sweep {jump_in}..{pull_off}, explorer {:?}..{:?}",
+            chart.jump_in,
+            chart.pull_off
+        );
+    }
+}

@@ -106,6 +106,8 @@ const RUN: &[&str] = &[
     "sigma_a_q",
     "tensile_area",
     "unloading_a_r",
+    // the preferred name of unloading_a_r (asperity::report::names)
+    "a_r_unloading",
     "width",
 ];
 

@@ -111,6 +111,7 @@ def sweep(
     values: Any = None,
     progress: Progress = None,
     cycle: bool = False,
+    pressure: None = None,
 ) -> SweepResult:
     """A sweep of the theory over p* (``over="pressure"``, library
     ``asperity::theory::sweep::sweep``: continuation in the load, one shared energy table for
@@ -132,7 +133,19 @@ def sweep(
     ``cycle=True`` (load sweeps over log-spaced loads, ``np.geomspace``): also the theory's
     path along the load cycle, ``res.cycle`` (a :class:`CycleResult`, see :func:`cycle`), as
     ``asperity sweep --cycle``.
+
+    ``pressure`` is not a knob of a sweep: it raises :class:`InputError` naming ``pressures``
+    (the loads to sweep); a thickness or γ_s sweep runs at the scene's own p*
+    (``scene.replace(pressure=...)``), as the CLI's ``sweep --over thickness --pressure``.
     """
+    if pressure is not None:
+        raise InputError(
+            f"invalid pressure = {pressure!r}: sweep() takes the loads to sweep as `pressures` "
+            "(or `values`); a thickness or gamma sweep runs at the scene's p* (scene.replace(pressure=...))",
+            field="pressure",
+            value=repr(pressure),
+            allowed="`pressures` for the loads to sweep, or the scene's pressure",
+        )
     knob = _OVER.get(over)
     if knob is None:
         raise InputError(

@@ -110,7 +110,8 @@ class Report(Result):
       ∫Pr dσ* = a_r [S-9, S-14];
     - ``mean_gap`` (m), ``mean_gap_rel`` with its bracket ``mean_gap_lower_rel`` ..
       ``mean_gap_upper_rel`` and ``mean_gap_error`` [S-11, S-12];
-    - ``branch``, ``branches`` (every branch at this load), ``unloading_a_r``,
+    - ``branch``, ``branches`` (every branch at this load), ``a_r_unloading`` (the unloading
+      branch's a_r, the name a sweep's column has; ``unloading_a_r`` is its older alias),
       ``jump_in_pressure``, ``pull_off_pressure`` (the hysteresis window);
     - ``error_estimate`` (absolute error of a_r), ``converged``;
     - ``elapsed_s``, ``elapsed_solve_s``, ``elapsed_window_s``, ``elapsed_gap_s`` (timings, s);
@@ -124,7 +125,8 @@ class Report(Result):
 
     @property
     def variance(self) -> float:
-        """⟨δσ_c²⟩*, the contact stress variance (reduced by (E*ḡ)²): ``contact_stress_variance``."""
+        """⟨δσ_c²⟩*, the contact stress variance (reduced by (E*ḡ)²): an alias of
+        ``contact_stress_variance``, the preferred name."""
         return float(self._data["contact_stress_variance"])
 
     @property

@@ -163,3 +163,37 @@ def test_trust_says_no_error_known_far_from_the_reference_set():
     assert far["known"] is False
     assert far["a_r_band_ratio"] is None and far["a_r_log_error"] is None
     assert "no error known" in far["summary"]
+
+
+def _jump_scene() -> "asperity.Scene":
+    """The tour's "Jump into contact" scene (tours/wang-muser.toml): system II, model 3,
+    γ_s = 0.1256 J/m², p* = 1e-4; its hysteresis window in t·q_r lies at 0.099–0.101."""
+    return asperity.Scene.preset("system-2").replace(model=3, surface_energy_j_m2=0.1256, pressure=1e-4)
+
+
+@pytest.mark.parametrize("points", [8, 16])
+def test_sweep_thickness_finds_the_window_between_its_values(points):
+    """The window is far narrower than the sweep's step: the library's probe finds it in the
+    jump of a_r between two rows, as the explorer's chart and `asperity sweep --over thickness`
+    do (the edges bracket two stable branches: src/report/sweep_tests.rs)."""
+    t = np.geomspace(0.05, 1.0, points)
+    sw = asperity.sweep_thickness(_jump_scene(), t)
+    assert len(sw) == points
+    edges = {e["kind"]: e["value"] for e in sw.to_dict()["window_edges"]}
+    assert set(edges) == {"jump_in", "pull_off"}, sw.to_dict()["window_edges"]
+    assert 0.09 < edges["jump_in"] < edges["pull_off"] < 0.11, edges
+
+
+def test_one_name_per_quantity():
+    """Each quantity has one preferred name; an alias (asperity::report::names) carries the
+    same number, and `pressure` is not a sweep's keyword (the error names `pressures`)."""
+    r = asperity.evaluate(_jump_scene().replace(thickness_qr=0.1))
+    assert r.a_r_unloading is not None and r.a_r_unloading == r.unloading_a_r
+    assert r.variance == r.contact_stress_variance
+    for b in r.to_dict()["branches"]:
+        assert b["mean_gap_reversible_rel"] == b["mean_gap_upper_rel"]
+    sw = asperity.sweep(asperity.Scene.preset("system-1"), [0.01, 0.1])
+    assert "a_r_unloading" in sw.to_dict()["rows"][0] and "unloading_a_r" not in sw.to_dict()["rows"][0]
+    with pytest.raises(asperity.InputError, match="pressures") as e:
+        asperity.sweep(asperity.Scene.preset("system-1"), pressure=[0.01, 0.1])
+    assert e.value.field == "pressure"

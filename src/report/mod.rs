@@ -7,7 +7,13 @@
 //! NaN), and an absent value comes with the reason where there is one.
 //!
 //! - [`mod@point`]: one scene at one load, everything `asperity run` prints.
+//! - [`mod@sweep`]: a sweep over the load, t·q_r or γ_s with its hysteresis windows,
+//!   everything `asperity sweep` prints.
+//! - [`mod@names`]: the public names kept as aliases of a preferred one.
 
+pub mod names;
 pub mod point;
+pub mod sweep;
 
 pub use point::{point, BranchReport, PointReport, ResolutionTable};
+pub use sweep::{Over, SweepReport};

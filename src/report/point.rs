@@ -83,7 +83,12 @@ pub struct PointReport {
     pub residual: f64,
     /// "adhesionless", or "loading": the branch a loading history reaches.
     pub branch: Branch,
-    /// a_r of a distinct unloading branch (the highest stable one), None if none.
+    /// a_r of a distinct unloading branch (the highest stable one), None if none: the name a
+    /// sweep's row gives it ([`crate::theory::sweep::SweepRow::a_r_unloading`]; the preferred
+    /// name, see [`crate::report::names`]).
+    pub a_r_unloading: Option<f64>,
+    /// The same number as `a_r_unloading`, under its older name (an alias kept for readers of
+    /// earlier output).
     pub unloading_a_r: Option<f64>,
     /// Every branch at this load, lowest a_r first, with its gap. Empty without adhesion.
     pub branches: Vec<BranchReport>,
@@ -279,6 +284,7 @@ fn assemble(
         iterations: ev.iterations,
         residual: ev.residual,
         branch: ev.branch,
+        a_r_unloading: ev.unloading_a_r,
         unloading_a_r: ev.unloading_a_r,
         branches: branches(ev, gap.as_ref()),
         jump_in_pressure: window.and_then(|w| w.jump_in_pressure),

@@ -93,8 +93,8 @@ pub fn point_table(preset: &str, out: &PointReport) -> String {
         );
         line("tensile_area", format!("{:.6e}", out.tensile_area));
         line("branch", out.branch.to_string());
-        if let Some(u) = out.unloading_a_r {
-            line("unloading_a_r", format!("{} (a second, unloading branch)", fixed(u, 8)));
+        if let Some(u) = out.a_r_unloading {
+            line("a_r_unloading", format!("{} (a second, unloading branch)", fixed(u, 8)));
         }
         if out.branches.len() > 1 {
             let list: Vec<String> = out

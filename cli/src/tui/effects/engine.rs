@@ -131,12 +131,12 @@ pub fn thickness_spec() -> KnobSpec {
 /// and at t = ∞; a thickness where the solver fails is a gap (NaN), not an error. With
 /// adhesion also the adhesionless curve, and the hysteresis windows in t·q_r at this p*: every
 /// branch is found at each thickness (a_r of the loading branch, and of the unloading one
-/// where two are stable), a jump between two neighbours (a_r changing by more than
-/// [`JUMP_FACTOR`]) is searched for a thickness inside a window ([`window_between`], added to
-/// the curve), and each window's edges are found by bisection
-/// ([`asperity::theory::hysteresis::knob_edges_to`]).
+/// where two are stable), a jump between two neighbours is searched for a thickness inside a
+/// window (the library's probe, [`asperity::theory::hysteresis::window_probes`], as
+/// `asperity sweep --over thickness` does; added to the curve), and each window's edges are
+/// found by bisection ([`asperity::theory::hysteresis::knob_edges_to`]).
 pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessData> {
-    use asperity::theory::hysteresis::{knob_edges_to, EdgeKind};
+    use asperity::theory::hysteresis::{knob_edges_to, merge_probes, window_probes, EdgeKind};
     let gamma = scene.surface_energy_j_m2();
     let mut opts = Options {
         sigma_points: 2,
@@ -146,7 +146,9 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
     opts.adhesion.explore_branches = gamma > 0.0;
     let mut points = knob_sweep(scene, &thickness_spec(), &opts, false, Some(cancel))?;
     if gamma > 0.0 {
-        add_windows(scene, &opts, cancel, &mut points)?;
+        // a thickness inside each window between two neighbours, added to the curve
+        let probes = window_probes(scene, Knob::Thickness, &points, &opts, false, Some(cancel))?;
+        points = merge_probes(points, probes).0;
     }
     let a_r: Vec<f64> = points.iter().map(a_r_of).collect();
     if a_r.iter().all(|a| !a.is_finite()) {
@@ -214,30 +216,6 @@ fn one_thickness(scene: &Scene, t: f64, opts: &Options, cancel: &AtomicBool) -> 
     Ok(knob_sweep(scene, &spec, opts, false, Some(cancel))?.pop())
 }
 
-/// Adds to `points` (ascending in t·q_r) a thickness inside each hysteresis window found
-/// between two neighbours ([`window_between`]).
-fn add_windows(scene: &Scene, opts: &Options, cancel: &AtomicBool, points: &mut Vec<KnobPoint>) -> Result<()> {
-    let probe = |t: f64| one_thickness(scene, t, opts, cancel).map(|p| p.and_then(|p| p.result.ok()));
-    let mut k = 0;
-    while k + 1 < points.len() {
-        let inside = match (&points[k].result, &points[k + 1].result) {
-            (Ok(lo), Ok(hi)) => window_between(&probe, (points[k].value, lo), (points[k + 1].value, hi))?,
-            _ => None,
-        };
-        if let Some((value, ev)) = inside {
-            let p = KnobPoint {
-                value,
-                scene: Knob::Thickness.apply(scene, value),
-                result: Ok(ev),
-                gap: Ok(None),
-            };
-            points.insert(k + 1, p);
-        }
-        k += 1;
-    }
-    Ok(())
-}
-
 /// The adhesionless a_r of `scene` at the thicknesses `t`: the chart's grid in one knob
 /// sweep, a thickness added inside a window on its own.
 fn adhesionless_at(scene: &Scene, t: &[f64], opts: &Options, cancel: &AtomicBool) -> Result<Vec<f64>> {
@@ -249,52 +227,6 @@ fn adhesionless_at(scene: &Scene, t: &[f64], opts: &Options, cancel: &AtomicBool
             None => one_thickness(&dry, v, opts, cancel).map(|p| p.as_ref().map_or(f64::NAN, a_r_of)),
         })
         .collect()
-}
-
-/// Neighbouring thicknesses whose a_r differ by more than this factor (both with one stable
-/// branch) are searched for a hysteresis window between them. A jump into contact changes a_r
-/// by orders of magnitude (system II, model 3, γ_s = 0.126–0.157 J/m²: 0.7 → 1e-4 across
-/// t·q_r ≈ 0.1–0.15), a smooth stretch of the chart by tens of percent per grid step; a
-/// steep stretch without a window (model 1 there: a_r falls 100-fold within 7 % of t·q_r on
-/// one branch) costs [`WINDOW_PROBES`] solves and marks nothing.
-pub const JUMP_FACTOR: f64 = 3.0;
-
-/// Most solves spent searching one jump for a window (bisections in ln t·q_r: the window is
-/// found where it is wider than 1/64 of a grid step, ~1 % in t·q_r).
-pub const WINDOW_PROBES: usize = 6;
-
-/// A thickness inside a hysteresis window between `lo` and `hi` (t·q_r and its evaluation,
-/// one stable branch each) whose a_r differ by more than [`JUMP_FACTOR`], and its evaluation:
-/// bisection in ln t·q_r, each step towards the side where a_r changes more, until a thickness
-/// has two stable branches (at most [`WINDOW_PROBES`] solves by `eval`, None where a solve
-/// fails). None without such a jump, or where no window was found.
-pub fn window_between(
-    eval: &dyn Fn(f64) -> Result<Option<engine::Evaluation>>,
-    lo: (f64, &engine::Evaluation),
-    hi: (f64, &engine::Evaluation),
-) -> Result<Option<(f64, engine::Evaluation)>> {
-    let two = |e: &engine::Evaluation| e.branches.iter().filter(|b| b.stable).count() >= 2;
-    let jump = |a: f64, b: f64| (a.max(b) / a.min(b).max(f64::MIN_POSITIVE)).ln();
-    if two(lo.1) || two(hi.1) || jump(lo.1.stats.a_r, hi.1.stats.a_r) <= JUMP_FACTOR.ln() {
-        return Ok(None);
-    }
-    let ((mut t0, mut a0), (mut t1, mut a1)) = ((lo.0, lo.1.stats.a_r), (hi.0, hi.1.stats.a_r));
-    for _ in 0..WINDOW_PROBES {
-        let tm = (t0 * t1).sqrt();
-        let Some(e) = eval(tm)? else {
-            return Ok(None);
-        };
-        if two(&e) {
-            return Ok(Some((tm, e)));
-        }
-        let am = e.stats.a_r;
-        if jump(a0, am) >= jump(am, a1) {
-            (t1, a1) = (tm, am);
-        } else {
-            (t0, a0) = (tm, am);
-        }
-    }
-    Ok(None)
 }
 
 /// ū/h_rms at p* from the chart sweep's rows ([`sweep::interpolate_in_ln_p`]), when p* lies
