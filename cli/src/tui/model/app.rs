@@ -55,6 +55,8 @@ impl App {
                 place: "--preset".into(),
             });
         }
+        let mut history = crate::tui::model::history::LoadHistory::new();
+        history.reset_to(preset.follows_unloading());
         Ok(App {
             params: Params {
                 presets,
@@ -63,8 +65,9 @@ impl App {
                 scene: base.clone(),
                 base,
                 anchors: Anchors::default(),
-                history: Default::default(),
+                history,
                 map: None,
+                measured: None,
             },
             ui: Ui {
                 selected: 2,
