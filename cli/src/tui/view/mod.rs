@@ -99,11 +99,7 @@ pub fn screen_of(app: &App, area: Rect, pal: Palette) -> (Line<'static>, layout:
         wrapped_rows(status_line.width(), area.width).clamp(1, STATUS_ROWS)
     };
     let caption = caption_text(app);
-    let panel_w = match area.width {
-        120.. => 34,
-        80.. => 28,
-        _ => 24,
-    };
+    let panel_w = crate::tui::model::wrap::panel_cols(area.width);
     let scr = layout::screen(
         area,
         &caption,
