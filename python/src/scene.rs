@@ -304,10 +304,12 @@ pub fn scene_new(py: Python<'_>, fields: &Bound<'_, PyDict>) -> PyResult<SceneCo
         load: LoadSpec {
             pressure: ch.pressure.unwrap_or(0.01),
             thickness_qr: ch.thickness_qr.unwrap_or(f64::INFINITY),
+            branch: None,
         },
         model: ModelSpec::default(),
         gfmd: None,
         reference: Vec::new(),
+        measured: None,
     };
     errors::guard(py, || {
         // the surface first: its errors name its fields before anything else is checked

@@ -65,6 +65,24 @@ pub struct LoadSpec {
     pub pressure: f64,
     /// t·q_r (`inf` = semi-infinite).
     pub thickness_qr: f64,
+    /// Inside a hysteresis window (two stable branches at the load), the branch the scene is
+    /// on: `"loading"` (the default: the state a loading history from small p* reaches) or
+    /// `"unloading"` (the state a contact keeps after it jumped in at a higher load). The
+    /// explorer writes it into an export made on the unloading branch; `run` and the explorer
+    /// report that branch ([`Preset::follows_unloading`]). Outside a window there is one
+    /// branch and the key changes nothing.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub branch: Option<LoadBranch>,
+}
+
+/// `[load] branch`: which branch of a hysteresis window the scene is on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum LoadBranch {
+    /// The loading branch (the lowest stable root).
+    Loading,
+    /// The unloading branch (the highest stable root).
+    Unloading,
 }
 
 /// Model number or "custom".
@@ -226,6 +244,40 @@ pub struct Preset {
     /// Reference data points.
     #[serde(default)]
     pub reference: Vec<ReferencePoint>,
+    /// A measured surface the scene runs on instead of `[surface]`'s spectrum (a scene the
+    /// explorer exported from a measured map or PSD table). The library does not read it: the
+    /// front ends read the file as their measured-surface options would; [`Preset::scene`]
+    /// stays `[surface]`'s.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub measured: Option<MeasuredSpec>,
+}
+
+/// `[measured]`: the measured surface of a scene, as the front end's options that read it (a
+/// height map with its side, height unit and periodicity, or a PSD table; the cut-offs).
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct MeasuredSpec {
+    /// A height map file: the theory runs on its PSD.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub map: Option<String>,
+    /// A PSD table (CSV, q in 1/m and psd in m⁴).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub psd: Option<String>,
+    /// The map's side L (m), overriding the file's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size_m: Option<f64>,
+    /// Unit of the map's heights where the file states none (`nm`, `um`, `mm`, `m`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height_unit: Option<String>,
+    /// The map is periodic (no plane fit, no window).
+    #[serde(default)]
+    pub periodic: bool,
+    /// Lower cut-off of the spectrum (1/m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_min_per_m: Option<f64>,
+    /// Upper cut-off of the spectrum (1/m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_max_per_m: Option<f64>,
 }
 
 /// The error for a TOML input over [`MAX_TOML_BYTES`].
@@ -437,6 +489,13 @@ impl Preset {
         };
         scene.validate()?;
         Ok(scene)
+    }
+
+    /// Whether the preset puts its scene on the unloading branch (`[load] branch =
+    /// "unloading"`): the engine then follows it
+    /// ([`crate::theory::adhesion::AdhesionAccuracy::follow_unloading`]).
+    pub fn follows_unloading(&self) -> bool {
+        self.load.branch == Some(LoadBranch::Unloading)
     }
 
     /// Number of grid points per side of the default GFMD grid.

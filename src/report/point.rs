@@ -46,7 +46,8 @@ pub struct PointReport {
     pub converged_note: Option<String>,
     /// Estimated absolute error of a_r.
     pub error_estimate: f64,
-    /// Mean gap ū (m) of the loading branch: the adhesionless gap [S-12] at the load the
+    /// Mean gap ū (m) of the reported branch (`branch`: the loading one unless the options
+    /// follow the unloading branch): the adhesionless gap [S-12] at the load the
     /// branch's contact carries (without adhesion: the energy route itself; docs/physics.md
     /// §5.1); None when unavailable (see `mean_gap_note`).
     pub mean_gap: Option<f64>,
@@ -61,7 +62,7 @@ pub struct PointReport {
     /// Estimated absolute error of `mean_gap_rel` (quadrature and interpolation); None when
     /// the gap is.
     pub mean_gap_error: Option<f64>,
-    /// p_c*: the net force the loading branch's contact carries per nominal area, ∫σ*Pr dσ*
+    /// p_c*: the net force the reported branch's contact carries per nominal area, ∫σ*Pr dσ*
     /// (p* plus the tension of the contact edges; p* without adhesion); None when the gap is.
     pub contact_load: Option<f64>,
     /// One line saying what `mean_gap_rel` is ([`mean_gap_about`]).
@@ -81,7 +82,11 @@ pub struct PointReport {
     pub iterations: usize,
     /// Self-consistency residual |γ(q_s)/γ_s − 1| (0 without adhesion).
     pub residual: f64,
-    /// "adhesionless", or "loading": the branch a loading history reaches.
+    /// "adhesionless"; "loading": the branch a loading history reaches; or "unloading" where
+    /// the options follow the unloading branch
+    /// ([`crate::theory::adhesion::AdhesionAccuracy::follow_unloading`], a preset's
+    /// `[load] branch = "unloading"`) and the load lies inside a hysteresis window. The
+    /// distribution, moments, tensile area, wall and gap fields are this branch's.
     pub branch: Branch,
     /// a_r of a distinct unloading branch (the highest stable one), None if none: the name a
     /// sweep's row gives it ([`crate::theory::sweep::SweepRow::a_r_unloading`]; the preferred
@@ -263,18 +268,34 @@ fn assemble(
     [elapsed_s, t_solve, t_window]: [f64; 3],
 ) -> PointReport {
     let note = unconverged_reason(scene, ev, opts);
+    // the top-level gap is the reported branch's: the loading one's, or the unloading one's
+    // where the evaluation follows it (`AdhesionAccuracy::follow_unloading`)
+    let shown: Option<BranchGap> = gap.as_ref().and_then(|g| {
+        if ev.branch == Branch::Unloading {
+            g.unloading
+        } else {
+            Some(BranchGap {
+                relative: g.relative,
+                error: g.error,
+                lower: g.lower,
+                upper: g.upper,
+                contact_load: g.contact_load,
+            })
+        }
+    });
+    let h_rms = scene.spectrum.rms_height();
     PointReport {
         stats: ev.stats.clone(),
         width: ev.width,
         converged: note.is_none(),
         converged_note: note,
         error_estimate: ev.error_estimate,
-        mean_gap: gap.as_ref().map(|g| g.metres),
-        mean_gap_rel: gap.as_ref().map(|g| g.relative),
-        mean_gap_lower_rel: gap.as_ref().map(|g| g.lower),
-        mean_gap_upper_rel: gap.as_ref().map(|g| g.upper),
-        mean_gap_error: gap.as_ref().map(|g| g.error),
-        contact_load: gap.as_ref().map(|g| g.contact_load),
+        mean_gap: shown.map(|g| g.relative * h_rms),
+        mean_gap_rel: shown.map(|g| g.relative),
+        mean_gap_lower_rel: shown.map(|g| g.lower),
+        mean_gap_upper_rel: shown.map(|g| g.upper),
+        mean_gap_error: shown.map(|g| g.error),
+        contact_load: shown.map(|g| g.contact_load),
         mean_gap_about: mean_gap_about(scene.is_adhesive()),
         mean_gap_note,
         elastic_energy: ev.elastic_energy,

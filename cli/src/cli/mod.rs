@@ -194,6 +194,22 @@ impl SceneArgs {
             .map(|(preset, scene, _)| (preset, scene))
     }
 
+    /// The measured-surface flags of the scene: these flags' where `--surface` or `--psd` is
+    /// given, else the preset's `[measured]` section's (a scene exported from a measured
+    /// surface), else none.
+    pub fn surface_args(&self, preset: &Preset) -> Result<surface::SurfaceArgs> {
+        match &preset.measured {
+            Some(m) if self.source.surface.is_none() && self.source.psd.is_none() => {
+                let mut a = surface::SurfaceArgs::from_measured(m)?;
+                // the cut-offs given on the command line win
+                a.qmin = self.source.qmin.or(a.qmin);
+                a.qmax = self.source.qmax.or(a.qmax);
+                Ok(a)
+            }
+            _ => Ok(self.source.clone()),
+        }
+    }
+
     /// As [`Self::resolve`], with the --surface map the scene's spectrum came from (the file
     /// read once).
     pub fn resolve_with_map(&self, pressure: Option<f64>) -> Result<(Preset, Scene, Option<Surface>)> {
@@ -240,7 +256,7 @@ impl SceneArgs {
             }
             model = Model::fudge(model.kind, g)?;
         }
-        let (spectrum, map) = self.source.spectrum_and_map()?;
+        let (spectrum, map) = self.surface_args(&preset)?.spectrum_and_map()?;
         let overrides = Overrides {
             model: Some(model),
             thickness_qr: self
@@ -342,7 +358,11 @@ fn run_cli() -> i32 {
         Some(Command::Tui(args)) => args
             .scene
             .resolve_with_map(args.pressure)
-            .and_then(|(_, scene, map)| tui_entry(&args.scene.preset, Some((scene, map)), None, args.mouse)),
+            .and_then(|(preset, scene, map)| {
+                // the measured surface, for an export to reopen it
+                let measured = args.scene.surface_args(&preset)?.to_measured(map.as_ref());
+                tui_entry(&args.scene.preset, Some((scene, map, measured)), None, args.mouse)
+            }),
         Some(Command::Tour(args)) => tour_entry(&args),
         Some(Command::Presets) => {
             for (name, place) in preset::list_available() {
@@ -369,7 +389,10 @@ fn run_cli() -> i32 {
         Some(Command::Surface(args)) => surface_generate::run(&args),
         Some(Command::Run(args)) => args.scene.resolve(args.pressure).and_then(|(preset, scene)| {
             let beat = heartbeat::start("run");
-            let out = asperity::report::point(&scene, &run_options(&args));
+            let mut opts = run_options(&args);
+            // a scene exported on the unloading branch (`[load] branch = "unloading"`) reports it
+            opts.adhesion.follow_unloading = preset.follows_unloading();
+            let out = asperity::report::point(&scene, &opts);
             drop(beat);
             let out = out?;
             match args.format {
@@ -426,7 +449,7 @@ fn tour_entry(args: &TourArgs) -> Result<()> {
 /// captures the mouse.
 fn tui_entry(
     preset_name: &str,
-    scene: Option<(Scene, Option<Surface>)>,
+    scene: Option<(Scene, Option<Surface>, Option<preset::MeasuredSpec>)>,
     tour: Option<(crate::tui::tour::Tour, usize)>,
     mouse: bool,
 ) -> Result<()> {
@@ -444,7 +467,8 @@ fn tui_entry(
     }
     let mut app = crate::tui::app::App::new(preset_name, preset)?;
     app.ui.mouse = mouse;
-    if let Some((s, map)) = scene {
+    if let Some((s, map, measured)) = scene {
+        app.params.measured = measured;
         if let (asperity::surface::spectrum::Spectrum::Tabulated(t), Some(m)) = (s.spectrum(), map) {
             app.params.map = Some((t.source.clone(), std::sync::Arc::new(m)));
         }

@@ -5,6 +5,7 @@
 
 use super::emit;
 use asperity::error::{Error, Field, Result};
+use asperity::input::preset::MeasuredSpec;
 use asperity::surface::heightmap::Surface;
 use asperity::surface::psd::{self, PsdAnalysis, PsdOptions};
 use asperity::surface::readers::{self, ReadOptions, Unit};
@@ -66,6 +67,56 @@ pub struct SurfaceArgs {
 }
 
 impl SurfaceArgs {
+    /// The flags a preset's `[measured]` section stands for.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `measured.height_unit` for a unit other than nm, um, mm, m.
+    pub fn from_measured(m: &MeasuredSpec) -> Result<SurfaceArgs> {
+        let height_unit =
+            match &m.height_unit {
+                Some(u) => Some(HeightUnitArg::from_str(u, true).map_err(|_| {
+                    Error::invalid_text(Field::Other("measured.height_unit".into()), u, "nm, um, mm or m")
+                })?),
+                None => None,
+            };
+        Ok(SurfaceArgs {
+            surface: m.map.as_ref().map(PathBuf::from),
+            psd: m.psd.as_ref().map(PathBuf::from),
+            size: m.size_m,
+            height_unit,
+            periodic: m.periodic,
+            qmin: m.q_min_per_m,
+            qmax: m.q_max_per_m,
+        })
+    }
+
+    /// The `[measured]` section standing for these flags (None without `--surface`/`--psd`),
+    /// the files as absolute paths so that the preset opens from any directory; a map's side
+    /// is written as read (`map`'s x side), so a `--size` or the file's own is kept.
+    pub fn to_measured(&self, map: Option<&Surface>) -> Option<MeasuredSpec> {
+        let abs = |p: &PathBuf| {
+            std::fs::canonicalize(p)
+                .unwrap_or_else(|_| p.clone())
+                .display()
+                .to_string()
+        };
+        if self.surface.is_none() && self.psd.is_none() {
+            return None;
+        }
+        Some(MeasuredSpec {
+            map: self.surface.as_ref().map(abs),
+            psd: self.psd.as_ref().map(abs),
+            size_m: self.size.or_else(|| map.map(|m| m.spacing * m.nx as f64)),
+            height_unit: self
+                .height_unit
+                .and_then(|u| u.to_possible_value())
+                .map(|v| v.get_name().to_string()),
+            periodic: self.periodic,
+            q_min_per_m: self.qmin,
+            q_max_per_m: self.qmax,
+        })
+    }
+
     fn read_options(&self) -> Result<ReadOptions> {
         if let Some(l) = self.size {
             if !(l.is_finite() && l > 0.0) {

@@ -140,6 +140,13 @@ pub struct AdhesionAccuracy {
     /// sweeps: the branches of the previous load are tracked, and the scan runs only when they
     /// no longer account for every sign change of H.
     pub explore_branches: bool,
+    /// Which branch the solution reports (its Pr, moments, wall, energy): `false` the
+    /// loading branch (the lowest stable root: the state a loading history from small p*
+    /// reaches), `true` the unloading branch (the highest stable root) where the load has two
+    /// stable branches — the state an unloading history keeps inside a hysteresis window.
+    /// Outside a window both choices give the one stable branch. Every branch is listed in
+    /// [`AdhesiveSolution::branches`] either way.
+    pub follow_unloading: bool,
 }
 
 /// Allowed march steps per ln q: at least 4 because the engine's error estimate compares
@@ -186,6 +193,7 @@ impl Default for AdhesionAccuracy {
             tol: 1e-8,
             max_iterations: 200,
             explore_branches: true,
+            follow_unloading: false,
         }
     }
 }
@@ -268,7 +276,8 @@ pub struct AdhesiveSolution {
     pub iterations: usize,
     /// Self-consistency residual at the chosen root: |H|/(γ_s a_r(q_s)) = |γ(q_s)/γ_s − 1|.
     pub residual: f64,
-    /// Which branch the solution is on and how it was reached.
+    /// Which branch the solution is on: loading, or unloading where
+    /// [`AdhesionAccuracy::follow_unloading`] asked for it and the load has two stable branches.
     pub branch: Branch,
     /// a_r of a distinct unloading branch (the highest stable root), if one was found.
     pub unloading_a_r: Option<f64>,

@@ -138,13 +138,19 @@ fn solve_at(
     let trend = older.as_ref().map(|(c, r)| (c.as_slice(), *r));
     let (roots, shots) = find_roots(scene, acc, &warm_c, trend, cancel)?;
     let grid = build_grid(scene, acc.steps_per_ln_q);
-    let chosen = roots.iter().position(|r| r.stable).unwrap_or(0);
-    let upper = roots.iter().rposition(|r| r.stable).filter(|&u| u != chosen);
+    let lowest = roots.iter().position(|r| r.stable).unwrap_or(0);
+    let upper = roots.iter().rposition(|r| r.stable).filter(|&u| u != lowest);
+    // the branch the solution reports: the loading one, or the unloading one where asked for
+    // and distinct
+    let chosen = match upper {
+        Some(u) if acc.follow_unloading => u,
+        _ => lowest,
+    };
     let branches: Vec<BranchState> = roots
         .iter()
         .enumerate()
         .map(|(i, r)| {
-            let kind = if i == chosen || (r.stable && Some(i) != upper) {
+            let kind = if i == lowest || (r.stable && Some(i) != upper) {
                 Branch::Loading
             } else if Some(i) == upper {
                 Branch::Unloading
@@ -171,6 +177,9 @@ fn solve_at(
         });
     }
     let mut sol = finish(scene, &grid, root, shots)?;
+    if chosen != lowest {
+        sol.branch = Branch::Unloading;
+    }
     sol.unloading_a_r = upper.map(|u| branches[u].a_r);
     sol.branches = branches;
     sol.contact_loads = roots.iter().map(|r| contact_load(scene, &grid, r)).collect();

@@ -274,11 +274,9 @@ pub fn loads(app: &App, kind: ChartKind) -> Chart {
     }
     let y = if gap {
         path_gap(app)
-    } else if path_row(app).is_some() {
-        // σ̄_c* = p*/a_r of the unloading branch the path is on
-        path_a_r(app).map(|a| app.params.scene.pressure() / a)
     } else {
-        current_point(app).map(|p| p.mean_contact_stress)
+        // σ̄_c* of the branch the path is on
+        crate::tui::charts::shared::path_stress(app)
     };
     add_current(&mut m, app.params.scene.pressure(), y);
     let (_, yb) = data_bounds(&m);

@@ -83,9 +83,15 @@ pub fn build_own(app: &App, kind: ChartKind) -> Chart {
 
 fn pr_linear(app: &App) -> Chart {
     let mut title = format!("Pr(σ*) at p* = {}", crate::numfmt::sig(app.params.scene.pressure(), 3));
-    if crate::tui::charts::shared::path_row(app).is_some() {
-        // the engine computes the loading branch's distribution only
-        title.push_str(", loading branch");
+    if crate::tui::charts::shared::on_unloading(app) {
+        // the distribution of the branch the path is on (the loading branch's until the
+        // unloading branch's has come)
+        let whole = current_point(app).is_some_and(|p| p.unloading.is_some());
+        title.push_str(if whole {
+            ", unloading branch"
+        } else {
+            ", loading branch"
+        });
     }
     // `y`: a log density axis, for the small distributions beside a large one (thick slabs
     // beside thin ones, the tails)
@@ -124,14 +130,16 @@ fn pr_linear(app: &App) -> Chart {
             look: None,
         });
     }
+    // the theory's distribution and wall on the branch the path is on
+    let on = crate::tui::charts::shared::shown_point(app).unwrap_or(p);
     m.series.push(Series {
         name: theory_name(app),
-        points: p.pr.clone(),
+        points: on.pr.clone(),
         role: theory_role(app),
         style: Draw::Line,
         look: None,
     });
-    if let Some(w) = p.wall {
+    if let Some(w) = on.wall {
         m.vlines.push(VLine {
             x: w,
             role: Role::Wall,
@@ -197,7 +205,8 @@ fn pr_loglog(app: &App) -> Chart {
             pd.pr_log.clone()
         }
     };
-    let theory = curve(p);
+    // the branch the path is on
+    let theory = curve(crate::tui::charts::shared::shown_point(app).unwrap_or(p));
     if let Some(c) = p.adhesionless.as_ref().filter(|_| app.ui.compare) {
         m.series.push(Series {
             name: "γ_s=0".into(),

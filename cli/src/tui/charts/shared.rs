@@ -92,20 +92,66 @@ pub fn current_point(app: &App) -> Option<&PointData> {
     app.results.point.as_ref().and_then(|r| r.as_ref().ok())
 }
 
+/// The point on the branch the user's path is on: the current point, or where the path is on
+/// the unloading branch of a hysteresis window, that branch evaluated whole
+/// ([`PointData::unloading`]; the current point until it has come).
+pub fn shown_point(app: &App) -> Option<&PointData> {
+    let p = current_point(app)?;
+    Some(match p.unloading.as_deref() {
+        Some(u) if on_unloading(app) => u,
+        _ => p,
+    })
+}
+
+/// Whether the path is on the unloading branch at a load inside its window, and so the view
+/// shows that branch ([`shown_point`]).
+pub fn on_unloading(app: &App) -> bool {
+    path_row(app).is_some()
+}
+
 /// a_r on the branch the user's path is on: the point's, or its unloading branch's where the
-/// path has jumped in and the load lies in the window (the engine's point is the loading
-/// branch's).
+/// path has jumped in and the load lies in the window.
 pub fn path_a_r(app: &App) -> Option<f64> {
     let p = current_point(app)?;
-    Some(path_row(app).map_or(p.a_r, |b| b.a_r))
+    Some(match (p.unloading.as_deref(), path_row(app)) {
+        (Some(u), Some(_)) => u.a_r,
+        (None, Some(b)) => b.a_r,
+        _ => p.a_r,
+    })
+}
+
+/// σ̄_c* on the branch the path is on: ∫σ*Pr dσ*/a_r of that branch's distribution (the
+/// same definition on both branches); None while the unloading branch's point is on its way.
+pub fn path_stress(app: &App) -> Option<f64> {
+    let p = current_point(app)?;
+    match (path_row(app), p.unloading.as_deref()) {
+        (None, _) => Some(p.mean_contact_stress),
+        (Some(_), Some(u)) => Some(u.mean_contact_stress),
+        (Some(_), None) => None,
+    }
+}
+
+/// ū/h_rms and its bracket on the branch the path is on: the unloading branch's own gap
+/// ([`PointData::gap`]) where the path is on it, else the loading branch's.
+pub fn path_gap_bracket(app: &App) -> Option<(f64, f64)> {
+    if path_row(app).is_some() {
+        let g = current_point(app)?.unloading.as_deref()?.gap?;
+        return Some((g.lower, g.upper));
+    }
+    let sw = app.results.sweep.as_ref()?.as_ref().ok()?;
+    sw.gap_bracket_at(app.params.scene.pressure())
 }
 
 /// ū/h_rms on the branch the path is on: the point's, or where the path is on the
-/// unloading branch the load sweep's unloading gap at p* (interpolated in ln p* between its
-/// loads; None where the sweep has none there).
+/// unloading branch that branch's own gap at p* ([`PointData::gap`]), else (while it is on
+/// its way) the load sweep's unloading gap interpolated in ln p* between its loads (None
+/// where the sweep has none there).
 pub fn path_gap(app: &App) -> Option<f64> {
     if path_row(app).is_none() {
         return app.gap_value();
+    }
+    if let Some(g) = current_point(app)?.unloading.as_deref().and_then(|u| u.gap) {
+        return Some(g.relative).filter(|g| g.is_finite());
     }
     let sw = app.results.sweep.as_ref()?.as_ref().ok()?;
     let p = app.params.scene.pressure();

@@ -43,6 +43,11 @@ pub fn evaluate_preview(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Re
     let mut pd = PointData::at(&ev, scene.pressure());
     pd.error_estimate = f64::NAN;
     pd.preview = true;
+    add_unloading(&mut pd, scene, &ev, &preview_options(), false, cancel)?;
+    if let Some(u) = pd.unloading.as_mut() {
+        u.error_estimate = f64::NAN;
+        u.preview = true;
+    }
     if compare {
         add_comparison(&mut pd, scene);
     }
@@ -58,9 +63,66 @@ fn add_comparison(pd: &mut PointData, scene: &Scene) {
     }
 }
 
+/// Inside a hysteresis window (two stable branches at the load): the same load on the
+/// unloading branch, evaluated whole from `ev`'s roots ([`PointData::unloading`]), and with
+/// `gap` its ū/h_rms and bracket. The branch is optional: where it cannot be had the panel
+/// shows what the loading evaluation knows of it (only [`Error::Cancelled`] is returned).
+fn add_unloading(
+    pd: &mut PointData,
+    scene: &Scene,
+    ev: &engine::Evaluation,
+    opts: &Options,
+    gap: bool,
+    cancel: &AtomicBool,
+) -> Result<()> {
+    if ev.branches.iter().filter(|b| b.stable).count() < 2 {
+        return Ok(());
+    }
+    let mut o = *opts;
+    o.adhesion.follow_unloading = true;
+    // the roots are known: re-bracket them from `ev` instead of scanning again
+    o.adhesion.explore_branches = false;
+    let twin = match engine::evaluate_warm(scene, &o, Some(ev), Some(cancel)) {
+        Ok(t) => t,
+        Err(Error::Cancelled) => return Err(Error::Cancelled),
+        Err(_) => {
+            o.adhesion_error_estimate = false;
+            match engine::evaluate_warm(scene, &o, Some(ev), Some(cancel)) {
+                Ok(mut t) => {
+                    t.error_estimate = f64::NAN;
+                    t
+                }
+                Err(Error::Cancelled) => return Err(Error::Cancelled),
+                Err(_) => return Ok(()),
+            }
+        }
+    };
+    if twin.branch != asperity::theory::adhesion::Branch::Unloading {
+        return Ok(());
+    }
+    let mut u = PointData::at(&twin, scene.pressure());
+    if gap {
+        u.gap = match asperity::theory::gap::mean_gap_of_cancellable(scene, ev, &Options::chart(), Some(cancel)) {
+            Ok(g) => g.unloading.map(|b| data::BranchGapView {
+                relative: b.relative,
+                lower: b.lower,
+                upper: b.upper,
+            }),
+            Err(Error::Cancelled) => return Err(Error::Cancelled),
+            Err(_) => None,
+        };
+    }
+    pd.unloading = Some(Box::new(u));
+    Ok(())
+}
+
 pub fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Result<PointData> {
     let mut pd = match engine::evaluate_warm(scene, &point_options(), None, Some(cancel)) {
-        Ok(ev) => PointData::at(&ev, scene.pressure()),
+        Ok(ev) => {
+            let mut pd = PointData::at(&ev, scene.pressure());
+            add_unloading(&mut pd, scene, &ev, &point_options(), true, cancel)?;
+            pd
+        }
         Err(e @ Error::NotConverged { .. }) if scene.surface_energy_j_m2() > 0.0 => {
             // the self-consistency may have converged while its error check did not (the edge
             // of a jump into contact): show it, without an error bar, and say why
@@ -71,6 +133,7 @@ pub fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Resu
             match engine::evaluate_warm(scene, &opts, None, Some(cancel)) {
                 Ok(ev) => {
                     let mut pd = PointData::at(&ev, scene.pressure());
+                    add_unloading(&mut pd, scene, &ev, &opts, true, cancel)?;
                     pd.error_estimate = f64::NAN;
                     pd.branch.push_str(", no error bar");
                     pd.warning = Some(e.to_string());

@@ -15,7 +15,7 @@ use crate::tui::charts::{self, Chart, ChartKind};
 use crate::tui::model::app::App;
 use crate::tui::model::data::{GfmdView, SweepData, ThicknessData};
 use asperity::error::{Error, Result};
-use asperity::input::preset::{ModelSpec, Preset};
+use asperity::input::preset::{LoadBranch, ModelSpec, Preset};
 use asperity::input::scene::Scene;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -51,9 +51,19 @@ pub fn scene_comment(app: &App, name: &str) -> String {
     } else {
         format!("{}", s.thickness_qr())
     };
+    // the surface: the measured one by its file, else the preset's
+    let surface = match crate::tui::model::words::surface_name(s) {
+        Some(file) => format!("# surface: {file} (measured; the preset below gives the material, adhesion and load)\n"),
+        None => String::new(),
+    };
+    let branch = if crate::tui::charts::shared::on_unloading(app) {
+        "unloading (the contact jumped in at a higher load)"
+    } else {
+        "loading"
+    };
     format!(
-        "# asperity explorer export {name}\n# preset: {} ({})\n# model: {}\n# pressure: {}\n# thickness_qr: {t}\n\
-         # gamma_j_m2: {}\n# range_m: {}\n# reduced units: stresses by E*g = {} Pa, gap by h_rms = {} m\n",
+        "# asperity explorer export {name}\n{surface}# preset: {} ({})\n# model: {}\n# pressure: {}\n# thickness_qr: {t}\n\
+         # gamma_j_m2: {}\n# range_m: {}\n# branch: {branch}\n# reduced units: stresses by E*g = {} Pa, gap by h_rms = {} m\n",
         app.params.preset.name,
         app.params.source,
         s.model().label(),
@@ -83,8 +93,29 @@ pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
 
     let mut preset = scene_preset(&app.params.preset, &app.params.scene);
     preset.name = stem.clone();
+    // the branch on screen: an export made on the unloading branch reopens on it
+    preset.load.branch = crate::tui::charts::shared::on_unloading(app).then_some(LoadBranch::Unloading);
+    // a measured surface: its file, side and periodicity, as the flags that read it
+    let tabulated = matches!(
+        app.params.scene.spectrum(),
+        asperity::surface::spectrum::Spectrum::Tabulated(_)
+    );
+    preset.measured = if tabulated {
+        app.params
+            .measured
+            .clone()
+            .or_else(|| app.params.preset.measured.clone())
+    } else {
+        None
+    };
     let toml_text = toml::to_string(&preset).map_err(|e| Error::io("serialise the scene", e))?;
     let header = match &app.params.scene.spectrum() {
+        asperity::surface::spectrum::Spectrum::Tabulated(t) if preset.measured.is_some() => format!(
+            "# Scene exported by the asperity explorer on the measured spectrum of {src}.\n\
+             # [measured] names its file with the side and periodicity it was read with; [surface] is\n\
+             # the preset's, unused while [measured] is there. Open it with `asperity tui --preset {stem}.toml`.\n",
+            src = t.source
+        ),
         asperity::surface::spectrum::Spectrum::Tabulated(t) => format!(
             "# Scene exported by the asperity explorer on the measured spectrum of {src}.\n\
              # A preset names no surface file: [surface] below is the preset's, not the scene's.\n\
@@ -97,7 +128,8 @@ pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
     write(&path, &(header + &toml_text))?;
     paths.push(path.display().to_string());
 
-    if let Some(Ok(pt)) = &app.results.point {
+    // the distribution of the branch on screen
+    if let Some(pt) = crate::tui::charts::shared::shown_point(app) {
         let mut t = scene_comment(app, &stem);
         t.push_str("sigma,density\n");
         for (s, d) in &pt.pr {

@@ -55,6 +55,8 @@ impl App {
                 place: "--preset".into(),
             });
         }
+        let mut history = crate::tui::model::history::LoadHistory::new();
+        history.reset_to(preset.follows_unloading());
         Ok(App {
             params: Params {
                 presets,
@@ -63,8 +65,9 @@ impl App {
                 scene: base.clone(),
                 base,
                 anchors: Anchors::default(),
-                history: Default::default(),
+                history,
                 map: None,
+                measured: None,
             },
             ui: Ui {
                 selected: 2,
@@ -116,6 +119,7 @@ impl App {
                 gfmd_cancel: None,
                 gfmd_next: 0,
                 pending: true,
+                asked: Needs::default(),
                 commands: Vec::new(),
                 last_export: None,
                 export_dir: PathBuf::from("."),
@@ -157,12 +161,14 @@ impl App {
         };
         let range = self.range();
         self.jobs.load_range = Some(range);
+        let needs = self.needs();
+        self.jobs.asked = needs;
         Some(Request {
             gen: self.jobs.gen,
             source: self.params.source.clone(),
             scene: self.params.scene.clone(),
             range,
-            needs: self.needs(),
+            needs,
             models,
         })
     }
@@ -176,9 +182,42 @@ impl App {
         }
     }
 
-    /// What the visible charts need computed.
+    /// The charts the screen shows (indices into [`Ui::charts`]): those the terminal's size
+    /// holds ([`crate::tui::model::wrap::shown_charts`]: all three at 160×48, the focused one
+    /// at 80×24, the focused one under `z`); all three while the size is unknown.
+    pub fn shown_charts(&self) -> Vec<usize> {
+        let Some((cols, rows)) = self.ui.size else {
+            return vec![0, 1, 2];
+        };
+        let caption = self
+            .ui
+            .tour
+            .as_ref()
+            .map(|t| t.tour.steps[t.step].caption.as_slice())
+            .unwrap_or_default();
+        crate::tui::model::wrap::shown_charts(cols, rows, caption, self.ui.focus, self.ui.zoom)
+    }
+
+    /// What the charts shown need computed: a chart not on screen is computed when it is
+    /// shown (`App::follow_shown`).
     pub fn needs(&self) -> Needs {
-        self.ui.charts.iter().fold(Needs::default(), |n, c| n.or(c.needs()))
+        self.shown_charts()
+            .into_iter()
+            .fold(Needs::default(), |n, i| n.or(self.ui.charts[i].needs()))
+    }
+
+    /// Asks for the computation again where a chart now shown (after `z`, `f`, `v`, a
+    /// resize, a tour step) needs what the last request left out.
+    pub(crate) fn follow_shown(&mut self) {
+        let n = self.needs();
+        let asked = self.jobs.asked;
+        let covered = (!n.point || asked.point)
+            && (!n.loads || asked.loads)
+            && (!n.thickness || asked.thickness)
+            && (!n.scales || asked.scales);
+        if !covered {
+            self.refresh();
+        }
     }
 
     /// The scene with another model; None where the scene does not take it (a variant

@@ -85,7 +85,7 @@ pub fn extra_readouts(ev: &Evaluation) -> Vec<(String, String)> {
     }
     let mut v = vec![
         ("σ_a*".into(), crate::numfmt::sig(ev.sigma_a, 4)),
-        ("tensile".into(), crate::numfmt::sig(ev.tensile_area, 3)),
+        ("tensile".into(), tensile_share(ev.tensile_area, ev.stats.a_r)),
         ("residual".into(), crate::numfmt::sig(ev.residual, 2)),
     ];
     if ev.branches.len() < 2 {
@@ -94,6 +94,16 @@ pub fn extra_readouts(ev: &Evaluation) -> Vec<(String, String)> {
         }
     }
     v
+}
+
+/// The contact under tension as the captions say it: its share of the contact area a_r
+/// (∫_{−σ_a}^0 Pr dσ* / a_r), e.g. `12.1% of contact`.
+pub fn tensile_share(tensile_area: f64, a_r: f64) -> String {
+    if a_r > 0.0 && tensile_area.is_finite() {
+        format!("{}% of contact", crate::numfmt::sig(100.0 * tensile_area / a_r, 3))
+    } else {
+        "–".into()
+    }
 }
 
 /// What the explorer shows of one evaluation at the current p*.
@@ -132,6 +142,25 @@ pub struct PointData {
     pub branches: Vec<BranchRow>,
     /// A quick first answer at chart accuracy (no error bar); the full-accuracy point follows.
     pub preview: bool,
+    /// Inside a hysteresis window: the same load on the unloading branch, evaluated whole
+    /// (its Pr, σ̄_c*, tensile area, wall, state and error bar), which the panel and the charts
+    /// show where the load history is on that branch; None outside a window.
+    pub unloading: Option<Box<PointData>>,
+    /// On [`PointData::unloading`]: the branch's ū/h_rms and its bracket (the adhesionless gap
+    /// at the load with its a_r … at the same load, docs/physics.md §5.1); None elsewhere or
+    /// where the gap could not be had.
+    pub gap: Option<BranchGapView>,
+}
+
+/// ū/h_rms of one branch with its bracket.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BranchGapView {
+    /// ū/h_rms.
+    pub relative: f64,
+    /// The bracket's lower end (the adhesionless gap at the load with the branch's a_r).
+    pub lower: f64,
+    /// The bracket's upper end (the adhesionless gap at the same load).
+    pub upper: f64,
 }
 
 impl PointData {
@@ -153,6 +182,8 @@ impl PointData {
             warning: None,
             branches: branch_rows(ev),
             preview: false,
+            unloading: None,
+            gap: None,
         }
     }
 

@@ -44,6 +44,9 @@ pub enum Why {
     PulledOff(f64),
     /// The scene has no hysteresis window: one branch.
     NoWindow,
+    /// The preset put its scene on this branch (`[load] branch = "unloading"`: an export made
+    /// on the unloading branch).
+    Preset,
 }
 
 /// What a scene's load sweep says about its hysteresis window.
@@ -87,6 +90,16 @@ impl LoadHistory {
     /// Back to the loading branch (`r`, a preset, a tour step).
     pub fn reset(&mut self) {
         *self = LoadHistory::new();
+    }
+
+    /// Back to the branch a preset puts its scene on: the unloading branch where its
+    /// `[load] branch` says so (`unloading`), else the loading branch.
+    pub fn reset_to(&mut self, unloading: bool) {
+        self.reset();
+        if unloading {
+            self.on = Path::Unloading;
+            self.why = Why::Preset;
+        }
     }
 
     /// Records a load the path reached (in order).
@@ -138,6 +151,7 @@ impl LoadHistory {
         match self.why {
             Why::JumpedIn(_) => format!("{} (jumped in)", self.on.name()),
             Why::PulledOff(_) => format!("{} (pulled off)", self.on.name()),
+            Why::Preset => format!("{} (preset)", self.on.name()),
             Why::Start | Why::NoWindow => self.on.name().to_string(),
         }
     }
@@ -155,6 +169,7 @@ impl LoadHistory {
                 s(q, 3)
             ),
             (Path::Loading, Why::NoWindow) => "one branch: no hysteresis window at this scene".into(),
+            (on, Why::Preset) => format!("{} branch, as the preset's [load] branch says; r resets to it", on.name()),
             (on, _) => format!("{} branch (loaded from small p*)", on.name()),
         }
     }
@@ -242,6 +257,19 @@ mod tests {
         h.visit(1e-4);
         h.resolve(&higher);
         assert_eq!((h.on, h.why), (Path::Loading, Why::PulledOff(2e-4)));
+    }
+
+    #[test]
+    fn a_preset_on_the_unloading_branch_starts_there_and_pulls_off_below_the_window() {
+        let mut h = LoadHistory::new();
+        h.reset_to(true);
+        assert_eq!((h.on, h.why), (Path::Unloading, Why::Preset));
+        assert_eq!(h.label(), "unloading (preset)");
+        // inside the window it stays; below pull-off it drops onto the loading branch
+        assert_eq!(walk(&mut h, &[1e-4, 2.24e-4, 1e-4], &W), Path::Unloading);
+        assert_eq!(walk(&mut h, &[4e-5], &W), Path::Loading);
+        h.reset_to(false);
+        assert_eq!(h, LoadHistory::new());
     }
 
     #[test]

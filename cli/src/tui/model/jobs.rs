@@ -24,6 +24,8 @@ pub struct Jobs {
     pub gfmd_next: u64,
     /// The scene or the charts changed since the last request.
     pub pending: bool,
+    /// What the last request asked for (the charts then shown).
+    pub asked: crate::tui::model::kinds::Needs,
     /// The commands the handlers of one message asked for (files, GFMD, a preset or tour to
     /// read), returned by [`crate::tui::update::update`]; empty between messages.
     pub commands: Vec<Command>,

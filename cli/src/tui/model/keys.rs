@@ -75,9 +75,27 @@ pub enum Action {
 /// The help's last row: where the manual is (the repository's docs/).
 pub const MANUAL: &str = "manual     docs/explorer.md · docs/tour-format.md · docs/commands.md";
 
-/// Rows of the help: the key table's, then [`MANUAL`].
+/// The panel's rows, one line each, for the help (after the keys): what each read-out is
+/// (the help still fits 160×48 whole).
+pub const PANEL_ROWS: &[(&str, &str)] = &[
+    ("a_r", "contact area / nominal area (of the branch the path is on)"),
+    ("σ̄_c*", "mean stress in contact, ∫σ*Pr dσ*/a_r, in units of E*ḡ"),
+    ("ū/h_rms", "mean gap between the surfaces, in rms heights"),
+    ("ū load", "ū's bracket: dry gap at the same a_r … at the same load"),
+    ("γ̃_glo", "γ_s over the elastic energy of full contact [S-24]"),
+    ("state", "branch shown, solver marches (it), branches at this load"),
+    ("σ_a*", "adhesive wall: contact holds tension down to σ* = −σ_a*"),
+    ("tensile", "share of the contact area under tension (σ* < 0)"),
+    ("err a_r", "estimated absolute error of a_r (discretisation)"),
+    ("trust", "a_r error measured against GFMD near here; mN's: model N's"),
+];
+
+/// The help's header of [`PANEL_ROWS`].
+pub const PANEL_HEADER: &str = "─ panel rows ─";
+
+/// Rows of the help: the key table's, [`MANUAL`], then the panel's rows under their header.
 pub fn help_rows() -> usize {
-    TABLE.len() + 1
+    TABLE.len() + 2 + PANEL_ROWS.len()
 }
 
 /// One key: a code plus the modifiers it needs.

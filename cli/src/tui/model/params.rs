@@ -36,4 +36,8 @@ pub struct Params {
     /// The measured height map of `tui --surface` (its file name, as the tabulated spectrum
     /// names it, and the map): `g` runs GFMD on it while the scene is on its spectrum.
     pub map: Option<(String, Arc<Surface>)>,
+    /// The measured surface the scene was opened on (`tui --surface`/`--psd` with their
+    /// flags, or a preset's `[measured]`), which `e` writes into the scene's preset so that it
+    /// reopens on it.
+    pub measured: Option<asperity::input::preset::MeasuredSpec>,
 }

@@ -29,7 +29,7 @@ impl App {
             }
             Action::Reset => {
                 self.params.anchors = Anchors::default();
-                self.params.history.reset();
+                self.params.history.reset_to(self.params.preset.follows_unloading());
                 self.set_scene(self.params.base.clone());
                 self.info(format!("reset to preset {}", self.params.preset.name));
             }

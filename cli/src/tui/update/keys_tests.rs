@@ -1,5 +1,6 @@
 //! Unit tests of the keys added for the classroom: `z`, Esc, `c` and `y`, the commands each
-//! key asks for, typed values out of range, pins of an unchanged scene.
+//! key asks for, typed values out of range, pins of an unchanged scene; only the charts a
+//! terminal shows (`f`, `z`, a resize) are computed.
 
 use crate::tui::model::app::*;
 use crate::tui::model::kinds::ChartKind;
@@ -137,4 +138,42 @@ fn a_pin_of_the_unchanged_scene_neither_repeats_nor_renames_the_curve() {
     key(&mut a, KeyCode::Char('P'));
     assert_eq!(a.results.pins.len(), 1);
     assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("pinned already")));
+}
+
+/// Compute what is shown: at 80×24 one chart shows (the focused one) and the request asks only
+/// for what that chart needs; `f` bringing another chart on screen, and a resize to 160×48
+/// that shows all three, ask for the rest; going back to 80×24 asks for nothing.
+#[test]
+fn only_the_charts_shown_are_asked_for() {
+    use crate::tui::model::msg::Msg;
+    let mut a = app();
+    a.set_charts([ChartKind::Pr, ChartKind::Area, ChartKind::Thickness]);
+    crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
+    assert_eq!(a.shown_charts(), vec![0]);
+    let req = a.take_request().expect("a request");
+    assert!(
+        req.needs.point && !req.needs.loads && !req.needs.thickness,
+        "{:?}",
+        req.needs
+    );
+    // a message that shows nothing new asks for nothing
+    crate::tui::drive::send(&mut a, Msg::Clock(std::time::Instant::now()));
+    assert!(a.take_request().is_none());
+    // f: the area chart comes on screen, and with it the load sweep
+    key(&mut a, KeyCode::Char('f'));
+    assert_eq!(a.shown_charts(), vec![1]);
+    let req = a.take_request().expect("the chart now shown is asked for");
+    assert!(req.needs.loads && !req.needs.thickness, "{:?}", req.needs);
+    // 160×48 shows all three: the thickness sweep too
+    crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
+    assert_eq!(a.shown_charts(), vec![0, 1, 2]);
+    let req = a.take_request().expect("the charts now shown are asked for");
+    assert!(req.needs.loads && req.needs.thickness, "{:?}", req.needs);
+    // back to one chart: nothing more to compute
+    crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
+    assert!(a.take_request().is_none());
+    // z at 160×48: the focused chart alone
+    crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
+    key(&mut a, KeyCode::Char('z'));
+    assert_eq!(a.shown_charts(), vec![1]);
 }

@@ -48,6 +48,8 @@ pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
         Msg::Mouse(p) => app.on_mouse(p),
         Msg::GfmdStarted { id, grid, at } => app.gfmd_started(id, grid, at),
     }
+    // a chart that came on screen (z, f, v, a resize, a tour step) is computed now
+    app.follow_shown();
     app.take_asked()
 }
 

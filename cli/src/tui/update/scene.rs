@@ -23,7 +23,7 @@ impl App {
                 self.params.base = s.clone();
                 self.params.anchors = Anchors::default();
                 self.set_scene(s);
-                self.params.history.reset();
+                self.params.history.reset_to(self.params.preset.follows_unloading());
                 self.info(format!("preset {}", self.params.preset.name));
             }
             Err(e) => self.fail(e),

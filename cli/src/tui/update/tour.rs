@@ -65,7 +65,7 @@ impl App {
         self.params.base = st.scene.clone();
         self.params.anchors = Anchors::default();
         self.set_scene(st.scene);
-        self.params.history.reset();
+        self.params.history.reset_to(self.params.preset.follows_unloading());
         self.ui.charts = st.charts;
         self.ui.all_models = st.models;
         // a step that shows the scale view plays it from q_L

@@ -11,19 +11,9 @@
 //!   where each is at least [`MIN_PANEL_COLS`] wide, else the focused chart alone (`f` shows
 //!   the next). Fewer panels, never unreadable ones.
 
-use crate::tui::model::wrap::CAPTION_BORDER_ROWS;
-pub use crate::tui::model::wrap::{wrap, MIN_SIZE};
+use crate::tui::model::wrap::{caption_box_rows, chart_panels, CAPTION_BORDER_ROWS};
+pub use crate::tui::model::wrap::{wrap, MIN_PANEL_COLS, MIN_PANEL_ROWS, MIN_PLOT_ROWS, MIN_SIZE, PANEL_CHROME_ROWS};
 use ratatui::layout::Rect;
-
-/// Rows of plot a chart keeps (between its title border and its x axis).
-pub const MIN_PLOT_ROWS: u16 = 8;
-/// Rows a chart panel adds around its plot: the title border, the x axis line, its tick
-/// labels and the bottom border with the legend.
-pub const PANEL_CHROME_ROWS: u16 = 4;
-/// Smallest chart panel (rows).
-pub const MIN_PANEL_ROWS: u16 = MIN_PLOT_ROWS + PANEL_CHROME_ROWS;
-/// Narrowest chart panel when two stand side by side (columns).
-pub const MIN_PANEL_COLS: u16 = 40;
 
 /// Where everything goes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -76,13 +66,7 @@ pub fn screen(
         .iter()
         .flat_map(|l| wrap(l, usize::from(area.width.saturating_sub(CAPTION_BORDER_ROWS))))
         .collect();
-    let cap_rows = if lines.is_empty() {
-        0
-    } else {
-        let want = lines.len() as u16 + CAPTION_BORDER_ROWS;
-        let room = free.saturating_sub(MIN_PANEL_ROWS).max(CAPTION_BORDER_ROWS + 1);
-        want.min(room).min(free)
-    };
+    let cap_rows = caption_box_rows(free, lines.len());
     let shown = usize::from(cap_rows.saturating_sub(CAPTION_BORDER_ROWS));
     let caption_top = caption_scroll.min(lines.len().saturating_sub(shown));
     let body_h = free - cap_rows;
@@ -92,26 +76,26 @@ pub fn screen(
     let panel = Rect::new(body.x, body.y, panel_w, body_h);
     let cx = body.x + panel_w;
     let cw = body.width - panel_w;
-    let focus = focus.min(2);
-    let charts = if body_h >= 2 * MIN_PANEL_ROWS {
-        let top_h = body_h / 2;
-        let bottom_h = body_h - top_h;
-        let left_w = cw / 2;
-        vec![
-            (Rect::new(cx, body.y, cw, top_h), 0),
-            (Rect::new(cx, body.y + top_h, left_w, bottom_h), 1),
-            (Rect::new(cx + left_w, body.y + top_h, cw - left_w, bottom_h), 2),
-        ]
-    } else if cw >= 2 * MIN_PANEL_COLS {
+    let charts = match chart_panels(body_h, cw, focus)[..] {
+        [_, _, _] => {
+            let top_h = body_h / 2;
+            let bottom_h = body_h - top_h;
+            let left_w = cw / 2;
+            vec![
+                (Rect::new(cx, body.y, cw, top_h), 0),
+                (Rect::new(cx, body.y + top_h, left_w, bottom_h), 1),
+                (Rect::new(cx + left_w, body.y + top_h, cw - left_w, bottom_h), 2),
+            ]
+        }
         // the focused chart and the next one
-        let left_w = cw / 2;
-        let (a, b) = (focus, (focus + 1) % 3);
-        vec![
-            (Rect::new(cx, body.y, left_w, body_h), a.min(b)),
-            (Rect::new(cx + left_w, body.y, cw - left_w, body_h), a.max(b)),
-        ]
-    } else {
-        vec![(Rect::new(cx, body.y, cw, body_h), focus)]
+        [a, b] => {
+            let left_w = cw / 2;
+            vec![
+                (Rect::new(cx, body.y, left_w, body_h), a),
+                (Rect::new(cx + left_w, body.y, cw - left_w, body_h), b),
+            ]
+        }
+        _ => vec![(Rect::new(cx, body.y, cw, body_h), focus.min(2))],
     };
     Screen {
         title,

@@ -99,11 +99,7 @@ pub fn screen_of(app: &App, area: Rect, pal: Palette) -> (Line<'static>, layout:
         wrapped_rows(status_line.width(), area.width).clamp(1, STATUS_ROWS)
     };
     let caption = caption_text(app);
-    let panel_w = match area.width {
-        120.. => 34,
-        80.. => 28,
-        _ => 24,
-    };
+    let panel_w = crate::tui::model::wrap::panel_cols(area.width);
     let scr = layout::screen(
         area,
         &caption,
@@ -376,12 +372,15 @@ fn popup(area: Rect, w: u16, h: u16) -> Rect {
     Rect::new(area.x + (area.width - w) / 2, area.y + (area.height - h) / 2, w, h)
 }
 
-/// The help lines, generated from the key table.
+/// The help lines, generated from the key table, then what each panel row is.
 pub fn help_lines() -> Vec<String> {
+    let pad = |s: &str| format!("{s}{}", " ".repeat(11usize.saturating_sub(Span::raw(s).width())));
     keys::TABLE
         .iter()
         .map(|b| format!("{:<11}{}", b.label, b.help))
         .chain(std::iter::once(keys::MANUAL.to_string()))
+        .chain(std::iter::once(keys::PANEL_HEADER.to_string()))
+        .chain(keys::PANEL_ROWS.iter().map(|(k, v)| format!("{}{v}", pad(k))))
         .collect()
 }
 

@@ -74,9 +74,12 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
             lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
         }
     };
-    // the branch the load history has reached (the engine's point is the loading branch's)
-    let on_unloading = crate::tui::charts::shared::path_row(app).is_some();
-    let a_r = crate::tui::charts::shared::path_a_r(app);
+    // the branch the load history has reached: every row below is that branch's (the point
+    // evaluated on the unloading branch where the path is on it)
+    use crate::tui::charts::shared as sh;
+    let on_unloading = sh::on_unloading(app);
+    let shown = sh::shown_point(app);
+    let a_r = sh::path_a_r(app);
     row_styled("a_r", a_r.map_or_else(dash, |a| sig(a, 4)), stale_point);
     // inside a hysteresis window: the branch the load history reached, next to its a_r
     // (the branch alone where the reason does not fit: the status line said it)
@@ -90,48 +93,41 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         };
         row_styled("path", v, stale_point);
     }
-    // σ̄_c* = p*/a_r of the branch the path is on
-    let stress = match (pt, a_r) {
-        (Some(_), Some(a)) if on_unloading => sig(app.params.scene.pressure() / a, 4),
-        (Some(p), _) => sig(p.mean_contact_stress, 4),
-        _ => dash(),
-    };
+    // σ̄_c* = ∫σ*Pr dσ*/a_r of the branch the path is on
+    let stress = sh::path_stress(app).map_or_else(dash, |s| sig(s, 4));
     row_styled("σ̄_c*", stress, stale_point);
-    let gap = crate::tui::charts::shared::path_gap(app).map_or_else(dash, |g| sig(g, 4));
+    let gap = sh::path_gap(app).map_or_else(dash, |g| sig(g, 4));
     row_styled("ū/h_rms", gap, stale_gap && app.results.gap.is_some());
-    // with adhesion: which branch the gap is of, and its bracket (docs/physics.md §5.1)
+    // with adhesion: the bracket of the gap of the branch shown (docs/physics.md §5.1)
     if app.params.scene.is_adhesive() {
-        let bracket = app
-            .results
-            .sweep
-            .as_ref()
-            .and_then(|r| r.as_ref().ok())
-            .and_then(|sw| sw.gap_bracket_at(app.params.scene.pressure()));
-        if let Some((lo, hi)) = bracket {
-            // the loading branch's bracket (same a_r … same load)
-            row_styled("ū load", format!("{}–{}", sig(lo, 3), sig(hi, 3)), stale_gap);
+        if let Some((lo, hi)) = sh::path_gap_bracket(app) {
+            // same a_r … same load
+            let k = if on_unloading { "ū unload" } else { "ū load" };
+            row_styled(k, format!("{}–{}", sig(lo, 3), sig(hi, 3)), stale_gap);
         }
     }
     row_styled("γ̃_glo", sig(app.params.scene.gamma_glo(), 3), false);
-    let state = match &app.results.point {
+    let state = match (&app.results.point, shown) {
         _ if stale_point || (app.jobs.busy && app.results.point.is_none()) => "computing…".to_string(),
-        Some(Ok(p)) if p.preview => format!("{} · refining…", p.branch),
-        Some(Ok(p)) => p.branch.clone(),
-        Some(Err(_)) => "failed (see below)".into(),
-        None => dash(),
+        (Some(Ok(_)), Some(p)) if p.preview => format!("{} · refining…", p.branch),
+        (Some(Ok(_)), Some(p)) => p.branch.clone(),
+        (Some(Err(_)), _) => "failed (see below)".into(),
+        _ => dash(),
     };
     row_styled("state", state, false);
-    if let Some(p) = pt {
+    if let Some(p) = shown {
         for (k, v) in &p.extra {
             row_styled(k, v.clone(), stale_point);
         }
+    }
+    if let Some(p) = pt {
         let style = if stale_point { pal.dim() } else { Style::default() };
         lines.extend(branch_lines(&p.branches, on_unloading, style));
     }
     let mut row = |k: &str, v: String| lines.push(Line::from(format!(" {}{v}", pad(k, 9))));
     row(
         "err a_r",
-        pt.map_or_else(dash, |p| {
+        shown.map_or_else(dash, |p| {
             if p.error_estimate.is_finite() {
                 sig(p.error_estimate, 2)
             } else {
@@ -180,7 +176,6 @@ fn branch_lines(
         .collect()
 }
 
-/// The scene in physical units: p, E*, h_rms, ḡ, λ_r/λ_s.
 /// The panel's short form of the trust read-out ([`asperity::fit::trust`]): the band within
 /// which GFMD's a_r was measured from the theory's at this load and whose model it is, that no
 /// error is known at this load, or that the scene lies outside the reference set (`run`'s
@@ -193,13 +188,16 @@ fn trust_value(sc: &asperity::input::scene::Scene) -> String {
     if !t.inside {
         return "outside GFMD set".into();
     }
-    format!(
-        "a_r ×/÷{} (m{})",
-        crate::numfmt::sig(t.a_r_band_ratio, 2),
-        t.measured_model
-    )
+    let band = crate::numfmt::sig(t.a_r_band_ratio, 2);
+    if t.same_model {
+        format!("a_r ×/÷{band} (m{})", t.measured_model)
+    } else {
+        // the set measured another model here: say whose error it is
+        format!("m{}'s a_r ×/÷{band}", t.measured_model)
+    }
 }
 
+/// The scene in physical units: p, E*, h_rms, ḡ, λ_r/λ_s.
 fn scene_rows(sc: &asperity::input::scene::Scene) -> Vec<Line<'static>> {
     [
         ("p", si(sc.pressure() * sc.stress_unit(), "Pa")),
