@@ -197,6 +197,47 @@ fn terminal_restored_after_a_panic() {
 }
 
 #[test]
+fn a_worker_fault_is_shown_and_q_quits() {
+    if !have_tmux() {
+        eprintln!("SKIPPED a_worker_fault_is_shown_and_q_quits: tmux is not installed");
+        return;
+    }
+    let t = Tmux::start("fault", &std::env::temp_dir(), "ASPERITY_TEST_FAULT=1");
+    let s = t.wait("the fault on the panel", |s| s.contains("internal fault"));
+    assert!(
+        !s.contains("panicked"),
+        "the worker's panic is not painted over the screen\n{s}"
+    );
+    // Esc never quits; q does, with the terminal restored
+    t.keys(&["Escape"]);
+    // apart from the Escape, else the terminal reads ESC q as Alt-q
+    std::thread::sleep(Duration::from_millis(500));
+    t.keys(&["q"]);
+    let s = t.wait("the exit", |s| s.contains("TTY="));
+    assert!(s.contains("EXIT=0"), "{s}");
+    assert!(s.contains("TTY=icanon"), "raw mode is off again\n{s}");
+    assert!(!s.contains("parameters"), "the alternate screen is gone\n{s}");
+}
+
+#[test]
+fn the_weakest_surface_energy_then_q_in_tmux() {
+    if !have_tmux() {
+        eprintln!("SKIPPED the_weakest_surface_energy_then_q_in_tmux: tmux is not installed");
+        return;
+    }
+    let t = Tmux::start_with(
+        "weak",
+        &std::env::temp_dir(),
+        "",
+        "tui --preset system-2 --gamma 1e-320",
+    );
+    t.wait("the first frame with results", |s| s.contains("a_r(p*)") && solved(s));
+    t.keys(&["q"]);
+    let s = t.wait("the exit", |s| s.contains("TTY="));
+    assert!(s.contains("EXIT=0") && s.contains("TTY=icanon"), "{s}");
+}
+
+#[test]
 fn not_a_terminal_explains_the_headless_commands() {
     let out = Command::new(BIN).output().unwrap();
     assert_eq!(out.status.code(), Some(2));

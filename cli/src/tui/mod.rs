@@ -22,7 +22,9 @@
 //! thread) and worker and GFMD replies; it redraws after each batch of messages, and ticks (for the
 //! spinner, and the GFMD job's clock) only while the worker is busy or GFMD runs, so an idle
 //! explorer uses no CPU. The terminal is
-//! restored on every exit path: a drop guard on return, ratatui's panic hook on panic.
+//! restored on every exit path: a drop guard on return, ratatui's panic hook on a panic of the
+//! event loop; a panic of another thread leaves the screen alone and reaches the panel as a
+//! message (`effects::worker`, `ASPERITY_TEST_FAULT` injects one for the tests).
 //!
 //! `ASPERITY_PANIC_KEY=C` makes the key C panic (for the test that the terminal is restored
 //! after a panic).
@@ -79,7 +81,40 @@ impl Drop for TerminalGuard {
             let _ = ratatui::crossterm::execute!(std::io::stdout(), event::DisableMouseCapture);
         }
         ratatui::restore();
+        // the faults of other threads, held back while the screen was the explorer's
+        if let Ok(mut held) = HELD_PANICS.lock() {
+            for line in held.drain(..) {
+                eprintln!("asperity: {line}");
+            }
+        }
     }
+}
+
+/// Panics of threads other than the event loop's (the worker, GFMD, rayon's), held while the
+/// explorer owns the screen and printed once the terminal is restored (at most a few).
+static HELD_PANICS: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+
+/// Installs the explorer's panic hook over ratatui's (which restores the terminal, then
+/// prints): a panic of the event loop's thread takes ratatui's hook, so the terminal is
+/// restored before the message; a panic of another thread leaves the screen alone (its
+/// fault reaches the panel as a message, see `effects::worker`) and is printed after the
+/// explorer closes.
+fn install_panic_hook() {
+    let event_loop = std::thread::current().id();
+    let restore_and_print = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if std::thread::current().id() == event_loop {
+            if let Ok(mut held) = HELD_PANICS.lock() {
+                held.clear();
+            }
+            restore_and_print(info);
+        } else if let Ok(mut held) = HELD_PANICS.lock() {
+            if held.len() < 4 {
+                let name = std::thread::current().name().unwrap_or("a thread").to_string();
+                held.push(format!("{name} failed: {info}").replace('\n', " "));
+            }
+        }
+    }));
 }
 
 /// The update's message of a mouse event (`--mouse`): where a left click lands on the screen
@@ -184,6 +219,7 @@ pub fn run_app(mut app: App) -> Result<()> {
 
     let _guard = TerminalGuard { mouse: app.ui.mouse };
     let mut terminal = ratatui::try_init().map_err(|e| Error::io("open the terminal", e))?;
+    install_panic_hook();
     if app.ui.mouse {
         ratatui::crossterm::execute!(std::io::stdout(), event::EnableMouseCapture)
             .map_err(|e| Error::io("capture the mouse", e))?;

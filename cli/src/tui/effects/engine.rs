@@ -407,8 +407,17 @@ pub fn spawn_gfmd(
 ) -> std::io::Result<std::thread::JoinHandle<()>> {
     std::thread::Builder::new().name("asperity-gfmd".into()).spawn(move || {
         let t0 = std::time::Instant::now();
-        let result = gfmd_job(&setup, &cancel, &mut |progress| {
-            send(Reply::GfmdProgress { id, progress })
+        // a fault (a panic) ends the job with its message, so the panel does not wait on it
+        let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            gfmd_job(&setup, &cancel, &mut |progress| {
+                send(Reply::GfmdProgress { id, progress })
+            })
+        }))
+        .unwrap_or_else(|payload| {
+            Err(asperity::error::Error::io(
+                "run GFMD",
+                format!("internal fault: {}", panic_text(payload.as_ref())),
+            ))
         });
         send(Reply::GfmdDone {
             id,
@@ -416,6 +425,21 @@ pub fn spawn_gfmd(
             elapsed_s: t0.elapsed().as_secs_f64(),
         });
     })
+}
+
+/// The message of a panic's payload (a `&str` or a `String`; else a placeholder), on one
+/// line and at most 200 characters.
+pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
+    let text = payload
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "a panic without a message".into());
+    let line = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    match line.char_indices().nth(200) {
+        Some((i, _)) => format!("{}…", &line[..i]),
+        None => line,
+    }
 }
 
 /// The GFMD setup of `g`: the scene on the preset's reduced grid (a 512² default), or on the

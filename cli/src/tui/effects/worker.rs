@@ -16,6 +16,7 @@
 //! - Every reply carries its generation and its key; the UI keeps a reply only if the key is
 //!   the one its current scene needs (so stale replies are dropped).
 
+pub use crate::tui::effects::engine::panic_text;
 use crate::tui::effects::engine::{evaluate_point, evaluate_preview};
 pub use crate::tui::effects::engine::{
     interpolate_gap, load_sweep, preview_sweep, scale_view, spawn_gfmd, thickness_sweep, PREVIEW_EDGE_REL,
@@ -404,9 +405,27 @@ fn run(rx: Receiver<Request>, latest: &AtomicU64, cancel: &AtomicBool, reply: &d
             continue;
         }
         let stale = || latest.load(Ordering::SeqCst) != gen;
-        process(&req, &mut caches, cancel, &stale, reply);
+        // a fault in the computation (a panic) becomes a message the explorer shows; the
+        // caches may hold a half-written entry, so they start afresh
+        let served = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            if std::env::var_os(TEST_FAULT).is_some() {
+                panic!("{TEST_FAULT} is set: a fault injected for the tests");
+            }
+            process(&req, &mut caches, cancel, &stale, reply)
+        }));
+        if let Err(payload) = served {
+            caches = Caches::default();
+            reply(Reply::Fault {
+                gen,
+                message: format!("internal fault: {}", panic_text(payload.as_ref())),
+            });
+        }
     }
 }
+
+/// The environment variable that makes the worker fail on every request (a panic, caught
+/// like any fault), for the tests that the explorer shows a fault and stays responsive.
+pub const TEST_FAULT: &str = "ASPERITY_TEST_FAULT";
 
 #[cfg(test)]
 #[path = "worker_tests.rs"]

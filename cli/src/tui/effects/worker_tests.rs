@@ -192,6 +192,7 @@ fn kinds(replies: &[Reply]) -> Vec<&'static str> {
             Reply::Thickness { .. } => "thickness",
             Reply::Scales { .. } => "scales",
             Reply::Done { .. } => "done",
+            Reply::Fault { .. } => "fault",
             Reply::GfmdProgress { .. } | Reply::GfmdDone { .. } => "gfmd",
         })
         .collect()
@@ -362,7 +363,7 @@ fn threaded_worker_ends_on_the_newest_generation() {
             | Reply::Gap { gen, .. }
             | Reply::Thickness { gen, .. }
             | Reply::Scales { gen, .. } => *gen,
-            Reply::Done { gen } => *gen,
+            Reply::Done { gen } | Reply::Fault { gen, .. } => *gen,
             Reply::GfmdProgress { .. } | Reply::GfmdDone { .. } => unreachable!("the theory worker runs no GFMD"),
         };
         assert!(gen >= last_gen, "replies never go back in generation");

@@ -175,6 +175,14 @@ pub enum Reply {
         /// Seconds the whole job took.
         elapsed_s: f64,
     },
+    /// The worker failed on this generation's request (a fault in the computation, caught):
+    /// the explorer shows `message` where the results would be, and stays responsive.
+    Fault {
+        /// Generation.
+        gen: u64,
+        /// What failed, in one line.
+        message: String,
+    },
     /// Everything of this generation has been sent.
     Done {
         /// Generation.

@@ -48,6 +48,29 @@ impl App {
             }
             Reply::GfmdProgress { id, progress } => self.on_gfmd_progress(id, progress),
             Reply::GfmdDone { id, result, elapsed_s } => self.on_gfmd_done(id, result, elapsed_s),
+            Reply::Fault { gen, message } => {
+                // the fault stands for every result of the current scene still missing, so
+                // the panel and the charts say what failed instead of "computing…"
+                let p = &self.params;
+                let fault = asperity::error::Error::io("compute this scene", &message);
+                if self.results.point_shown.as_ref() != Some(&point_key(&p.source, &p.scene)) {
+                    self.results.point = Some(Err(fault.clone()));
+                    self.results.point_shown = Some(point_key(&p.source, &p.scene));
+                }
+                let sk = sweep_key(&p.source, &p.scene, self.range());
+                if self.results.sweep_shown.as_ref() != Some(&sk) {
+                    self.results.sweep = Some(Err(fault.clone()));
+                    self.results.sweep_shown = Some(sk);
+                }
+                if self.results.gap_shown.as_ref() != Some(&point_key(&p.source, &p.scene)) {
+                    self.results.gap = Some(Err(fault));
+                    self.results.gap_shown = Some(point_key(&p.source, &p.scene));
+                }
+                if gen == self.jobs.gen {
+                    self.jobs.busy = false;
+                    self.jobs.busy_since = None;
+                }
+            }
             Reply::Done { gen } => {
                 if gen == self.jobs.gen {
                     self.jobs.busy = false;
