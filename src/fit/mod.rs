@@ -247,10 +247,11 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
     let evaluations = problem.evaluations + report.number_of_evaluations * (2 * k);
     if !report.termination.was_successful() {
         let why = match problem.error.take() {
-            Some(e) => format!("{:?}; the theory failed on the way: {e}", report.termination),
+            Some(e) => format!("{}; the theory failed on the way: {e}", stopped(&report.termination)),
             None => format!(
-                "{:?} after {} evaluations",
-                report.termination, report.number_of_evaluations
+                "{} after {} evaluations",
+                stopped(&report.termination),
+                report.number_of_evaluations
             ),
         };
         return Err(Error::NotConverged {
@@ -282,6 +283,24 @@ pub fn fit(scene: &Scene, reference: &Reference, params: &[Param]) -> Result<Fit
         start,
         elapsed_s: t0.elapsed().as_secs_f64(),
     })
+}
+
+/// Why the Levenberg–Marquardt search stopped without a fit, in words.
+fn stopped(t: &levenberg_marquardt::TerminationReason) -> String {
+    use levenberg_marquardt::TerminationReason as T;
+    match t {
+        T::User(w) | T::Numerical(w) | T::NoImprovementPossible(w) => {
+            format!("the search stopped: no further step possible ({w})")
+        }
+        T::LostPatience => "the search ran out of steps without converging".into(),
+        T::NoParameters => "no parameter to fit".into(),
+        T::NoResiduals => "no reference point to fit".into(),
+        T::WrongDimensions(w) => format!("the problem is ill-posed ({w})"),
+        other => format!(
+            "the search stopped ({})",
+            if other.was_successful() { "converged" } else { "failed" }
+        ),
+    }
 }
 
 /// [`Error::Invalid`] for no parameter to fit (k = 0) or no more points than parameters

@@ -335,7 +335,7 @@ fn report(args: &GfmdArgs, out: GfmdResult, extrapolation: Option<Ladder>, ensem
         );
     }
     if let (Some(path), Some(s)) = (&args.save_surface, &out.surface) {
-        s.save(path)?;
+        super::outfile::write_bytes("--save-surface", path, s.to_text().as_bytes())?;
     }
     if args.format == GfmdFormat::Csv {
         emit(&single_csv(&out));
