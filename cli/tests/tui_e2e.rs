@@ -210,6 +210,8 @@ fn a_worker_fault_is_shown_and_q_quits() {
     );
     // Esc never quits; q does, with the terminal restored
     t.keys(&["Escape"]);
+    // apart from the Escape, else the terminal reads ESC q as Alt-q
+    std::thread::sleep(Duration::from_millis(500));
     t.keys(&["q"]);
     let s = t.wait("the exit", |s| s.contains("TTY="));
     assert!(s.contains("EXIT=0"), "{s}");

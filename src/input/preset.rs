@@ -322,7 +322,8 @@ impl Preset {
         if len > MAX_TOML_BYTES {
             return Err(too_large(&path.display().to_string(), len));
         }
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "preset", path, &e))?;
+        let field = Field::Other("preset".into());
+        let text = crate::input::file::read_text(path, "preset", field, MAX_TOML_BYTES, "a preset in TOML")?;
         Preset::parse(&text, &path.display().to_string())
     }
 

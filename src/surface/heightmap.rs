@@ -249,7 +249,9 @@ impl Surface {
 
     /// Reads a map from a file (text format); `size` is the side L (m).
     pub fn load(path: &Path, size: f64) -> Result<Surface> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "surface", path, &e))?;
+        use crate::input::file::{read_text, MAX_INPUT_BYTES};
+        let expected = "a height map as rows of numbers";
+        let text = read_text(path, "surface", Field::HeightMap, MAX_INPUT_BYTES, expected)?;
         Surface::parse(&text, &path.display().to_string(), size)
     }
 

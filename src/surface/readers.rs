@@ -114,7 +114,8 @@ fn bad(source: &str, at: String, what: impl std::fmt::Display, allowed: &str) ->
 /// and the fault otherwise.
 pub fn read(path: &Path, opts: &ReadOptions) -> Result<Surface> {
     let format = format_of(path)?;
-    let bytes = std::fs::read(path).map_err(|e| Error::io_file("read", "surface", path, &e))?;
+    let bytes =
+        crate::input::file::read_bounded(path, "surface", Field::HeightMap, crate::input::file::MAX_INPUT_BYTES)?;
     // errors name the file by its name (the folder is the caller's, and a long one would
     // crowd out what is wrong)
     let name = path
@@ -226,6 +227,19 @@ fn length_with_unit(s: &str) -> Option<(f64, Option<Unit>)> {
     Some((v, it.next().and_then(Unit::parse)))
 }
 
+/// Refuses a line with a decimal comma ([`crate::input::file::decimal_comma`]), saying so.
+fn refuse_decimal_comma(line: &str, source: &str, i: usize) -> Result<()> {
+    match crate::input::file::decimal_comma(line) {
+        Some(tok) => Err(bad(
+            source,
+            format!("{}", i + 1),
+            format!("'{tok}' (a decimal comma)"),
+            "numbers with a decimal point (1.5e-08, not 1,5e-08), separated by blanks, commas or semicolons",
+        )),
+        None => Ok(()),
+    }
+}
+
 fn parse_text(text: &str, source: &str) -> Result<Raw> {
     let mut rows: Vec<Vec<f64>> = Vec::new();
     let (mut width, mut height, mut zunit) = (None, None, None);
@@ -260,6 +274,7 @@ fn parse_text(text: &str, source: &str) -> Result<Raw> {
         if t.is_empty() {
             continue;
         }
+        refuse_decimal_comma(t, source, i)?;
         let mut row = Vec::new();
         for tok in t
             .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
@@ -326,6 +341,7 @@ fn parse_xyz(text: &str, source: &str) -> Result<Raw> {
         if t.is_empty() || t.starts_with('#') {
             continue;
         }
+        refuse_decimal_comma(t, source, i)?;
         let mut row = Vec::with_capacity(3);
         for tok in t
             .split(|c: char| c.is_whitespace() || c == ',' || c == ';')

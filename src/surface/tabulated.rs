@@ -301,7 +301,9 @@ impl Tabulated {
     /// # Errors
     /// [`Error::Io`] when the file cannot be read; the parse errors otherwise.
     pub fn load_csv(path: &std::path::Path, q_min: Option<f64>, q_max: Option<f64>) -> Result<Self> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "", path, &e))?;
+        use crate::input::file::{read_text, MAX_INPUT_BYTES};
+        let field = crate::error::Field::Other("psd".into());
+        let text = read_text(path, "", field, MAX_INPUT_BYTES, "a PSD table as lines of q, C(q)")?;
         Tabulated::parse_csv(&text, &path.display().to_string(), q_min, q_max)
     }
 }

@@ -69,8 +69,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             doc.push('\n');
             doc.push_str(&k);
         }
-        std::fs::write(&args.output, doc)
-            .map_err(|e| Error::io_file("write", "", std::path::Path::new(&args.output), &e))?;
+        super::outfile::write_bytes("--output", std::path::Path::new(&args.output), doc.as_bytes())?;
         eprintln!("asperity bench: wrote {}", args.output);
     }
     let failed: Vec<String> = rep

@@ -220,12 +220,8 @@ pub fn run(args: &FigureArgs) -> Result<()> {
     let spec = data.chart();
     for (path, png) in [(&args.svg, false), (&args.png, true)] {
         if let Some(p) = path {
-            let r = if png {
-                chart::write_png(&spec, p)
-            } else {
-                chart::write_svg(&spec, p)
-            };
-            r.map_err(|e| Error::io_file("write", "", p, &e))?;
+            let write = if png { chart::write_png } else { chart::write_svg };
+            super::outfile::write(if png { "--png" } else { "--svg" }, p, |t| write(&spec, t))?;
             eprintln!("asperity figure: wrote {}", p.display());
         }
     }

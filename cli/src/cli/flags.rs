@@ -8,8 +8,9 @@
 //! walks the parser (`cli/tests/cli_every_flag.rs`).
 //!
 //! Files to write (`--svg`, `--png`, `--save-preset`, `--save-reference`, `--save-surface`,
-//! `--output`) are checked at the same time: their extension (the format written), that the
-//! path is not a folder, that its folder exists and that a file can be created there.
+//! `--output`) are checked at the same time: their extension (the format written), and the
+//! path as a file (`outfile`: not a folder or a device, a name the file system takes, an
+//! existing file writable, a new one creatable); they are written atomically at the end.
 
 use super::parse;
 use asperity::error::{Field, Range};
@@ -322,18 +323,24 @@ pub fn in_file(s: &str) -> Result<PathBuf, String> {
     if !p.exists() {
         return Err("an existing file (no such file)".into());
     }
-    Ok(p)
+    // a FIFO or a device is refused before anything opens it (a FIFO would block)
+    use asperity::input::file::{refusal, MAX_INPUT_BYTES};
+    match refusal(&p, MAX_INPUT_BYTES) {
+        Some(why) => Err(why),
+        None => Ok(p),
+    }
 }
 
-/// A file to write: the extension `exts` asks for, not a folder, in an existing folder where
-/// a file can be created (tried with a probe file, removed at once).
+/// A file to write: the extension `exts` asks for, not a folder, in an existing folder, and
+/// writable as a file ([`super::outfile::refusal`]: an existing one opened for appending, a
+/// new one created and removed at once; devices, FIFOs and names over 255 bytes refused).
 pub fn out_file(s: &str, exts: &[&str]) -> Result<PathBuf, String> {
     let p = PathBuf::from(s);
     let ext_ok = exts.is_empty()
         || p.extension()
             .and_then(|x| x.to_str())
             .is_some_and(|x| exts.iter().any(|e| x.eq_ignore_ascii_case(e)));
-    if s.trim().is_empty() || !ext_ok || p.is_dir() {
+    if s.trim().is_empty() || !ext_ok {
         return Err(out_allowed(exts));
     }
     let dir = match p.parent() {
@@ -343,22 +350,9 @@ pub fn out_file(s: &str, exts: &[&str]) -> Result<PathBuf, String> {
     if !dir.is_dir() {
         return Err(format!("{} (no such folder)", out_allowed(exts)));
     }
-    if !writable(&dir) {
-        return Err(format!("{} (the folder is not writable)", out_allowed(exts)));
-    }
-    Ok(p)
-}
-
-/// Whether a file can be created in `dir`.
-fn writable(dir: &Path) -> bool {
-    let probe = dir.join(format!(".asperity-probe-{}", std::process::id()));
-    match std::fs::OpenOptions::new().write(true).create_new(true).open(&probe) {
-        Ok(_) => {
-            let _ = std::fs::remove_file(&probe);
-            true
-        }
-        // a probe left by an earlier run of this process id still shows a writable folder
-        Err(e) => e.kind() == std::io::ErrorKind::AlreadyExists,
+    match super::outfile::refusal(&p) {
+        Some(why) => Err(format!("{} ({why})", out_allowed(exts))),
+        None => Ok(p),
     }
 }
 

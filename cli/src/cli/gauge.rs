@@ -83,8 +83,16 @@ pub struct GaugeArgs {
     pub save_preset: Option<PathBuf>,
 }
 
-fn read(path: &Path) -> Result<String> {
-    std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "", path, &e))
+/// Reads a reference table given to `flag` (a regular file of bounded size, UTF-8 CSV).
+fn read(path: &Path, flag: &str) -> Result<String> {
+    use asperity::input::file::{read_text, MAX_INPUT_BYTES};
+    read_text(
+        path,
+        "",
+        Field::Other(flag.trim_start_matches('-').into()),
+        MAX_INPUT_BYTES,
+        "a CSV table with a header line",
+    )
 }
 
 /// The reference and the scene it is compared on (for `gfmd`, the scene GFMD runs), with the
@@ -121,14 +129,14 @@ pub fn resolve_reference(
             let name = path
                 .file_name()
                 .map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
-            reference::parse_csv(&read(path)?, &name)?
+            reference::parse_csv(&read(path, "--reference")?, &name)?
         }
     };
     if let Some(pr) = &args.pr {
         let name = pr
             .file_name()
             .map_or(String::new(), |n| n.to_string_lossy().into_owned());
-        r.points.extend(reference::parse_pr_csv(&read(pr)?, &name)?);
+        r.points.extend(reference::parse_pr_csv(&read(pr, "--pr")?, &name)?);
     }
     if let Some(list) = &args.observables {
         let allowed = "a comma-separated list of a_r, mean_contact_stress, mean_gap_rel, pr held by the reference";
@@ -274,7 +282,7 @@ pub fn save_preset(base: &Preset, scene: &Scene, model: &Model, path: &Path) -> 
     let text = toml::to_string(&p).map_err(|e| Error::io("write preset", e))?;
     // the preset must read back as written
     Preset::parse(&text, &path.display().to_string())?;
-    std::fs::write(path, text).map_err(|e| Error::io_file("write", "", path, &e))
+    super::outfile::write_bytes("--save-preset", path, text.as_bytes())
 }
 
 fn y_of(o: Observable, p: f64, v: f64) -> f64 {
@@ -356,10 +364,10 @@ pub fn overlay(scene: &Scene, r: &Reference, models: &[(&str, Model)], what: &st
 /// Writes the chart files asked for.
 pub fn write_charts(spec: &Chart, svg: Option<&Path>, png: Option<&Path>) -> Result<()> {
     if let Some(p) = svg {
-        chart::write_svg(spec, p).map_err(|e| Error::io_file("write", "", p, &e))?;
+        super::outfile::write("--svg", p, |tmp| chart::write_svg(spec, tmp))?;
     }
     if let Some(p) = png {
-        chart::write_png(spec, p).map_err(|e| Error::io_file("write", "", p, &e))?;
+        super::outfile::write("--png", p, |tmp| chart::write_png(spec, tmp))?;
     }
     Ok(())
 }

@@ -152,11 +152,8 @@ pub fn resolve(
     steps.finish();
     let out = out?;
     if let Some(path) = &args.save_reference {
-        std::fs::write(
-            path,
-            gfmd_reference::to_csv(&out.rows, out.scene.surface_energy_j_m2() > 0.0),
-        )
-        .map_err(|e| Error::io_file("write", "", path, &e))?;
+        let csv = gfmd_reference::to_csv(&out.rows, out.scene.surface_energy_j_m2() > 0.0);
+        super::outfile::write_bytes("--save-reference", path, csv.as_bytes())?;
     }
     *scene = out.scene.clone();
     Ok(out)

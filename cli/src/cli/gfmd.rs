@@ -352,7 +352,7 @@ fn print_run(
         );
     }
     if let (Some(path), Some(s)) = (&args.save_surface, &out.surface) {
-        s.save(path)?;
+        super::outfile::write_bytes("--save-surface", path, s.to_text().as_bytes())?;
     }
     if args.format == GfmdFormat::Csv {
         emit(&single_csv(&out));

@@ -28,6 +28,7 @@ use std::io::Write;
 
 pub mod flags;
 pub mod heartbeat;
+pub mod outfile;
 pub mod parse;
 pub mod progress;
 pub mod surface;
@@ -328,6 +329,22 @@ pub const WORK_LOG_ENV: &str = "ASPERITY_WORK_LOG";
 /// tests that feed bad input: it must be refused before any work).
 pub const FORBID_WORK_ENV: &str = "ASPERITY_FORBID_WORK";
 
+/// Whether this process is an MPI rank other than 0 (by the launchers' environment: Open MPI,
+/// MPICH/PMI, PMIx, MVAPICH, Slurm): an error every rank meets alike (a bad command line) is
+/// then printed once, by rank 0; the exit code is every rank's.
+fn secondary_rank() -> bool {
+    [
+        "OMPI_COMM_WORLD_RANK",
+        "PMI_RANK",
+        "PMIX_RANK",
+        "MV2_COMM_WORLD_RANK",
+        "SLURM_PROCID",
+    ]
+    .iter()
+    .find_map(|v| std::env::var(v).ok())
+    .is_some_and(|r| r.trim() != "0")
+}
+
 fn run_cli() -> i32 {
     use clap::FromArgMatches;
     let cli = match flags::command()
@@ -347,7 +364,9 @@ fn run_cli() -> i32 {
                     0
                 };
             }
-            eprintln!("asperity: {}", clap_error_line(&e));
+            if !secondary_rank() {
+                eprintln!("asperity: {}", clap_error_line(&e));
+            }
             return 2;
         }
     };
@@ -410,7 +429,9 @@ fn run_cli() -> i32 {
         Ok(()) if unconverged => EXIT_NOT_CONVERGED,
         Ok(()) => 0,
         Err(e) => {
-            eprintln!("asperity: {}", render_error(&e));
+            if !secondary_rank() {
+                eprintln!("asperity: {}", render_error(&e));
+            }
             2
         }
     }

@@ -38,6 +38,9 @@ pub fn field_name(field: &Field) -> &str {
         Field::Other(k) if k == "fit" => "--fit",
         Field::Other(k) if k == "reference" => "--reference",
         Field::Other(k) if k == "method" => "--method",
+        Field::Other(k) if k == "psd" => "--psd",
+        Field::Other(k) if k == "preset" => "--preset",
+        Field::Other(k) if k == "pr" => "--pr",
         other => other.key(),
     }
 }
@@ -246,6 +249,14 @@ pub fn clap_error_line(e: &clap::Error) -> String {
             );
         }
     }
+    if e.kind() == clap::error::ErrorKind::ArgumentConflict {
+        if let (Some(arg), Some(prior)) = (text(ContextKind::InvalidArg), text(ContextKind::PriorArg)) {
+            if arg == prior {
+                let flag = arg.split_whitespace().next().unwrap_or(&arg).to_string();
+                return repeated_flag(&flag, &std::env::args().collect::<Vec<_>>());
+            }
+        }
+    }
     let rendered = e.to_string();
     let first = rendered.lines().next().unwrap_or("").trim();
     let first = first.strip_prefix("error: ").unwrap_or(first);
@@ -269,6 +280,28 @@ pub fn clap_error_line(e: &clap::Error) -> String {
         return format!("{first}: allowed the flags of `{cmd} --help`");
     }
     first.to_string()
+}
+
+/// The message of a flag given more than once (`args`: the command line): every flag takes
+/// one value, so a repeated one is refused (not the last taken silently), naming the values.
+pub fn repeated_flag(flag: &str, args: &[String]) -> String {
+    let with_eq = format!("{flag}=");
+    let mut values = Vec::new();
+    let mut it = args.iter().peekable();
+    while let Some(a) = it.next() {
+        if let Some(v) = a.strip_prefix(&with_eq) {
+            values.push(asperity::error::fmt_text(v));
+        } else if a == flag {
+            if let Some(v) = it.peek().filter(|v| !v.starts_with("--")) {
+                values.push(asperity::error::fmt_text(v));
+            }
+        }
+    }
+    if values.len() >= 2 {
+        format!("repeated {flag} = {}: allowed once (one value)", values.join(", "))
+    } else {
+        format!("repeated {flag}: allowed once")
+    }
 }
 
 /// A value parser for `tour --step` (its upper end depends on the tour, checked once it is

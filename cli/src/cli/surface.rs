@@ -396,12 +396,14 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
     let spec = chart(&out, &a);
     for (path, png) in [(&args.svg, false), (&args.png, true)] {
         if let Some(p) = path {
-            let r = if png {
-                crate::chart::write_png(&spec, p)
-            } else {
-                crate::chart::write_svg(&spec, p)
-            };
-            r.map_err(|e| Error::io_file("write", "", p, &e))?;
+            let flag = if png { "--png" } else { "--svg" };
+            super::outfile::write(flag, p, |tmp| {
+                if png {
+                    crate::chart::write_png(&spec, tmp)
+                } else {
+                    crate::chart::write_svg(&spec, tmp)
+                }
+            })?;
             eprintln!("asperity psd: wrote {}", p.display());
         }
     }

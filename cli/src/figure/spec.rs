@@ -271,7 +271,13 @@ impl FigureSpec {
 
     /// Reads a figure file.
     pub fn load(path: &Path) -> Result<FigureSpec> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "figure", path, &e))?;
+        let text = asperity::input::file::read_text(
+            path,
+            "figure",
+            asperity::error::Field::Other("figure".into()),
+            asperity::input::preset::MAX_TOML_BYTES,
+            "a figure file in TOML",
+        )?;
         FigureSpec::parse(&text, &path.display().to_string())
     }
 

@@ -242,7 +242,13 @@ impl Tour {
 
     /// Reads a tour file.
     pub fn load(path: &Path) -> Result<Tour> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io_file("read", "tour", path, &e))?;
+        let text = asperity::input::file::read_text(
+            path,
+            "tour",
+            asperity::error::Field::Other("tour".into()),
+            asperity::input::preset::MAX_TOML_BYTES,
+            "a tour file in TOML",
+        )?;
         Tour::parse(&text, &path.display().to_string())
     }
 
