@@ -10,17 +10,9 @@ use crate::scene::SceneCore;
 use crate::surface::{map_of, with_heights};
 use crate::value;
 use crate::work::{self, Info};
-use asperity::error::{Error, Field};
 use asperity::gfmd::{self, GfmdOptions, GfmdSetup, GridSpec, Method, Progress, Stage};
 use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
-
-/// The reduced grid of a preset without a `[gfmd]` table (as `asperity gfmd`).
-pub const DEFAULT_GRID: GridSpec = GridSpec {
-    system_size_ratio: 2.0,
-    bandwidth: 32.0,
-    points_per_short_wavelength: 8.0,
-};
 
 /// The run's setup and solver options from the arguments of `gfmd` and `gfmd_cycle`, every one
 /// checked before any work.
@@ -59,12 +51,7 @@ pub fn setup<'py>(
             "None with a given map (its own grid)",
         ));
     }
-    let method = match method {
-        "auto" => Method::Auto,
-        "pk" => Method::PolonskyKeer,
-        "fire" => Method::Fire,
-        m => return Err(errors::input(py, "method", m, "auto, pk or fire")),
-    };
+    let method = errors::guard(py, || method.parse::<Method>())?;
     let d = GfmdOptions::default();
     let opts = GfmdOptions {
         tolerance,
@@ -73,21 +60,10 @@ pub fn setup<'py>(
         method,
         ..d
     };
-    let mut spec = scene
-        .preset
-        .gfmd
-        .as_ref()
-        .map(GridSpec::from_preset)
-        .unwrap_or(DEFAULT_GRID);
     let setup = errors::guard(py, || {
         opts.validate()?;
         method.check_on(&scene.scene)?;
-        if let Some(n) = grid {
-            if n < 4 {
-                return Err(Error::invalid(Field::Grid, n as f64, "an integer N >= 4"));
-            }
-            spec = spec.with_grid(n as usize)?;
-        }
+        let spec = GridSpec::of_preset(&scene.preset, grid)?;
         Ok(GfmdSetup {
             scene: scene.scene.clone(),
             grid: spec,

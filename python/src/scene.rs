@@ -11,9 +11,9 @@
 use crate::errors;
 use crate::surface::map_of;
 use crate::value;
-use asperity::error::{Error, Field, Result};
+use asperity::error::Result;
 use asperity::input::model::{Model, ModelKind};
-use asperity::input::overrides::Overrides;
+use asperity::input::overrides::{ModelChanges, Overrides};
 use asperity::input::preset::{AdhesionSpec, LoadSpec, MaterialSpec, ModelSpec, Preset, SurfaceSpec};
 use asperity::input::scene::{Scene, ThicknessQr};
 use asperity::surface::heightmap::Surface;
@@ -180,47 +180,18 @@ impl Changes {
     }
 }
 
-/// The model after `ch`, as the CLI resolves `--model`, `--c1`.. and `--fudge-gamma`.
-fn model_of(current: Model, ch: &Changes) -> Result<Model> {
-    let mut model = current;
-    if let Some(m) = &ch.model {
-        model = match m.parse::<ModelKind>()? {
-            ModelKind::Custom => Model {
-                kind: ModelKind::Custom,
-                ..model
-            },
-            kind => Model::of_kind(kind, &model)?,
-        };
-    }
-    let custom =
-        ch.c1.is_some() || ch.c2.is_some() || ch.alpha.is_some() || ch.k_griffith.is_some() || ch.cap.is_some();
-    if custom {
-        if let Some(m) = ch.model.as_deref().filter(|m| m.trim() != "custom") {
-            return Err(Error::invalid_text(
-                Field::Model,
-                m,
-                "custom when c1, c2, alpha, k_griffith or cap are given",
-            ));
-        }
-        model = Model::custom(
-            ch.c1.unwrap_or(model.c1),
-            ch.c2.unwrap_or(model.c2),
-            ch.alpha.unwrap_or(model.alpha),
-            ch.k_griffith.unwrap_or(model.k_griffith),
-            ch.cap.unwrap_or(model.cap),
-        )?;
-    }
-    if let Some(g) = ch.fudge_gamma {
-        if !model.kind.is_fudge_variant() {
-            return Err(Error::invalid_text(
-                Field::Model,
-                model.kind.name(),
-                "yp08 or xu24 when fudge_gamma is given",
-            ));
-        }
-        model = Model::fudge(model.kind, g)?;
-    }
-    Ok(model)
+/// The changes to the model of `ch` ([`ModelChanges::apply`], as the CLI's `--model`, `--c1`..
+/// and `--fudge-gamma`).
+fn model_changes(ch: &Changes) -> Result<ModelChanges> {
+    Ok(ModelChanges {
+        kind: ch.model.as_deref().map(str::parse::<ModelKind>).transpose()?,
+        c1: ch.c1,
+        c2: ch.c2,
+        alpha: ch.alpha,
+        k_griffith: ch.k_griffith,
+        cap: ch.cap,
+        fudge_gamma: ch.fudge_gamma,
+    })
 }
 
 impl SceneCore {
@@ -243,13 +214,14 @@ impl SceneCore {
             map = None;
         }
         let o = Overrides {
-            model: Some(model_of(self.scene.model(), ch)?),
+            model_changes: model_changes(ch)?,
             pressure: ch.pressure,
             thickness_qr: ch.thickness_qr,
             surface_energy_j_m2: ch.surface_energy_j_m2,
             range_m: ch.range_m,
             contact_modulus_pa: ch.contact_modulus_pa,
             spectrum,
+            ..Overrides::default()
         };
         let scene = self.scene.apply(&o)?;
         Ok(SceneCore { preset, scene, map })
@@ -314,7 +286,7 @@ pub fn scene_new(py: Python<'_>, fields: &Bound<'_, PyDict>) -> PyResult<SceneCo
     errors::guard(py, || {
         // the surface first: its errors name its fields before anything else is checked
         let spectrum = preset.spectrum()?;
-        let model = model_of(Model::named(3)?, &ch)?;
+        let model = model_changes(&ch)?.apply(Model::named(3)?)?;
         let scene = Scene::new(
             spectrum,
             preset.material.contact_modulus_pa,

@@ -20,10 +20,9 @@ use crate::scene::SceneCore;
 use crate::value;
 use crate::work::{self, Info};
 use asperity::error::Result;
+use asperity::input::overrides::AccuracyKnobs;
 use asperity::report::sweep::{self, Over, SweepReport};
-use asperity::theory::adhesion::AdhesionAccuracy;
 use asperity::theory::engine::Options;
-use asperity::theory::persson::Accuracy;
 use asperity::theory::sweep::SweepSpec;
 use pyo3::prelude::*;
 
@@ -58,22 +57,15 @@ fn options(
     adhesion_points: Option<f64>,
     adhesion_tol: Option<f64>,
 ) -> Options {
-    let a = AdhesionAccuracy::default();
-    Options {
-        accuracy: Accuracy {
-            rtol: rtol.unwrap_or(Accuracy::default().rtol),
-            ..Accuracy::default()
-        },
-        sigma_points,
+    AccuracyKnobs {
+        sigma_points: Some(sigma_points),
         sigma_max,
-        adhesion: AdhesionAccuracy {
-            steps_per_ln_q: adhesion_steps.unwrap_or(a.steps_per_ln_q),
-            points_per_width: adhesion_points.unwrap_or(a.points_per_width),
-            tol: adhesion_tol.unwrap_or(a.tol),
-            ..a
-        },
-        ..Options::default()
+        rtol,
+        adhesion_steps,
+        adhesion_points,
+        adhesion_tol,
     }
+    .options()
 }
 
 /// `evaluate(scene, ...)`: the report of one scene at its load, as a dict with the keys of

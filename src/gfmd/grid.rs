@@ -21,6 +21,32 @@ pub struct GridSpec {
 }
 
 impl GridSpec {
+    /// The reduced grid of a preset without a `[gfmd]` table: L/λ_r = 2, λ_r/λ_s = 32,
+    /// λ_s/Δa = 8 (512²).
+    pub const DEFAULT: GridSpec = GridSpec {
+        system_size_ratio: 2.0,
+        bandwidth: 32.0,
+        points_per_short_wavelength: 8.0,
+    };
+
+    /// The grid of `preset` (its `[gfmd]` table, else [`GridSpec::DEFAULT`]), on an N×N grid
+    /// where `n` is given ([`GridSpec::with_grid`]).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming [`Field::Grid`] for N < 4 or a grid `with_grid` refuses.
+    pub fn of_preset(preset: &crate::input::preset::Preset, n: Option<i64>) -> Result<Self> {
+        let grid = preset
+            .gfmd
+            .as_ref()
+            .map(GridSpec::from_preset)
+            .unwrap_or(GridSpec::DEFAULT);
+        match n {
+            Some(n) if n < 4 => Err(Error::invalid(Field::Grid, n as f64, "an integer N >= 4")),
+            Some(n) => grid.with_grid(n as usize),
+            None => Ok(grid),
+        }
+    }
+
     /// The preset's `[gfmd]` table.
     pub fn from_preset(g: &crate::input::preset::GfmdSpec) -> Self {
         GridSpec {

@@ -24,6 +24,30 @@ pub enum Method {
     Fire,
 }
 
+/// The names of [`Method`]'s variants as front ends take them (`auto`, `pk`, `fire`).
+pub const METHOD_NAMES: [&str; 3] = ["auto", "pk", "fire"];
+
+impl std::str::FromStr for Method {
+    type Err = Error;
+
+    /// `auto`, `pk` (Polonsky–Keer) or `fire` ([`METHOD_NAMES`]).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the field `method` and the allowed names.
+    fn from_str(s: &str) -> Result<Method> {
+        match s {
+            "auto" => Ok(Method::Auto),
+            "pk" => Ok(Method::PolonskyKeer),
+            "fire" => Ok(Method::Fire),
+            other => Err(Error::invalid_text(
+                Field::Other("method".into()),
+                other,
+                crate::error::Allowed::choices(METHOD_NAMES),
+            )),
+        }
+    }
+}
+
 /// Largest grid (nodes) on which [`Method::Auto`] uses Polonsky–Keer: the largest generated
 /// grid, [`MAX_GRID`]². A measured map with more nodes relaxes with FIRE, whose memory per node
 /// is smaller.

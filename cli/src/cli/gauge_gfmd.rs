@@ -112,11 +112,7 @@ pub fn resolve(
     };
     parse::refuse_pk_on_slab(args.method == Some(MethodArg::Pk), scene)?;
     let opts = GfmdOptions {
-        method: match args.method.unwrap_or(MethodArg::Auto) {
-            MethodArg::Auto => Method::Auto,
-            MethodArg::Pk => Method::PolonskyKeer,
-            MethodArg::Fire => Method::Fire,
-        },
+        method: args.method.map_or(Method::Auto, Method::from),
         ..GfmdOptions::default()
     };
     let setup = GfmdSetup {

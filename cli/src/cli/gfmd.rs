@@ -21,12 +21,8 @@ use serde::Serialize;
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
 
-/// Default reduced grid when a preset has no `[gfmd]` table.
-pub const DEFAULT_GRID: GridSpec = GridSpec {
-    system_size_ratio: 2.0,
-    bandwidth: 32.0,
-    points_per_short_wavelength: 8.0,
-};
+/// Default reduced grid when a preset has no `[gfmd]` table (the library's).
+pub const DEFAULT_GRID: GridSpec = GridSpec::DEFAULT;
 
 /// Output formats of `gfmd`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -114,8 +110,18 @@ pub enum MethodArg {
     Fire,
 }
 
-/// Largest K of `--seeds`.
-pub const MAX_SEEDS: usize = 1000;
+impl From<MethodArg> for asperity::gfmd::Method {
+    fn from(m: MethodArg) -> Self {
+        match m {
+            MethodArg::Auto => asperity::gfmd::Method::Auto,
+            MethodArg::Pk => asperity::gfmd::Method::PolonskyKeer,
+            MethodArg::Fire => asperity::gfmd::Method::Fire,
+        }
+    }
+}
+
+/// Largest K of `--seeds` (the library's).
+pub use asperity::fit::gfmd_reference::MAX_SEEDS;
 /// Allowed λ_s/Δa of a `--ladder` rung.
 pub const LADDER_RANGE: (f64, f64) = (2.0, 256.0);
 
@@ -147,22 +153,12 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
     }
     // the --surface map (its roughness checked with its spectrum)
     let (preset, scene, surface) = args.scene.resolve_with_map(args.pressure)?;
-    let mut grid = preset.gfmd.as_ref().map(GridSpec::from_preset).unwrap_or(DEFAULT_GRID);
-    if let Some(n) = args.grid {
-        if n < 4 {
-            return Err(Error::invalid(Field::Grid, n as f64, "an integer N >= 4"));
-        }
-        grid = grid.with_grid(n as usize)?;
-    }
+    let grid = GridSpec::of_preset(&preset, args.grid)?;
     let opts = GfmdOptions {
         tolerance: args.tolerance,
         max_iterations: args.max_iterations,
         pr_bins: args.bins,
-        method: match args.method {
-            MethodArg::Auto => asperity::gfmd::Method::Auto,
-            MethodArg::Pk => asperity::gfmd::Method::PolonskyKeer,
-            MethodArg::Fire => asperity::gfmd::Method::Fire,
-        },
+        method: args.method.into(),
         ..GfmdOptions::default()
     };
     opts.validate()?;

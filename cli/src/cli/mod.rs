@@ -15,8 +15,8 @@ pub mod gfmd_mpi;
 
 use asperity::error::Field;
 use asperity::error::{Error, Result};
-use asperity::input::model::{Model, ModelKind};
-use asperity::input::overrides::Overrides;
+use asperity::input::model::ModelKind;
+use asperity::input::overrides::{AccuracyKnobs, ModelChanges, Overrides};
 use asperity::input::preset::{self, Preset};
 use asperity::input::scene::Scene;
 use asperity::input::scene::ThicknessQr;
@@ -216,50 +216,18 @@ impl SceneArgs {
     pub fn resolve_with_map(&self, pressure: Option<f64>) -> Result<(Preset, Scene, Option<Surface>)> {
         let preset = Preset::resolve(&self.preset)?;
         let scene = preset.scene()?;
-        let mut model = scene.model();
-        if let Some(m) = &self.model {
-            model = match m.parse::<ModelKind>()? {
-                ModelKind::Custom => Model {
-                    kind: ModelKind::Custom,
-                    ..model
-                },
-                kind => Model::of_kind(kind, &model)?,
-            };
-        }
-        let custom = self.c1.is_some()
-            || self.c2.is_some()
-            || self.alpha.is_some()
-            || self.k_griffith.is_some()
-            || self.cap.is_some();
-        if custom {
-            if self.model.as_deref().is_some_and(|m| m != "custom") {
-                return Err(Error::invalid_text(
-                    Field::Model,
-                    self.model.as_deref().unwrap_or(""),
-                    "custom when --c1/--c2/--alpha/--k-griffith/--cap are given",
-                ));
-            }
-            model = Model::custom(
-                self.c1.unwrap_or(model.c1),
-                self.c2.unwrap_or(model.c2),
-                self.alpha.unwrap_or(model.alpha),
-                self.k_griffith.unwrap_or(model.k_griffith),
-                self.cap.unwrap_or(model.cap),
-            )?;
-        }
-        if let Some(g) = self.fudge_gamma {
-            if !model.kind.is_fudge_variant() {
-                return Err(Error::invalid_text(
-                    Field::Model,
-                    model.kind.name(),
-                    "yp08 or xu24 when --fudge-gamma is given",
-                ));
-            }
-            model = Model::fudge(model.kind, g)?;
-        }
+        let model_changes = ModelChanges {
+            kind: self.model.as_deref().map(str::parse::<ModelKind>).transpose()?,
+            c1: self.c1,
+            c2: self.c2,
+            alpha: self.alpha,
+            k_griffith: self.k_griffith,
+            cap: self.cap,
+            fudge_gamma: self.fudge_gamma,
+        };
         let (spectrum, map) = self.surface_args(&preset)?.spectrum_and_map()?;
         let overrides = Overrides {
-            model: Some(model),
+            model_changes,
             thickness_qr: self
                 .thickness
                 .as_deref()
@@ -276,23 +244,17 @@ impl SceneArgs {
     }
 }
 
-/// The engine's options of `run` from its accuracy flags.
+/// The engine's options of `run` from its accuracy flags ([`AccuracyKnobs::options`]).
 pub fn run_options(args: &RunArgs) -> engine::Options {
-    engine::Options {
-        accuracy: Accuracy {
-            rtol: args.rtol,
-            ..Accuracy::default()
-        },
-        sigma_points: args.sigma_points,
+    AccuracyKnobs {
+        sigma_points: Some(args.sigma_points),
         sigma_max: args.sigma_max,
-        adhesion: asperity::theory::adhesion::AdhesionAccuracy {
-            steps_per_ln_q: args.adhesion_steps,
-            points_per_width: args.adhesion_points,
-            tol: args.adhesion_tol,
-            ..asperity::theory::adhesion::AdhesionAccuracy::default()
-        },
-        ..engine::Options::default()
+        rtol: Some(args.rtol),
+        adhesion_steps: Some(args.adhesion_steps),
+        adhesion_points: Some(args.adhesion_points),
+        adhesion_tol: Some(args.adhesion_tol),
     }
+    .options()
 }
 
 /// Writes a line to stdout; a closed pipe (`asperity run | head`) is not an error.
