@@ -360,6 +360,53 @@ mod tests {
     use super::*;
     use crate::input::preset::Preset;
 
+    /// Following the unloading branch reports the root the loading evaluation lists as
+    /// `unloading` (the same a_r and gap), with its own distribution: system II, model 3,
+    /// t·q_r = 0.1, γ_s = 0.1256 J/m², p* = 1e-4, inside its hysteresis window.
+    #[test]
+    fn the_unloading_branch_is_the_listed_unloading_root() {
+        use crate::input::model::Model;
+        let scene = Preset::resolve("system-2")
+            .unwrap()
+            .scene()
+            .unwrap()
+            .with_model(Model::named(3).unwrap())
+            .unwrap()
+            .with_thickness_qr(0.1)
+            .unwrap()
+            .with_surface_energy_j_m2(0.1256)
+            .unwrap()
+            .with_pressure(1e-4)
+            .unwrap();
+        let loading = point(&scene, &Options::default()).unwrap();
+        let mut o = Options::default();
+        o.adhesion.follow_unloading = true;
+        let unloading = point(&scene, &o).unwrap();
+        assert_eq!((loading.branch, unloading.branch), (Branch::Loading, Branch::Unloading));
+        let listed = loading
+            .branches
+            .iter()
+            .find(|b| b.state.branch == Branch::Unloading)
+            .expect("two stable branches at this load");
+        assert!((unloading.stats.a_r / listed.state.a_r - 1.0).abs() < 1e-6);
+        assert!(unloading.stats.a_r > 5.0 * loading.stats.a_r);
+        let (g, want) = (unloading.mean_gap_rel.unwrap(), listed.mean_gap_rel.unwrap());
+        assert!((g / want - 1.0).abs() < 1e-3, "{g} vs {want}");
+        // its own distribution: ∫Pr dσ* = a_r of the branch (trapezoid on the sampled grid)
+        let pr = &unloading.stats.pr;
+        let mass: f64 = pr
+            .sigma
+            .windows(2)
+            .zip(pr.density.windows(2))
+            .map(|(s, d)| 0.5 * (d[0] + d[1]) * (s[1] - s[0]))
+            .sum();
+        assert!(
+            (mass / unloading.stats.a_r - 1.0).abs() < 2e-2,
+            "{mass} vs {}",
+            unloading.stats.a_r
+        );
+    }
+
     #[test]
     fn an_unconverged_evaluation_says_which_check_failed() {
         let scene = Preset::resolve("system-2").unwrap().scene().unwrap();
