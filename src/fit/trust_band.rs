@@ -18,9 +18,11 @@
 //! at the load: e_c = ln(a_r theory / a_r GFMD) and s_c GFMD's relative standard error. The
 //! band's half-width in ln a_r is
 //!
-//!     B = max_c (|e_c| + [`SE_WEIGHT`]·s_c) + f,
+//! ```text
+//! B = max_c (|e_c| + SE_WEIGHT·s_c) + f,
+//! ```
 //!
-//! f the finite-size error of GFMD's reduced maps where it was measured (0 where not; the
+//! ([`SE_WEIGHT`]), f the finite-size error of GFMD's reduced maps where it was measured (0 where not; the
 //! caller adds it). The theory's a_r is then within a factor e^B of GFMD's, as far as the
 //! neighbours tell. With fewer than [`MIN_CASES`] cases no error is known: the read-out says
 //! so instead of quoting far points.
