@@ -294,7 +294,7 @@ pub fn pull_off_reference(place: Place) -> Option<PullOffReference> {
 }
 
 /// Quantile of the transfer errors taken as the band's bandwidth term.
-const TRANSFER_QUANTILE: f64 = 0.9;
+pub const TRANSFER_QUANTILE: f64 = 0.9;
 
 /// The error of reading a wider scene's error off the set's λ_r/λ_s = 16 maps: over the
 /// bandwidth set's widest rows that the 256² set also holds (adhesive system II, loading,
