@@ -85,8 +85,10 @@ fn cancel_during_the_relaxation_on_the_default_grid_ends_the_job_promptly() {
 fn cancel_in_every_later_phase_ends_the_job_promptly() {
     let s = setup(128);
     assert_prompt("the theory at p*", &s, &|p| p.phase == GfmdPhase::Theory);
+    // at the report that enters the load (reports within a phase are spaced in time, and a
+    // 128² load on an idle machine can relax before the next one): the cancel lands in it
     assert_prompt("a load of the sweep", &s, &|p| {
-        matches!(p.phase, GfmdPhase::Load { k: 1, .. }) && p.iteration >= 50
+        matches!(p.phase, GfmdPhase::Load { k: 1, .. })
     });
     assert_prompt("the theory's sweep", &s, &|p| p.phase == GfmdPhase::TheorySweep);
 }
