@@ -30,6 +30,28 @@ fn num(row: &HashMap<String, String>, key: &str) -> Option<f64> {
     row.get(key).and_then(|s| s.parse().ok())
 }
 
+/// GFMD's path on system II at the preset's γ_s, the set's 256² reduction, map `seed`.
+fn system2_path(seed: u64, spec: CycleSpec) -> asperity::gfmd::cycle::GfmdCycle {
+    let preset = Preset::resolve("system-2").unwrap();
+    let setup = GfmdSetup {
+        scene: preset.scene().unwrap(),
+        grid: GridSpec::from_preset(preset.gfmd.as_ref().unwrap())
+            .with_grid(GRID)
+            .unwrap(),
+        seed,
+        surface: None,
+        rescale: true,
+    };
+    run_cycle(
+        &setup,
+        &spec,
+        &GfmdOptions::default(),
+        &mut |_, _| {},
+        &AtomicBool::new(false),
+    )
+    .unwrap()
+}
+
 #[test]
 fn a_subset_of_the_reference_set_is_reproduced_within_its_error_bars() {
     let (t, f, seed) = ("inf", "1", 1u64);
@@ -45,32 +67,15 @@ fn a_subset_of_the_reference_set_is_reproduced_within_its_error_bars() {
     let set = table(SET);
     let set: Vec<_> = set.iter().filter(of_case).collect();
 
-    let preset = Preset::resolve("system-2").unwrap();
-    let scene = preset.scene().unwrap();
-    let grid = GridSpec::from_preset(preset.gfmd.as_ref().unwrap())
-        .with_grid(GRID)
-        .unwrap();
-    let setup = GfmdSetup {
-        scene,
-        grid,
+    let c = system2_path(
         seed,
-        surface: None,
-        rescale: true,
-    };
-    let spec = CycleSpec {
-        from: 1e-4,
-        to: 1e-2,
-        points: 7,
-        cycle: true,
-    };
-    let c = run_cycle(
-        &setup,
-        &spec,
-        &GfmdOptions::default(),
-        &mut |_, _| {},
-        &AtomicBool::new(false),
-    )
-    .unwrap();
+        CycleSpec {
+            from: 1e-4,
+            to: 1e-2,
+            points: 7,
+            cycle: true,
+        },
+    );
 
     let rows: Vec<_> = stored.iter().filter(|r| r["branch"] != "pull_off").collect();
     assert_eq!(c.rows.len(), rows.len(), "the path has as many loads as stored");
@@ -134,30 +139,15 @@ fn the_small_load_sets_smallest_loads_are_reproduced() {
         .take(4)
         .collect();
     assert_eq!(stored.len(), 4);
-    let preset = Preset::resolve("system-2").unwrap();
-    let setup = GfmdSetup {
-        scene: preset.scene().unwrap(),
-        grid: GridSpec::from_preset(preset.gfmd.as_ref().unwrap())
-            .with_grid(GRID)
-            .unwrap(),
-        seed: 1,
-        surface: None,
-        rescale: true,
-    };
-    let spec = CycleSpec {
-        from: 1e-5,
-        to: 1e-4,
-        points: 4,
-        cycle: false,
-    };
-    let c = run_cycle(
-        &setup,
-        &spec,
-        &GfmdOptions::default(),
-        &mut |_, _| {},
-        &AtomicBool::new(false),
-    )
-    .unwrap();
+    let c = system2_path(
+        1,
+        CycleSpec {
+            from: 1e-5,
+            to: 1e-4,
+            points: 4,
+            cycle: false,
+        },
+    );
     assert_eq!(c.rows.len(), 4);
     for (got, want) in c.rows.iter().zip(&stored) {
         let p = num(want, "p").unwrap();

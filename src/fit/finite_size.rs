@@ -9,7 +9,7 @@
 //! how far the set's value is from the largest system measured. The trust read-out adds it to
 //! its band where a measured case lies within reach of the scene ([`log_error`]).
 
-use super::trust_band::{coords, Place, CASE_REACH, LOAD_REACH};
+use super::trust_band::{case_distance, Place, CASE_REACH, LOAD_REACH};
 use std::sync::OnceLock;
 
 const CSV: &str = include_str!("../../data/reference/finite-size.csv");
@@ -71,11 +71,7 @@ fn parse(text: &str) -> Vec<FiniteSizePoint> {
 /// linearly in log p* between its loads (its end value within [`LOAD_REACH`] decades beyond
 /// them); None where no case was measured near the scene.
 pub fn log_error(place: Place) -> Option<f64> {
-    let (tau, ell) = coords(place.thickness_qr, place.gamma_glo);
-    let distance = |f: &FiniteSizePoint| {
-        let (t, l) = coords(f.thickness_qr, f.gamma_glo);
-        ((t - tau).powi(2) + (l - ell).powi(2)).sqrt()
-    };
+    let distance = |f: &FiniteSizePoint| case_distance(place, f.thickness_qr, f.gamma_glo);
     let nearest = points()
         .iter()
         .filter(|f| distance(f) <= CASE_REACH)

@@ -202,16 +202,15 @@ pub fn small_load_set() -> &'static [ReferencePoint] {
 pub fn combined_set() -> &'static [ReferencePoint] {
     static SET: OnceLock<Vec<ReferencePoint>> = OnceLock::new();
     SET.get_or_init(|| {
-        let small = small_load_set();
-        let held = |r: &ReferencePoint| {
-            small
-                .iter()
-                .any(|s| s.system == r.system && s.thickness_qr == r.thickness_qr && s.gamma_factor == r.gamma_factor)
-        };
-        small
+        small_load_set()
             .iter()
             .copied()
-            .chain(reference_set().iter().copied().filter(|r| !held(r)))
+            .chain(
+                reference_set()
+                    .iter()
+                    .copied()
+                    .filter(|r| !small_load_holds(r.system, r.thickness_qr, r.gamma_factor)),
+            )
             .collect()
     })
 }
@@ -237,6 +236,14 @@ pub struct ReferencePullOff {
 pub fn pull_offs() -> &'static [ReferencePullOff] {
     static SET: OnceLock<Vec<ReferencePullOff>> = OnceLock::new();
     SET.get_or_init(|| parse_pull_offs(CASES_CSV))
+}
+
+/// Whether the small-load set holds the case (system, t·q_r, γ_s factor): where it does, it
+/// stands for the 256² set's case.
+pub fn small_load_holds(system: u8, thickness_qr: f64, gamma_factor: f64) -> bool {
+    small_load_set()
+        .iter()
+        .any(|s| s.system == system && s.thickness_qr == thickness_qr && s.gamma_factor == gamma_factor)
 }
 
 /// The small-load set's cases' pull-offs (`pull-off-small-256.csv`: the cycles from p* = 10⁻⁵).

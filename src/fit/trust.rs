@@ -263,23 +263,17 @@ pub struct PullOffReference {
 /// The measured case nearest `place` within [`super::trust_band::CASE_REACH`], from the
 /// small-load set's cycles where it holds the case, else the 256² set's.
 pub fn pull_off_reference(place: Place) -> Option<PullOffReference> {
-    use super::reference_set::{pull_offs, small_load_pull_offs, ReferencePullOff};
-    use super::trust_band::{coords, CASE_REACH};
-    let small = small_load_pull_offs();
-    let held = |r: &ReferencePullOff| {
-        small
-            .iter()
-            .any(|s| s.system == r.system && s.thickness_qr == r.thickness_qr && s.gamma_factor == r.gamma_factor)
-    };
-    let (tau, ell) = coords(place.thickness_qr, place.gamma_glo);
-    small
+    use super::reference_set::{pull_offs, small_load_holds, small_load_pull_offs};
+    use super::trust_band::{case_distance, CASE_REACH};
+    small_load_pull_offs()
         .iter()
-        .chain(pull_offs().iter().filter(|r| !held(r)))
+        .chain(
+            pull_offs()
+                .iter()
+                .filter(|r| !small_load_holds(r.system, r.thickness_qr, r.gamma_factor)),
+        )
         .filter(|r| r.gamma_factor > 0.0 && r.pressure.0.is_finite())
-        .map(|r| {
-            let (t, l) = coords(r.thickness_qr, r.gamma_glo);
-            (((t - tau).powi(2) + (l - ell).powi(2)).sqrt(), r)
-        })
+        .map(|r| (case_distance(place, r.thickness_qr, r.gamma_glo), r))
         .filter(|(d, _)| *d <= CASE_REACH)
         .min_by(|a, b| a.0.total_cmp(&b.0))
         .map(|(distance, r)| PullOffReference {

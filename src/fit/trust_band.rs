@@ -64,6 +64,12 @@ impl Place {
     }
 }
 
+/// Distance of a case (t·q_r, γ̃_glo) from `place` in the coordinates of the module docs.
+pub(crate) fn case_distance(place: Place, t: f64, glo: f64) -> f64 {
+    let ((tau, ell), (ct, cl)) = (place.coords(), coords(t, glo));
+    ((ct - tau).powi(2) + (cl - ell).powi(2)).sqrt()
+}
+
 pub(crate) fn coords(t: f64, glo: f64) -> (f64, f64) {
     let glo = if glo.is_finite() { glo.max(0.0) } else { 0.0 };
     ((1.0 + 1.0 / t).log10(), (glo + GLO_FLOOR).log2())
@@ -124,13 +130,10 @@ pub type TheoryOf<'a> = dyn Fn(&ReferencePoint) -> Option<(f64, f64, u8)> + 'a;
 /// The band at `place` from `points` (any subset of the stored sets), reading the theory with
 /// `theory`.
 pub fn band(points: &[&ReferencePoint], place: Place, theory: &TheoryOf) -> Band {
-    let (tau, ell) = place.coords();
     let mut cases: Vec<CaseError> = group(points)
         .into_values()
         .filter_map(|rows| {
-            let first = rows[0];
-            let (ct, cl) = coords(first.thickness_qr, first.gamma_glo);
-            let distance = ((ct - tau).powi(2) + (cl - ell).powi(2)).sqrt();
+            let distance = case_distance(place, rows[0].thickness_qr, rows[0].gamma_glo);
             if distance > CASE_REACH {
                 return None;
             }
