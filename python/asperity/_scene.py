@@ -56,7 +56,12 @@ class Surface:
         heights and lengths in m; every format :func:`asperity.read_surface` reads back."""
         if not isinstance(path, (str, os.PathLike)):
             raise a.refuse("output", path, "a file name ending in .txt, .asc, .dat, .xyz, .npy or .gsf")
-        _native.write_surface(self.map, self.size_m, os.fspath(path))
+        try:
+            _native.write_surface(self.map, self.size_m, os.fspath(path))
+        except InputError as e:
+            # the library names the map; what is wrong is the file name given
+            allowed = e.allowed or "a file name ending in .txt, .asc, .dat, .xyz, .npy or .gsf"
+            raise a.refuse("output", os.fspath(path), allowed) from None
 
     def heights(self) -> np.ndarray:
         """Heights in m indexed [x, y] (the SurfaceTopography convention)."""
@@ -123,6 +128,16 @@ def as_map(heights: Any, size: Any, *, size_unit: float = 1.0) -> Tuple[np.ndarr
             field="heights",
             value=f"shape {arr.shape}",
             allowed="a 2-D array (rows along y)",
+        )
+    bad = np.argwhere(~np.isfinite(arr))
+    if bad.size:
+        i, j = (int(k) for k in bad[0])
+        allowed = "finite heights (fill or cut out the missing points first)"
+        raise InputError(
+            f"invalid heights = {a.fmt_value(float(arr[i, j]))} at row {i}, column {j}: allowed {allowed}",
+            field="heights",
+            value=f"{a.fmt_value(float(arr[i, j]))} at row {i}, column {j}",
+            allowed=allowed,
         )
     if size is None:
         raise InputError(

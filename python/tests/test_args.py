@@ -114,7 +114,7 @@ def cases() -> List[Case]:
     add("psd", ps, (MAP, 1e-4), {}, "periodic", FLAG)
     add("psd", ps, (MAP, 1e-4), {}, "height_unit", CHOICE)
     add("psd", ps, (MAP, 1e-4), {}, "size_unit", CHOICE)
-    add("psd", ps, (), {"size": 1e-4}, "heights", ["x", object(), np.zeros((2, 2, 2)), MAP.astype(complex), np.ma.array(MAP, mask=MAP > 0)])
+    add("psd", ps, (), {"size": 1e-4}, "heights", ["x", object(), np.zeros((2, 2, 2)), MAP.astype(complex), np.ma.array(MAP, mask=MAP > 0), np.full((4, 4), np.nan), [[0.0, math.inf], [1.0, 2.0]]])
 
     sample = str(REPO / "data" / "samples" / "map.txt")
     rs = asperity.read_surface
@@ -137,7 +137,7 @@ def cases() -> List[Case]:
         add("generate_surface", gs, (), base, k, number(key, k))
     add("generate_surface", gs, (), base, "seed", SEED)
     add("generate_surface", gs, (), base, "periodic", FLAG)
-    add("generate_surface", gs, (), base, "output", [1, object(), [b"x"]])
+    add("generate_surface", gs, (), base, "output", [1, object(), [b"x"], "/tmp/map.png", str(REPO)])
 
     ga = asperity.gauge
     add("gauge", ga, (S1,), {"points": 3}, "fit", TEXTS)
