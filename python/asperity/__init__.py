@@ -17,16 +17,30 @@ Example::
 
 Functions: :func:`evaluate`, :func:`sweep` (:func:`sweep_thickness`, :func:`sweep_gamma`),
 :func:`cycle` (the theory's load cycle through tension to pull-off), :func:`gfmd`,
-:func:`gfmd_cycle` (GFMD's), :func:`gfmd_sweep` (a one-way GFMD load sweep), :func:`psd`, :func:`read_surface`, :func:`gauge`. Errors: :class:`InputError`
-(a ValueError naming the argument, its value and the allowed range), :class:`NotConverged`,
-:class:`InternalError`. See docs/python.md in the repository.
+:func:`gfmd_cycle` (GFMD's), :func:`gfmd_sweep` (a one-way GFMD load sweep), :func:`psd`, :func:`read_surface`,
+:func:`generate_surface`, :func:`gauge`. Errors: :class:`InputError` (a ValueError naming the
+argument, its value and the allowed range), :class:`NotConverged`, :class:`InternalError`;
+warnings :class:`UnitWarning` and :class:`ResolutionWarning`. See docs/python.md in the repository.
 """
 
 from __future__ import annotations
 
 from . import _native
-from ._api import cycle, evaluate, gauge, gfmd, gfmd_cycle, gfmd_sweep, psd, read_surface, sweep, sweep_gamma, sweep_thickness
-from ._errors import InputError, InternalError, NotConverged
+from ._api import (
+    cycle,
+    evaluate,
+    gauge,
+    generate_surface,
+    gfmd,
+    gfmd_cycle,
+    gfmd_sweep,
+    psd,
+    read_surface,
+    sweep,
+    sweep_gamma,
+    sweep_thickness,
+)
+from ._errors import AsperityWarning, InputError, InternalError, NotConverged, ResolutionWarning, UnitWarning
 from ._results import CycleResult, GfmdCycleResult, GfmdResult, GfmdSweepResult, PsdResult, Report, Result, SweepResult
 from ._scene import Scene, Surface
 
@@ -45,6 +59,7 @@ __all__ = [
     "gfmd_sweep",
     "psd",
     "read_surface",
+    "generate_surface",
     "gauge",
     "Report",
     "SweepResult",
@@ -57,4 +72,7 @@ __all__ = [
     "InputError",
     "NotConverged",
     "InternalError",
+    "AsperityWarning",
+    "UnitWarning",
+    "ResolutionWarning",
 ]

@@ -13,14 +13,16 @@ from __future__ import annotations
 import io
 import math
 import os
+import warnings
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
+from . import _args as a
 from . import _native
-from ._errors import InputError
+from ._errors import InputError, ResolutionWarning, UnitWarning
 from ._results import CycleResult, GfmdCycleResult, GfmdResult, GfmdSweepResult, PsdResult, Report, Result, SweepResult
-from ._scene import Scene, Surface, as_map
+from ._scene import Scene, Surface, as_map, size_in_metres
 
 __all__ = [
     "evaluate",
@@ -30,6 +32,8 @@ __all__ = [
     "cycle",
     "gfmd",
     "gfmd_cycle",
+    "gfmd_sweep",
+    "generate_surface",
     "psd",
     "read_surface",
     "gauge",
@@ -40,8 +44,16 @@ Progress = Optional[Callable[[Dict[str, Any]], Any]]
 
 def _scene(scene: Any) -> "_native.SceneCore":
     if not isinstance(scene, Scene):
-        raise TypeError(f"expected an asperity.Scene, got {type(scene).__name__}")
+        raise TypeError(f"scene: expected an asperity.Scene, got {type(scene).__name__}")
     return scene._core
+
+
+def _opt_number(x: Any, name: str, key: str) -> Optional[float]:
+    return None if x is None else a.number(x, name, key)
+
+
+def _opt_count(x: Any, name: str, key: str) -> Optional[int]:
+    return None if x is None else a.count(x, name, key)
 
 
 def evaluate(
@@ -76,22 +88,20 @@ def evaluate(
     """
     return Report(
         _native.evaluate(
-            _scene(scene), sigma_points, sigma_max, rtol, adhesion_steps, adhesion_points, adhesion_tol, progress
+            _scene(scene),
+            a.count(sigma_points, "sigma_points", "accuracy.sigma_points"),
+            _opt_number(sigma_max, "sigma_max", "accuracy.sigma_max"),
+            _opt_number(rtol, "rtol", "accuracy.rtol"),
+            _opt_number(adhesion_steps, "adhesion_steps", "accuracy.adhesion_steps"),
+            _opt_number(adhesion_points, "adhesion_points", "accuracy.adhesion_points"),
+            _opt_number(adhesion_tol, "adhesion_tol", "accuracy.adhesion_tol"),
+            a.callback(progress),
         )
     )
 
 
 def _values(values: Any, field: str) -> List[float]:
-    try:
-        arr = np.asarray(values, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InputError(
-            f"invalid {field} = {values!r}: allowed a list of numbers",
-            field=field,
-            value=repr(values),
-            allowed="a list of numbers",
-        ) from None
-    return [float(x) for x in arr]
+    return a.numbers_list(values, field)
 
 
 _OVER = {
@@ -146,7 +156,7 @@ def sweep(
             value=repr(pressure),
             allowed="`pressures` for the loads to sweep, or the scene's pressure",
         )
-    knob = _OVER.get(over)
+    knob = _OVER.get(over) if isinstance(over, str) else None
     if knob is None:
         raise InputError(
             f"invalid over = {over!r}: allowed pressure, thickness or gamma",
@@ -156,41 +166,29 @@ def sweep(
         )
     if (pressures is None) == (values is None):
         raise TypeError("sweep() takes the values to sweep once: as `pressures` (positional) or as `values`")
-    field = {"pressure": "pressures", "thickness": "thickness_qr", "gamma": "surface_energy_j_m2"}[knob]
+    field = "pressures" if values is None else "values"
     given = pressures if values is None else values
-    return SweepResult(_native.sweep(_scene(scene), _values(given, field), knob, progress, bool(cycle)))
+    return SweepResult(
+        _native.sweep(_scene(scene), _values(given, field), knob, a.callback(progress), a.flag(cycle, "cycle"))
+    )
 
 
 def sweep_thickness(scene: Scene, thickness_qr: Any, *, progress: Progress = None) -> SweepResult:
     """:func:`sweep` over t·q_r (finite values, ascending) at the scene's p* ([S] Fig. 7)."""
-    return sweep(scene, over="thickness", values=thickness_qr, progress=progress)
+    return sweep(scene, over="thickness", values=_values(thickness_qr, "thickness_qr"), progress=progress)
 
 
 def sweep_gamma(scene: Scene, surface_energy_j_m2: Any, *, progress: Progress = None) -> SweepResult:
     """:func:`sweep` over γ_s in J/m² (ascending, from 0 allowed) at the scene's p*."""
-    return sweep(scene, over="gamma", values=surface_energy_j_m2, progress=progress)
+    return sweep(scene, over="gamma", values=_values(surface_energy_j_m2, "surface_energy_j_m2"), progress=progress)
 
 
 def _number(x: Any, field: str) -> float:
-    if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
-        raise InputError(
-            f"invalid {field} = {x!r}: allowed a number",
-            field=field,
-            value=repr(x),
-            allowed="a number",
-        )
-    return float(x)
+    return a.number(x, field)
 
 
 def _count(x: Any, field: str) -> int:
-    if isinstance(x, bool) or not isinstance(x, (int, np.integer)) or x < 1:
-        raise InputError(
-            f"invalid {field} = {x!r}: allowed a whole number >= 1",
-            field=field,
-            value=repr(x),
-            allowed="a whole number >= 1",
-        )
-    return int(x)
+    return a.count(x, field, "sweep.points")
 
 
 def cycle(scene: Scene, from_: float, to: float, *, points: int = 64, progress: Progress = None) -> CycleResult:
@@ -212,7 +210,7 @@ def cycle(scene: Scene, from_: float, to: float, *, points: int = 64, progress: 
     ``points``).
     """
     f, t, n = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
-    return CycleResult(_native.cycle(_scene(scene), f, t, n, progress))
+    return CycleResult(_native.cycle(_scene(scene), f, t, n, a.callback(progress)))
 
 
 def gfmd(
@@ -247,22 +245,60 @@ def gfmd(
     ``heights`` (the map). Raises :class:`NotConverged` when the relaxation misses its
     tolerance within ``max_iterations`` steps; Ctrl-C stops it within one step.
     """
-    arr: Optional[np.ndarray] = None
-    size_m: Optional[float] = None
+    arr, size_m = _given_map(heights, size)
+    knobs = _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale, progress)
+    d = _native.gfmd(_scene(scene), arr, size_m, *knobs)
+    _warn_resolution(d)
+    return GfmdResult(d)
+
+
+def _given_map(heights: Any, size: Any) -> "tuple[Optional[np.ndarray], Optional[float]]":
+    """The map GFMD runs on (None: generated) with its x side in m."""
     if heights is not None:
-        arr, size_m, _ = as_map(heights, size)
-    elif size is not None:
+        arr, size_m, _, _ = as_map(heights, size)
+        return arr, size_m
+    if size is not None:
         raise InputError(
-            "invalid size: allowed None without heights",
+            f"invalid size = {a.shown(size)}: allowed None without heights",
             field="size",
-            value=repr(size),
+            value=a.shown(size),
             allowed="None without heights",
         )
-    return GfmdResult(
-        _native.gfmd(
-            _scene(scene), arr, size_m, grid, seed, tolerance, max_iterations, bins, method, rescale, progress
-        )
+    return None, None
+
+
+def _gfmd_knobs(
+    grid: Any, seed: Any, tolerance: Any, max_iterations: Any, bins: Any, method: Any, rescale: Any, progress: Any
+) -> "tuple[Any, ...]":
+    """GFMD's knobs checked: (grid, seed, tolerance, max_iterations, bins, method, rescale,
+    progress), in the order of the extension's arguments."""
+    return (
+        _opt_count(grid, "grid", "gfmd.grid"),
+        a.seed(seed),
+        a.number(tolerance, "tolerance", "gfmd.tolerance"),
+        _opt_count(max_iterations, "max_iterations", "gfmd.max_iterations"),
+        _opt_count(bins, "bins", "gfmd.bins"),
+        a.choice(method, "method", ("auto", "pk", "fire")),
+        a.flag(rescale, "rescale"),
+        a.callback(progress),
     )
+
+
+def _warn_resolution(d: Mapping[str, Any], stacklevel: int = 3) -> None:
+    """The CLI's note on an under-resolved attraction, as a :class:`ResolutionWarning`:
+    (γ_s/E*)·Δa/ρ² above the library's limit on the grid GFMD ran."""
+    r = d.get("adhesion_resolution")
+    red = d.get("reduction")
+    if r is None and isinstance(red, Mapping):
+        r = red.get("adhesion_resolution")
+    limit = float(_native.ADHESION_RESOLUTION_MAX)
+    if isinstance(r, (int, float)) and r > limit:
+        warnings.warn(
+            f"(gamma/E*)*da/rho^2 = {r:.3f} > {limit:g}: the attraction is under-resolved on this grid "
+            "(docs/physics.md §6); raise points_per_short_wavelength in the preset's [gfmd] table or pass a finer grid",
+            ResolutionWarning,
+            stacklevel=stacklevel,
+        )
 
 
 def gfmd_cycle(
@@ -360,55 +396,197 @@ def _gfmd_walk(
     """The arguments of :func:`gfmd_cycle` and :func:`gfmd_sweep` checked and passed to the
     library's walk over loads."""
     f, t, n = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
-    arr: Optional[np.ndarray] = None
-    size_m: Optional[float] = None
-    if heights is not None:
-        arr, size_m, _ = as_map(heights, size)
-    elif size is not None:
-        raise InputError(
-            "invalid size: allowed None without heights",
-            field="size",
-            value=repr(size),
-            allowed="None without heights",
+    arr, size_m = _given_map(heights, size)
+    knobs = _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale, progress)
+    g, sd, tol, mi, b, m, r, cb = knobs
+    d: Dict[str, Any] = _native.gfmd_cycle(_scene(scene), f, t, n, arr, size_m, g, sd, tol, mi, b, m, r, cb, cycle)
+    _warn_resolution(d, 4)
+    return d
+
+
+#: Metres per unit of the ``height_unit`` and ``size_unit`` arguments (the readers' units).
+UNITS: Dict[str, float] = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9, "pm": 1e-12}
+
+#: The range of h_rms (m) a physical rough surface has, from an atomically flat one (0.01 nm)
+#: to a coarse one (1 cm); outside it the heights' unit is most likely not the stated one.
+PHYSICAL_RMS_HEIGHT_M = (1e-11, 1e-2)
+#: The range of the rms gradient ḡ a physical rough surface has (slopes of 0.006° to 84°);
+#: outside it the side's unit (or the heights') is most likely not the stated one.
+PHYSICAL_RMS_GRADIENT = (1e-4, 10.0)
+
+
+def _unit(x: Any, name: str) -> float:
+    return UNITS[a.choice(x, name, ("m", "mm", "um", "µm", "nm", "pm"))]
+
+
+def _warn_units(rms_height_m: Any, rms_gradient: Any, units: str, stacklevel: int = 3) -> None:
+    """A :class:`UnitWarning` (one line) when h_rms or ḡ lies outside any physical range."""
+    odd = []
+    lo, hi = PHYSICAL_RMS_HEIGHT_M
+    if isinstance(rms_height_m, float) and math.isfinite(rms_height_m) and not lo <= rms_height_m <= hi:
+        odd.append(f"h_rms = {rms_height_m:.3g} m (physical: {lo:g} to {hi:g} m)")
+    lo, hi = PHYSICAL_RMS_GRADIENT
+    if isinstance(rms_gradient, float) and math.isfinite(rms_gradient) and rms_gradient > 0 and not lo <= rms_gradient <= hi:
+        odd.append(f"rms gradient = {rms_gradient:.3g} (physical: {lo:g} to {hi:g})")
+    if odd:
+        warnings.warn(
+            f"{' and '.join(odd)} with {units}: check height_unit and size_unit", UnitWarning, stacklevel=stacklevel
         )
-    return _native.gfmd_cycle(
-        _scene(scene), f, t, n, arr, size_m, grid, seed, tolerance, max_iterations, bins, method, rescale, progress, cycle
-    )
 
 
-def psd(heights: Any, size: Optional[float] = None, *, periodic: bool = False, bins_per_decade: float = 10.0) -> PsdResult:
+def _rms(heights: np.ndarray, spacing: float) -> "tuple[float, float]":
+    """h_rms and ḡ (forward differences inside the map) of a map in m with spacing in m."""
+    h = heights - heights.mean()
+    g2 = 0.0
+    if heights.shape[1] > 1:
+        g2 += float(np.mean(np.diff(heights, axis=1) ** 2)) / spacing**2
+    if heights.shape[0] > 1:
+        g2 += float(np.mean(np.diff(heights, axis=0) ** 2)) / spacing**2
+    return float(np.sqrt(np.mean(h**2))), math.sqrt(g2)
+
+
+def psd(
+    heights: Any,
+    size: Optional[float] = None,
+    *,
+    periodic: Optional[bool] = None,
+    bins_per_decade: float = 10.0,
+    height_unit: str = "m",
+    size_unit: str = "m",
+) -> PsdResult:
     """The PSD of a height map (``asperity psd``): library ``asperity::surface::psd::analyse``.
 
-    ``heights``: a 2-D array (m, rows along y; 1-D: a line scan) with ``size`` its x side in m,
-    or a Topography-like object. A plane is removed and a Hann window applied unless
-    ``periodic``. Returns a :class:`PsdResult`: ``q`` (1/m), ``psd`` (C(q) in m⁴, isotropic 2-D
+    ``heights``: a 2-D array (rows along y; 1-D: a line scan) in ``height_unit`` ("m", "mm",
+    "um", "nm" or "pm"; default m) with ``size`` its x side in ``size_unit`` (default m;
+    1e-12 m <= size <= 1000 m, as the CLI's ``--size``), or a Topography-like object
+    (SurfaceTopography's: ``heights()``, ``physical_sizes``, ``is_periodic``). A masked array
+    is refused (fill it first: ``np.ma.filled(a, a.mean())``). A plane is removed and a Hann
+    window applied unless ``periodic`` (default: the topography's ``is_periodic``, else
+    False). Returns a :class:`PsdResult`: ``q`` (1/m), ``psd`` (C(q) in m⁴, isotropic 2-D
     [S-2]), ``rms_height_m``, ``rms_gradient`` ḡ, ``rms_curvature`` (1/m), the self-affine fit
     (``hurst``, ``rolloff_wavelength_m``, ``short_wavelength_m`` with their ranges).
+
+    Warns (:class:`UnitWarning`, one line) when h_rms or ḡ lies outside any physical range
+    for the stated units (heights in nm passed as m give h_rms ~ 1e-9 of the truth and ḡ too).
     """
-    arr, size_m, source = as_map(heights, size)
-    return PsdResult(_native.psd(arr, size_m, periodic, bins_per_decade, source))
+    hu, su = _unit(height_unit, "height_unit"), _unit(size_unit, "size_unit")
+    arr, size_m, source, topo_periodic = as_map(heights, size, size_unit=su)
+    per = topo_periodic if periodic is None else a.flag(periodic, "periodic")
+    bpd = a.number(bins_per_decade, "bins_per_decade", "psd.bins_per_decade")
+    arr = arr * hu if hu != 1.0 else arr
+    d = _native.psd(arr, size_m, bool(per), bpd, source)
+    _warn_units(d.get("rms_height_m"), d.get("rms_gradient"), f"heights in {height_unit}, size in {size_unit}")
+    return PsdResult(d)
 
 
 def read_surface(
-    path: Union[str, "os.PathLike[str]"], *, size: Optional[float] = None, height_unit: Optional[str] = None
+    path: Union[str, "os.PathLike[str]"],
+    *,
+    size: Optional[float] = None,
+    height_unit: Optional[str] = None,
+    size_unit: str = "m",
 ) -> Surface:
     """A height map from a file (.txt .asc .dat .xyz .npy .gsf; library
     ``asperity::surface::readers::read``): a :class:`Surface` (``map`` in m, rows along y;
-    ``size_m``; Topography-like ``heights()``/``physical_sizes``). ``size``: the x side in m
-    (overrides the file's); ``height_unit``: "m", "mm", "um", "nm" or "pm" where the file
-    states none."""
-    d = _native.read_surface(os.fspath(path), size, height_unit)
-    return Surface(d["heights"], d["size_m"], d["source"])
+    ``size_m``; Topography-like ``heights()``/``physical_sizes``/``is_periodic``). ``size``:
+    the x side in ``size_unit`` (default m; overrides the file's), as the CLI's ``--size``;
+    ``height_unit``: "m", "mm", "um", "nm" or "pm" where the file states none, as the CLI's
+    ``--height-unit``. Warns (:class:`UnitWarning`) when the map's h_rms or ḡ lies outside any
+    physical range for these units."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise a.refuse("path", path, "a file name (str or os.PathLike)")
+    su = _unit(size_unit, "size_unit")
+    size_m = None if size is None else size_in_metres(size, su)
+    unit = None if height_unit is None else a.choice(height_unit, "height_unit", ("m", "mm", "um", "µm", "nm", "pm"))
+    try:
+        d = _native.read_surface(os.fspath(path), size_m, unit)
+    except InputError as e:
+        if e.field != "system_size_m":
+            raise
+        # the library's map side is this function's `size`
+        raise InputError(
+            str(e).replace("system_size_m", "size", 1), field="size", value=e.value, allowed=e.allowed, key=e.key
+        ) from None
+    s = Surface(d["heights"], d["size_m"], d["source"])
+    h, g = _rms(s.map, s.spacing_m)
+    heights_in = height_unit or "the file's unit"
+    side = f"size in {size_unit}" if size is not None else "the file's size"
+    _warn_units(h, g, f"heights in {heights_in}, {side}")
+    return s
+
+
+def generate_surface(
+    *,
+    grid: int = 256,
+    system_size_m: float = 1e-4,
+    hurst: float = 0.8,
+    rolloff_wavelength_m: Optional[float] = None,
+    short_wavelength_m: Optional[float] = None,
+    rms_gradient: Optional[float] = None,
+    rms_height_m: Optional[float] = None,
+    seed: int = 1,
+    periodic: bool = True,
+    output: Union[str, "os.PathLike[str]", None] = None,
+) -> Surface:
+    """A seeded self-affine height map (``asperity surface generate``): library
+    ``asperity::surface::generate``, the generator GFMD uses (Fourier filtering with
+    deterministic amplitudes and random phases, docs/physics.md §1).
+
+    ``grid`` N (the map is N×N, 4…), ``system_size_m`` L, ``hurst`` H, ``rolloff_wavelength_m``
+    λ_r (default L/2), ``short_wavelength_m`` λ_s (default 4L/N: four points per λ_s), and
+    ``rms_gradient`` ḡ (default 1) or ``rms_height_m`` h_rms; the same ``seed`` gives the same
+    map as the CLI's on every platform. ``periodic=False`` cuts the map out of a periodic one
+    of twice the side, as a measured map would be. ``output``: also write it (.txt .asc .dat
+    .xyz .npy .gsf, by the extension; :meth:`Surface.write` does the same later).
+
+    Returns a :class:`Surface` that every function taking a map takes (:func:`psd`,
+    :func:`gfmd`, :meth:`Scene.with_surface`); ``rms_height_m`` and ``rms_gradient`` are the
+    map's own (periodic: ḡ is the requested one to round-off).
+    """
+    if rms_gradient is not None and rms_height_m is not None:
+        raise InputError(
+            "invalid rms_height_m: allowed rms_gradient or rms_height_m, not both",
+            field="rms_height_m",
+            value=a.shown(rms_height_m),
+            allowed="rms_gradient or rms_height_m, not both",
+        )
+    d = _native.generate_surface(
+        a.count(grid, "grid", "gfmd.grid"),
+        a.number(system_size_m, "system_size_m", "surface.system_size_m"),
+        a.number(hurst, "hurst", "surface.hurst"),
+        _opt_number(rolloff_wavelength_m, "rolloff_wavelength_m", "surface.rolloff_wavelength_m"),
+        _opt_number(short_wavelength_m, "short_wavelength_m", "surface.short_wavelength_m"),
+        _opt_number(rms_gradient, "rms_gradient", "surface.rms_gradient"),
+        _opt_number(rms_height_m, "rms_height_m", "surface.rms_height_m"),
+        a.seed(seed),
+        a.flag(periodic, "periodic"),
+    )
+    s = Surface(d["heights"], d["size_m"], "generated", periodic=bool(d["periodic"]))
+    s.rms_height_m = float(d["rms_height_m"])
+    s.rms_gradient = float(d["rms_gradient"])
+    if output is not None:
+        s.write(output)
+    return s
 
 
 def _csv(reference: Mapping[str, Any]) -> str:
     cols = list(reference)
-    arrays = [np.asarray(reference[c], dtype=float).ravel() for c in cols]
-    n = len(arrays[0]) if arrays else 0
+    if not cols or not all(isinstance(c, str) for c in cols):
+        raise a.refuse("reference", reference, "a mapping of column names (p, a_r, ...) to arrays")
+    arrays = [np.asarray(a.numbers_list(reference[c], "reference", missing=True), dtype=float) for c in cols]
+    n = len(arrays[0])
+    if any(len(x) != n for x in arrays):
+        lengths = ", ".join(f"{c}: {len(x)}" for c, x in zip(cols, arrays))
+        raise InputError(
+            f"invalid reference = columns of lengths {lengths}: allowed columns of one length",
+            field="reference",
+            value=f"columns of lengths {lengths}",
+            allowed="columns of one length",
+        )
     out = io.StringIO()
     out.write(",".join(cols) + "\n")
     for i in range(n):
-        out.write(",".join("" if math.isnan(a[i]) else repr(float(a[i])) for a in arrays) + "\n")
+        out.write(",".join("" if math.isnan(x[i]) else repr(float(x[i])) for x in arrays) + "\n")
     return out.getvalue()
 
 
@@ -430,18 +608,18 @@ def gauge(
     ``reference``: ``"eq18"`` (the closed form [S-18] at ``points`` loads from ``from_`` to
     ``to``, on the scene made adhesionless and semi-infinite), a CSV file, or a mapping of
     columns (``p``, ``a_r``, ``a_r_err``, ``mean_contact_stress``, ``mean_contact_stress_err``,
-    ``mean_gap_rel``, ``mean_gap_rel_err``; arrays). Returns a :class:`Result` with the keys of
-    ``asperity gauge --format json`` (``params`` with values and standard errors,
-    ``correlation``, ``chi2``, ``model``, ``start``, ...).
+    ``mean_gap_rel``, ``mean_gap_rel_err``; arrays of one length, NaN for a missing value).
+    Returns a :class:`Result` with the keys of ``asperity gauge --format json`` (``params``
+    with values and standard errors, ``correlation``, ``chi2``, ``model``, ``start``, ...).
     """
-    names = fit if isinstance(fit, str) else ",".join(fit)
-    obs = None if observables is None else list(observables)
+    names = ",".join(a.text_list(fit, "fit", "a coefficient name or a list of them (c1, c2, alpha, k_griffith, w0)"))
+    obs = None if observables is None else a.text_list(observables, "observables", "a list of a_r, mean_contact_stress, mean_gap_rel, pr")
+    f = _opt_number(from_, "from_", "load.pressure")
+    t = _opt_number(to, "to", "load.pressure")
+    n = _opt_count(points, "points", "sweep.points")
+    cb = a.callback(progress)
     if isinstance(reference, Mapping):
-        return Result(
-            _native.gauge(_scene(scene), names, "data", _csv(reference), from_, to, points, obs, progress)
-        )
-    return Result(
-        _native.gauge(
-            _scene(scene), names, os.fspath(reference), None, from_, to, points, obs, progress
-        )
-    )
+        return Result(_native.gauge(_scene(scene), names, "data", _csv(reference), f, t, n, obs, cb))
+    if not isinstance(reference, (str, os.PathLike)):
+        raise a.refuse("reference", reference, '"eq18", a CSV file or a mapping of columns')
+    return Result(_native.gauge(_scene(scene), names, os.fspath(reference), None, f, t, n, obs, cb))

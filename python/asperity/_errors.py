@@ -8,6 +8,15 @@
   names it and ``.reason`` gives the numbers.
 - :class:`InternalError` (a :class:`RuntimeError`): a bug (a Rust panic); please report it.
 
+Warnings (``warnings.warn``, one line each; filter them by category):
+
+- :class:`UnitWarning`: a map's h_rms or ḡ lies outside any physical range for the units
+  stated (heights in nm passed as m, a side in µm passed as m);
+- :class:`ResolutionWarning`: adhesive GFMD on a grid that under-resolves the attraction
+  ((γ_s/E*)·Δa/ρ² above 0.25), the CLI's note.
+
+Both are :class:`AsperityWarning` (a ``UserWarning``).
+
 A computation interrupted with Ctrl-C raises :class:`KeyboardInterrupt`; an exception raised by
 a ``progress`` callback stops the computation and propagates unchanged.
 """
@@ -16,7 +25,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-__all__ = ["InputError", "NotConverged", "InternalError"]
+__all__ = ["InputError", "NotConverged", "InternalError", "AsperityWarning", "UnitWarning", "ResolutionWarning"]
 
 
 class InputError(ValueError):
@@ -53,3 +62,17 @@ class NotConverged(RuntimeError):
 
 class InternalError(RuntimeError):
     """A Rust panic inside asperity (a bug), with its message."""
+
+
+class AsperityWarning(UserWarning):
+    """The base of asperity's warnings."""
+
+
+class UnitWarning(AsperityWarning):
+    """A map's h_rms or ḡ outside any physical range for the units stated: most likely the
+    heights or the side are in another unit (``height_unit``, ``size_unit``)."""
+
+
+class ResolutionWarning(AsperityWarning):
+    """Adhesive GFMD on a grid too coarse for the attraction's range ((γ_s/E*)·Δa/ρ² above the
+    library's limit): the contact area is then too large; refine the grid."""

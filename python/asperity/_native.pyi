@@ -99,3 +99,18 @@ def gauge(
     observables: Optional[List[str]] = ...,
     progress: Progress = ...,
 ) -> Dict[str, Any]: ...
+def generate_surface(
+    grid: int,
+    size_m: float,
+    hurst: float,
+    rolloff_wavelength_m: Optional[float],
+    short_wavelength_m: Optional[float],
+    rms_gradient: Optional[float],
+    rms_height_m: Optional[float],
+    seed: int,
+    periodic: bool,
+) -> Dict[str, Any]: ...
+def write_surface(heights: npt.NDArray[np.float64], size_m: float, path: str) -> None: ...
+def allowed(key: str, name: str) -> Optional[Dict[str, Any]]: ...
+
+ADHESION_RESOLUTION_MAX: float

@@ -13,10 +13,13 @@ from typing import Any, Dict, Optional, Tuple, Union
 
 import numpy as np
 
+import os
+
+from . import _args as a
 from . import _native
 from ._errors import InputError
 
-__all__ = ["Scene", "Surface", "as_map"]
+__all__ = ["Scene", "Surface", "as_map", "size_in_metres"]
 
 Number = Union[int, float]
 ModelArg = Union[int, str]
@@ -26,15 +29,39 @@ class Surface:
     """A height map: ``map`` (m, shape (n_y, n_x), rows along y) with x side ``size_m`` (m).
 
     It also reads as a SurfaceTopography ``Topography``: ``heights()`` has shape (n_x, n_y)
-    (index [x, y]) and ``physical_sizes`` is (L_x, L_y), so it goes wherever heights go.
+    (index [x, y]), ``physical_sizes`` is (L_x, L_y) and ``is_periodic`` says whether the map
+    is periodic, so it goes wherever heights go. A generated map
+    (:func:`asperity.generate_surface`) also has its ``rms_height_m`` and ``rms_gradient``
+    (None for others).
     """
 
-    def __init__(self, heights: Any, size_m: float, source: str = "heights") -> None:
+    def __init__(self, heights: Any, size_m: float, source: str = "heights", *, periodic: bool = False) -> None:
         self.map = np.ascontiguousarray(np.asarray(heights, dtype=float))
         if self.map.ndim == 1:
             self.map = self.map.reshape(1, -1)
         self.size_m = float(size_m)
         self.source = source
+        self.periodic = bool(periodic)
+        self.rms_height_m: Optional[float] = None
+        self.rms_gradient: Optional[float] = None
+
+    @property
+    def is_periodic(self) -> bool:
+        """Whether the map is periodic (a generated periodic map; SurfaceTopography's name)."""
+        return self.periodic
+
+    def write(self, path: Union[str, "os.PathLike[str]"]) -> None:
+        """Writes the map (library ``asperity::surface::writers``) in the format of ``path``'s
+        extension: .txt .asc .dat (a text matrix stating its side), .xyz, .npy, .gsf (f32);
+        heights and lengths in m; every format :func:`asperity.read_surface` reads back."""
+        if not isinstance(path, (str, os.PathLike)):
+            raise a.refuse("output", path, "a file name ending in .txt, .asc, .dat, .xyz, .npy or .gsf")
+        try:
+            _native.write_surface(self.map, self.size_m, os.fspath(path))
+        except InputError as e:
+            # the library names the map; what is wrong is the file name given
+            allowed = e.allowed or "a file name ending in .txt, .asc, .dat, .xyz, .npy or .gsf"
+            raise a.refuse("output", os.fspath(path), allowed) from None
 
     def heights(self) -> np.ndarray:
         """Heights in m indexed [x, y] (the SurfaceTopography convention)."""
@@ -56,28 +83,43 @@ class Surface:
         return f"Surface({nx} x {ny}, L = {self.size_m:.4g} m, source={self.source!r})"
 
 
-def as_map(heights: Any, size: Optional[float]) -> Tuple[np.ndarray, float, str]:
-    """(map (n_y, n_x) in m, x side in m, name) of a numpy array with ``size``, or of anything
-    with ``.heights()`` and ``.physical_sizes`` (a SurfaceTopography Topography: heights
-    indexed [x, y], its L_x unless ``size`` is given)."""
+def size_in_metres(size: Any, unit_m: float = 1.0, name: str = "size") -> float:
+    """A map's side given in a unit of ``unit_m`` metres, in m, in the CLI's ``--size`` range
+    (1e-12 m <= size <= 1000 m)."""
+    v = a.number(size, name) * unit_m
+    r = _native.allowed("surface.system_size_m", name)
+    if r is None or not (r["lo"] <= v <= r["hi"]):
+        allowed = r["describe"] + " (in m)" if r else "a length > 0"
+        raise a.refuse(name, size, allowed, "surface.system_size_m")
+    return v
+
+
+def as_map(heights: Any, size: Any, *, size_unit: float = 1.0) -> Tuple[np.ndarray, float, str, bool]:
+    """(map (n_y, n_x) in m, x side in m, name, periodic) of a numpy array with ``size`` (in
+    units of ``size_unit`` metres), or of anything with ``.heights()`` and ``.physical_sizes``
+    (a SurfaceTopography Topography: heights indexed [x, y], its L_x unless ``size`` is given,
+    its ``is_periodic`` where it has one). A masked array is refused: its mask would be
+    ignored."""
     source = "heights"
+    periodic = False
     if hasattr(heights, "heights") and callable(heights.heights) and hasattr(heights, "physical_sizes"):
         source = str(getattr(heights, "source", None) or type(heights).__name__)
+        periodic = bool(getattr(heights, "is_periodic", False))
         sizes = heights.physical_sizes
-        arr = np.asarray(heights.heights(), dtype=float)
+        raw = heights.heights()
+        if np.ma.isMaskedArray(raw):
+            raise _masked()
+        arr = _floats(raw)
         arr = arr.reshape(1, -1) if arr.ndim == 1 else arr.T
         if size is None:
-            size = float(sizes[0]) if isinstance(sizes, (tuple, list, np.ndarray)) else float(sizes)
+            try:
+                size = float(sizes[0]) if isinstance(sizes, (tuple, list, np.ndarray)) else float(sizes)
+            except (TypeError, ValueError, IndexError):
+                raise a.refuse("heights", heights, "physical_sizes of lengths in m") from None
     else:
-        try:
-            arr = np.asarray(heights, dtype=float)
-        except (TypeError, ValueError):
-            raise InputError(
-                f"invalid heights = {type(heights).__name__}: allowed a 2-D array of heights in m",
-                field="heights",
-                value=type(heights).__name__,
-                allowed="a 2-D array of heights in m",
-            ) from None
+        if np.ma.isMaskedArray(heights):
+            raise _masked()
+        arr = _floats(heights)
         if arr.ndim == 1:
             arr = arr.reshape(1, -1)
     if arr.ndim != 2:
@@ -87,6 +129,16 @@ def as_map(heights: Any, size: Optional[float]) -> Tuple[np.ndarray, float, str]
             value=f"shape {arr.shape}",
             allowed="a 2-D array (rows along y)",
         )
+    bad = np.argwhere(~np.isfinite(arr))
+    if bad.size:
+        i, j = (int(k) for k in bad[0])
+        allowed = "finite heights (fill or cut out the missing points first)"
+        raise InputError(
+            f"invalid heights = {a.fmt_value(float(arr[i, j]))} at row {i}, column {j}: allowed {allowed}",
+            field="heights",
+            value=f"{a.fmt_value(float(arr[i, j]))} at row {i}, column {j}",
+            allowed=allowed,
+        )
     if size is None:
         raise InputError(
             "invalid size = None: allowed the map's x side in metres (or an object with physical_sizes)",
@@ -94,7 +146,72 @@ def as_map(heights: Any, size: Optional[float]) -> Tuple[np.ndarray, float, str]
             value="None",
             allowed="the map's x side in metres",
         )
-    return np.ascontiguousarray(arr), float(size), source
+    return np.ascontiguousarray(arr), size_in_metres(size, size_unit), source, periodic
+
+
+def _floats(heights: Any) -> np.ndarray:
+    """``heights`` as an array of floats (real numbers only)."""
+    allowed = "a 2-D array of real heights"
+    if isinstance(heights, (str, bytes)) or np.iscomplexobj(heights):
+        raise a.refuse("heights", heights, allowed)
+    try:
+        return np.asarray(heights, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise a.refuse("heights", type(heights).__name__, allowed) from None
+
+
+def _masked() -> InputError:
+    allowed = "a plain array (a mask is not honoured: fill it first, e.g. np.ma.filled(a, a.mean()))"
+    return InputError(
+        f"invalid heights = a masked array: allowed {allowed}", field="heights", value="a masked array", allowed=allowed
+    )
+
+
+#: The range-table key of each number a scene takes.
+_KEYS = {
+    "system_size_m": "surface.system_size_m",
+    "rolloff_wavelength_m": "surface.rolloff_wavelength_m",
+    "short_wavelength_m": "surface.short_wavelength_m",
+    "hurst": "surface.hurst",
+    "rms_gradient": "surface.rms_gradient",
+    "rms_height_m": "surface.rms_height_m",
+    "contact_modulus_pa": "material.contact_modulus_pa",
+    "surface_energy_j_m2": "adhesion.surface_energy_j_m2",
+    "range_m": "adhesion.range_m",
+    "pressure": "load.pressure",
+    "thickness_qr": "load.thickness_qr",
+    "c1": "model.c1",
+    "c2": "model.c2",
+    "alpha": "model.alpha",
+    "k_griffith": "model.k_griffith",
+    "fudge_gamma": "model.fudge_gamma",
+}
+
+
+def _checked(fields: Dict[str, Any]) -> Dict[str, Any]:
+    """The keyword arguments of a scene, each converted by the rule of :mod:`asperity._args`
+    (numbers through the range table; ``thickness_qr`` may also be ``"inf"``; ``model`` a
+    number or a name; ``cap`` a bool); unknown names pass to the extension, which raises
+    ``TypeError`` naming them."""
+    out: Dict[str, Any] = {}
+    for k, v in fields.items():
+        if k == "thickness_qr" and isinstance(v, str):
+            out[k] = v
+        elif k in _KEYS:
+            out[k] = a.number(v, k, _KEYS[k])
+        elif k == "cap":
+            out[k] = a.flag(v, k)
+        elif k == "model":
+            if isinstance(v, (bool, np.bool_)) or not isinstance(v, (str, int, np.integer)):
+                raise a.refuse(k, v, "1, 2, 3, 4, 5, custom, yp08 or xu24")
+            out[k] = v if isinstance(v, str) else int(v)
+        else:
+            out[k] = v
+    return out
+
+
+#: The fields of :meth:`Scene.replace` that rebuild the self-affine spectrum.
+_SURFACE_FIELDS = ("system_size_m", "rolloff_wavelength_m", "short_wavelength_m", "hurst", "rms_gradient", "rms_height_m")
 
 
 class Scene:
@@ -145,7 +262,7 @@ class Scene:
         fudge_gamma: Optional[float] = None,
     ) -> None:
         fields = {k: v for k, v in locals().items() if k not in ("self", "__class__") and v is not None}
-        self._core = _native.scene_new(fields)
+        self._core = _native.scene_new(_checked(fields))
 
     @classmethod
     def _of(cls, core: "_native.SceneCore") -> "Scene":
@@ -154,11 +271,19 @@ class Scene:
         return s
 
     @classmethod
-    def preset(cls, name_or_path: str) -> "Scene":
+    def preset(cls, name_or_path: Union[str, "os.PathLike[str]"]) -> "Scene":
         """The scene of a preset: a built-in name (``"system-1"``: the adhesionless
         contact-mechanics challenge; ``"system-2"``: the adhesive thin-slab system of [S] Figs.
-        7-8), ``presets/NAME.toml`` under the working directory, or a TOML file's path."""
-        return cls._of(_native.scene_from_preset(str(name_or_path)))
+        7-8), ``presets/NAME.toml`` under the working directory, or a TOML file's path.
+
+        An explorer export reopens as the panel showed it, as ``asperity run --preset`` reads
+        it: ``[load] branch = "unloading"`` makes :func:`asperity.evaluate` report the
+        unloading branch inside a hysteresis window, and a ``[measured]`` section puts the scene
+        on that map's PSD (its ``size_m``, ``height_unit``, ``periodic``, q range) or PSD
+        table, so :func:`asperity.gfmd` runs on the map."""
+        if not isinstance(name_or_path, (str, os.PathLike)):
+            raise a.refuse("name_or_path", name_or_path, "a preset name or a TOML file's path")
+        return cls._of(_native.scene_from_preset(os.fspath(name_or_path)))
 
     def replace(
         self,
@@ -188,23 +313,41 @@ class Scene:
 
         Raises :class:`asperity.InputError` naming the first value out of its range."""
         fields = {k: v for k, v in locals().items() if k not in ("self", "__class__") and v is not None}
-        return Scene._of(self._core.replace(fields))
+        surface = [k for k in _SURFACE_FIELDS if k in fields]
+        if surface and self._core.fields().get("spectrum") == "tabulated":
+            k = surface[0]
+            allowed = (
+                "no surface field on a scene with a measured PSD (it would be dropped): to keep the measured "
+                "surface leave the surface fields out; for a self-affine surface start from Scene.preset(...) "
+                "or Scene(...) instead"
+            )
+            raise InputError(
+                f"invalid {k} = {a.shown(fields[k])}: allowed {allowed}",
+                field=k,
+                value=a.shown(fields[k]),
+                allowed=allowed,
+            )
+        return Scene._of(self._core.replace(_checked(fields)))
 
     def with_surface(
         self,
         heights: Any,
         size: Optional[float] = None,
         *,
-        periodic: bool = False,
+        periodic: Optional[bool] = None,
         qmin: Optional[float] = None,
         qmax: Optional[float] = None,
     ) -> "Scene":
         """A copy whose spectrum is a measured map's PSD (the radial average [S-2], as
         ``--surface FILE`` gives it; a plane fit and a Hann window unless ``periodic``), cut to
         [qmin, qmax] (1/m). ``heights``: a 2-D array (m, rows along y) with ``size`` its x side
-        in m, or a Topography-like object. :func:`asperity.gfmd` then runs on this map."""
-        arr, l, source = as_map(heights, size)
-        return Scene._of(self._core.with_map(arr, l, periodic, qmin, qmax, source))
+        in m, or a Topography-like object (its ``is_periodic`` unless ``periodic`` is given).
+        :func:`asperity.gfmd` then runs on this map."""
+        arr, l, source, topo_periodic = as_map(heights, size)
+        per = topo_periodic if periodic is None else a.flag(periodic, "periodic")
+        q_lo = None if qmin is None else a.number(qmin, "qmin", allowed="a wave number > 0 in 1/m")
+        q_hi = None if qmax is None else a.number(qmax, "qmax", allowed="a wave number > 0 in 1/m")
+        return Scene._of(self._core.with_map(arr, l, per, q_lo, q_hi, source))
 
     def summary(self) -> Dict[str, Any]:
         """The resolved inputs: the ``scene`` object of ``asperity run --format json``

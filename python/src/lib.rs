@@ -10,16 +10,21 @@
 //!   `cycle` (the theory's path along a load cycle);
 //! - [`gfmd`]: one GFMD run on a generated or given map; [`gfmd_cycle`]: GFMD's load cycle
 //!   through tension to pull-off;
-//! - [`surface`]: `read_surface`, `psd`;
+//! - [`surface`]: `read_surface`, `psd`; [`generate`]: `generate_surface`, `write_surface`;
+//!   [`measured`]: a preset's `[measured]` section;
+//! - [`args`]: the library's range table for the Python side of every argument;
 //! - [`gauge`]: fitting the custom model to a reference;
 //! - [`work`]: long work off the GIL, cancelled by Ctrl-C;
 //! - [`errors`]: the library's typed errors as Python exceptions; [`value`]: serde values as
 //!   Python objects.
 
+pub mod args;
 pub mod errors;
 pub mod gauge;
+pub mod generate;
 pub mod gfmd;
 pub mod gfmd_cycle;
+pub mod measured;
 pub mod scene;
 pub mod surface;
 pub mod theory;
@@ -79,6 +84,13 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(surface::read_surface, m)?)?;
     m.add_function(wrap_pyfunction!(surface::map_psd, m)?)?;
     m.add_function(wrap_pyfunction!(gauge::run_gauge, m)?)?;
+    m.add_function(wrap_pyfunction!(generate::generate_surface, m)?)?;
+    m.add_function(wrap_pyfunction!(generate::write_surface, m)?)?;
+    m.add_function(wrap_pyfunction!(args::allowed, m)?)?;
+    m.add(
+        "ADHESION_RESOLUTION_MAX",
+        asperity::gfmd::reduction::ADHESION_RESOLUTION_MAX,
+    )?;
     m.add_function(wrap_pyfunction!(_panic, m)?)?;
     m.add_function(wrap_pyfunction!(_sleep, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

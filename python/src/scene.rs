@@ -228,13 +228,15 @@ impl SceneCore {
     }
 }
 
-/// `Scene.preset(name_or_path)`: a built-in preset, `presets/NAME.toml` or a TOML file.
+/// `Scene.preset(name_or_path)`: a built-in preset, `presets/NAME.toml` or a TOML file (with
+/// its `[measured]` surface, [`crate::measured`]).
 #[pyfunction]
 pub fn scene_from_preset(py: Python<'_>, name_or_path: &str) -> PyResult<SceneCore> {
     errors::guard(py, || {
         let preset = Preset::resolve(name_or_path)?;
         let scene = preset.scene()?;
-        Ok(SceneCore {
+        // an export's measured surface, read as `run --preset` reads it
+        crate::measured::apply(SceneCore {
             preset,
             scene,
             map: None,

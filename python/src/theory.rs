@@ -92,6 +92,10 @@ pub fn evaluate<'py>(
         adhesion_points,
         adhesion_tol,
     );
+    let mut opts = opts;
+    // a scene exported on the unloading branch (`[load] branch = "unloading"`) reports it, as
+    // `asperity run --preset` does
+    opts.adhesion.follow_unloading = scene.preset.follows_unloading();
     let s = scene.scene.clone();
     let report = work::run(py, progress.as_ref(), move |_| asperity::report::point(&s, &opts))?;
     value::ser_with_preset(py, &scene.preset.name, &report)

@@ -32,7 +32,7 @@ TABLE = [
     ("rolloff_wavelength_m", 1.0, "rolloff_wavelength_m", "allowed 0 < rolloff_wavelength_m <= system_size_m"),
     ("short_wavelength_m", 0.0, "short_wavelength_m", "allowed 1e-12 <= short_wavelength_m <= 1000"),
     ("hurst", 1.5, "hurst", "allowed 0.001 <= hurst <= 1"),
-    ("hurst", "abc", "hurst", "allowed a number"),
+    ("hurst", "abc", "hurst", "allowed 0.001 <= hurst <= 1"),
     ("rms_gradient", -2.0, "rms_gradient", "allowed 1e-6 <= rms_gradient <= 100"),
     ("rms_height_m", -1.0, "rms_height_m", "allowed 1e-15 <= rms_height_m <= 1000"),
     ("contact_modulus_pa", 0.0, "contact_modulus_pa", "allowed 0.001 <= contact_modulus_pa <= 1e15"),

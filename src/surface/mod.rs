@@ -1,6 +1,7 @@
 //! The rough surface: its height spectrum C(q) and random height maps drawn from it.
 
 pub mod fit;
+pub mod generate;
 pub mod heightmap;
 pub mod psd;
 pub mod ranges;

@@ -11,13 +11,14 @@
 //!
 //! The map is periodic and its discrete rms gradient ḡ equals `--rms-gradient` (or its h_rms
 //! equals `--rms-height`) to round-off. `--non-periodic` cuts the N×N map out of a 2N×2N
-//! periodic one of twice the side (the same spectrum, normalised as above), as a measured map
-//! would be: the window's own h_rms and ḡ (by differences inside it) are printed, not forced.
+//! periodic one of twice the side, as a measured map would be
+//! ([`asperity::surface::generate`], shared with Python's `generate_surface`): the window's
+//! own h_rms and ḡ (by differences inside it) are printed, not forced.
 
 use super::emit;
 use asperity::error::{Error, Field, Result};
-use asperity::surface::heightmap::{self, Surface};
-use asperity::surface::spectrum::{Normalisation, SelfAffine};
+use asperity::surface::generate::{window_rms_gradient, MapRequest};
+use asperity::surface::heightmap::Surface;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::path::PathBuf;
@@ -108,26 +109,19 @@ pub struct GenerateOutput {
     pub elapsed_s: f64,
 }
 
-/// The spectrum the flags ask for, on a map of side `l` (the window's or the parent's).
-fn spectrum(args: &SurfaceCmdArgs, l: f64) -> Result<SelfAffine> {
-    let n = args.grid as f64;
-    let lambda_r = args.rolloff_wavelength.unwrap_or(args.size / 2.0);
-    let lambda_s = args.short_wavelength.unwrap_or(4.0 * args.size / n);
-    let norm = match args.rms_height {
-        Some(h) => Normalisation::RmsHeight(h),
-        None => Normalisation::RmsGradient(args.rms_gradient.unwrap_or(1.0)),
-    };
-    SelfAffine::new(l, lambda_r, lambda_s, args.hurst, norm)
-}
-
-/// Rescales the periodic map `s` so that its h_rms or ḡ is the requested one.
-fn normalise(args: &SurfaceCmdArgs, s: Surface) -> Result<Surface> {
-    let factor = match args.rms_height {
-        Some(h) => h / s.rms_height(),
-        None => args.rms_gradient.unwrap_or(1.0) / s.rms_gradient(),
-    };
-    let heights = s.heights.iter().map(|h| h * factor).collect();
-    Surface::new(s.nx, s.ny, s.spacing, heights)
+/// The library's request of these flags.
+fn request(args: &SurfaceCmdArgs) -> MapRequest {
+    MapRequest {
+        grid: args.grid,
+        size: args.size,
+        hurst: args.hurst,
+        rolloff_wavelength: args.rolloff_wavelength,
+        short_wavelength: args.short_wavelength,
+        rms_gradient: args.rms_gradient,
+        rms_height: args.rms_height,
+        seed: args.seed,
+        periodic: !args.non_periodic,
+    }
 }
 
 /// The library's fields in this command's flags.
@@ -154,43 +148,7 @@ fn flag_names(e: Error) -> Error {
 
 /// The map the flags ask for (see the module docs).
 pub fn make(args: &SurfaceCmdArgs) -> Result<Surface> {
-    if !(4..=heightmap::MAX_GRID as i64).contains(&args.grid) {
-        return Err(Error::invalid(
-            Field::Grid,
-            args.grid as f64,
-            format!("4 <= N <= {}", heightmap::MAX_GRID),
-        ));
-    }
-    let n = args.grid as usize;
-    // the spectrum is checked on the map's own side first, so that its errors name the
-    // lengths as given
-    let spec = spectrum(args, args.size).map_err(flag_names)?;
-    if !args.non_periodic {
-        return normalise(args, heightmap::generate(&spec, n, args.seed)?);
-    }
-    let wide = spectrum(args, 2.0 * args.size).map_err(flag_names)?;
-    let parent = normalise(args, heightmap::generate(&wide, 2 * n, args.seed)?)?;
-    let heights: Vec<f64> = (0..n)
-        .flat_map(|i| parent.heights[i * 2 * n..i * 2 * n + n].iter().copied())
-        .collect();
-    let mean = heights.iter().sum::<f64>() / (n * n) as f64;
-    Surface::new(n, n, parent.spacing, heights.iter().map(|h| h - mean).collect())
-}
-
-/// The rms gradient of a map that is not periodic: forward differences inside the window
-/// (the spectral ḡ would count the jump across its edges).
-fn window_rms_gradient(s: &Surface) -> f64 {
-    let (nx, ny, h) = (s.nx, s.ny, &s.heights);
-    let (mut sum, mut count) = (0.0, 0usize);
-    for i in 0..ny - 1 {
-        for j in 0..nx - 1 {
-            let dx = (h[i * nx + j + 1] - h[i * nx + j]) / s.spacing;
-            let dy = (h[(i + 1) * nx + j] - h[i * nx + j]) / s.spacing;
-            sum += dx * dx + dy * dy;
-            count += 1;
-        }
-    }
-    (sum / count as f64).sqrt()
+    request(args).make().map_err(flag_names)
 }
 
 /// Runs `asperity surface generate`.
@@ -198,7 +156,7 @@ pub fn run(args: &SurfaceCmdArgs) -> Result<()> {
     let start = std::time::Instant::now();
     let s = make(args)?;
     asperity::surface::writers::write(&s, &args.output)?;
-    let spec = spectrum(args, args.size).map_err(flag_names)?;
+    let spec = request(args).spectrum(args.size).map_err(flag_names)?;
     let out = GenerateOutput {
         file: args.output.display().to_string(),
         grid: s.nx,
