@@ -425,3 +425,6 @@ pub const GENERATED_NORM_F32_REL: f64 = 1e-5;
 /// H (absolute): the generator's amplitudes are the PSD's own (no scatter, only random phases),
 /// so the fit recovers H to the bins' discretisation (7e-4 measured at 128², λ_r/λ_s = 16).
 pub const GENERATED_HURST_ABS: f64 = 0.01;
+/// h_rms and ḡ of a periodic single-mode cosine map reported by `report::psd` against A/√2 and
+/// A·k/√2 (relative): one mode on its own grid, no window, so the sums are exact to round-off.
+pub const REPORT_PSD_MOMENT_REL: f64 = 1e-10;
