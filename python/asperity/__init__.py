@@ -17,7 +17,7 @@ Example::
 
 Functions: :func:`evaluate`, :func:`sweep` (:func:`sweep_thickness`, :func:`sweep_gamma`),
 :func:`cycle` (the theory's load cycle through tension to pull-off), :func:`gfmd`,
-:func:`gfmd_cycle` (GFMD's), :func:`gfmd_sweep` (a one-way GFMD load sweep), :func:`psd`, :func:`read_surface`, :func:`gauge`. Errors: :class:`InputError`
+:func:`gfmd_cycle` (GFMD's), :func:`gfmd_sweep` (a one-way GFMD load sweep), :func:`psd`, :func:`read_surface`, :func:`gauge`. Errors (each an :class:`AsperityError`): :class:`InputError`
 (a ValueError naming the argument, its value and the allowed range), :class:`NotConverged`,
 :class:`InternalError`. See docs/python.md in the repository.
 """
@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from . import _native
 from ._api import cycle, evaluate, gauge, gfmd, gfmd_cycle, gfmd_sweep, psd, read_surface, sweep, sweep_gamma, sweep_thickness
-from ._errors import InputError, InternalError, NotConverged
+from ._errors import AsperityError, InputError, InternalError, NotConverged
 from ._results import CycleResult, GfmdCycleResult, GfmdResult, GfmdSweepResult, PsdResult, Report, Result, SweepResult
 from ._scene import Scene, Surface
 
@@ -54,6 +54,7 @@ __all__ = [
     "GfmdCycleResult",
     "GfmdSweepResult",
     "Result",
+    "AsperityError",
     "InputError",
     "NotConverged",
     "InternalError",

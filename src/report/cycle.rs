@@ -16,16 +16,6 @@ use crate::theory::sweep::SweepSpec;
 
 pub use crate::theory::cycle::{PathBranch, TheoryCycle as CycleReport, TheoryPathRow as CycleRow};
 
-/// The columns of a cycle's rows as `sweep --cycle --format csv` writes them.
-pub const CYCLE_CSV_COLUMNS: [&str; 6] = [
-    "branch",
-    "p",
-    "a_r",
-    "mean_gap_rel",
-    "mean_contact_stress",
-    "on_unloading_branch",
-];
-
 /// The theory's path along the load cycle of `scene` over `loads` (module docs); `preset`
 /// names the scene's preset in the sweep it runs on.
 ///

@@ -12,7 +12,7 @@
 //! σ̄_c*; the mean gap is not defined there), none beyond the theory's own pull-off.
 //!
 //! Serialised field names are those of `asperity gfmd --format json` and the CSV columns of
-//! [`GFMD_CSV_COLUMNS`] (a public interface).
+//! `gfmd --format csv` (a public interface).
 
 use crate::error::{Error, Field, Result};
 use crate::gfmd::cycle::{GfmdCycle, PathBranch};
@@ -25,29 +25,9 @@ use crate::surface::heightmap::Surface;
 use crate::theory::cycle::TheoryPathRow;
 use serde::Serialize;
 
-pub use crate::fit::gfmd_reference::MAX_SEEDS;
-
-/// Allowed λ_s/Δa of a resolution ladder's rung.
-pub const LADDER_RANGE: (f64, f64) = (2.0, 256.0);
+pub use crate::fit::gfmd_reference::{check_ladder, check_seeds, LADDER_RANGE, MAX_SEEDS};
 /// The default resolution ladder (λ_s/Δa of each rung).
 pub const DEFAULT_LADDER: [f64; 3] = [4.0, 8.0, 16.0];
-/// The columns of `gfmd --format csv` (single runs and sweeps; a cycle adds `branch`).
-pub const GFMD_CSV_COLUMNS: [&str; 13] = [
-    "p",
-    "a_r",
-    "mean_gap_rel",
-    "mean_gap",
-    "mean_contact_stress",
-    "elastic_energy",
-    "converged",
-    "contact_stress_variance",
-    "iterations",
-    "residual",
-    "theory_a_r",
-    "theory_mean_gap_rel",
-    "theory_mean_contact_stress",
-];
-
 /// What a GFMD run is asked for, each knob's default that of `asperity gfmd`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GfmdSpec {
@@ -119,13 +99,7 @@ impl GfmdSpec {
         let opts = self.options();
         opts.validate()?;
         self.method.check_on(scene)?;
-        if !(1..=MAX_SEEDS).contains(&self.seeds) {
-            return Err(Error::invalid(
-                Field::Seeds,
-                self.seeds as f64,
-                format!("1 <= seeds <= {MAX_SEEDS}"),
-            ));
-        }
+        check_seeds(self.seeds)?;
         if let Some(ladder) = &self.ladder {
             check_ladder(ladder)?;
         }
@@ -140,32 +114,6 @@ impl GfmdSpec {
     }
 }
 
-/// Checks a resolution ladder: every rung in [`LADDER_RANGE`], two or more distinct.
-///
-/// # Errors
-/// [`Error::Invalid`] naming [`Field::Ladder`].
-pub fn check_ladder(ladder: &[f64]) -> Result<()> {
-    let (lo, hi) = LADDER_RANGE;
-    if let Some(&bad) = ladder.iter().find(|&&x| !(x >= lo && x <= hi)) {
-        return Err(Error::invalid(
-            Field::Ladder,
-            bad,
-            format!("{lo} <= lambda_s/da <= {hi} at every rung"),
-        ));
-    }
-    let mut distinct = ladder.to_vec();
-    distinct.sort_by(f64::total_cmp);
-    distinct.dedup();
-    if distinct.len() < 2 {
-        return Err(Error::invalid_text(
-            Field::Ladder,
-            format!("{} distinct rung(s)", distinct.len()),
-            "two or more distinct lambda_s/da",
-        ));
-    }
-    Ok(())
-}
-
 /// A single run with its study: the object of `gfmd --extrapolate` / `--seeds K`.
 #[derive(Debug, Serialize)]
 pub struct GfmdStudy {
@@ -178,7 +126,7 @@ pub struct GfmdStudy {
     pub ensemble: Option<Ensemble>,
 }
 
-/// One row of `gfmd --format csv` ([`GFMD_CSV_COLUMNS`]): GFMD's measurements at one load
+/// One row of `gfmd --format csv`: GFMD's measurements at one load
 /// (a value not measured is NaN, an empty cell), then the theory's at that load (None where
 /// it has none).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
