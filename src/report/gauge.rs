@@ -4,7 +4,7 @@
 //! fitted values with their standard errors and correlations, the residuals per observable,
 //! χ², and the preset written (where one was).
 //!
-//! The reference is assembled here for every front end ([`reference`]):
+//! The reference is assembled here for every front end ([`reference()`]):
 //! - `eq18`: the closed form [S-18] over log-spaced loads ([`EQ18_LOADS`] by default), fitted
 //!   on the scene made adhesionless and semi-infinite, the only case it describes;
 //! - a CSV table (given as text, or a file read with a bounded size), compared on the scene as
