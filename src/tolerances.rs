@@ -432,3 +432,6 @@ pub const SMALL_LOAD_A_R_TARGET: f64 = 0.30;
 /// A W(0) scan point recomputed against the stored scan (`data/reference/w0-small-loads.csv`,
 /// five significant digits of e_a): absolute in e_a.
 pub const W0_SCAN_REPRODUCED_ABS: f64 = 1e-4;
+/// h_rms and ḡ of a periodic single-mode cosine map reported by `report::psd` against A/√2 and
+/// A·k/√2 (relative): one mode on its own grid, no window, so the sums are exact to round-off.
+pub const REPORT_PSD_MOMENT_REL: f64 = 1e-10;

@@ -18,8 +18,9 @@ Example::
 Functions: :func:`evaluate`, :func:`sweep` (:func:`sweep_thickness`, :func:`sweep_gamma`),
 :func:`cycle` (the theory's load cycle through tension to pull-off), :func:`gfmd`,
 :func:`gfmd_cycle` (GFMD's), :func:`gfmd_sweep` (a one-way GFMD load sweep), :func:`psd`, :func:`read_surface`,
-:func:`generate_surface`, :func:`gauge`. Errors: :class:`InputError` (a ValueError naming the
-argument, its value and the allowed range), :class:`NotConverged`, :class:`InternalError`;
+:func:`generate_surface`, :func:`gauge`. Errors (each an :class:`AsperityError`): :class:`InputError`
+(a ValueError naming the argument, its value and the allowed range), :class:`NotConverged`,
+:class:`InternalError`;
 warnings :class:`UnitWarning` and :class:`ResolutionWarning`. See docs/python.md in the repository.
 """
 
@@ -40,7 +41,7 @@ from ._api import (
     sweep_gamma,
     sweep_thickness,
 )
-from ._errors import AsperityWarning, InputError, InternalError, NotConverged, ResolutionWarning, UnitWarning
+from ._errors import AsperityError, AsperityWarning, InputError, InternalError, NotConverged, ResolutionWarning, UnitWarning
 from ._results import CycleResult, GfmdCycleResult, GfmdResult, GfmdSweepResult, PsdResult, Report, Result, SweepResult
 from ._scene import Scene, Surface
 
@@ -69,6 +70,7 @@ __all__ = [
     "GfmdCycleResult",
     "GfmdSweepResult",
     "Result",
+    "AsperityError",
     "InputError",
     "NotConverged",
     "InternalError",

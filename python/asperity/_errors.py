@@ -1,4 +1,6 @@
-"""The exceptions of asperity: the library's typed errors, raised by every function.
+"""The exceptions of asperity: the library's typed errors, raised by every function. Each is an
+:class:`AsperityError` (``except asperity.AsperityError`` catches them all) and the standard
+exception it stands for:
 
 - :class:`InputError` (a :class:`ValueError`): bad input, raised before any work starts. It
   names the argument (``.field``, the keyword of :class:`asperity.Scene` or of the function),
@@ -25,10 +27,14 @@ from __future__ import annotations
 
 from typing import Optional
 
-__all__ = ["InputError", "NotConverged", "InternalError", "AsperityWarning", "UnitWarning", "ResolutionWarning"]
+__all__ = ["AsperityError", "InputError", "NotConverged", "InternalError", "AsperityWarning", "UnitWarning", "ResolutionWarning"]
 
 
-class InputError(ValueError):
+class AsperityError(Exception):
+    """The base of every error asperity raises."""
+
+
+class InputError(AsperityError, ValueError):
     """Bad input: ``field`` (the argument's name), ``value`` (as given), ``allowed`` (in words).
 
     ``key`` is the library's canonical key of the field (the preset's dotted path, e.g.
@@ -51,7 +57,7 @@ class InputError(ValueError):
         self.key = key
 
 
-class NotConverged(RuntimeError):
+class NotConverged(AsperityError, RuntimeError):
     """A numerical method did not reach its tolerance: ``solver`` and ``reason``."""
 
     def __init__(self, message: str, solver: Optional[str] = None, reason: Optional[str] = None) -> None:
@@ -60,7 +66,7 @@ class NotConverged(RuntimeError):
         self.reason = reason
 
 
-class InternalError(RuntimeError):
+class InternalError(AsperityError, RuntimeError):
     """A Rust panic inside asperity (a bug), with its message."""
 
 

@@ -3,14 +3,16 @@
 Every result holds the plain dict the library produced (``to_dict()``: the keys and numbers of
 ``asperity run|sweep|gfmd|psd --format json``, JSON-serialisable, unavailable values None) and
 reads it as attributes: a nested object becomes a result (``report.pr.sigma``), a list of
-numbers a numpy array (None becomes NaN), a list of objects a list of results.
+numbers a numpy array (None becomes NaN), a list of objects a list of results. Each attribute is
+built once and kept (``r.pr.sigma is r.pr.sigma``); its arrays are read-only, so that the one
+kept cannot be changed by a caller (``np.array(r.a_r)`` gives a copy to write to).
 """
 
 from __future__ import annotations
 
 import copy
 import math
-from typing import Any, Dict, Iterator, List, Optional, Tuple
+from typing import Any, Callable, Dict, Iterator, List, Optional, Tuple
 
 import numpy as np
 
@@ -36,6 +38,18 @@ def _wrap(v: Any) -> Any:
     return v
 
 
+def _memo(obj: Any, name: str, make: Callable[[], Any]) -> Any:
+    """The attribute `name` of the result `obj`, made by `make` on first reading and kept (its
+    arrays read-only)."""
+    cache: Dict[str, Any] = obj.__dict__.setdefault("_memo", {})
+    if name not in cache:
+        v = make()
+        if isinstance(v, np.ndarray):
+            v.flags.writeable = False
+        cache[name] = v
+    return cache[name]
+
+
 def _column(rows: List[Dict[str, Any]], name: str) -> Optional[np.ndarray]:
     """The column `name` of `rows` as an array (bools: bool, strings: str, numbers: float with
     None as NaN); None where the rows have no such key."""
@@ -46,6 +60,14 @@ def _column(rows: List[Dict[str, Any]], name: str) -> Optional[np.ndarray]:
         return np.array(col, dtype=bool)
     if all(isinstance(x, str) for x in col):
         return np.array(col, dtype=str)
+    return np.array([math.nan if x is None else x for x in col], dtype=float)
+
+
+def _sweep_column(rows: List[Dict[str, Any]], name: str) -> np.ndarray:
+    """A sweep's column: bools as bool, anything else as float with None as NaN."""
+    col = [r[name] for r in rows]
+    if all(isinstance(x, bool) for x in col):
+        return np.array(col, dtype=bool)
     return np.array([math.nan if x is None else x for x in col], dtype=float)
 
 
@@ -65,10 +87,9 @@ class Result:
 
     def __getattr__(self, name: str) -> Any:
         data = object.__getattribute__(self, "_data")
-        try:
-            return _wrap(data[name])
-        except KeyError:
-            raise AttributeError(f"{type(self).__name__} has no field {name!r} (fields: {', '.join(sorted(data))})") from None
+        if name not in data:
+            raise AttributeError(f"{type(self).__name__} has no field {name!r} (fields: {', '.join(sorted(data))})")
+        return _memo(self, name, lambda: _wrap(data[name]))
 
     def __getitem__(self, key: str) -> Any:
         return self._data[key]
@@ -118,6 +139,29 @@ class Report(Result):
     - ``scene`` (the resolved inputs), ``resolution`` (a_r(q)).
     """
 
+    # the fields' types for a type checker; at run time they are read from the dict
+    preset: str
+    a_r: float
+    mean_contact_stress: float
+    contact_stress_variance: float
+    pr: Result
+    converged: bool
+    error_estimate: float
+    mean_gap: Optional[float]
+    mean_gap_rel: Optional[float]
+    mean_gap_lower_rel: Optional[float]
+    mean_gap_upper_rel: Optional[float]
+    mean_gap_error: Optional[float]
+    branch: str
+    branches: List[Result]
+    a_r_unloading: Optional[float]
+    unloading_a_r: Optional[float]
+    jump_in_pressure: Optional[float]
+    pull_off_pressure: Optional[float]
+    elapsed_s: float
+    scene: Result
+    resolution: Result
+
     @property
     def window(self) -> Tuple[float, float]:
         """(pull-off p*, jump-in p*) of the hysteresis window around the load (NaN: none)."""
@@ -156,16 +200,30 @@ class SweepResult(Result):
     (None where a row converged, else why not), ``res.rows`` (the rows as results).
     """
 
+    # the fields' and main columns' types for a type checker; at run time they are read from
+    # the dict
+    preset: str
+    over: str
+    scene: Result
+    rows: List[Result]
+    evaluations: int
+    p: np.ndarray
+    a_r: np.ndarray
+    mean_gap_rel: np.ndarray
+    mean_contact_stress: np.ndarray
+    contact_stress_variance: np.ndarray
+    a_r_unloading: np.ndarray
+    thickness_qr: np.ndarray
+    gamma: np.ndarray
+    converged: np.ndarray
+
     def __getattr__(self, name: str) -> Any:
         data = object.__getattribute__(self, "_data")
         if name in data:
-            return _wrap(data[name])
+            return _memo(self, name, lambda: _wrap(data[name]))
         rows = data.get("rows", [])
         if rows and name in rows[0]:
-            col = [r[name] for r in rows]
-            if all(isinstance(x, bool) for x in col):
-                return np.array(col, dtype=bool)
-            return np.array([math.nan if x is None else x for x in col], dtype=float)
+            return _memo(self, name, lambda: _sweep_column(rows, name))
         raise AttributeError(f"SweepResult has no field or column {name!r}")
 
     @property
@@ -173,7 +231,7 @@ class SweepResult(Result):
         """The swept knob's values: p* (pressure), t·q_r (thickness) or γ_s in J/m² (gamma)."""
         key = {"pressure": "p", "thickness": "thickness_qr", "gamma": "gamma"}[self._data["over"]]
         col = [r[key] for r in self._data["rows"]]
-        return np.array([math.inf if x is None else x for x in col], dtype=float)
+        return _memo(self, "values", lambda: np.array([math.inf if x is None else x for x in col], dtype=float))
 
     @property
     def reasons(self) -> List[Any]:
@@ -209,22 +267,50 @@ class GfmdResult(_OnMap):
     ``mean_gap_rel``, ``iterations``, ``residual``, ``converged``, ``grid``, ``theory`` on the
     same map, ``reduction``, timings) and ``heights``, the map it ran on (m, rows along y)."""
 
+    # the fields' types for a type checker; at run time they are read from the dict
+    a_r: float
+    mean_contact_stress: float
+    contact_stress_variance: float
+    pr: Result
+    mean_gap: float
+    mean_gap_rel: float
+    iterations: int
+    residual: float
+    converged: bool
+    grid: int
+    theory: Optional[Result]
+    elapsed_s: float
+
 
 class PsdResult(Result):
     """The PSD of a map (:func:`asperity.psd`): the object of ``asperity psd --format json``
     and the table as arrays ``q`` (1/m), ``psd`` (C(q), m⁴, isotropic 2-D [S-2]), ``modes``."""
 
+    # the fields' types for a type checker; at run time they are read from the dict
+    file: str
+    system_size_m: float
+    rms_height_m: float
+    rms_gradient: float
+    rms_curvature: float
+    hurst: Optional[float]
+    hurst_error: Optional[float]
+    rolloff_wavelength_m: Optional[float]
+    short_wavelength_m: Optional[float]
+    self_affine: bool
+    line_scan: bool
+    table: List[Result]
+
     @property
     def q(self) -> np.ndarray:
-        return np.array([b["q"] for b in self._data["table"]], dtype=float)
+        return _memo(self, "q", lambda: np.array([b["q"] for b in self._data["table"]], dtype=float))
 
     @property
     def psd(self) -> np.ndarray:
-        return np.array([b["psd"] for b in self._data["table"]], dtype=float)
+        return _memo(self, "psd", lambda: np.array([b["psd"] for b in self._data["table"]], dtype=float))
 
     @property
     def modes(self) -> np.ndarray:
-        return np.array([b["modes"] for b in self._data["table"]], dtype=int)
+        return _memo(self, "modes", lambda: np.array([b["modes"] for b in self._data["table"]], dtype=int))
 
 
 class _Rows(Result):
@@ -234,18 +320,21 @@ class _Rows(Result):
     def __getattr__(self, name: str) -> Any:
         data = object.__getattribute__(self, "_data")
         if name in data:
-            return _wrap(data[name])
-        col = _column(data.get("rows", []), name)
-        if col is None:
+            return _memo(self, name, lambda: _wrap(data[name]))
+        rows = data.get("rows", [])
+        if _column(rows[:1], name) is None:
             raise AttributeError(f"{type(self).__name__} has no field or column {name!r}")
-        return col
+        return _memo(self, name, lambda: _column(rows, name))
 
     def __len__(self) -> int:
         return len(self._data.get("rows", []))
 
     def _col(self, name: str) -> np.ndarray:
-        col = _column(self._data.get("rows", []), name)
-        return np.array([], dtype=float) if col is None else col
+        def make() -> np.ndarray:
+            col = _column(self._data.get("rows", []), name)
+            return np.array([], dtype=float) if col is None else col
+
+        return _memo(self, name, make)
 
     @property
     def branch(self) -> np.ndarray:

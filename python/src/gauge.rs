@@ -8,9 +8,8 @@ use crate::errors;
 use crate::scene::SceneCore;
 use crate::value;
 use crate::work;
-use asperity::error::Error;
-use asperity::fit::reference::{self, Observable};
 use asperity::fit::{self, Param};
+use asperity::report;
 use pyo3::prelude::*;
 
 /// `gauge(scene, fit, reference, ...)`: see the module docs; the keys of `asperity gauge
@@ -30,43 +29,23 @@ pub fn run_gauge<'py>(
     observables: Option<Vec<String>>,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let (name, r, sc) = errors::guard(py, || {
-        let mut sc = scene.scene.clone();
-        let mut r = match (reference.as_str(), &reference_csv) {
-            (name, Some(text)) => reference::parse_csv(text, name)?,
-            ("eq18", None) => {
-                sc = sc.without_adhesion().half_space();
-                reference::eq18(from_.unwrap_or(1e-3), to.unwrap_or(1.0), points.unwrap_or(31))?
-            }
-            (path, None) => {
-                let p = std::path::Path::new(path);
-                let text = std::fs::read_to_string(p).map_err(|e| Error::io_file("read", "reference", p, &e))?;
-                let name = p
-                    .file_name()
-                    .map_or(path.to_string(), |n| n.to_string_lossy().into_owned());
-                reference::parse_csv(&text, &name)?
-            }
-        };
+    let (r, sc) = errors::guard(py, || {
+        let loads = (from_, to, points);
+        let (mut r, sc) = report::gauge::reference(&reference, reference_csv.as_deref(), loads, &scene.scene)?;
         if let Some(list) = &observables {
-            let allowed = "a list of a_r, mean_contact_stress, mean_gap_rel, pr held by the reference";
-            let mut keep = Vec::new();
-            for t in list {
-                let o = Observable::ALL
-                    .into_iter()
-                    .find(|o| o.key() == t.trim())
-                    .filter(|o| r.observables().contains(o))
-                    .ok_or_else(|| Error::field("observables", list.join(","), allowed))?;
-                keep.push(o);
-            }
-            r.points.retain(|o| keep.contains(&o.observable));
+            let keys: Vec<&str> = list.iter().map(String::as_str).collect();
+            report::gauge::keep_observables(&mut r, &keys)?;
         }
-        Ok((r.name.clone(), r, sc))
+        Ok((r, sc))
     })?;
     let params = errors::guard(py, || Param::parse_list(fit))?;
-    let f = work::run(py, progress.as_ref(), move |_| fit::fit(&sc, &r, &params))?;
-    let d = value::ser(py, &f)?;
-    d.set_item("reference", name)?;
-    d.set_item("gfmd", py.None())?;
-    d.set_item("saved_preset", py.None())?;
-    Ok(d)
+    let name = r.name.clone();
+    let fit = work::run(py, progress.as_ref(), move |_| fit::fit(&sc, &r, &params))?;
+    let out = report::gauge::GaugeReport {
+        reference: name,
+        gfmd: None,
+        fit,
+        saved_preset: None,
+    };
+    value::ser(py, &out)
 }

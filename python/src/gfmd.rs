@@ -10,7 +10,8 @@ use crate::scene::SceneCore;
 use crate::surface::{map_of, with_heights};
 use crate::value;
 use crate::work::{self, Info};
-use asperity::gfmd::{self, GfmdOptions, GfmdSetup, GridSpec, Method, Progress, Stage};
+use asperity::gfmd::{self, GfmdOptions, GfmdSetup, Method, Progress, Stage};
+use asperity::report::gfmd::GfmdSpec;
 use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
 
@@ -43,36 +44,18 @@ pub fn setup<'py>(
         (None, Some(_)) => return Err(errors::input(py, "heights", "None", "a map when size is given")),
         (None, None) => scene.map.as_deref().cloned(),
     };
-    if surface.is_some() && grid.is_some() {
-        return Err(errors::input(
-            py,
-            "grid",
-            &format!("{grid:?}"),
-            "None with a given map (its own grid)",
-        ));
-    }
     let method = errors::guard(py, || method.parse::<Method>())?;
-    let d = GfmdOptions::default();
-    let opts = GfmdOptions {
+    let spec = GfmdSpec {
+        grid,
+        seed,
         tolerance,
-        max_iterations: max_iterations.unwrap_or(d.max_iterations),
-        pr_bins: bins.unwrap_or(d.pr_bins),
+        max_iterations,
+        bins,
         method,
-        ..d
+        rescale,
+        ..GfmdSpec::default()
     };
-    let setup = errors::guard(py, || {
-        opts.validate()?;
-        method.check_on(&scene.scene)?;
-        let spec = GridSpec::of_preset(&scene.preset, grid)?;
-        Ok(GfmdSetup {
-            scene: scene.scene.clone(),
-            grid: spec,
-            seed,
-            surface,
-            rescale,
-        })
-    })?;
-    Ok((setup, opts))
+    errors::guard(py, || spec.setup(&scene.preset, &scene.scene, surface))
 }
 
 /// The progress report of a relaxation step or of the theory beside it (`total`: the step

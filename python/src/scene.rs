@@ -17,8 +17,8 @@ use asperity::input::overrides::{ModelChanges, Overrides};
 use asperity::input::preset::{AdhesionSpec, LoadSpec, MaterialSpec, ModelSpec, Preset, SurfaceSpec};
 use asperity::input::scene::{Scene, ThicknessQr};
 use asperity::surface::heightmap::Surface;
-use asperity::surface::psd::{self, PsdOptions};
-use asperity::surface::spectrum::{Spectrum, Tabulated};
+use asperity::surface::psd::PsdOptions;
+use asperity::surface::spectrum::Spectrum;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::sync::Arc;
@@ -331,18 +331,13 @@ impl SceneCore {
     ) -> PyResult<SceneCore> {
         let surface = map_of(py, &heights, size_m)?;
         errors::guard(py, || {
-            surface.check_rough()?;
-            let a = psd::analyse(
-                &surface,
-                &PsdOptions {
-                    periodic,
-                    ..PsdOptions::default()
-                },
-            )?;
-            let (q, c): (Vec<f64>, Vec<f64>) = a.bins.iter().map(|b| (b.q, b.psd)).unzip();
-            let table = Tabulated::new(q, c, &source, qmin, qmax)?;
+            let opts = PsdOptions {
+                periodic,
+                ..PsdOptions::default()
+            };
+            let spectrum = Spectrum::from_map(&surface, &opts, (qmin, qmax), &source)?;
             let scene = self.scene.apply(&Overrides {
-                spectrum: Some(Spectrum::Tabulated(table)),
+                spectrum: Some(spectrum),
                 ..Overrides::default()
             })?;
             Ok(SceneCore {

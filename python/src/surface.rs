@@ -6,10 +6,10 @@
 
 use crate::errors;
 use crate::value;
+use asperity::report;
 use asperity::surface::heightmap::Surface;
-use asperity::surface::psd::{self, PsdAnalysis, PsdOptions};
+use asperity::surface::psd::PsdOptions;
 use asperity::surface::readers::{self, ReadOptions, Unit};
-use asperity::surface::spectrum::HURST_RANGE;
 use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -83,47 +83,6 @@ pub fn read_surface<'py>(
     Ok(d)
 }
 
-/// The keys of `asperity psd --format json` for the analysis `a` of `s`.
-fn output<'py>(
-    py: Python<'py>,
-    file: &str,
-    s: &Surface,
-    a: &PsdAnalysis,
-    elapsed: f64,
-) -> PyResult<Bound<'py, PyDict>> {
-    let two_pi = 2.0 * std::f64::consts::PI;
-    let f = a.fit.as_ref();
-    let d = PyDict::new(py);
-    d.set_item("file", file)?;
-    d.set_item("points", vec![s.nx, s.ny])?;
-    d.set_item("system_size_m", s.size_x())?;
-    d.set_item("rms_height_m", a.rms_height)?;
-    d.set_item("rms_gradient", a.rms_gradient)?;
-    d.set_item("rms_curvature", a.rms_curvature)?;
-    d.set_item("hurst", f.map(|f| f.hurst))?;
-    d.set_item("hurst_error", f.map(|f| f.hurst_error))?;
-    d.set_item("rolloff_wavelength_m", f.map(|f| two_pi / f.q_r))?;
-    d.set_item(
-        "rolloff_wavelength_range_m",
-        f.map(|f| vec![two_pi / f.q_r_high, two_pi / f.q_r_low]),
-    )?;
-    d.set_item("short_wavelength_m", f.map(|f| two_pi / f.q_s))?;
-    d.set_item(
-        "short_wavelength_range_m",
-        f.map(|f| vec![two_pi / f.q_s_high, two_pi / f.q_s]),
-    )?;
-    d.set_item(
-        "self_affine",
-        f.is_some_and(|f| (HURST_RANGE.0..=HURST_RANGE.1).contains(&f.hurst)),
-    )?;
-    d.set_item("line_scan", a.line_scan)?;
-    d.set_item("window", a.window)?;
-    d.set_item("detrend", a.detrend)?;
-    d.set_item("elapsed_s", elapsed)?;
-    d.set_item("table", value::ser(py, &a.bins)?)?;
-    Ok(d)
-}
-
 /// `psd(heights, size_m, periodic, bins_per_decade)`: the PSD of a map (module docs).
 #[pyfunction]
 #[pyo3(name = "psd", signature = (heights, size_m, periodic = false, bins_per_decade = 10.0, source = "heights".to_string()))]
@@ -134,26 +93,16 @@ pub fn map_psd<'py>(
     periodic: bool,
     bins_per_decade: f64,
     source: String,
-) -> PyResult<Bound<'py, PyDict>> {
+) -> PyResult<Bound<'py, PyAny>> {
     let s = map_of(py, &heights, size_m)?;
-    let (lo, hi) = psd::BINS_PER_DECADE_RANGE;
-    if !(lo..=hi).contains(&bins_per_decade) {
-        return Err(errors::input(
-            py,
-            "bins_per_decade",
-            &asperity::error::fmt_value(bins_per_decade),
-            &format!("{lo} <= bins_per_decade <= {hi}"),
-        ));
-    }
     let opts = PsdOptions {
         periodic,
         bins_per_decade,
     };
-    let t0 = std::time::Instant::now();
-    let a = py.detach(|| std::panic::catch_unwind(|| psd::analyse(&s, &opts)));
-    let a = match a {
+    let r = py.detach(|| std::panic::catch_unwind(|| report::psd::psd(&source, &s, &opts)));
+    let r = match r {
         Ok(r) => r.map_err(|e| errors::to_py(py, e))?,
         Err(p) => return Err(errors::panic(py, p)),
     };
-    output(py, &source, &s, &a, t0.elapsed().as_secs_f64())
+    value::ser(py, &r)
 }

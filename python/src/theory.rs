@@ -19,7 +19,7 @@ use crate::errors;
 use crate::scene::SceneCore;
 use crate::value;
 use crate::work::{self, Info};
-use asperity::error::Result;
+use asperity::error::{Allowed, Error, Result};
 use asperity::input::overrides::AccuracyKnobs;
 use asperity::report::sweep::{self, Over, SweepReport};
 use asperity::theory::engine::Options;
@@ -122,6 +122,25 @@ fn into_py<'py>(py: Python<'py>, report: &SweepReport) -> PyResult<Bound<'py, Py
     Ok(d)
 }
 
+/// A load cycle's loads in Python's words: `cycle=True` and the `np.geomspace` that gives them.
+fn python_words(e: Error) -> Error {
+    match e {
+        Error::Invalid {
+            field,
+            value,
+            allowed: Allowed::Text(t),
+        } => Error::Invalid {
+            field,
+            value,
+            allowed: Allowed::Text(t.replace(
+                sweep::CYCLE_LOADS_WORDS,
+                "with cycle=True (np.geomspace(first, last, n))",
+            )),
+        },
+        e => e,
+    }
+}
+
 /// Progress of a sweep as the callback's `sweep` stage.
 fn sweep_progress(ctx: &work::Ctx) -> impl FnMut(usize, usize) + '_ {
     |done, total| {
@@ -180,7 +199,7 @@ pub fn run_sweep<'py>(
     };
     let out = match over.knob() {
         None => {
-            let specs = errors::guard(py, || sweep::pressure_specs(&values, cycle))?;
+            let specs = errors::guard(py, || sweep::pressure_specs(&values, cycle).map_err(python_words))?;
             work::run(py, progress.as_ref(), move |ctx| {
                 pressure_sweep(&core, &specs, &opts, ctx, cycle)
             })?
@@ -222,7 +241,12 @@ pub fn run_cycle<'py>(
     let opts = Options::default();
     let core = scene.clone();
     let out = work::run(py, progress.as_ref(), move |ctx| {
-        pressure_sweep(&core, &[spec], &opts, ctx, true)
+        let mut report = sweep_progress(ctx);
+        let ctl = sweep::Control {
+            cancel: Some(&*ctx.cancel),
+            progress: &mut report,
+        };
+        asperity::report::cycle::cycle(&core.scene, &core.preset.name, &spec, &opts, ctl)
     })?;
-    value::ser(py, &out.cycle)
+    value::ser(py, &out)
 }

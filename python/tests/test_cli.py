@@ -1,6 +1,8 @@
 """The Python package against the CLI's JSON for the same scene, key by key (timings aside), to
-PYTHON_CLI_REL: `evaluate` against `asperity run`, `sweep` against `asperity sweep`, `gfmd`
-against `asperity gfmd`, `psd` against `asperity psd` (both call the same library functions)."""
+PYTHON_CLI_REL: `evaluate` against `asperity run`, `sweep` against `asperity sweep` (and with
+`cycle=True`, and `cycle`, against `sweep --cycle`), `gfmd` and `gfmd_cycle` against `asperity
+gfmd`, `psd` against `asperity psd`, `gauge` against `asperity gauge` (both call the same library
+functions; cli/tests/parity.rs holds the CLI's JSON against the library's reports)."""
 
 from __future__ import annotations
 
@@ -77,4 +79,31 @@ def test_psd_equals_cli(cli, tmp_path: Path):
     py = asperity.psd(h, 1e-4).to_dict()
     ref = cli("psd", str(path), "--size", "1e-4", "--format", "json")
     ref.pop("file")
+    assert compare(py, ref, REL) == []
+
+
+def test_sweep_cycle_and_cycle_equal_cli(cli):
+    scene = asperity.Scene.preset("system-2")
+    ps = np.geomspace(1e-3, 1e-2, 4)
+    ref = cli("sweep", "--preset", "system-2", "--cycle", "--from", "1e-3", "--to", "1e-2", "--points", "4", "--format", "json")
+    py = asperity.sweep(scene, ps, cycle=True).to_dict()
+    assert compare(py, ref, REL) == []
+    alone = asperity.cycle(scene, 1e-3, 1e-2, points=4).to_dict()
+    assert compare(alone, ref["cycle"], REL) == []
+    assert len(alone["rows"]) > 0
+
+
+def test_gauge_equals_cli(cli):
+    scene = asperity.Scene.preset("system-1")
+    py = asperity.gauge(scene, ["c1"], "eq18", from_=1e-3, to=0.3, points=6).to_dict()
+    ref = cli("gauge", "--preset", "system-1", "--fit", "c1", "--reference", "eq18", "--from", "1e-3", "--to", "0.3", "--points", "6", "--format", "json")
+    assert set(py) == set(ref)
+    assert compare(py, ref, REL) == []
+
+
+def test_gfmd_cycle_equals_cli(cli):
+    scene = asperity.Scene.preset("system-2")
+    py = asperity.gfmd_cycle(scene, 1e-3, 4e-3, points=3, grid=32).to_dict()
+    py.pop("heights", None)
+    ref = cli("gfmd", "--preset", "system-2", "--grid", "32", "--cycle", "--from", "1e-3", "--to", "4e-3", "--points", "3", "--format", "json")
     assert compare(py, ref, REL) == []

@@ -143,6 +143,7 @@ def test_not_converged_is_a_runtime_error():
     with pytest.raises(asperity.NotConverged) as e:
         asperity.gfmd(s, grid=32, max_iterations=1)
     assert isinstance(e.value, RuntimeError)
+    assert isinstance(e.value, asperity.AsperityError)
     assert e.value.solver and e.value.reason
 
 
@@ -152,6 +153,13 @@ def test_a_panic_becomes_an_exception(where):
         _native._panic(where)
     except Exception as e:  # an ordinary Exception, not a BaseException
         assert isinstance(e, asperity.InternalError)
+        assert isinstance(e, asperity.AsperityError)
         assert "test panic" in str(e)
     else:
         raise AssertionError("no exception")
+
+
+def test_every_error_is_an_asperity_error():
+    with pytest.raises(asperity.AsperityError) as e:
+        asperity.Scene.preset("system-1").replace(thickness_qr=-1)
+    assert isinstance(e.value, asperity.InputError) and isinstance(e.value, ValueError)

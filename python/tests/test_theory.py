@@ -197,3 +197,27 @@ def test_one_name_per_quantity():
     with pytest.raises(asperity.InputError, match="pressures") as e:
         asperity.sweep(asperity.Scene.preset("system-1"), pressure=[0.01, 0.1])
     assert e.value.field == "pressure"
+
+
+def test_attributes_are_built_once_and_read_only():
+    r = asperity.evaluate(asperity.Scene.preset("system-1"))
+    assert r.pr.sigma is r.pr.sigma
+    assert r.pr is r.pr
+    with pytest.raises(ValueError):
+        r.pr.sigma[0] = 1.0
+    sw = asperity.sweep(asperity.Scene.preset("system-1"), np.geomspace(1e-3, 1e-2, 3))
+    assert sw.a_r is sw.a_r and sw.values is sw.values
+    assert np.array(sw.a_r).flags.writeable
+
+
+def test_results_name_their_fields_types():
+    """A type checker reads the fields' types from the result classes (`r.a_r` is a float)."""
+    import typing
+
+    assert typing.get_type_hints(asperity.Report)["a_r"] is float
+    assert typing.get_type_hints(asperity.GfmdResult)["iterations"] is int
+    assert typing.get_type_hints(asperity.SweepResult)["a_r"] is np.ndarray
+    r = asperity.evaluate(asperity.Scene.preset("system-1"))
+    hints = typing.get_type_hints(asperity.Report)
+    for name in ("a_r", "mean_contact_stress", "error_estimate", "elapsed_s"):
+        assert isinstance(getattr(r, name), hints[name]), name

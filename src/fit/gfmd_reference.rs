@@ -112,6 +112,50 @@ pub struct GfmdReference {
 
 /// Largest K.
 pub const MAX_SEEDS: usize = 1000;
+/// Allowed λ_s/Δa of a resolution ladder's rung.
+pub const LADDER_RANGE: (f64, f64) = (2.0, 256.0);
+
+/// Checks a number of realisations K: 1..=[`MAX_SEEDS`].
+///
+/// # Errors
+/// [`Error::Invalid`] naming [`Field::Seeds`].
+pub fn check_seeds(k: usize) -> Result<()> {
+    if !(1..=MAX_SEEDS).contains(&k) {
+        return Err(Error::invalid(
+            Field::Seeds,
+            k as f64,
+            format!("1 <= seeds <= {MAX_SEEDS}"),
+        ));
+    }
+    Ok(())
+}
+
+/// Checks a resolution ladder and gives its distinct rungs, ascending: every rung in
+/// [`LADDER_RANGE`], two or more distinct.
+///
+/// # Errors
+/// [`Error::Invalid`] naming [`Field::Ladder`].
+pub fn check_ladder(ladder: &[f64]) -> Result<Vec<f64>> {
+    let (lo, hi) = LADDER_RANGE;
+    if let Some(&bad) = ladder.iter().find(|&&x| !(x >= lo && x <= hi)) {
+        return Err(Error::invalid(
+            Field::Ladder,
+            bad,
+            format!("{lo} <= lambda_s/da <= {hi} at every rung"),
+        ));
+    }
+    let mut distinct = ladder.to_vec();
+    distinct.sort_by(f64::total_cmp);
+    distinct.dedup();
+    if distinct.len() < 2 {
+        return Err(Error::invalid_text(
+            Field::Ladder,
+            format!("{} distinct rung(s)", distinct.len()),
+            "two or more distinct lambda_s/da",
+        ));
+    }
+    Ok(distinct)
+}
 
 /// Runs the sweeps of `spec` on `setup` and builds the reference (see the module docs).
 /// `progress` gets the stage with each solver report.
@@ -166,27 +210,9 @@ struct Plan<'a> {
 impl<'a> Plan<'a> {
     /// The plan of `spec` on `setup` (errors: see [`gfmd_reference`]).
     fn new(setup: &'a GfmdSetup, spec: &'a GfmdReferenceSpec) -> Result<Plan<'a>> {
-        if !(1..=MAX_SEEDS).contains(&spec.seeds) {
-            return Err(Error::invalid(
-                Field::Seeds,
-                spec.seeds as f64,
-                format!("1 <= seeds <= {MAX_SEEDS}"),
-            ));
-        }
+        check_seeds(spec.seeds)?;
         let rungs: Vec<f64> = match &spec.ladder {
-            Some(l) => {
-                let mut l = l.clone();
-                l.sort_by(f64::total_cmp);
-                l.dedup();
-                if l.len() < 2 {
-                    return Err(Error::invalid_text(
-                        Field::Ladder,
-                        format!("{} distinct rung(s)", l.len()),
-                        "two or more distinct lambda_s/da",
-                    ));
-                }
-                l
-            }
+            Some(l) => check_ladder(l)?,
             None => vec![setup.grid.points_per_short_wavelength],
         };
         if setup.surface.is_some() && (spec.seeds > 1 || spec.ladder.is_some()) {

@@ -9,11 +9,24 @@
 //! - [`mod@point`]: one scene at one load, everything `asperity run` prints.
 //! - [`mod@sweep`]: a sweep over the load, t·q_r or γ_s with its hysteresis windows,
 //!   everything `asperity sweep` prints.
+//! - [`mod@cycle`]: the theory's path along a load cycle, what `asperity sweep --cycle`
+//!   prints.
+//! - [`mod@gauge`]: the custom model fitted to a reference, and the reference assembled,
+//!   everything `asperity gauge` prints.
+//! - [`mod@gfmd`]: a GFMD run's spec with its defaults and ranges, its study (ladder,
+//!   seeds) and the rows of its sweeps and cycles, everything `asperity gfmd` prints.
+//! - [`mod@psd`]: a height map's PSD with its moments and self-affine fit, everything
+//!   `asperity psd` prints.
 //! - [`mod@names`]: the public names kept as aliases of a preferred one.
 
+pub mod cycle;
+pub mod gauge;
+pub mod gfmd;
 pub mod names;
 pub mod point;
+pub mod psd;
 pub mod sweep;
 
 pub use point::{point, BranchReport, PointReport, ResolutionTable};
+pub use psd::PsdReport;
 pub use sweep::{Over, SweepReport};

@@ -169,6 +169,10 @@ pub struct SweepReport {
     pub cycle: Option<TheoryCycle>,
 }
 
+/// How a load cycle's loads are described where a list of loads is not log-spaced (a front end
+/// may say it in its own words).
+pub const CYCLE_LOADS_WORDS: &str = "for a load cycle (equal ratios from the first to the last)";
+
 /// Where a sweep runs: the cancel flag (set: the sweep ends with [`Error::Cancelled`]) and a
 /// progress callback called with (values done, values in all) before each part.
 pub struct Control<'a> {
@@ -248,7 +252,7 @@ pub fn pressure_specs(pressures: &[f64], cycle: bool) -> Result<Vec<SweepSpec>> 
             Field::Other("pressures".into()),
             v,
             format!(
-                "log-spaced loads with cycle=True (np.geomspace(first, last, n)): {} at position {k}",
+                "log-spaced loads {CYCLE_LOADS_WORDS}: {} at position {k}",
                 fmt_value(even[k])
             ),
         ));

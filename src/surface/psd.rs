@@ -32,6 +32,7 @@
 use crate::error::{Error, Field, Result};
 pub use crate::surface::fit::{fit_self_affine, SelfAffineFit};
 use crate::surface::heightmap::{wave_number_sq, Surface};
+use crate::surface::spectrum::{Spectrum, Tabulated};
 use rustfft::num_complex::Complex64;
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -51,6 +52,27 @@ impl Default for PsdOptions {
             periodic: false,
             bins_per_decade: 10.0,
         }
+    }
+}
+
+impl Spectrum {
+    /// The tabulated spectrum of a measured map: the radial average of its PSD ([`analyse`]),
+    /// cut to [q_min, q_max] (1/m) where given, `source` naming it. What the theory runs on for
+    /// a map given to `--surface` or Python's `Scene.with_map`.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for a map that is not a contact problem ([`Surface::check_rough`]),
+    /// and the table's own ([`Tabulated::new`]: cut-offs outside the table, too few rows).
+    pub fn from_map(
+        surface: &Surface,
+        opts: &PsdOptions,
+        q_range: (Option<f64>, Option<f64>),
+        source: &str,
+    ) -> Result<Spectrum> {
+        surface.check_rough()?;
+        let a = analyse(surface, opts)?;
+        let (q, c): (Vec<f64>, Vec<f64>) = a.bins.iter().map(|b| (b.q, b.psd)).unzip();
+        Ok(Spectrum::Tabulated(Tabulated::new(q, c, source, q_range.0, q_range.1)?))
     }
 }
 

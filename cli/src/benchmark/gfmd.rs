@@ -70,11 +70,7 @@ pub fn gfmd(quick: bool) -> Result<Report> {
             if gamma == 0.0 {
                 scene = scene.without_adhesion();
             }
-            let grid = preset.gfmd.as_ref().map(GridSpec::from_preset).unwrap_or(GridSpec {
-                system_size_ratio: 2.0,
-                bandwidth: 32.0,
-                points_per_short_wavelength: 8.0,
-            });
+            let grid = GridSpec::of_preset(&preset, None)?;
             let setup = GfmdSetup {
                 scene,
                 grid,

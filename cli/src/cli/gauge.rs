@@ -24,6 +24,7 @@ use asperity::fit::{self, Fit, Param};
 use asperity::input::model::Model;
 use asperity::input::preset::{ModelSpec, Preset};
 use asperity::input::scene::Scene;
+use asperity::report::gauge;
 use clap::Args;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -83,18 +84,6 @@ pub struct GaugeArgs {
     pub save_preset: Option<PathBuf>,
 }
 
-/// Reads a reference table given to `flag` (a regular file of bounded size, UTF-8 CSV).
-fn read(path: &Path, flag: &str) -> Result<String> {
-    use asperity::input::file::{read_text, MAX_INPUT_BYTES};
-    read_text(
-        path,
-        "",
-        Field::Other(flag.trim_start_matches('-').into()),
-        MAX_INPUT_BYTES,
-        "a CSV table with a header line",
-    )
-}
-
 /// The reference and the scene it is compared on (for `gfmd`, the scene GFMD runs), with the
 /// GFMD run when it is one.
 pub fn resolve_reference(
@@ -106,70 +95,36 @@ pub fn resolve_reference(
     if args.reference != "gfmd" {
         args.gfmd.refuse_unless_gfmd(&args.reference)?;
     }
-    let mut gfmd = None;
-    let mut r = match args.reference.as_str() {
-        "eq18" => {
-            // [S-18] is the adhesionless half-space
-            *scene = scene.without_adhesion().half_space();
-            reference::eq18(
-                args.from.unwrap_or(1e-3),
-                args.to.unwrap_or(1.0),
-                args.points.unwrap_or(31),
-            )?
-        }
-        "gfmd" => {
-            let map = scene_args.source.map()?;
-            let g = gauge_gfmd::resolve(&args.gfmd, (args.from, args.to, args.points), preset, map, scene)?;
-            let r = g.reference.clone();
-            gfmd = Some(g);
-            r
-        }
-        file => {
-            let path = Path::new(file);
-            let name = path
-                .file_name()
-                .map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
-            reference::parse_csv(&read(path, "--reference")?, &name)?
-        }
+    let loads = (args.from, args.to, args.points);
+    let (mut r, gfmd) = if args.reference == "gfmd" {
+        let map = scene_args.source.map()?;
+        let g = gauge_gfmd::resolve(&args.gfmd, loads, preset, map, scene)?;
+        (g.reference.clone(), Some(g))
+    } else {
+        let (r, sc) = gauge::reference(&args.reference, None, loads, scene)?;
+        *scene = sc;
+        (r, None)
     };
     if let Some(pr) = &args.pr {
-        let name = pr
-            .file_name()
-            .map_or(String::new(), |n| n.to_string_lossy().into_owned());
-        r.points.extend(reference::parse_pr_csv(&read(pr, "--pr")?, &name)?);
+        let (text, name) = gauge::read_table(pr, "pr")?;
+        r.points.extend(reference::parse_pr_csv(&text, &name)?);
     }
     if let Some(list) = &args.observables {
-        let allowed = "a comma-separated list of a_r, mean_contact_stress, mean_gap_rel, pr held by the reference";
-        let mut keep = Vec::new();
-        for t in list.split(',').map(str::trim) {
-            let o = Observable::ALL
-                .into_iter()
-                .find(|o| o.key() == t)
-                .filter(|o| r.observables().contains(o))
-                .ok_or_else(|| Error::field("--observables", list, allowed))?;
-            keep.push(o);
-        }
-        r.points.retain(|o| keep.contains(&o.observable));
+        let keys: Vec<&str> = list.split(',').collect();
+        gauge::keep_observables(&mut r, &keys).map_err(|e| match e {
+            Error::Invalid { value, .. } => Error::field(
+                "--observables",
+                value,
+                "a comma-separated list of a_r, mean_contact_stress, mean_gap_rel, pr held by the reference",
+            ),
+            e => e,
+        })?;
     }
-
     Ok((r, gfmd))
 }
 
-/// The JSON object printed by `gauge --format json`.
-#[derive(Debug, Serialize)]
-pub struct GaugeOutput {
-    /// "eq18", "gfmd" or the file name.
-    pub reference: String,
-    /// The GFMD run of `--reference gfmd` (grid, seeds, ladder, rows, reduction, iterations,
-    /// elapsed_s); null for the other references.
-    pub gfmd: Option<GfmdReference>,
-    /// params, correlation, condition_number, residuals, chi2, chi2_reduced, points,
-    /// evaluations, termination, model, start, elapsed_s.
-    #[serde(flatten)]
-    pub fit: Fit,
-    /// The preset written, if any.
-    pub saved_preset: Option<String>,
-}
+/// The JSON object printed by `gauge --format json` (the library's report).
+pub use asperity::report::gauge::GaugeReport as GaugeOutput;
 
 /// Runs `asperity gauge`.
 pub fn run(args: &GaugeArgs) -> Result<()> {

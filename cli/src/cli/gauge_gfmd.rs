@@ -2,30 +2,25 @@
 //! itself ([`asperity::fit::gfmd_reference`]), with the flags of `asperity gfmd` (same names,
 //! same parsers).
 //!
-//! Default grid: the preset's `[gfmd]` grid (L/λ_r = 2, λ_r/λ_s = 32, λ_s/Δa = 8 without one),
-//! at most [`DEFAULT_MAX_GRID`]² (larger ones keep L/λ_r and λ_s/Δa and narrow λ_r/λ_s, as
-//! `gfmd --grid`); default loads: [`DEFAULT_POINTS`] log-spaced from p*/[`DEFAULT_SPAN`] to
-//! p*·[`DEFAULT_SPAN`] around the scene's p*.
+//! Default grid and loads: the library's ([`asperity::report::gauge::gfmd_grid`],
+//! [`asperity::report::gauge::gfmd_loads`]): the preset's `[gfmd]` grid at most
+//! [`DEFAULT_MAX_GRID`]², loads log-spaced around the scene's p*.
 
-use super::gfmd::{ladder_rung, MethodArg, DEFAULT_GRID};
+use super::gfmd::{ladder_rung, MethodArg};
 use super::parse;
 use super::progress::Steps;
 use asperity::error::{Error, Field, Result};
 use asperity::fit::gfmd_reference::{self, GfmdReference, GfmdReferenceSpec, Stage};
-use asperity::gfmd::{GfmdOptions, GfmdSetup, GridSpec, Method, Progress};
+use asperity::gfmd::{GfmdOptions, GfmdSetup, Method, Progress};
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
+use asperity::report::gauge;
 use asperity::surface::heightmap::Surface;
-use asperity::theory::sweep::SweepSpec;
 use clap::Args;
 use std::sync::atomic::AtomicBool;
 
-/// Largest default grid side of `--reference gfmd` (a larger preset grid is narrowed to it).
-pub const DEFAULT_MAX_GRID: usize = 256;
-/// Default number of loads of `--reference gfmd`.
-pub const DEFAULT_POINTS: usize = 4;
-/// Default loads span p*/span..p*·span around the scene's p*.
-pub const DEFAULT_SPAN: f64 = 2.5;
+/// Largest default grid side of `--reference gfmd` (the library's).
+pub use asperity::report::gauge::GFMD_DEFAULT_MAX_GRID as DEFAULT_MAX_GRID;
 
 /// The GFMD options of `--reference gfmd` (as in `asperity gfmd`).
 #[derive(Debug, Clone, Args)]
@@ -89,24 +84,9 @@ pub fn resolve(
     surface: Option<Surface>,
     scene: &mut Scene,
 ) -> Result<GfmdReference> {
-    let mut grid = preset.gfmd.as_ref().map(GridSpec::from_preset).unwrap_or(DEFAULT_GRID);
-    match args.grid {
-        Some(n) => {
-            if n < 4 {
-                return Err(Error::invalid(Field::Grid, n as f64, "an integer N >= 4"));
-            }
-            grid = grid.with_grid(n as usize)?;
-        }
-        None if grid.n() > DEFAULT_MAX_GRID => grid = grid.with_grid(DEFAULT_MAX_GRID)?,
-        None => {}
-    }
-    let p = scene.pressure();
+    let grid = gauge::gfmd_grid(preset, args.grid)?;
     let spec = GfmdReferenceSpec {
-        loads: SweepSpec {
-            from: loads.0.unwrap_or(p / DEFAULT_SPAN),
-            to: loads.1.unwrap_or(p * DEFAULT_SPAN),
-            points: loads.2.unwrap_or(DEFAULT_POINTS),
-        },
+        loads: gauge::gfmd_loads(scene, loads),
         seeds: args.seeds.unwrap_or(1),
         ladder: args.extrapolate.then(|| args.ladder.clone()),
     };

@@ -15,9 +15,9 @@ use asperity::gfmd::cycle::CycleSpec;
 use asperity::gfmd::ladder::{Ensemble, Extrapolated, Ladder, MeanSe};
 use asperity::gfmd::reduction::Reduction;
 use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec, Progress, Stage};
+use asperity::report::gfmd::GfmdSpec;
 use asperity::theory::sweep::SweepSpec;
 use clap::Args;
-use serde::Serialize;
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
 
@@ -120,23 +120,11 @@ impl From<MethodArg> for asperity::gfmd::Method {
     }
 }
 
-/// Largest K of `--seeds` (the library's).
-pub use asperity::fit::gfmd_reference::MAX_SEEDS;
-/// Allowed λ_s/Δa of a `--ladder` rung.
-pub const LADDER_RANGE: (f64, f64) = (2.0, 256.0);
+/// Largest K of `--seeds`, the allowed rungs of `--ladder` (the library's).
+pub use asperity::report::gfmd::{LADDER_RANGE, MAX_SEEDS};
 
-/// The JSON of `gfmd --extrapolate` / `--seeds K`: the single run at the preset's grid, its
-/// resolution ladder and the ensemble over seeds.
-#[derive(Debug, Serialize)]
-pub struct StudyOutput {
-    /// The run at the preset's grid (seed S).
-    #[serde(flatten)]
-    pub base: GfmdResult,
-    /// The ladder of seed S (null without --extrapolate).
-    pub extrapolation: Option<Ladder>,
-    /// Mean +- standard error over the seeds (null for K = 1).
-    pub ensemble: Option<Ensemble>,
-}
+/// The JSON of `gfmd --extrapolate` / `--seeds K` (the library's report).
+pub use asperity::report::gfmd::GfmdStudy as StudyOutput;
 
 /// Builds the setup and options from the arguments.
 pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
@@ -153,59 +141,18 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
     }
     // the --surface map (its roughness checked with its spectrum)
     let (preset, scene, surface) = args.scene.resolve_with_map(args.pressure)?;
-    let grid = GridSpec::of_preset(&preset, args.grid)?;
-    let opts = GfmdOptions {
+    let spec = GfmdSpec {
+        grid: args.grid,
+        seed: args.seed,
         tolerance: args.tolerance,
-        max_iterations: args.max_iterations,
-        pr_bins: args.bins,
+        max_iterations: Some(args.max_iterations),
+        bins: Some(args.bins),
         method: args.method.into(),
-        ..GfmdOptions::default()
+        rescale: !args.raw_adhesion,
+        seeds: args.seeds,
+        ladder: args.extrapolate.then(|| args.ladder.clone()),
     };
-    opts.validate()?;
-    super::parse::refuse_pk_on_slab(args.method == MethodArg::Pk, &scene)?;
-    if !(1..=MAX_SEEDS).contains(&args.seeds) {
-        return Err(Error::invalid(
-            Field::Seeds,
-            args.seeds as f64,
-            format!("1 <= seeds <= {MAX_SEEDS}"),
-        ));
-    }
-    if args.extrapolate {
-        let distinct = {
-            let mut l = args.ladder.clone();
-            l.sort_by(f64::total_cmp);
-            l.dedup();
-            l.len()
-        };
-        if let Some(&bad) = args
-            .ladder
-            .iter()
-            .find(|&&x| !(x >= LADDER_RANGE.0 && x <= LADDER_RANGE.1))
-        {
-            return Err(Error::invalid(
-                Field::Ladder,
-                bad,
-                format!("{} <= lambda_s/da <= {} at every rung", LADDER_RANGE.0, LADDER_RANGE.1),
-            ));
-        }
-        if distinct < 2 {
-            return Err(Error::invalid_text(
-                Field::Ladder,
-                format!("{} distinct rung(s)", distinct),
-                "two or more distinct lambda_s/da",
-            ));
-        }
-    }
-    Ok((
-        GfmdSetup {
-            scene,
-            grid,
-            seed: args.seed,
-            surface,
-            rescale: !args.raw_adhesion,
-        },
-        opts,
-    ))
+    spec.setup(&preset, &scene, surface)
 }
 
 /// Runs `asperity gfmd`.

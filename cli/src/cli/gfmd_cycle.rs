@@ -1,23 +1,14 @@
 //! `asperity gfmd --cycle` (and a sweep downwards) as CSV: the columns of a GFMD sweep
 //! ([`super::gfmd_csv::GFMD_CSV_HEADER`]) and `branch`, after `#` lines giving the pull-off and the
-//! jump-in. The theory's columns are its branch at the same load: the unloading branch where
-//! the theory has two (inside a hysteresis window) on unloading rows, and on tensile rows its
-//! contact branch under tension (a_r and σ̄_c*; the mean gap is not defined there), empty
-//! beyond the theory's own pull-off. Also the labels of a load path's steps for its progress.
+//! jump-in; the rows, with the theory on GFMD's branch, are the library's
+//! ([`asperity::report::gfmd::cycle_rows`]). Also the labels of a load path's steps for its
+//! progress.
 
-use super::gfmd_csv::{csv_row, GFMD_CSV_HEADER};
+use super::gfmd_csv::{rows_csv, GFMD_CSV_HEADER};
 use super::progress::load_label;
-use asperity::gfmd::cycle::{CycleSpec, GfmdCycle, PathBranch};
-use asperity::theory::cycle::TheoryPathRow;
+use asperity::gfmd::cycle::{CycleSpec, GfmdCycle};
+use asperity::report::gfmd;
 use asperity::theory::sweep::SweepSpec;
-
-/// The theory's row under tension at GFMD's load `p` ≤ 0 (the same loads: 0, −p₁, −2p₁, …).
-fn tensile_row(c: &GfmdCycle, p: f64) -> Option<&TheoryPathRow> {
-    let t = c.theory_cycle.as_ref()?;
-    t.rows
-        .iter()
-        .find(|r| r.p <= 0.0 && (r.p - p).abs() <= 1e-12 * p.abs().max(1e-300))
-}
 
 /// The CSV of a GFMD load path (see the module docs).
 pub fn cycle_csv(c: &GfmdCycle) -> String {
@@ -41,44 +32,7 @@ pub fn cycle_csv(c: &GfmdCycle) -> String {
         }
         out.push_str(&format!("# theory_note: {}\n", t.note));
     }
-    out.push_str(GFMD_CSV_HEADER);
-    out.push_str(",branch");
-    for r in &c.rows {
-        let g = &r.row;
-        let th = c
-            .theory
-            .as_ref()
-            .and_then(|t| t.rows.iter().find(|t| (t.p / g.p - 1.0).abs() < 1e-12));
-        let unloading = r.branch == PathBranch::Unloading;
-        let pick = |load: f64, unload: f64| if unloading && unload.is_finite() { unload } else { load };
-        let theory = if g.p > 0.0 {
-            [
-                th.map(|t| pick(t.a_r, t.a_r_unloading)),
-                th.map(|t| pick(t.mean_gap_rel, t.mean_gap_unloading_rel)),
-                th.filter(|t| !(unloading && t.a_r_unloading.is_finite()))
-                    .map(|t| t.mean_contact_stress),
-            ]
-        } else {
-            let tr = tensile_row(c, g.p);
-            [tr.map(|t| t.a_r), None, tr.map(|t| t.mean_contact_stress)]
-        };
-        out.push('\n');
-        out.push_str(&csv_row(
-            [
-                g.p,
-                g.a_r,
-                g.mean_gap_rel,
-                g.mean_gap,
-                g.mean_contact_stress,
-                g.elastic_energy,
-            ],
-            g.converged,
-            (g.contact_stress_variance, g.iterations, g.residual),
-            theory,
-        ));
-        out.push(',');
-        out.push_str(r.branch.name());
-    }
+    out.push_str(&rows_csv(&format!("{GFMD_CSV_HEADER},branch"), &gfmd::cycle_rows(c)));
     out
 }
 

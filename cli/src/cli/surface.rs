@@ -6,12 +6,12 @@
 use super::emit;
 use asperity::error::{Error, Field, Result};
 use asperity::input::preset::MeasuredSpec;
+use asperity::report::psd::{psd as psd_report, PsdReport};
 use asperity::surface::heightmap::Surface;
-use asperity::surface::psd::{self, PsdAnalysis, PsdOptions};
+use asperity::surface::psd::PsdOptions;
 use asperity::surface::readers::{self, ReadOptions, Unit};
-use asperity::surface::spectrum::{Spectrum, Tabulated, HURST_RANGE};
+use asperity::surface::spectrum::{Spectrum, Tabulated};
 use clap::{Args, ValueEnum};
-use serde::Serialize;
 use std::path::PathBuf;
 
 /// `--height-unit`.
@@ -162,25 +162,23 @@ impl SurfaceArgs {
             }
         }
         let map = self.map()?;
-        let table = if let Some(p) = &self.psd {
-            Tabulated::load_csv(p, self.qmin, self.qmax)
+        let q_range = (self.qmin, self.qmax);
+        let spectrum = if let Some(p) = &self.psd {
+            Tabulated::load_csv(p, self.qmin, self.qmax).map(Spectrum::Tabulated)
         } else if let Some(s) = &map {
-            s.check_rough().map_err(|e| self.name_the_map(e))?;
-            let a = psd::analyse(s, &self.psd_options())?;
-            let (q, c): (Vec<f64>, Vec<f64>) = a.bins.iter().map(|b| (b.q, b.psd)).unzip();
             let name = self
                 .surface
                 .as_ref()
                 .map(|p| p.display().to_string())
                 .unwrap_or_default();
-            Tabulated::new(q, c, &name, self.qmin, self.qmax)
+            Spectrum::from_map(s, &self.psd_options(), q_range, &name).map_err(|e| self.name_the_map(e))
         } else {
             if self.qmin.is_some() || self.qmax.is_some() {
                 return Err(Error::field("--qmin/--qmax", "given", "only with --psd or --surface"));
             }
             return Ok((None, None));
         };
-        if let Ok(t) = &table {
+        if let Ok(Spectrum::Tabulated(t)) = &spectrum {
             if let Some(rows) = t.resampled_from {
                 eprintln!(
                     "asperity: {}: {rows} rows resampled once onto {} log-spaced q ({} per decade)",
@@ -190,7 +188,7 @@ impl SurfaceArgs {
                 );
             }
         }
-        let spectrum = table.map(Spectrum::Tabulated).map_err(rename_table_fields)?;
+        let spectrum = spectrum.map_err(rename_table_fields)?;
         Ok((Some(spectrum), map))
     }
 
@@ -286,79 +284,6 @@ pub struct PsdArgs {
     pub png: Option<PathBuf>,
 }
 
-/// The JSON of `psd`.
-#[derive(Debug, Serialize)]
-pub struct PsdOutput {
-    /// The file analysed.
-    pub file: String,
-    /// Points per row and rows (1 for a line scan).
-    pub points: [usize; 2],
-    /// Side L (m) of the x direction.
-    pub system_size_m: f64,
-    /// h_rms (m).
-    pub rms_height_m: f64,
-    /// ḡ.
-    pub rms_gradient: f64,
-    /// rms mean curvature ½∇²h (1/m).
-    pub rms_curvature: f64,
-    /// Fitted H (null without a fit).
-    pub hurst: Option<f64>,
-    /// Its standard error.
-    pub hurst_error: Option<f64>,
-    /// 2π/q_r of the fit (m).
-    pub rolloff_wavelength_m: Option<f64>,
-    /// [low, high] of λ_r (m).
-    pub rolloff_wavelength_range_m: Option<[f64; 2]>,
-    /// 2π/q_s of the fit (m).
-    pub short_wavelength_m: Option<f64>,
-    /// [low, high] of λ_s (m).
-    pub short_wavelength_range_m: Option<[f64; 2]>,
-    /// Whether the fit describes the map: a fit exists and its H lies in the self-affine range
-    /// (0, 1]; false for e.g. two separate bands of roughness, whose "H" means nothing.
-    pub self_affine: bool,
-    /// Whether the map was a line scan (1-D PSD converted to 2-D).
-    pub line_scan: bool,
-    /// The window ("hann" or "none").
-    pub window: String,
-    /// The detrending.
-    pub detrend: String,
-    /// Elapsed time (s).
-    pub elapsed_s: f64,
-    /// The radial average: q (1/m), psd (m^4), modes.
-    pub table: Vec<psd::PsdBin>,
-}
-
-fn output(file: &str, s: &Surface, a: &PsdAnalysis, elapsed: f64) -> PsdOutput {
-    let two_pi = 2.0 * std::f64::consts::PI;
-    let f = a.fit.as_ref();
-    PsdOutput {
-        file: file.to_string(),
-        points: [s.nx, s.ny],
-        system_size_m: s.size_x(),
-        rms_height_m: a.rms_height,
-        rms_gradient: a.rms_gradient,
-        rms_curvature: a.rms_curvature,
-        hurst: f.map(|f| f.hurst),
-        hurst_error: f.map(|f| f.hurst_error),
-        rolloff_wavelength_m: f.map(|f| two_pi / f.q_r),
-        rolloff_wavelength_range_m: f.map(|f| [two_pi / f.q_r_high, two_pi / f.q_r_low]),
-        short_wavelength_m: f.map(|f| two_pi / f.q_s),
-        short_wavelength_range_m: f.map(|f| [two_pi / f.q_s_high, two_pi / f.q_s]),
-        self_affine: is_self_affine(a),
-        line_scan: a.line_scan,
-        window: a.window.to_string(),
-        detrend: a.detrend.to_string(),
-        elapsed_s: elapsed,
-        table: a.bins.clone(),
-    }
-}
-
-/// Whether the analysis has a fit with H in the self-affine range.
-fn is_self_affine(a: &PsdAnalysis) -> bool {
-    a.fit
-        .is_some_and(|f| (HURST_RANGE.0..=HURST_RANGE.1).contains(&f.hurst))
-}
-
 /// Runs `asperity psd`.
 pub fn run_psd(args: &PsdArgs) -> Result<()> {
     let sa = SurfaceArgs {
@@ -368,32 +293,21 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
         periodic: args.periodic,
         ..SurfaceArgs::default()
     };
-    let start = std::time::Instant::now();
     let s = sa.map().map_err(name_the_file)?.expect("a file is given");
-    check_measurable(&s, &args.file)?;
     let opts = PsdOptions {
         bins_per_decade: args.bins_per_decade,
         ..sa.psd_options()
     };
-    let (lo, hi) = psd::BINS_PER_DECADE_RANGE;
-    if !(lo..=hi).contains(&args.bins_per_decade) {
-        return Err(Error::field(
-            "--bins-per-decade",
-            args.bins_per_decade,
-            format!("{lo} <= bins <= {hi}"),
-        ));
-    }
-    let a = psd::analyse(&s, &opts)?;
-    let out = output(&args.file.display().to_string(), &s, &a, start.elapsed().as_secs_f64());
+    let out = psd_report(&args.file.display().to_string(), &s, &opts).map_err(name_the_file)?;
     match args.format {
         PsdFormat::Json => emit(&serde_json::to_string_pretty(&out).expect("serialisable")),
         PsdFormat::Csv => {
-            let (q, c): (Vec<f64>, Vec<f64>) = a.bins.iter().map(|b| (b.q, b.psd)).unzip();
+            let (q, c) = out.columns();
             emit(asperity::surface::tabulated::to_csv(&q, &c).trim_end());
         }
         PsdFormat::Table => emit(&table(&out)),
     }
-    let spec = chart(&out, &a);
+    let spec = chart(&out);
     for (path, png) in [(&args.svg, false), (&args.png, true)] {
         if let Some(p) = path {
             let flag = if png { "--png" } else { "--svg" };
@@ -410,9 +324,19 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
     Ok(())
 }
 
-/// `psd` names its map by the positional FILE, not by `--surface` (which it has not).
+/// `psd` names its map by the positional FILE, not by `--surface` (which it has not), and
+/// its bins by `--bins-per-decade`.
 fn name_the_file(e: Error) -> Error {
     match e {
+        Error::Invalid {
+            field: Field::Other(k),
+            value,
+            allowed,
+        } if k == "bins_per_decade" => Error::Invalid {
+            field: Field::Other("--bins-per-decade".into()),
+            value,
+            allowed,
+        },
         Error::Invalid {
             field: Field::HeightMap,
             value,
@@ -426,35 +350,7 @@ fn name_the_file(e: Error) -> Error {
     }
 }
 
-/// Refuses a map whose moments overflow (heights of 1e200 m: h² is infinite), so that `psd`
-/// does not print inf or null where `run` refuses the same map.
-fn check_measurable(s: &Surface, file: &std::path::Path) -> Result<()> {
-    let name = file
-        .file_name()
-        .map_or_else(|| file.display().to_string(), |n| n.to_string_lossy().into_owned());
-    if s.heights.iter().all(|&h| h == s.heights[0]) {
-        return Err(Error::invalid_text(
-            Field::Other("FILE".into()),
-            format!("{name}: a flat map"),
-            "a height map with some roughness (a flat map has no spectrum)",
-        ));
-    }
-    let (h, g) = (s.rms_height(), s.rms_gradient());
-    if h.is_finite() && g.is_finite() {
-        return Ok(());
-    }
-    Err(Error::invalid_text(
-        Field::Other("FILE".into()),
-        format!(
-            "{name}: a map of rms height {} m, rms gradient {}",
-            asperity::error::fmt_value(h),
-            asperity::error::fmt_value(g)
-        ),
-        "a map whose heights' squares are finite (|h| below about 1e150; check the heights' unit)",
-    ))
-}
-
-fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::Chart {
+fn chart(o: &PsdReport) -> crate::chart::Chart {
     use crate::chart::{Chart, Scale, Series, SeriesStyle};
     use crate::looks::Role;
     // the explorer's psd chart's roles: the table as reference points, the fit as a closed form
@@ -467,19 +363,19 @@ fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::Chart {
     );
     c.series.push(Series::new(
         "C(q), radial average",
-        a.bins.iter().map(|b| (b.q, b.psd)).collect(),
+        o.table.iter().map(|b| (b.q, b.psd)).collect(),
         Role::Reference,
         SeriesStyle::Points,
     ));
-    if let (Some(f), Some(first), true) = (&a.fit, a.bins.first(), is_self_affine(a)) {
+    if let (Some(f), Some(first), true) = (&o.fit, o.table.first(), o.self_affine) {
         // the fitted law through the bins: plateau to q_r, power law to q_s
-        let c_r = a
-            .bins
+        let c_r = o
+            .table
             .iter()
             .filter(|b| b.q <= f.q_s)
             .map(|b| b.psd.ln() + f.exponent * (b.q / f.q_r).ln().max(0.0))
             .sum::<f64>()
-            / a.bins.iter().filter(|b| b.q <= f.q_s).count().max(1) as f64;
+            / o.table.iter().filter(|b| b.q <= f.q_s).count().max(1) as f64;
         let law = |q: f64| (c_r - f.exponent * (q / f.q_r).ln().max(0.0)).exp();
         c.series.push(Series::new(
             format!("self-affine fit, H = {}", crate::numfmt::sig(f.hurst, 3)),
@@ -491,7 +387,7 @@ fn chart(o: &PsdOutput, a: &PsdAnalysis) -> crate::chart::Chart {
     c
 }
 
-fn table(o: &PsdOutput) -> String {
+fn table(o: &PsdReport) -> String {
     let mut t = String::new();
     let mut line = |k: &str, v: String| t.push_str(&format!("{k:<24}{v}\n"));
     line("file", o.file.clone());

@@ -327,14 +327,7 @@ pub fn gfmd_run(
     map: Option<&Surface>,
     (steps, k): (&mut Steps, usize),
 ) -> Result<GfmdResult> {
-    let mut grid = preset
-        .gfmd
-        .as_ref()
-        .map(GridSpec::from_preset)
-        .unwrap_or(crate::cli::gfmd::DEFAULT_GRID);
-    if let Some(n) = choice.grid {
-        grid = grid.with_grid(n)?;
-    }
+    let grid = GridSpec::of_preset(preset, choice.grid.map(|n| n as i64))?;
     let setup = GfmdSetup {
         scene: scene.clone(),
         grid,

@@ -440,15 +440,8 @@ pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
 /// The GFMD setup of `g`: the scene on the preset's reduced grid (a 512² default), or on the
 /// measured `map` where one is given.
 pub fn gfmd_setup(preset: &Preset, scene: &Scene, map: Option<&Surface>) -> asperity::gfmd::GfmdSetup {
-    let grid = preset
-        .gfmd
-        .as_ref()
-        .map(asperity::gfmd::GridSpec::from_preset)
-        .unwrap_or(asperity::gfmd::GridSpec {
-            system_size_ratio: 2.0,
-            bandwidth: 32.0,
-            points_per_short_wavelength: 8.0,
-        });
+    // the preset's grid (or the default): without a grid asked for, nothing to refuse
+    let grid = asperity::gfmd::GridSpec::of_preset(preset, None).unwrap_or(asperity::gfmd::GridSpec::DEFAULT);
     asperity::gfmd::GfmdSetup {
         scene: scene.clone(),
         grid,
