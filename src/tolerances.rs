@@ -425,3 +425,10 @@ pub const GENERATED_NORM_F32_REL: f64 = 1e-5;
 /// H (absolute): the generator's amplitudes are the PSD's own (no scatter, only random phases),
 /// so the fit recovers H to the bins' discretisation (7e-4 measured at 128², λ_r/λ_s = 16).
 pub const GENERATED_HURST_ABS: f64 = 0.01;
+/// A load of a hard-wall GFMD sweep on a half-space against the single run at that load
+/// (relative a_r, ū and σ̄_c*): Polonsky–Keer relaxes both from the same uniform pressure, so
+/// they agree to round-off.
+pub const GFMD_SWEEP_SINGLE_REL: f64 = 1e-12;
+/// … and its solver steps at most this many times the single run's (the same relaxation; a
+/// warm pressure start took 6–3000 times as many on the test's loads).
+pub const GFMD_SWEEP_STEPS_FACTOR: usize = 2;
