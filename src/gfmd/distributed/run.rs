@@ -4,9 +4,9 @@
 use super::comm::{share, Comm};
 use super::fire::{solve_slab, SlabProblem};
 use super::map::{self, Slab};
-use super::measure::measure_slab;
 use super::slab_fft::SlabFft;
 use crate::error::{Error, Field, Result};
+use crate::gfmd::measure::measure_slab;
 use crate::gfmd::reduction::{check_map_moments, reduce, Reduction};
 use crate::gfmd::result::theory_comparison;
 use crate::gfmd::{GfmdOptions, GfmdResult, GfmdSetup, Progress, Stage};
