@@ -24,6 +24,7 @@
 //! solver tolerance (tested); with adhesion unloading keeps more contact than loading at the
 //! same load (contact hysteresis; tested).
 
+use super::distributed::comm::Solo;
 use super::sweep::PathSolver;
 use super::sweep::{GfmdSweepRow, Walker};
 use super::{prepare, GfmdOptions, GfmdSetup, Progress, Stage};
@@ -269,7 +270,7 @@ pub fn run_cycle(
     spec.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
-    let mut walker = Walker::new(prepare(setup)?, opts);
+    let mut walker = Walker::new(&Solo, prepare(setup)?, opts);
     let path = walk(&mut walker, spec, progress, cancel)?;
     let rising = spec.rising();
     let theory = theory_sweep(walker.prep.theory_scene(rising.from), &rising, cancel)?;

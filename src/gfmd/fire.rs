@@ -35,13 +35,11 @@
 //!
 
 use super::distributed::comm::Solo;
-use super::relax::{fire, Convolver, Start};
+use super::relax::{adhesion_units, fire, start_positions, stiffness_at, Convolver, Start};
 pub use super::relax::{Relaxation, DT_MAX};
 use super::{GfmdOptions, Problem, Progress, Solution, Stage};
 use crate::error::{Error, Result};
 use crate::numerics::fft2::RealFft2;
-use crate::surface::heightmap::wave_number_sq;
-use crate::theory::slab::slab_factor_at;
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
 
@@ -107,8 +105,8 @@ pub fn relax_from(
     let nh = plan.nh();
     let (phi, phi_max) = stiffness(problem, nh);
     let h: Vec<f64> = s.heights.iter().map(|x| x / da).collect();
-    let (adh_stress, inv_range) = adhesion_units(problem, da);
-    let mut w0 = start_positions(&h, start_gap, da)?;
+    let (adh_stress, inv_range) = adhesion_units(problem.gamma, problem.range, e, da);
+    let mut w0 = start_positions(&Solo, &h, start_gap, da)?;
     let mut pk_steps = 0;
     if problem.gamma == 0.0 && opts.method.uses_pk(n, problem.thickness.is_infinite()) {
         (w0, pk_steps) = pk_start(problem, opts, &mut plan, (&phi, &h), progress, cancel)?;
@@ -139,46 +137,16 @@ pub fn relax_from(
 /// largest value.
 fn stiffness(problem: &Problem<'_>, nh: usize) -> (Vec<f64>, f64) {
     let s = problem.surface;
-    let (nx, ny, da) = (s.nx, s.ny, s.spacing);
-    let mut phi = vec![0.0; nh * ny];
+    let mut phi = vec![0.0; nh * s.ny];
     let mut phi_max: f64 = 0.0;
     for kx in 0..nh {
-        for ky in 0..ny {
-            let q = wave_number_sq(kx, ky, nx, ny, da).sqrt();
-            let p = 0.5 * q * da * slab_factor_at(q, problem.thickness);
+        for ky in 0..s.ny {
+            let p = stiffness_at(kx, ky, (s.nx, s.ny, s.spacing), problem.thickness);
             phi[ky * nh + kx] = p;
             phi_max = phi_max.max(p);
         }
     }
     (phi, phi_max)
-}
-
-/// γ/ρ in E* and 1/ρ in 1/Δa (both 0 without adhesion).
-fn adhesion_units(problem: &Problem<'_>, da: f64) -> (f64, f64) {
-    match problem.gamma > 0.0 {
-        true => (problem.gamma / (problem.range * problem.modulus), da / problem.range),
-        false => (0.0, 0.0),
-    }
-}
-
-/// The body's start (in Δa): the flat body on the highest summit, or the heights plus a given
-/// gap (m, one finite value per node).
-fn start_positions(h: &[f64], start_gap: Option<&[f64]>, da: f64) -> Result<Vec<f64>> {
-    let n = h.len();
-    let hmax = h.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
-    let mut w0 = vec![hmax; n];
-    if let Some(g) = start_gap {
-        if g.len() != n || g.iter().any(|x| !x.is_finite()) {
-            return Err(Error::Unsupported(format!(
-                "a start gap needs {n} finite values (got {})",
-                g.len()
-            )));
-        }
-        for i in 0..n {
-            w0[i] = h[i] + (g[i] / da).max(0.0);
-        }
-    }
-    Ok(w0)
 }
 
 /// Relaxes the hard wall with Polonsky–Keer (`phi`: the stiffness, `h`: the heights in Δa)

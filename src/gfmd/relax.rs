@@ -21,11 +21,13 @@
 //! Under tension the loss of contact is detected from the smallest gap, reduced over the ranks
 //! (exact in any order) only while no node is on the wall under a tensile load.
 
-use super::distributed::comm::{all_min, all_sum_counts, chain_fold, Comm};
+use super::distributed::comm::{all_max, all_min, all_sum_counts, chain_fold, Comm};
 use super::distributed::slab_fft::SlabFft;
 use super::{GfmdOptions, Progress, Solution, Stage};
 use crate::error::{Error, Result};
 use crate::numerics::fft2::{RealFft2, SpectralKernel};
+use crate::surface::heightmap::wave_number_sq;
+use crate::theory::slab::slab_factor_at;
 use rustfft::num_complex::Complex64;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
@@ -114,6 +116,44 @@ pub(crate) struct Start {
     pub(crate) steps: usize,
     /// Δa (m) and E* (Pa), to return the solution in SI units.
     pub(crate) units: (f64, f64),
+}
+
+/// φ(q) = q f(qt)/2 (E*/Δa) of the mode (kx, ky) of an nx × ny map of spacing `da` on a body
+/// of thickness `thickness` (m).
+pub(crate) fn stiffness_at(kx: usize, ky: usize, (nx, ny, da): (usize, usize, f64), thickness: f64) -> f64 {
+    let q = wave_number_sq(kx, ky, nx, ny, da).sqrt();
+    0.5 * q * da * slab_factor_at(q, thickness)
+}
+
+/// γ/ρ in E* and 1/ρ in 1/Δa (both 0 without adhesion), from γ (J/m²), ρ (m), E* (Pa), Δa (m).
+pub(crate) fn adhesion_units(gamma: f64, range: f64, modulus: f64, da: f64) -> (f64, f64) {
+    match gamma > 0.0 {
+        true => (gamma / (range * modulus), da / range),
+        false => (0.0, 0.0),
+    }
+}
+
+/// The body's start on this rank's rows (in Δa): the flat body on the highest summit of the
+/// whole map, or the heights plus a given gap (m, one finite value per node of the rank).
+///
+/// # Errors
+/// [`Error::Unsupported`] for a start gap of the wrong length or with a non-finite value.
+pub(crate) fn start_positions(comm: &dyn Comm, h: &[f64], start_gap: Option<&[f64]>, da: f64) -> Result<Vec<f64>> {
+    let n = h.len();
+    let hmax = all_max(comm, h.iter().cloned().fold(f64::NEG_INFINITY, f64::max));
+    let mut w0 = vec![hmax; n];
+    if let Some(g) = start_gap {
+        if g.len() != n || g.iter().any(|x| !x.is_finite()) {
+            return Err(Error::Unsupported(format!(
+                "a start gap needs {n} finite values (got {})",
+                g.len()
+            )));
+        }
+        for i in 0..n {
+            w0[i] = h[i] + (g[i] / da).max(0.0);
+        }
+    }
+    Ok(w0)
 }
 
 /// Relaxes from `start` with FIRE (see the module docs); every rank calls it with the same

@@ -132,7 +132,7 @@ pub fn energy_slab(comm: &dyn Comm, heights: &[f64], nodes: usize, load: (f64, f
 }
 
 /// One relaxation at a time along a path of loads, warm-started from the last state held: the
-/// whole map ([`Walker`]) or one rank's slab (`distributed::sweep`'s walker). A load sweep
+/// whole map or one rank's slab ([`Walker`] on either [`LoadMap`]). A load sweep
 /// ([`walk_loads`]) and the load cycle's path (`cycle::walk`) are the same code for both, so
 /// the loads visited (bisections included) depend only on the rows, which are equal bit for
 /// bit.
@@ -151,18 +151,64 @@ pub(crate) trait PathSolver {
     fn strength(&self) -> Option<f64>;
 }
 
-/// The walker along a path on the whole map: the map, the last relaxed gap and the step count.
-pub(crate) struct Walker<'a> {
-    pub(crate) prep: Prepared,
+/// A map a [`Walker`] relaxes on: the whole map ([`Prepared`]) or one rank's slab of it
+/// (`distributed::run::PreparedSlab`).
+pub(crate) trait LoadMap {
+    /// Relaxes at p* = `p` from `start` (this rank's gap, m; `None`: first touch) and measures
+    /// an equilibrium: its row (every rank gets it) and the relaxation.
+    fn relax_at(
+        &self,
+        comm: &dyn Comm,
+        p: f64,
+        start: Option<&[f64]>,
+        opts: &GfmdOptions,
+        progress: &mut dyn FnMut(Progress),
+        cancel: &AtomicBool,
+    ) -> Result<(Option<GfmdSweepRow>, Relaxation)>;
+    /// The scene and the map's ḡ.
+    fn scene_and_gradient(&self) -> (&Scene, f64);
+}
+
+impl LoadMap for Prepared {
+    fn relax_at(
+        &self,
+        _comm: &dyn Comm,
+        p: f64,
+        start: Option<&[f64]>,
+        opts: &GfmdOptions,
+        progress: &mut dyn FnMut(Progress),
+        cancel: &AtomicBool,
+    ) -> Result<(Option<GfmdSweepRow>, Relaxation)> {
+        let problem = self.problem(p);
+        let out = relax_from(&problem, opts, start, progress, cancel)?;
+        let row = match &out {
+            Relaxation::Equilibrium(sol) => Some(GfmdSweepRow::measured(p, &problem, sol, opts)),
+            Relaxation::ContactLost { .. } => None,
+        };
+        Ok((row, out))
+    }
+
+    fn scene_and_gradient(&self) -> (&Scene, f64) {
+        (&self.scene, self.rms_gradient)
+    }
+}
+
+/// The walker along a path on a map (the whole map on one rank, or this rank's slab): the map,
+/// this rank's part of the last relaxed gap and the step count.
+pub(crate) struct Walker<'a, M> {
+    comm: &'a dyn Comm,
+    pub(crate) prep: M,
     opts: &'a GfmdOptions,
     gap: Option<Vec<f64>>,
     pub(crate) iterations: usize,
 }
 
-impl<'a> Walker<'a> {
-    /// A walker on the map of `prep` that has relaxed nothing yet.
-    pub(crate) fn new(prep: Prepared, opts: &'a GfmdOptions) -> Self {
+impl<'a, M: LoadMap> Walker<'a, M> {
+    /// A walker on `prep` (this rank's part of the map, on `comm`) that has relaxed nothing
+    /// yet.
+    pub(crate) fn new(comm: &'a dyn Comm, prep: M, opts: &'a GfmdOptions) -> Self {
         Walker {
+            comm,
             prep,
             opts,
             gap: None,
@@ -171,7 +217,7 @@ impl<'a> Walker<'a> {
     }
 }
 
-impl PathSolver for Walker<'_> {
+impl<M: LoadMap> PathSolver for Walker<'_, M> {
     fn step(
         &mut self,
         p: f64,
@@ -179,24 +225,24 @@ impl PathSolver for Walker<'_> {
         progress: &mut dyn FnMut(usize, Progress),
         cancel: &AtomicBool,
     ) -> Result<Option<GfmdSweepRow>> {
-        let problem = self.prep.problem(p);
-        let out = relax_from(
-            &problem,
-            self.opts,
+        let (row, out) = self.prep.relax_at(
+            self.comm,
+            p,
             self.gap.as_deref(),
+            self.opts,
             &mut |pr| progress(k, pr),
             cancel,
         )?;
         let Some(sol) = held(out, &mut self.iterations) else {
             return Ok(None);
         };
-        let row = GfmdSweepRow::measured(p, &problem, &sol, self.opts);
         self.gap = Some(sol.gap);
-        Ok(Some(row))
+        Ok(row)
     }
 
     fn strength(&self) -> Option<f64> {
-        strength(&self.prep.scene, self.prep.rms_gradient)
+        let (sc, g) = self.prep.scene_and_gradient();
+        (sc.gamma > 0.0).then(|| sc.gamma / sc.range / (sc.modulus * g))
     }
 }
 
@@ -213,11 +259,6 @@ pub(crate) fn held(out: Relaxation, iterations: &mut usize) -> Option<Solution> 
             None
         }
     }
-}
-
-/// γ/ρ in p* on a map of rms gradient `rms_gradient` (`None` without adhesion).
-pub(crate) fn strength(scene: &Scene, rms_gradient: f64) -> Option<f64> {
-    (scene.gamma > 0.0).then(|| scene.gamma / scene.range / (scene.modulus * rms_gradient))
 }
 
 /// The rows of a load sweep over `pressures` (all compressive), each load warm-started from
@@ -353,7 +394,7 @@ pub fn run_loads(
 ) -> Result<(Prepared, Vec<GfmdSweepRow>, usize)> {
     spec.validate()?;
     opts.validate()?;
-    let mut walker = Walker::new(prepare(setup)?, opts);
+    let mut walker = Walker::new(&Solo, prepare(setup)?, opts);
     let rows = walk_loads(&mut walker, &spec.pressures(), progress, cancel)?;
     Ok((walker.prep, rows, walker.iterations))
 }

@@ -3,7 +3,7 @@
 //!
 //! The path (loads, turning point, tensile steps p* = 0, −p*₁, −2p*₁, …, the bisections of
 //! the pull-off bracket, the jump-in) is the serial code ([`crate::gfmd::cycle`]'s `walk`)
-//! driven by the slab walker of [`super::sweep`]: each load relaxes with FIRE on slabs
+//! driven by the walker of [`crate::gfmd::sweep`] on this rank's slab: each load relaxes with FIRE on slabs
 //! ([`super::fire::relax_slab_from`], warm-started from the rank's rows of the last state
 //! held) and is measured by ordered reductions ([`super::sweep::row_slab`]). Every rank sees
 //! the same rows bit for bit, so every rank takes the same branch at every test of the path
@@ -12,9 +12,10 @@
 //! choice). The theory's sweep on the map runs on rank 0 only.
 
 use super::comm::Comm;
-use super::sweep::SlabWalker;
+use super::run::prepare_slab;
 use crate::error::Result;
 use crate::gfmd::cycle::{theory_sweep, walk, CycleSpec, GfmdCycle};
+use crate::gfmd::sweep::Walker;
 use crate::gfmd::{GfmdOptions, GfmdSetup, Progress};
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
@@ -36,7 +37,7 @@ pub fn run_cycle_slab(
     spec.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
-    let mut walker = SlabWalker::new(comm, setup, opts)?;
+    let mut walker = Walker::new(comm, prepare_slab(comm, setup)?, opts);
     let path = walk(&mut walker, spec, progress, cancel)?;
     let rising = spec.rising();
     let theory = if comm.rank() == 0 {

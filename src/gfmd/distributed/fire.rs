@@ -12,10 +12,8 @@ use super::comm::{all_max, all_min, Comm};
 use super::map::Slab;
 use super::slab_fft::SlabFft;
 use crate::error::{Error, Result};
-use crate::gfmd::relax::{fire, Convolver, Relaxation, Start};
+use crate::gfmd::relax::{adhesion_units, fire, start_positions, stiffness_at, Convolver, Relaxation, Start};
 use crate::gfmd::{GfmdOptions, Progress, Solution};
-use crate::surface::heightmap::wave_number_sq;
-use crate::theory::slab::slab_factor_at;
 use std::sync::atomic::AtomicBool;
 
 /// One contact problem on a slab (physical units, as [`crate::gfmd::Problem`]).
@@ -111,33 +109,15 @@ pub fn relax_slab_from(
     let mut phi_max: f64 = 0.0;
     for kx in c0..c1 {
         for ky in 0..ny {
-            let q = wave_number_sq(kx, ky, nx, ny, da).sqrt();
-            let p = 0.5 * q * da * slab_factor_at(q, problem.thickness);
+            let p = stiffness_at(kx, ky, (nx, ny, da), problem.thickness);
             kernel[(kx - c0) * ny + ky] = p * (1.0 / n as f64);
             phi_max = phi_max.max(p);
         }
     }
     let phi_max = all_max(comm, phi_max);
     let h: Vec<f64> = s.heights.iter().map(|x| x / da).collect();
-    let hmax = all_max(comm, h.iter().cloned().fold(f64::NEG_INFINITY, f64::max));
-    let (adh_stress, inv_range) = if problem.gamma > 0.0 {
-        (problem.gamma / (problem.range * e), da / problem.range)
-    } else {
-        (0.0, 0.0)
-    };
-    let nl = h.len();
-    let mut w0 = vec![hmax; nl];
-    if let Some(g) = start_gap {
-        if g.len() != nl || g.iter().any(|x| !x.is_finite()) {
-            return Err(Error::Unsupported(format!(
-                "a start gap needs {nl} finite values on this rank (got {})",
-                g.len()
-            )));
-        }
-        for i in 0..nl {
-            w0[i] = h[i] + (g[i] / da).max(0.0);
-        }
-    }
+    let (adh_stress, inv_range) = adhesion_units(problem.gamma, problem.range, e, da);
+    let w0 = start_positions(comm, &h, start_gap, da)?;
     let start = Start {
         nodes: n,
         offset: s.offset(),

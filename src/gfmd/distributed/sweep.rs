@@ -8,8 +8,10 @@ use super::fire::{relax_slab_from, SlabProblem};
 use super::run::{prepare_slab, PreparedSlab};
 use crate::error::Result;
 use crate::gfmd::measure::measure_slab;
-use crate::gfmd::sweep::{beside_theory, energy_slab, held, strength, walk_loads, GfmdSweep, GfmdSweepRow, PathSolver};
+use crate::gfmd::relax::Relaxation;
+use crate::gfmd::sweep::{beside_theory, energy_slab, walk_loads, GfmdSweep, GfmdSweepRow, LoadMap, Walker};
 use crate::gfmd::{GfmdOptions, GfmdSetup, Progress, Solution};
+use crate::input::scene::Scene;
 use crate::theory::sweep::SweepSpec;
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
@@ -38,56 +40,27 @@ pub fn row_slab(
     GfmdSweepRow::of(p, &m, energy_slab(comm, &problem.slab.heights, nodes, load, sol), sol)
 }
 
-/// The walker along a path on this rank's slab: the slab, this rank's rows of the last relaxed
-/// gap, and the step count (the serial [`crate::gfmd::sweep`] walker's twin).
-pub(crate) struct SlabWalker<'a> {
-    comm: &'a dyn Comm,
-    pub(crate) prep: PreparedSlab,
-    opts: &'a GfmdOptions,
-    gap: Option<Vec<f64>>,
-    pub(crate) iterations: usize,
-}
-
-impl<'a> SlabWalker<'a> {
-    /// A walker on this rank's slab of `setup`'s map that has relaxed nothing yet.
-    pub(crate) fn new(comm: &'a dyn Comm, setup: &GfmdSetup, opts: &'a GfmdOptions) -> Result<Self> {
-        Ok(SlabWalker {
-            comm,
-            prep: prepare_slab(comm, setup)?,
-            opts,
-            gap: None,
-            iterations: 0,
-        })
-    }
-}
-
-impl PathSolver for SlabWalker<'_> {
-    fn step(
-        &mut self,
+impl LoadMap for PreparedSlab {
+    fn relax_at(
+        &self,
+        comm: &dyn Comm,
         p: f64,
-        k: usize,
-        progress: &mut dyn FnMut(usize, Progress),
+        start: Option<&[f64]>,
+        opts: &GfmdOptions,
+        progress: &mut dyn FnMut(Progress),
         cancel: &AtomicBool,
-    ) -> Result<Option<GfmdSweepRow>> {
-        let problem = self.prep.problem(p);
-        let out = relax_slab_from(
-            self.comm,
-            &problem,
-            self.opts,
-            self.gap.as_deref(),
-            &mut |pr| progress(k, pr),
-            cancel,
-        )?;
-        let Some(sol) = held(out, &mut self.iterations) else {
-            return Ok(None);
+    ) -> Result<(Option<GfmdSweepRow>, Relaxation)> {
+        let problem = self.problem(p);
+        let out = relax_slab_from(comm, &problem, opts, start, progress, cancel)?;
+        let row = match &out {
+            Relaxation::Equilibrium(sol) => Some(row_slab(comm, p, self, &problem, sol, opts)),
+            Relaxation::ContactLost { .. } => None,
         };
-        let row = row_slab(self.comm, p, &self.prep, &problem, &sol, self.opts);
-        self.gap = Some(sol.gap);
-        Ok(Some(row))
+        Ok((row, out))
     }
 
-    fn strength(&self) -> Option<f64> {
-        strength(&self.prep.scene, self.prep.rms_gradient)
+    fn scene_and_gradient(&self) -> (&Scene, f64) {
+        (&self.scene, self.rms_gradient)
     }
 }
 
@@ -105,7 +78,7 @@ pub fn run_loads_slab(
 ) -> Result<(PreparedSlab, Vec<GfmdSweepRow>, usize)> {
     spec.validate()?;
     opts.validate()?;
-    let mut walker = SlabWalker::new(comm, setup, opts)?;
+    let mut walker = Walker::new(comm, prepare_slab(comm, setup)?, opts);
     let rows = walk_loads(&mut walker, &spec.pressures(), progress, cancel)?;
     Ok((walker.prep, rows, walker.iterations))
 }
