@@ -38,7 +38,7 @@ use super::distributed::comm::Solo;
 use super::relax::{adhesion_units, fire, start_positions, stiffness_at, Convolver, Start};
 pub use super::relax::{Relaxation, DT_MAX};
 use super::{GfmdOptions, Problem, Progress, Solution, Stage};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::numerics::fft2::RealFft2;
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
@@ -73,15 +73,7 @@ pub fn solve_from(
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
 ) -> Result<Solution> {
-    match relax_from(problem, opts, start_gap, progress, cancel)? {
-        Relaxation::Equilibrium(sol) => Ok(sol),
-        Relaxation::ContactLost { iterations } => Err(Error::NotConverged {
-            solver: crate::error::Solver::Gfmd,
-            reason: format!(
-                "contact lost after {iterations} steps: the tensile load is beyond what adhesion holds (past pull-off)"
-            ),
-        }),
-    }
+    relax_from(problem, opts, start_gap, progress, cancel)?.equilibrium()
 }
 
 /// [`solve_from`], telling a loss of contact under tension ([`Relaxation::ContactLost`])

@@ -73,6 +73,25 @@ pub enum Relaxation {
     },
 }
 
+impl Relaxation {
+    /// The equilibrium, or [`Error::NotConverged`] saying that contact was lost (past
+    /// pull-off).
+    ///
+    /// # Errors
+    /// As said, for [`Relaxation::ContactLost`].
+    pub fn equilibrium(self) -> Result<Solution> {
+        match self {
+            Relaxation::Equilibrium(sol) => Ok(sol),
+            Relaxation::ContactLost { iterations } => Err(Error::NotConverged {
+                solver: crate::error::Solver::Gfmd,
+                reason: format!(
+                    "contact lost after {iterations} steps: the tensile load is beyond what adhesion holds (past pull-off)"
+                ),
+            }),
+        }
+    }
+}
+
 /// The convolution φ⋆w of the rows a rank holds, with its kernel φ(q)/n.
 pub(crate) enum Convolver {
     /// The whole map (one rank): the kernel in [`RealFft2`]'s layout.

@@ -48,15 +48,7 @@ pub fn solve_slab(
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
 ) -> Result<Solution> {
-    match relax_slab_from(comm, problem, opts, start_gap, progress, cancel)? {
-        Relaxation::Equilibrium(sol) => Ok(sol),
-        Relaxation::ContactLost { iterations } => Err(Error::NotConverged {
-            solver: crate::error::Solver::Gfmd,
-            reason: format!(
-                "contact lost after {iterations} steps: the tensile load is beyond what adhesion holds (past pull-off)"
-            ),
-        }),
-    }
+    relax_slab_from(comm, problem, opts, start_gap, progress, cancel)?.equilibrium()
 }
 
 /// [`solve_slab`], telling a loss of contact under tension apart from an equilibrium, as
