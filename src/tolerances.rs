@@ -435,3 +435,10 @@ pub const W0_SCAN_REPRODUCED_ABS: f64 = 1e-4;
 /// h_rms and ḡ of a periodic single-mode cosine map reported by `report::psd` against A/√2 and
 /// A·k/√2 (relative): one mode on its own grid, no window, so the sums are exact to round-off.
 pub const REPORT_PSD_MOMENT_REL: f64 = 1e-10;
+/// A load of a hard-wall GFMD sweep on a half-space against the single run at that load
+/// (relative a_r, ū and σ̄_c*): Polonsky–Keer relaxes both from the same uniform pressure, so
+/// they agree to round-off.
+pub const GFMD_SWEEP_SINGLE_REL: f64 = 1e-12;
+/// … and its solver steps at most this many times the single run's (the same relaxation; a
+/// warm pressure start took 6–3000 times as many on the test's loads).
+pub const GFMD_SWEEP_STEPS_FACTOR: usize = 2;

@@ -184,6 +184,61 @@ fn sweep_equals_single_runs() {
     assert!(th.rows.iter().all(|r| r.mean_gap_rel > 0.0));
 }
 
+/// A hard-wall sweep in small load steps (system I, 32², 20 loads over p* 0.01…0.02, where
+/// most steps leave the contact unchanged) gives every single run's answer, in as many steps:
+/// no load spends thousands of iterations on a contact that no longer changes.
+#[test]
+fn small_steps_cost_what_single_runs_cost() {
+    use asperity::tolerances::{GFMD_SWEEP_SINGLE_REL, GFMD_SWEEP_STEPS_FACTOR};
+    let preset = Preset::resolve("system-1").unwrap();
+    let setup = GfmdSetup {
+        scene: preset.scene().unwrap().without_adhesion(),
+        grid: GridSpec::of_preset(&preset, Some(32)).unwrap(),
+        seed: 1,
+        surface: None,
+        rescale: true,
+    };
+    let (cancel, o) = (AtomicBool::new(false), GfmdOptions::default());
+    let spec = SweepSpec {
+        from: 0.01,
+        to: 0.02,
+        points: 20,
+    };
+    let sw = run_sweep(&setup, &spec, &o, &mut |_, _| {}, &cancel).unwrap();
+    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+    for (row, p) in sw.rows.iter().zip(spec.pressures()) {
+        let single = gfmd::run(
+            &GfmdSetup {
+                scene: setup.scene.clone().with_pressure(p).unwrap(),
+                ..setup.clone()
+            },
+            &o,
+            &mut |_| {},
+            &cancel,
+        )
+        .unwrap();
+        eprintln!(
+            "p* = {p:.4e}: a_r {} vs {}, steps {} vs {}",
+            row.a_r, single.stats.a_r, row.iterations, single.iterations
+        );
+        assert!(rel(row.a_r, single.stats.a_r) <= GFMD_SWEEP_SINGLE_REL, "p* {p}");
+        assert!(
+            rel(row.mean_gap_rel, single.mean_gap_rel) <= GFMD_SWEEP_SINGLE_REL,
+            "p* {p}"
+        );
+        assert!(
+            rel(row.mean_contact_stress, single.stats.mean_contact_stress) <= GFMD_SWEEP_SINGLE_REL,
+            "p* {p}"
+        );
+        assert!(
+            row.iterations <= GFMD_SWEEP_STEPS_FACTOR * single.iterations,
+            "p* {p}: {} steps against {}",
+            row.iterations,
+            single.iterations
+        );
+    }
+}
+
 /// Polonsky–Keer and FIRE reach the same configuration (same criterion), and a run does not
 /// depend on the number of threads, bit for bit.
 #[test]

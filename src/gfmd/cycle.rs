@@ -8,7 +8,7 @@
 //! 2. **unloading**: the same loads back down to `from` (a plain unloading sweep, `from > to`,
 //!    relaxes at `from` from first touch and steps down to `to`);
 //! 3. **tension** (a cycle with adhesion): p* = 0, then −p*₁, −2p*₁, −4p*₁, … until the body
-//!    leaves the substrate ([`Relaxation::ContactLost`]: no equilibrium with contact at that
+//!    leaves the substrate ([`super::fire::Relaxation::ContactLost`]: no equilibrium with contact at that
 //!    load), then bisections between the last load held and the first one lost, each
 //!    warm-started from the last state held (so the path stays monotone), until the bracket is
 //!    [`PULL_OFF_REL`] of the pull-off wide (at most [`PULL_OFF_BISECTIONS`]).
@@ -24,9 +24,10 @@
 //! solver tolerance (tested); with adhesion unloading keeps more contact than loading at the
 //! same load (contact hysteresis; tested).
 
-use super::fire::{relax_from, Relaxation};
-use super::sweep::GfmdSweepRow;
-use super::{prepare, GfmdOptions, GfmdSetup, Prepared, Progress, Stage};
+use super::distributed::comm::Solo;
+use super::sweep::PathSolver;
+use super::sweep::{GfmdSweepRow, Walker};
+use super::{prepare, GfmdOptions, GfmdSetup, Progress, Stage};
 use crate::error::{Error, Field, Result};
 use crate::surface::heightmap::Surface;
 pub use crate::theory::cycle::PathBranch;
@@ -156,68 +157,6 @@ pub struct GfmdCycle {
     pub surface: Option<Surface>,
 }
 
-/// One relaxation at a time along a path, warm-started from the last state held: the serial
-/// map ([`Walker`]) or one rank's slab ([`super::distributed::cycle`]). The path itself
-/// ([`walk`]) is the same code for both, so the loads visited (bisections included) depend
-/// only on the rows, which are equal bit for bit.
-pub(crate) trait PathSolver {
-    /// Relaxes at p* = `p` (row index `k` for progress) from the last state held; `None` when
-    /// contact is lost (the state is kept).
-    fn step(
-        &mut self,
-        p: f64,
-        k: usize,
-        progress: &mut dyn FnMut(usize, Progress),
-        cancel: &AtomicBool,
-    ) -> Result<Option<GfmdSweepRow>>;
-    /// The interaction's theoretical strength γ/ρ in p* (by the map's ḡ); `None` without
-    /// adhesion.
-    fn strength(&self) -> Option<f64>;
-}
-
-/// The walker along a path on the whole map: the map, the last relaxed gap and the step count.
-struct Walker<'a> {
-    prep: Prepared,
-    opts: &'a GfmdOptions,
-    gap: Option<Vec<f64>>,
-    iterations: usize,
-}
-
-impl PathSolver for Walker<'_> {
-    fn step(
-        &mut self,
-        p: f64,
-        k: usize,
-        progress: &mut dyn FnMut(usize, Progress),
-        cancel: &AtomicBool,
-    ) -> Result<Option<GfmdSweepRow>> {
-        let problem = self.prep.problem(p);
-        let out = relax_from(
-            &problem,
-            self.opts,
-            self.gap.as_deref(),
-            &mut |pr| progress(k, pr),
-            cancel,
-        )?;
-        let sol = match out {
-            Relaxation::Equilibrium(sol) => sol,
-            Relaxation::ContactLost { iterations } => {
-                self.iterations += iterations;
-                return Ok(None);
-            }
-        };
-        self.iterations += sol.iterations;
-        let row = GfmdSweepRow::measured(p, &problem, &sol, self.opts);
-        self.gap = Some(sol.gap);
-        Ok(Some(row))
-    }
-
-    fn strength(&self) -> Option<f64> {
-        let sc = &self.prep.scene;
-        (sc.gamma > 0.0).then(|| sc.gamma / sc.range / (sc.modulus * self.prep.rms_gradient))
-    }
-}
-
 /// The GFMD part of a path: its rows, pull-off and jump-in.
 pub(crate) struct PathWalk {
     rows: Vec<CycleRow>,
@@ -331,12 +270,7 @@ pub fn run_cycle(
     spec.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
-    let mut walker = Walker {
-        prep: prepare(setup)?,
-        opts,
-        gap: None,
-        iterations: 0,
-    };
+    let mut walker = Walker::new(&Solo, prepare(setup)?, opts);
     let path = walk(&mut walker, spec, progress, cancel)?;
     let rising = spec.rising();
     let theory = theory_sweep(walker.prep.theory_scene(rising.from), &rising, cancel)?;

@@ -9,7 +9,10 @@
 //!   width, so that ∫Pr dσ* = a_r exactly;
 //! - ū = ⟨g⟩ over all nodes (m), and ū/h_rms.
 //!
+//! One implementation serves the whole map and the slabs of a distributed run
+//! ([`measure_slab`]; [`measure()`] is its one-rank case).
 
+use super::distributed::comm::{all_max, all_min, all_sum_counts, chain_sum, Comm, Solo};
 use super::{GfmdOptions, Problem, Solution};
 use crate::contact::{ContactStats, PrCurve};
 use serde::Serialize;
@@ -31,35 +34,55 @@ pub struct Measurements {
     pub stress_unit: f64,
 }
 
-/// Measures a relaxed contact (see the module docs for the definitions).
+/// Measures a relaxed contact (see the module docs for the definitions): [`measure_slab`] on
+/// one rank holding the whole map.
 pub fn measure(problem: &Problem<'_>, sol: &Solution, opts: &GfmdOptions) -> Measurements {
     let s = problem.surface;
-    let n = sol.gap.len();
-    let unit = problem.modulus * s.rms_gradient();
-    let contact: Vec<bool> = sol
-        .on_wall
-        .iter()
-        .zip(&sol.gap)
-        .map(|(&w, &g)| w || (opts.contact_gap > 0.0 && g <= opts.contact_gap))
-        .collect();
+    measure_slab(
+        &Solo,
+        sol,
+        opts,
+        sol.gap.len(),
+        problem.modulus,
+        s.rms_gradient(),
+        s.rms_height(),
+    )
+}
+
+/// Measures a relaxed contact from this rank's rows of `sol` (`nodes` in the whole map;
+/// `modulus` E*; ḡ and h_rms of the whole map); every rank gets the result. The sums run in
+/// node order across the ranks ([`chain_sum`]), the extremes and the histogram counts are exact
+/// in any order, so the result does not depend on the number of ranks, bit for bit;
+/// [`measure()`] is this on one rank.
+pub fn measure_slab(
+    comm: &dyn Comm,
+    sol: &Solution,
+    opts: &GfmdOptions,
+    nodes: usize,
+    modulus: f64,
+    rms_gradient: f64,
+    rms_height: f64,
+) -> Measurements {
+    let n = nodes;
+    let unit = modulus * rms_gradient;
     let stresses: Vec<f64> = sol
         .stress
         .iter()
-        .zip(&contact)
-        .filter(|(_, &c)| c)
+        .zip(sol.on_wall.iter().zip(&sol.gap))
+        .filter(|(_, (&w, &g))| w || (opts.contact_gap > 0.0 && g <= opts.contact_gap))
         .map(|(&x, _)| x / unit)
         .collect();
-    let nc = stresses.len();
+    let nc = all_sum_counts(comm, &[stresses.len()])[0];
     let (mean, var) = if nc > 0 {
-        let m = stresses.iter().sum::<f64>() / nc as f64;
-        (m, stresses.iter().map(|x| (x - m).powi(2)).sum::<f64>() / nc as f64)
+        let m = chain_sum(comm, stresses.iter().copied()) / nc as f64;
+        (m, chain_sum(comm, stresses.iter().map(|x| (x - m).powi(2))) / nc as f64)
     } else {
         (0.0, 0.0)
     };
-    let mean_gap = sol.gap.iter().sum::<f64>() / n as f64;
+    let mean_gap = chain_sum(comm, sol.gap.iter().copied()) / n as f64;
     let pr = if nc > 0 {
-        let lo = stresses.iter().cloned().fold(0.0, f64::min);
-        let hi = stresses.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+        let lo = all_min(comm, stresses.iter().cloned().fold(0.0, f64::min));
+        let hi = all_max(comm, stresses.iter().cloned().fold(f64::NEG_INFINITY, f64::max));
         let bins = opts.pr_bins.max(1);
         let width = if hi > lo {
             (hi - lo) / bins as f64 * (1.0 + 1e-12)
@@ -71,6 +94,7 @@ pub fn measure(problem: &Problem<'_>, sol: &Solution, opts: &GfmdOptions) -> Mea
             let k = (((x - lo) / width) as usize).min(bins - 1);
             counts[k] += 1;
         }
+        let counts = all_sum_counts(comm, &counts);
         PrCurve {
             sigma: (0..bins).map(|k| lo + (k as f64 + 0.5) * width).collect(),
             density: counts.iter().map(|&c| c as f64 / (n as f64 * width)).collect(),
@@ -86,7 +110,7 @@ pub fn measure(problem: &Problem<'_>, sol: &Solution, opts: &GfmdOptions) -> Mea
             pr,
         },
         mean_gap,
-        mean_gap_rel: mean_gap / s.rms_height(),
+        mean_gap_rel: mean_gap / rms_height,
         contact_nodes: nc,
         stress_unit: unit,
     }

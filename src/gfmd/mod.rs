@@ -25,7 +25,8 @@
 //! ## Files
 //!
 //! - [`problem`]: the problem, options, progress and relaxed configuration;
-//! - [`fire`]: the FIRE minimiser ([`solve`], [`solve_from`] with a warm start), which hands
+//! - [`fire`]: the FIRE minimiser on the whole map ([`solve`], [`solve_from`] with a warm
+//!   start; its iterations are [`relax`], written once for one rank and for slabs), which hands
 //!   the hard wall to [`pk`] (Polonsky–Keer constrained CG) first when there is no adhesion;
 //! - [`mod@measure`]: a_r, σ̄_c*, ⟨δσ_c²⟩*, Pr(σ*), ū;
 //! - [`grid`] and [`reduction`]: the reduced grid, and γ_s, ρ rescaled so that the reduced
@@ -59,6 +60,7 @@ pub mod measure;
 pub mod pk;
 pub mod problem;
 pub mod reduction;
+pub mod relax;
 pub mod result;
 pub mod sweep;
 

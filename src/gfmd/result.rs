@@ -8,7 +8,7 @@ use crate::error::{Error, Field, Result};
 use crate::input::scene::Scene;
 use crate::surface::heightmap::{self, Surface};
 use crate::surface::shells::THEORY_SHELL_LN;
-use crate::surface::spectrum::Spectrum;
+use crate::surface::spectrum::{Discrete, Spectrum};
 use crate::theory::engine;
 use crate::theory::gap;
 use serde::Serialize;
@@ -214,15 +214,12 @@ impl Prepared {
     /// The problem at reduced pressure `pressure` (p* by the map's ḡ).
     pub fn problem(&self, pressure: f64) -> Problem<'_> {
         let sc = &self.scene;
+        let (thickness, pressure) = body_and_load(sc, self.q_r, self.rms_gradient, pressure);
         Problem {
             surface: &self.surface,
             modulus: sc.modulus,
-            thickness: if sc.thickness_qr.is_infinite() {
-                f64::INFINITY
-            } else {
-                sc.thickness_qr / self.q_r
-            },
-            pressure: pressure * sc.modulus * self.rms_gradient,
+            thickness,
+            pressure,
             gamma: sc.gamma,
             range: sc.range,
         }
@@ -233,14 +230,31 @@ impl Prepared {
     /// moments ([`crate::surface::shells`]).
     pub fn theory_scene(&self, pressure: f64) -> Result<Scene> {
         let d = self.surface.discrete_spectrum(self.q_r)?;
-        let mut scene = Scene {
-            spectrum: Spectrum::Discrete(d.coarse_grained(THEORY_SHELL_LN)),
-            pressure,
-            ..self.scene.clone()
-        };
-        scene.resolve_model();
-        Ok(scene)
+        Ok(scene_on_spectrum(&self.scene, &d, pressure))
     }
+}
+
+/// The body's thickness t (m; ∞ for a half-space) and the load p₀ (Pa) of `scene` at
+/// p* = `pressure` on a map with q_r and ḡ = `rms_gradient` (the whole map and its slabs).
+pub(crate) fn body_and_load(scene: &Scene, q_r: f64, rms_gradient: f64, pressure: f64) -> (f64, f64) {
+    let thickness = if scene.thickness_qr.is_infinite() {
+        f64::INFINITY
+    } else {
+        scene.thickness_qr / q_r
+    };
+    (thickness, pressure * scene.modulus * rms_gradient)
+}
+
+/// `scene` on a map's discrete spectrum `d` at p* = `pressure`, its mode groups merged into
+/// shells of [`THEORY_SHELL_LN`] in ln q (the whole map and its slabs).
+pub(crate) fn scene_on_spectrum(scene: &Scene, d: &Discrete, pressure: f64) -> Scene {
+    let mut scene = Scene {
+        spectrum: Spectrum::Discrete(d.coarse_grained(THEORY_SHELL_LN)),
+        pressure,
+        ..scene.clone()
+    };
+    scene.resolve_model();
+    scene
 }
 
 /// Generates (or takes and checks) the map of `setup`, reducing the scene to its grid (see

@@ -4,7 +4,11 @@
 //! discrete spectrum (including its mean gap [S-12]) beside it.
 //!
 //! Without adhesion the minimum at each load is unique, so a sweep gives the single runs'
-//! answers to the solver tolerance (tested), in fewer steps. With adhesion the warm start
+//! answers to the solver tolerance (tested). On a half-space Polonsky–Keer relaxes each load
+//! from the uniform pressure ([`super::solve_from`]: a warm pressure start could stall for
+//! tens of thousands of iterations on a contact that no longer changed), so every load costs
+//! what a single run costs, 20–160 iterations, and is the single run's answer bit for bit
+//! (tested); FIRE (slabs, `Method::Fire`) starts from the previous gap. With adhesion the warm start
 //! follows the loading branch from the previous load, which may differ from a cold start
 //! (first touch at the final load): contact hysteresis, not an error.
 //!
@@ -13,8 +17,11 @@
 //! as the theory's U = Σ u_ela − a_rγ_s [S-11] counts it. The elastic part is
 //! ½⟨(w − w̄)(σ − p₀)⟩ over the nodes (Parseval; σ − p₀ = φ⋆w).
 
-use super::{measure, prepare, solve_from, GfmdOptions, GfmdSetup, Prepared, Problem, Progress, Solution, Stage};
+use super::distributed::comm::{chain_sum, Comm, Solo};
+use super::fire::{relax_from, Relaxation};
+use super::{measure, prepare, GfmdOptions, GfmdSetup, Measurements, Prepared, Problem, Progress, Solution, Stage};
 use crate::error::{Error, Result};
+use crate::input::scene::Scene;
 use crate::surface::heightmap::Surface;
 use crate::theory::engine::Options;
 use crate::theory::sweep::{self, Sweep, SweepSpec};
@@ -76,14 +83,18 @@ impl GfmdSweepRow {
     /// The row of a contact relaxed at p* = `p` (measured with [`measure()`], the energy with
     /// [`energy`]).
     pub fn measured(p: f64, problem: &Problem<'_>, sol: &Solution, opts: &GfmdOptions) -> GfmdSweepRow {
-        let m = measure(problem, sol, opts);
+        GfmdSweepRow::of(p, &measure(problem, sol, opts), energy(problem, sol), sol)
+    }
+
+    /// The row at p* = `p` from the measurements `m` and the energy `u` of the relaxation `sol`.
+    pub fn of(p: f64, m: &Measurements, u: f64, sol: &Solution) -> GfmdSweepRow {
         GfmdSweepRow {
             p,
             a_r: m.stats.a_r,
             mean_gap_rel: m.mean_gap_rel,
             mean_gap: m.mean_gap,
             mean_contact_stress: m.stats.mean_contact_stress,
-            elastic_energy: energy(problem, sol),
+            elastic_energy: u,
             converged: true,
             contact_stress_variance: m.stats.contact_stress_variance,
             iterations: sol.iterations,
@@ -95,21 +106,230 @@ impl GfmdSweepRow {
 /// U = ½⟨(w − w̄)(σ − p₀)⟩ + ⟨v(g)⟩ of a relaxed contact (J/m², see the module docs).
 pub fn energy(problem: &Problem<'_>, sol: &Solution) -> f64 {
     let h = &problem.surface.heights;
-    let n = h.len() as f64;
-    let w: Vec<f64> = sol.gap.iter().zip(h).map(|(g, h)| g + h).collect();
-    let wbar = w.iter().sum::<f64>() / n;
-    let el = 0.5
-        * w.iter()
-            .zip(&sol.stress)
-            .map(|(w, s)| (w - wbar) * (s - problem.pressure))
-            .sum::<f64>()
-        / n;
-    let inter = if problem.gamma > 0.0 {
-        -problem.gamma * sol.gap.iter().map(|g| (-g / problem.range).exp()).sum::<f64>() / n
+    energy_slab(&Solo, h, h.len(), (problem.pressure, problem.gamma, problem.range), sol)
+}
+
+/// [`energy`] from this rank's rows: `heights` and `sol` hold the rank's nodes, `nodes` is the
+/// whole map's count, `load` is (p₀ in Pa, γ in J/m², ρ in m). The sums run in node order
+/// across the ranks ([`chain_sum`]), so the energy does not depend on the number of ranks, bit
+/// for bit; every rank gets it.
+pub fn energy_slab(comm: &dyn Comm, heights: &[f64], nodes: usize, load: (f64, f64, f64), sol: &Solution) -> f64 {
+    let (pressure, gamma, range) = load;
+    let n = nodes as f64;
+    let w: Vec<f64> = sol.gap.iter().zip(heights).map(|(g, h)| g + h).collect();
+    let wbar = chain_sum(comm, w.iter().copied()) / n;
+    let el =
+        0.5 * chain_sum(
+            comm,
+            w.iter().zip(&sol.stress).map(|(w, s)| (w - wbar) * (s - pressure)),
+        ) / n;
+    let inter = if gamma > 0.0 {
+        -gamma * chain_sum(comm, sol.gap.iter().map(|g| (-g / range).exp())) / n
     } else {
         0.0
     };
     el + inter
+}
+
+/// One relaxation at a time along a path of loads, warm-started from the last state held: the
+/// whole map or one rank's slab ([`Walker`] on either [`LoadMap`]). A load sweep
+/// ([`walk_loads`]) and the load cycle's path (`cycle::walk`) are the same code for both, so
+/// the loads visited (bisections included) depend only on the rows, which are equal bit for
+/// bit.
+pub(crate) trait PathSolver {
+    /// Relaxes at p* = `p` (row index `k` for progress) from the last state held; `None` when
+    /// contact is lost (the state is kept).
+    fn step(
+        &mut self,
+        p: f64,
+        k: usize,
+        progress: &mut dyn FnMut(usize, Progress),
+        cancel: &AtomicBool,
+    ) -> Result<Option<GfmdSweepRow>>;
+    /// The interaction's theoretical strength γ/ρ in p* (by the map's ḡ); `None` without
+    /// adhesion.
+    fn strength(&self) -> Option<f64>;
+}
+
+/// A map a [`Walker`] relaxes on: the whole map ([`Prepared`]) or one rank's slab of it
+/// (`distributed::run::PreparedSlab`).
+pub(crate) trait LoadMap {
+    /// Relaxes at p* = `p` from `start` (this rank's gap, m; `None`: first touch) and measures
+    /// an equilibrium: its row (every rank gets it) and the relaxation.
+    fn relax_at(
+        &self,
+        comm: &dyn Comm,
+        p: f64,
+        start: Option<&[f64]>,
+        opts: &GfmdOptions,
+        progress: &mut dyn FnMut(Progress),
+        cancel: &AtomicBool,
+    ) -> Result<(Option<GfmdSweepRow>, Relaxation)>;
+    /// The scene and the map's ḡ.
+    fn scene_and_gradient(&self) -> (&Scene, f64);
+}
+
+impl LoadMap for Prepared {
+    fn relax_at(
+        &self,
+        _comm: &dyn Comm,
+        p: f64,
+        start: Option<&[f64]>,
+        opts: &GfmdOptions,
+        progress: &mut dyn FnMut(Progress),
+        cancel: &AtomicBool,
+    ) -> Result<(Option<GfmdSweepRow>, Relaxation)> {
+        let problem = self.problem(p);
+        let out = relax_from(&problem, opts, start, progress, cancel)?;
+        let row = match &out {
+            Relaxation::Equilibrium(sol) => Some(GfmdSweepRow::measured(p, &problem, sol, opts)),
+            Relaxation::ContactLost { .. } => None,
+        };
+        Ok((row, out))
+    }
+
+    fn scene_and_gradient(&self) -> (&Scene, f64) {
+        (&self.scene, self.rms_gradient)
+    }
+}
+
+/// The walker along a path on a map (the whole map on one rank, or this rank's slab): the map,
+/// this rank's part of the last relaxed gap and the step count.
+pub(crate) struct Walker<'a, M> {
+    comm: &'a dyn Comm,
+    pub(crate) prep: M,
+    opts: &'a GfmdOptions,
+    gap: Option<Vec<f64>>,
+    pub(crate) iterations: usize,
+}
+
+impl<'a, M: LoadMap> Walker<'a, M> {
+    /// A walker on `prep` (this rank's part of the map, on `comm`) that has relaxed nothing
+    /// yet.
+    pub(crate) fn new(comm: &'a dyn Comm, prep: M, opts: &'a GfmdOptions) -> Self {
+        Walker {
+            comm,
+            prep,
+            opts,
+            gap: None,
+            iterations: 0,
+        }
+    }
+}
+
+impl<M: LoadMap> PathSolver for Walker<'_, M> {
+    fn step(
+        &mut self,
+        p: f64,
+        k: usize,
+        progress: &mut dyn FnMut(usize, Progress),
+        cancel: &AtomicBool,
+    ) -> Result<Option<GfmdSweepRow>> {
+        let (row, out) = self.prep.relax_at(
+            self.comm,
+            p,
+            self.gap.as_deref(),
+            self.opts,
+            &mut |pr| progress(k, pr),
+            cancel,
+        )?;
+        let Some(sol) = held(out, &mut self.iterations) else {
+            return Ok(None);
+        };
+        self.gap = Some(sol.gap);
+        Ok(row)
+    }
+
+    fn strength(&self) -> Option<f64> {
+        let (sc, g) = self.prep.scene_and_gradient();
+        (sc.gamma > 0.0).then(|| sc.gamma / sc.range / (sc.modulus * g))
+    }
+}
+
+/// The equilibrium of a relaxation, its steps added to `iterations` (`None` when contact was
+/// lost).
+pub(crate) fn held(out: Relaxation, iterations: &mut usize) -> Option<Solution> {
+    match out {
+        Relaxation::Equilibrium(sol) => {
+            *iterations += sol.iterations;
+            Some(sol)
+        }
+        Relaxation::ContactLost { iterations: it } => {
+            *iterations += it;
+            None
+        }
+    }
+}
+
+/// The rows of a load sweep over `pressures` (all compressive), each load warm-started from
+/// the one before.
+///
+/// # Errors
+/// As the solver's; [`Error::NotConverged`] if contact were lost (no equilibrium).
+pub(crate) fn walk_loads(
+    solver: &mut dyn PathSolver,
+    pressures: &[f64],
+    progress: &mut dyn FnMut(usize, Progress),
+    cancel: &AtomicBool,
+) -> Result<Vec<GfmdSweepRow>> {
+    let mut rows = Vec::with_capacity(pressures.len());
+    for (k, &p) in pressures.iter().enumerate() {
+        let row = solver
+            .step(p, k, progress, cancel)?
+            .ok_or_else(|| Error::NotConverged {
+                solver: crate::error::Solver::Gfmd,
+                reason: format!("contact lost at p* = {p:e}: a sweep's loads hold no tension"),
+            })?;
+        rows.push(row);
+    }
+    Ok(rows)
+}
+
+/// The sweep of `rows` with the theory's sweep on the map beside it: `theory` is the scene on
+/// the map's spectrum (or why there is none), `None` where this rank does not evaluate it;
+/// `map` is (grid side, seed, reduction). `progress` gets the one [`Stage::Theory`] report.
+///
+/// # Errors
+/// [`Error::Cancelled`] only (any other failure of the theory is reported beside the rows).
+pub(crate) fn beside_theory(
+    rows: Vec<GfmdSweepRow>,
+    theory: Option<Result<Scene>>,
+    spec: &SweepSpec,
+    map: (usize, Option<u64>, Option<super::reduction::Reduction>),
+    (iterations, t0): (usize, Instant),
+    progress: &mut dyn FnMut(usize, Progress),
+    cancel: &AtomicBool,
+) -> Result<GfmdSweep> {
+    if let Some(last) = rows.last() {
+        progress(
+            rows.len(),
+            Progress {
+                stage: Stage::Theory,
+                iteration: last.iterations,
+                residual: last.residual,
+                contact_fraction: last.a_r,
+            },
+        );
+    }
+    let (theory, theory_error) =
+        match theory.map(|sc| sc.and_then(|sc| sweep::sweep(&sc, spec, &Options::default(), Some(cancel)))) {
+            None => (None, None),
+            Some(Err(Error::Cancelled)) => return Err(Error::Cancelled),
+            Some(Ok(s)) => (Some(s), None),
+            Some(Err(e)) => (None, Some(e.to_string())),
+        };
+    let (grid, seed, reduction) = map;
+    Ok(GfmdSweep {
+        rows,
+        grid,
+        seed,
+        reduction,
+        theory,
+        theory_error,
+        iterations,
+        elapsed_s: t0.elapsed().as_secs_f64(),
+        surface: None,
+    })
 }
 
 /// Runs the loads of `spec` on the map of `setup`, warm-starting each from the previous one
@@ -150,35 +370,16 @@ pub fn run_sweep(
 ) -> Result<GfmdSweep> {
     let t0 = Instant::now();
     let (prep, rows, iterations) = run_loads(setup, spec, opts, progress, cancel)?;
-    if let Some(last) = rows.last() {
-        progress(
-            rows.len(),
-            Progress {
-                stage: Stage::Theory,
-                iteration: last.iterations,
-                residual: last.residual,
-                contact_fraction: last.a_r,
-            },
-        );
-    }
-    let (theory, theory_error) = match prep
-        .theory_scene(spec.from)
-        .and_then(|sc| sweep::sweep(&sc, spec, &Options::default(), Some(cancel)))
-    {
-        Err(Error::Cancelled) => return Err(Error::Cancelled),
-        Ok(s) => (Some(s), None),
-        Err(e) => (None, Some(e.to_string())),
-    };
+    let map = (
+        prep.surface.nx,
+        setup.surface.is_none().then_some(setup.seed),
+        prep.reduction.clone(),
+    );
+    let theory = Some(prep.theory_scene(spec.from));
+    let sw = beside_theory(rows, theory, spec, map, (iterations, t0), progress, cancel)?;
     Ok(GfmdSweep {
-        rows,
-        grid: prep.surface.nx,
-        seed: setup.surface.is_none().then_some(setup.seed),
-        reduction: prep.reduction.clone(),
-        theory,
-        theory_error,
-        iterations,
-        elapsed_s: t0.elapsed().as_secs_f64(),
         surface: Some(prep.surface),
+        ..sw
     })
 }
 
@@ -193,16 +394,7 @@ pub fn run_loads(
 ) -> Result<(Prepared, Vec<GfmdSweepRow>, usize)> {
     spec.validate()?;
     opts.validate()?;
-    let prep = prepare(setup)?;
-    let mut rows = Vec::new();
-    let mut start: Option<Vec<f64>> = None;
-    let mut iterations = 0;
-    for (k, &p) in spec.pressures().iter().enumerate() {
-        let problem = prep.problem(p);
-        let sol = solve_from(&problem, opts, start.as_deref(), &mut |pr| progress(k, pr), cancel)?;
-        iterations += sol.iterations;
-        rows.push(GfmdSweepRow::measured(p, &problem, &sol, opts));
-        start = Some(sol.gap);
-    }
-    Ok((prep, rows, iterations))
+    let mut walker = Walker::new(&Solo, prepare(setup)?, opts);
+    let rows = walk_loads(&mut walker, &spec.pressures(), progress, cancel)?;
+    Ok((walker.prep, rows, walker.iterations))
 }

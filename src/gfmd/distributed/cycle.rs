@@ -3,7 +3,7 @@
 //!
 //! The path (loads, turning point, tensile steps p* = 0, −p*₁, −2p*₁, …, the bisections of
 //! the pull-off bracket, the jump-in) is the serial code ([`crate::gfmd::cycle`]'s `walk`)
-//! driven by a slab solver: each load relaxes with FIRE on slabs
+//! driven by the walker of [`crate::gfmd::sweep`] on this rank's slab: each load relaxes with FIRE on slabs
 //! ([`super::fire::relax_slab_from`], warm-started from the rank's rows of the last state
 //! held) and is measured by ordered reductions ([`super::sweep::row_slab`]). Every rank sees
 //! the same rows bit for bit, so every rank takes the same branch at every test of the path
@@ -12,62 +12,13 @@
 //! choice). The theory's sweep on the map runs on rank 0 only.
 
 use super::comm::Comm;
-use super::fire::relax_slab_from;
-use super::run::{prepare_slab, PreparedSlab};
-use super::sweep::row_slab;
+use super::run::prepare_slab;
 use crate::error::Result;
-use crate::gfmd::cycle::{theory_sweep, walk, CycleSpec, GfmdCycle, PathSolver};
-use crate::gfmd::fire::Relaxation;
-use crate::gfmd::sweep::GfmdSweepRow;
+use crate::gfmd::cycle::{theory_sweep, walk, CycleSpec, GfmdCycle};
+use crate::gfmd::sweep::Walker;
 use crate::gfmd::{GfmdOptions, GfmdSetup, Progress};
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
-
-/// The walker along a path on this rank's slab: the slab, this rank's rows of the last relaxed
-/// gap, and the step count.
-struct SlabWalker<'a> {
-    comm: &'a dyn Comm,
-    prep: PreparedSlab,
-    opts: &'a GfmdOptions,
-    gap: Option<Vec<f64>>,
-    iterations: usize,
-}
-
-impl PathSolver for SlabWalker<'_> {
-    fn step(
-        &mut self,
-        p: f64,
-        k: usize,
-        progress: &mut dyn FnMut(usize, Progress),
-        cancel: &AtomicBool,
-    ) -> Result<Option<GfmdSweepRow>> {
-        let problem = self.prep.problem(p);
-        let out = relax_slab_from(
-            self.comm,
-            &problem,
-            self.opts,
-            self.gap.as_deref(),
-            &mut |pr| progress(k, pr),
-            cancel,
-        )?;
-        let sol = match out {
-            Relaxation::Equilibrium(sol) => sol,
-            Relaxation::ContactLost { iterations } => {
-                self.iterations += iterations;
-                return Ok(None);
-            }
-        };
-        self.iterations += sol.iterations;
-        let row = row_slab(self.comm, p, &self.prep, &problem, &sol, self.opts);
-        self.gap = Some(sol.gap);
-        Ok(Some(row))
-    }
-
-    fn strength(&self) -> Option<f64> {
-        let sc = &self.prep.scene;
-        (sc.gamma > 0.0).then(|| sc.gamma / sc.range / (sc.modulus * self.prep.rms_gradient))
-    }
-}
 
 /// [`crate::gfmd::cycle::run_cycle`] on this rank of `comm` (every rank calls it with the same
 /// arguments): rank 0 returns the serial cycle; the other ranks return it without the theory
@@ -86,13 +37,7 @@ pub fn run_cycle_slab(
     spec.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
-    let mut walker = SlabWalker {
-        comm,
-        prep: prepare_slab(comm, setup)?,
-        opts,
-        gap: None,
-        iterations: 0,
-    };
+    let mut walker = Walker::new(comm, prepare_slab(comm, setup)?, opts);
     let path = walk(&mut walker, spec, progress, cancel)?;
     let rising = spec.rising();
     let theory = if comm.rank() == 0 {

@@ -4,14 +4,13 @@
 use super::comm::{share, Comm};
 use super::fire::{solve_slab, SlabProblem};
 use super::map::{self, Slab};
-use super::measure::measure_slab;
 use super::slab_fft::SlabFft;
 use crate::error::{Error, Field, Result};
+use crate::gfmd::measure::measure_slab;
 use crate::gfmd::reduction::{check_map_moments, reduce, Reduction};
-use crate::gfmd::result::theory_comparison;
+use crate::gfmd::result::{body_and_load, scene_on_spectrum, theory_comparison};
 use crate::gfmd::{GfmdOptions, GfmdResult, GfmdSetup, Progress, Stage};
 use crate::input::scene::Scene;
-use crate::surface::shells::THEORY_SHELL_LN;
 use crate::surface::spectrum::{Discrete, Spectrum};
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
@@ -39,15 +38,12 @@ impl PreparedSlab {
     /// The problem at reduced pressure `pressure`, as [`crate::gfmd::Prepared::problem`].
     pub fn problem(&self, pressure: f64) -> SlabProblem<'_> {
         let sc = &self.scene;
+        let (thickness, pressure) = body_and_load(sc, self.q_r, self.rms_gradient, pressure);
         SlabProblem {
             slab: &self.slab,
             modulus: sc.modulus,
-            thickness: if sc.thickness_qr.is_infinite() {
-                f64::INFINITY
-            } else {
-                sc.thickness_qr / self.q_r
-            },
-            pressure: pressure * sc.modulus * self.rms_gradient,
+            thickness,
+            pressure,
             gamma: sc.gamma,
             range: sc.range,
         }
@@ -55,13 +51,7 @@ impl PreparedSlab {
 
     /// The scene on the map's discrete spectrum, as [`crate::gfmd::Prepared::theory_scene`].
     pub fn theory_scene(&self, pressure: f64) -> Scene {
-        let mut scene = Scene {
-            spectrum: Spectrum::Discrete(self.spectrum.coarse_grained(THEORY_SHELL_LN)),
-            pressure,
-            ..self.scene.clone()
-        };
-        scene.resolve_model();
-        scene
+        scene_on_spectrum(&self.scene, &self.spectrum, pressure)
     }
 }
 

@@ -1,38 +1,20 @@
 //! [`crate::gfmd::sweep::run_sweep`] over ranks: the same loads, warm starts, rows and
-//! theory sweep, bit for bit; the energy U = ½⟨(w − w̄)(σ − p₀)⟩ + ⟨v(g)⟩ by ordered sums.
+//! theory sweep, bit for bit. The load loop, the rows, the measurements and the energy are the
+//! serial code ([`crate::gfmd::sweep`], [`crate::gfmd::measure::measure_slab`]) on this rank's
+//! rows; what is the slabs' own is the relaxation ([`super::fire`]).
 
-use super::comm::{chain_sum, Comm};
-use super::fire::{solve_slab, SlabProblem};
-use super::measure::measure_slab;
+use super::comm::Comm;
+use super::fire::{relax_slab_from, SlabProblem};
 use super::run::{prepare_slab, PreparedSlab};
-use crate::error::{Error, Result};
-use crate::gfmd::sweep::{GfmdSweep, GfmdSweepRow};
-use crate::gfmd::{GfmdOptions, GfmdSetup, Progress, Solution, Stage};
-use crate::theory::engine::Options;
-use crate::theory::sweep::{self, SweepSpec};
+use crate::error::Result;
+use crate::gfmd::measure::measure_slab;
+use crate::gfmd::relax::Relaxation;
+use crate::gfmd::sweep::{beside_theory, energy_slab, walk_loads, GfmdSweep, GfmdSweepRow, LoadMap, Walker};
+use crate::gfmd::{GfmdOptions, GfmdSetup, Progress, Solution};
+use crate::input::scene::Scene;
+use crate::theory::sweep::SweepSpec;
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
-
-/// [`crate::gfmd::sweep::energy`] from this rank's rows (J/m²; every rank gets it).
-pub fn energy_slab(comm: &dyn Comm, problem: &SlabProblem<'_>, sol: &Solution) -> f64 {
-    let h = &problem.slab.heights;
-    let n = problem.slab.nodes() as f64;
-    let w: Vec<f64> = sol.gap.iter().zip(h).map(|(g, h)| g + h).collect();
-    let wbar = chain_sum(comm, w.iter().copied()) / n;
-    let el =
-        0.5 * chain_sum(
-            comm,
-            w.iter()
-                .zip(&sol.stress)
-                .map(|(w, s)| (w - wbar) * (s - problem.pressure)),
-        ) / n;
-    let inter = if problem.gamma > 0.0 {
-        -problem.gamma * chain_sum(comm, sol.gap.iter().map(|g| (-g / problem.range).exp())) / n
-    } else {
-        0.0
-    };
-    el + inter
-}
 
 /// [`GfmdSweepRow::measured`] from this rank's rows of a contact relaxed at p* = `p` (every
 /// rank gets the row).
@@ -44,26 +26,41 @@ pub fn row_slab(
     sol: &Solution,
     opts: &GfmdOptions,
 ) -> GfmdSweepRow {
+    let nodes = prep.slab.nodes();
     let m = measure_slab(
         comm,
         sol,
         opts,
-        prep.slab.nodes(),
+        nodes,
         problem.modulus,
         prep.rms_gradient,
         prep.rms_height,
     );
-    GfmdSweepRow {
-        p,
-        a_r: m.stats.a_r,
-        mean_gap_rel: m.mean_gap_rel,
-        mean_gap: m.mean_gap,
-        mean_contact_stress: m.stats.mean_contact_stress,
-        elastic_energy: energy_slab(comm, problem, sol),
-        converged: true,
-        contact_stress_variance: m.stats.contact_stress_variance,
-        iterations: sol.iterations,
-        residual: sol.residual,
+    let load = (problem.pressure, problem.gamma, problem.range);
+    GfmdSweepRow::of(p, &m, energy_slab(comm, &problem.slab.heights, nodes, load, sol), sol)
+}
+
+impl LoadMap for PreparedSlab {
+    fn relax_at(
+        &self,
+        comm: &dyn Comm,
+        p: f64,
+        start: Option<&[f64]>,
+        opts: &GfmdOptions,
+        progress: &mut dyn FnMut(Progress),
+        cancel: &AtomicBool,
+    ) -> Result<(Option<GfmdSweepRow>, Relaxation)> {
+        let problem = self.problem(p);
+        let out = relax_slab_from(comm, &problem, opts, start, progress, cancel)?;
+        let row = match &out {
+            Relaxation::Equilibrium(sol) => Some(row_slab(comm, p, self, &problem, sol, opts)),
+            Relaxation::ContactLost { .. } => None,
+        };
+        Ok((row, out))
+    }
+
+    fn scene_and_gradient(&self) -> (&Scene, f64) {
+        (&self.scene, self.rms_gradient)
     }
 }
 
@@ -81,25 +78,9 @@ pub fn run_loads_slab(
 ) -> Result<(PreparedSlab, Vec<GfmdSweepRow>, usize)> {
     spec.validate()?;
     opts.validate()?;
-    let prep = prepare_slab(comm, setup)?;
-    let mut rows = Vec::new();
-    let mut start: Option<Vec<f64>> = None;
-    let mut iterations = 0;
-    for (k, &p) in spec.pressures().iter().enumerate() {
-        let problem = prep.problem(p);
-        let sol = solve_slab(
-            comm,
-            &problem,
-            opts,
-            start.as_deref(),
-            &mut |pr| progress(k, pr),
-            cancel,
-        )?;
-        iterations += sol.iterations;
-        rows.push(row_slab(comm, p, &prep, &problem, &sol, opts));
-        start = Some(sol.gap);
-    }
-    Ok((prep, rows, iterations))
+    let mut walker = Walker::new(comm, prepare_slab(comm, setup)?, opts);
+    let rows = walk_loads(&mut walker, &spec.pressures(), progress, cancel)?;
+    Ok((walker.prep, rows, walker.iterations))
 }
 
 /// [`crate::gfmd::sweep::run_sweep`] on this rank of `comm` (every rank calls it); the
@@ -117,35 +98,11 @@ pub fn run_sweep_slab(
 ) -> Result<GfmdSweep> {
     let t0 = Instant::now();
     let (prep, rows, iterations) = run_loads_slab(comm, setup, spec, opts, progress, cancel)?;
-    if let Some(last) = rows.last() {
-        progress(
-            rows.len(),
-            Progress {
-                stage: Stage::Theory,
-                iteration: last.iterations,
-                residual: last.residual,
-                contact_fraction: last.a_r,
-            },
-        );
-    }
-    let (theory, theory_error) = if comm.rank() == 0 {
-        match sweep::sweep(&prep.theory_scene(spec.from), spec, &Options::default(), Some(cancel)) {
-            Err(Error::Cancelled) => return Err(Error::Cancelled),
-            Ok(s) => (Some(s), None),
-            Err(e) => (None, Some(e.to_string())),
-        }
-    } else {
-        (None, None)
-    };
-    Ok(GfmdSweep {
-        rows,
-        grid: prep.slab.nx,
-        seed: setup.surface.is_none().then_some(setup.seed),
-        reduction: prep.reduction.clone(),
-        theory,
-        theory_error,
-        iterations,
-        elapsed_s: t0.elapsed().as_secs_f64(),
-        surface: None,
-    })
+    let map = (
+        prep.slab.nx,
+        setup.surface.is_none().then_some(setup.seed),
+        prep.reduction.clone(),
+    );
+    let theory = (comm.rank() == 0).then(|| Ok(prep.theory_scene(spec.from)));
+    beside_theory(rows, theory, spec, map, (iterations, t0), progress, cancel)
 }
