@@ -177,3 +177,20 @@ fn only_the_charts_shown_are_asked_for() {
     key(&mut a, KeyCode::Char('z'));
     assert_eq!(a.shown_charts(), vec![1]);
 }
+
+#[test]
+fn a_gamma_below_the_resolvable_floor_is_refused_with_one_line() {
+    let mut a = app();
+    let before = a.params.scene.surface_energy_j_m2();
+    let e = a.set_typed(Param::Gamma, "1e-300").unwrap_err().to_string();
+    assert!(e.contains("gamma") && e.contains("1e-300") && e.contains("J/m²"), "{e}");
+    assert!(!e.contains('\n'), "{e}");
+    assert_eq!(a.params.scene.surface_energy_j_m2(), before);
+    // just above the floor adhesion registers; 0 and off stay allowed
+    let floor = asperity::input::scene::WEAK_ADHESION_GLO * a.params.scene.full_contact_energy();
+    a.set_typed(Param::Gamma, &format!("{:e}", floor * 4.0)).unwrap();
+    assert!(a.params.scene.is_adhesive());
+    a.set_typed(Param::Gamma, "0").unwrap();
+    a.set_typed(Param::Gamma, "off").unwrap();
+    assert_eq!(a.params.scene.surface_energy_j_m2(), 0.0);
+}
