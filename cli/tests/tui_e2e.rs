@@ -493,20 +493,23 @@ fn scale_view_plays_in_tmux() {
         s.contains("t·q_r=0.1") && s.contains("t·q_r=0.4") && s.contains("t·q_r    ∞") && solved(s)
     });
     assert!(s.contains("t·q_r=∞"), "the current curve named too: {s}");
+    // the tour opens on what the explorer computes; its second step plays the scale view
     t.keys(&["t"]);
+    t.wait("the opening step", |s| s.contains("tour 1/14"));
+    t.keys(&["Right"]);
     t.wait("the scale view playing", |s| {
         s.contains("Pr(σ*, q) q/q_L=") && s.contains("/48 ▶")
     });
     let s = t.wait("the play to reach q_s", |s| {
         s.contains(" 48/48 ") && !s.contains("/48 ▶")
     });
-    assert!(s.contains("tour 1/12"), "{s}");
+    assert!(s.contains("tour 2/14"), "{s}");
     t.keys(&["["]);
     t.wait("one frame back", |s| s.contains(" 47/48 "));
     t.keys(&["Space"]);
     t.wait("playing on", |s| s.contains("/48 ▶") || s.contains(" 48/48 "));
     t.keys(&["Escape"]);
-    t.wait("the tour to close", |s| !s.contains("tour 1/12"));
+    t.wait("the tour to close", |s| !s.contains("tour 2/14"));
     t.keys(&["q"]);
     let s = t.wait("a clean exit", |s| s.contains("TTY="));
     assert!(s.contains("EXIT=0") && s.contains("TTY=icanon"), "{s}");
@@ -524,8 +527,8 @@ fn hysteresis_followed_in_tmux() {
     }
     let dir = std::env::temp_dir().join(format!("asperity-e2e-hyst-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let t = Tmux::start_with("hyst", &dir, "", "tour --step 11");
-    t.wait("the jump-in step", |s| s.contains("tour 11/12") && solved(s));
+    let t = Tmux::start_with("hyst", &dir, "", "tour --step 12");
+    t.wait("the jump-in step", |s| s.contains("tour 12/14") && solved(s));
     // ⇧→ twice (L is the same key): 1e-4 → 1.78e-4 → 3.16e-4, above jump-in
     t.keys(&["L"]);
     t.keys(&["L"]);

@@ -150,7 +150,7 @@ fn only_the_charts_shown_are_asked_for() {
     a.set_charts([ChartKind::Pr, ChartKind::Area, ChartKind::Thickness]);
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
     assert_eq!(a.shown_charts(), vec![0]);
-    let req = a.take_request().expect("a request");
+    let req = a.take_compute().expect("a request");
     assert!(
         req.needs.point && !req.needs.loads && !req.needs.thickness,
         "{:?}",
@@ -158,20 +158,20 @@ fn only_the_charts_shown_are_asked_for() {
     );
     // a message that shows nothing new asks for nothing
     crate::tui::drive::send(&mut a, Msg::Clock(std::time::Instant::now()));
-    assert!(a.take_request().is_none());
+    assert!(a.take_compute().is_none());
     // f: the area chart comes on screen, and with it the load sweep
     key(&mut a, KeyCode::Char('f'));
     assert_eq!(a.shown_charts(), vec![1]);
-    let req = a.take_request().expect("the chart now shown is asked for");
+    let req = a.take_compute().expect("the chart now shown is asked for");
     assert!(req.needs.loads && !req.needs.thickness, "{:?}", req.needs);
     // 160×48 shows all three: the thickness sweep too
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
     assert_eq!(a.shown_charts(), vec![0, 1, 2]);
-    let req = a.take_request().expect("the charts now shown are asked for");
+    let req = a.take_compute().expect("the charts now shown are asked for");
     assert!(req.needs.loads && req.needs.thickness, "{:?}", req.needs);
     // back to one chart: nothing more to compute
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
-    assert!(a.take_request().is_none());
+    assert!(a.take_compute().is_none());
     // z at 160×48: the focused chart alone
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
     key(&mut a, KeyCode::Char('z'));
