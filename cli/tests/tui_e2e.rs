@@ -275,28 +275,32 @@ fn tour_in_tmux() {
     let dir = std::env::temp_dir().join(format!("asperity-e2e-tour-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let t = Tmux::start_with("tour", &dir, "", "tour");
-    let s = t.wait("the first step", |s| s.contains("tour 1/12") && solved(s));
-    assert!(s.contains("Roughness, scale by scale") && s.contains("[S-1]"), "{s}");
+    let s = t.wait("the first step", |s| s.contains("tour 1/14") && solved(s));
+    assert!(
+        s.contains("What the explorer computes") && s.contains("Persson theory"),
+        "{s}"
+    );
     for (i, title) in [
-        (2, "How much area?"),
-        (3, "The stress distribution"),
-        (4, "What no W(a_r) can fix"),
+        (2, "Roughness, scale by scale"),
+        (3, "How much area?"),
+        (4, "The stress distribution"),
+        (5, "What no W(a_r) can fix"),
     ] {
         t.keys(&["Right"]);
-        let s = t.wait(title, |s| s.contains(&format!("tour {i}/12")) && solved(s));
+        let s = t.wait(title, |s| s.contains(&format!("tour {i}/14")) && solved(s));
         assert!(s.contains(title), "{s}");
     }
     let s = t.screen();
     assert!(s.contains("Pr(σ*) log–log") && s.contains("σ→0 asymptote"), "{s}");
     // a knob still turns inside a step (p* is selected: l steps it up)
     t.keys(&["l"]);
-    t.wait("p* = 0.01122", |s| s.contains("0.01122") && s.contains("tour 4/12"));
+    t.wait("p* = 0.01122", |s| s.contains("0.01122") && s.contains("tour 5/14"));
     t.keys(&["Left"]);
-    t.wait("step 3", |s| s.contains("tour 3/12") && s.contains("0.01000"));
+    t.wait("step 4", |s| s.contains("tour 4/14") && s.contains("0.01000"));
     // through the adhesive steps to the jump into contact
-    for i in 4..=11 {
+    for i in 5..=12 {
         t.keys(&["Right"]);
-        t.wait("the next step", |s| s.contains(&format!("tour {i}/12")));
+        t.wait("the next step", |s| s.contains(&format!("tour {i}/14")));
     }
     let s = t.wait("the jump-in step solved", |s| {
         s.contains("Jump into contact") && solved(s)
@@ -326,16 +330,16 @@ fn tour_in_tmux() {
         }
         assert!(dir.join(format!("asperity-system-2-1-{chart}.png")).is_file());
     }
-    // the last step: models 4 and 5 against the GFMD points the library stores
+    // the step before the closing one: models 4 and 5 against the GFMD points the library stores
     t.keys(&["Right"]);
-    let s = t.wait("the last step solved", |s| {
-        s.contains("tour 12/12") && s.contains("Theory against brute force") && solved(s)
+    let s = t.wait("the brute-force step solved", |s| {
+        s.contains("tour 13/14") && s.contains("Theory against brute force") && solved(s)
     });
     assert!(s.contains("model 5") && s.contains("t·q_r = 0.15"), "{s}");
     t.wait("the stored GFMD points in a key", |s| s.contains("◆ GFMD ("));
     t.keys(&["Escape"]);
     t.wait("the tour to end", |s| {
-        s.contains("left the tour") && !s.contains("tour 12/12")
+        s.contains("left the tour") && !s.contains("tour 13/14")
     });
     t.keys(&["q"]);
     let s = t.wait("a clean exit", |s| s.contains("TTY="));
@@ -434,7 +438,7 @@ fn tui_and_tour_flags_are_validated_like_run() {
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
         String::from_utf8_lossy(&out.stderr).trim(),
-        "asperity: invalid --step = 99: allowed 1 <= step <= 12"
+        "asperity: invalid --step = 99: allowed 1 <= step <= 14"
     );
     let out = Command::new(BIN).args(["tour", "no-such-tour"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2));
@@ -489,20 +493,23 @@ fn scale_view_plays_in_tmux() {
         s.contains("t·q_r=0.1") && s.contains("t·q_r=0.4") && s.contains("t·q_r    ∞") && solved(s)
     });
     assert!(s.contains("t·q_r=∞"), "the current curve named too: {s}");
+    // the tour opens on what the explorer computes; its second step plays the scale view
     t.keys(&["t"]);
+    t.wait("the opening step", |s| s.contains("tour 1/14"));
+    t.keys(&["Right"]);
     t.wait("the scale view playing", |s| {
         s.contains("Pr(σ*, q) q/q_L=") && s.contains("/48 ▶")
     });
     let s = t.wait("the play to reach q_s", |s| {
         s.contains(" 48/48 ") && !s.contains("/48 ▶")
     });
-    assert!(s.contains("tour 1/12"), "{s}");
+    assert!(s.contains("tour 2/14"), "{s}");
     t.keys(&["["]);
     t.wait("one frame back", |s| s.contains(" 47/48 "));
     t.keys(&["Space"]);
     t.wait("playing on", |s| s.contains("/48 ▶") || s.contains(" 48/48 "));
     t.keys(&["Escape"]);
-    t.wait("the tour to close", |s| !s.contains("tour 1/12"));
+    t.wait("the tour to close", |s| !s.contains("tour 2/14"));
     t.keys(&["q"]);
     let s = t.wait("a clean exit", |s| s.contains("TTY="));
     assert!(s.contains("EXIT=0") && s.contains("TTY=icanon"), "{s}");
@@ -520,8 +527,8 @@ fn hysteresis_followed_in_tmux() {
     }
     let dir = std::env::temp_dir().join(format!("asperity-e2e-hyst-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let t = Tmux::start_with("hyst", &dir, "", "tour --step 11");
-    t.wait("the jump-in step", |s| s.contains("tour 11/12") && solved(s));
+    let t = Tmux::start_with("hyst", &dir, "", "tour --step 12");
+    t.wait("the jump-in step", |s| s.contains("tour 12/14") && solved(s));
     // ⇧→ twice (L is the same key): 1e-4 → 1.78e-4 → 3.16e-4, above jump-in
     t.keys(&["L"]);
     t.keys(&["L"]);

@@ -313,15 +313,15 @@ fn all_models_on_an_adhesive_slab() {
     insta::assert_snapshot!("all_models_adhesive_slab_80x24", render(&a, 80, 24));
 }
 
-/// The tour's last step: models 4 and 5 on a thin adhesive slab against the GFMD points the
+/// The tour's step before the closing one: models 4 and 5 on a thin adhesive slab against the GFMD points the
 /// library stores for it.
 #[test]
 fn tour_step_theory_against_brute_force() {
     use asperity_cli::tui::tour::Tour;
     let mut a = app("system-1");
     let tour = Tour::resolve("wang-muser").unwrap();
-    let last = tour.steps.len() - 1;
-    a.start_tour(tour, last);
+    let step = tour.steps.len() - 2;
+    a.start_tour(tour, step);
     compute_now(&mut a, &mut Caches::default());
     assert_eq!(a.params.scene.model().number(), Some(5));
     let s = render(&a, 160, 48);
@@ -333,8 +333,8 @@ fn tour_step_theory_against_brute_force() {
     ] {
         assert!(s.contains(needle), "{needle}: {s}");
     }
-    insta::assert_snapshot!("tour_step12_160x48", s);
-    insta::assert_snapshot!("tour_step12_80x24", render(&a, 80, 24));
+    insta::assert_snapshot!("tour_step13_160x48", s);
+    insta::assert_snapshot!("tour_step13_80x24", render(&a, 80, 24));
 }
 
 /// A tour step: the preset state, its charts and the caption box.
@@ -342,23 +342,23 @@ fn tour_step_theory_against_brute_force() {
 fn tour_step() {
     use asperity_cli::tui::tour::Tour;
     let mut a = app("system-1");
-    a.start_tour(Tour::resolve("wang-muser").unwrap(), 1);
+    a.start_tour(Tour::resolve("wang-muser").unwrap(), 2);
     compute_now(&mut a, &mut Caches::default());
     assert_eq!(a.ui.charts[0], ChartKind::AreaRatio);
     assert!(a.ui.all_models && a.params.scene.surface_energy_j_m2() == 0.0);
     let s = render(&a, 80, 24);
-    assert!(s.contains("tour 2/12") && s.contains("How much area?"), "{s}");
-    insta::assert_snapshot!("tour_step2_80x24", s);
-    insta::assert_snapshot!("tour_step2_160x48", render(&a, 160, 48));
+    assert!(s.contains("tour 3/14") && s.contains("How much area?"), "{s}");
+    insta::assert_snapshot!("tour_step3_80x24", s);
+    insta::assert_snapshot!("tour_step3_160x48", render(&a, 160, 48));
     // every size, tiny ones included, draws without a panic
     for (w, h) in [(60, 20), (61, 21), (200, 60), (80, 10), (20, 5), (1, 1)] {
         draw_only(&a, w, h);
     }
     // → moves on, ← back, a knob still turns (h), Esc leaves with the scene kept
     key(&mut a, KeyCode::Right);
-    assert_eq!(a.ui.tour.as_ref().unwrap().step, 2);
+    assert_eq!(a.ui.tour.as_ref().unwrap().step, 3);
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.ui.tour.as_ref().unwrap().step, 1);
+    assert_eq!(a.ui.tour.as_ref().unwrap().step, 2);
     let p = a.params.scene.pressure();
     key(&mut a, KeyCode::Char('l'));
     assert!(a.params.scene.pressure() > p);
@@ -523,12 +523,12 @@ fn scale_view() {
     // the tour's first step: the adhesionless march of model 1, played from q_L
     use asperity_cli::tui::tour::Tour;
     let mut t = app("system-1");
-    t.start_tour(Tour::resolve("wang-muser").unwrap(), 0);
+    t.start_tour(Tour::resolve("wang-muser").unwrap(), 1);
     compute_now(&mut t, &mut Caches::default());
     assert!(t.ui.playing && t.scale_frame().map(|f| f.0) == Some(0));
     let s = render(&t, 80, 24);
-    assert!(s.contains("tour 1/12") && s.contains("1/48 ▶"), "{s}");
-    insta::assert_snapshot!("tour_step1_80x24", s);
+    assert!(s.contains("tour 2/14") && s.contains("1/48 ▶"), "{s}");
+    insta::assert_snapshot!("tour_step2_80x24", s);
     for (w, h) in [(60, 20), (20, 5), (1, 1)] {
         draw_only(&t, w, h);
     }
@@ -692,7 +692,7 @@ fn zoomed_chart_and_log_pr() {
 fn hysteresis_followed_along_the_load_path() {
     use asperity_cli::tui::tour::Tour;
     let mut a = app("system-2");
-    a.start_tour(Tour::resolve("wang-muser").unwrap(), 10);
+    a.start_tour(Tour::resolve("wang-muser").unwrap(), 11);
     compute_now(&mut a, &mut Caches::default());
     for code in [
         KeyCode::Char('L'),

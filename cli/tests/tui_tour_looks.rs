@@ -279,6 +279,10 @@ fn verify_press(t: &Tour, i: usize, p: &Press) -> Result<(), String> {
     if p.plays.is_some_and(|x| x != a.ui.playing) {
         bad.push(format!("playing {}", a.ui.playing));
     }
+    let help = matches!(a.ui.overlay, asperity_cli::tui::model::ui::Overlay::Help);
+    if p.help.is_some_and(|h| h != help) {
+        bad.push(format!("help shown {help}"));
+    }
     if p.branch.as_deref().is_some_and(|b| b != a.params.history.on.name()) {
         bad.push(format!(
             "on the {} branch at p* = {}",

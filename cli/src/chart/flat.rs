@@ -62,7 +62,8 @@ pub fn flatten(chart: &Chart) -> Flat {
             .collect()
     };
     let mut series = markers(chart, floor);
-    for (i, s) in chart.series.iter().enumerate() {
+    for i in chart.draw_order() {
+        let s = &chart.series[i];
         let look = chart.series_look(i);
         let mut points = kept(s);
         // the terminal shades a band with columns of points; a file fills its outline

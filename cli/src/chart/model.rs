@@ -128,6 +128,22 @@ impl Chart {
         }
     }
 
+    /// The order every renderer draws the series in: shaded bands under everything, then
+    /// lines, then the closed forms (dashed: the curve they lie on shows between their dashes,
+    /// so an asymptote or a fit that a model follows stays visible), then points, which no
+    /// line may cover.
+    pub fn draw_order(&self) -> Vec<usize> {
+        let rank = |s: &Series| match (s.style, s.role) {
+            (_, Role::Band) | (SeriesStyle::Band, _) => 0,
+            (SeriesStyle::Points, _) => 3,
+            (_, Role::Closed | Role::Closed2) => 2,
+            _ => 1,
+        };
+        let mut order: Vec<usize> = (0..self.series.len()).collect();
+        order.sort_by_key(|&i| rank(&self.series[i]));
+        order
+    }
+
     /// The look of series `i`: the one its producer fixed, else its role's, the k-th
     /// reference source of the chart its k-th marker.
     pub fn series_look(&self, i: usize) -> Look {

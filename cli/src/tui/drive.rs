@@ -40,10 +40,11 @@ pub fn press(app: &mut App, ev: KeyEvent) {
     send(app, Msg::Key(ev));
 }
 
-/// Serves every pending request of `app` on the calling thread, feeding the replies back
-/// (no thread, no cancellation).
+/// Serves the computation `app` asked for on the calling thread, feeding the replies back
+/// (no thread, no cancellation): the last [`Command::Compute`] an update returned (queued by
+/// [`send`]), or the state's own request where a test called a handler directly.
 pub fn compute_now(app: &mut App, caches: &mut Caches) {
-    while let Some(req) = app.take_request() {
+    while let Some(req) = app.take_compute() {
         let replies = std::cell::RefCell::new(Vec::new());
         process(&req, caches, &AtomicBool::new(false), &|| false, &|r| {
             replies.borrow_mut().push(r)

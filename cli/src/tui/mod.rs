@@ -173,14 +173,12 @@ fn run_commands(
 ) -> Result<bool> {
     let mut inbox = VecDeque::new();
     loop {
-        let cmds: Vec<Command> = app
-            .take_request()
-            .map(Command::Compute)
-            .into_iter()
-            .chain(todo.drain(..))
-            .collect();
-        for cmd in cmds {
+        let cmds: Vec<Command> = std::mem::take(todo);
+        // a burst of updates computes once: the last computation asked for supersedes the rest
+        let last = cmds.iter().rposition(|c| matches!(c, Command::Compute(_)));
+        for (i, cmd) in cmds.into_iter().enumerate() {
             match cmd {
+                Command::Compute(_) if Some(i) != last => {}
                 Command::Compute(req) => {
                     if trace.started.is_none_or(|(g, _)| g != req.gen) && trace.file.is_some() {
                         trace.start(req.gen, Instant::now());
@@ -284,10 +282,15 @@ pub fn run_app(mut app: App) -> Result<()> {
                 Incoming::InputClosed => return Ok(()),
             };
             if let Some((msg, pressed)) = msg {
-                todo.extend(update::update(&mut app, msg));
-                if let Some(t0) = pressed.filter(|_| app.has_pending()) {
-                    trace.start(app.jobs.gen + 1, t0);
+                let cmds = update::update(&mut app, msg);
+                let asked = cmds.iter().rev().find_map(|c| match c {
+                    Command::Compute(r) => Some(r.gen),
+                    _ => None,
+                });
+                if let (Some(t0), Some(gen)) = (pressed, asked) {
+                    trace.start(gen, t0);
                 }
+                todo.extend(cmds);
             }
             if todo.iter().any(|c| matches!(c, Command::Quit)) {
                 break;

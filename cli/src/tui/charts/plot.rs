@@ -179,6 +179,44 @@ pub fn ticks(b: [f64; 2], scale: Scale, three: bool) -> ([f64; 2], Vec<String>) 
     }
 }
 
+/// A band given as columns of points (each load's points share its x, from the lower to the
+/// upper end) filled at the terminal's resolution: `cell` is the plane size of one cell
+/// (x, y); the band is interpolated between neighbouring columns and sampled at half a cell
+/// in both directions, so every cell it covers gets a mark (a band, not a checkerboard).
+pub fn fill_band(points: &[(f64, f64)], xs: Scale, ys: Scale, cell: (f64, f64)) -> Vec<(f64, f64)> {
+    // (x, lower, upper) per column, in the plane
+    let mut cols: Vec<(f64, f64, f64)> = Vec::new();
+    for r in segments(points, xs, ys) {
+        for (u, v) in r {
+            match cols.last_mut() {
+                Some(c) if c.0 == u => {
+                    c.1 = c.1.min(v);
+                    c.2 = c.2.max(v);
+                }
+                _ => cols.push((u, v, v)),
+            }
+        }
+    }
+    let (dx, dy) = (0.5 / cell.0.max(1e-12), 0.5 / cell.1.max(1e-12));
+    let mut out = Vec::new();
+    let mut fill = |u: f64, lo: f64, hi: f64| {
+        let n = ((hi - lo) / dy).ceil().clamp(0.0, 10_000.0) as usize;
+        out.extend((0..=n).map(|k| (u, lo + (hi - lo) * k as f64 / n.max(1) as f64)));
+    };
+    for w in cols.windows(2) {
+        let ((u0, l0, h0), (u1, l1, h1)) = (w[0], w[1]);
+        let n = ((u1 - u0) / dx).ceil().clamp(1.0, 10_000.0) as usize;
+        for k in 0..n {
+            let t = k as f64 / n as f64;
+            fill(u0 + (u1 - u0) * t, l0 + (l1 - l0) * t, h0 + (h1 - h0) * t);
+        }
+    }
+    if let Some(&(u, l, h)) = cols.last() {
+        fill(u, l, h);
+    }
+    out
+}
+
 /// A vertical line at plane x = `x` across plane bounds `y`, as a two-point run.
 pub fn vertical(x: f64, y: [f64; 2]) -> Vec<(f64, f64)> {
     if x.is_finite() && y[0].is_finite() && y[1].is_finite() {
@@ -258,6 +296,23 @@ mod tests {
         let one = [(1.0, 2.0)];
         let g = bounds(&[&one], false, 0.1).unwrap();
         assert!(g[0] < 2.0 && g[1] > 2.0);
+    }
+
+    #[test]
+    fn a_band_covers_every_cell_between_its_columns() {
+        // two loads 10 cells apart, the band 4 cells high: every cell of the rectangle marked
+        let pts = [(1.0, 0.0), (1.0, 4.0), (11.0, 0.0), (11.0, 4.0)];
+        let f = fill_band(&pts, Scale::Linear, Scale::Linear, (1.0, 1.0));
+        for x in 1..11 {
+            for y in 0..4 {
+                let hit = f
+                    .iter()
+                    .any(|p| p.0 >= x as f64 && p.0 < x as f64 + 1.0 && p.1 >= y as f64 && p.1 < y as f64 + 1.0);
+                assert!(hit, "cell ({x}, {y}) unmarked");
+            }
+        }
+        assert!(f.iter().all(|p| p.1 >= 0.0 && p.1 <= 4.0 && p.0 >= 1.0 && p.0 <= 11.0));
+        assert!(fill_band(&[], Scale::Linear, Scale::Linear, (1.0, 1.0)).is_empty());
     }
 
     #[test]

@@ -216,13 +216,40 @@ pub fn process(
     send(Reply::Done { gen });
 }
 
+/// `pd` with the panel's short form of the trust read-out of `scene`
+/// ([`asperity::fit::trust`]), on each branch it carries: the band within which GFMD's a_r was
+/// measured from the theory's at this load and whose model it is, that no error is known at
+/// this load, or that the scene lies outside the reference set (`run`'s `trust` line says how
+/// far).
+fn with_trust(mut pd: PointData, scene: &Scene) -> PointData {
+    let t = asperity::fit::trust::assess(scene);
+    let text = if !t.known {
+        "no error known here".to_string()
+    } else if !t.inside {
+        "outside GFMD set".to_string()
+    } else {
+        let band = crate::numfmt::sig(t.a_r_band_ratio, 2);
+        if t.same_model {
+            format!("a_r ×/÷{band} (m{})", t.measured_model)
+        } else {
+            // the set measured another model here: say whose error it is
+            format!("m{}'s a_r ×/÷{band}", t.measured_model)
+        }
+    };
+    if let Some(u) = pd.unloading.as_mut() {
+        u.trust = text.clone();
+    }
+    pd.trust = text;
+    pd
+}
+
 /// The chart-accuracy point of the request's scene (cached); `None` when cancelled.
 fn serve_preview(req: &Request, caches: &mut Caches, cancel: &AtomicBool, send: &dyn Fn(Reply)) -> Option<()> {
     let key = point_key(&req.source, &req.scene);
     let point = match caches.previews.get(&key) {
         Some(p) => p,
         None => {
-            let p = evaluate_preview(&req.scene, cancel, true);
+            let p = evaluate_preview(&req.scene, cancel, true).map(|pd| with_trust(pd, &req.scene));
             if matches!(p, Err(Error::Cancelled)) {
                 return None;
             }
@@ -251,7 +278,7 @@ fn serve_point(
     let point = match caches.points.get(&key) {
         Some(p) => p,
         None => {
-            let p = evaluate_point(scene, cancel, compare);
+            let p = evaluate_point(scene, cancel, compare).map(|pd| with_trust(pd, scene));
             if matches!(p, Err(Error::Cancelled)) {
                 return None;
             }

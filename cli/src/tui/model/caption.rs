@@ -7,6 +7,9 @@
 //!   is one of [`Role::NAMED`].
 //! - `{key:KEY}`: a key, written as the key table writes it (`m`, `M`, `Space`, `⇧→`, `h/l`:
 //!   several keys joined by `/`); each must be bound ([`keys::parse_label`]).
+//! - `{chart:NAME}`: a chart of the step, by its tour name, read as "the a_r(p*) chart"
+//!   ([`ChartKind::words`]); NAME must be among the step's `refers`, the charts the explorer
+//!   shows first at every size.
 //!
 //! What a key does in a step is a claim like a number: a `[[step.press]]` table says which
 //! key the caption names and what pressing it at the step gives (the model, the overlay of
@@ -15,6 +18,7 @@
 
 use crate::looks::{describe, Role};
 use crate::tui::model::keys;
+use crate::tui::model::kinds::ChartKind;
 use serde::Deserialize;
 
 /// What pressing a key at a step gives (checked by the tour test in the explorer).
@@ -42,6 +46,8 @@ pub struct Press {
     pub plays: Option<bool>,
     /// The branch of the load history after the press (`loading`, `unloading`).
     pub branch: Option<String>,
+    /// The help (the keys and what each panel row is) shows after the press.
+    pub help: Option<bool>,
 }
 
 /// A caption line with its references rendered (`model`: the slot of the step's model, the
@@ -55,9 +61,12 @@ pub fn render(line: &str, model: usize) -> Result<String, String> {
         let end = after
             .find('}')
             .ok_or_else(|| format!("an unclosed reference \"{}\"", &rest[i..]))?;
-        let (kind, name) = after[..end]
-            .split_once(':')
-            .ok_or_else(|| format!("\"{{{}}}\": write {{look:NAME}} or {{key:KEY}}", &after[..end]))?;
+        let (kind, name) = after[..end].split_once(':').ok_or_else(|| {
+            format!(
+                "\"{{{}}}\": write {{look:NAME}}, {{key:KEY}} or {{chart:NAME}}",
+                &after[..end]
+            )
+        })?;
         match kind {
             "look" => {
                 let role = Role::named(name).ok_or_else(|| {
@@ -74,7 +83,17 @@ pub fn render(line: &str, model: usize) -> Result<String, String> {
                 }
                 out.push_str(name);
             }
-            other => return Err(format!("unknown reference \"{other}\"; allowed look, key")),
+            "chart" => {
+                let k = ChartKind::parse(name).ok_or_else(|| {
+                    let names: Vec<&str> = ChartKind::ALL.iter().map(|k| k.name()).collect();
+                    format!(
+                        "unknown chart \"{name}\" in {{chart:{name}}}; allowed {}",
+                        names.join(", ")
+                    )
+                })?;
+                out.push_str(&format!("the {} chart", k.words()));
+            }
+            other => return Err(format!("unknown reference \"{other}\"; allowed look, key, chart")),
         }
         rest = &after[end + 1..];
     }
@@ -141,8 +160,9 @@ pub fn validate(p: &Press, knobs: &[&str]) -> Result<(), String> {
         && p.frame.is_none()
         && p.plays.is_none()
         && p.branch.is_none()
+        && p.help.is_none()
     {
-        return Err("claims nothing: give model, models, compare, raises, lowers, frame, plays or branch".into());
+        return Err("claims nothing: give model, models, compare, raises, lowers, frame, plays, branch or help".into());
     }
     if p.branch
         .as_deref()

@@ -14,8 +14,8 @@ use std::sync::Arc;
 #[derive(Debug, Clone)]
 pub enum Command {
     /// Compute what the visible charts need for the current scene (the worker; a newer
-    /// request supersedes an older one). The loop asks the state for it once per frame
-    /// ([`crate::tui::model::app::App::take_request`]), so a burst of keys makes one request.
+    /// request supersedes an older one): returned by an update that changed the scene or the
+    /// charts shown; the loop submits the last of a burst, so a held key makes one request.
     Compute(Request),
     /// Start GFMD run `id` on `scene` in its own thread; `cancel` stops it (`g` again).
     StartGfmd {

@@ -150,6 +150,8 @@ pub struct PointData {
     /// at the load with its a_r … at the same load, docs/physics.md §5.1); None elsewhere or
     /// where the gap could not be had.
     pub gap: Option<BranchGapView>,
+    /// The panel's `trust` row, computed with the point (empty until then).
+    pub trust: String,
 }
 
 /// ū/h_rms of one branch with its bracket.
@@ -184,6 +186,7 @@ impl PointData {
             preview: false,
             unloading: None,
             gap: None,
+            trust: String::new(),
         }
     }
 

@@ -83,6 +83,7 @@ pub const PANEL_ROWS: &[(&str, &str)] = &[
     ("ū/h_rms", "mean gap between the surfaces, in rms heights"),
     ("ū load", "ū's bracket: dry gap at the same a_r … at the same load"),
     ("γ̃_glo", "γ_s over the elastic energy of full contact [S-24]"),
+    ("μ_T", "Tabor parameter: elastic neck height / range of adhesion"),
     ("state", "branch shown, solver marches (it), branches at this load"),
     ("σ_a*", "adhesive wall: contact holds tension down to σ* = −σ_a*"),
     ("tensile", "share of the contact area under tension (σ* < 0)"),

@@ -87,6 +87,22 @@ impl ChartKind {
         }
     }
 
+    /// How a tour caption names it (`{chart:NAME}` reads "the WORDS chart"): what it plots.
+    pub fn words(self) -> &'static str {
+        match self {
+            ChartKind::Pr => "Pr(σ*)",
+            ChartKind::PrLog => "log–log Pr(σ*)",
+            ChartKind::Area => "a_r(p*)",
+            ChartKind::AreaRatio => "a_r/p*",
+            ChartKind::Thickness => "a_r(t·q_r)",
+            ChartKind::Stress => "σ̄_c*(p*)",
+            ChartKind::Gap => "ū(p*)",
+            ChartKind::Scales => "Pr(σ*, q)",
+            ChartKind::ScalesArea => "a_r(q)",
+            ChartKind::Psd => "C(q)",
+        }
+    }
+
     /// The chart named `s`.
     pub fn parse(s: &str) -> Option<ChartKind> {
         ChartKind::ALL.into_iter().find(|k| k.name() == s)

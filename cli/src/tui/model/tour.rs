@@ -20,6 +20,9 @@
 //! thickness_qr = inf           # optional t*q_r (default: the preset's)
 //! gamma = 0.0                  # optional gamma_s in J/m^2 (default: the preset's)
 //! charts = ["pr", "area-ratio", "gap"]   # big panel, lower left, lower right (1-3 names)
+//! refers = ["pr"]              # optional: the charts the caption refers to (default: the
+//!                              # first); the explorer focuses the first, so every size shows it
+//! contrast = [["model1", "closed-form"]]  # optional: looks the caption tells apart
 //! models = false               # optional: overlay all models (the M key)
 //! select = "pressure"          # optional: the knob the caption tells the class to turn
 //! caption = """
@@ -43,6 +46,7 @@
 //! Chart names: see [`crate::tui::charts`]. Knob names: [`Knob::NAMES`]. The checks are data only:
 //! the test `cli/tests/tui_tour_claims.rs` evaluates every one of them with the engine.
 
+use crate::looks::Role;
 use crate::tui::model::caption::{self, Press};
 use crate::tui::model::kinds::ChartKind;
 use asperity::error::{Error, Result};
@@ -86,6 +90,9 @@ struct StepFile {
     thickness_qr: Option<f64>,
     gamma: Option<f64>,
     charts: Vec<String>,
+    refers: Option<Vec<String>>,
+    #[serde(default)]
+    contrast: Vec<[String; 2]>,
     models: Option<bool>,
     select: Option<String>,
     caption: String,
@@ -137,6 +144,11 @@ pub struct Step {
     pub scene: Scene,
     /// Big panel, lower left, lower right.
     pub charts: [ChartKind; 3],
+    /// The charts the caption refers to (indices into `charts`, at least one): the explorer
+    /// focuses the first when the step opens, so a screen with fewer panels shows it.
+    pub refers: Vec<usize>,
+    /// Pairs of looks the caption contrasts: the tour test fails where they share their cells.
+    pub contrasts: Vec<(Role, Role)>,
     /// All models overlaid.
     pub models: bool,
     /// 2–4 lines.
@@ -338,6 +350,21 @@ fn parse_step(
     }
     let (caption_source, caption) =
         caption_of(&s.caption, crate::looks::model_slot(&scene.model())).map_err(|m| err(at, "caption", m))?;
+    let refers = refers_of(s, &charts, &caption_source).map_err(|m| err(at, "refers", m))?;
+    let mut contrasts = Vec::new();
+    for [a, b] in &s.contrast {
+        let role = |n: &str| {
+            Role::named(n).ok_or_else(|| {
+                let names: Vec<&str> = Role::NAMED.iter().map(|(n, _)| *n).collect();
+                err(
+                    at,
+                    "contrast",
+                    format!("unknown look \"{n}\"; allowed {}", names.join(", ")),
+                )
+            })
+        };
+        contrasts.push((role(a)?, role(b)?));
+    }
     if s.title.trim().is_empty() {
         return Err(err(at, "title", "must not be empty".into()));
     }
@@ -364,6 +391,8 @@ fn parse_step(
         preset: p,
         scene,
         charts,
+        refers,
+        contrasts,
         models: s.models.unwrap_or(false),
         caption,
         select,
@@ -371,6 +400,35 @@ fn parse_step(
         caption_source,
         presses: s.press.clone(),
     })
+}
+
+/// The charts a step's caption refers to, as indices into its `charts` (default: the first);
+/// every `{chart:NAME}` of the caption must be among them.
+fn refers_of(s: &StepFile, charts: &[ChartKind; 3], caption: &[String]) -> std::result::Result<Vec<usize>, String> {
+    let index = |name: &str| {
+        let k = ChartKind::parse(name);
+        (0..s.charts.len())
+            .find(|&j| Some(charts[j]) == k)
+            .ok_or_else(|| format!("\"{name}\" is not among the step's charts ({})", s.charts.join(", ")))
+    };
+    let refers = match &s.refers {
+        None => vec![0],
+        Some(names) if names.is_empty() => return Err("names no chart; give 1 to 3 of the step's charts".into()),
+        Some(names) => names
+            .iter()
+            .map(|n| index(n))
+            .collect::<std::result::Result<Vec<usize>, String>>()?,
+    };
+    for (_, name) in caption
+        .iter()
+        .flat_map(|l| caption::references(l))
+        .filter(|(k, _)| k == "chart")
+    {
+        if !refers.iter().any(|&j| charts[j].name() == name) {
+            return Err(format!("the caption names {{chart:{name}}}; add \"{name}\" to refers"));
+        }
+    }
+    Ok(refers)
 }
 
 /// A caption's lines as written and rendered (`slot`: the model slot of the theory's colour);
@@ -506,7 +564,7 @@ caption = "a\nb\nc"
     fn the_shipped_tours_are_valid() {
         for (name, text) in BUILTIN {
             let t = Tour::parse(text, name).unwrap();
-            assert!((8..=12).contains(&t.steps.len()), "{name}: {} steps", t.steps.len());
+            assert!((8..=14).contains(&t.steps.len()), "{name}: {} steps", t.steps.len());
             // an 80-column terminal shows every caption line unwrapped (box borders: 2 columns)
             for l in t.steps.iter().flat_map(|s| &s.caption) {
                 assert!(

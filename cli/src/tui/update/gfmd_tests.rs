@@ -11,7 +11,11 @@ use std::sync::atomic::Ordering;
 
 fn app() -> App {
     let p = Preset::resolve("system-1").unwrap();
-    App::new("system-1", p).unwrap()
+    let mut a = App::new("system-1", p).unwrap();
+    // the first frame's computation, asked for and done
+    let gen = a.take_request().unwrap().gen;
+    a.on_reply(Reply::Done { gen });
+    a
 }
 
 fn key(a: &mut App, code: KeyCode) {

@@ -150,7 +150,7 @@ fn only_the_charts_shown_are_asked_for() {
     a.set_charts([ChartKind::Pr, ChartKind::Area, ChartKind::Thickness]);
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
     assert_eq!(a.shown_charts(), vec![0]);
-    let req = a.take_request().expect("a request");
+    let req = a.take_compute().expect("a request");
     assert!(
         req.needs.point && !req.needs.loads && !req.needs.thickness,
         "{:?}",
@@ -158,22 +158,39 @@ fn only_the_charts_shown_are_asked_for() {
     );
     // a message that shows nothing new asks for nothing
     crate::tui::drive::send(&mut a, Msg::Clock(std::time::Instant::now()));
-    assert!(a.take_request().is_none());
+    assert!(a.take_compute().is_none());
     // f: the area chart comes on screen, and with it the load sweep
     key(&mut a, KeyCode::Char('f'));
     assert_eq!(a.shown_charts(), vec![1]);
-    let req = a.take_request().expect("the chart now shown is asked for");
+    let req = a.take_compute().expect("the chart now shown is asked for");
     assert!(req.needs.loads && !req.needs.thickness, "{:?}", req.needs);
     // 160×48 shows all three: the thickness sweep too
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
     assert_eq!(a.shown_charts(), vec![0, 1, 2]);
-    let req = a.take_request().expect("the charts now shown are asked for");
+    let req = a.take_compute().expect("the charts now shown are asked for");
     assert!(req.needs.loads && req.needs.thickness, "{:?}", req.needs);
     // back to one chart: nothing more to compute
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
-    assert!(a.take_request().is_none());
+    assert!(a.take_compute().is_none());
     // z at 160×48: the focused chart alone
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
     key(&mut a, KeyCode::Char('z'));
     assert_eq!(a.shown_charts(), vec![1]);
+}
+
+#[test]
+fn a_gamma_below_the_resolvable_floor_is_refused_with_one_line() {
+    let mut a = app();
+    let before = a.params.scene.surface_energy_j_m2();
+    let e = a.set_typed(Param::Gamma, "1e-300").unwrap_err().to_string();
+    assert!(e.contains("gamma") && e.contains("1e-300") && e.contains("J/m²"), "{e}");
+    assert!(!e.contains('\n'), "{e}");
+    assert_eq!(a.params.scene.surface_energy_j_m2(), before);
+    // just above the floor adhesion registers; 0 and off stay allowed
+    let floor = asperity::input::scene::WEAK_ADHESION_GLO * a.params.scene.full_contact_energy();
+    a.set_typed(Param::Gamma, &format!("{:e}", floor * 4.0)).unwrap();
+    assert!(a.params.scene.is_adhesive());
+    a.set_typed(Param::Gamma, "0").unwrap();
+    a.set_typed(Param::Gamma, "off").unwrap();
+    assert_eq!(a.params.scene.surface_energy_j_m2(), 0.0);
 }

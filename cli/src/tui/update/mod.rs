@@ -2,8 +2,9 @@
 //! state ([`App`]) plus the [`Command`]s it asks for (a GFMD run to start or a preset, tour or
 //! file to read or write, quitting). [`update`] is pure: no terminal, no threads, no clock
 //! read (the instants it keeps come in messages), no file read or written, so every message is unit-tested
-//! (`update_tests.rs`). The computation of the current scene is asked for by the state
-//! itself ([`App::take_request`], once per frame, so that a burst of keys makes one request).
+//! (`update_tests.rs`). The computation of the current scene is one of the commands: an
+//! update that changed the scene or the charts shown returns [`Command::Compute`] first (the
+//! event loop submits the last of a burst, the worker drops superseded ones).
 //!
 //! The handlers each change one part of the state, one idea per file: [`key`] (keys, the
 //! overlays, typing), [`action`] (the key table's actions), [`turn`] (a knob stepped or
@@ -50,7 +51,7 @@ pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
     }
     // a chart that came on screen (z, f, v, a resize, a tour step) is computed now
     app.follow_shown();
-    app.take_asked()
+    app.take_commands()
 }
 
 impl App {
@@ -64,12 +65,28 @@ impl App {
     }
 
     /// Every command queued since the last call (by [`crate::tui::drive`], or by handlers
-    /// called directly), the computation of the current scene first when it changed: what
-    /// the event loop would run before the next frame.
+    /// called directly), the computation of the current scene first when it changed (the last
+    /// one asked for: it supersedes the others): what the event loop would run before the
+    /// next frame.
     pub fn take_commands(&mut self) -> Vec<Command> {
-        let mut out: Vec<Command> = self.take_request().map(Command::Compute).into_iter().collect();
+        let mut out: Vec<Command> = self.take_compute().map(Command::Compute).into_iter().collect();
         out.append(&mut self.take_asked());
         out
+    }
+
+    /// The computation to run now: the state's own request where the scene changed since the
+    /// last one, else the last [`Command::Compute`] queued by [`crate::tui::drive::send`]
+    /// (the queued ones are removed: the last supersedes the others).
+    pub fn take_compute(&mut self) -> Option<crate::tui::model::protocol::Request> {
+        let mut queued = None;
+        self.jobs.commands.retain(|c| match c {
+            Command::Compute(r) => {
+                queued = Some(r.clone());
+                false
+            }
+            _ => true,
+        });
+        self.take_request().or(queued)
     }
 
     /// The GFMD run to start, if `g` asked for one: its id, scene and cancel flag.

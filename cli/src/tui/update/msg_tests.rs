@@ -20,6 +20,13 @@ fn app() -> App {
     a
 }
 
+/// An explorer whose first frame's computation was already taken.
+fn idle() -> App {
+    let mut a = app();
+    let _ = a.take_request();
+    a
+}
+
 fn key(a: &mut App, code: KeyCode) -> Vec<Command> {
     update(a, Msg::Key(KeyEvent::new(code, KeyModifiers::NONE)))
 }
@@ -48,18 +55,22 @@ fn oops() -> Error {
 }
 
 #[test]
-fn a_key_changes_the_state_and_leaves_the_computation_to_the_state() {
+fn a_key_changes_the_state_and_returns_the_computation() {
     let mut a = app();
     let _ = a.take_request();
     let p0 = a.params.scene.pressure();
-    assert!(key(&mut a, KeyCode::Right).is_empty());
-    assert!(a.params.scene.pressure() > p0 && a.has_pending());
+    let cs = key(&mut a, KeyCode::Right);
+    assert_eq!(names(&cs), ["compute"]);
+    assert!(matches!(&cs[0], Command::Compute(r) if r.scene == a.params.scene));
+    assert!(a.params.scene.pressure() > p0 && !a.has_pending());
+    // a key that changes nothing computed asks for nothing
+    assert!(key(&mut a, KeyCode::Down).is_empty());
     assert_eq!(names(&key(&mut a, KeyCode::Char('q'))), ["quit"]);
 }
 
 #[test]
 fn file_and_gfmd_keys_return_their_commands() {
-    let mut a = app();
+    let mut a = idle();
     assert_eq!(names(&key(&mut a, KeyCode::Char('e'))), ["export"]);
     assert_eq!(names(&key(&mut a, KeyCode::Char('s'))), ["save"]);
     let cs = key(&mut a, KeyCode::Char('g'));
@@ -81,7 +92,7 @@ fn file_and_gfmd_keys_return_their_commands() {
 
 #[test]
 fn a_preset_is_asked_for_and_taken_when_it_arrives() {
-    let mut a = app();
+    let mut a = idle();
     key(&mut a, KeyCode::Char('p'));
     key(&mut a, KeyCode::Down);
     let cs = key(&mut a, KeyCode::Enter);
@@ -92,20 +103,19 @@ fn a_preset_is_asked_for_and_taken_when_it_arrives() {
     assert_eq!(a.params.preset.name, "system-1");
     let source = source.clone();
     let result = Preset::resolve(&source);
-    assert!(update(
+    let cs = update(
         &mut a,
         Msg::PresetLoaded {
             source: source.clone(),
-            result
-        }
-    )
-    .is_empty());
+            result,
+        },
+    );
+    assert_eq!(names(&cs), ["compute"]);
     assert_eq!(
         (a.params.source.as_str(), a.params.preset.name.as_str()),
         (source.as_str(), "system-2")
     );
     assert_eq!(a.params.scene, a.params.base);
-    assert!(a.has_pending());
     // one that cannot be read leaves everything as it is and says why
     let before = a.params.scene.clone();
     let result = Err(oops());
@@ -129,7 +139,7 @@ fn a_preset_is_asked_for_and_taken_when_it_arrives() {
 
 #[test]
 fn t_asks_for_the_tour_and_walks_it_when_it_arrives() {
-    let mut a = app();
+    let mut a = idle();
     let cs = key(&mut a, KeyCode::Char('t'));
     assert!(matches!(&cs[..], [Command::LoadTour(n)] if n == DEFAULT_TOUR), "{cs:?}");
     assert!(a.ui.tour.is_none());
@@ -147,7 +157,7 @@ fn t_asks_for_the_tour_and_walks_it_when_it_arrives() {
 
 #[test]
 fn a_tick_turns_the_spinner_and_plays_the_scale_view_to_its_end() {
-    let mut a = app();
+    let mut a = idle();
     assert!(update(&mut a, Msg::Tick).is_empty());
     assert_eq!(a.ui.spinner, 1);
     let frame = |q_rel| ScaleFrame {
@@ -173,7 +183,7 @@ fn a_tick_turns_the_spinner_and_plays_the_scale_view_to_its_end() {
 
 #[test]
 fn the_clock_is_the_loops_and_times_the_busy_state_and_the_gfmd_run() {
-    let mut a = app();
+    let mut a = idle();
     assert_eq!(a.ui.now, None);
     assert_eq!(a.ui.elapsed_s(Some(std::time::Instant::now())), 0.0, "no clock yet");
     let t0 = std::time::Instant::now();
@@ -324,7 +334,7 @@ fn done_ends_the_busy_state_of_the_newest_request_only() {
 
 #[test]
 fn gfmd_start_progress_and_end_follow_the_running_run_only() {
-    let mut a = app();
+    let mut a = idle();
     let cs = key(&mut a, KeyCode::Char('g'));
     let [Command::StartGfmd { id, .. }] = cs[..] else {
         panic!("{cs:?}")
@@ -379,7 +389,7 @@ fn gfmd_start_progress_and_end_follow_the_running_run_only() {
 
 #[test]
 fn written_files_keep_their_number_and_list_the_exported_scene() {
-    let mut a = app();
+    let mut a = idle();
     let scene = a.params.scene.clone();
     let written = |charts: bool, number: u32, paths: &[&str]| Written {
         charts,
@@ -423,7 +433,7 @@ fn written_files_keep_their_number_and_list_the_exported_scene() {
 #[test]
 fn the_mouse_focuses_selects_and_steps_only_when_asked_for() {
     use crate::tui::model::msg::{Pointer, Target};
-    let mut a = app();
+    let mut a = idle();
     let click = |t| Msg::Mouse(Pointer::Click(t));
     // off by default (`--mouse` turns it on)
     assert!(update(&mut a, click(Target::Chart(2))).is_empty());
@@ -441,8 +451,8 @@ fn the_mouse_focuses_selects_and_steps_only_when_asked_for() {
     let p = a.knob_rows().iter().position(|p| *p == Param::Pressure).unwrap();
     update(&mut a, click(Target::Knob(p)));
     let p0 = a.params.scene.pressure();
-    update(&mut a, Msg::Mouse(Pointer::WheelUp));
-    assert!(a.params.scene.pressure() > p0 && a.has_pending());
+    let cs = update(&mut a, Msg::Mouse(Pointer::WheelUp));
+    assert!(a.params.scene.pressure() > p0 && names(&cs) == ["compute"]);
     update(&mut a, Msg::Mouse(Pointer::WheelDown));
     assert_eq!(a.params.scene.pressure(), p0);
     // typing or an overlay takes no mouse
@@ -454,7 +464,7 @@ fn the_mouse_focuses_selects_and_steps_only_when_asked_for() {
 #[test]
 fn a_resize_is_kept_and_decides_whether_the_screen_is_too_small() {
     use crate::tui::model::wrap::MIN_SIZE;
-    let mut a = app();
+    let mut a = idle();
     // unknown size (a test's state, before the first frame): keys act
     assert_eq!(a.ui.size, None);
     assert!(!a.ui.too_small());
@@ -466,7 +476,9 @@ fn a_resize_is_kept_and_decides_whether_the_screen_is_too_small() {
         (200, 60, false),
         (0, 0, true),
     ] {
-        assert!(update(&mut a, Msg::Resize { cols, rows }).is_empty());
+        // a size that shows another chart computes it; nothing else is asked for
+        let cs = update(&mut a, Msg::Resize { cols, rows });
+        assert!(cs.iter().all(|c| matches!(c, Command::Compute(_))), "{cs:?}");
         assert_eq!(a.ui.size, Some((cols, rows)));
         assert_eq!(a.ui.too_small(), small, "{cols}×{rows}");
     }

@@ -71,7 +71,8 @@ impl App {
         // a step that shows the scale view plays it from q_L
         self.ui.playing = self.shows_scales();
         self.ui.frame = self.ui.playing.then_some(0);
-        self.ui.focus = 0;
+        // the chart the caption refers to first: the one a one-panel screen shows
+        self.ui.focus = st.refers.first().copied().unwrap_or(0);
         self.ui.caption_scroll = 0;
         self.ui.edit = None;
         if let Some(k) = st.select {

@@ -151,11 +151,27 @@ impl App {
                 s.set_pressure(p)?;
             }
             Param::Thickness => s.set_thickness_qr(t.parse::<asperity::input::scene::ThicknessQr>()?.0)?,
-            Param::Gamma => s.set_surface_energy_j_m2(if t.eq_ignore_ascii_case("off") {
-                0.0
-            } else {
-                parse_number("gamma", t)?
-            })?,
+            Param::Gamma => {
+                let g = if t.eq_ignore_ascii_case("off") {
+                    0.0
+                } else {
+                    parse_number("gamma", t)?
+                };
+                // below the energy balance's round-off the theory is the adhesionless one
+                // (`Scene::is_adhesive`): such a γ_s would only look like adhesion
+                let floor = asperity::input::scene::WEAK_ADHESION_GLO * s.full_contact_energy();
+                if g > 0.0 && g <= floor {
+                    return Err(Error::field(
+                        "gamma",
+                        t,
+                        format!(
+                            "0 (off) or above {} J/m², the least γ_s this surface's energy balance resolves",
+                            crate::numfmt::sig(floor, 3)
+                        ),
+                    ));
+                }
+                s.set_surface_energy_j_m2(g)?
+            }
             Param::C1 => s.set_model(Model::custom(
                 parse_number("c1", t)?,
                 m.c2,

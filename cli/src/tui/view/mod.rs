@@ -13,7 +13,7 @@ use crate::chart::dashes;
 use crate::looks::Glyph;
 pub use crate::numfmt::sig;
 use crate::tui::charts::plot;
-use crate::tui::charts::{self, Draw};
+use crate::tui::charts::{self, Draw, Role};
 use crate::tui::model::app::{App, Overlay};
 use crate::tui::model::keys;
 pub use crate::tui::view::layout::MIN_SIZE;
@@ -299,9 +299,16 @@ pub fn render_model(f: &mut Frame, area: Rect, m: &crate::chart::Chart, pal: Pal
             drawn.push((plot::vertical(x, yb), pal.look(lk), marker(lk.glyph), GraphType::Line));
         }
     }
-    for (i, s) in m.series.iter().enumerate() {
+    for i in m.draw_order() {
+        let s = &m.series[i];
         let lk = m.series_look(i);
         let (style, mk) = (pal.look(lk), marker(lk.glyph));
+        if s.role == Role::Band {
+            // a shaded range: every cell between its lower and upper ends marked
+            let fill = plot::fill_band(&s.points, m.xs, m.ys, cell);
+            drawn.push((fill, style, mk, GraphType::Scatter));
+            continue;
+        }
         for r in plot::runs(m, s, yb, max_points) {
             if s.style == Draw::Points {
                 drawn.push((r, style, mk, GraphType::Scatter));

@@ -107,6 +107,9 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         }
     }
     row_styled("γ̃_glo", sig(app.params.scene.gamma_glo(), 3), false);
+    if app.params.scene.is_adhesive() {
+        row_styled("μ_T", sig(app.params.scene.tabor(), 3), false);
+    }
     let state = match (&app.results.point, shown) {
         _ if stale_point || (app.jobs.busy && app.results.point.is_none()) => "computing…".to_string(),
         (Some(Ok(_)), Some(p)) if p.preview => format!("{} · refining…", p.branch),
@@ -135,7 +138,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
             }
         }),
     );
-    row("trust", trust_value(&app.params.scene));
+    row("trust", trust_of(shown));
     for (k, v) in gfmd_rows(app) {
         row(&k, v);
     }
@@ -176,24 +179,11 @@ fn branch_lines(
         .collect()
 }
 
-/// The panel's short form of the trust read-out ([`asperity::fit::trust`]): the band within
-/// which GFMD's a_r was measured from the theory's at this load and whose model it is, that no
-/// error is known at this load, or that the scene lies outside the reference set (`run`'s
-/// `trust` line says how far).
-fn trust_value(sc: &asperity::input::scene::Scene) -> String {
-    let t = asperity::fit::trust::assess(sc);
-    if !t.known {
-        return "no error known here".into();
-    }
-    if !t.inside {
-        return "outside GFMD set".into();
-    }
-    let band = crate::numfmt::sig(t.a_r_band_ratio, 2);
-    if t.same_model {
-        format!("a_r ×/÷{band} (m{})", t.measured_model)
-    } else {
-        // the set measured another model here: say whose error it is
-        format!("m{}'s a_r ×/÷{band}", t.measured_model)
+/// The trust row: computed with the point by the worker, not while drawing (– until then).
+fn trust_of(shown: Option<&crate::tui::model::data::PointData>) -> String {
+    match shown.map(|p| p.trust.as_str()) {
+        Some(t) if !t.is_empty() => t.to_string(),
+        _ => "–".to_string(),
     }
 }
 
