@@ -254,16 +254,14 @@ fn every_chart_with_every_overlay_tells_its_curves_apart() {
                 for c in file_clashes(&spec) {
                     failures.push(format!("{what}, {k:?} (file): {c}"));
                 }
-                // a model is drawn in its colour, on screen and in the file
-                for (s, f) in m
-                    .series
-                    .iter()
-                    .zip(spec.series.iter().skip(spec.series.len() - m.series.len()))
-                {
+                // a model is drawn in its colour, on screen and in the file (the file draws
+                // its series in layers, so they are matched by name)
+                for s in &m.series {
                     if let Role::Model(i) = s.role {
                         let want = model_colour(i);
                         let on_screen = e.iter().find(|e| e.name == s.name).map(|e| e.look.ink);
-                        if on_screen.is_some_and(|c| c != Ink::Rgb(want)) || f.colour != want {
+                        let in_file = spec.series.iter().find(|f| f.name == s.name).map(|f| f.colour);
+                        if on_screen.is_some_and(|c| c != Ink::Rgb(want)) || in_file != Some(want) {
                             failures.push(format!("{what}, {k:?}: {} not in its colour", s.name));
                         }
                     }
