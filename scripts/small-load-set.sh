@@ -13,6 +13,8 @@
 #   finite  loading sweeps on L/lambda_r = 4 (512²) and 8 (1024²) maps at the same lambda_r/lambda_s
 #           and lambda_s/da, and load cycles at L/lambda_r = 4
 #   more    load cycles of the remaining thicknesses (1, 0.5, 0.1)
+#   large   the half-space's loading sweeps on L/lambda_r = 16 (2048²) and a second seed at 8
+#           (not in the default phases)
 # Runs are resumable (a case whose JSON exists is skipped); JOBS (default 1) run in parallel,
 # each on RAYON_NUM_THREADS (default 1) threads. Each run's CPU seconds (user + system, as
 # counted by the kernel) go to RUNS/cpu.log.
@@ -29,7 +31,7 @@ G2=0.157  # system II's gamma_s (J/m^2)
 PRESETS="$OUT/presets"
 mkdir -p "$PRESETS"
 # system II with the GFMD map's L/lambda_r = R at bandwidth 16 (grid = R * 16 * 8)
-for r in 2 4 8; do
+for r in 2 4 8 16; do
   sed -e "s/^system_size_ratio = .*/system_size_ratio = $r/" -e "s/^bandwidth = .*/bandwidth = 16/" \
     presets/system-2.toml > "$PRESETS/system-2-L$r.toml"
 done
@@ -50,6 +52,10 @@ for phase in $PHASES; do
         done
         cases+=("cycle 4 $t 1 1")
       done ;;
+    large)
+      # the half-space's small-load a_r has not converged at L/lambda_r = 8: 2048² maps and a
+      # second 1024² seed
+      for f in 1 0; do cases+=("sweep 16 inf $f 1" "sweep 8 inf $f 2"); done ;;
     more)
       for seed in 1 2 3; do
         for t in 1 0.5 0.1; do
