@@ -110,8 +110,8 @@ pub struct GfmdReference {
     pub reference: Reference,
 }
 
-/// Largest K.
-pub const MAX_SEEDS: usize = 1000;
+/// Largest K, and the allowed λ_s/Δa of a rung of a resolution ladder (the range table's).
+pub use crate::limits::{LADDER_RANGE, MAX_SEEDS};
 
 /// Runs the sweeps of `spec` on `setup` and builds the reference (see the module docs).
 /// `progress` gets the stage with each solver report.
@@ -166,16 +166,13 @@ struct Plan<'a> {
 impl<'a> Plan<'a> {
     /// The plan of `spec` on `setup` (errors: see [`gfmd_reference`]).
     fn new(setup: &'a GfmdSetup, spec: &'a GfmdReferenceSpec) -> Result<Plan<'a>> {
-        if !(1..=MAX_SEEDS).contains(&spec.seeds) {
-            return Err(Error::invalid(
-                Field::Seeds,
-                spec.seeds as f64,
-                format!("1 <= seeds <= {MAX_SEEDS}"),
-            ));
-        }
+        crate::limits::check(Field::Seeds, spec.seeds as f64)?;
         let rungs: Vec<f64> = match &spec.ladder {
             Some(l) => {
                 let mut l = l.clone();
+                for &rung in &l {
+                    crate::limits::check(Field::Ladder, rung)?;
+                }
                 l.sort_by(f64::total_cmp);
                 l.dedup();
                 if l.len() < 2 {

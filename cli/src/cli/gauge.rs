@@ -37,13 +37,13 @@ pub struct ReferenceArgs {
     #[arg(long)]
     pub reference: String,
     /// First p* of --reference eq18 (default 1e-3) or gfmd (default p*/2.5).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long)]
     pub from: Option<f64>,
     /// Last p* of --reference eq18 (default 1) or gfmd (default p*·2.5).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long)]
     pub to: Option<f64>,
     /// Number of log-spaced loads of --reference eq18 (default 31) or gfmd (default 4).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::whole_number)]
+    #[arg(long)]
     pub points: Option<usize>,
     /// Pr(sigma*) histograms: a CSV file with columns p, sigma, density.
     #[arg(long)]
@@ -95,6 +95,22 @@ fn read(path: &Path, flag: &str) -> Result<String> {
     )
 }
 
+/// A file's cell error (`name: line N, column C`) under the flag that named the file.
+fn under_flag(e: Error, flag: &str) -> Error {
+    match e {
+        Error::Invalid {
+            field: Field::Other(k),
+            value,
+            allowed,
+        } if !k.starts_with("--") => Error::Invalid {
+            field: Field::Other(format!("{flag} {k}")),
+            value,
+            allowed,
+        },
+        e => e,
+    }
+}
+
 /// The reference and the scene it is compared on (for `gfmd`, the scene GFMD runs), with the
 /// GFMD run when it is one.
 pub fn resolve_reference(
@@ -129,14 +145,15 @@ pub fn resolve_reference(
             let name = path
                 .file_name()
                 .map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
-            reference::parse_csv(&read(path, "--reference")?, &name)?
+            reference::parse_csv(&read(path, "--reference")?, &name).map_err(|e| under_flag(e, "--reference"))?
         }
     };
     if let Some(pr) = &args.pr {
         let name = pr
             .file_name()
             .map_or(String::new(), |n| n.to_string_lossy().into_owned());
-        r.points.extend(reference::parse_pr_csv(&read(pr, "--pr")?, &name)?);
+        let pr = reference::parse_pr_csv(&read(pr, "--pr")?, &name).map_err(|e| under_flag(e, "--pr"))?;
+        r.points.extend(pr);
     }
     if let Some(list) = &args.observables {
         let allowed = "a comma-separated list of a_r, mean_contact_stress, mean_gap_rel, pr held by the reference";
@@ -381,7 +398,7 @@ pub struct CompareArgs {
     /// The reference.
     #[command(flatten)]
     pub reference: ReferenceArgs,
-    /// The models: a comma-separated list of 1, 2, 3, 4, yp08, xu24.
+    /// The models: a comma-separated list of 1, 2, 3, 4, 5, yp08, xu24.
     #[arg(long, default_value = "1,2,3,4,yp08,xu24")]
     pub models: String,
     /// Presets whose model joins the comparison (e.g. one written by gauge --save-preset).
@@ -431,21 +448,24 @@ pub fn compare(args: &CompareArgs) -> Result<()> {
             Error::invalid_text(
                 Field::Other("--models".into()),
                 t,
-                "a comma-separated list of 1, 2, 3, 4, yp08, xu24",
+                format!("a comma-separated list of {}", ModelKind::named_list()),
             )
         })?;
         if kind == ModelKind::Custom {
             return Err(Error::invalid_text(
                 Field::Other("--models".into()),
                 t,
-                "1, 2, 3, 4, yp08, xu24 (a custom model comes in with --fitted PRESET)",
+                format!(
+                    "{} (a custom model comes in with --fitted PRESET)",
+                    ModelKind::named_list()
+                ),
             ));
         }
         let m = Model::of_kind(kind, &scene.model())?;
         models.push((m.label(), m));
     }
     for p in &args.fitted {
-        let preset = Preset::load(p)?;
+        let preset = Preset::load(p).map_err(|e| super::parse::preset_under_flag(e, "--fitted"))?;
         let name = p
             .file_stem()
             .map_or("fitted".into(), |s| s.to_string_lossy().into_owned());
