@@ -19,6 +19,10 @@ fn closed((lo, hi): (f64, f64)) -> Allowed {
     Allowed::Range(Range::closed(lo, hi))
 }
 
+fn whole((lo, hi): (usize, usize)) -> Allowed {
+    Allowed::Range(Range::whole(lo as f64, hi as f64))
+}
+
 /// The values `field` accepts on its own, or `None` where they depend on another field (a
 /// sweep's ends depend on the swept knob) or are not numbers (a height map).
 ///
@@ -62,9 +66,106 @@ pub fn allowed(field: &Field) -> Option<Allowed> {
         Field::MaxIterations => Allowed::Range(MAX_ITERATIONS_RANGE),
         Field::Bins => Allowed::Range(BINS_RANGE),
         Field::ContactGap => Allowed::Range(CONTACT_GAP_RANGE),
+        Field::Seeds => Allowed::Range(Range::whole(1.0, MAX_SEEDS as f64)),
+        Field::Ladder => closed(LADDER_RANGE),
+        Field::Seed => Allowed::Range(Range::whole(0.0, u64::MAX as f64)),
+        Field::FudgeGamma => Allowed::Range(Range::open_closed(
+            crate::input::model::FUDGE_GAMMA_RANGE.0,
+            crate::input::model::FUDGE_GAMMA_RANGE.1,
+        )),
+        Field::QMin | Field::QMax => Allowed::Range(Range::above(0.0)),
+        Field::BinsPerDecade => closed(crate::surface::psd::BINS_PER_DECADE_RANGE),
+        Field::FigurePoints => whole(FIGURE_POINTS_RANGE),
+        Field::ChartWidth => whole(CHART_WIDTH_RANGE),
+        Field::ChartHeight => whole(CHART_HEIGHT_RANGE),
+        Field::GfmdSizeRatio | Field::GfmdBandwidth | Field::GfmdPointsPerShortWavelength => {
+            whole(GFMD_REDUCTION_RANGE)
+        }
+        Field::TourStep => Allowed::Range(Range {
+            lo: crate::error::Bound::Inclusive(1.0),
+            hi: crate::error::Bound::Unbounded,
+            whole: true,
+        }),
         _ => return None,
     })
 }
+
+/// Checks `value` of `field` against its range in the table ([`allowed`]); a field without a
+/// range of its own passes.
+///
+/// # Errors
+/// [`crate::error::Error::Invalid`] for `field`, stating its range, when `value` lies outside it.
+pub fn check(field: Field, value: f64) -> crate::error::Result<f64> {
+    match allowed(&field).as_ref().and_then(Allowed::range) {
+        Some(r) if !r.contains(value) => Err(crate::error::Error::invalid(field, value, *r)),
+        _ => Ok(value),
+    }
+}
+
+/// Largest number of GFMD realisations (seeds) of an ensemble.
+pub const MAX_SEEDS: usize = 1000;
+/// Allowed λ_s/Δa of a rung of a GFMD resolution ladder.
+pub const LADDER_RANGE: (f64, f64) = (2.0, 256.0);
+/// L/λ_r, λ_r/λ_s and λ_s/Δa of a preset's reduced GFMD grid (`[gfmd]`).
+pub const GFMD_REDUCTION_RANGE: (usize, usize) = (1, 4096);
+/// Loads of a figure's curves (`figure --points`).
+pub const FIGURE_POINTS_RANGE: (usize, usize) = (2, 100_000);
+/// Width of a text chart in characters.
+pub const CHART_WIDTH_RANGE: (usize, usize) = (20, 1000);
+/// Height of a text chart in lines.
+pub const CHART_HEIGHT_RANGE: (usize, usize) = (10, 1000);
+
+/// Every user-settable number with a range of its own in [`allowed`]: the table each front
+/// end's flags, keys and keywords are checked against (`cli/tests/range_table.rs` enumerates
+/// the command line's flags and the presets' keys against it; a front end adds its side by
+/// naming these fields).
+pub const FIELDS: &[Field] = &[
+    Field::SystemSize,
+    Field::RolloffWavelength,
+    Field::ShortWavelength,
+    Field::Hurst,
+    Field::RmsGradient,
+    Field::RmsHeight,
+    Field::ContactModulus,
+    Field::SurfaceEnergy,
+    Field::Range,
+    Field::Pressure,
+    Field::PressurePa,
+    Field::Thickness,
+    Field::Model,
+    Field::C1,
+    Field::C2,
+    Field::Alpha,
+    Field::KGriffith,
+    Field::Rtol,
+    Field::AdhesionSteps,
+    Field::AdhesionPoints,
+    Field::AdhesionTol,
+    Field::SigmaMax,
+    Field::SigmaPoints,
+    Field::SweepStep,
+    Field::EdgeRel,
+    Field::Grid,
+    Field::SweepPoints,
+    Field::GfmdTolerance,
+    Field::MaxIterations,
+    Field::Bins,
+    Field::ContactGap,
+    Field::GfmdSizeRatio,
+    Field::GfmdBandwidth,
+    Field::GfmdPointsPerShortWavelength,
+    Field::Seeds,
+    Field::Ladder,
+    Field::Seed,
+    Field::FudgeGamma,
+    Field::QMin,
+    Field::QMax,
+    Field::BinsPerDecade,
+    Field::FigurePoints,
+    Field::ChartWidth,
+    Field::ChartHeight,
+    Field::TourStep,
+];
 
 #[cfg(test)]
 mod tests {
@@ -91,5 +192,12 @@ mod tests {
             allowed(&Field::Model).unwrap().describe("model"),
             "1, 2, 3, 4, 5, custom, yp08 or xu24"
         );
+    }
+
+    #[test]
+    fn every_field_of_the_table_has_a_range() {
+        for f in FIELDS {
+            assert!(allowed(f).is_some(), "{f}: no range");
+        }
     }
 }

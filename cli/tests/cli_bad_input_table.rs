@@ -332,7 +332,7 @@ fn other_bad_input_is_one_line_too() {
             vec!["run", "--preset", v],
             vec![
                 format!("line {line}: model.variant"),
-                "1, 2, 3, 4, 5 or \"custom\"".into(),
+                asperity::input::model::MODEL_NAMES.into(),
             ],
         ),
         (vec!["run", "--preset", h], vec!["at most 1048576 bytes".into()]),

@@ -10,34 +10,16 @@
 //! truncated, wrong dtype, garbage, a 10⁹-point header) and the numeric keys of a preset
 //! (every key of a preset and of a tour: cli_every_key.rs).
 
-use asperity::error::Range;
-use asperity_cli::cli::flags::{self, Kind};
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
 
-/// A scratch folder of this test process.
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("asperity-every-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
+use asperity_cli::cli::flags;
+use common::corpus::{allowed, context, run_forbidden, scratch, write_map};
+use std::path::Path;
 
 /// Runs the binary with work forbidden; returns (exit code, stdout, stderr, work started).
 fn run(args: &[String], log: &Path) -> (i32, String, String, String) {
-    let _ = std::fs::remove_file(log);
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .env(asperity_cli::cli::FORBID_WORK_ENV, "1")
-        .env(asperity_cli::cli::WORK_LOG_ENV, log)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-        std::fs::read_to_string(log).unwrap_or_default(),
-    )
+    let r = run_forbidden(args, log);
+    (r.code, r.out, r.err, r.work)
 }
 
 /// The hard values: -1, 0, 1e300, nan, inf, '', abc, a 300-digit number, a missing file, a
@@ -55,88 +37,6 @@ fn values(dir: &Path) -> Vec<String> {
         dir.join("no-such-file.txt").display().to_string(),
         dir.display().to_string(),
     ]
-}
-
-/// Whether the table's row allows `v` (decided from the kind and the library's ranges, not
-/// by running the parser).
-fn allowed(kind: &Kind, arg: &clap::Arg, v: &str) -> bool {
-    let num = v.trim().parse::<f64>().ok();
-    let in_range = |r: Option<Range>| matches!((num, r), (Some(x), Some(r)) if r.contains(x));
-    let field_range = |f: &asperity::error::Field| asperity::limits::allowed(f).and_then(|a| a.range().copied());
-    match kind {
-        Kind::Number(f) => in_range(field_range(f)),
-        // a count is a machine integer too
-        Kind::Count(f) => in_range(field_range(f)) && num.is_some_and(|x| x <= usize::MAX as f64),
-        Kind::Whole(f) => in_range(field_range(f)) && num.is_some_and(|x| x <= i64::MAX as f64),
-        Kind::Positive => num.is_some_and(|x| x.is_finite() && x > 0.0),
-        Kind::NumberIn(r) => in_range(Some(*r)),
-        Kind::CountIn(lo, hi) => in_range(Some(Range::whole(*lo as f64, *hi as f64))),
-        Kind::Seed => v.trim().parse::<u64>().is_ok(),
-        Kind::Step => num.is_some_and(|x| x >= 1.0 && x.fract() == 0.0 && x <= i64::MAX as f64),
-        // the default --over pressure
-        Kind::SweepEnd => in_range(field_range(&asperity::error::Field::Pressure)),
-        Kind::Thickness => v == "inf" || in_range(field_range(&asperity::error::Field::Thickness)),
-        Kind::Model => v.parse::<asperity::input::model::ModelKind>().is_ok(),
-        Kind::Ladder => {
-            let (lo, hi) = asperity_cli::cli::gfmd::LADDER_RANGE;
-            in_range(Some(Range::closed(lo, hi)))
-        }
-        Kind::Choice => arg
-            .get_possible_values()
-            .iter()
-            .any(|p| p.matches(v, arg.is_ignore_case_set())),
-        Kind::Switch => true,
-        // names, lists and files to read: none of the hard values is one
-        Kind::Text(_) | Kind::InFile => false,
-        Kind::OutFile(exts) | Kind::OutText(exts) => {
-            let p = Path::new(v);
-            let ext = p.extension().and_then(|e| e.to_str()).unwrap_or("");
-            let dir = p
-                .parent()
-                .filter(|d| !d.as_os_str().is_empty())
-                .unwrap_or(Path::new("."));
-            !v.is_empty() && !p.is_dir() && exts.contains(&ext) && dir.is_dir()
-        }
-    }
-}
-
-/// Flags a command needs to get to its own checks, with values that pass them (a psd map).
-fn context(sub: &str, skip: &str, map: &str) -> Vec<String> {
-    // a map to write, beside the map read
-    let out = format!("{map}.npy");
-    let all: Vec<(&str, &str)> = match sub {
-        "sweep" => vec![("--from", "0.01"), ("--to", "0.1")],
-        "gauge" => vec![("--fit", "w0"), ("--reference", "eq18")],
-        "compare" => vec![("--reference", "eq18")],
-        "psd" => vec![("file", map)],
-        "surface" => vec![("action", "generate"), ("--output", out.as_str())],
-        _ => vec![],
-    };
-    let mut out = Vec::new();
-    for (k, v) in all.into_iter().filter(|(k, _)| *k != skip) {
-        if !k.starts_with("--") {
-            out.push(v.to_string());
-        } else {
-            out.push(k.to_string());
-            out.push(v.to_string());
-        }
-    }
-    out
-}
-
-/// A small rough map (8 × 8) for `psd`'s positional FILE.
-fn write_map(dir: &Path) -> String {
-    let p = dir.join("ok.txt");
-    let rows: Vec<String> = (0..8)
-        .map(|i| {
-            (0..8)
-                .map(|j| format!("{:e}", 1e-9 * ((i * 7 + j * 3) % 5) as f64))
-                .collect::<Vec<_>>()
-                .join(" ")
-        })
-        .collect();
-    std::fs::write(&p, rows.join("\n")).unwrap();
-    p.display().to_string()
 }
 
 /// Checks one refused case: exit 2, nothing on stdout, one line of at most 200 characters

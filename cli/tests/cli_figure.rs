@@ -252,7 +252,8 @@ fn bad_figure_files_give_the_preset_errors() {
         std::fs::write(&path, good.replacen(from, to, 1)).unwrap();
         let p = path.to_str().unwrap();
         one_line_error(&["figure", p], needle);
-        one_line_error(&["figure", p], &format!("preset {p}: "));
+        // called by its kind, by the file's name
+        one_line_error(&["figure", p], &format!("invalid figure = {name}.toml: "));
     }
     // the same file unmodified works, by path
     let path = dir.join("good.toml");

@@ -104,6 +104,24 @@ pub enum Field {
     Seeds,
     /// λ_s/Δa of the rungs of a GFMD resolution ladder.
     Ladder,
+    /// The seed of a GFMD surface realisation (the first of an ensemble).
+    Seed,
+    /// γ_f, the fitting parameter of the literature variants YP08 and Xu24.
+    FudgeGamma,
+    /// Lower cut-off q_min of a measured spectrum (1/m).
+    QMin,
+    /// Upper cut-off q_max of a measured spectrum (1/m).
+    QMax,
+    /// Radial bins per decade of q of a measured map's PSD.
+    BinsPerDecade,
+    /// Loads of a figure's curves.
+    FigurePoints,
+    /// Width of a text chart (characters).
+    ChartWidth,
+    /// Height of a text chart (lines).
+    ChartHeight,
+    /// The step of a tour to start at (1 = the first).
+    TourStep,
     /// Any other field, by its canonical key (e.g. `reference[2].pressure`).
     Other(String),
 }
@@ -153,6 +171,15 @@ impl Field {
             Field::GfmdPointsPerShortWavelength => "gfmd.points_per_short_wavelength",
             Field::Seeds => "gfmd.seeds",
             Field::Ladder => "gfmd.ladder",
+            Field::Seed => "gfmd.seed",
+            Field::FudgeGamma => "model.fudge_gamma",
+            Field::QMin => "measured.q_min_per_m",
+            Field::QMax => "measured.q_max_per_m",
+            Field::BinsPerDecade => "psd.bins_per_decade",
+            Field::FigurePoints => "figure.points",
+            Field::ChartWidth => "chart.width",
+            Field::ChartHeight => "chart.height",
+            Field::TourStep => "tour.step",
             Field::Other(k) => k,
         }
     }

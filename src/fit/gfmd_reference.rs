@@ -110,39 +110,25 @@ pub struct GfmdReference {
     pub reference: Reference,
 }
 
-/// Largest K.
-pub const MAX_SEEDS: usize = 1000;
-/// Allowed λ_s/Δa of a resolution ladder's rung.
-pub const LADDER_RANGE: (f64, f64) = (2.0, 256.0);
+/// Largest K, and the allowed λ_s/Δa of a rung of a resolution ladder (the range table's).
+pub use crate::limits::{LADDER_RANGE, MAX_SEEDS};
 
-/// Checks a number of realisations K: 1..=[`MAX_SEEDS`].
+/// Checks a number of realisations K against the range table (1..=[`MAX_SEEDS`]).
 ///
 /// # Errors
 /// [`Error::Invalid`] naming [`Field::Seeds`].
 pub fn check_seeds(k: usize) -> Result<()> {
-    if !(1..=MAX_SEEDS).contains(&k) {
-        return Err(Error::invalid(
-            Field::Seeds,
-            k as f64,
-            format!("1 <= seeds <= {MAX_SEEDS}"),
-        ));
-    }
-    Ok(())
+    crate::limits::check(Field::Seeds, k as f64).map(|_| ())
 }
 
 /// Checks a resolution ladder and gives its distinct rungs, ascending: every rung in
-/// [`LADDER_RANGE`], two or more distinct.
+/// [`LADDER_RANGE`] (the range table's), two or more distinct.
 ///
 /// # Errors
 /// [`Error::Invalid`] naming [`Field::Ladder`].
 pub fn check_ladder(ladder: &[f64]) -> Result<Vec<f64>> {
-    let (lo, hi) = LADDER_RANGE;
-    if let Some(&bad) = ladder.iter().find(|&&x| !(x >= lo && x <= hi)) {
-        return Err(Error::invalid(
-            Field::Ladder,
-            bad,
-            format!("{lo} <= lambda_s/da <= {hi} at every rung"),
-        ));
+    for &rung in ladder {
+        crate::limits::check(Field::Ladder, rung)?;
     }
     let mut distinct = ladder.to_vec();
     distinct.sort_by(f64::total_cmp);

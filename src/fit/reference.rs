@@ -131,6 +131,18 @@ pub fn eq18(from: f64, to: f64, points: usize) -> Result<Reference> {
     if to == from && points > 1 {
         return Err(Error::invalid(Field::SweepTo, to, "to > from for more than one point"));
     }
+    if to > from && points < 2 {
+        // one load has no spacing: the log-spaced loads need two ends
+        let hi = crate::theory::sweep::SWEEP_POINTS_RANGE.1 as f64;
+        return Err(Error::invalid(
+            Field::SweepPoints,
+            points as f64,
+            format!(
+                "{} (one point only with to = from)",
+                crate::error::Range::whole(2.0, hi).describe("points")
+            ),
+        ));
+    }
     let n = points;
     let points = (0..n)
         .map(|i| {
@@ -187,6 +199,17 @@ fn header<'a>(source: &str, text: &'a str, known: &[&str]) -> Result<(usize, Vec
 }
 
 /// As [`header`], also taking the columns `extra` (not named in the message).
+/// The columns `known` in words, each `_err` column folded into its value's ("a_r (and
+/// a_r_err)" would double the list): the allowed part of a header error stays one short line.
+fn columns_text(known: &[&str]) -> String {
+    let values: Vec<&str> = known.iter().copied().filter(|c| !c.ends_with("_err")).collect();
+    if values.len() == known.len() {
+        values.join(", ")
+    } else {
+        format!("{} (each with an optional _err)", values.join(", "))
+    }
+}
+
 fn header_with<'a>(source: &str, text: &'a str, known: &[&str], extra: &[&str]) -> Result<(usize, Vec<&'a str>)> {
     let Some((n, h)) = lines(text).next() else {
         return Err(cell_error(
@@ -194,7 +217,7 @@ fn header_with<'a>(source: &str, text: &'a str, known: &[&str], extra: &[&str]) 
             1,
             "(header)",
             "(empty file)",
-            &format!("a header line naming the columns {}", known.join(", ")),
+            &format!("a header line naming the columns {}", columns_text(known)),
         ));
     };
     let cols: Vec<&str> = h.split(',').map(str::trim).collect();
@@ -205,7 +228,7 @@ fn header_with<'a>(source: &str, text: &'a str, known: &[&str], extra: &[&str]) 
                 n,
                 &format!("{}", i + 1),
                 c,
-                &format!("one of {}", known.join(", ")),
+                &format!("one of {}", columns_text(known)),
             ));
         }
         if cols[..i].contains(c) {

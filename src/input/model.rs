@@ -32,8 +32,16 @@
 use crate::error::{fmt_value, Allowed, Error, Field, Range, Result};
 use serde::{Deserialize, Serialize};
 
-/// The model variants by name.
-pub const MODEL_CHOICES: [&str; 8] = ["1", "2", "3", "4", "5", "custom", "yp08", "xu24"];
+/// The model variants by name, from [`ModelKind::ALL`].
+pub const MODEL_CHOICES: [&str; 8] = {
+    let mut names = [""; 8];
+    let mut i = 0;
+    while i < names.len() {
+        names[i] = ModelKind::ALL[i].name();
+        i += 1;
+    }
+    names
+};
 /// Allowed c₁ and c₂ each (W(a) ≥ 0 on [0, 1] is checked on the pair): the paper's models
 /// have |c| ≤ 1; beyond 1000 W spans more orders of magnitude than the broadening resolves.
 pub const C_RANGE: Range = Range::closed(-1e3, 1e3);
@@ -128,10 +136,39 @@ impl std::str::FromStr for ModelKind {
     }
 }
 
-/// The allowed model names, in words.
+/// The allowed model names, in words (every one of [`ModelKind::ALL`]; a test holds them to it).
 pub const MODEL_NAMES: &str = "1, 2, 3, 4, 5, custom, yp08 or xu24";
 
 impl ModelKind {
+    /// Every variant, in the order lists name them: the one list every list of models
+    /// (messages, help, choices) is printed from.
+    pub const ALL: [ModelKind; 8] = [
+        ModelKind::One,
+        ModelKind::Two,
+        ModelKind::Three,
+        ModelKind::Four,
+        ModelKind::Five,
+        ModelKind::Custom,
+        ModelKind::Yp08,
+        ModelKind::Xu24,
+    ];
+
+    /// The names of the variants `keep` selects, comma-separated (`1, 2, 3, 4, 5, yp08, xu24`).
+    pub fn list(keep: impl Fn(ModelKind) -> bool) -> String {
+        let names: Vec<&str> = ModelKind::ALL
+            .into_iter()
+            .filter(|&k| keep(k))
+            .map(ModelKind::name)
+            .collect();
+        names.join(", ")
+    }
+
+    /// The names of the variants a comparison takes (all but custom, which comes with its
+    /// coefficients), comma-separated.
+    pub fn named_list() -> String {
+        ModelKind::list(|k| k != ModelKind::Custom)
+    }
+
     /// The model number 1–5, or `None` for custom and the named variants.
     pub fn number(self) -> Option<u8> {
         match self {
@@ -152,7 +189,7 @@ impl ModelKind {
 
     /// The name as `--model` and a preset's `variant` take it: "1".."5", "custom", "yp08",
     /// "xu24".
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             ModelKind::One => "1",
             ModelKind::Two => "2",
@@ -210,11 +247,7 @@ impl Model {
             return Err(Error::invalid_text(Field::Model, kind.name(), "yp08 or xu24"));
         }
         if !(gamma_f > FUDGE_GAMMA_RANGE.0 && gamma_f <= FUDGE_GAMMA_RANGE.1) {
-            return Err(Error::invalid(
-                Field::Other(FUDGE_GAMMA_KEY.into()),
-                gamma_f,
-                "0 < fudge_gamma <= 1",
-            ));
+            return Err(Error::invalid(Field::FudgeGamma, gamma_f, "0 < fudge_gamma <= 1"));
         }
         Ok(Model {
             kind,
@@ -285,7 +318,7 @@ impl Model {
         K_GRIFFITH_RANGE.check(Field::KGriffith, self.k_griffith)?;
         if self.kind.is_fudge_variant() && !(self.c1 >= 0.0 && self.c1 < 1.0) {
             return Err(Error::invalid(
-                Field::Other(FUDGE_GAMMA_KEY.into()),
+                Field::FudgeGamma,
                 1.0 - self.c1,
                 Range::open_closed(0.0, 1.0),
             ));
@@ -377,6 +410,17 @@ impl Model {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_list_of_models_is_the_list_of_variants() {
+        let all = ModelKind::list(|_| true);
+        assert_eq!(all, MODEL_CHOICES.join(", "));
+        let (head, last) = all.rsplit_once(", ").unwrap();
+        assert_eq!(MODEL_NAMES, format!("{head} or {last}"));
+        for k in ModelKind::ALL {
+            assert_eq!(k.name().parse::<ModelKind>().unwrap(), k);
+        }
+    }
 
     #[test]
     fn weight_limits() {

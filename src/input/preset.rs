@@ -5,8 +5,8 @@
 //! one line naming the field, its value and the allowed range. See `presets/system-1.toml` for
 //! the documented format (units are in the key names: `_m`, `_pa`, `_j_m2`).
 
-use crate::error::{Error, Field, Result};
-use crate::input::model::Model;
+use crate::error::{Allowed, Error, Field, Result};
+use crate::input::model::{Model, MODEL_CHOICES};
 use crate::input::scene::Scene;
 use crate::surface::spectrum::{Normalisation, SelfAffine, Spectrum};
 use serde::{Deserialize, Serialize};
@@ -102,7 +102,7 @@ impl<'de> Deserialize<'de> for Variant {
         impl serde::de::Visitor<'_> for V {
             type Value = Variant;
             fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str("1, 2, 3, 4, 5 or \"custom\"")
+                f.write_str(crate::input::model::MODEL_NAMES)
             }
             fn visit_i64<E: serde::de::Error>(self, v: i64) -> std::result::Result<Variant, E> {
                 Ok(Variant::Number(v))
@@ -368,9 +368,7 @@ impl Preset {
                 (Field::GfmdBandwidth, g.bandwidth),
                 (Field::GfmdPointsPerShortWavelength, g.points_per_short_wavelength),
             ] {
-                if !(1..=4096).contains(&v) {
-                    return Err(Error::invalid(k, f64::from(v), "an integer in 1..=4096"));
-                }
+                crate::limits::check(k, f64::from(v))?;
             }
         }
         for (i, r) in self.reference.iter().enumerate() {
@@ -424,7 +422,7 @@ impl Preset {
 
     /// The preset's default model.
     pub fn model(&self) -> Result<Model> {
-        use crate::input::model::{ModelKind, FUDGE_GAMMA_DEFAULT, FUDGE_GAMMA_KEY};
+        use crate::input::model::{ModelKind, FUDGE_GAMMA_DEFAULT};
         let m = &self.model;
         if let Variant::Name(s) = &m.variant {
             if let Ok(kind @ (ModelKind::Yp08 | ModelKind::Xu24)) = s.parse::<ModelKind>() {
@@ -440,7 +438,7 @@ impl Preset {
         }
         if let Some(g) = m.fudge_gamma {
             return Err(Error::invalid(
-                Field::Other(FUDGE_GAMMA_KEY.into()),
+                Field::FudgeGamma,
                 g,
                 "only with variant = \"yp08\" or \"xu24\"",
             ));
@@ -448,14 +446,15 @@ impl Preset {
         let n = match &m.variant {
             Variant::Number(n) => Some(*n),
             Variant::Name(s) if s == "custom" => None,
-            Variant::Name(s) => Some(s.parse::<i64>().map_err(|_| {
-                Error::invalid_text(Field::Model, s, "1, 2, 3, 4, 5, \"custom\", \"yp08\" or \"xu24\"")
-            })?),
+            Variant::Name(s) => Some(
+                s.parse::<i64>()
+                    .map_err(|_| Error::invalid_text(Field::Model, s, Allowed::choices(MODEL_CHOICES)))?,
+            ),
         };
         match n {
             Some(n) => {
                 if !(1..=5).contains(&n) {
-                    return Err(Error::invalid_text(Field::Model, n, "1, 2, 3, 4, 5 or \"custom\""));
+                    return Err(Error::invalid_text(Field::Model, n, Allowed::choices(MODEL_CHOICES)));
                 }
                 if m.c1.is_some() || m.c2.is_some() || m.alpha.is_some() || m.k_griffith.is_some() || m.cap.is_some() {
                     return Err(Error::invalid_text(

@@ -75,6 +75,8 @@ impl PsdReport {
 /// `bins_per_decade` outside [`psd::BINS_PER_DECADE_RANGE`].
 pub fn psd(file: &str, surface: &Surface, opts: &PsdOptions) -> Result<PsdReport> {
     let start = std::time::Instant::now();
+    // too small or flat: refused before the analysis
+    psd::check(surface, opts)?;
     check_measurable(surface, file)?;
     let a = psd::analyse(surface, opts)?;
     let two_pi = 2.0 * std::f64::consts::PI;

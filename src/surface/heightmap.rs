@@ -173,13 +173,13 @@ impl Surface {
         if !(g >= lo && g <= hi && self.rms_height().is_finite()) {
             return Err(Error::invalid_text(
                 Field::HeightMap,
+                // the measured gradient to 4 digits: a message, not a result
                 format!(
-                    "a map of rms gradient {} (side L = {} m)",
-                    crate::error::fmt_value(g),
+                    "a map of rms gradient {g:.3e} (side L = {} m)",
                     crate::error::fmt_value(self.size_x())
                 ),
                 format!(
-                    "a map whose rms gradient lies in [{}, {}] (check the heights' unit, metres, and the side L)",
+                    "a map whose rms gradient lies in [{}, {}] (check the heights' unit and L)",
                     crate::error::fmt_value(lo),
                     crate::error::fmt_value(hi)
                 ),

@@ -114,26 +114,14 @@ pub struct PsdAnalysis {
 /// The PSD of a map (module docs).
 ///
 /// # Errors
-/// [`Error::Invalid`] for a flat map or bins per decade outside [`BINS_PER_DECADE_RANGE`].
+/// Those of [`check`], made before any work: a map too small or flat, bins per decade outside
+/// [`BINS_PER_DECADE_RANGE`].
 pub fn analyse(s: &Surface, opts: &PsdOptions) -> Result<PsdAnalysis> {
+    let h = check(s, opts)?;
+    let rms_height = rms(&h);
     crate::work::start();
-    crate::error::check_in(
-        Field::Other("bins_per_decade".into()),
-        opts.bins_per_decade,
-        BINS_PER_DECADE_RANGE.0,
-        BINS_PER_DECADE_RANGE.1,
-    )?;
     let (nx, ny, da) = (s.nx, s.ny, s.spacing);
     let line = ny == 1;
-    let h = detrend(s, opts.periodic);
-    let rms_height = (h.iter().map(|x| x * x).sum::<f64>() / h.len() as f64).sqrt();
-    if rms_height.is_nan() || rms_height <= 0.0 {
-        return Err(Error::invalid_text(
-            Field::HeightMap,
-            "a flat map",
-            "a height map with some roughness",
-        ));
-    }
     let hw = if opts.periodic { h } else { hann(&h, nx, ny) };
     let mut plan = crate::numerics::fft2::RealFft2::new(nx, ny);
     let mut spec = vec![Complex64::new(0.0, 0.0); plan.spectrum_len()];
@@ -223,6 +211,48 @@ pub fn analyse(s: &Surface, opts: &PsdOptions) -> Result<PsdAnalysis> {
 }
 
 /// Heights minus their mean (periodic) or their least-squares plane (a line for ny = 1).
+/// The fewest points of each side of a 2-D map, and of a line profile, that [`analyse`] takes:
+/// after the mean plane is removed a smaller map leaves too few modes for a radial average.
+pub const MIN_PSD_POINTS: usize = 4;
+
+/// What [`analyse`] checks before any work: the bins per decade in their range, a map of at
+/// least [`MIN_PSD_POINTS`] per side (a line profile: that many points) and some roughness
+/// left once the mean plane (or, for a periodic map, the mean) is removed. Returns the
+/// detrended heights.
+///
+/// # Errors
+/// [`Error::Invalid`] for `bins_per_decade` or [`Field::HeightMap`] (its size, or a flat map).
+pub fn check(s: &Surface, opts: &PsdOptions) -> Result<Vec<f64>> {
+    crate::error::check_in(
+        Field::Other("bins_per_decade".into()),
+        opts.bins_per_decade,
+        BINS_PER_DECADE_RANGE.0,
+        BINS_PER_DECADE_RANGE.1,
+    )?;
+    if s.nx < MIN_PSD_POINTS || (s.ny != 1 && s.ny < MIN_PSD_POINTS) {
+        return Err(Error::invalid_text(
+            Field::HeightMap,
+            format!("a {} x {} map", s.nx, s.ny),
+            format!("a map of at least {MIN_PSD_POINTS} x {MIN_PSD_POINTS} points (a line profile: {MIN_PSD_POINTS}) for a spectrum"),
+        ));
+    }
+    let h = detrend(s, opts.periodic);
+    let rms_height = rms(&h);
+    if rms_height.is_nan() || rms_height <= 0.0 {
+        return Err(Error::invalid_text(
+            Field::HeightMap,
+            "a flat map",
+            "a height map with some roughness",
+        ));
+    }
+    Ok(h)
+}
+
+/// The root mean square of `h`.
+fn rms(h: &[f64]) -> f64 {
+    (h.iter().map(|x| x * x).sum::<f64>() / h.len() as f64).sqrt()
+}
+
 fn detrend(s: &Surface, periodic: bool) -> Vec<f64> {
     let (nx, ny) = (s.nx, s.ny);
     let n = (nx * ny) as f64;

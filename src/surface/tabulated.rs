@@ -304,7 +304,14 @@ impl Tabulated {
         use crate::input::file::{read_text, MAX_INPUT_BYTES};
         let field = crate::error::Field::Other("psd".into());
         let text = read_text(path, "", field, MAX_INPUT_BYTES, "a PSD table as lines of q, C(q)")?;
-        Tabulated::parse_csv(&text, &path.display().to_string(), q_min, q_max)
+        // errors name the file by its name (a long path would be shortened past it); the
+        // table keeps the whole path as its source
+        let name = path
+            .file_name()
+            .map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
+        let mut t = Tabulated::parse_csv(&text, &name, q_min, q_max)?;
+        t.source = path.display().to_string();
+        Ok(t)
     }
 }
 

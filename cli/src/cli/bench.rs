@@ -12,7 +12,7 @@ pub struct BenchArgs {
     #[arg(long)]
     pub quick: bool,
     /// Where the full run writes its report.
-    #[arg(long, default_value = "BENCHMARKS.md", allow_hyphen_values = true)]
+    #[arg(long, default_value = "BENCHMARKS.md")]
     pub output: String,
 }
 

@@ -39,39 +39,39 @@ pub enum FigureFormat {
 #[derive(Debug, Clone, Args)]
 pub struct FigureArgs {
     /// The figure: one of `spec::ids()` or a figure TOML file (the help lists them).
-    #[arg(allow_hyphen_values = true, help = spec::allowed())]
+    #[arg(help = spec::allowed())]
     pub id: Option<String>,
     /// Name every figure with one line.
     #[arg(long)]
     pub list: bool,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = FigureFormat::Chart, allow_hyphen_values = true)]
+    #[arg(long, value_enum, default_value_t = FigureFormat::Chart)]
     pub format: FigureFormat,
     /// Write the chart as SVG.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::out_path(None))]
+    #[arg(long)]
     pub svg: Option<PathBuf>,
     /// Write the chart as PNG.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::out_path(Some("png")))]
+    #[arg(long)]
     pub png: Option<PathBuf>,
     /// Add the brute-force GFMD points where the figure has them.
     #[arg(long)]
     pub gfmd: bool,
     /// GFMD grid side N (default: the preset's reduced grid, 512 for both systems).
-    #[arg(long, requires = "gfmd", allow_hyphen_values = true, value_parser = super::parse::whole(asperity::error::Field::Grid))]
+    #[arg(long, requires = "gfmd")]
     pub grid: Option<i64>,
     /// GFMD seed.
-    #[arg(long, default_value_t = 1, requires = "gfmd", allow_hyphen_values = true, value_parser = super::whole_number_u64)]
+    #[arg(long, default_value_t = 1, requires = "gfmd")]
     pub seed: u64,
     /// Number of x values (or σ* samples) instead of the figure file's.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::count_in("points", 2, 100_000))]
+    #[arg(long)]
     pub points: Option<usize>,
     /// Width of the text chart in characters.
-    #[arg(long, default_value_t = 100, allow_hyphen_values = true, value_parser = super::parse::count_in("width", 20, 1000))]
+    #[arg(long, default_value_t = 100)]
     pub width: usize,
     /// Height of the text chart in lines.
-    #[arg(long, default_value_t = 32, allow_hyphen_values = true, value_parser = super::parse::count_in("height", 10, 1000))]
+    #[arg(long, default_value_t = 32)]
     pub height: usize,
-    /// Add curves of these models: a comma-separated list of 1, 2, 3, 4, yp08, xu24
+    /// Add curves of these models: a comma-separated list of 1, 2, 3, 4, 5, yp08, xu24
     /// (e.g. figure 1 --model yp08,xu24; the variants need an adhesionless half-space figure).
     #[arg(long, value_delimiter = ',')]
     pub model: Vec<String>,
@@ -127,21 +127,12 @@ pub fn run(args: &FigureArgs) -> Result<()> {
         ));
     };
     let gfmd = if args.gfmd {
-        let grid = match args.grid {
-            Some(n) if n < 4 => return Err(Error::field("--grid", n, "an integer N >= 4")),
-            Some(n) => Some(n as usize),
-            None => None,
-        };
+        // --grid's range is the table's, checked as the line is parsed
+        let grid = args.grid.map(|n| n as usize);
         Some(GfmdChoice { grid, seed: args.seed })
     } else {
         None
     };
-    if !(20..=1000).contains(&args.width) {
-        return Err(Error::field("--width", args.width, "20 <= width <= 1000"));
-    }
-    if !(10..=1000).contains(&args.height) {
-        return Err(Error::field("--height", args.height, "10 <= height <= 1000"));
-    }
     let on = measured(args)?;
     let data = if id == spec::TABLE_1 {
         if let Some(m) = &on {
@@ -173,20 +164,22 @@ pub fn run(args: &FigureArgs) -> Result<()> {
         }
         fig
     } else {
-        let mut s = spec::resolve(id)?;
+        let allowed = "a figure (`figure --list`) or a figure TOML file";
+        let mut s = spec::resolve(id).map_err(|e| super::parse::toml_under(e, "figure", allowed))?;
         if !spec::BUILTIN.iter().any(|(i, _)| *i == id) {
             eprintln!("asperity figure: read {id}");
         }
         if let Some(n) = args.points {
-            if !(2..=100_000).contains(&n) {
-                return Err(Error::field("--points", n, "2 <= points <= 100000"));
-            }
             s.points = n;
         }
         for m in &args.model {
             let kind: asperity::input::model::ModelKind = m.parse()?;
             if kind == asperity::input::model::ModelKind::Custom {
-                return Err(Error::field("--model", m, "1, 2, 3, 4, yp08 or xu24"));
+                return Err(Error::field(
+                    "--model",
+                    m,
+                    asperity::input::model::ModelKind::named_list(),
+                ));
             }
             let label = match kind.number() {
                 Some(n) => format!("model {n}"),

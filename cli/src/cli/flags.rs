@@ -13,7 +13,7 @@
 //! existing file writable, a new one creatable); they are written atomically at the end.
 
 use super::parse;
-use asperity::error::{Field, Range};
+use asperity::error::Field;
 use asperity::limits;
 use clap::builder::ValueParser;
 use std::path::{Path, PathBuf};
@@ -23,27 +23,22 @@ use std::path::{Path, PathBuf};
 pub enum Kind {
     /// A number in the library's range of `Field` (an `f64`).
     Number(Field),
-    /// A finite number `> 0` in `unit` (a wave-number cut-off).
-    Positive,
-    /// A number in a range of the front end's own (an `f64`).
-    NumberIn(Range),
     /// A whole number in the library's range of `Field` (a `usize`).
     Count(Field),
-    /// A whole number in a range of the front end's own (a `usize`).
-    CountIn(usize, usize),
     /// A whole number in the library's range of `Field`, kept as an `i64` (a grid side).
     Whole(Field),
-    /// A seed: any whole number 0 ..= 2⁶⁴−1 (a `u64`).
-    Seed,
-    /// `tour --step`: a whole number ≥ 1 (its upper end is the tour's length).
-    Step,
-    /// An end of `sweep --from/--to`: a number; its range depends on `--over`.
-    SweepEnd,
+    /// A seed: a whole number in the range of `Field` (0 ..= 2⁶⁴−1, a `u64`).
+    Seed(Field),
+    /// `tour --step`: a whole number in the range of `Field` (an `i64`; its upper end is the
+    /// tour's length, checked once the tour is read).
+    Step(Field),
+    /// An end of `sweep --from/--to` (`Field`): a number; its range depends on `--over`.
+    SweepEnd(Field),
     /// `--thickness`: a number in its range, or `inf` (kept as text).
     Thickness,
     /// `--model` of the scene: one of the variants (kept as text).
     Model,
-    /// A rung of `--ladder` (λ_s/Δa).
+    /// A rung of `--ladder` (λ_s/Δa, [`Field::Ladder`]).
     Ladder,
     /// One of the names clap lists (a `ValueEnum` or true/false): clap's own parser.
     Choice,
@@ -106,14 +101,7 @@ pub fn table() -> Vec<Flag> {
         // the scene (run, sweep, gfmd, tui, gauge, compare)
         row("--preset", Text(check_preset), ""),
         row("--model", Model, ""),
-        row(
-            "--fudge-gamma",
-            NumberIn(Range::open_closed(
-                asperity::input::model::FUDGE_GAMMA_RANGE.0,
-                asperity::input::model::FUDGE_GAMMA_RANGE.1,
-            )),
-            "",
-        ),
+        row("--fudge-gamma", Number(Field::FudgeGamma), ""),
         row("--c1", Number(Field::C1), ""),
         row("--c2", Number(Field::C2), ""),
         row("--alpha", Number(Field::Alpha), ""),
@@ -128,8 +116,8 @@ pub fn table() -> Vec<Flag> {
         row("--size", Number(Field::SystemSize), "m"),
         row("--height-unit", Choice, ""),
         row("--periodic", Switch, ""),
-        row("--qmin", Positive, "1/m"),
-        row("--qmax", Positive, "1/m"),
+        row("--qmin", Number(Field::QMin), "1/m"),
+        row("--qmax", Number(Field::QMax), "1/m"),
         // run's accuracy knobs
         row("--sigma-points", Count(Field::SigmaPoints), ""),
         row("--sigma-max", Number(Field::SigmaMax), "E* g"),
@@ -140,7 +128,7 @@ pub fn table() -> Vec<Flag> {
         row("--format", Choice, ""),
         // tour
         only(&["tour"], "tour", Text(check_tour), ""),
-        row("--step", Step, ""),
+        row("--step", Step(Field::TourStep), ""),
         row("--list", Switch, ""),
         // tui
         row("--mouse", Switch, ""),
@@ -149,8 +137,8 @@ pub fn table() -> Vec<Flag> {
         row("--output", OutText(&["md"]), ""),
         // sweep
         row("--over", Choice, ""),
-        only(&["sweep"], "--from", SweepEnd, ""),
-        only(&["sweep"], "--to", SweepEnd, ""),
+        only(&["sweep"], "--from", SweepEnd(Field::SweepFrom), ""),
+        only(&["sweep"], "--to", SweepEnd(Field::SweepTo), ""),
         only(
             &["sweep", "gfmd", "gauge", "compare"],
             "--points",
@@ -159,7 +147,7 @@ pub fn table() -> Vec<Flag> {
         ),
         // gfmd (and gauge --reference gfmd, figure --gfmd)
         row("--grid", Whole(Field::Grid), "points"),
-        row("--seed", Seed, ""),
+        row("--seed", Seed(Field::Seed), ""),
         row("--save-surface", OutFile(MAP_TEXT), ""),
         row("--tolerance", Number(Field::GfmdTolerance), ""),
         row("--max-iterations", Count(Field::MaxIterations), ""),
@@ -169,15 +157,15 @@ pub fn table() -> Vec<Flag> {
         row("--extrapolate", Switch, ""),
         row("--cycle", Switch, ""),
         row("--ladder", Ladder, "lambda_s/da"),
-        row("--seeds", CountIn(1, super::gfmd::MAX_SEEDS), ""),
+        row("--seeds", Count(Field::Seeds), ""),
         only(&["gfmd", "gauge", "compare"], "--from", Number(Field::Pressure), "E* g"),
         only(&["gfmd", "gauge", "compare"], "--to", Number(Field::Pressure), "E* g"),
         // figure
         only(&["figure"], "id", Text(check_figure), ""),
         row("--gfmd", Switch, ""),
-        only(&["figure"], "--points", CountIn(2, 100_000), ""),
-        row("--width", CountIn(20, 1000), "characters"),
-        row("--height", CountIn(10, 1000), "lines"),
+        only(&["figure"], "--points", Count(Field::FigurePoints), ""),
+        row("--width", Count(Field::ChartWidth), "characters"),
+        row("--height", Count(Field::ChartHeight), "lines"),
         only(&["figure"], "--model", Text(check_figure_models), ""),
         row("--svg", OutFile(SVG), ""),
         row("--png", OutFile(PNG), ""),
@@ -192,14 +180,7 @@ pub fn table() -> Vec<Flag> {
         row("--fitted", InFile, ""),
         // psd
         only(&["psd"], "file", InFile, ""),
-        row(
-            "--bins-per-decade",
-            NumberIn(Range::closed(
-                asperity::surface::psd::BINS_PER_DECADE_RANGE.0,
-                asperity::surface::psd::BINS_PER_DECADE_RANGE.1,
-            )),
-            "per decade",
-        ),
+        row("--bins-per-decade", Number(Field::BinsPerDecade), "per decade"),
         // surface generate
         only(&["surface"], "action", Choice, ""),
         only(&["surface"], "--output", OutFile(MAP_ALL), ""),
@@ -230,26 +211,31 @@ pub fn name_of(arg: &clap::Arg) -> String {
 }
 
 impl Kind {
+    /// The field of the range table ([`limits::FIELDS`]) a number or a name of this kind sets;
+    /// None for choices, switches, texts and files.
+    pub fn field(&self) -> Option<Field> {
+        match self {
+            Kind::Number(f) | Kind::Count(f) | Kind::Whole(f) | Kind::Seed(f) | Kind::Step(f) | Kind::SweepEnd(f) => {
+                Some(f.clone())
+            }
+            Kind::Thickness => Some(Field::Thickness),
+            Kind::Model => Some(Field::Model),
+            Kind::Ladder => Some(Field::Ladder),
+            _ => None,
+        }
+    }
+
     /// What the flag accepts, in the words of its messages.
     pub fn allowed(&self, name: &str) -> String {
         let bare = name.trim_start_matches('-').replace('-', "_");
         match self {
             Kind::Number(f) | Kind::Count(f) | Kind::Whole(f) => describe(f, &bare),
-            Kind::Positive => format!("a number {bare} > 0"),
-            Kind::NumberIn(r) => r.describe(&bare),
-            Kind::CountIn(lo, hi) => Range::whole(*lo as f64, *hi as f64).describe(&bare),
-            Kind::Seed => format!("a whole number 0 <= seed <= {}", u64::MAX),
-            Kind::Step => "a whole number 1 <= step <= the tour's number of steps".into(),
-            Kind::SweepEnd => parse::sweep_end("").unwrap_err(),
+            Kind::Seed(_) => format!("a whole number 0 <= seed <= {}", u64::MAX),
+            Kind::Step(_) => "a whole number 1 <= step <= the tour's number of steps".into(),
+            Kind::SweepEnd(_) => parse::sweep_end("").unwrap_err(),
             Kind::Thickness => describe(&Field::Thickness, "t·q_r"),
             Kind::Model => describe(&Field::Model, "model"),
-            Kind::Ladder => {
-                let (lo, hi) = super::gfmd::LADDER_RANGE;
-                format!(
-                    "a comma-separated list of {}",
-                    Range::closed(lo, hi).describe("lambda_s/da")
-                )
-            }
+            Kind::Ladder => format!("a comma-separated list of {}", describe(&Field::Ladder, "lambda_s/da")),
             Kind::Choice => "one of the names `--help` lists".into(),
             Kind::Switch => "no value".into(),
             Kind::Text(check) => check("").unwrap_err(),
@@ -258,31 +244,15 @@ impl Kind {
         }
     }
 
-    /// The value parser of this kind for the flag shown as `shown` in its range (e.g.
-    /// `points`), or None where clap's own one stays (choices, switches).
-    fn parser(&self, shown: String) -> Option<ValueParser> {
+    /// The value parser of this kind, or None where clap's own one stays (choices, switches).
+    fn parser(&self) -> Option<ValueParser> {
         Some(match self.clone() {
             Kind::Number(f) => ValueParser::new(parse::number(f)),
-            Kind::Positive => ValueParser::new(move |s: &str| match s.trim().parse::<f64>() {
-                Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
-                _ => Err(format!("a number {shown} > 0")),
-            }),
-            Kind::NumberIn(r) => ValueParser::new(move |s: &str| match s.trim().parse::<f64>() {
-                Ok(x) if r.contains(x) => Ok(x),
-                _ => Err(r.describe(&shown)),
-            }),
             Kind::Count(f) => ValueParser::new(parse::count(f)),
-            Kind::CountIn(lo, hi) => ValueParser::new(move |s: &str| {
-                let r = Range::whole(lo as f64, hi as f64);
-                match s.trim().parse::<f64>() {
-                    Ok(x) if r.contains(x) => Ok(x as usize),
-                    _ => Err(r.describe(&shown)),
-                }
-            }),
             Kind::Whole(f) => ValueParser::new(parse::whole(f)),
-            Kind::Seed => ValueParser::new(parse::whole_number_u64),
-            Kind::Step => ValueParser::new(parse::step),
-            Kind::SweepEnd => ValueParser::new(parse::sweep_end),
+            Kind::Seed(_) => ValueParser::new(parse::whole_number_u64),
+            Kind::Step(_) => ValueParser::new(parse::step),
+            Kind::SweepEnd(_) => ValueParser::new(parse::sweep_end),
             Kind::Thickness => ValueParser::new(parse::thickness),
             Kind::Model => ValueParser::new(parse::model),
             Kind::Ladder => ValueParser::new(super::gfmd::ladder_rung),
@@ -413,7 +383,10 @@ fn check_observables(s: &str) -> Result<(), String> {
 
 /// `compare --models`: 1–5, yp08, xu24 (a custom model comes in with --fitted).
 fn check_models(s: &str) -> Result<(), String> {
-    let allowed = "a comma-separated list of 1, 2, 3, 4, 5, yp08, xu24";
+    let allowed = format!(
+        "a comma-separated list of {}",
+        asperity::input::model::ModelKind::named_list()
+    );
     let mut any = false;
     for t in s.split(',').map(str::trim).filter(|t| !t.is_empty()) {
         match t.parse::<asperity::input::model::ModelKind>() {
@@ -421,19 +394,24 @@ fn check_models(s: &str) -> Result<(), String> {
                 return Err(format!("{allowed} (a custom model comes in with --fitted PRESET)"))
             }
             Ok(_) => any = true,
-            Err(_) => return Err(allowed.into()),
+            Err(_) => return Err(allowed),
         }
     }
     if any {
         Ok(())
     } else {
-        Err(allowed.into())
+        Err(allowed)
     }
 }
 
 /// One name of `figure --model` (a comma-separated list, split by clap).
 fn check_figure_models(s: &str) -> Result<(), String> {
-    check_models(s).map_err(|_| "a comma-separated list of 1, 2, 3, 4, 5, yp08, xu24".into())
+    check_models(s).map_err(|_| {
+        format!(
+            "a comma-separated list of {}",
+            asperity::input::model::ModelKind::named_list()
+        )
+    })
 }
 
 /// The parser of the whole command line: the derived [`super::Cli`] with every flag's value
@@ -470,8 +448,7 @@ fn drive(command: &str, arg: clap::Arg) -> clap::Arg {
     } else {
         arg
     };
-    let shown = name.trim_start_matches('-').replace('-', "_");
-    match flag.kind.parser(shown) {
+    match flag.kind.parser() {
         Some(p) if takes_value => arg.value_parser(p),
         _ => arg,
     }

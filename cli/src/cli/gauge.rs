@@ -38,13 +38,13 @@ pub struct ReferenceArgs {
     #[arg(long)]
     pub reference: String,
     /// First p* of --reference eq18 (default 1e-3) or gfmd (default p*/2.5).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long)]
     pub from: Option<f64>,
     /// Last p* of --reference eq18 (default 1) or gfmd (default p*·2.5).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long)]
     pub to: Option<f64>,
     /// Number of log-spaced loads of --reference eq18 (default 31) or gfmd (default 4).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::whole_number)]
+    #[arg(long)]
     pub points: Option<usize>,
     /// Pr(sigma*) histograms: a CSV file with columns p, sigma, density.
     #[arg(long)]
@@ -84,6 +84,22 @@ pub struct GaugeArgs {
     pub save_preset: Option<PathBuf>,
 }
 
+/// A file's cell error (`name: line N, column C`) under the flag that named the file.
+fn under_flag(e: Error, flag: &str) -> Error {
+    match e {
+        Error::Invalid {
+            field: Field::Other(k),
+            value,
+            allowed,
+        } if !k.starts_with("--") => Error::Invalid {
+            field: Field::Other(format!("{flag} {k}")),
+            value,
+            allowed,
+        },
+        e => e,
+    }
+}
+
 /// The reference and the scene it is compared on (for `gfmd`, the scene GFMD runs), with the
 /// GFMD run when it is one.
 pub fn resolve_reference(
@@ -101,13 +117,20 @@ pub fn resolve_reference(
         let g = gauge_gfmd::resolve(&args.gfmd, loads, preset, map, scene)?;
         (g.reference.clone(), Some(g))
     } else {
-        let (r, sc) = gauge::reference(&args.reference, None, loads, scene)?;
+        let (r, sc) = gauge::reference(&args.reference, None, loads, scene).map_err(|e| {
+            if args.reference == "eq18" {
+                e
+            } else {
+                under_flag(e, "--reference")
+            }
+        })?;
         *scene = sc;
         (r, None)
     };
     if let Some(pr) = &args.pr {
         let (text, name) = gauge::read_table(pr, "pr")?;
-        r.points.extend(reference::parse_pr_csv(&text, &name)?);
+        r.points
+            .extend(reference::parse_pr_csv(&text, &name).map_err(|e| under_flag(e, "--pr"))?);
     }
     if let Some(list) = &args.observables {
         let keys: Vec<&str> = list.split(',').collect();
@@ -336,7 +359,7 @@ pub struct CompareArgs {
     /// The reference.
     #[command(flatten)]
     pub reference: ReferenceArgs,
-    /// The models: a comma-separated list of 1, 2, 3, 4, yp08, xu24.
+    /// The models: a comma-separated list of 1, 2, 3, 4, 5, yp08, xu24.
     #[arg(long, default_value = "1,2,3,4,yp08,xu24")]
     pub models: String,
     /// Presets whose model joins the comparison (e.g. one written by gauge --save-preset).
@@ -386,21 +409,24 @@ pub fn compare(args: &CompareArgs) -> Result<()> {
             Error::invalid_text(
                 Field::Other("--models".into()),
                 t,
-                "a comma-separated list of 1, 2, 3, 4, yp08, xu24",
+                format!("a comma-separated list of {}", ModelKind::named_list()),
             )
         })?;
         if kind == ModelKind::Custom {
             return Err(Error::invalid_text(
                 Field::Other("--models".into()),
                 t,
-                "1, 2, 3, 4, yp08, xu24 (a custom model comes in with --fitted PRESET)",
+                format!(
+                    "{} (a custom model comes in with --fitted PRESET)",
+                    ModelKind::named_list()
+                ),
             ));
         }
         let m = Model::of_kind(kind, &scene.model())?;
         models.push((m.label(), m));
     }
     for p in &args.fitted {
-        let preset = Preset::load(p)?;
+        let preset = Preset::load(p).map_err(|e| super::parse::preset_under_flag(e, "--fitted"))?;
         let name = p
             .file_stem()
             .map_or("fitted".into(), |s| s.to_string_lossy().into_owned());

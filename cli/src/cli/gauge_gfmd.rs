@@ -6,10 +6,10 @@
 //! [`asperity::report::gauge::gfmd_loads`]): the preset's `[gfmd]` grid at most
 //! [`DEFAULT_MAX_GRID`]², loads log-spaced around the scene's p*.
 
-use super::gfmd::{ladder_rung, MethodArg};
+use super::gfmd::MethodArg;
 use super::parse;
 use super::progress::Steps;
-use asperity::error::{Error, Field, Result};
+use asperity::error::{Error, Result};
 use asperity::fit::gfmd_reference::{self, GfmdReference, GfmdReferenceSpec, Stage};
 use asperity::gfmd::{GfmdOptions, GfmdSetup, Method, Progress};
 use asperity::input::preset::Preset;
@@ -26,25 +26,25 @@ pub use asperity::report::gauge::GFMD_DEFAULT_MAX_GRID as DEFAULT_MAX_GRID;
 #[derive(Debug, Clone, Args)]
 pub struct GfmdRefArgs {
     /// --reference gfmd: grid side N (default: the grid of the preset's gfmd table, at most 256).
-    #[arg(long, allow_hyphen_values = true, value_parser = parse::whole(Field::Grid))]
+    #[arg(long)]
     pub grid: Option<i64>,
     /// --reference gfmd: seed of the first random surface.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::whole_number_u64)]
+    #[arg(long)]
     pub seed: Option<u64>,
     /// --reference gfmd: K realisations (seeds S..S+K-1); their standard errors weight the fit.
-    #[arg(long, allow_hyphen_values = true, value_parser = parse::count_in("seeds", 1, gfmd_reference::MAX_SEEDS))]
+    #[arg(long)]
     pub seeds: Option<usize>,
     /// --reference gfmd: a ladder of resolutions (--ladder) per load, extrapolated to da -> 0.
     #[arg(long)]
     pub extrapolate: bool,
     /// --reference gfmd: points per short wavelength lambda_s/da of the --extrapolate ladder.
-    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, requires = "extrapolate", value_parser = ladder_rung)]
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16", requires = "extrapolate")]
     pub ladder: Vec<f64>,
     /// --reference gfmd: minimiser (auto, pk or fire; see gfmd --method).
-    #[arg(long, value_enum, allow_hyphen_values = true)]
+    #[arg(long, value_enum)]
     pub method: Option<MethodArg>,
     /// --reference gfmd: write the reference (mean and standard error per load) as CSV.
-    #[arg(long, allow_hyphen_values = true, value_parser = parse::out_path(Some("csv")))]
+    #[arg(long)]
     pub save_reference: Option<std::path::PathBuf>,
 }
 

@@ -10,7 +10,7 @@
 
 use super::progress::{load_label, Steps};
 use super::{emit, SceneArgs};
-use asperity::error::{Error, Field, Result};
+use asperity::error::{Error, Result};
 use asperity::gfmd::cycle::CycleSpec;
 use asperity::gfmd::ladder::{Ensemble, Extrapolated, Ladder, MeanSe};
 use asperity::gfmd::reduction::Reduction;
@@ -44,32 +44,32 @@ pub struct GfmdArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Reduced pressure p* = p/(E* g), g the map's rms gradient (default: the preset's).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number(Field::Pressure))]
+    #[arg(long)]
     pub pressure: Option<f64>,
     /// Grid side N (default: the preset's [gfmd] grid); keeps L/lambda_r and lambda_s/da.
-    #[arg(long, allow_hyphen_values = true, conflicts_with = "surface", value_parser = super::parse::whole(Field::Grid))]
+    #[arg(long, conflicts_with = "surface")]
     pub grid: Option<i64>,
     /// Seed of the random surface.
-    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::whole_number_u64)]
+    #[arg(long, default_value_t = 1)]
     pub seed: u64,
     /// Write the height map used to this file (text matrix).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::out_path(None))]
+    #[arg(long)]
     pub save_surface: Option<PathBuf>,
     /// Relative force residual to reach.
-    #[arg(long, default_value = "1e-8", allow_hyphen_values = true, value_parser = super::number(Field::GfmdTolerance))]
+    #[arg(long, default_value = "1e-8")]
     pub tolerance: f64,
     /// Largest number of FIRE steps.
-    #[arg(long, default_value_t = GfmdOptions::default().max_iterations, allow_hyphen_values = true, value_parser = super::count(Field::MaxIterations))]
+    #[arg(long, default_value_t = GfmdOptions::default().max_iterations)]
     pub max_iterations: usize,
     /// Number of bins of the Pr(sigma*) histogram.
-    #[arg(long, default_value_t = GfmdOptions::default().pr_bins, allow_hyphen_values = true, value_parser = super::count(Field::Bins))]
+    #[arg(long, default_value_t = GfmdOptions::default().pr_bins)]
     pub bins: usize,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = GfmdFormat::Json, allow_hyphen_values = true)]
+    #[arg(long, value_enum, default_value_t = GfmdFormat::Json)]
     pub format: GfmdFormat,
     /// Minimiser: auto (pk on a half-space, fire on slabs), pk
     /// (Polonsky-Keer CG for the hard wall, FIRE with adhesion) or fire (FIRE alone).
-    #[arg(long, value_enum, default_value_t = MethodArg::Auto, allow_hyphen_values = true)]
+    #[arg(long, value_enum, default_value_t = MethodArg::Auto)]
     pub method: MethodArg,
     /// Keep gamma_s and rho as given on the reduced grid (default: rescale them so that the
     /// reduced system keeps gamma_glo and the Tabor parameter of the full one).
@@ -79,19 +79,19 @@ pub struct GfmdArgs {
     #[arg(long, conflicts_with = "surface")]
     pub extrapolate: bool,
     /// Points per short wavelength lambda_s/da of the --extrapolate ladder.
-    #[arg(long, value_delimiter = ',', default_value = "4,8,16", allow_hyphen_values = true, requires = "extrapolate", value_parser = ladder_rung)]
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16", requires = "extrapolate")]
     pub ladder: Vec<f64>,
     /// Repeat over K realisations (seeds S..S+K-1) and report mean +- standard error.
-    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::parse::count_in("seeds", 1, MAX_SEEDS), conflicts_with = "surface")]
+    #[arg(long, default_value_t = 1, conflicts_with = "surface")]
     pub seeds: usize,
     /// Load sweep: first p* (warm-started loads from --from to --to).
-    #[arg(long, allow_hyphen_values = true, requires = "to", conflicts_with_all = ["extrapolate", "pressure", "seeds"], value_parser = super::number(Field::Pressure))]
+    #[arg(long, requires = "to", conflicts_with_all = ["extrapolate", "pressure", "seeds"])]
     pub from: Option<f64>,
     /// Load sweep: last p*.
-    #[arg(long, allow_hyphen_values = true, requires = "from", value_parser = super::number(Field::Pressure))]
+    #[arg(long, requires = "from")]
     pub to: Option<f64>,
     /// Load sweep: number of log-spaced loads.
-    #[arg(long, default_value_t = 8, allow_hyphen_values = true, requires = "from", value_parser = super::parse::count_in("points", 1, 100_000))]
+    #[arg(long, default_value_t = 8, requires = "from")]
     pub points: usize,
     /// Load cycle: load from --from up to --to, unload back down and on into tension until the
     /// contact is lost (pull-off, with adhesion); rows carry their branch.

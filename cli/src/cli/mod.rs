@@ -5,6 +5,7 @@
 
 use asperity::theory::engine;
 pub mod bench;
+pub mod clap_line;
 pub mod figure;
 pub mod gauge;
 pub mod gauge_gfmd;
@@ -35,7 +36,8 @@ pub mod surface;
 pub mod surface_generate;
 pub mod sweep;
 
-pub use parse::{clap_error_line, count, field_name, number, render_error, whole_number, whole_number_u64};
+pub use clap_line::clap_error_line;
+pub use parse::{count, field_name, number, render_error, whole_number_u64};
 
 /// asperity: explore Persson's contact-mechanics theory of rough, adhesive, elastic contacts.
 #[derive(Debug, Parser)]
@@ -71,7 +73,7 @@ pub enum Command {
     Figure(figure::FigureArgs),
     /// Fit coefficients of the custom model (c1, c2, alpha, k_griffith, w0) to reference data.
     Gauge(gauge::GaugeArgs),
-    /// Every model (1-4, yp08, xu24, fitted presets) against a reference set: relative errors and an overlay.
+    /// Every model (1-5, yp08, xu24, fitted presets) against a reference set: relative errors and an overlay.
     Compare(gauge::CompareArgs),
     /// The PSD of a measured height map: radial average, h_rms, rms gradient and curvature, self-affine fit.
     Psd(surface::PsdArgs),
@@ -96,31 +98,31 @@ pub struct SceneArgs {
     pub preset: String,
     /// Model variant: 1, 2, 3, 4, 5, custom, yp08 or xu24 (default: the preset's; yp08 and xu24
     /// are defined for the adhesionless half-space: --gamma 0 --thickness inf).
-    #[arg(long, allow_hyphen_values = true, value_parser = parse::model)]
+    #[arg(long)]
     pub model: Option<String>,
     /// Fitting parameter gamma_f of yp08/xu24: S(a) = gamma_f + (1 - gamma_f) a^2 (yp08) or a (xu24).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long)]
     pub fudge_gamma: Option<f64>,
     /// Custom model: c1 of W(a) = 1 - c1(1-a^2) - c2(1-a^4) (implies --model custom).
-    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::C1))]
+    #[arg(long)]
     pub c1: Option<f64>,
     /// Custom model: c2 (implies --model custom).
-    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::C2))]
+    #[arg(long)]
     pub c2: Option<f64>,
     /// Custom model: broadening exponent alpha, dp ~ W^alpha (implies --model custom).
-    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::Alpha))]
+    #[arg(long)]
     pub alpha: Option<f64>,
     /// Custom model: Griffith prefactor k_G (implies --model custom).
-    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::KGriffith))]
+    #[arg(long)]
     pub k_griffith: Option<f64>,
     /// Custom model: cap sigma_a at gamma_s/rho (true/false; implies --model custom).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long)]
     pub cap: Option<bool>,
     /// Thickness t*q_r, or inf for a semi-infinite body (default: the preset's).
-    #[arg(long, allow_hyphen_values = true, value_parser = parse::thickness)]
+    #[arg(long)]
     pub thickness: Option<String>,
     /// Surface energy gamma_s in J/m^2; 0 = no adhesion.
-    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::SurfaceEnergy))]
+    #[arg(long)]
     pub gamma: Option<f64>,
     /// A measured surface or PSD table instead of the preset's spectrum.
     #[command(flatten)]
@@ -134,7 +136,7 @@ pub struct TuiArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Reduced pressure p* = p/(E* g) (default: the preset's reference load).
-    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::Pressure))]
+    #[arg(long)]
     pub pressure: Option<f64>,
     /// Use the mouse: a click focuses a chart or picks a knob, the wheel steps the selected
     /// knob (off by default: the terminal's own selection and scrolling stay).
@@ -146,10 +148,10 @@ pub struct TuiArgs {
 #[derive(Debug, Clone, Args)]
 pub struct TourArgs {
     /// Tour name (from tours/ or built in) or path to a tour TOML file.
-    #[arg(default_value = crate::tui::tour::DEFAULT_TOUR, allow_hyphen_values = true)]
+    #[arg(default_value = crate::tui::tour::DEFAULT_TOUR)]
     pub tour: String,
     /// Step to start at (1 = the first).
-    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = parse::step)]
+    #[arg(long, default_value_t = 1)]
     pub step: i64,
     /// List the available tours and exit.
     #[arg(long)]
@@ -163,28 +165,28 @@ pub struct RunArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Reduced pressure p* = p/(E* g) (default: the preset's reference load).
-    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::Pressure))]
+    #[arg(long)]
     pub pressure: Option<f64>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Json, allow_hyphen_values = true)]
+    #[arg(long, value_enum, default_value_t = Format::Json)]
     pub format: Format,
     /// Number of sigma* points of the Pr(sigma*) table.
-    #[arg(long, default_value_t = 201, allow_hyphen_values = true, value_parser = count(Field::SigmaPoints))]
+    #[arg(long, default_value_t = 201)]
     pub sigma_points: usize,
     /// Largest sigma* of the Pr table (default p* + 5 times the distribution's width).
-    #[arg(long, allow_hyphen_values = true, value_parser = number(Field::SigmaMax))]
+    #[arg(long)]
     pub sigma_max: Option<f64>,
     /// Relative tolerance of the variance ODE (accuracy knob).
-    #[arg(long, default_value_t = Accuracy::default().rtol, allow_hyphen_values = true, value_parser = number(Field::Rtol))]
+    #[arg(long, default_value_t = Accuracy::default().rtol)]
     pub rtol: f64,
     /// Adhesive solver: march steps per unit of ln q (accuracy knob; see BENCHMARKS.md).
-    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().steps_per_ln_q, allow_hyphen_values = true, value_parser = number(Field::AdhesionSteps))]
+    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().steps_per_ln_q)]
     pub adhesion_steps: f64,
     /// Adhesive solver: grid points per standard deviation of Pr (accuracy knob).
-    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().points_per_width, allow_hyphen_values = true, value_parser = number(Field::AdhesionPoints))]
+    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().points_per_width)]
     pub adhesion_points: f64,
     /// Adhesive solver: self-consistency tolerance |gamma(q_s)/gamma_s - 1| at each root.
-    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().tol, allow_hyphen_values = true, value_parser = number(Field::AdhesionTol))]
+    #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().tol)]
     pub adhesion_tol: f64,
 }
 
@@ -214,7 +216,7 @@ impl SceneArgs {
     /// As [`Self::resolve`], with the --surface map the scene's spectrum came from (the file
     /// read once).
     pub fn resolve_with_map(&self, pressure: Option<f64>) -> Result<(Preset, Scene, Option<Surface>)> {
-        let preset = Preset::resolve(&self.preset)?;
+        let preset = Preset::resolve(&self.preset).map_err(|e| parse::preset_under_flag(e, "--preset"))?;
         let scene = preset.scene()?;
         let model_changes = ModelChanges {
             kind: self.model.as_deref().map(str::parse::<ModelKind>).transpose()?,
@@ -380,6 +382,9 @@ fn run_cli() -> i32 {
                 Format::Json => emit(&crate::report::point_json(&preset.name, &out)),
                 Format::Table => emit(&crate::report::point_table(&preset.name, &out)),
             }
+            if let Some(note) = pr_range_note(args.sigma_max, &out.stats) {
+                eprintln!("asperity run: note: {note}");
+            }
             if let Some(why) = out.converged_note.as_deref().filter(|_| !out.converged) {
                 eprintln!("asperity run: not converged: {why}");
                 unconverged = true;
@@ -399,6 +404,23 @@ fn run_cli() -> i32 {
     }
 }
 
+/// The share of the contact the tabulated Pr holds, where `--sigma-max` cut it below most of
+/// it (under 90 % of a_r): a note naming the flag, so that a table that does not add up to
+/// a_r is never printed silently.
+fn pr_range_note(sigma_max: Option<f64>, stats: &asperity::contact::ContactStats) -> Option<String> {
+    let (max, a_r) = (sigma_max?, stats.a_r);
+    let held = stats.pr.integral();
+    (a_r > 0.0 && held.is_finite() && held < 0.9 * a_r).then(|| {
+        format!(
+            "the Pr table up to --sigma-max {} holds {:.0} % of the contact (integral {:.3} of a_r {:.3}); raise --sigma-max to tabulate the rest",
+            asperity::error::fmt_value(max),
+            100.0 * held / a_r,
+            held,
+            a_r
+        )
+    })
+}
+
 fn tour_entry(args: &TourArgs) -> Result<()> {
     use crate::tui::tour::{self, Tour};
     if args.list {
@@ -410,7 +432,8 @@ fn tour_entry(args: &TourArgs) -> Result<()> {
         }
         return Ok(());
     }
-    let t = Tour::resolve(&args.tour)?;
+    let allowed = "a tour (`tour --list`) or a tour TOML file";
+    let t = Tour::resolve(&args.tour).map_err(|e| parse::toml_under(e, "tour", allowed))?;
     if !tour::BUILTIN.iter().any(|(n, _)| *n == args.tour) {
         eprintln!("asperity tour: read {}", args.tour);
     }

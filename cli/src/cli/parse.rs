@@ -2,7 +2,7 @@
 //! range (the library's, [`asperity::limits`]) when a value does not parse or lies outside
 //! it, the command-line name of every field, and one line per error.
 
-use asperity::error::{Allowed, Error, Field, Range};
+use asperity::error::{Allowed, Error, Field};
 use asperity::limits;
 
 /// The command-line name of a field: its flag where one sets it, else its canonical key.
@@ -34,7 +34,15 @@ pub fn field_name(field: &Field) -> &str {
         Field::HeightMap => "--surface",
         Field::Seeds => "--seeds",
         Field::Ladder => "--ladder",
-        Field::Other(k) if k == asperity::input::model::FUDGE_GAMMA_KEY => "--fudge-gamma",
+        Field::Seed => "--seed",
+        Field::FudgeGamma => "--fudge-gamma",
+        Field::QMin => "--qmin",
+        Field::QMax => "--qmax",
+        Field::BinsPerDecade => "--bins-per-decade",
+        Field::FigurePoints => "--points",
+        Field::ChartWidth => "--width",
+        Field::ChartHeight => "--height",
+        Field::TourStep => "--step",
         Field::Other(k) if k == "fit" => "--fit",
         Field::Other(k) if k == "reference" => "--reference",
         Field::Other(k) if k == "method" => "--method",
@@ -51,6 +59,8 @@ fn range_name(field: &Field) -> &str {
         Field::Thickness => "t·q_r",
         Field::SurfaceEnergy => "gamma_s",
         Field::KGriffith => "k_G",
+        Field::QMin => "qmin",
+        Field::QMax => "qmax",
         other => other.short(),
     }
 }
@@ -115,27 +125,6 @@ pub fn count(field: Field) -> impl Fn(&str) -> std::result::Result<usize, String
     }
 }
 
-/// A value parser for a count given by its range directly (a flag of the front end alone,
-/// e.g. the chart's `--width`).
-pub fn count_in(
-    name: &'static str,
-    lo: usize,
-    hi: usize,
-) -> impl Fn(&str) -> std::result::Result<usize, String> + Clone + Send + Sync + 'static {
-    move |s: &str| {
-        let r = Range::whole(lo as f64, hi as f64);
-        match s.trim().parse::<f64>() {
-            Ok(x) if r.contains(x) => Ok(x as usize),
-            _ => Err(r.describe(name)),
-        }
-    }
-}
-
-/// Parses a count (a whole number ≥ 0); the library checks its range.
-pub fn whole_number(s: &str) -> std::result::Result<usize, String> {
-    whole_number_u64(s).and_then(|v| usize::try_from(v).map_err(|_| "a whole number >= 0".to_string()))
-}
-
 /// Parses a whole number ≥ 0 (e.g. a seed: every such number is one).
 pub fn whole_number_u64(s: &str) -> std::result::Result<u64, String> {
     s.trim()
@@ -178,129 +167,49 @@ pub fn model(s: &str) -> std::result::Result<String, String> {
         .map_err(|_| allowed_for(&Field::Model))
 }
 
-/// A value parser for a file to write: a non-empty path, with the extension `ext` where one
-/// is required (`--png` writes PNG only).
-pub fn out_path(
-    ext: Option<&'static str>,
-) -> impl Fn(&str) -> std::result::Result<std::path::PathBuf, String> + Clone + Send + Sync + 'static {
-    move |s: &str| {
-        let p = std::path::PathBuf::from(s);
-        let ok_ext = ext.is_none_or(|e| {
-            p.extension()
-                .and_then(|x| x.to_str())
-                .is_some_and(|x| x.eq_ignore_ascii_case(e))
-        });
-        if s.trim().is_empty() || !ok_ext {
-            return Err(match ext {
-                Some(e) => format!("a file name ending in .{e}"),
-                None => "a file name".into(),
-            });
-        }
-        Ok(p)
+/// A preset that could not be read or parsed, as the flag `flag` that named it: one line
+/// naming the flag, the file by its name with what is wrong, and what the flag takes.
+pub fn preset_under_flag(e: Error, flag: &str) -> Error {
+    match toml_under(e, flag, "a preset name (`asperity presets`) or a preset TOML file") {
+        Error::Invalid {
+            field: Field::Other(k),
+            value,
+            allowed,
+        } if k == "preset" => Error::Invalid {
+            field: Field::Other(flag.into()),
+            value,
+            allowed,
+        },
+        e => e,
     }
 }
 
-/// A value parser for a file to read: a non-empty path.
-pub fn in_path(s: &str) -> std::result::Result<std::path::PathBuf, String> {
-    if s.trim().is_empty() {
-        return Err("a file name".into());
-    }
-    Ok(std::path::PathBuf::from(s))
-}
-
-/// A command-line parse error in one line, in the same shape as the other input errors:
-/// `invalid --flag = value: allowed …` where clap knows the flag and value, else clap's
-/// first line.
-pub fn clap_error_line(e: &clap::Error) -> String {
-    use clap::error::{ContextKind, ContextValue};
-    let text = |k| match e.get(k) {
-        Some(ContextValue::String(s)) => Some(s.clone()),
-        _ => None,
-    };
-    if let (Some(arg), Some(value)) = (text(ContextKind::InvalidArg), text(ContextKind::InvalidValue)) {
-        let flag = arg.split_whitespace().next().unwrap_or(&arg).to_string();
-        // a positional argument, `[FIGURE]` or `<FILE>`: by its name, `figure`, `file`
-        let flag = if flag.starts_with(['[', '<']) {
-            flag.trim_matches(|c| matches!(c, '[' | ']' | '<' | '>' | '.'))
-                .to_ascii_lowercase()
-        } else {
-            flag
-        };
-        let allowed = match e.get(ContextKind::ValidValue) {
-            Some(ContextValue::Strings(v)) => v.join(", "),
-            _ => std::error::Error::source(e)
-                .map(|s| s.to_string())
-                .unwrap_or_else(|| "see --help".into()),
-        };
-        return format!(
-            "invalid {flag} = {}: allowed {allowed}",
-            asperity::error::fmt_text(&value)
-        );
-    }
-    if e.kind() == clap::error::ErrorKind::MissingRequiredArgument {
-        if let Some(ContextValue::Strings(missing)) = e.get(ContextKind::InvalidArg) {
-            let names: Vec<&str> = missing
-                .iter()
-                .map(|m| m.split_whitespace().next().unwrap_or(m))
-                .collect();
-            return format!(
-                "missing {}: required by the other flags given (see --help)",
-                names.join(", ")
-            );
-        }
-    }
-    if e.kind() == clap::error::ErrorKind::ArgumentConflict {
-        if let (Some(arg), Some(prior)) = (text(ContextKind::InvalidArg), text(ContextKind::PriorArg)) {
-            if arg == prior {
-                let flag = arg.split_whitespace().next().unwrap_or(&arg).to_string();
-                return repeated_flag(&flag, &std::env::args().collect::<Vec<_>>());
+/// A TOML file (a preset, a figure, a tour) that could not be read or parsed, as the flag or
+/// argument `flag` that named it, `allowed` saying what it takes: the file by its name with
+/// what is wrong with it.
+pub fn toml_under(e: Error, flag: &str, allowed: &str) -> Error {
+    match e {
+        Error::Preset { source, message } => {
+            let name = std::path::Path::new(&source)
+                .file_name()
+                .map_or(source.clone(), |n| n.to_string_lossy().into_owned());
+            let one_line = message.split_whitespace().collect::<Vec<_>>().join(" ");
+            // a key's own range where the reader states one, else what the flag takes
+            let said = one_line
+                .rsplit_once(": allowed ")
+                .or_else(|| one_line.rsplit_once("; allowed "));
+            let (what, allowed) = match said {
+                Some((w, a)) => (w.to_string(), a.to_string()),
+                None => (one_line, allowed.to_string()),
+            };
+            Error::Invalid {
+                field: Field::Other(flag.into()),
+                // the reader's own one-line message: its key and line are the point of it
+                value: format!("{name}: {what}"),
+                allowed: allowed.into(),
             }
         }
-    }
-    let rendered = e.to_string();
-    let first = rendered.lines().next().unwrap_or("").trim();
-    let first = first.strip_prefix("error: ").unwrap_or(first);
-    if e.kind() == clap::error::ErrorKind::UnknownArgument {
-        // name the command whose flags are allowed
-        // (the usage line names the command, then the arguments given: keep the command)
-        let cmd: Vec<&str> = rendered
-            .lines()
-            .find_map(|l| l.trim().strip_prefix("Usage: "))
-            .map(|u| {
-                u.split_whitespace()
-                    .take_while(|w| !w.starts_with(['-', '<', '[']))
-                    .collect()
-            })
-            .unwrap_or_default();
-        let cmd = if cmd.is_empty() {
-            "asperity".to_string()
-        } else {
-            cmd.join(" ")
-        };
-        return format!("{first}: allowed the flags of `{cmd} --help`");
-    }
-    first.to_string()
-}
-
-/// The message of a flag given more than once (`args`: the command line): every flag takes
-/// one value, so a repeated one is refused (not the last taken silently), naming the values.
-pub fn repeated_flag(flag: &str, args: &[String]) -> String {
-    let with_eq = format!("{flag}=");
-    let mut values = Vec::new();
-    let mut it = args.iter().peekable();
-    while let Some(a) = it.next() {
-        if let Some(v) = a.strip_prefix(&with_eq) {
-            values.push(asperity::error::fmt_text(v));
-        } else if a == flag {
-            if let Some(v) = it.peek().filter(|v| !v.starts_with("--")) {
-                values.push(asperity::error::fmt_text(v));
-            }
-        }
-    }
-    if values.len() >= 2 {
-        format!("repeated {flag} = {}: allowed once (one value)", values.join(", "))
-    } else {
-        format!("repeated {flag}: allowed once")
+        e => e,
     }
 }
 

@@ -43,14 +43,14 @@ impl HeightUnitArg {
 pub struct SurfaceArgs {
     /// Measured height map (.txt .asc .dat matrix, .xyz columns, .npy, .gsf): the theory runs
     /// on its PSD, gfmd on the map itself.
-    #[arg(long, value_parser = super::parse::in_path)]
+    #[arg(long)]
     pub surface: Option<PathBuf>,
     /// PSD table (CSV with columns q in 1/m and psd in m^4, as `asperity psd --format csv`
     /// writes) to run the theory on instead of the preset's spectrum.
-    #[arg(long, conflicts_with = "surface", value_parser = super::parse::in_path)]
+    #[arg(long, conflicts_with = "surface")]
     pub psd: Option<PathBuf>,
     /// Side L of the --surface map in metres (its x side; overrides the file's).
-    #[arg(long, allow_hyphen_values = true, requires = "surface", value_parser = super::parse::number(Field::SystemSize))]
+    #[arg(long, requires = "surface")]
     pub size: Option<f64>,
     /// Unit of the --surface heights where the file states none (default m).
     #[arg(long, value_enum, requires = "surface")]
@@ -59,10 +59,10 @@ pub struct SurfaceArgs {
     #[arg(long, requires = "surface")]
     pub periodic: bool,
     /// Lower cut-off of the tabulated spectrum in 1/m (default: the table's first q).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long)]
     pub qmin: Option<f64>,
     /// Upper cut-off of the tabulated spectrum in 1/m (default: the table's last q).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long)]
     pub qmax: Option<f64>,
 }
 
@@ -118,10 +118,9 @@ impl SurfaceArgs {
     }
 
     fn read_options(&self) -> Result<ReadOptions> {
+        // a preset's [measured] size comes here unparsed: the table's range, as --size's
         if let Some(l) = self.size {
-            if !(l.is_finite() && l > 0.0) {
-                return Err(Error::field("--size", l, "a length > 0 in metres"));
-            }
+            asperity::limits::check(Field::SystemSize, l)?;
         }
         Ok(ReadOptions {
             size: self.size,
@@ -154,11 +153,10 @@ impl SurfaceArgs {
     /// The tabulated spectrum (as [`Self::spectrum`]) and the --surface map it came from, the
     /// file read once.
     pub fn spectrum_and_map(&self) -> Result<(Option<Spectrum>, Option<Surface>)> {
-        for (flag, v) in [("--qmin", self.qmin), ("--qmax", self.qmax)] {
+        // a preset's [measured] cut-offs come here unparsed: the table's range, as the flags'
+        for (field, v) in [(Field::QMin, self.qmin), (Field::QMax, self.qmax)] {
             if let Some(x) = v {
-                if !(x.is_finite() && x > 0.0) {
-                    return Err(Error::field(flag, x, "a wave number > 0 in 1/m"));
-                }
+                asperity::limits::check(field, x)?;
             }
         }
         let map = self.map()?;
@@ -166,6 +164,7 @@ impl SurfaceArgs {
         let spectrum = if let Some(p) = &self.psd {
             Tabulated::load_csv(p, self.qmin, self.qmax).map(Spectrum::Tabulated)
         } else if let Some(s) = &map {
+            s.check_rough().map_err(|e| self.name_the_map(e))?;
             let name = self
                 .surface
                 .as_ref()
@@ -188,7 +187,9 @@ impl SurfaceArgs {
                 );
             }
         }
-        let spectrum = spectrum.map_err(rename_table_fields)?;
+        // the table's fields under the flag the user gave: --psd, or --surface for a map's
+        let flag = if self.psd.is_some() { "--psd" } else { "--surface" };
+        let spectrum = spectrum.map_err(|e| rename_table_fields(e, flag))?;
         Ok((Some(spectrum), map))
     }
 
@@ -225,14 +226,15 @@ impl SurfaceArgs {
     }
 }
 
-/// The table's cut-off fields in the command line's words.
-fn rename_table_fields(e: Error) -> Error {
+/// The table's cut-off fields in the command line's words; the table itself as `source`,
+/// the flag it came from.
+fn rename_table_fields(e: Error, source: &str) -> Error {
     match e {
         Error::Invalid { field, value, allowed } => {
             let flag = match field.key() {
                 "q_min" => "--qmin",
                 "q_max" => "--qmax",
-                "psd" => "--psd",
+                "psd" => source,
                 _ => return Error::Invalid { field, value, allowed },
             };
             Error::Invalid {
@@ -262,7 +264,7 @@ pub struct PsdArgs {
     /// Height map (.txt .asc .dat .xyz .npy .gsf).
     pub file: PathBuf,
     /// Side L of the map in metres (its x side; overrides the file's).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long)]
     pub size: Option<f64>,
     /// Unit of the heights where the file states none (default m).
     #[arg(long, value_enum)]
@@ -271,7 +273,7 @@ pub struct PsdArgs {
     #[arg(long)]
     pub periodic: bool,
     /// Radial bins per decade of q.
-    #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 10.0)]
     pub bins_per_decade: f64,
     /// Output format.
     #[arg(long, value_enum, default_value_t = PsdFormat::Table)]
@@ -293,12 +295,14 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
         periodic: args.periodic,
         ..SurfaceArgs::default()
     };
-    let s = sa.map().map_err(name_the_file)?.expect("a file is given");
+    let named = |e| name_the_file(e, &args.file);
+    let s = sa.map().map_err(named)?.expect("a file is given");
     let opts = PsdOptions {
         bins_per_decade: args.bins_per_decade,
         ..sa.psd_options()
     };
-    let out = psd_report(&args.file.display().to_string(), &s, &opts).map_err(name_the_file)?;
+    // a map too small or flat is refused in the report before the analysis and any output
+    let out = psd_report(&args.file.display().to_string(), &s, &opts).map_err(named)?;
     match args.format {
         PsdFormat::Json => emit(&serde_json::to_string_pretty(&out).expect("serialisable")),
         PsdFormat::Csv => {
@@ -324,9 +328,9 @@ pub fn run_psd(args: &PsdArgs) -> Result<()> {
     Ok(())
 }
 
-/// `psd` names its map by the positional FILE, not by `--surface` (which it has not), and
-/// its bins by `--bins-per-decade`.
-fn name_the_file(e: Error) -> Error {
+/// `psd` names its map by the positional FILE, not by `--surface` (which it has not), with
+/// the file's name in front of what is wrong with it, and its bins by `--bins-per-decade`.
+fn name_the_file(e: Error, file: &std::path::Path) -> Error {
     match e {
         Error::Invalid {
             field: Field::Other(k),
@@ -341,11 +345,21 @@ fn name_the_file(e: Error) -> Error {
             field: Field::HeightMap,
             value,
             allowed,
-        } => Error::Invalid {
-            field: Field::Other("FILE".into()),
-            value,
-            allowed,
-        },
+        } => {
+            let name = file
+                .file_name()
+                .map_or_else(|| file.display().to_string(), |n| n.to_string_lossy().into_owned());
+            let value = if value.contains(&name) {
+                value
+            } else {
+                asperity::error::fmt_text(&format!("{name}: {value}"))
+            };
+            Error::Invalid {
+                field: Field::Other("FILE".into()),
+                value,
+                allowed,
+            }
+        }
         e => e,
     }
 }

@@ -42,22 +42,22 @@ pub struct SweepArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// The knob to sweep: pressure (p*), thickness (t*q_r) or gamma (gamma_s, J/m^2).
-    #[arg(long, value_enum, default_value_t = Over::Pressure, allow_hyphen_values = true)]
+    #[arg(long, value_enum, default_value_t = Over::Pressure)]
     pub over: Over,
     /// First value of the swept knob.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::sweep_end)]
+    #[arg(long)]
     pub from: f64,
     /// Last value of the swept knob.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::parse::sweep_end)]
+    #[arg(long)]
     pub to: f64,
     /// Number of values from --from to --to (log-spaced; linear for gamma).
-    #[arg(long, default_value_t = 64, allow_hyphen_values = true, value_parser = super::parse::count_in("points", 1, 100_000))]
+    #[arg(long, default_value_t = 64)]
     pub points: usize,
     /// Reduced pressure p* of a thickness or gamma sweep (default: the preset's).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number(Field::Pressure))]
+    #[arg(long)]
     pub pressure: Option<f64>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = SweepFormat::Csv, allow_hyphen_values = true)]
+    #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]
     pub format: SweepFormat,
     /// Load sweeps: the theory along a load cycle (up on the loading branch, back down on the
     /// unloading branch while it exists), as `gfmd --cycle` walks it.

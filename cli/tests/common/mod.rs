@@ -2,6 +2,8 @@
 //! prints.
 #![allow(dead_code)]
 
+pub mod corpus;
+
 use std::process::{Command, Output};
 
 /// Runs the `asperity` binary with `args` in the repository root (where `presets/`,
