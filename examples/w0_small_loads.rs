@@ -5,24 +5,10 @@
 //!
 //! `cargo run --release --example w0_small_loads > /tmp/w0-small.csv`
 use asperity::fit::reference_set::small_load_set;
-use asperity::fit::set_gauge::{case_errors, cases_of, ModelChoice, SetCase};
-use asperity::input::model::{Model, ModelKind};
-use asperity::input::model_five::{Gauge, W0_MIN};
+use asperity::fit::set_gauge::{case_errors, cases_of, model_at_w0, ModelChoice, SetCase};
 use asperity::theory::cycle::PathBranch;
 use asperity::theory::engine::Options;
 use rayon::prelude::*;
-
-fn at_w0(c: &SetCase, w0: f64) -> Model {
-    let g = Gauge {
-        base: w0,
-        slope: 0.0,
-        floor: W0_MIN,
-    };
-    Model {
-        kind: ModelKind::Custom,
-        ..g.model(c.gamma_glo, 0.0)
-    }
-}
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let t0 = std::time::Instant::now();
@@ -38,7 +24,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .par_iter()
         .map(|&(ci, wi)| {
             let c = &cases[ci];
-            let e = case_errors(c, &ModelChoice::Fixed(at_w0(c, nodes[wi])), &Options::chart()).ok()?;
+            let e = case_errors(
+                c,
+                &ModelChoice::Fixed(model_at_w0(c.gamma_glo, nodes[wi])),
+                &Options::chart(),
+            )
+            .ok()?;
             Some(
                 e.iter()
                     .filter(|e| e.branch == PathBranch::Loading)

@@ -3,9 +3,7 @@
 //! `data/reference/w0-small-loads.csv` and `data/reference/gap-study-256.csv`; one case of the
 //! W(0) scan is recomputed from the theory.
 use asperity::fit::reference_set::small_load_set;
-use asperity::fit::set_gauge::{case_errors, cases_of, ModelChoice};
-use asperity::input::model::{Model, ModelKind};
-use asperity::input::model_five::{Gauge, W0_MIN};
+use asperity::fit::set_gauge::{case_errors, cases_of, model_at_w0, ModelChoice};
 use asperity::theory::cycle::PathBranch;
 use asperity::theory::engine::Options;
 use asperity::tolerances::{SMALL_LOAD_A_R_TARGET, W0_SCAN_REPRODUCED_ABS};
@@ -84,15 +82,7 @@ fn one_case_of_the_w0_scan_is_reproduced() {
         .iter()
         .find(|c| c.thickness_qr == 0.3 && c.gamma_factor == 1.0)
         .expect("t*q_r 0.3, gamma x1");
-    let g = Gauge {
-        base: 0.3,
-        slope: 0.0,
-        floor: W0_MIN,
-    };
-    let model = Model {
-        kind: ModelKind::Custom,
-        ..g.model(case.gamma_glo, 0.0)
-    };
+    let model = model_at_w0(case.gamma_glo, 0.3);
     let errs = case_errors(case, &ModelChoice::Fixed(model), &Options::chart()).expect("theory");
     let stored = &w0_scan()[&("0.3".to_string(), "1".to_string())][&300];
     let loading: Vec<_> = errs.iter().filter(|e| e.branch == PathBranch::Loading).collect();

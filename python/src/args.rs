@@ -4,48 +4,14 @@
 //! an `InputError` naming the argument and the range the CLI states for its flag, never
 //! PyO3's `OverflowError` or an unnamed `TypeError`.
 //!
-//! [`allowed`] gives a field's range by its canonical key ([`Field::key`]); a few arguments
+//! [`allowed`] gives a field's range by its canonical key ([`asperity::error::Field::key`]); a few arguments
 //! that have no library field (a seed, the PSD's bins per decade, the yp08/xu24 fudge factor)
 //! have their ranges here, from the library's constants, under keys of the same style.
 
-use asperity::error::{Allowed, Bound as End, Field, Range};
+use asperity::error::{Allowed, Bound as End, Range};
 use asperity::limits;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-
-/// Every field with a range of its own, looked up by its key.
-const FIELDS: [Field; 30] = [
-    Field::SystemSize,
-    Field::RolloffWavelength,
-    Field::ShortWavelength,
-    Field::Hurst,
-    Field::RmsGradient,
-    Field::RmsHeight,
-    Field::ContactModulus,
-    Field::SurfaceEnergy,
-    Field::Range,
-    Field::Pressure,
-    Field::PressurePa,
-    Field::Thickness,
-    Field::Model,
-    Field::C1,
-    Field::C2,
-    Field::Alpha,
-    Field::KGriffith,
-    Field::Rtol,
-    Field::AdhesionSteps,
-    Field::AdhesionPoints,
-    Field::AdhesionTol,
-    Field::SigmaMax,
-    Field::SigmaPoints,
-    Field::SweepStep,
-    Field::EdgeRel,
-    Field::Grid,
-    Field::SweepPoints,
-    Field::GfmdTolerance,
-    Field::MaxIterations,
-    Field::Bins,
-];
 
 /// The range of the arguments without a library field, by key.
 fn own_range(key: &str) -> Option<Range> {
@@ -78,7 +44,7 @@ fn bound(b: End) -> (Option<f64>, bool) {
 /// the field has no numeric range.
 #[pyfunction]
 pub fn allowed<'py>(py: Python<'py>, key: &str, name: &str) -> PyResult<Option<Bound<'py, PyDict>>> {
-    let (range, named, describe) = match FIELDS.iter().find(|f| f.key() == key) {
+    let (range, named, describe) = match limits::FIELDS.iter().find(|f| f.key() == key) {
         Some(f) => match limits::allowed(f) {
             Some(Allowed::Range(r)) => (r, Vec::new(), Allowed::Range(r).describe(name)),
             Some(Allowed::RangeOr(r, named)) => {

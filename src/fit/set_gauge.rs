@@ -316,7 +316,9 @@ impl CaseTable {
 
 /// The model of W(0) `w0` at global adhesion `gamma_glo`, in model 5's form (custom, so that
 /// a scene keeps it).
-fn model_at_w0(gamma_glo: f64, w0: f64) -> Model {
+/// Model 5's adhesive form with W(0) = `w0` at γ̃_glo = `gamma_glo` (no rise with the measure),
+/// marked custom: the model a W(0) scan solves ([`tabulate`], `examples/w0_small_loads.rs`).
+pub fn model_at_w0(gamma_glo: f64, w0: f64) -> Model {
     // the gauge whose w₀ at this γ̃ is w0 (w_s = 0): the crossover s(γ̃) stays model 5's
     let g = Gauge {
         base: w0,
