@@ -37,7 +37,7 @@ pub struct App {
     pub ui: Ui,
     /// The engine's results for the scene and the curves pinned (each with the key of the scene it was computed for).
     pub results: Results,
-    /// The work under way: the worker's requests, the GFMD run, the files written, the commands of the update.
+    /// The work under way: the worker's requests, the GFMD run, the files written.
     pub jobs: Jobs,
 }
 
@@ -120,7 +120,6 @@ impl App {
                 gfmd_next: 0,
                 pending: true,
                 asked: Needs::default(),
-                commands: Vec::new(),
                 last_export: None,
                 export_dir: PathBuf::from("."),
             },
@@ -176,6 +175,15 @@ impl App {
     /// The measured map GFMD runs on for `scene`: [`Params::map`] while the scene's spectrum is
     /// the one tabulated from it (None on a preset's spectrum or a PSD table).
     pub fn map_of(&self, scene: &Scene) -> Option<&Surface> {
+        self.map_entry(scene).map(|m| &**m)
+    }
+
+    /// [`App::map_of`], shared (a GFMD run carries it to its thread).
+    pub fn shared_map_of(&self, scene: &Scene) -> Option<std::sync::Arc<Surface>> {
+        self.map_entry(scene).cloned()
+    }
+
+    fn map_entry(&self, scene: &Scene) -> Option<&std::sync::Arc<Surface>> {
         match (scene.spectrum(), &self.params.map) {
             (Spectrum::Tabulated(t), Some((name, map))) if t.source == *name => Some(map),
             _ => None,

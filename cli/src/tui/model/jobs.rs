@@ -1,6 +1,5 @@
-//! The work under way: the worker's requests, the GFMD run, the files written, the commands of the update.
+//! The work under way: the worker's requests, the GFMD run, the files written.
 
-use crate::tui::model::command::Command;
 use crate::tui::model::progress::GfmdState;
 use asperity::input::scene::Scene;
 use std::path::PathBuf;
@@ -26,9 +25,6 @@ pub struct Jobs {
     pub pending: bool,
     /// What the last request asked for (the charts then shown).
     pub asked: crate::tui::model::kinds::Needs,
-    /// The commands the handlers of one message asked for (files, GFMD, a preset or tour to
-    /// read), returned by [`crate::tui::update::update`]; empty between messages.
-    pub commands: Vec<Command>,
     /// The last `e`/`s`: its scene, file name, number, and whether `e` and `s` were done
     /// under that number.
     pub last_export: Option<(Scene, String, u32, [bool; 2])>,

@@ -13,8 +13,8 @@ fn app() -> App {
     a
 }
 
-fn key(a: &mut App, code: KeyCode) {
-    crate::tui::drive::press(a, KeyEvent::new(code, KeyModifiers::NONE));
+fn key(a: &mut App, code: KeyCode) -> Vec<Command> {
+    crate::tui::drive::press(a, KeyEvent::new(code, KeyModifiers::NONE))
 }
 
 fn typed(a: &mut App, s: &str) {
@@ -64,46 +64,46 @@ fn typed_gamma_off(a: &mut App) {
 
 #[test]
 fn work_leaves_the_update_as_commands() {
-    use crate::tui::model::command::Command;
     let kinds = |cs: &[Command]| -> Vec<&'static str> {
         cs.iter()
             .map(|c| match c {
                 Command::Compute(_) => "compute",
                 Command::StartGfmd { .. } => "gfmd",
                 Command::CancelGfmd(_) => "cancel",
-                Command::Export => "export",
-                Command::SaveCharts => "save",
+                Command::Export(job) if job.charts => "save",
+                Command::Export(_) => "export",
                 Command::LoadPreset(_) | Command::LoadTour(_) => "load",
                 Command::Quit => "quit",
             })
             .collect()
     };
     let mut a = app();
-    // the first frame computes; nothing else is asked for
-    assert_eq!(kinds(&a.take_commands()), ["compute"]);
-    assert!(a.take_commands().is_empty());
-    // a knob: one computation of the latest scene, however many steps came before
-    key(&mut a, KeyCode::Right);
-    key(&mut a, KeyCode::Right);
-    let cs = a.take_commands();
-    assert_eq!(kinds(&cs), ["compute"]);
-    if let Command::Compute(r) = &cs[0] {
-        assert_eq!(r.scene, a.params.scene);
-    }
-    // e, s, g, in the order pressed; g again before the run started drops it
-    key(&mut a, KeyCode::Char('e'));
-    key(&mut a, KeyCode::Char('s'));
-    key(&mut a, KeyCode::Char('g'));
-    assert_eq!(kinds(&a.take_commands()), ["export", "save", "gfmd"]);
-    // g cancels the running one; g g starts one and cancels it before it was started
-    key(&mut a, KeyCode::Char('g'));
-    key(&mut a, KeyCode::Char('g'));
-    key(&mut a, KeyCode::Char('g'));
-    assert!(a.take_commands().is_empty());
-    // q: quit, after what came before it
-    key(&mut a, KeyCode::Char('e'));
-    key(&mut a, KeyCode::Char('q'));
-    assert_eq!(kinds(&a.take_commands()), ["export", "quit"]);
+    // the first frame computes
+    assert!(a.take_request().is_some());
+    assert!(a.take_request().is_none());
+    // a knob: each step asks for the computation of its scene (the loop submits the last)
+    assert_eq!(kinds(&key(&mut a, KeyCode::Right)), ["compute"]);
+    let cs = key(&mut a, KeyCode::Right);
+    let [Command::Compute(r)] = &cs[..] else {
+        panic!("{cs:?}")
+    };
+    assert_eq!(r.scene, a.params.scene);
+    // e, s, g: each returns its command, carrying its data; nothing is kept in the state
+    let cs = key(&mut a, KeyCode::Char('e'));
+    let [Command::Export(job)] = &cs[..] else {
+        panic!("{cs:?}")
+    };
+    assert!(!job.charts && job.scene == a.params.scene, "{job:?}");
+    assert_eq!(job.name, "system-1");
+    assert_eq!(job.dir, a.jobs.export_dir);
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('s'))), ["save"]);
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('g'))), ["gfmd"]);
+    // g cancels the running one; g g starts one and stops it again
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('g'))), ["cancel"]);
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('g'))), ["gfmd"]);
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('g'))), ["cancel"]);
+    // q: quit
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('q'))), ["quit"]);
 }
 
 #[test]
@@ -150,7 +150,7 @@ fn only_the_charts_shown_are_asked_for() {
     a.set_charts([ChartKind::Pr, ChartKind::Area, ChartKind::Thickness]);
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
     assert_eq!(a.shown_charts(), vec![0]);
-    let req = a.take_compute().expect("a request");
+    let req = crate::tui::drive::take_compute(&mut a).expect("a request");
     assert!(
         req.needs.point && !req.needs.loads && !req.needs.thickness,
         "{:?}",
@@ -158,20 +158,20 @@ fn only_the_charts_shown_are_asked_for() {
     );
     // a message that shows nothing new asks for nothing
     crate::tui::drive::send(&mut a, Msg::Clock(std::time::Instant::now()));
-    assert!(a.take_compute().is_none());
+    assert!(crate::tui::drive::take_compute(&mut a).is_none());
     // f: the area chart comes on screen, and with it the load sweep
     key(&mut a, KeyCode::Char('f'));
     assert_eq!(a.shown_charts(), vec![1]);
-    let req = a.take_compute().expect("the chart now shown is asked for");
+    let req = crate::tui::drive::take_compute(&mut a).expect("the chart now shown is asked for");
     assert!(req.needs.loads && !req.needs.thickness, "{:?}", req.needs);
     // 160×48 shows all three: the thickness sweep too
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
     assert_eq!(a.shown_charts(), vec![0, 1, 2]);
-    let req = a.take_compute().expect("the charts now shown are asked for");
+    let req = crate::tui::drive::take_compute(&mut a).expect("the charts now shown are asked for");
     assert!(req.needs.loads && req.needs.thickness, "{:?}", req.needs);
     // back to one chart: nothing more to compute
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
-    assert!(a.take_compute().is_none());
+    assert!(crate::tui::drive::take_compute(&mut a).is_none());
     // z at 160×48: the focused chart alone
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
     key(&mut a, KeyCode::Char('z'));
