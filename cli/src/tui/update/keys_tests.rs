@@ -194,3 +194,42 @@ fn a_gamma_below_the_resolvable_floor_is_refused_with_one_line() {
     a.set_typed(Param::Gamma, "off").unwrap();
     assert_eq!(a.params.scene.surface_energy_j_m2(), 0.0);
 }
+
+#[test]
+fn the_keys_are_computed_once_per_scene_change_and_the_view_hashes_nothing() {
+    use crate::tui::model::protocol::{point_key, sweep_key, SceneKeys};
+    let mut a = app();
+    key(&mut a, KeyCode::Char('y'));
+    let before = a.results.keys.clone();
+    // a key that changes neither the scene nor the load range keeps them
+    key(&mut a, KeyCode::Char('y'));
+    assert_eq!(a.results.keys, before);
+    // a knob step: the new scene's keys, as computed from scratch
+    key(&mut a, KeyCode::Right);
+    let k = &a.results.keys;
+    assert_ne!(k.point, before.point);
+    assert_eq!(*k, SceneKeys::of(&a.params.source, &a.params.scene, a.range()));
+    assert_eq!(k.point, point_key(&a.params.source, &a.params.scene));
+    assert_eq!(k.sweep, sweep_key(&a.params.source, &a.params.scene, a.range()));
+    // the view and the chart builders compare these keys; they compute none
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/tui");
+    let mut read = 0;
+    for dir in ["view", "charts"] {
+        for e in std::fs::read_dir(root.join(dir)).unwrap() {
+            let path = e.unwrap().path();
+            let text = std::fs::read_to_string(&path).unwrap();
+            read += 1;
+            for bad in [
+                "point_key(",
+                "sweep_key(",
+                "thickness_key(",
+                "scales_key(",
+                "SceneKeys::of",
+                ".hash(",
+            ] {
+                assert!(!text.contains(bad), "{} computes a key: {bad}", path.display());
+            }
+        }
+    }
+    assert!(read > 10, "{read} files read");
+}

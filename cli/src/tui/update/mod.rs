@@ -32,6 +32,8 @@ use crate::tui::model::msg::Msg;
 /// Takes one message: the next state, and the commands it asks for, in order: the
 /// computation of the current scene first where it changed, `Quit` last.
 pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
+    // the keys a reply is compared with: the scene's (set directly by a test or the loop)
+    app.rekey();
     let asked = match msg {
         // the "terminal too small" screen shows nothing to act on: only quitting acts
         Msg::Key(ev) if app.ui.too_small() => {
@@ -77,6 +79,8 @@ pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
     // a chart that came on screen (z, f, v, a resize, a tour step) is computed now
     app.follow_shown();
     let mut out: Vec<Command> = app.take_request().map(Command::Compute).into_iter().collect();
+    // the keys the view compares with: computed once per change of scene or range
+    app.rekey();
     out.extend(asked);
     if app.ui.quit {
         out.push(Command::Quit);
