@@ -32,7 +32,7 @@ impl Trace {
         let (Some(f), Some((gen, t0))) = (self.file.as_mut(), self.started) else {
             return;
         };
-        if gen != app.jobs.gen {
+        if gen != app.jobs.gen() {
             return;
         }
         let ms = t0.elapsed().as_secs_f64() * 1e3;
@@ -40,7 +40,7 @@ impl Trace {
             let _ = writeln!(f, "gen {gen} point_drawn_ms {ms:.2}");
             self.point_logged = true;
         }
-        let shown = app.results.point_gen >= gen && app.results.sweep_shown.as_ref() == Some(&app.results.keys.sweep);
+        let shown = app.results.point_gen >= gen && app.results.sweep_shown.as_ref() == Some(&app.results.keys().sweep);
         if !self.charts_logged && shown {
             let _ = writeln!(f, "gen {gen} charts_drawn_ms {ms:.2}");
             self.charts_logged = true;

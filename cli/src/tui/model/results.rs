@@ -40,6 +40,14 @@ pub struct Results {
     /// ū/h_rms at the current point.
     pub gap: Option<Result<f64>>,
     /// The keys of the scene shown, which the `*_shown` keys and the other models' results are
-    /// compared with (kept current by [`crate::tui::model::app::App::rekey`]).
-    pub keys: SceneKeys,
+    /// compared with (kept current by [`crate::tui::model::app::App::rekey`]; read them with
+    /// [`Results::keys`]).
+    pub(in crate::tui::model) keys: SceneKeys,
+}
+
+impl Results {
+    /// The keys of the scene shown.
+    pub fn keys(&self) -> &SceneKeys {
+        &self.keys
+    }
 }

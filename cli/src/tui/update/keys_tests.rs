@@ -200,15 +200,15 @@ fn the_keys_are_computed_once_per_scene_change_and_the_view_hashes_nothing() {
     use crate::tui::model::protocol::{point_key, sweep_key, SceneKeys};
     let mut a = app();
     key(&mut a, KeyCode::Char('y'));
-    let before = a.results.keys.clone();
+    let before = a.results.keys().clone();
     // a key that changes neither the scene nor the load range keeps them
     key(&mut a, KeyCode::Char('y'));
-    assert_eq!(a.results.keys, before);
+    assert_eq!(*a.results.keys(), before);
     // a knob step: the new scene's keys, as computed from scratch
     key(&mut a, KeyCode::Right);
-    let k = &a.results.keys;
+    let k = a.results.keys();
     assert_ne!(k.point, before.point);
-    assert_eq!(*k, SceneKeys::of(&a.params.source, &a.params.scene, a.range()));
+    assert_eq!(k, &SceneKeys::of(&a.params.source, &a.params.scene, a.range()));
     assert_eq!(k.point, point_key(&a.params.source, &a.params.scene));
     assert_eq!(k.sweep, sweep_key(&a.params.source, &a.params.scene, a.range()));
     // the view and the chart builders compare these keys; they compute none

@@ -32,7 +32,7 @@ impl App {
 
     pub(crate) fn set_scene(&mut self, scene: Scene) {
         if scene != self.params.scene {
-            self.jobs.pending = true;
+            self.refresh();
             let range = self.range();
             if sweep_key(&self.params.source, &scene, range)
                 != sweep_key(&self.params.source, &self.params.scene, range)

@@ -96,7 +96,7 @@ fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
     assert!(a.results.sweep.as_ref().is_some_and(|s| s.is_ok()));
     let key_now = point_key(&a.params.source, &a.params.scene);
     a.on_reply(Reply::Point {
-        gen: a.jobs.gen,
+        gen: a.jobs.gen(),
         key: key_now,
         result: Err(Error::NotConverged {
             solver: asperity::error::Solver::AdhesiveSelfConsistency,
