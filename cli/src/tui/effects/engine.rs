@@ -410,7 +410,7 @@ pub fn gfmd_job(
     };
     let spec = gfmd_sweep_spec(setup.scene.pressure());
     let plan = crate::tui::model::progress::plan(setup.scene.pressure(), &spec.pressures());
-    let mut clock = crate::tui::model::progress::Timeline::new(plan, grid_side(setup));
+    let mut clock = crate::tui::effects::clock::Timeline::new(plan, grid_side(setup));
     let mut last: Option<std::time::Instant> = None;
     let mut on = |index: usize, p: &Progress| {
         let new_phase = clock.enter(index);

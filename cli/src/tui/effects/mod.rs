@@ -3,6 +3,7 @@
 //! files of `e` and `s` ([`files`], [`export`]), presets and tours read ([`load`]). What an
 //! effect finds goes back to the update as a [`Msg`]; effects never change the state.
 
+pub mod clock;
 pub mod engine;
 pub mod export;
 pub mod files;
