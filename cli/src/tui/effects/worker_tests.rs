@@ -76,8 +76,8 @@ fn thickness_sweep_tends_to_the_semi_infinite_body() {
         .is_none());
 }
 
-/// A hysteresis window 2 % wide in t·q_r (system II, model 3, γ_s = 0.1256 J/m², p* = 1e-4:
-/// 0.099–0.101, narrower than the chart's grid step ×1.78) is resolved, not bridged: its edges
+/// A hysteresis window 3 % wide in t·q_r (system II, model 3, γ_s = 0.1256 J/m², p* = 1e-4:
+/// 0.0989–0.1018, narrower than the chart's grid step ×1.78) is resolved, not bridged: its edges
 /// to 0.1 %, and thicknesses between them each with both branches, at the a_r of the engine's
 /// own evaluation at full accuracy (the reference: its stable branches, lowest and highest).
 #[test]
