@@ -192,8 +192,14 @@ fn gfmd_overlay_with_a_synthetic_run() {
     use asperity_cli::tui::model::data::GfmdView;
     use asperity_cli::tui::{effects::engine as jobs, model::progress};
     let mut a = app("system-1");
-    key(&mut a, KeyCode::Char('g'));
-    let (id, _, _) = a.take_gfmd_request().expect("g starts a run");
+    let cs = asperity_cli::tui::drive::press(&mut a, KeyEvent::new(KeyCode::Char('g'), KeyModifiers::NONE));
+    let id = cs
+        .iter()
+        .find_map(|c| match c {
+            asperity_cli::tui::model::command::Command::StartGfmd { id, .. } => Some(*id),
+            _ => None,
+        })
+        .expect("g starts a run");
     let plan = progress::plan(
         a.params.scene.pressure(),
         &jobs::gfmd_sweep_spec(a.params.scene.pressure()).pressures(),

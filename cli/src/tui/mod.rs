@@ -189,12 +189,12 @@ fn run_commands(
                 Command::Quit => return Ok(true),
                 cmd @ Command::StartGfmd { .. } => {
                     let tx = replies.clone();
-                    let started = effects::start_gfmd(app, cmd, move |r| {
+                    let started = effects::start_gfmd(cmd, move |r| {
                         let _ = tx.send(Incoming::Reply(Box::new(r)));
                     })?;
                     inbox.extend(started);
                 }
-                cmd => inbox.extend(effects::run_now(app, &cmd)),
+                cmd => inbox.extend(effects::run_now(&cmd)),
             }
         }
         let Some(msg) = inbox.pop_front() else {

@@ -2,7 +2,6 @@
 //! from the key press to the frames that show the point, the load charts and everything.
 
 use crate::tui::model::app::App;
-use crate::tui::model::protocol;
 use std::io::Write;
 use std::time::Instant;
 
@@ -33,7 +32,7 @@ impl Trace {
         let (Some(f), Some((gen, t0))) = (self.file.as_mut(), self.started) else {
             return;
         };
-        if gen != app.jobs.gen {
+        if gen != app.jobs.gen() {
             return;
         }
         let ms = t0.elapsed().as_secs_f64() * 1e3;
@@ -41,8 +40,7 @@ impl Trace {
             let _ = writeln!(f, "gen {gen} point_drawn_ms {ms:.2}");
             self.point_logged = true;
         }
-        let load_key = protocol::sweep_key(&app.params.source, &app.params.scene, app.range());
-        let shown = app.results.point_gen >= gen && app.results.sweep_shown.as_ref() == Some(&load_key);
+        let shown = app.results.point_gen >= gen && app.results.sweep_shown.as_ref() == Some(&app.results.keys().sweep);
         if !self.charts_logged && shown {
             let _ = writeln!(f, "gen {gen} charts_drawn_ms {ms:.2}");
             self.charts_logged = true;

@@ -29,6 +29,7 @@ pub mod plot;
 pub mod psd;
 pub mod scales;
 pub mod shared;
+pub mod snapshot;
 
 use crate::tui::charts::load::{area, loads, thickness};
 use crate::tui::charts::shared::{base, current_point, data_bounds, others, set_empty, theory_name, theory_role};

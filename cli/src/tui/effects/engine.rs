@@ -197,7 +197,10 @@ pub fn thickness_spec() -> KnobSpec {
 /// where two are stable), a jump between two neighbours is searched for a thickness inside a
 /// window (the library's probe, [`asperity::theory::hysteresis::window_probes`], as
 /// `asperity sweep --over thickness` does; added to the curve), and each window's edges are
-/// found by bisection ([`asperity::theory::hysteresis::knob_edges_to`]).
+/// found by bisection ([`asperity::theory::hysteresis::knob_edges_to`]) to
+/// [`WINDOW_EDGE_REL`]. A window is resolved, not bridged: [`WINDOW_POINTS`] thicknesses
+/// between its edges are evaluated at the engine's full accuracy (both branches) and added to
+/// the curve.
 pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessData> {
     use asperity::theory::hysteresis::{knob_edges_to, merge_probes, window_probes, EdgeKind};
     let gamma = scene.surface_energy_j_m2();
@@ -213,6 +216,35 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
         let probes = window_probes(scene, Knob::Thickness, &points, &opts, false, Some(cancel))?;
         points = merge_probes(points, probes).0;
     }
+    let (mut jump_in, mut pull_off) = (Vec::new(), Vec::new());
+    if gamma > 0.0 && points.len() > 1 {
+        for e in knob_edges_to(
+            scene,
+            Knob::Thickness,
+            &points,
+            &opts.adhesion,
+            WINDOW_EDGE_REL,
+            Some(cancel),
+        )? {
+            match e.kind {
+                EdgeKind::JumpIn => jump_in.push(e.value),
+                EdgeKind::PullOff => pull_off.push(e.value),
+            }
+        }
+        let windows: Vec<(f64, f64)> = jump_in
+            .iter()
+            .zip(&pull_off)
+            .map(|(&j, &p)| (j.min(p), j.max(p)))
+            .collect();
+        if !windows.is_empty() {
+            // the grid's and the probe's thicknesses inside a window are evaluated again
+            let inside = |t: f64| windows.iter().any(|&(lo, hi)| t > lo && t < hi);
+            let again: Vec<f64> = points.iter().map(|p| p.value).filter(|&t| inside(t)).collect();
+            points.retain(|p| !inside(p.value));
+            points.extend(window_interior(scene, &windows, again, cancel)?);
+            points.sort_by(|a, b| a.value.total_cmp(&b.value));
+        }
+    }
     let a_r: Vec<f64> = points.iter().map(a_r_of).collect();
     if a_r.iter().all(|a| !a.is_finite()) {
         return Err(Error::NotConverged {
@@ -224,18 +256,6 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
         .iter()
         .map(|p| p.result.as_ref().ok().and_then(|e| e.unloading_a_r).unwrap_or(f64::NAN))
         .collect();
-    let (mut jump_in, mut pull_off) = (Vec::new(), Vec::new());
-    if gamma > 0.0 && points.len() > 1 {
-        // the edges to a chart's precision: 3 % in t·q_r, under half a braille dot of a
-        // 60-column chart over four decades
-        let rel = engine::CHART_EDGE_REL;
-        for e in knob_edges_to(scene, Knob::Thickness, &points, &opts.adhesion, rel, Some(cancel))? {
-            match e.kind {
-                EdgeKind::JumpIn => jump_in.push(e.value),
-                EdgeKind::PullOff => pull_off.push(e.value),
-            }
-        }
-    }
     // the half-space lies outside a knob sweep's (finite) values
     let half_space = Knob::Thickness.apply(scene, f64::INFINITY);
     let a_r_inf = match engine::evaluate_warm(&half_space, &opts, None, Some(cancel)) {
@@ -261,6 +281,40 @@ pub fn thickness_sweep(scene: &Scene, cancel: &AtomicBool) -> Result<ThicknessDa
         jump_in,
         pull_off,
     })
+}
+
+/// Relative precision in t·q_r of the thickness chart's window edges: a window can be 3 %
+/// wide (system II, model 3, γ_s = 0.1256 J/m², p* = 1e-4: t·q_r 0.0989–0.1018), so its
+/// edges are bisected to 0.1 % (a chart's 3 % would not place them inside it).
+pub const WINDOW_EDGE_REL: f64 = 1e-3;
+
+/// Thicknesses evaluated inside each window of the thickness chart, between its edges.
+pub const WINDOW_POINTS: usize = 5;
+
+/// `values` and [`WINDOW_POINTS`] thicknesses inside each window (lo, hi) (log-spaced,
+/// strictly between its edges), each evaluated at the engine's full accuracy with its
+/// branches, so the curve inside a window is the engine's (at the chart's accuracy, two σ
+/// points, a_r at t·q_r = 0.1 inside the window of [`WINDOW_EDGE_REL`]'s scene is 0.2 % off).
+fn window_interior(
+    scene: &Scene,
+    windows: &[(f64, f64)],
+    mut values: Vec<f64>,
+    cancel: &AtomicBool,
+) -> Result<Vec<KnobPoint>> {
+    use rayon::prelude::*;
+    let mut full = Options::default();
+    full.adhesion.explore_branches = true;
+    for &(lo, hi) in windows {
+        for k in 0..WINDOW_POINTS {
+            let f = (k as f64 + 1.0) / (WINDOW_POINTS as f64 + 1.0);
+            values.push(lo * (hi / lo).powf(f));
+        }
+    }
+    let found: Vec<Option<KnobPoint>> = values
+        .into_par_iter()
+        .map(|t| one_thickness(scene, t, &full, cancel))
+        .collect::<Result<_>>()?;
+    Ok(found.into_iter().flatten().collect())
 }
 
 /// a_r of a knob sweep's point (NaN where its solve failed).
@@ -356,7 +410,7 @@ pub fn gfmd_job(
     };
     let spec = gfmd_sweep_spec(setup.scene.pressure());
     let plan = crate::tui::model::progress::plan(setup.scene.pressure(), &spec.pressures());
-    let mut clock = crate::tui::model::progress::Timeline::new(plan, grid_side(setup));
+    let mut clock = crate::tui::effects::clock::Timeline::new(plan, grid_side(setup));
     let mut last: Option<std::time::Instant> = None;
     let mut on = |index: usize, p: &Progress| {
         let new_phase = clock.enter(index);

@@ -9,10 +9,16 @@
 //!
 //! `s`: writes the visible charts as SVG and PNG (`asperity-NAME-N-CHART.svg|png`) through
 //! the chart renderer ([`crate::chart`]), from the same [`Chart`]s the screen shows.
+//!
+//! Both write an [`ExportJob`]: the data the update took from the state when the key was
+//! pressed ([`crate::tui::charts::snapshot::export_job`]); nothing here reads the state.
 
 use crate::chart;
-use crate::tui::charts::{self, Chart, ChartKind};
+use crate::tui::charts::snapshot::export_job;
+pub use crate::tui::charts::snapshot::safe_name;
+use crate::tui::charts::Chart;
 use crate::tui::model::app::App;
+use crate::tui::model::command::ExportJob;
 use crate::tui::model::data::{GfmdView, SweepData, ThicknessData};
 use asperity::error::{Error, Result};
 use asperity::input::preset::{LoadBranch, ModelSpec, Preset};
@@ -44,8 +50,8 @@ pub fn cell(x: f64) -> String {
 }
 
 /// `# key: value` lines describing the scene, for the top of every exported CSV.
-pub fn scene_comment(app: &App, name: &str) -> String {
-    let s = &app.params.scene;
+pub fn scene_comment(job: &ExportJob, name: &str) -> String {
+    let s = &job.scene;
     let t = if s.thickness_qr().is_infinite() {
         "inf".to_string()
     } else {
@@ -56,7 +62,7 @@ pub fn scene_comment(app: &App, name: &str) -> String {
         Some(file) => format!("# surface: {file} (measured; the preset below gives the material, adhesion and load)\n"),
         None => String::new(),
     };
-    let branch = if crate::tui::charts::shared::on_unloading(app) {
+    let branch = if job.unloading {
         "unloading (the contact jumped in at a higher load)"
     } else {
         "loading"
@@ -64,8 +70,8 @@ pub fn scene_comment(app: &App, name: &str) -> String {
     format!(
         "# asperity explorer export {name}\n{surface}# preset: {} ({})\n# model: {}\n# pressure: {}\n# thickness_qr: {t}\n\
          # gamma_j_m2: {}\n# range_m: {}\n# branch: {branch}\n# reduced units: stresses by E*g = {} Pa, gap by h_rms = {} m\n",
-        app.params.preset.name,
-        app.params.source,
+        job.preset.name,
+        job.source,
         s.model().label(),
         s.pressure(),
         s.surface_energy_j_m2(),
@@ -79,37 +85,27 @@ fn write(path: &Path, text: &str) -> Result<()> {
     std::fs::write(path, text).map_err(|e| Error::io_file("write", "", path, &e))
 }
 
-/// Writes the files under the next free number; returns their paths.
+/// `e` of the current scene under the next free number; returns the paths written.
 pub fn export(app: &App) -> Result<Vec<String>> {
-    export_as(app, next_number(&app.jobs.export_dir, &safe_name(app))?)
+    let job = export_job(app, false);
+    export_as(&job, next_number(&job.dir, &job.name)?)
 }
 
-/// Writes the files as `asperity-NAME-N…`; returns their paths.
-pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
-    let name = safe_name(app);
-    let dir = &app.jobs.export_dir;
+/// Writes the files of `e` as `asperity-NAME-N…`; returns their paths.
+pub fn export_as(job: &ExportJob, n: u32) -> Result<Vec<String>> {
+    let name = &job.name;
+    let dir = &job.dir;
     let stem = format!("asperity-{name}-{n}");
     let mut paths = Vec::new();
 
-    let mut preset = scene_preset(&app.params.preset, &app.params.scene);
+    let mut preset = scene_preset(&job.preset, &job.scene);
     preset.name = stem.clone();
     // the branch on screen: an export made on the unloading branch reopens on it
-    preset.load.branch = crate::tui::charts::shared::on_unloading(app).then_some(LoadBranch::Unloading);
+    preset.load.branch = job.unloading.then_some(LoadBranch::Unloading);
     // a measured surface: its file, side and periodicity, as the flags that read it
-    let tabulated = matches!(
-        app.params.scene.spectrum(),
-        asperity::surface::spectrum::Spectrum::Tabulated(_)
-    );
-    preset.measured = if tabulated {
-        app.params
-            .measured
-            .clone()
-            .or_else(|| app.params.preset.measured.clone())
-    } else {
-        None
-    };
+    preset.measured = job.measured.clone();
     let toml_text = toml::to_string(&preset).map_err(|e| Error::io("serialise the scene", e))?;
-    let header = match &app.params.scene.spectrum() {
+    let header = match &job.scene.spectrum() {
         asperity::surface::spectrum::Spectrum::Tabulated(t) if preset.measured.is_some() => format!(
             "# Scene exported by the asperity explorer on the measured spectrum of {src}.\n\
              # [measured] names its file with the side and periodicity it was read with; [surface] is\n\
@@ -129,45 +125,37 @@ pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
     paths.push(path.display().to_string());
 
     // the distribution of the branch on screen
-    if let Some(pt) = crate::tui::charts::shared::shown_point(app) {
-        let mut t = scene_comment(app, &stem);
+    if let Some(pr) = &job.pr {
+        let mut t = scene_comment(job, &stem);
         t.push_str("sigma,density\n");
-        for (s, d) in &pt.pr {
+        for (s, d) in pr {
             let _ = writeln!(t, "{},{}", cell(*s), cell(*d));
         }
         let path = dir.join(format!("{stem}-pr.csv"));
         write(&path, &t)?;
         paths.push(path.display().to_string());
     }
-    if let Some(Ok(sw)) = &app.results.sweep {
+    if let Some(sw) = &job.sweep {
         let path = dir.join(format!("{stem}-loads.csv"));
-        write(&path, &(scene_comment(app, &stem) + &loads_csv(sw)))?;
+        write(&path, &(scene_comment(job, &stem) + &loads_csv(sw)))?;
         paths.push(path.display().to_string());
     }
-    if let Some(Ok(th)) = app
-        .results
-        .thickness
-        .as_ref()
-        .filter(|_| app.ui.charts.contains(&ChartKind::Thickness))
-    {
+    if let Some(th) = &job.thickness {
         let path = dir.join(format!("{stem}-thickness.csv"));
-        write(&path, &(scene_comment(app, &stem) + &thickness_csv(th)))?;
+        write(&path, &(scene_comment(job, &stem) + &thickness_csv(th)))?;
         paths.push(path.display().to_string());
     }
-    if let Some(g) = app
-        .gfmd_for_scene()
-        .filter(|g| !g.sweep.is_empty() || g.a_r.is_finite())
-    {
+    if let Some(g) = job.gfmd.as_ref().filter(|g| !g.sweep.is_empty() || g.a_r.is_finite()) {
         let path = dir.join(format!("{stem}-gfmd.csv"));
-        write(&path, &(scene_comment(app, &stem) + &gfmd_csv(g)))?;
+        write(&path, &(scene_comment(job, &stem) + &gfmd_csv(g)))?;
         paths.push(path.display().to_string());
     }
-    if !app.results.pins.is_empty() {
+    if !job.pins.is_empty() {
         // the pinned curves, each named by what differs from the exported scene
-        let mut t = scene_comment(app, &stem);
+        let mut t = scene_comment(job, &stem);
         t.push_str("pin,label,chart,x,y\n");
-        for (i, p) in app.results.pins.iter().enumerate() {
-            let label = crate::tui::model::pins::label(&p.scene, &app.params.scene).replace(',', ";");
+        for (i, p) in job.pins.iter().enumerate() {
+            let label = crate::tui::model::pins::label(&p.scene, &job.scene).replace(',', ";");
             for (k, pts) in &p.curves {
                 for (x, y) in pts {
                     let _ = writeln!(t, "{},{label},{},{},{}", i + 1, k.name(), cell(*x), cell(*y));
@@ -178,9 +166,9 @@ pub fn export_as(app: &App, n: u32) -> Result<Vec<String>> {
         write(&path, &t)?;
         paths.push(path.display().to_string());
     }
-    if let Some(sd) = app.scales_data().filter(|_| app.shows_scales()) {
+    if let Some(sd) = &job.scales {
         // the scale view: every frame's Pr(σ*, q), long format
-        let mut t = scene_comment(app, &stem);
+        let mut t = scene_comment(job, &stem);
         t.push_str("frame,q_over_q_l,a_r_q,sigma_a_q,sigma,density\n");
         for (i, f) in sd.frames.iter().enumerate() {
             for (s, d) in &f.pr {
@@ -343,55 +331,28 @@ pub fn next_number(dir: &Path, name: &str) -> Result<u32> {
     Ok(highest + 1)
 }
 
-/// The scene's name as a file name (`asperity-NAME-N…`): the measured surface's file stem,
-/// else the preset's name.
-pub fn safe_name(app: &App) -> String {
-    let surface = crate::tui::model::words::surface_name(&app.params.scene)
-        .map(|f| f.rsplit_once('.').map_or(f.clone(), |(stem, _)| stem.to_string()));
-    surface
-        .unwrap_or_else(|| app.params.preset.name.clone())
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
-                c
-            } else {
-                '_'
-            }
-        })
-        .collect()
-}
-
 /// `s`: writes the visible charts (each once) as SVG and PNG into the export directory, as
 /// `asperity-NAME-N-CHART.svg|png` (N never overwrites); returns the paths.
 pub fn export_charts(app: &App) -> Result<Vec<String>> {
-    export_charts_as(app, next_number(&app.jobs.export_dir, &safe_name(app))?)
+    let job = export_job(app, true);
+    export_charts_as(&job, next_number(&job.dir, &job.name)?)
 }
 
-/// `s` under number `n`.
-pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
-    let mut kinds: Vec<ChartKind> = Vec::new();
-    for k in app.ui.charts {
-        if !kinds.contains(&k) {
-            kinds.push(k);
-        }
-    }
-    let models: Vec<(ChartKind, Chart)> = kinds
-        .into_iter()
-        .map(|k| (k, charts::build(app, k)))
-        .filter(|(_, m)| m.empty.is_none())
-        .collect();
+/// The charts of `s` ([`ExportJob::figures`]) under number `n`.
+pub fn export_charts_as(job: &ExportJob, n: u32) -> Result<Vec<String>> {
+    let models = &job.figures;
     if models.is_empty() {
         return Err(Error::Unsupported("no chart to save yet (nothing computed)".into()));
     }
-    let name = safe_name(app);
-    let dir = &app.jobs.export_dir;
-    let sc = &app.params.scene;
+    let name = &job.name;
+    let dir = &job.dir;
+    let sc = &job.scene;
     let t = if sc.thickness_qr().is_infinite() {
         "∞".to_string()
     } else {
         crate::numfmt::short(sc.thickness_qr())
     };
-    let system = crate::tui::model::words::surface_name(sc).unwrap_or_else(|| app.params.preset.name.clone());
+    let system = crate::tui::model::words::surface_name(sc).unwrap_or_else(|| job.preset.name.clone());
     let note = format!(
         "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
         system,
@@ -399,7 +360,7 @@ pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
         crate::numfmt::short(sc.surface_energy_j_m2())
     );
     let mut paths = Vec::new();
-    for (k, m) in &models {
+    for (k, m) in models {
         let spec = file_chart(m, &note);
         for (ext, write) in [
             ("svg", chart::write_svg as fn(&Chart, &Path) -> std::io::Result<()>),
@@ -416,6 +377,7 @@ pub fn export_charts_as(app: &App, n: u32) -> Result<Vec<String>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tui::model::kinds::ChartKind;
 
     #[test]
     fn export_writes_three_files_without_overwriting() {

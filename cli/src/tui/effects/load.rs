@@ -40,6 +40,6 @@ mod tests {
             panic!("a message")
         };
         assert!(!t.unwrap().steps.is_empty());
-        assert!(run(&Command::Export).is_none() && run(&Command::Quit).is_none());
+        assert!(run(&Command::CancelGfmd(Default::default())).is_none() && run(&Command::Quit).is_none());
     }
 }

@@ -76,6 +76,54 @@ fn thickness_sweep_tends_to_the_semi_infinite_body() {
         .is_none());
 }
 
+/// A hysteresis window 3 % wide in t·q_r (system II, model 3, γ_s = 0.1256 J/m², p* = 1e-4:
+/// 0.0989–0.1018, narrower than the chart's grid step ×1.78) is resolved, not bridged: its edges
+/// to 0.1 %, and thicknesses between them each with both branches, at the a_r of the engine's
+/// own evaluation at full accuracy (the reference: its stable branches, lowest and highest).
+#[test]
+fn the_thickness_chart_resolves_a_window_narrower_than_its_step() {
+    let scene = asperity::input::preset::Preset::resolve("system-2")
+        .unwrap()
+        .scene()
+        .unwrap()
+        .with_model(Model::named(3).unwrap())
+        .unwrap()
+        .with_surface_energy_j_m2(0.1256)
+        .unwrap()
+        .with_pressure(1e-4)
+        .unwrap();
+    let t0 = std::time::Instant::now();
+    let td = thickness_sweep(&scene, &AtomicBool::new(false)).unwrap();
+    eprintln!(
+        "window sweep: {:.2} s, edges {:?} {:?}",
+        t0.elapsed().as_secs_f64(),
+        td.jump_in,
+        td.pull_off
+    );
+    let ([j], [p]) = (&td.jump_in[..], &td.pull_off[..]) else {
+        panic!("one window: {:?} {:?}", td.jump_in, td.pull_off)
+    };
+    assert!(0.098 < *j && j < p && *p < 0.102, "{j} {p}");
+    let mut full = Options::default();
+    full.adhesion.explore_branches = true;
+    let inside: Vec<usize> = (0..td.t.len()).filter(|&k| td.t[k] > *j && td.t[k] < *p).collect();
+    assert!(inside.len() >= WINDOW_POINTS, "{:?}", td.t);
+    for k in inside {
+        let s = asperity::theory::knob::Knob::Thickness.apply(&scene, td.t[k]);
+        let e = engine::evaluate(&s, &full).unwrap();
+        let stable: Vec<f64> = e.branches.iter().filter(|b| b.stable).map(|b| b.a_r).collect();
+        assert_eq!(stable.len(), 2, "t·q_r {}: {:?}", td.t[k], e.branches);
+        let near = |a: f64, b: f64| (a / b - 1.0).abs() < asperity::tolerances::TRACKED_VS_SCANNED_REL;
+        assert!(
+            near(td.a_r[k], stable[0]) && near(td.a_r_unloading[k], stable[1]),
+            "t·q_r {}: chart {} / {}, engine {stable:?}",
+            td.t[k],
+            td.a_r[k],
+            td.a_r_unloading[k]
+        );
+    }
+}
+
 /// Model 5 takes its W(0) from each scene's own γ̃_glo, which the slab's thickness sets: the
 /// thickness chart's a_r at a thin slab is the engine's for that scene (the model resolved at
 /// that thickness), not the model as resolved for the preset's half-space.

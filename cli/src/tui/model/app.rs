@@ -13,7 +13,7 @@ pub use crate::tui::model::knobs::*;
 pub use crate::tui::model::params::{Params, PresetEntry};
 use crate::tui::model::progress::same_system;
 pub use crate::tui::model::progress::GfmdState;
-use crate::tui::model::protocol::{point_key, scales_key, sweep_key, thickness_key, CacheKey, Request};
+use crate::tui::model::protocol::{CacheKey, Request, SceneKeys};
 pub use crate::tui::model::results::Results;
 pub use crate::tui::model::ui::{Message, Overlay, TourState, Ui};
 use asperity::error::Result;
@@ -37,7 +37,7 @@ pub struct App {
     pub ui: Ui,
     /// The engine's results for the scene and the curves pinned (each with the key of the scene it was computed for).
     pub results: Results,
-    /// The work under way: the worker's requests, the GFMD run, the files written, the commands of the update.
+    /// The work under way: the worker's requests, the GFMD run, the files written.
     pub jobs: Jobs,
 }
 
@@ -45,6 +45,7 @@ impl App {
     /// A fresh explorer on `preset` (resolved from `source`).
     pub fn new(source: &str, preset: Preset) -> Result<App> {
         let base = initial_scene(&preset)?;
+        let keys = SceneKeys::of(source, &base, sticky_range(None, base.pressure()));
         let mut presets: Vec<PresetEntry> = preset::list_available()
             .into_iter()
             .map(|(name, place)| PresetEntry { source: name, place })
@@ -94,6 +95,7 @@ impl App {
                 size: None,
             },
             results: Results {
+                keys,
                 overlay_points: HashMap::new(),
                 overlay_sweeps: HashMap::new(),
                 overlay_thickness: HashMap::new(),
@@ -120,7 +122,6 @@ impl App {
                 gfmd_next: 0,
                 pending: true,
                 asked: Needs::default(),
-                commands: Vec::new(),
                 last_export: None,
                 export_dir: PathBuf::from("."),
             },
@@ -176,6 +177,15 @@ impl App {
     /// The measured map GFMD runs on for `scene`: [`Params::map`] while the scene's spectrum is
     /// the one tabulated from it (None on a preset's spectrum or a PSD table).
     pub fn map_of(&self, scene: &Scene) -> Option<&Surface> {
+        self.map_entry(scene).map(|m| &**m)
+    }
+
+    /// [`App::map_of`], shared (a GFMD run carries it to its thread).
+    pub fn shared_map_of(&self, scene: &Scene) -> Option<std::sync::Arc<Surface>> {
+        self.map_entry(scene).cloned()
+    }
+
+    fn map_entry(&self, scene: &Scene) -> Option<&std::sync::Arc<Surface>> {
         match (scene.spectrum(), &self.params.map) {
             (Spectrum::Tabulated(t), Some((name, map))) if t.source == *name => Some(map),
             _ => None,
@@ -220,19 +230,13 @@ impl App {
         }
     }
 
-    /// The scene with another model; None where the scene does not take it (a variant
-    /// defined on the adhesionless half-space only, on an adhesive or slab scene).
-    pub(crate) fn with_model(&self, m: &Model) -> Option<Scene> {
-        self.params.scene.clone().with_model(*m).ok()
-    }
-
     /// The point of model `m` at the current scene (the current point for the current model).
     pub fn model_point(&self, m: &Model) -> Option<&PointData> {
         if charts::slot(m) == charts::slot(&self.params.scene.model()) {
             return self.results.point.as_ref().and_then(|r| r.as_ref().ok());
         }
-        let key = point_key(&self.params.source, &self.with_model(m)?);
-        self.results.overlay_points.get(&key).and_then(|r| r.as_ref().ok())
+        let key = &self.results.keys.of_model(m)?[0];
+        self.results.overlay_points.get(key).and_then(|r| r.as_ref().ok())
     }
 
     /// The load sweep of model `m`.
@@ -240,8 +244,8 @@ impl App {
         if charts::slot(m) == charts::slot(&self.params.scene.model()) {
             return self.results.sweep.as_ref().and_then(|r| r.as_ref().ok());
         }
-        let key = sweep_key(&self.params.source, &self.with_model(m)?, self.range());
-        self.results.overlay_sweeps.get(&key).and_then(|r| r.as_ref().ok())
+        let key = &self.results.keys.of_model(m)?[1];
+        self.results.overlay_sweeps.get(key).and_then(|r| r.as_ref().ok())
     }
 
     /// The thickness sweep of model `m`.
@@ -249,8 +253,8 @@ impl App {
         if charts::slot(m) == charts::slot(&self.params.scene.model()) {
             return self.results.thickness.as_ref().and_then(|r| r.as_ref().ok());
         }
-        let key = thickness_key(&self.params.source, &self.with_model(m)?);
-        self.results.overlay_thickness.get(&key).and_then(|r| r.as_ref().ok())
+        let key = &self.results.keys.of_model(m)?[2];
+        self.results.overlay_thickness.get(key).and_then(|r| r.as_ref().ok())
     }
 
     /// Whether the shown point belongs to an earlier scene.
@@ -258,7 +262,7 @@ impl App {
         self.results
             .point_shown
             .as_ref()
-            .is_some_and(|k| *k != point_key(&self.params.source, &self.params.scene))
+            .is_some_and(|k| *k != self.results.keys.point)
     }
 
     /// Whether the shown load sweep belongs to an earlier scene.
@@ -266,7 +270,7 @@ impl App {
         self.results
             .sweep_shown
             .as_ref()
-            .is_some_and(|k| *k != sweep_key(&self.params.source, &self.params.scene, self.range()))
+            .is_some_and(|k| *k != self.results.keys.sweep)
     }
 
     /// Whether the shown gap belongs to an earlier scene.
@@ -274,7 +278,7 @@ impl App {
         self.results
             .gap_shown
             .as_ref()
-            .is_some_and(|k| *k != point_key(&self.params.source, &self.params.scene))
+            .is_some_and(|k| *k != self.results.keys.point)
     }
 
     /// Whether the shown thickness sweep belongs to an earlier scene.
@@ -282,7 +286,7 @@ impl App {
         self.results
             .thickness_shown
             .as_ref()
-            .is_some_and(|k| *k != thickness_key(&self.params.source, &self.params.scene))
+            .is_some_and(|k| *k != self.results.keys.thickness)
     }
 
     /// Whether the shown scale view belongs to an earlier scene.
@@ -290,7 +294,7 @@ impl App {
         self.results
             .scales_shown
             .as_ref()
-            .is_some_and(|k| *k != scales_key(&self.params.source, &self.params.scene))
+            .is_some_and(|k| *k != self.results.keys.scales)
     }
 
     /// The scale view, if computed.
@@ -341,6 +345,15 @@ impl App {
         self.refresh();
     }
 
+    /// Computes the scene's keys ([`Results::keys`]) where the preset, the scene or the load
+    /// range changed since they were computed (a comparison, no hashing, when nothing did).
+    pub fn rekey(&mut self) {
+        let range = self.range();
+        if !self.results.keys.is_for(&self.params.source, &self.params.scene, range) {
+            self.results.keys = SceneKeys::of(&self.params.source, &self.params.scene, range);
+        }
+    }
+
     /// Asks for the charts' data again (after the charts or `M` changed; cached parts are
     /// instant).
     pub(crate) fn refresh(&mut self) {
@@ -353,13 +366,10 @@ impl App {
         let mut sw = Vec::new();
         let mut t = Vec::new();
         if self.ui.all_models {
-            for s in charts::overlay_models(&self.params.scene)
-                .iter()
-                .filter_map(|m| self.with_model(m))
-            {
-                p.push(point_key(&self.params.source, &s));
-                sw.push(sweep_key(&self.params.source, &s, self.range()));
-                t.push(thickness_key(&self.params.source, &s));
+            for (_, [kp, ks, kt]) in &self.results.keys.overlays {
+                p.push(kp.clone());
+                sw.push(ks.clone());
+                t.push(kt.clone());
             }
         }
         (p, sw, t)

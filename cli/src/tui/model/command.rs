@@ -5,8 +5,15 @@
 //! finds comes back to the update as a [`crate::tui::model::msg::Msg`]. A test runs them
 //! itself ([`crate::tui::drive`]).
 
+use crate::chart::Chart;
+use crate::tui::model::data::{GfmdView, ScalesData, SweepData, ThicknessData};
+use crate::tui::model::kinds::ChartKind;
+use crate::tui::model::pins::Pin;
 use crate::tui::model::protocol::Request;
+use asperity::input::preset::{MeasuredSpec, Preset};
 use asperity::input::scene::Scene;
+use asperity::surface::heightmap::Surface;
+use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
@@ -17,21 +24,25 @@ pub enum Command {
     /// request supersedes an older one): returned by an update that changed the scene or the
     /// charts shown; the loop submits the last of a burst, so a held key makes one request.
     Compute(Request),
-    /// Start GFMD run `id` on `scene` in its own thread; `cancel` stops it (`g` again).
+    /// Start GFMD run `id` on `scene` in its own thread; `cancel` stops it (`g` again). It
+    /// carries everything the run is set up from: the effect reads no state.
     StartGfmd {
         /// The run's id (replies of other runs are dropped).
         id: u64,
         /// The scene it runs on.
         scene: Scene,
+        /// The preset, whose grid the run uses.
+        preset: Box<Preset>,
+        /// The measured map it runs on (None: a surface generated from the scene's spectrum).
+        map: Option<Arc<Surface>>,
         /// Set to stop the run.
         cancel: Arc<AtomicBool>,
     },
     /// Stop the GFMD run whose flag this is (`g` while it runs, Esc).
     CancelGfmd(Arc<AtomicBool>),
-    /// `e`: write the curves (CSV) and the scene (TOML).
-    Export,
-    /// `s`: save the visible charts as SVG and PNG.
-    SaveCharts,
+    /// `e` (the curves as CSV and the scene as TOML) or `s` (the visible charts as SVG and
+    /// PNG): what the files hold, taken from the state when the key was pressed.
+    Export(Box<ExportJob>),
     /// Resolve a preset by name or path (the picker, the preset knob, a typed name); the
     /// answer is [`crate::tui::model::msg::Msg::PresetLoaded`].
     LoadPreset(String),
@@ -40,4 +51,42 @@ pub enum Command {
     LoadTour(String),
     /// Leave the explorer.
     Quit,
+}
+
+/// The files of one `e` or `s`: where they go, under which name and number, and their data
+/// as the screen showed it when the key was pressed (the effect writes it and reads no state).
+#[derive(Debug, Clone)]
+pub struct ExportJob {
+    /// `s` (the charts as SVG and PNG) rather than `e` (CSV and TOML).
+    pub charts: bool,
+    /// The export directory.
+    pub dir: PathBuf,
+    /// The scene's name in file names (`asperity-NAME-N…`).
+    pub name: String,
+    /// The number to write under (the other key's, on the same scene); None: the next free one.
+    pub reuse: Option<u32>,
+    /// The scene.
+    pub scene: Scene,
+    /// The preset the scene came from.
+    pub preset: Preset,
+    /// The preset's name or path.
+    pub source: String,
+    /// The measured surface's file, side and periodicity (None on a preset's surface).
+    pub measured: Option<MeasuredSpec>,
+    /// The screen shows the unloading branch.
+    pub unloading: bool,
+    /// Pr(σ*) of the branch shown.
+    pub pr: Option<Vec<(f64, f64)>>,
+    /// The load curves.
+    pub sweep: Option<SweepData>,
+    /// a_r(t·q_r), where the thickness chart is shown.
+    pub thickness: Option<ThicknessData>,
+    /// The GFMD result of this scene.
+    pub gfmd: Option<GfmdView>,
+    /// The pinned curves.
+    pub pins: Vec<Pin>,
+    /// The scale view's frames, where it is shown.
+    pub scales: Option<ScalesData>,
+    /// The visible charts (each once), for `s`.
+    pub figures: Vec<(ChartKind, Chart)>,
 }

@@ -1,6 +1,5 @@
-//! The work under way: the worker's requests, the GFMD run, the files written, the commands of the update.
+//! The work under way: the worker's requests, the GFMD run, the files written.
 
-use crate::tui::model::command::Command;
 use crate::tui::model::progress::GfmdState;
 use asperity::input::scene::Scene;
 use std::path::PathBuf;
@@ -10,10 +9,11 @@ use std::sync::Arc;
 /// The work under way.
 #[derive(Debug)]
 pub struct Jobs {
-    /// Generation of the newest request.
-    pub gen: u64,
+    /// Generation of the newest request (strictly increasing: set by
+    /// [`crate::tui::model::app::App::take_request`] only; read it with [`Jobs::gen`]).
+    pub(in crate::tui::model) gen: u64,
     /// The load charts' p* range of the last request (see [`crate::tui::model::knobs::sticky_range`]).
-    pub load_range: Option<(f64, f64)>,
+    pub(in crate::tui::model) load_range: Option<(f64, f64)>,
     /// A request is being served.
     pub busy: bool,
     /// When the current request was made (while busy).
@@ -22,16 +22,21 @@ pub struct Jobs {
     pub gfmd: GfmdState,
     pub gfmd_cancel: Option<Arc<AtomicBool>>,
     pub gfmd_next: u64,
-    /// The scene or the charts changed since the last request.
-    pub pending: bool,
+    /// The scene or the charts changed since the last request (set by
+    /// [`crate::tui::model::app::App::refresh`], cleared by the request).
+    pub(in crate::tui::model) pending: bool,
     /// What the last request asked for (the charts then shown).
-    pub asked: crate::tui::model::kinds::Needs,
-    /// The commands the handlers of one message asked for (files, GFMD, a preset or tour to
-    /// read), returned by [`crate::tui::update::update`]; empty between messages.
-    pub commands: Vec<Command>,
+    pub(in crate::tui::model) asked: crate::tui::model::kinds::Needs,
     /// The last `e`/`s`: its scene, file name, number, and whether `e` and `s` were done
     /// under that number.
     pub last_export: Option<(Scene, String, u32, [bool; 2])>,
     /// Where `e` writes.
     pub export_dir: PathBuf,
+}
+
+impl Jobs {
+    /// Generation of the newest request.
+    pub fn gen(&self) -> u64 {
+        self.gen
+    }
 }

@@ -17,7 +17,6 @@
 
 use crate::tui::model::data::GfmdView;
 use asperity::input::scene::Scene;
-use std::time::Instant;
 
 /// One phase of the GFMD job, in the order the job runs them ([`plan`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -195,58 +194,6 @@ pub fn time_text(elapsed: f64, left: Option<f64>) -> String {
     }
 }
 
-/// The job's clock: which phase runs since when, and how long the finished ones took.
-#[derive(Debug, Clone)]
-pub struct Timeline {
-    plan: Vec<GfmdPhase>,
-    grid: usize,
-    start: Instant,
-    phase_start: Instant,
-    done: Vec<f64>,
-}
-
-impl Timeline {
-    /// A job with phases `plan` on an N = `grid` map, starting now.
-    pub fn new(plan: Vec<GfmdPhase>, grid: usize) -> Timeline {
-        let now = Instant::now();
-        Timeline {
-            plan,
-            grid,
-            start: now,
-            phase_start: now,
-            done: Vec::new(),
-        }
-    }
-
-    /// Moves on to phase `index` (the phases between finish now); true when the phase changed.
-    pub fn enter(&mut self, index: usize) -> bool {
-        let index = index.min(self.plan.len().saturating_sub(1));
-        if index <= self.done.len() {
-            return false;
-        }
-        while self.done.len() < index {
-            self.done.push(self.phase_start.elapsed().as_secs_f64());
-            self.phase_start = Instant::now();
-        }
-        true
-    }
-
-    /// The report of the phase running now.
-    pub fn report(&self, iteration: usize, residual: f64) -> GfmdProgress {
-        let index = self.done.len().min(self.plan.len().saturating_sub(1));
-        GfmdProgress {
-            phase: self.plan[index],
-            index,
-            phases: self.plan.len(),
-            grid: self.grid,
-            iteration,
-            residual,
-            elapsed_s: self.start.elapsed().as_secs_f64(),
-            eta_s: eta_s(&self.plan, &self.done, self.phase_start.elapsed().as_secs_f64()),
-        }
-    }
-}
-
 /// The state of the background GFMD run.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub enum GfmdState {
@@ -405,22 +352,5 @@ mod tests {
         let start = GfmdProgress::starting(0.01);
         assert_eq!(start.steps_text().as_deref(), Some("0 it"));
         assert_eq!(start.left_at(1.0), None);
-    }
-
-    #[test]
-    fn the_timeline_records_finished_phases() {
-        let mut t = Timeline::new(job(), 64);
-        assert!(!t.enter(0));
-        let r = t.report(10, 0.1);
-        assert_eq!((r.index, r.phases, r.grid, r.eta_s), (0, 6, 64, None));
-        // straight to load 1: relax and theory finished
-        assert!(t.enter(2));
-        assert!(!t.enter(2));
-        let r = t.report(0, f64::NAN);
-        assert_eq!(r.phase, GfmdPhase::Load { k: 0, n: 3, p: 0.003 });
-        assert!(r.eta_s.is_some());
-        // past the end stays on the last phase
-        t.enter(99);
-        assert_eq!(t.report(0, 0.0).phase, GfmdPhase::TheorySweep);
     }
 }

@@ -111,6 +111,64 @@ pub fn scales_key(source: &str, scene: &Scene) -> CacheKey {
     })
 }
 
+/// The cache keys of the scene shown: computed once when the preset, the scene or the load
+/// charts' range changes ([`SceneKeys::is_for`] compares without hashing), so the view and
+/// the chart builders compare keys and hash nothing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneKeys {
+    /// The preset's identity, the scene and the range the keys were computed for.
+    of: (String, Scene, (f64, f64)),
+    /// [`point_key`] of the scene (the point, the gap).
+    pub point: CacheKey,
+    /// [`sweep_key`] of the scene and range.
+    pub sweep: CacheKey,
+    /// [`thickness_key`] of the scene.
+    pub thickness: CacheKey,
+    /// [`scales_key`] of the scene.
+    pub scales: CacheKey,
+    /// The other models the scene takes (`M`), each with its point, sweep and thickness keys.
+    pub overlays: Vec<(Model, [CacheKey; 3])>,
+}
+
+impl SceneKeys {
+    /// The keys of `scene` of preset `source` with the load charts over `range`.
+    pub fn of(source: &str, scene: &Scene, range: (f64, f64)) -> SceneKeys {
+        let overlays = crate::tui::model::kinds::overlay_models(scene)
+            .into_iter()
+            .filter_map(|m| {
+                let s = scene.clone().with_model(m).ok()?;
+                Some((
+                    m,
+                    [
+                        point_key(source, &s),
+                        sweep_key(source, &s, range),
+                        thickness_key(source, &s),
+                    ],
+                ))
+            })
+            .collect();
+        SceneKeys {
+            of: (source.to_string(), scene.clone(), range),
+            point: point_key(source, scene),
+            sweep: sweep_key(source, scene, range),
+            thickness: thickness_key(source, scene),
+            scales: scales_key(source, scene),
+            overlays,
+        }
+    }
+
+    /// Whether these are the keys of `scene` of `source` over `range` (compared, not hashed).
+    pub fn is_for(&self, source: &str, scene: &Scene, range: (f64, f64)) -> bool {
+        self.of.0 == source && self.of.1 == *scene && self.of.2 == range
+    }
+
+    /// The point, sweep and thickness keys of model `m` on the scene (None: a model the scene
+    /// does not take, or not among the overlaid ones).
+    pub fn of_model(&self, m: &Model) -> Option<&[CacheKey; 3]> {
+        self.overlays.iter().find(|(o, _)| o == m).map(|(_, k)| k)
+    }
+}
+
 /// What the worker sends back.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Reply {

@@ -2,11 +2,11 @@
 
 use crate::tui::model::data::{PointData, ScalesData, SweepData, ThicknessData};
 use crate::tui::model::pins::Pin;
-use crate::tui::model::protocol::CacheKey;
+use crate::tui::model::protocol::{CacheKey, SceneKeys};
 use asperity::error::Result;
 use std::collections::HashMap;
 
-/// The engine's results for the scene and the curves pinned (each with the key of the scene it was computed for)..
+/// The engine's results for the scene and the curves pinned (each with the key of the scene it was computed for).
 #[derive(Debug)]
 pub struct Results {
     /// Results of the other models (`M`), by cache key.
@@ -39,4 +39,15 @@ pub struct Results {
     pub sweep: Option<Result<SweepData>>,
     /// ū/h_rms at the current point.
     pub gap: Option<Result<f64>>,
+    /// The keys of the scene shown, which the `*_shown` keys and the other models' results are
+    /// compared with (kept current by [`crate::tui::model::app::App::rekey`]; read them with
+    /// [`Results::keys`]).
+    pub(in crate::tui::model) keys: SceneKeys,
+}
+
+impl Results {
+    /// The keys of the scene shown.
+    pub fn keys(&self) -> &SceneKeys {
+        &self.keys
+    }
 }

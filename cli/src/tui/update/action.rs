@@ -6,16 +6,16 @@ use crate::tui::model::keys::Action;
 use crate::tui::model::kinds::ChartKind;
 
 impl App {
-    /// Performs an action of the key table.
-    pub fn act(&mut self, action: Action) {
+    /// Performs an action of the key table; the command it asks for, if any.
+    pub fn act(&mut self, action: Action) -> Option<Command> {
         let n = self.knob_rows().len();
         match action {
             Action::Up => self.ui.selected = (self.ui.selected + n - 1) % n,
             Action::Down => self.ui.selected = (self.ui.selected + 1) % n,
-            Action::Dec => self.step(-1, false),
-            Action::Inc => self.step(1, false),
-            Action::DecCoarse => self.step(-1, true),
-            Action::IncCoarse => self.step(1, true),
+            Action::Dec => return self.step(-1, false),
+            Action::Inc => return self.step(1, false),
+            Action::DecCoarse => return self.step(-1, true),
+            Action::IncCoarse => return self.step(1, true),
             Action::Edit => self.ui.edit = Some(String::new()),
             Action::CycleModel => self.cycle_model(1),
             Action::Presets => {
@@ -33,7 +33,7 @@ impl App {
                 self.set_scene(self.params.base.clone());
                 self.info(format!("reset to preset {}", self.params.preset.name));
             }
-            Action::Export => self.jobs.commands.push(Command::Export),
+            Action::Export => return Some(self.export(false)),
             Action::AreaMode => {
                 let mut any = false;
                 for c in &mut self.ui.charts {
@@ -63,10 +63,10 @@ impl App {
                     self.leave_tour();
                 } else {
                     let name = crate::tui::model::tour::DEFAULT_TOUR.to_string();
-                    self.jobs.commands.push(Command::LoadTour(name));
+                    return Some(Command::LoadTour(name));
                 }
             }
-            Action::Save => self.jobs.commands.push(Command::SaveCharts),
+            Action::Save => return Some(self.export(true)),
             Action::Compare => {
                 if self.params.scene.is_adhesive() {
                     self.ui.compare = !self.ui.compare;
@@ -78,7 +78,7 @@ impl App {
                     );
                 }
             }
-            Action::Gfmd => self.toggle_gfmd(),
+            Action::Gfmd => return self.toggle_gfmd(),
             Action::Pin => self.pin(),
             Action::Unpin | Action::UnpinAll => {
                 let text = crate::tui::model::pins::unpin(
@@ -108,7 +108,7 @@ impl App {
             }
             Action::Cancel => {
                 if matches!(self.jobs.gfmd, GfmdState::Running { .. }) {
-                    self.toggle_gfmd();
+                    return self.toggle_gfmd();
                 } else if self.ui.zoom {
                     self.ui.zoom = false;
                 } else {
@@ -117,5 +117,11 @@ impl App {
             }
             Action::Quit => self.ui.quit = true,
         }
+        None
+    }
+
+    /// `e` (`charts` false) or `s`: the files, with the data the screen shows now.
+    fn export(&self, charts: bool) -> Command {
+        Command::Export(Box::new(crate::tui::charts::snapshot::export_job(self, charts)))
     }
 }

@@ -10,34 +10,26 @@ use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
 impl App {
-    /// `g`: asks for a GFMD run of the current scene on the preset's reduced grid, or cancels
-    /// the running one.
-    pub fn toggle_gfmd(&mut self) {
+    /// `g`: asks for a GFMD run of the current scene on the preset's reduced grid (with
+    /// the preset and the measured map it is set up from), or cancels the running one (a
+    /// run started in the same burst stops at its first check).
+    pub fn toggle_gfmd(&mut self) -> Option<Command> {
         if let GfmdState::Running { .. } = self.jobs.gfmd {
             self.jobs.gfmd = GfmdState::Idle;
-            // a run not started yet is not started; a started one is told to stop
-            let queued = self.jobs.commands.len();
-            self.jobs.commands.retain(|c| !matches!(c, Command::StartGfmd { .. }));
-            if let Some(c) = self
-                .jobs
-                .gfmd_cancel
-                .take()
-                .filter(|_| self.jobs.commands.len() == queued)
-            {
-                self.jobs.commands.push(Command::CancelGfmd(c));
-            }
             self.info("GFMD cancelled");
-            return;
+            return self.jobs.gfmd_cancel.take().map(Command::CancelGfmd);
         }
         self.jobs.gfmd_next += 1;
         let id = self.jobs.gfmd_next;
         let cancel = Arc::new(AtomicBool::new(false));
         self.jobs.gfmd_cancel = Some(cancel.clone());
-        self.jobs.commands.push(Command::StartGfmd {
+        let start = Command::StartGfmd {
             id,
             scene: self.params.scene.clone(),
+            preset: Box::new(self.params.preset.clone()),
+            map: self.shared_map_of(&self.params.scene),
             cancel,
-        });
+        };
         self.jobs.gfmd = GfmdState::Running {
             id,
             scene: self.params.scene.clone(),
@@ -45,6 +37,7 @@ impl App {
             started: None,
         };
         self.info("GFMD started on the preset's reduced grid (g cancels)");
+        Some(start)
     }
 
     /// Run `id` started at `at` (the effect built its setup and its thread): its clock starts,

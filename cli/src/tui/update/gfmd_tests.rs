@@ -6,8 +6,11 @@ use crate::tui::model::data::GfmdView;
 use crate::tui::model::protocol::{GfmdProgress, Reply};
 use asperity::error::Error;
 use asperity::input::preset::Preset;
+use asperity::input::scene::Scene;
+use asperity::surface::heightmap::Surface;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use std::sync::atomic::Ordering;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 
 fn app() -> App {
     let p = Preset::resolve("system-1").unwrap();
@@ -18,8 +21,20 @@ fn app() -> App {
     a
 }
 
-fn key(a: &mut App, code: KeyCode) {
-    crate::tui::drive::press(a, KeyEvent::new(code, KeyModifiers::NONE));
+fn key(a: &mut App, code: KeyCode) -> Vec<Command> {
+    crate::tui::drive::press(a, KeyEvent::new(code, KeyModifiers::NONE))
+}
+
+/// The GFMD run a key's commands start: its id, scene, measured map and cancel flag.
+type Start = (u64, Scene, Option<Arc<Surface>>, Arc<AtomicBool>);
+
+fn started(cs: Vec<Command>) -> Option<Start> {
+    cs.into_iter().find_map(|c| match c {
+        Command::StartGfmd {
+            id, scene, map, cancel, ..
+        } => Some((id, scene, map, cancel)),
+        _ => None,
+    })
 }
 
 /// A progress report of run `id` in phase `index` of a five-load job at p* = 0.01.
@@ -47,10 +62,11 @@ fn shown_progress(a: &App) -> Option<&GfmdProgress> {
 #[test]
 fn g_starts_and_cancels_a_gfmd_run() {
     let mut a = app();
-    key(&mut a, KeyCode::Char('g'));
+    let cs = key(&mut a, KeyCode::Char('g'));
     assert!(matches!(a.jobs.gfmd, GfmdState::Running { .. }));
     assert!(a.animating(), "the panel's clock ticks while GFMD runs");
-    let (id, scene, cancel) = a.take_gfmd_request().expect("a run to start");
+    let (id, scene, map, cancel) = started(cs).expect("a run to start");
+    assert!(map.is_none(), "the preset's spectrum: a generated map");
     assert_eq!(scene, a.params.scene);
     let setup = jobs::gfmd_setup(&a.params.preset, &scene, None);
     assert_eq!(setup.grid.n(), 512);
@@ -66,13 +82,12 @@ fn g_starts_and_cancels_a_gfmd_run() {
     });
     assert_eq!(shown_progress(&a).map(|p| p.iteration), Some(120));
     // g again cancels
-    key(&mut a, KeyCode::Char('g'));
+    let cs = key(&mut a, KeyCode::Char('g'));
     assert!(cancel.load(Ordering::Relaxed));
     assert_eq!(a.jobs.gfmd, GfmdState::Idle);
-    assert!(a.take_gfmd_request().is_none());
+    assert!(started(cs).is_none());
     // a finished run is shown for its own scene only
-    key(&mut a, KeyCode::Char('g'));
-    let (id, _, _) = a.take_gfmd_request().unwrap();
+    let (id, ..) = started(key(&mut a, KeyCode::Char('g'))).unwrap();
     let view = GfmdView {
         pressure: a.params.scene.pressure(),
         a_r: 0.02,
@@ -98,8 +113,7 @@ fn g_starts_and_cancels_a_gfmd_run() {
 #[test]
 fn gfmd_progress_phases_and_the_time_it_took() {
     let mut a = app();
-    key(&mut a, KeyCode::Char('g'));
-    let (id, _, _) = a.take_gfmd_request().unwrap();
+    let (id, ..) = started(key(&mut a, KeyCode::Char('g'))).unwrap();
     // the start: relaxing, no residual yet, no estimate
     let p = shown_progress(&a).unwrap();
     assert_eq!(p.phase.label(), "relax at p*");
@@ -140,8 +154,7 @@ fn gfmd_progress_phases_and_the_time_it_took() {
 #[test]
 fn replies_of_a_cancelled_gfmd_run_are_dropped() {
     let mut a = app();
-    key(&mut a, KeyCode::Char('g'));
-    let (old, _, _) = a.take_gfmd_request().unwrap();
+    let (old, ..) = started(key(&mut a, KeyCode::Char('g'))).unwrap();
     key(&mut a, KeyCode::Char('g')); // cancel
                                      // its late replies change nothing while idle
     a.on_reply(Reply::GfmdProgress {
@@ -155,8 +168,7 @@ fn replies_of_a_cancelled_gfmd_run_are_dropped() {
     });
     assert_eq!(a.jobs.gfmd, GfmdState::Idle);
     // nor once a new run started
-    key(&mut a, KeyCode::Char('g'));
-    let (new, _, _) = a.take_gfmd_request().unwrap();
+    let (new, ..) = started(key(&mut a, KeyCode::Char('g'))).unwrap();
     assert_ne!(new, old);
     a.on_reply(Reply::GfmdProgress {
         id: old,
@@ -188,9 +200,9 @@ fn replies_of_a_cancelled_gfmd_run_are_dropped() {
 #[test]
 fn the_gfmd_start_message_goes_when_the_run_ends() {
     let mut a = app();
-    key(&mut a, KeyCode::Char('g'));
+    let cs = key(&mut a, KeyCode::Char('g'));
     assert!(a.ui.message.as_ref().unwrap().text.starts_with("GFMD started"));
-    let (id, _, _) = a.take_gfmd_request().unwrap();
+    let (id, ..) = started(cs).unwrap();
     a.on_reply(Reply::GfmdDone {
         id,
         result: Err(Error::Cancelled),
@@ -226,9 +238,9 @@ fn g_on_a_measured_surface_runs_on_its_map() {
         .with_spectrum(Spectrum::Tabulated(table.clone()))
         .unwrap();
     a.params.map = Some((path.to_string(), std::sync::Arc::new(map)));
-    key(&mut a, KeyCode::Char('g'));
-    let (_, scene, _) = a.take_gfmd_request().expect("a run to start");
-    let setup = jobs::gfmd_setup(&a.params.preset, &scene, a.map_of(&scene));
+    let (_, scene, map, _) = started(key(&mut a, KeyCode::Char('g'))).expect("a run to start");
+    // the run carries the measured map it is set up from
+    let setup = jobs::gfmd_setup(&a.params.preset, &scene, map.as_deref());
     assert_eq!(setup.surface.as_ref().map(|s| (s.nx, s.ny)), Some((32, 32)));
     assert_eq!(jobs::grid_side(&setup), 32);
     // a table of another name is not this map's spectrum

@@ -4,19 +4,19 @@
 
 use crate::tui::model::app::*;
 use crate::tui::model::keys;
+use crate::tui::update::scene::load_preset;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 impl App {
-    /// Handles one key press.
-    pub fn on_key(&mut self, ev: KeyEvent) {
+    /// Handles one key press; the command it asks for, if any.
+    pub fn on_key(&mut self, ev: KeyEvent) -> Option<Command> {
         if ev.code == KeyCode::Char('c') && ev.modifiers.contains(KeyModifiers::CONTROL) {
             self.ui.quit = true;
-            return;
+            return None;
         }
         self.ui.message = None;
         if self.ui.edit.is_some() {
-            self.on_edit_key(ev);
-            return;
+            return self.on_edit_key(ev);
         }
         match self.ui.overlay {
             Overlay::Help => {
@@ -33,12 +33,9 @@ impl App {
                         self.ui.quit = code == KeyCode::Char('q');
                     }
                 }
-                return;
+                return None;
             }
-            Overlay::Presets(cursor) => {
-                self.on_picker_key(ev, cursor);
-                return;
-            }
+            Overlay::Presets(cursor) => return self.on_picker_key(ev, cursor),
             Overlay::None => {}
         }
         if self.ui.tour.is_some()
@@ -48,22 +45,26 @@ impl App {
                 .is_empty()
         {
             match ev.code {
-                KeyCode::Left => return self.tour_go(-1),
-                KeyCode::Right => return self.tour_go(1),
-                KeyCode::Esc => return self.leave_tour(),
-                _ => {}
+                KeyCode::Left => self.tour_go(-1),
+                KeyCode::Right => self.tour_go(1),
+                KeyCode::Esc => self.leave_tour(),
+                _ => return self.on_table_key(ev),
             }
+            return None;
         }
+        self.on_table_key(ev)
+    }
+
+    /// A key of no overlay, field or tour: a digit starts typing a value; the key table's
+    /// keys act.
+    fn on_table_key(&mut self, ev: KeyEvent) -> Option<Command> {
         if let KeyCode::Char(c) = ev.code {
             if (c.is_ascii_digit() || c == '.' || c == '-') && !ev.modifiers.contains(KeyModifiers::CONTROL) {
                 self.ui.edit = Some(c.to_string());
-                return;
+                return None;
             }
         }
-        let Some(action) = keys::action_for(&ev) else {
-            return;
-        };
-        self.act(action);
+        self.act(keys::action_for(&ev)?)
     }
 
     /// Handles one key press while the terminal is too small ([`Ui::too_small`]): the keys
@@ -75,10 +76,8 @@ impl App {
         }
     }
 
-    pub(crate) fn on_edit_key(&mut self, ev: KeyEvent) {
-        let Some(buf) = self.ui.edit.as_mut() else {
-            return;
-        };
+    pub(crate) fn on_edit_key(&mut self, ev: KeyEvent) -> Option<Command> {
+        let buf = self.ui.edit.as_mut()?;
         match ev.code {
             // q cancels the field (a second q quits): no value contains a q
             KeyCode::Esc | KeyCode::Char('q') => self.ui.edit = None,
@@ -89,30 +88,31 @@ impl App {
                 let text = std::mem::take(buf);
                 self.ui.edit = None;
                 if !text.trim().is_empty() {
-                    if let Err(e) = self.set_typed(self.selected_param(), &text) {
+                    match self.set_typed(self.selected_param(), &text) {
+                        Ok(cmd) => return cmd,
                         // in the panel's words (t·q_r, p*), not the preset's keys
-                        self.fail(crate::tui::model::words::describe(&e));
+                        Err(e) => self.fail(crate::tui::model::words::describe(&e)),
                     }
                 }
             }
             KeyCode::Char(c) if buf.chars().count() < 64 => buf.push(c),
             _ => {}
         }
+        None
     }
 
-    pub(crate) fn on_picker_key(&mut self, ev: KeyEvent, cursor: usize) {
+    pub(crate) fn on_picker_key(&mut self, ev: KeyEvent, cursor: usize) -> Option<Command> {
         let n = self.params.presets.len().max(1);
         match ev.code {
             KeyCode::Up | KeyCode::Char('k') => self.ui.overlay = Overlay::Presets((cursor + n - 1) % n),
             KeyCode::Down | KeyCode::Char('j') | KeyCode::Tab => self.ui.overlay = Overlay::Presets((cursor + 1) % n),
             KeyCode::Enter => {
                 self.ui.overlay = Overlay::None;
-                if let Some(e) = self.params.presets.get(cursor).cloned() {
-                    self.load_preset(&e.source);
-                }
+                return self.params.presets.get(cursor).map(|e| load_preset(&e.source));
             }
             KeyCode::Char('q') => self.ui.quit = true,
             _ => self.ui.overlay = Overlay::None,
         }
+        None
     }
 }

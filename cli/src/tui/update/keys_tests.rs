@@ -13,8 +13,8 @@ fn app() -> App {
     a
 }
 
-fn key(a: &mut App, code: KeyCode) {
-    crate::tui::drive::press(a, KeyEvent::new(code, KeyModifiers::NONE));
+fn key(a: &mut App, code: KeyCode) -> Vec<Command> {
+    crate::tui::drive::press(a, KeyEvent::new(code, KeyModifiers::NONE))
 }
 
 fn typed(a: &mut App, s: &str) {
@@ -64,46 +64,46 @@ fn typed_gamma_off(a: &mut App) {
 
 #[test]
 fn work_leaves_the_update_as_commands() {
-    use crate::tui::model::command::Command;
     let kinds = |cs: &[Command]| -> Vec<&'static str> {
         cs.iter()
             .map(|c| match c {
                 Command::Compute(_) => "compute",
                 Command::StartGfmd { .. } => "gfmd",
                 Command::CancelGfmd(_) => "cancel",
-                Command::Export => "export",
-                Command::SaveCharts => "save",
+                Command::Export(job) if job.charts => "save",
+                Command::Export(_) => "export",
                 Command::LoadPreset(_) | Command::LoadTour(_) => "load",
                 Command::Quit => "quit",
             })
             .collect()
     };
     let mut a = app();
-    // the first frame computes; nothing else is asked for
-    assert_eq!(kinds(&a.take_commands()), ["compute"]);
-    assert!(a.take_commands().is_empty());
-    // a knob: one computation of the latest scene, however many steps came before
-    key(&mut a, KeyCode::Right);
-    key(&mut a, KeyCode::Right);
-    let cs = a.take_commands();
-    assert_eq!(kinds(&cs), ["compute"]);
-    if let Command::Compute(r) = &cs[0] {
-        assert_eq!(r.scene, a.params.scene);
-    }
-    // e, s, g, in the order pressed; g again before the run started drops it
-    key(&mut a, KeyCode::Char('e'));
-    key(&mut a, KeyCode::Char('s'));
-    key(&mut a, KeyCode::Char('g'));
-    assert_eq!(kinds(&a.take_commands()), ["export", "save", "gfmd"]);
-    // g cancels the running one; g g starts one and cancels it before it was started
-    key(&mut a, KeyCode::Char('g'));
-    key(&mut a, KeyCode::Char('g'));
-    key(&mut a, KeyCode::Char('g'));
-    assert!(a.take_commands().is_empty());
-    // q: quit, after what came before it
-    key(&mut a, KeyCode::Char('e'));
-    key(&mut a, KeyCode::Char('q'));
-    assert_eq!(kinds(&a.take_commands()), ["export", "quit"]);
+    // the first frame computes
+    assert!(a.take_request().is_some());
+    assert!(a.take_request().is_none());
+    // a knob: each step asks for the computation of its scene (the loop submits the last)
+    assert_eq!(kinds(&key(&mut a, KeyCode::Right)), ["compute"]);
+    let cs = key(&mut a, KeyCode::Right);
+    let [Command::Compute(r)] = &cs[..] else {
+        panic!("{cs:?}")
+    };
+    assert_eq!(r.scene, a.params.scene);
+    // e, s, g: each returns its command, carrying its data; nothing is kept in the state
+    let cs = key(&mut a, KeyCode::Char('e'));
+    let [Command::Export(job)] = &cs[..] else {
+        panic!("{cs:?}")
+    };
+    assert!(!job.charts && job.scene == a.params.scene, "{job:?}");
+    assert_eq!(job.name, "system-1");
+    assert_eq!(job.dir, a.jobs.export_dir);
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('s'))), ["save"]);
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('g'))), ["gfmd"]);
+    // g cancels the running one; g g starts one and stops it again
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('g'))), ["cancel"]);
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('g'))), ["gfmd"]);
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('g'))), ["cancel"]);
+    // q: quit
+    assert_eq!(kinds(&key(&mut a, KeyCode::Char('q'))), ["quit"]);
 }
 
 #[test]
@@ -150,7 +150,7 @@ fn only_the_charts_shown_are_asked_for() {
     a.set_charts([ChartKind::Pr, ChartKind::Area, ChartKind::Thickness]);
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
     assert_eq!(a.shown_charts(), vec![0]);
-    let req = a.take_compute().expect("a request");
+    let req = crate::tui::drive::take_compute(&mut a).expect("a request");
     assert!(
         req.needs.point && !req.needs.loads && !req.needs.thickness,
         "{:?}",
@@ -158,20 +158,20 @@ fn only_the_charts_shown_are_asked_for() {
     );
     // a message that shows nothing new asks for nothing
     crate::tui::drive::send(&mut a, Msg::Clock(std::time::Instant::now()));
-    assert!(a.take_compute().is_none());
+    assert!(crate::tui::drive::take_compute(&mut a).is_none());
     // f: the area chart comes on screen, and with it the load sweep
     key(&mut a, KeyCode::Char('f'));
     assert_eq!(a.shown_charts(), vec![1]);
-    let req = a.take_compute().expect("the chart now shown is asked for");
+    let req = crate::tui::drive::take_compute(&mut a).expect("the chart now shown is asked for");
     assert!(req.needs.loads && !req.needs.thickness, "{:?}", req.needs);
     // 160×48 shows all three: the thickness sweep too
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
     assert_eq!(a.shown_charts(), vec![0, 1, 2]);
-    let req = a.take_compute().expect("the charts now shown are asked for");
+    let req = crate::tui::drive::take_compute(&mut a).expect("the charts now shown are asked for");
     assert!(req.needs.loads && req.needs.thickness, "{:?}", req.needs);
     // back to one chart: nothing more to compute
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 80, rows: 24 });
-    assert!(a.take_compute().is_none());
+    assert!(crate::tui::drive::take_compute(&mut a).is_none());
     // z at 160×48: the focused chart alone
     crate::tui::drive::send(&mut a, Msg::Resize { cols: 160, rows: 48 });
     key(&mut a, KeyCode::Char('z'));
@@ -193,4 +193,43 @@ fn a_gamma_below_the_resolvable_floor_is_refused_with_one_line() {
     a.set_typed(Param::Gamma, "0").unwrap();
     a.set_typed(Param::Gamma, "off").unwrap();
     assert_eq!(a.params.scene.surface_energy_j_m2(), 0.0);
+}
+
+#[test]
+fn the_keys_are_computed_once_per_scene_change_and_the_view_hashes_nothing() {
+    use crate::tui::model::protocol::{point_key, sweep_key, SceneKeys};
+    let mut a = app();
+    key(&mut a, KeyCode::Char('y'));
+    let before = a.results.keys().clone();
+    // a key that changes neither the scene nor the load range keeps them
+    key(&mut a, KeyCode::Char('y'));
+    assert_eq!(*a.results.keys(), before);
+    // a knob step: the new scene's keys, as computed from scratch
+    key(&mut a, KeyCode::Right);
+    let k = a.results.keys();
+    assert_ne!(k.point, before.point);
+    assert_eq!(k, &SceneKeys::of(&a.params.source, &a.params.scene, a.range()));
+    assert_eq!(k.point, point_key(&a.params.source, &a.params.scene));
+    assert_eq!(k.sweep, sweep_key(&a.params.source, &a.params.scene, a.range()));
+    // the view and the chart builders compare these keys; they compute none
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/tui");
+    let mut read = 0;
+    for dir in ["view", "charts"] {
+        for e in std::fs::read_dir(root.join(dir)).unwrap() {
+            let path = e.unwrap().path();
+            let text = std::fs::read_to_string(&path).unwrap();
+            read += 1;
+            for bad in [
+                "point_key(",
+                "sweep_key(",
+                "thickness_key(",
+                "scales_key(",
+                "SceneKeys::of",
+                ".hash(",
+            ] {
+                assert!(!text.contains(bad), "{} computes a key: {bad}", path.display());
+            }
+        }
+    }
+    assert!(read > 10, "{read} files read");
 }

@@ -7,12 +7,12 @@ use asperity::error::Result;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 
-impl App {
-    /// Asks for a preset by name or path (the effect reads it; [`App::preset_loaded`] takes it).
-    pub fn load_preset(&mut self, source: &str) {
-        self.jobs.commands.push(Command::LoadPreset(source.to_string()));
-    }
+/// Asks for a preset by name or path (the effect reads it; [`App::preset_loaded`] takes it).
+pub fn load_preset(source: &str) -> Command {
+    Command::LoadPreset(source.to_string())
+}
 
+impl App {
     /// A preset read: it becomes the current one, with its scene; on error the current one
     /// stays and the error shows.
     pub fn preset_loaded(&mut self, source: &str, result: Result<Preset>) {
@@ -32,7 +32,7 @@ impl App {
 
     pub(crate) fn set_scene(&mut self, scene: Scene) {
         if scene != self.params.scene {
-            self.jobs.pending = true;
+            self.refresh();
             let range = self.range();
             if sweep_key(&self.params.source, &scene, range)
                 != sweep_key(&self.params.source, &self.params.scene, range)

@@ -4,22 +4,32 @@
 //! validated by the scene's setters; one out of range leaves the scene as it is and says why.
 
 use crate::tui::model::app::*;
+use crate::tui::update::scene::load_preset;
 use asperity::error::{Error, Result};
 use asperity::input::model::Model;
 
 impl App {
-    /// The preset knob: the next (or previous) preset of the picker's list.
-    fn step_preset(&mut self, dir: i32) {
+    /// The preset knob: asks for the next (or previous) preset of the picker's list.
+    fn step_preset(&self, dir: i32) -> Option<Command> {
         let list = &self.params.presets;
         let n = list.len() as i32;
-        if n > 0 {
+        (n > 0).then(|| {
             let cur = list.iter().position(|e| e.source == self.params.source).unwrap_or(0) as i32;
-            let next = list[(cur + dir).rem_euclid(n) as usize].source.clone();
-            self.load_preset(&next);
-        }
+            load_preset(&list[(cur + dir).rem_euclid(n) as usize].source)
+        })
     }
 
-    pub(crate) fn step(&mut self, dir: i32, coarse: bool) {
+    /// One step of the selected knob; the preset knob's asks for the preset's file.
+    pub(crate) fn step(&mut self, dir: i32, coarse: bool) -> Option<Command> {
+        if self.selected_param() == Param::Preset {
+            return self.step_preset(dir);
+        }
+        self.step_value(dir, coarse);
+        None
+    }
+
+    /// One step of the selected knob's value (every knob but the preset's).
+    fn step_value(&mut self, dir: i32, coarse: bool) {
         let pick = |s: (f64, f64)| if coarse { s.1 } else { s.0 };
         let mut s = self.params.scene.clone();
         let m = s.model();
@@ -28,7 +38,8 @@ impl App {
         let typed = self.params.anchors.get(param);
         let lin = |x: f64, step: (f64, f64)| lin_step_from(x, typed.unwrap_or(0.0), pick(step), dir);
         match param {
-            Param::Preset => return self.step_preset(dir),
+            // a file to read: stepped by [`App::step`]
+            Param::Preset => return,
             Param::Model => {
                 self.cycle_model(dir);
                 return;
@@ -129,17 +140,23 @@ impl App {
         self.try_scene(s);
     }
 
-    /// Sets a parameter from typed text.
-    pub fn set_typed(&mut self, param: Param, text: &str) -> Result<()> {
+    /// Sets a parameter from typed text; a preset's name or path asks for its file.
+    pub fn set_typed(&mut self, param: Param, text: &str) -> Result<Option<Command>> {
+        if param == Param::Preset {
+            // read by the effect; an error comes back with the preset
+            return Ok(Some(load_preset(text.trim())));
+        }
+        self.set_typed_value(param, text).map(|()| None)
+    }
+
+    /// Sets a parameter other than the preset from typed text.
+    fn set_typed_value(&mut self, param: Param, text: &str) -> Result<()> {
         let mut s = self.params.scene.clone();
         let m = s.model();
         let t = text.trim();
         match param {
-            Param::Preset => {
-                // read by the effect; an error comes back with the preset
-                self.load_preset(t);
-                return Ok(());
-            }
+            // a file to read: set by [`App::set_typed`]
+            Param::Preset => return Ok(()),
             Param::Model => {
                 s.set_model(Model::of_kind(t.parse::<asperity::input::model::ModelKind>()?, &m)?)?;
             }

@@ -24,6 +24,8 @@ fn app() -> App {
     a
 }
 
+use crate::tui::drive::take_compute;
+
 fn key(a: &mut App, code: KeyCode) {
     crate::tui::drive::press(a, KeyEvent::new(code, M::NONE));
 }
@@ -94,7 +96,7 @@ fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
     assert!(a.results.sweep.as_ref().is_some_and(|s| s.is_ok()));
     let key_now = point_key(&a.params.source, &a.params.scene);
     a.on_reply(Reply::Point {
-        gen: a.jobs.gen,
+        gen: a.jobs.gen(),
         key: key_now,
         result: Err(Error::NotConverged {
             solver: asperity::error::Solver::AdhesiveSelfConsistency,
@@ -112,7 +114,7 @@ fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
 #[test]
 fn chart_selector_focus_and_models_ask_for_data() {
     let mut a = app();
-    let _ = a.take_compute();
+    let _ = take_compute(&mut a);
     key(&mut a, KeyCode::Char('v'));
     assert_eq!(a.ui.charts[0], ChartKind::PrLog);
     key(&mut a, KeyCode::Char('f'));
@@ -131,28 +133,28 @@ fn chart_selector_focus_and_models_ask_for_data() {
         key(&mut a, KeyCode::Char('v'));
     }
     assert_eq!(a.ui.charts[2], ChartKind::Thickness);
-    let r = a.take_compute().expect("a new chart asks for its data");
+    let r = take_compute(&mut a).expect("a new chart asks for its data");
     assert!(r.needs.thickness && r.needs.loads && r.needs.point);
     assert!(r.models.is_empty());
     key(&mut a, KeyCode::Char('M'));
-    let r = a.take_compute().unwrap();
+    let r = take_compute(&mut a).unwrap();
     // models 1, 2, 4 and, on this adhesive scene, model 5 besides the current model 3
     let n: Vec<u8> = r.models.iter().filter_map(|m| m.number()).collect();
     assert_eq!(n, [1, 2, 4, 5]);
     // only what is visible is asked for
     a.set_charts([ChartKind::Pr, ChartKind::PrLog, ChartKind::Pr]);
-    let r = a.take_compute().unwrap();
+    let r = take_compute(&mut a).unwrap();
     assert!(r.needs.point && !r.needs.loads && !r.needs.thickness);
 }
 
 #[test]
 fn requests_carry_increasing_generations_and_only_on_change() {
     let mut a = app();
-    let r1 = a.take_compute().unwrap();
-    assert!(a.take_compute().is_none());
+    let r1 = take_compute(&mut a).unwrap();
+    assert!(take_compute(&mut a).is_none());
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Right);
-    let r2 = a.take_compute().unwrap();
+    let r2 = take_compute(&mut a).unwrap();
     assert!(r2.gen > r1.gen);
     assert!(a.jobs.busy);
     // a stale point (from r1's scene) is dropped, the current one kept
@@ -409,9 +411,7 @@ fn the_scale_view_scrubs_plays_to_the_end_and_pauses() {
     key(&mut a, KeyCode::Char(']'));
     assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("scales")));
     a.set_charts([ChartKind::Scales, ChartKind::ScalesArea, ChartKind::Area]);
-    assert!(a
-        .take_compute()
-        .is_some_and(|r| r.needs.scales && r.needs.loads && !r.needs.point));
+    assert!(take_compute(&mut a).is_some_and(|r| r.needs.scales && r.needs.loads && !r.needs.point));
     a.results.scales = Some(Ok(frames(4)));
     // opens at q_s, the last frame
     assert_eq!(a.scale_frame().map(|f| (f.0, f.1)), Some((3, 4)));
@@ -539,9 +539,9 @@ fn j_and_k_scroll_a_cut_caption_and_a_new_step_starts_at_its_top() {
 fn m_overlays_model_5_where_adhesion_sets_it_apart_from_model_3() {
     let mut a = app();
     assert!(a.params.scene.surface_energy_j_m2() > 0.0);
-    a.take_compute();
+    take_compute(&mut a);
     key(&mut a, KeyCode::Char('M'));
-    let r = a.take_compute().unwrap();
+    let r = take_compute(&mut a).unwrap();
     let five: Vec<&Model> = r.models.iter().filter(|m| m.number() == Some(5)).collect();
     assert_eq!(five.len(), 1, "{:?}", r.models);
     // the request carries model 5 as the scene resolves it (W(0) from its own γ̃_glo), so the
@@ -551,7 +551,7 @@ fn m_overlays_model_5_where_adhesion_sets_it_apart_from_model_3() {
     assert_eq!(a.overlay_keys().0.len(), 5);
     // without adhesion model 5 is model 3: it is left out, not drawn over model 3
     a.set_typed(Param::Gamma, "0").unwrap();
-    let r = a.take_compute().unwrap();
+    let r = take_compute(&mut a).unwrap();
     let n: Vec<u8> = r.models.iter().filter_map(|m| m.number()).collect();
     assert_eq!(n, [1, 2, 4]);
     // with model 5 current, the paper's four are overlaid besides it
@@ -559,7 +559,7 @@ fn m_overlays_model_5_where_adhesion_sets_it_apart_from_model_3() {
     while a.params.scene.model().number() != Some(5) {
         key(&mut a, KeyCode::Char('m'));
     }
-    let r = a.take_compute().unwrap();
+    let r = take_compute(&mut a).unwrap();
     let n: Vec<u8> = r.models.iter().filter_map(|m| m.number()).collect();
     assert_eq!(n, [1, 2, 3, 4]);
 }
