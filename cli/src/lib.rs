@@ -8,5 +8,6 @@ pub mod cli;
 pub mod figure;
 pub mod looks;
 pub mod numfmt;
+pub mod outfile;
 pub mod report;
 pub mod tui;

@@ -29,7 +29,7 @@ use std::io::Write;
 
 pub mod flags;
 pub mod heartbeat;
-pub mod outfile;
+pub use crate::outfile;
 pub mod parse;
 pub mod progress;
 pub mod surface;

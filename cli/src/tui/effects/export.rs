@@ -82,7 +82,8 @@ pub fn scene_comment(job: &ExportJob, name: &str) -> String {
 }
 
 fn write(path: &Path, text: &str) -> Result<()> {
-    std::fs::write(path, text).map_err(|e| Error::io_file("write", "", path, &e))
+    // atomically: an interrupted export leaves no half-written file
+    crate::outfile::write_bytes("export", path, text.as_bytes())
 }
 
 /// `e` of the current scene under the next free number; returns the paths written.
@@ -367,7 +368,7 @@ pub fn export_charts_as(job: &ExportJob, n: u32) -> Result<Vec<String>> {
             ("png", chart::write_png),
         ] {
             let path = dir.join(format!("asperity-{name}-{n}-{}.{ext}", k.name()));
-            write(&spec, &path).map_err(|e| Error::io_file("write", "", &path, &e))?;
+            crate::outfile::write("save", &path, |tmp| write(&spec, tmp))?;
             paths.push(path.display().to_string());
         }
     }
