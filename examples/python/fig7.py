@@ -63,7 +63,8 @@ def main() -> None:
         r = asperity.gfmd(base.replace(model=4, thickness_qr=t), grid=grid)
         g_t.append(right if math.isinf(t) else t)
         g_a.append(r.a_r)
-        print(f"GFMD {grid}x{grid}: t*q_r = {t}: a_r = {r.a_r:.5f} (theory on the map {r.theory.a_r:.5f}), {r.elapsed_s:.2f} s")
+        on_map = r.theory.a_r if r.theory is not None else math.nan
+        print(f"GFMD {grid}x{grid}: t*q_r = {t}: a_r = {r.a_r:.5f} (theory on the map {on_map:.5f}), {r.elapsed_s:.2f} s")
     ax.plot(g_t, g_a, "s", color="k", label=f"GFMD ({grid}²)")
 
     ax.set_xscale("log")

@@ -12,9 +12,11 @@ from __future__ import annotations
 
 import copy
 import math
-from typing import Any, Callable, Dict, Iterator, List, Optional, Tuple
+from typing import Any, Callable, Dict, Iterator, List, Optional, Tuple, TypeVar, cast
 
 import numpy as np
+
+_T = TypeVar("_T")
 
 __all__ = ["Result", "Report", "SweepResult", "GfmdResult", "PsdResult", "CycleResult", "GfmdCycleResult", "GfmdSweepResult"]
 
@@ -38,7 +40,7 @@ def _wrap(v: Any) -> Any:
     return v
 
 
-def _memo(obj: Any, name: str, make: Callable[[], Any]) -> Any:
+def _memo(obj: Any, name: str, make: Callable[[], _T]) -> _T:
     """The attribute `name` of the result `obj`, made by `make` on first reading and kept (its
     arrays read-only)."""
     cache: Dict[str, Any] = obj.__dict__.setdefault("_memo", {})
@@ -47,7 +49,7 @@ def _memo(obj: Any, name: str, make: Callable[[], Any]) -> Any:
         if isinstance(v, np.ndarray):
             v.flags.writeable = False
         cache[name] = v
-    return cache[name]
+    return cast(_T, cache[name])
 
 
 def _column(rows: List[Dict[str, Any]], name: str) -> Optional[np.ndarray]:
