@@ -132,7 +132,24 @@ pub fn panic(py: Python<'_>, payload: Box<dyn std::any::Any + Send>) -> PyErr {
 
 /// Runs `f`, turning a library error into its exception and a panic into `InternalError`.
 pub fn guard<T>(py: Python<'_>, f: impl FnOnce() -> asperity::Result<T>) -> PyResult<T> {
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
+    settle(py, std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)))
+}
+
+/// [`guard`] with the GIL released while `f` runs, so that other Python threads run beside a
+/// call that reads, generates or analyses a map (work too short for a worker thread and its
+/// cancel flag, [`crate::work::run`], but long enough to stall a notebook's other threads).
+pub fn detached<T, F>(py: Python<'_>, f: F) -> PyResult<T>
+where
+    T: Send,
+    F: FnOnce() -> asperity::Result<T> + Send,
+{
+    let r = py.detach(move || std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)));
+    settle(py, r)
+}
+
+/// The value, or the exception of a library error or a panic.
+fn settle<T>(py: Python<'_>, r: std::thread::Result<asperity::Result<T>>) -> PyResult<T> {
+    match r {
         Ok(Ok(v)) => Ok(v),
         Ok(Err(e)) => Err(to_py(py, e)),
         Err(p) => Err(panic(py, p)),

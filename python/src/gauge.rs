@@ -29,7 +29,8 @@ pub fn run_gauge<'py>(
     observables: Option<Vec<String>>,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let (r, sc) = errors::guard(py, || {
+    // without the GIL: a reference file is read and the reference scene resolved here
+    let (r, sc) = errors::detached(py, || {
         let loads = (from_, to, points);
         let (mut r, sc) = report::gauge::reference(&reference, reference_csv.as_deref(), loads, &scene.scene)?;
         if let Some(list) = &observables {

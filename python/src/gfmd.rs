@@ -55,7 +55,8 @@ pub fn setup<'py>(
         rescale,
         ..GfmdSpec::default()
     };
-    errors::guard(py, || spec.setup(&scene.preset, &scene.scene, surface))
+    // without the GIL: the map is generated (or checked) and transformed here
+    errors::detached(py, || spec.setup(&scene.preset, &scene.scene, surface))
 }
 
 /// The progress report of a relaxation step or of the theory beside it (`total`: the step

@@ -232,7 +232,8 @@ impl SceneCore {
 /// its `[measured]` surface, [`crate::measured`]).
 #[pyfunction]
 pub fn scene_from_preset(py: Python<'_>, name_or_path: &str) -> PyResult<SceneCore> {
-    errors::guard(py, || {
+    // without the GIL: a `[measured]` map is read and analysed here
+    errors::detached(py, || {
         let preset = Preset::resolve(name_or_path)?;
         let scene = preset.scene()?;
         // an export's measured surface, read as `run --preset` reads it
@@ -330,7 +331,8 @@ impl SceneCore {
         source: String,
     ) -> PyResult<SceneCore> {
         let surface = map_of(py, &heights, size_m)?;
-        errors::guard(py, || {
+        // without the GIL: the map's PSD is the long part
+        errors::detached(py, || {
             let opts = PsdOptions {
                 periodic,
                 ..PsdOptions::default()

@@ -27,7 +27,7 @@ pub fn map_of(py: Python<'_>, heights: &PyReadonlyArray2<'_, f64>, size_m: f64) 
         ));
     }
     let values: Vec<f64> = a.iter().copied().collect();
-    errors::guard(py, || Surface::new(nx, ny, size_m / nx as f64, values))
+    errors::detached(py, || Surface::new(nx, ny, size_m / nx as f64, values))
 }
 
 /// A result's dict with `heights`, the map a GFMD run walked on (m, rows along y), where it
@@ -73,8 +73,7 @@ pub fn read_surface<'py>(
         size,
         height_unit: unit,
     };
-    let s = py.detach(|| readers::read(&path, &opts));
-    let s = s.map_err(|e| errors::to_py(py, e))?;
+    let s = errors::detached(py, || readers::read(&path, &opts))?;
     let d = PyDict::new(py);
     d.set_item("heights", heights_of(py, &s)?)?;
     d.set_item("size_m", s.size_x())?;
@@ -99,10 +98,6 @@ pub fn map_psd<'py>(
         periodic,
         bins_per_decade,
     };
-    let r = py.detach(|| std::panic::catch_unwind(|| report::psd::psd(&source, &s, &opts)));
-    let r = match r {
-        Ok(r) => r.map_err(|e| errors::to_py(py, e))?,
-        Err(p) => return Err(errors::panic(py, p)),
-    };
+    let r = errors::detached(py, || report::psd::psd(&source, &s, &opts))?;
     value::ser(py, &r)
 }

@@ -46,6 +46,49 @@ def test_the_gil_is_released():
     assert ticks[0] > 20
 
 
+def _stamps_during(call: Callable[[], object]) -> float:
+    """The share of `call()`'s middle half during which another Python thread ran.
+
+    The other thread stamps the clock in a busy loop. With the GIL held by `call` it cannot
+    run at all inside the call, apart from one switch interval (5 ms) at either end; with the
+    GIL released it stamps all along. The middle half of the call is cut in 20 slices and the
+    share of slices holding a stamp is returned."""
+    stamps: List[float] = []
+    running = threading.Event()
+    stop = threading.Event()
+
+    def stamp() -> None:
+        running.set()
+        while not stop.is_set():
+            stamps.append(time.perf_counter())
+
+    t = threading.Thread(target=stamp)
+    t.start()
+    running.wait()
+    t0 = time.perf_counter()
+    call()
+    t1 = time.perf_counter()
+    stop.set()
+    t.join()
+    lo, width = t0 + 0.25 * (t1 - t0), 0.5 * (t1 - t0) / 20
+    hit = {int((s - lo) / width) for s in stamps if lo <= s < lo + 20 * width}
+    return len(hit) / 20
+
+
+def _big_map() -> asperity.Surface:
+    # a 2048² self-affine map: its PSD takes far longer than Python's 5 ms switch interval
+    return asperity.generate_surface(grid=2048, system_size_m=1e-4, seed=3)
+
+
+def test_with_surface_releases_the_gil():
+    """`Scene.with_surface` analyses the map (its PSD) without the GIL, as `psd` does: another
+    thread runs during most of the call."""
+    h = _big_map()
+    scene = asperity.Scene.preset("system-2")
+    assert _stamps_during(lambda: scene.with_surface(h)) >= 0.5
+    assert _stamps_during(lambda: asperity.psd(h)) >= 0.5
+
+
 def _latency(call: Callable[[], object], after_s: float) -> float:
     """Seconds from a simulated Ctrl-C, `after_s` into `call()`, to its KeyboardInterrupt.
 
