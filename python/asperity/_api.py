@@ -86,17 +86,15 @@ def evaluate(
     Raises :class:`InputError` for a knob out of range, :class:`NotConverged` when the solver
     misses its tolerance.
     """
-    return Report(
-        _native.evaluate(
-            _scene(scene),
-            a.count(sigma_points, "sigma_points", "accuracy.sigma_points"),
-            _opt_number(sigma_max, "sigma_max", "accuracy.sigma_max"),
-            _opt_number(rtol, "rtol", "accuracy.rtol"),
-            _opt_number(adhesion_steps, "adhesion_steps", "accuracy.adhesion_steps"),
-            _opt_number(adhesion_points, "adhesion_points", "accuracy.adhesion_points"),
-            _opt_number(adhesion_tol, "adhesion_tol", "accuracy.adhesion_tol"),
-            a.callback(progress),
-        )
+    return _native.evaluate(
+        _scene(scene),
+        a.count(sigma_points, "sigma_points", "accuracy.sigma_points"),
+        _opt_number(sigma_max, "sigma_max", "accuracy.sigma_max"),
+        _opt_number(rtol, "rtol", "accuracy.rtol"),
+        _opt_number(adhesion_steps, "adhesion_steps", "accuracy.adhesion_steps"),
+        _opt_number(adhesion_points, "adhesion_points", "accuracy.adhesion_points"),
+        _opt_number(adhesion_tol, "adhesion_tol", "accuracy.adhesion_tol"),
+        a.callback(progress),
     )
 
 

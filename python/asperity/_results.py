@@ -1,6 +1,8 @@
 """Result objects: the library's results with the keys of the CLI's JSON.
 
-Every result holds the plain dict the library produced (``to_dict()``: the keys and numbers of
+:class:`Report` (:func:`asperity.evaluate`) is a frozen class built in Rust from the library's
+report (``asperity._native.Report``: typed fields, arrays made once, read-only). Every other
+result holds the plain dict the library produced (``to_dict()``: the keys and numbers of
 ``asperity run|sweep|gfmd|psd --format json``, JSON-serialisable, unavailable values None) and
 reads it as attributes: a nested object becomes a result (``report.pr.sigma``), a list of
 numbers a numpy array (None becomes NaN), a list of objects a list of results. Each attribute is
@@ -15,6 +17,8 @@ import math
 from typing import Any, Callable, Dict, Iterator, List, Optional, Tuple, TypeVar, cast
 
 import numpy as np
+
+from ._native import Report
 
 _T = TypeVar("_T")
 
@@ -121,76 +125,6 @@ class Result:
             if len(shown) == 8:
                 break
         return f"{type(self).__name__}({', '.join(shown)}, ...)"
-
-
-class Report(Result):
-    """One scene at one load (:func:`asperity.evaluate`): the fields of ``asperity run``.
-
-    Main fields (stresses reduced by E*ḡ, gaps by h_rms where ``_rel``):
-
-    - ``a_r``: relative contact area [S-3]; ``mean_contact_stress`` σ̄_c*;
-      ``contact_stress_variance`` ⟨δσ_c²⟩*; ``pr.sigma``, ``pr.density``: Pr(σ*) with
-      ∫Pr dσ* = a_r [S-9, S-14];
-    - ``mean_gap`` (m), ``mean_gap_rel`` with its bracket ``mean_gap_lower_rel`` ..
-      ``mean_gap_upper_rel`` and ``mean_gap_error`` [S-11, S-12];
-    - ``branch``, ``branches`` (every branch at this load), ``a_r_unloading`` (the unloading
-      branch's a_r, the name a sweep's column has; ``unloading_a_r`` is its older alias),
-      ``jump_in_pressure``, ``pull_off_pressure`` (the hysteresis window);
-    - ``error_estimate`` (absolute error of a_r), ``converged``;
-    - ``elapsed_s``, ``elapsed_solve_s``, ``elapsed_window_s``, ``elapsed_gap_s`` (timings, s);
-    - ``scene`` (the resolved inputs), ``resolution`` (a_r(q)).
-    """
-
-    # the fields' types for a type checker; at run time they are read from the dict
-    preset: str
-    a_r: float
-    mean_contact_stress: float
-    contact_stress_variance: float
-    pr: Result
-    converged: bool
-    error_estimate: float
-    mean_gap: Optional[float]
-    mean_gap_rel: Optional[float]
-    mean_gap_lower_rel: Optional[float]
-    mean_gap_upper_rel: Optional[float]
-    mean_gap_error: Optional[float]
-    branch: str
-    branches: List[Result]
-    a_r_unloading: Optional[float]
-    unloading_a_r: Optional[float]
-    jump_in_pressure: Optional[float]
-    pull_off_pressure: Optional[float]
-    elapsed_s: float
-    scene: Result
-    resolution: Result
-
-    @property
-    def window(self) -> Tuple[float, float]:
-        """(pull-off p*, jump-in p*) of the hysteresis window around the load (NaN: none)."""
-        return (_num(self._data.get("pull_off_pressure")), _num(self._data.get("jump_in_pressure")))
-
-    @property
-    def variance(self) -> float:
-        """⟨δσ_c²⟩*, the contact stress variance (reduced by (E*ḡ)²): an alias of
-        ``contact_stress_variance``, the preferred name."""
-        return float(self._data["contact_stress_variance"])
-
-    @property
-    def timings(self) -> Dict[str, float]:
-        """Wall times in s: ``elapsed_s`` (all), ``elapsed_solve_s``, ``elapsed_window_s``, ``elapsed_gap_s``."""
-        return {k: float(v) for k, v in self._data.items() if k.startswith("elapsed")}
-
-    @property
-    def gap_bracket(self) -> Tuple[float, float]:
-        """(lower, upper) ends of ū/h_rms's bracket (NaN where the gap is unavailable)."""
-        return (_num(self._data.get("mean_gap_lower_rel")), _num(self._data.get("mean_gap_upper_rel")))
-
-
-    def __repr__(self) -> str:
-        d = self._data
-        keys = ("a_r", "mean_contact_stress", "contact_stress_variance", "mean_gap_rel", "branch", "converged")
-        shown = ", ".join(f"{k}={d.get(k)!r}" for k in keys)
-        return f"Report(preset={d.get('preset')!r}, {shown}, ...)"
 
 
 class SweepResult(Result):

@@ -1,12 +1,13 @@
 //! `asperity._native`: the extension module of the `asperity` Python package (PyO3, abi3 for
 //! CPython >= 3.9). A thin layer on the library: every function here calls the library's own
-//! (the same calls as the `asperity` binary's commands) and hands its serialisable result to
-//! Python as dicts, lists and numpy arrays, with the keys of the CLI's JSON. The documented API
-//! (classes `Scene`, `Report`, ..., docstrings with units and \[S\] equation numbers) is the
-//! pure-Python package in `python/asperity/`; this module is its engine.
+//! (the same calls as the `asperity` binary's commands) and hands its result to Python as a
+//! frozen result class converted in Rust (`Report`) or as dicts, lists and numpy arrays, each
+//! with the keys of the CLI's JSON. The documented API (classes `Scene`, `SweepResult`, ...,
+//! docstrings with units and \[S\] equation numbers) is the pure-Python package in
+//! `python/asperity/`; this module is its engine.
 //!
 //! - [`scene`]: the validated scene (`Scene.preset`, `Scene(...)`, `Scene.replace`);
-//! - [`theory`]: `evaluate` ([`asperity::report::point()`]), `sweep` (loads, t·q_r, γ_s),
+//! - [`theory`]: `evaluate` ([`asperity::report::point()`], a [`report::Report`]), `sweep` (loads, t·q_r, γ_s),
 //!   `cycle` (the theory's path along a load cycle);
 //! - [`gfmd`]: one GFMD run on a generated or given map; [`gfmd_cycle`]: GFMD's load cycle
 //!   through tension to pull-off;
@@ -15,6 +16,8 @@
 //! - [`args`]: the library's range table for the Python side of every argument;
 //! - [`gauge`]: fitting the custom model to a reference;
 //! - [`work`]: long work off the GIL, cancelled by Ctrl-C;
+//! - [`report`]: `Report`, `evaluate`'s result, a frozen class converted from the library's
+//!   report; [`record`]: result parts read as attributes, built once;
 //! - [`errors`]: the library's typed errors as Python exceptions; [`value`]: serde values as
 //!   Python objects.
 
@@ -25,6 +28,8 @@ pub mod generate;
 pub mod gfmd;
 pub mod gfmd_cycle;
 pub mod measured;
+pub mod record;
+pub mod report;
 pub mod scene;
 pub mod surface;
 pub mod theory;
@@ -73,6 +78,11 @@ fn _sleep(py: Python<'_>, seconds: f64, progress: Option<Bound<'_, PyAny>>) -> P
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<scene::SceneCore>()?;
+    m.add_class::<record::Record>()?;
+    m.add_class::<report::Report>()?;
+    m.add_class::<report::Pr>()?;
+    m.add_class::<report::Resolution>()?;
+    m.add_class::<report::BranchReport>()?;
     m.add_function(wrap_pyfunction!(scene::scene_from_preset, m)?)?;
     m.add_function(wrap_pyfunction!(scene::scene_new, m)?)?;
     m.add_function(wrap_pyfunction!(theory::evaluate, m)?)?;

@@ -16,6 +16,7 @@
 //! --points`, log-spaced).
 
 use crate::errors;
+use crate::report::Report;
 use crate::scene::SceneCore;
 use crate::value;
 use crate::work::{self, Info};
@@ -68,8 +69,8 @@ fn options(
     .options()
 }
 
-/// `evaluate(scene, ...)`: the report of one scene at its load, as a dict with the keys of
-/// `asperity run --format json` (the preset's name under `preset`).
+/// `evaluate(scene, ...)`: the [`Report`] of one scene at its load (`to_dict()`: the keys of
+/// `asperity run --format json`, the preset's name under `preset`).
 #[pyfunction]
 #[pyo3(signature = (scene, sigma_points = 201, sigma_max = None, rtol = None, adhesion_steps = None, adhesion_points = None, adhesion_tol = None, progress = None))]
 #[allow(clippy::too_many_arguments)]
@@ -83,7 +84,7 @@ pub fn evaluate<'py>(
     adhesion_points: Option<f64>,
     adhesion_tol: Option<f64>,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyAny>> {
+) -> PyResult<Report> {
     let opts = options(
         sigma_points,
         sigma_max,
@@ -98,7 +99,7 @@ pub fn evaluate<'py>(
     opts.adhesion.follow_unloading = scene.preset.follows_unloading();
     let s = scene.scene.clone();
     let report = work::run(py, progress.as_ref(), move |_| asperity::report::point(&s, &opts))?;
-    value::ser_with_preset(py, &scene.preset.name, &report)
+    Report::new(py, &scene.preset.name, &report)
 }
 
 /// The report as a dict with `reasons`: each row's reason, and for a load row that did not

@@ -36,19 +36,22 @@ pub fn to_py<'py>(py: Python<'py>, v: &Value) -> PyResult<Bound<'py, PyAny>> {
     })
 }
 
-/// A serialisable value as a Python object (through [`serde_json::to_value`]).
-pub fn ser<'py, T: serde::Serialize>(py: Python<'py>, x: &T) -> PyResult<Bound<'py, PyAny>> {
-    let v = serde_json::to_value(x).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
-    to_py(py, &v)
+/// A serialisable value as a JSON value (the CLI's JSON of it).
+pub fn json<T: serde::Serialize>(x: &T) -> PyResult<Value> {
+    serde_json::to_value(x).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))
 }
 
-/// A serialisable object as a dict with `preset` first (as the CLI writes `run`'s JSON).
-pub fn ser_with_preset<'py, T: serde::Serialize>(py: Python<'py>, preset: &str, x: &T) -> PyResult<Bound<'py, PyAny>> {
-    let v = serde_json::to_value(x).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+/// A serialisable value as a Python object (through [`json`]).
+pub fn ser<'py, T: serde::Serialize>(py: Python<'py>, x: &T) -> PyResult<Bound<'py, PyAny>> {
+    to_py(py, &json(x)?)
+}
+
+/// An object value with `preset` first (as the CLI writes `run`'s JSON).
+pub fn with_preset(preset: &str, v: Value) -> Value {
     let mut m = serde_json::Map::new();
     m.insert("preset".into(), Value::String(preset.to_string()));
     if let Value::Object(o) = v {
         m.extend(o);
     }
-    to_py(py, &Value::Object(m))
+    Value::Object(m)
 }

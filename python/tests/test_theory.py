@@ -211,13 +211,9 @@ def test_attributes_are_built_once_and_read_only():
 
 
 def test_results_name_their_fields_types():
-    """A type checker reads the fields' types from the result classes (`r.a_r` is a float)."""
+    """A type checker reads the fields' types from the result classes (`r.a_r` is a float;
+    `Report`'s, built in Rust, from the stub: test_stubs.py)."""
     import typing
 
-    assert typing.get_type_hints(asperity.Report)["a_r"] is float
     assert typing.get_type_hints(asperity.GfmdResult)["iterations"] is int
     assert typing.get_type_hints(asperity.SweepResult)["a_r"] is np.ndarray
-    r = asperity.evaluate(asperity.Scene.preset("system-1"))
-    hints = typing.get_type_hints(asperity.Report)
-    for name in ("a_r", "mean_contact_stress", "error_estimate", "elapsed_s"):
-        assert isinstance(getattr(r, name), hints[name]), name

@@ -1,0 +1,379 @@
+//! `Report`, the result of `evaluate` (`asperity run`), as frozen Python classes converted in
+//! Rust from the library's [`PointReport`]: every field a typed getter (floats, ints, bools,
+//! strings; an unavailable optional number None), every array a read-only float64 numpy array
+//! made once, the parts [`Pr`], [`Resolution`] and each of [`BranchReport`]s classes of their
+//! own, the resolved inputs (`scene`) and the reference set's verdict (`trust`) a
+//! [`Record`]. `to_dict()` gives the object of `asperity run --format json` with the preset's
+//! name under `preset`.
+//!
+//! Units as in the library: stresses reduced by E*ḡ, gaps relative to h_rms where `_rel` and
+//! in m for `mean_gap`, energies in J/m², times in s.
+
+use crate::record::{array, record_methods, Record};
+use crate::value;
+use asperity::report::point::{BranchReport as LibBranch, PointReport};
+use numpy::PyArray1;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use serde_json::Value;
+use std::sync::Arc;
+
+/// An optional number as the CLI writes it: a non-finite one is null (None).
+fn opt(x: Option<f64>) -> Option<f64> {
+    x.filter(|v| v.is_finite())
+}
+
+/// `data[key]` of an object value (null where absent).
+fn part(data: &Value, key: &str) -> Arc<Value> {
+    Arc::new(data.get(key).cloned().unwrap_or(Value::Null))
+}
+
+/// Pr(σ*), the distribution of contact stresses: ∫ density dσ* = a_r [S-9, S-14].
+#[pyclass(module = "asperity._native", frozen)]
+pub struct Pr {
+    /// σ* (ascending; from −σ_a* with adhesion).
+    #[pyo3(get)]
+    sigma: Py<PyArray1<f64>>,
+    /// Pr(σ*).
+    #[pyo3(get)]
+    density: Py<PyArray1<f64>>,
+    data: Arc<Value>,
+}
+
+record_methods!(Pr, None, {});
+
+/// a_r(q) along the resolution q_L → q_s.
+#[pyclass(module = "asperity._native", frozen)]
+pub struct Resolution {
+    /// q (1/m).
+    #[pyo3(get)]
+    q: Py<PyArray1<f64>>,
+    /// a_r(q).
+    #[pyo3(get)]
+    a_r: Py<PyArray1<f64>>,
+    data: Arc<Value>,
+}
+
+record_methods!(Resolution, None, {});
+
+/// One branch of the adhesive solution at the load, with its mean gap (docs/physics.md §5.1).
+#[pyclass(module = "asperity._native", frozen)]
+pub struct BranchReport {
+    /// "adhesionless", "loading", "unloading" or "unstable".
+    #[pyo3(get)]
+    branch: String,
+    /// Whether a quasi-static path can follow it.
+    #[pyo3(get)]
+    stable: bool,
+    /// Its relative contact area.
+    #[pyo3(get)]
+    a_r: f64,
+    /// σ_a*(q_s), its adhesive wall.
+    #[pyo3(get)]
+    sigma_a: f64,
+    /// γ(q_L)/γ_s at the coarsest scale.
+    #[pyo3(get)]
+    gamma_coarse: f64,
+    /// Elastic energy per nominal area (J/m²).
+    #[pyo3(get)]
+    elastic_energy: f64,
+    /// Self-consistency residual |γ(q_s)/γ_s − 1|.
+    #[pyo3(get)]
+    residual: f64,
+    /// ū/h_rms (None for an unstable branch or when unavailable).
+    #[pyo3(get)]
+    mean_gap_rel: Option<f64>,
+    /// The adhesionless gap at the same load.
+    #[pyo3(get)]
+    mean_gap_reversible_rel: Option<f64>,
+    /// The bracket's lower end.
+    #[pyo3(get)]
+    mean_gap_lower_rel: Option<f64>,
+    /// The bracket's upper end.
+    #[pyo3(get)]
+    mean_gap_upper_rel: Option<f64>,
+    /// Estimated absolute error of `mean_gap_rel`.
+    #[pyo3(get)]
+    mean_gap_error: Option<f64>,
+    /// The net load its contact carries, ∫σ*Pr dσ*.
+    #[pyo3(get)]
+    contact_load: Option<f64>,
+    data: Arc<Value>,
+}
+
+record_methods!(BranchReport, None, {});
+
+impl BranchReport {
+    fn new(b: &LibBranch, data: Arc<Value>) -> BranchReport {
+        let s = &b.state;
+        BranchReport {
+            branch: s.branch.to_string(),
+            stable: s.stable,
+            a_r: s.a_r,
+            sigma_a: s.sigma_a,
+            gamma_coarse: s.gamma_coarse,
+            elastic_energy: s.elastic_energy,
+            residual: s.residual,
+            mean_gap_rel: opt(b.mean_gap_rel),
+            mean_gap_reversible_rel: opt(b.mean_gap_reversible_rel),
+            mean_gap_lower_rel: opt(b.mean_gap_lower_rel),
+            mean_gap_upper_rel: opt(b.mean_gap_upper_rel),
+            mean_gap_error: opt(b.mean_gap_error),
+            contact_load: opt(b.contact_load),
+            data,
+        }
+    }
+}
+
+/// One scene at one load (`asperity.evaluate`): the fields of `asperity run --format json`.
+///
+/// Main fields (stresses reduced by E*ḡ, gaps by h_rms where `_rel`):
+///
+/// - `a_r`: relative contact area [S-3]; `mean_contact_stress` σ̄_c*;
+///   `contact_stress_variance` ⟨δσ_c²⟩*; `pr.sigma`, `pr.density`: Pr(σ*) with
+///   ∫Pr dσ* = a_r [S-9, S-14];
+/// - `mean_gap` (m), `mean_gap_rel` with its bracket `mean_gap_lower_rel` ..
+///   `mean_gap_upper_rel` and `mean_gap_error` [S-11, S-12];
+/// - `branch`, `branches` (every branch at this load), `a_r_unloading` (the unloading
+///   branch's a_r, the name a sweep's column has; `unloading_a_r` is its older alias),
+///   `jump_in_pressure`, `pull_off_pressure` (the hysteresis window);
+/// - `error_estimate` (absolute error of a_r), `converged`;
+/// - `elapsed_s`, `elapsed_solve_s`, `elapsed_window_s`, `elapsed_gap_s` (timings, s);
+/// - `scene` (the resolved inputs), `resolution` (a_r(q)), `trust` (the GFMD reference set).
+///
+/// Frozen: every field is made once (`r.pr.sigma is r.pr.sigma`) and its arrays are
+/// read-only; `to_dict()` gives a fresh plain dict.
+#[pyclass(module = "asperity._native", frozen)]
+pub struct Report {
+    /// The preset's name ("custom" for a scene built from keywords).
+    #[pyo3(get)]
+    preset: String,
+    /// Relative contact area a_r [S-3].
+    #[pyo3(get)]
+    a_r: f64,
+    /// σ̄_c*, the mean stress in the contact.
+    #[pyo3(get)]
+    mean_contact_stress: f64,
+    /// ⟨δσ_c²⟩*, the contact stress variance (reduced by (E*ḡ)²).
+    #[pyo3(get)]
+    contact_stress_variance: f64,
+    /// Pr(σ*).
+    #[pyo3(get)]
+    pr: Py<Pr>,
+    /// Width Δ* of the stress distribution.
+    #[pyo3(get)]
+    width: f64,
+    /// Whether the result meets the requested accuracy.
+    #[pyo3(get)]
+    converged: bool,
+    /// Why `converged` is false (None when it is true).
+    #[pyo3(get)]
+    converged_note: Option<String>,
+    /// Estimated absolute error of a_r.
+    #[pyo3(get)]
+    error_estimate: f64,
+    /// Mean gap ū (m); None when unavailable.
+    #[pyo3(get)]
+    mean_gap: Option<f64>,
+    /// ū/h_rms; None when unavailable.
+    #[pyo3(get)]
+    mean_gap_rel: Option<f64>,
+    /// Lower end of ū/h_rms's bracket.
+    #[pyo3(get)]
+    mean_gap_lower_rel: Option<f64>,
+    /// Upper end of ū/h_rms's bracket.
+    #[pyo3(get)]
+    mean_gap_upper_rel: Option<f64>,
+    /// Estimated absolute error of `mean_gap_rel`.
+    #[pyo3(get)]
+    mean_gap_error: Option<f64>,
+    /// p_c*, the net load the reported branch's contact carries.
+    #[pyo3(get)]
+    contact_load: Option<f64>,
+    /// What `mean_gap_rel` is, in one line.
+    #[pyo3(get)]
+    mean_gap_about: String,
+    /// Why the mean gap is None (None when it is given).
+    #[pyo3(get)]
+    mean_gap_note: Option<String>,
+    /// Elastic energy per nominal area (J/m²) [S-11].
+    #[pyo3(get)]
+    elastic_energy: f64,
+    /// σ_a*(q_s), the adhesive wall (0 without adhesion).
+    #[pyo3(get)]
+    sigma_a: f64,
+    /// Contact area under tension.
+    #[pyo3(get)]
+    tensile_area: f64,
+    /// 1 − a_r.
+    #[pyo3(get)]
+    detached_fraction: f64,
+    /// Marches of the adhesive solver (0 without adhesion).
+    #[pyo3(get)]
+    iterations: usize,
+    /// Self-consistency residual (0 without adhesion).
+    #[pyo3(get)]
+    residual: f64,
+    /// "adhesionless", "loading" or "unloading": the reported branch.
+    #[pyo3(get)]
+    branch: String,
+    /// a_r of a distinct unloading branch (None if none).
+    #[pyo3(get)]
+    a_r_unloading: Option<f64>,
+    /// The older name of `a_r_unloading` (an alias).
+    #[pyo3(get)]
+    unloading_a_r: Option<f64>,
+    /// Every branch at this load, lowest a_r first (empty without adhesion).
+    #[pyo3(get)]
+    branches: Py<PyList>,
+    /// Inside a hysteresis window: p* of the jump into contact.
+    #[pyo3(get)]
+    jump_in_pressure: Option<f64>,
+    /// Inside a hysteresis window: p* of the pull-off.
+    #[pyo3(get)]
+    pull_off_pressure: Option<f64>,
+    /// Where the scene lies relative to the GFMD reference set.
+    #[pyo3(get)]
+    trust: Py<Record>,
+    /// γ(q)/γ_s along `resolution.q` (empty without adhesion).
+    #[pyo3(get)]
+    gamma_q: Py<PyArray1<f64>>,
+    /// σ_a*(q) along `resolution.q` (empty without adhesion).
+    #[pyo3(get)]
+    sigma_a_q: Py<PyArray1<f64>>,
+    /// Wall time of the whole computation (s).
+    #[pyo3(get)]
+    elapsed_s: f64,
+    /// Wall time of the solve (s).
+    #[pyo3(get)]
+    elapsed_solve_s: f64,
+    /// Wall time of the hysteresis window's edges (s).
+    #[pyo3(get)]
+    elapsed_window_s: f64,
+    /// Wall time of the mean gap (s).
+    #[pyo3(get)]
+    elapsed_gap_s: f64,
+    /// The resolved inputs.
+    #[pyo3(get)]
+    scene: Py<Record>,
+    /// a_r(q) along the resolution.
+    #[pyo3(get)]
+    resolution: Py<Resolution>,
+    data: Arc<Value>,
+}
+
+impl Report {
+    /// The report of `r` for the scene of preset `preset`.
+    pub fn new(py: Python<'_>, preset: &str, r: &PointReport) -> PyResult<Report> {
+        let data = Arc::new(value::with_preset(preset, value::json(r)?));
+        let branches = r
+            .branches
+            .iter()
+            .enumerate()
+            .map(|(i, b)| {
+                let d = Arc::new(data["branches"][i].clone());
+                Py::new(py, BranchReport::new(b, d))
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        let s = &r.stats;
+        let pr = Pr {
+            sigma: array(py, s.pr.sigma.clone())?,
+            density: array(py, s.pr.density.clone())?,
+            data: part(&data, "pr"),
+        };
+        let resolution = Resolution {
+            q: array(py, r.resolution.q.clone())?,
+            a_r: array(py, r.resolution.a_r.clone())?,
+            data: part(&data, "resolution"),
+        };
+        Ok(Report {
+            preset: preset.to_string(),
+            a_r: s.a_r,
+            mean_contact_stress: s.mean_contact_stress,
+            contact_stress_variance: s.contact_stress_variance,
+            pr: Py::new(py, pr)?,
+            width: r.width,
+            converged: r.converged,
+            converged_note: r.converged_note.clone(),
+            error_estimate: r.error_estimate,
+            mean_gap: opt(r.mean_gap),
+            mean_gap_rel: opt(r.mean_gap_rel),
+            mean_gap_lower_rel: opt(r.mean_gap_lower_rel),
+            mean_gap_upper_rel: opt(r.mean_gap_upper_rel),
+            mean_gap_error: opt(r.mean_gap_error),
+            contact_load: opt(r.contact_load),
+            mean_gap_about: r.mean_gap_about.clone(),
+            mean_gap_note: r.mean_gap_note.clone(),
+            elastic_energy: r.elastic_energy,
+            sigma_a: r.sigma_a,
+            tensile_area: r.tensile_area,
+            detached_fraction: r.detached_fraction,
+            iterations: r.iterations,
+            residual: r.residual,
+            branch: r.branch.to_string(),
+            a_r_unloading: opt(r.a_r_unloading),
+            unloading_a_r: opt(r.unloading_a_r),
+            branches: PyList::new(py, branches)?.unbind(),
+            jump_in_pressure: opt(r.jump_in_pressure),
+            pull_off_pressure: opt(r.pull_off_pressure),
+            trust: Py::new(py, Record::new(py, part(&data, "trust"))?)?,
+            gamma_q: array(py, r.gamma_q.clone())?,
+            sigma_a_q: array(py, r.sigma_a_q.clone())?,
+            elapsed_s: r.elapsed_s,
+            elapsed_solve_s: r.elapsed_solve_s,
+            elapsed_window_s: r.elapsed_window_s,
+            elapsed_gap_s: r.elapsed_gap_s,
+            scene: Py::new(py, Record::new(py, part(&data, "scene"))?)?,
+            resolution: Py::new(py, resolution)?,
+            data,
+        })
+    }
+}
+
+/// A number as the pairs show it: NaN where unavailable.
+fn nan(x: Option<f64>) -> f64 {
+    x.unwrap_or(f64::NAN)
+}
+
+const SHOWN: &[&str] = &[
+    "preset",
+    "a_r",
+    "mean_contact_stress",
+    "contact_stress_variance",
+    "mean_gap_rel",
+    "branch",
+    "converged",
+];
+
+record_methods!(Report, Some(SHOWN), {
+    /// (pull-off p*, jump-in p*) of the hysteresis window around the load (NaN: none).
+    #[getter]
+    fn window(&self) -> (f64, f64) {
+        (nan(self.pull_off_pressure), nan(self.jump_in_pressure))
+    }
+
+    /// ⟨δσ_c²⟩*, the contact stress variance (reduced by (E*ḡ)²): an alias of
+    /// `contact_stress_variance`, the preferred name.
+    #[getter]
+    fn variance(&self) -> f64 {
+        self.contact_stress_variance
+    }
+
+    /// Wall times in s: `elapsed_s` (all), `elapsed_solve_s`, `elapsed_window_s`,
+    /// `elapsed_gap_s`.
+    #[getter]
+    fn timings<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("elapsed_s", self.elapsed_s)?;
+        d.set_item("elapsed_solve_s", self.elapsed_solve_s)?;
+        d.set_item("elapsed_window_s", self.elapsed_window_s)?;
+        d.set_item("elapsed_gap_s", self.elapsed_gap_s)?;
+        Ok(d)
+    }
+
+    /// (lower, upper) ends of ū/h_rms's bracket (NaN where the gap is unavailable).
+    #[getter]
+    fn gap_bracket(&self) -> (f64, f64) {
+        (nan(self.mean_gap_lower_rel), nan(self.mean_gap_upper_rel))
+    }
+});

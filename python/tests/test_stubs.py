@@ -1,0 +1,185 @@
+"""The stub python/asperity/_native.pyi against the classes the extension builds: every public
+attribute the stub declares exists on a sample result and every one the result has is in the
+stub, each value has the stub's type (what mypy reads: ``r.a_r`` is a float), and each value
+is the number of ``to_dict()`` under the same key (the CLI's JSON)."""
+
+from __future__ import annotations
+
+import ast
+import inspect
+import math
+import typing
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Set, Tuple
+
+import numpy as np
+import numpy.typing as npt
+import pytest
+
+import asperity
+from asperity import _native
+
+if TYPE_CHECKING:
+    from typing_extensions import assert_type
+
+    def _mypy_reads_the_types(r: asperity.Report) -> None:
+        """Checked by mypy only (CI's `mypy python/tests`): an attribute typed Any fails."""
+        assert_type(r.a_r, float)
+        assert_type(r.mean_gap_rel, Optional[float])
+        assert_type(r.iterations, int)
+        assert_type(r.pr.sigma, npt.NDArray[np.float64])
+        assert_type(r.branches[0].a_r, float)
+        assert_type(r.window, Tuple[float, float])
+
+
+STUB = Path(asperity.__file__).with_name("_native.pyi")
+
+# the result classes built in Rust (python/src/report.rs, python/src/record.rs)
+CLASSES = ("Report", "Pr", "Resolution", "BranchReport", "Record")
+
+
+def _stub_classes() -> Dict[str, Tuple[Dict[str, str], Set[str]]]:
+    """Per class of the stub: its properties' return annotations and its public methods (its
+    stub-only bases' included)."""
+    tree = ast.parse(STUB.read_text())
+    found: Dict[str, Tuple[Dict[str, str], Set[str]]] = {}
+    for node in tree.body:
+        if not isinstance(node, ast.ClassDef):
+            continue
+        props: Dict[str, str] = {}
+        methods: Set[str] = set()
+        for base in node.bases:
+            if isinstance(base, ast.Name) and base.id in found:
+                props.update(found[base.id][0])
+                methods |= found[base.id][1]
+        for f in node.body:
+            if not isinstance(f, ast.FunctionDef) or f.name.startswith("_"):
+                continue
+            if any(isinstance(d, ast.Name) and d.id == "property" for d in f.decorator_list):
+                assert f.returns is not None, f"{node.name}.{f.name} has no type"
+                props[f.name] = ast.unparse(f.returns)
+            else:
+                methods.add(f.name)
+        found[node.name] = (props, methods)
+    return found
+
+
+def _runtime(cls: type) -> Tuple[Set[str], Set[str]]:
+    """The public attributes (getters) and methods of a class of the extension."""
+    names = [n for n in dir(cls) if not n.startswith("_")]
+    attrs = {n for n in names if inspect.isdatadescriptor(getattr(cls, n))}
+    return attrs, set(names) - attrs
+
+
+def _type(annotation: str) -> Any:
+    """An annotation of the stub as a typing object."""
+    names: Dict[str, Any] = {k: getattr(typing, k) for k in ("Any", "Dict", "List", "Optional", "Tuple")}
+    names.update({k: getattr(_native, k) for k in CLASSES})
+    names.update(FloatArray=npt.NDArray[np.float64], np=np, npt=npt)
+    return eval(annotation, names)
+
+
+def _conforms(v: Any, t: Any) -> bool:
+    """Whether `v` has type `t` (the typing forms the stub uses)."""
+    origin, args = typing.get_origin(t), typing.get_args(t)
+    if t is type(None):
+        return v is None
+    if origin is typing.Union:
+        return any(_conforms(v, a) for a in args)
+    if origin is list:
+        return isinstance(v, list) and all(_conforms(x, args[0]) for x in v)
+    if origin is tuple:
+        return isinstance(v, tuple) and len(v) == len(args) and all(_conforms(x, a) for x, a in zip(v, args))
+    if origin is dict:
+        return isinstance(v, dict) and all(_conforms(k, args[0]) and _conforms(x, args[1]) for k, x in v.items())
+    if origin is np.ndarray:
+        # a float64 array, made once and read-only
+        return isinstance(v, np.ndarray) and v.dtype == np.float64 and not v.flags.writeable
+    if t is float:
+        return isinstance(v, float)
+    if t is int:
+        return isinstance(v, int) and not isinstance(v, bool)
+    return isinstance(v, t)
+
+
+def _same(v: Any, plain: Any) -> bool:
+    """Whether an attribute is the number (or list, or object) `to_dict()` has for it."""
+    if isinstance(v, np.ndarray):
+        return isinstance(plain, list) and np.array_equal(v, [math.nan if x is None else x for x in plain], equal_nan=True)
+    if isinstance(v, list):
+        return [x.to_dict() if hasattr(x, "to_dict") else x for x in v] == plain
+    if hasattr(v, "to_dict"):
+        return bool(v.to_dict() == plain)
+    if isinstance(v, float) and plain is None:
+        return not math.isfinite(v)
+    return bool(v == plain)
+
+
+@pytest.fixture(scope="module")
+def reports() -> List[Any]:
+    # adhesive (branches, a gap bracket) and adhesionless at a load beside its neighbours
+    return [
+        asperity.evaluate(asperity.Scene.preset("system-2")),
+        asperity.evaluate(asperity.Scene.preset("system-1").replace(surface_energy_j_m2=0.0, pressure=0.02)),
+    ]
+
+
+def _samples(reports: List[Any]) -> Dict[str, List[Any]]:
+    return {
+        "Report": reports,
+        "Pr": [r.pr for r in reports],
+        "Resolution": [r.resolution for r in reports],
+        "BranchReport": [b for r in reports for b in r.branches],
+        "Record": [x for r in reports for x in (r.scene, r.trust)],
+    }
+
+
+def test_asperity_report_is_the_extensions_class():
+    assert asperity.Report is _native.Report
+    assert _native.evaluate.__name__ == "evaluate"
+
+
+@pytest.mark.parametrize("name", CLASSES)
+def test_stub_declares_every_attribute_and_method(name):
+    props, methods = _stub_classes()[name]
+    attrs, runtime_methods = _runtime(getattr(_native, name))
+    assert set(props) == attrs, f"stub only: {set(props) - attrs}; runtime only: {attrs - set(props)}"
+    assert methods == runtime_methods, f"stub only: {methods - runtime_methods}; runtime only: {runtime_methods - methods}"
+
+
+@pytest.mark.parametrize("name", CLASSES)
+def test_values_have_the_stubs_types(name, reports):
+    props, _ = _stub_classes()[name]
+    samples = _samples(reports)[name]
+    assert samples, name
+    for obj in samples:
+        assert type(obj) is getattr(_native, name)
+        for attr, annotation in props.items():
+            v = getattr(obj, attr)
+            assert _conforms(v, _type(annotation)), f"{name}.{attr} = {v!r} is not {annotation}"
+
+
+@pytest.mark.parametrize("name", CLASSES)
+def test_attributes_are_the_dicts_values(name, reports):
+    props, _ = _stub_classes()[name]
+    for obj in _samples(reports)[name]:
+        plain = obj.to_dict()
+        # every key of the CLI's JSON is an attribute (a record's attributes are its keys)
+        assert name == "Record" or set(plain) <= set(props), set(plain) - set(props)
+        for key, x in plain.items():
+            assert _same(getattr(obj, key), x), f"{name}.{key}: {getattr(obj, key)!r} != {x!r}"
+
+
+def test_results_are_frozen(reports):
+    r = reports[0]
+    for obj, attr in ((r, "a_r"), (r, "other"), (r.pr, "sigma"), (r.branches[0], "a_r"), (r.scene, "pressure")):
+        with pytest.raises(AttributeError):
+            setattr(obj, attr, 1.0)
+    assert r.scene is r.scene and r.trust.nearest is r.trust.nearest
+    assert r.to_dict() is not r.to_dict() and r.to_dict() == r.to_dict()
+    assert "a_r" in r and r["a_r"] == r.a_r and list(r) == r.keys()
+    with pytest.raises(AttributeError, match="no field 'nope'"):
+        r.scene.nope
+    with pytest.raises(KeyError):
+        r["nope"]
+    assert repr(r).startswith("Report(preset='system-2', a_r=")
