@@ -1,8 +1,10 @@
 """Result objects: the library's results with the keys of the CLI's JSON.
 
 :class:`Report` (:func:`asperity.evaluate`) is a frozen class built in Rust from the library's
-report (``asperity._native.Report``: typed fields, arrays made once, read-only). Every other
-result holds the plain dict the library produced (``to_dict()``: the keys and numbers of
+report (``asperity._native.Report``: typed fields, arrays made once, read-only);
+:class:`SweepResult` and :class:`CycleResult` wrap a frozen record built in Rust
+(``asperity._native.Record``: the same attributes, made once in Rust). Every other result (GFMD,
+PSD, gauge) holds the plain dict the library produced (``to_dict()``: the keys and numbers of
 ``asperity run|sweep|gfmd|psd --format json``, JSON-serialisable, unavailable values None) and
 reads it as attributes: a nested object becomes a result (``report.pr.sigma``), a list of
 numbers a numpy array (None becomes NaN), a list of objects a list of results. Each attribute is
@@ -18,6 +20,7 @@ from typing import Any, Callable, Dict, Iterator, List, Optional, Tuple, TypeVar
 
 import numpy as np
 
+from . import _native
 from ._native import Report
 
 _T = TypeVar("_T")
@@ -66,14 +69,6 @@ def _column(rows: List[Dict[str, Any]], name: str) -> Optional[np.ndarray]:
         return np.array(col, dtype=bool)
     if all(isinstance(x, str) for x in col):
         return np.array(col, dtype=str)
-    return np.array([math.nan if x is None else x for x in col], dtype=float)
-
-
-def _sweep_column(rows: List[Dict[str, Any]], name: str) -> np.ndarray:
-    """A sweep's column: bools as bool, anything else as float with None as NaN."""
-    col = [r[name] for r in rows]
-    if all(isinstance(x, bool) for x in col):
-        return np.array(col, dtype=bool)
     return np.array([math.nan if x is None else x for x in col], dtype=float)
 
 
@@ -127,22 +122,26 @@ class Result:
         return f"{type(self).__name__}({', '.join(shown)}, ...)"
 
 
-class SweepResult(Result):
-    """A sweep (:func:`asperity.sweep`): the object of ``asperity sweep --format json``.
+class SweepResult(_native.Record):
+    """A sweep (:func:`asperity.sweep`): the object of ``asperity sweep --format json``, a
+    frozen record built in Rust (``asperity._native.Record``).
 
     Column arrays by the row keys (``res.p``, ``res.a_r``, ``res.a_r_unloading``,
     ``res.mean_gap_rel``, ``res.mean_contact_stress``, ``res.thickness_qr``, ``res.gamma``, ...;
     NaN where a row has no number), ``res.values`` (the swept knob's values), ``res.reasons``
-    (None where a row converged, else why not), ``res.rows`` (the rows as results).
+    (None where a row converged, else why not), ``res.rows`` (the rows as records).
     """
 
-    # the fields' and main columns' types for a type checker; at run time they are read from
-    # the dict
+    __slots__ = ()
+
+    # the fields' and main columns' types for a type checker; at run time they are the
+    # record's attributes, made once in Rust
     preset: str
     over: str
-    scene: Result
-    rows: List[Result]
+    scene: _native.Record
+    rows: List[_native.Record]
     evaluations: int
+    values: np.ndarray
     p: np.ndarray
     a_r: np.ndarray
     mean_gap_rel: np.ndarray
@@ -153,36 +152,19 @@ class SweepResult(Result):
     gamma: np.ndarray
     converged: np.ndarray
 
-    def __getattr__(self, name: str) -> Any:
-        data = object.__getattribute__(self, "_data")
-        if name in data:
-            return _memo(self, name, lambda: _wrap(data[name]))
-        rows = data.get("rows", [])
-        if rows and name in rows[0]:
-            return _memo(self, name, lambda: _sweep_column(rows, name))
-        raise AttributeError(f"SweepResult has no field or column {name!r}")
-
     @property
-    def values(self) -> np.ndarray:
-        """The swept knob's values: p* (pressure), t·q_r (thickness) or γ_s in J/m² (gamma)."""
-        key = {"pressure": "p", "thickness": "thickness_qr", "gamma": "gamma"}[self._data["over"]]
-        col = [r[key] for r in self._data["rows"]]
-        return _memo(self, "values", lambda: np.array([math.inf if x is None else x for x in col], dtype=float))
-
-    @property
-    def reasons(self) -> List[Any]:
+    def reasons(self) -> List[Optional[str]]:
         """Per row: None where it converged, else the reason it has no numbers."""
-        return list(self._data.get("reasons", []))
+        return list(self["reasons"]) if "reasons" in self else []
 
     @property
     def cycle(self) -> Optional["CycleResult"]:
         """With ``cycle=True``: the theory's path along the load cycle (the CLI's
         ``sweep --cycle`` key ``cycle``); else None."""
-        c = self._data.get("cycle")
-        return None if c is None else CycleResult(c)
+        return CycleResult(self["cycle"]) if "cycle" in self else None
 
     def __len__(self) -> int:
-        return len(self._data.get("rows", []))
+        return len(self.rows)
 
 
 class _OnMap(Result):
@@ -320,9 +302,10 @@ class _Rows(Result):
         return _opt(self._data.get("jump_in_pressure"))
 
 
-class CycleResult(_Rows):
+class CycleResult(_native.Record):
     """The theory's path along a load cycle (:func:`asperity.cycle`, ``SweepResult.cycle``):
-    the object under ``cycle`` of ``asperity sweep --cycle --format json``.
+    the object under ``cycle`` of ``asperity sweep --cycle --format json``, a frozen record
+    built in Rust.
 
     Columns by row (in the order the path visits the loads: loading up, unloading back down and
     on into tension at p* = 0, −p₁, −2p₁, … to the pull-off): ``branch``, ``p``, ``a_r``,
@@ -335,31 +318,40 @@ class CycleResult(_Rows):
     hold, the coarsest scale's Griffith stress) and ``note`` (why the path ends where it does).
     """
 
-    @property
-    def on_unloading_branch(self) -> np.ndarray:
-        """Per row: whether a_r is the theory's unloading branch (else its loading/only one)."""
-        return self._col("on_unloading_branch")
+    __slots__ = ()
+
+    # the fields' and columns' types for a type checker; at run time they are the record's
+    # attributes, made once in Rust
+    rows: List[_native.Record]
+    branch: np.ndarray
+    p: np.ndarray
+    a_r: np.ndarray
+    mean_gap_rel: np.ndarray
+    mean_contact_stress: np.ndarray
+    on_unloading_branch: np.ndarray
+    unloading_branch_ends: Optional[float]
+    jump_in_pressure: Optional[float]
+    pull_off_pressure: Optional[float]
+    tension_bound: Optional[float]
+    note: str
 
     @property
-    def unloading_branch_ends(self) -> Optional[float]:
-        """p* below which the unloading branch no longer exists, where the range holds it."""
-        return _opt(self._data.get("unloading_branch_ends"))
+    def loading(self) -> np.ndarray:
+        """Per row: whether it is on the loading leg (``branch == "loading"``)."""
+        return np.asarray(self.branch == "loading", dtype=bool)
 
     @property
-    def tension_bound(self) -> Optional[float]:
-        """min(σ_a*(q_L; γ_s), γ_s/ρ): the most tension any contact branch could hold."""
-        return _opt(self._data.get("tension_bound"))
+    def pull_off_bracket(self) -> Optional[Tuple[float, float]]:
+        """(the first p* lost, the last p* held) around the pull-off; None where there is none."""
+        return _pair(self["pull_off_bracket"])
 
-    @property
-    def note(self) -> str:
-        """One line: why the path stops where it does."""
-        return str(self._data.get("note", ""))
+    def __len__(self) -> int:
+        return len(self.rows)
 
     def __repr__(self) -> str:
-        d = self._data
         return (
-            f"CycleResult(rows={len(self)}, pull_off_pressure={d.get('pull_off_pressure')!r}, "
-            f"jump_in_pressure={d.get('jump_in_pressure')!r}, ...)"
+            f"CycleResult(rows={len(self)}, pull_off_pressure={self.pull_off_pressure!r}, "
+            f"jump_in_pressure={self.jump_in_pressure!r}, ...)"
         )
 
 

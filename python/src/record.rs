@@ -14,7 +14,7 @@
 
 use crate::value;
 use numpy::PyArray1;
-use pyo3::exceptions::{PyAttributeError, PyKeyError};
+use pyo3::exceptions::{PyAttributeError, PyKeyError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
@@ -139,12 +139,39 @@ macro_rules! record_methods {
 }
 pub(crate) use record_methods;
 
+/// A column of `rows` as a read-only array: bools as bool, strings as str, numbers as float64
+/// (null as NaN); anything else as a plain list.
+fn column(py: Python<'_>, rows: &[Value], key: &str) -> PyResult<Py<PyAny>> {
+    let col: Vec<Value> = rows
+        .iter()
+        .map(|r| r.get(key).cloned().unwrap_or(Value::Null))
+        .collect();
+    if let Some(xs) = numbers(&col) {
+        return Ok(array(py, xs)?.into_any());
+    }
+    let typed = if col.iter().all(Value::is_boolean) {
+        let bools: Vec<bool> = col.iter().map(|v| v.as_bool().unwrap_or(false)).collect();
+        PyArray1::from_vec(py, bools).into_any()
+    } else if col.iter().all(Value::is_string) {
+        let kw = PyDict::new(py);
+        kw.set_item("dtype", "str")?;
+        let list = value::to_py(py, &Value::Array(col))?;
+        py.import("numpy")?.call_method("array", (list,), Some(&kw))?
+    } else {
+        return Ok(value::to_py(py, &Value::Array(col))?.unbind());
+    };
+    typed.getattr("flags")?.setattr("writeable", false)?;
+    Ok(typed.unbind())
+}
+
 /// A result part read as attributes: the keys of a library value, each converted once (module
-/// docs); `to_dict()` gives the plain dict.
-#[pyclass(module = "asperity._native", frozen)]
+/// docs), and where it has `rows` (a list of objects) each row key not among its own as a
+/// column array (`res.a_r`); `to_dict()` gives the plain dict. `Record(d)` makes one from a
+/// plain dict (or shares another's), so that a Python subclass (`SweepResult`) wraps one.
+#[pyclass(module = "asperity._native", frozen, subclass)]
 pub struct Record {
     /// The attributes by key, built once.
-    attrs: Py<PyDict>,
+    attrs: Arc<Py<PyDict>>,
     /// The value, for `to_dict()` and `r["key"]`.
     data: Arc<Value>,
 }
@@ -157,21 +184,51 @@ impl Record {
             for (k, v) in m {
                 attrs.set_item(k, attr(py, v)?)?;
             }
+            if let Some(Value::Array(rows)) = m.get("rows") {
+                if let Some(Value::Object(first)) = rows.first() {
+                    for k in first.keys().filter(|k| !m.contains_key(*k)) {
+                        attrs.set_item(k, column(py, rows, k)?)?;
+                    }
+                }
+            }
         }
         Ok(Record {
-            attrs: attrs.unbind(),
+            attrs: Arc::new(attrs.unbind()),
             data,
         })
+    }
+
+    /// Adds (or replaces) the attribute `name`, one that is not a key of the value.
+    pub fn with_attr(self, py: Python<'_>, name: &str, v: Py<PyAny>) -> PyResult<Record> {
+        self.attrs.bind(py).set_item(name, v)?;
+        Ok(self)
     }
 }
 
 record_methods!(Record, None, {
-    fn __getattr__(&self, py: Python<'_>, name: &str) -> PyResult<Py<PyAny>> {
-        match self.attrs.bind(py).get_item(name)? {
+    /// `Record(d)`: the record of a plain dict `d` (JSON types), or one sharing the record `d`.
+    #[new]
+    fn py_new(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Record> {
+        if let Ok(r) = source.cast::<Record>() {
+            let r = r.get();
+            return Ok(Record {
+                attrs: Arc::clone(&r.attrs),
+                data: Arc::clone(&r.data),
+            });
+        }
+        let text: String = py.import("json")?.call_method1("dumps", (source,))?.extract()?;
+        let data: Value = serde_json::from_str(&text).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        Record::new(py, Arc::new(data))
+    }
+
+    fn __getattr__(slf: &Bound<'_, Self>, name: &str) -> PyResult<Py<PyAny>> {
+        let me = slf.get();
+        match me.attrs.bind(slf.py()).get_item(name)? {
             Some(v) => Ok(v.unbind()),
             None => Err(PyAttributeError::new_err(format!(
-                "Record has no field '{name}' (fields: {})",
-                keys(&self.data).join(", ")
+                "{} has no field or column '{name}' (fields: {})",
+                slf.get_type().name()?,
+                keys(&me.data).join(", ")
             ))),
         }
     }
@@ -183,7 +240,8 @@ record_methods!(Record, None, {
             .getattr("__dir__")?
             .call1((slf,))?
             .extract()?;
-        let mut all: Vec<String> = own.into_iter().chain(keys(&slf.get().data)).collect();
+        let attrs: Vec<String> = slf.get().attrs.bind(slf.py()).keys().extract()?;
+        let mut all: Vec<String> = own.into_iter().chain(attrs).collect();
         all.sort();
         all.dedup();
         Ok(all)

@@ -16,6 +16,7 @@
 //! --points`, log-spaced).
 
 use crate::errors;
+use crate::record::{array, Record};
 use crate::report::Report;
 use crate::scene::SceneCore;
 use crate::value;
@@ -26,6 +27,7 @@ use asperity::report::sweep::{self, Over, SweepReport};
 use asperity::theory::engine::Options;
 use asperity::theory::sweep::SweepSpec;
 use pyo3::prelude::*;
+use std::sync::Arc;
 
 /// The engine's options of `evaluate` (the accuracy flags of `asperity run`).
 #[pyfunction]
@@ -102,9 +104,10 @@ pub fn evaluate<'py>(
     Report::new(py, &scene.preset.name, &report)
 }
 
-/// The report as a dict with `reasons`: each row's reason, and for a load row that did not
-/// converge without one of its own the sweep's note (None: converged).
-fn into_py<'py>(py: Python<'py>, report: &SweepReport) -> PyResult<Bound<'py, PyAny>> {
+/// The report as a [`Record`] with `reasons`: each row's reason, and for a load row that did
+/// not converge without one of its own the sweep's note (None: converged); and, not in
+/// `to_dict()`, `values`: the swept knob's values (∞ where a row's t·q_r is null, a half-space).
+fn into_py(py: Python<'_>, report: &SweepReport) -> PyResult<Record> {
     let reasons: Vec<Option<String>> = report
         .rows
         .iter()
@@ -118,9 +121,17 @@ fn into_py<'py>(py: Python<'py>, report: &SweepReport) -> PyResult<Bound<'py, Py
             _ => r.reason.clone(),
         })
         .collect();
-    let d = value::ser(py, report)?;
-    d.set_item("reasons", reasons)?;
-    Ok(d)
+    let mut data = value::json(report)?;
+    data["reasons"] = value::json(&reasons)?;
+    let key = match report.over {
+        Over::Pressure => "p",
+        Over::Thickness => "thickness_qr",
+        Over::Gamma => "gamma",
+    };
+    let rows = data["rows"].as_array().map(Vec::as_slice).unwrap_or_default();
+    let values: Vec<f64> = rows.iter().map(|r| r[key].as_f64().unwrap_or(f64::INFINITY)).collect();
+    let values = array(py, values)?.into_any();
+    Record::new(py, Arc::new(data))?.with_attr(py, "values", values)
 }
 
 /// A load cycle's loads in Python's words: `cycle=True` and the `np.geomspace` that gives them.
@@ -172,7 +183,7 @@ fn pressure_sweep(
 }
 
 /// `sweep(scene, values, over, progress, cycle)`: a sweep over p* (`over="pressure"`), t·q_r
-/// (`"thickness"`) or γ_s in J/m² (`"gamma"`), as a dict with the keys of
+/// (`"thickness"`) or γ_s in J/m² (`"gamma"`), as a [`Record`] with the keys of
 /// `asperity sweep --format json` and `reasons`; a load sweep with `cycle` adds the theory's
 /// path along the cycle (module docs).
 #[pyfunction]
@@ -184,7 +195,7 @@ pub fn run_sweep<'py>(
     over: &str,
     progress: Option<Bound<'py, PyAny>>,
     cycle: bool,
-) -> PyResult<Bound<'py, PyAny>> {
+) -> PyResult<Record> {
     let opts = Options::default();
     let core = scene.clone();
     if cycle && !matches!(over, "pressure") {
@@ -221,7 +232,7 @@ pub fn run_sweep<'py>(
 }
 
 /// `cycle(scene, from_, to, points)`: the theory's path along the load cycle over the loads of
-/// `asperity sweep --from --to --points` (log-spaced), as the dict under `cycle` of
+/// `asperity sweep --from --to --points` (log-spaced), as a [`Record`] of the object under `cycle` of
 /// `asperity sweep --cycle --format json` (module docs).
 #[pyfunction]
 #[pyo3(name = "cycle", signature = (scene, from_, to, points = 64, progress = None))]
@@ -232,7 +243,7 @@ pub fn run_cycle<'py>(
     to: f64,
     points: usize,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyAny>> {
+) -> PyResult<Record> {
     let spec = SweepSpec {
         from: from_,
         to,
@@ -249,5 +260,5 @@ pub fn run_cycle<'py>(
         };
         asperity::report::cycle::cycle(&core.scene, &core.preset.name, &spec, &opts, ctl)
     })?;
-    value::ser(py, &out)
+    Record::new(py, Arc::new(value::json(&out)?))
 }

@@ -106,6 +106,8 @@ def _same(v: Any, plain: Any) -> bool:
     """Whether an attribute is the number (or list, or object) `to_dict()` has for it."""
     if isinstance(v, np.ndarray):
         return isinstance(plain, list) and np.array_equal(v, [math.nan if x is None else x for x in plain], equal_nan=True)
+    if isinstance(v, tuple):
+        return list(v) == plain
     if isinstance(v, list):
         return [x.to_dict() if hasattr(x, "to_dict") else x for x in v] == plain
     if hasattr(v, "to_dict"):
@@ -178,8 +180,49 @@ def test_results_are_frozen(reports):
     assert r.scene is r.scene and r.trust.nearest is r.trust.nearest
     assert r.to_dict() is not r.to_dict() and r.to_dict() == r.to_dict()
     assert "a_r" in r and r["a_r"] == r.a_r and list(r) == r.keys()
-    with pytest.raises(AttributeError, match="no field 'nope'"):
+    with pytest.raises(AttributeError, match="has no field or column 'nope'"):
         r.scene.nope
     with pytest.raises(KeyError):
         r["nope"]
     assert repr(r).startswith("Report(preset='system-2', a_r=")
+
+
+@pytest.fixture(scope="module")
+def load_sweep() -> Any:
+    # an adhesive load sweep with the theory's cycle: columns of floats, bools and strings
+    return asperity.sweep(asperity.Scene.preset("system-2"), np.geomspace(1e-3, 1e-2, 3), cycle=True)
+
+
+def _records(sw: Any) -> Dict[str, Any]:
+    return {"SweepResult": sw, "CycleResult": sw.cycle}
+
+
+@pytest.mark.parametrize("name", ("SweepResult", "CycleResult"))
+def test_records_have_their_annotated_types(name, load_sweep):
+    """The Python classes over a Rust record (`SweepResult`, `CycleResult`): each annotated
+    field has its type, every key of `to_dict()` and every row key is an attribute with the
+    dict's numbers, every array is read-only."""
+    obj = _records(load_sweep)[name]
+    cls = getattr(asperity, name)
+    assert isinstance(obj, _native.Record) and type(obj) is cls
+    hints = typing.get_type_hints(cls)
+    for attr, t in hints.items():
+        assert _conforms(getattr(obj, attr), t), f"{name}.{attr} = {getattr(obj, attr)!r} is not {t}"
+    plain = obj.to_dict()
+    for key, x in plain.items():
+        assert _same(getattr(obj, key), x), f"{name}.{key}"
+    for key in plain["rows"][0]:
+        col = getattr(obj, key)
+        assert isinstance(col, np.ndarray) and not col.flags.writeable and len(col) == len(obj), key
+        want = [r[key] for r in plain["rows"]]
+        assert _same(col, want) if col.dtype == np.float64 else col.tolist() == want, key
+    with pytest.raises(AttributeError):
+        obj.a_r = None
+    assert obj.a_r is obj.a_r
+
+
+def test_a_record_from_a_plain_dict_is_the_same(load_sweep):
+    d = load_sweep.cycle.to_dict()
+    again = asperity.CycleResult(d)
+    assert again.to_dict() == d and np.array_equal(again.a_r, load_sweep.cycle.a_r)
+    assert asperity.SweepResult(load_sweep).values is load_sweep.values
