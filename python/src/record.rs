@@ -100,8 +100,60 @@ pub fn repr(obj: &Bound<'_, PyAny>, data: &Value, shown: Option<&[&str]>) -> PyR
     Ok(format!("{name}({})", parts.join(", ")))
 }
 
-/// The dict-like methods of a result class with a field `data: Arc<Value>` (module docs), and
-/// the class's own methods after them (one `#[pymethods]` block per class).
+/// A plain Python value (JSON types: None, bools, ints, floats, strings, lists, tuples and
+/// dicts with string keys) as a JSON value, every float exactly; a non-finite float as null,
+/// as `to_dict()` has it.
+fn plain(source: &Bound<'_, PyAny>) -> PyResult<Value> {
+    use pyo3::types::{PyBool, PyFloat, PyInt, PyString, PyTuple};
+    Ok(if source.is_none() {
+        Value::Null
+    } else if let Ok(b) = source.cast::<PyBool>() {
+        Value::Bool(b.is_true())
+    } else if source.is_instance_of::<PyInt>() {
+        match source.extract::<i64>() {
+            Ok(i) => Value::from(i),
+            Err(_) => Value::from(source.extract::<u64>()?),
+        }
+    } else if let Ok(f) = source.cast::<PyFloat>() {
+        serde_json::Number::from_f64(f.value()).map_or(Value::Null, Value::Number)
+    } else if let Ok(t) = source.cast::<PyString>() {
+        Value::String(t.extract::<String>()?)
+    } else if let Ok(d) = source.cast::<PyDict>() {
+        let mut m = serde_json::Map::new();
+        for (k, v) in d.iter() {
+            m.insert(k.extract::<String>()?, plain(&v)?);
+        }
+        Value::Object(m)
+    } else if source.is_instance_of::<PyList>() || source.is_instance_of::<PyTuple>() {
+        Value::Array(source.try_iter()?.map(|x| plain(&x?)).collect::<PyResult<_>>()?)
+    } else {
+        return Err(PyValueError::new_err(format!(
+            "not a plain value (None, bool, int, float, str, list or dict): {}",
+            source.get_type().name()?
+        )));
+    })
+}
+
+/// A result class made from its value (the CLI's JSON object).
+pub trait FromValue: Sized {
+    /// The result of `data`.
+    ///
+    /// # Errors
+    /// A Python error while its arrays or parts are made.
+    fn from_value(py: Python<'_>, data: Arc<Value>) -> PyResult<Self>;
+
+    /// The result of a plain dict (JSON types, as `to_dict()` gives them).
+    ///
+    /// # Errors
+    /// `ValueError` for anything JSON cannot hold.
+    fn from_source(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Self> {
+        Self::from_value(py, Arc::new(plain(source)?))
+    }
+}
+
+/// The dict-like methods of a result class with a field `data: Arc<Value>` (module docs),
+/// `Class(d)` from a plain dict ([`FromValue`]), pickling through it, and the class's own
+/// methods after them (one `#[pymethods]` block per class).
 macro_rules! record_methods {
     ($ty:ident, $shown:expr, { $($extra:tt)* }) => {
         #[pymethods]
@@ -131,6 +183,19 @@ macro_rules! record_methods {
 
             fn __repr__(slf: &Bound<'_, Self>) -> PyResult<String> {
                 $crate::record::repr(slf.as_any(), &slf.get().data, $shown)
+            }
+
+            /// `Class(d)`: the result of a plain dict `d` with the keys of `to_dict()` (how a
+            /// pickled result returns).
+            #[new]
+            fn py_new(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Self> {
+                <Self as $crate::record::FromValue>::from_source(py, source)
+            }
+
+            fn __reduce__<'py>(
+                slf: &Bound<'py, Self>,
+            ) -> PyResult<(Bound<'py, pyo3::types::PyType>, (Bound<'py, PyAny>,))> {
+                Ok((slf.get_type(), ($crate::value::to_py(slf.py(), &slf.get().data)?,)))
             }
 
             $($extra)*
@@ -164,9 +229,22 @@ fn column(py: Python<'_>, rows: &[Value], key: &str) -> PyResult<Py<PyAny>> {
     Ok(typed.unbind())
 }
 
+/// A sweep's values (its `over`: "pressure", "thickness" or "gamma"): the rows' p*, t·q_r (∞
+/// where null: a half-space) or γ_s; None for anything that is not a sweep.
+fn swept(over: Option<&Value>, rows: &[Value]) -> Option<Vec<f64>> {
+    let key = match over?.as_str()? {
+        "pressure" => "p",
+        "thickness" => "thickness_qr",
+        "gamma" => "gamma",
+        _ => return None,
+    };
+    Some(rows.iter().map(|r| r[key].as_f64().unwrap_or(f64::INFINITY)).collect())
+}
+
 /// A result part read as attributes: the keys of a library value, each converted once (module
 /// docs), and where it has `rows` (a list of objects) each row key not among its own as a
-/// column array (`res.a_r`); `to_dict()` gives the plain dict. `Record(d)` makes one from a
+/// column array (`res.a_r`), for a sweep also `values` (the swept knob's); `to_dict()` gives
+/// the plain dict. `Record(d)` makes one from a
 /// plain dict (or shares another's), so that a Python subclass (`SweepResult`) wraps one.
 #[pyclass(module = "asperity._native", frozen, subclass)]
 pub struct Record {
@@ -190,6 +268,9 @@ impl Record {
                         attrs.set_item(k, column(py, rows, k)?)?;
                     }
                 }
+                if let Some(values) = swept(m.get("over"), rows) {
+                    attrs.set_item("values", array(py, values)?)?;
+                }
             }
         }
         Ok(Record {
@@ -197,18 +278,16 @@ impl Record {
             data,
         })
     }
-
-    /// Adds (or replaces) the attribute `name`, one that is not a key of the value.
-    pub fn with_attr(self, py: Python<'_>, name: &str, v: Py<PyAny>) -> PyResult<Record> {
-        self.attrs.bind(py).set_item(name, v)?;
-        Ok(self)
-    }
 }
 
-record_methods!(Record, None, {
-    /// `Record(d)`: the record of a plain dict `d` (JSON types), or one sharing the record `d`.
-    #[new]
-    fn py_new(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Record> {
+impl FromValue for Record {
+    fn from_value(py: Python<'_>, data: Arc<Value>) -> PyResult<Record> {
+        Record::new(py, data)
+    }
+
+    /// A record sharing the record `source` (how a Python subclass wraps one), else the
+    /// record of a plain dict.
+    fn from_source(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Record> {
         if let Ok(r) = source.cast::<Record>() {
             let r = r.get();
             return Ok(Record {
@@ -216,11 +295,11 @@ record_methods!(Record, None, {
                 data: Arc::clone(&r.data),
             });
         }
-        let text: String = py.import("json")?.call_method1("dumps", (source,))?.extract()?;
-        let data: Value = serde_json::from_str(&text).map_err(|e| PyValueError::new_err(e.to_string()))?;
-        Record::new(py, Arc::new(data))
+        Record::new(py, Arc::new(plain(source)?))
     }
+}
 
+record_methods!(Record, None, {
     fn __getattr__(slf: &Bound<'_, Self>, name: &str) -> PyResult<Py<PyAny>> {
         let me = slf.get();
         match me.attrs.bind(slf.py()).get_item(name)? {

@@ -1,26 +1,39 @@
 //! `Report`, the result of `evaluate` (`asperity run`), as frozen Python classes converted in
-//! Rust from the library's [`PointReport`]: every field a typed getter (floats, ints, bools,
-//! strings; an unavailable optional number None), every array a read-only float64 numpy array
-//! made once, the parts [`Pr`], [`Resolution`] and each of [`BranchReport`]s classes of their
-//! own, the resolved inputs (`scene`) and the reference set's verdict (`trust`) a
-//! [`Record`]. `to_dict()` gives the object of `asperity run --format json` with the preset's
-//! name under `preset`.
+//! Rust from the library's [`PointReport`] (read from its serde value, the CLI's JSON object, so
+//! that every attribute is the number `to_dict()` holds): every field a typed getter (floats,
+//! ints, bools, strings; an unavailable optional number None, a number JSON cannot hold NaN),
+//! every array a read-only float64 numpy array made once, the parts [`Pr`], [`Resolution`] and
+//! each of [`BranchReport`]s classes of their own, the resolved inputs (`scene`) and the
+//! reference set's verdict (`trust`) a [`Record`]. `to_dict()` gives the object of
+//! `asperity run --format json` with the preset's name under `preset`; `Report(d)` makes the
+//! report of such a dict again (how a pickled report returns).
 //!
 //! Units as in the library: stresses reduced by E*ḡ, gaps relative to h_rms where `_rel` and
 //! in m for `mean_gap`, energies in J/m², times in s.
 
-use crate::record::{array, record_methods, Record};
+use crate::record::{array, record_methods, FromValue, Record};
 use crate::value;
-use asperity::report::point::{BranchReport as LibBranch, PointReport};
+use asperity::report::point::PointReport;
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
 use std::sync::Arc;
 
-/// An optional number as the CLI writes it: a non-finite one is null (None).
-fn opt(x: Option<f64>) -> Option<f64> {
-    x.filter(|v| v.is_finite())
+/// The number `d[k]` (NaN where null: a non-finite number, which JSON writes as null).
+fn num(d: &Value, k: &str) -> f64 {
+    d[k].as_f64().unwrap_or(f64::NAN)
+}
+
+/// The string `d[k]` (empty where absent).
+fn text(d: &Value, k: &str) -> String {
+    d[k].as_str().unwrap_or_default().to_string()
+}
+
+/// The numbers of the list `d[k]` as a read-only array (null as NaN).
+fn floats(py: Python<'_>, d: &Value, k: &str) -> PyResult<Py<PyArray1<f64>>> {
+    let items = d[k].as_array().map(Vec::as_slice).unwrap_or_default();
+    array(py, items.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect())
 }
 
 /// `data[key]` of an object value (null where absent).
@@ -42,6 +55,16 @@ pub struct Pr {
 
 record_methods!(Pr, None, {});
 
+impl FromValue for Pr {
+    fn from_value(py: Python<'_>, data: Arc<Value>) -> PyResult<Pr> {
+        Ok(Pr {
+            sigma: floats(py, &data, "sigma")?,
+            density: floats(py, &data, "density")?,
+            data,
+        })
+    }
+}
+
 /// a_r(q) along the resolution q_L → q_s.
 #[pyclass(module = "asperity._native", frozen)]
 pub struct Resolution {
@@ -55,6 +78,16 @@ pub struct Resolution {
 }
 
 record_methods!(Resolution, None, {});
+
+impl FromValue for Resolution {
+    fn from_value(py: Python<'_>, data: Arc<Value>) -> PyResult<Resolution> {
+        Ok(Resolution {
+            q: floats(py, &data, "q")?,
+            a_r: floats(py, &data, "a_r")?,
+            data,
+        })
+    }
+}
 
 /// One branch of the adhesive solution at the load, with its mean gap (docs/physics.md §5.1).
 #[pyclass(module = "asperity._native", frozen)]
@@ -103,25 +136,25 @@ pub struct BranchReport {
 
 record_methods!(BranchReport, None, {});
 
-impl BranchReport {
-    fn new(b: &LibBranch, data: Arc<Value>) -> BranchReport {
-        let s = &b.state;
-        BranchReport {
-            branch: s.branch.to_string(),
-            stable: s.stable,
-            a_r: s.a_r,
-            sigma_a: s.sigma_a,
-            gamma_coarse: s.gamma_coarse,
-            elastic_energy: s.elastic_energy,
-            residual: s.residual,
-            mean_gap_rel: opt(b.mean_gap_rel),
-            mean_gap_reversible_rel: opt(b.mean_gap_reversible_rel),
-            mean_gap_lower_rel: opt(b.mean_gap_lower_rel),
-            mean_gap_upper_rel: opt(b.mean_gap_upper_rel),
-            mean_gap_error: opt(b.mean_gap_error),
-            contact_load: opt(b.contact_load),
+impl FromValue for BranchReport {
+    fn from_value(_py: Python<'_>, data: Arc<Value>) -> PyResult<BranchReport> {
+        let d = &*data;
+        Ok(BranchReport {
+            branch: text(d, "branch"),
+            stable: d["stable"].as_bool().unwrap_or(false),
+            a_r: num(d, "a_r"),
+            sigma_a: num(d, "sigma_a"),
+            gamma_coarse: num(d, "gamma_coarse"),
+            elastic_energy: num(d, "elastic_energy"),
+            residual: num(d, "residual"),
+            mean_gap_rel: d["mean_gap_rel"].as_f64(),
+            mean_gap_reversible_rel: d["mean_gap_reversible_rel"].as_f64(),
+            mean_gap_lower_rel: d["mean_gap_lower_rel"].as_f64(),
+            mean_gap_upper_rel: d["mean_gap_upper_rel"].as_f64(),
+            mean_gap_error: d["mean_gap_error"].as_f64(),
+            contact_load: d["contact_load"].as_f64(),
             data,
-        }
+        })
     }
 }
 
@@ -263,68 +296,64 @@ pub struct Report {
 }
 
 impl Report {
-    /// The report of `r` for the scene of preset `preset`.
+    /// The report of `r` for the scene of preset `preset`, read from its serde value (the
+    /// CLI's JSON), so that every attribute is the number `to_dict()` holds.
     pub fn new(py: Python<'_>, preset: &str, r: &PointReport) -> PyResult<Report> {
-        let data = Arc::new(value::with_preset(preset, value::json(r)?));
-        let branches = r
-            .branches
+        Report::from_value(py, Arc::new(value::with_preset(preset, value::json(r)?)))
+    }
+}
+
+impl FromValue for Report {
+    /// The report of `run`'s JSON object (`to_dict()`: also how a pickled report returns).
+    fn from_value(py: Python<'_>, data: Arc<Value>) -> PyResult<Report> {
+        let d = &*data;
+        let branches = d["branches"]
+            .as_array()
+            .map(Vec::as_slice)
+            .unwrap_or_default()
             .iter()
-            .enumerate()
-            .map(|(i, b)| {
-                let d = Arc::new(data["branches"][i].clone());
-                Py::new(py, BranchReport::new(b, d))
-            })
+            .map(|b| Py::new(py, BranchReport::from_value(py, Arc::new(b.clone()))?))
             .collect::<PyResult<Vec<_>>>()?;
-        let s = &r.stats;
-        let pr = Pr {
-            sigma: array(py, s.pr.sigma.clone())?,
-            density: array(py, s.pr.density.clone())?,
-            data: part(&data, "pr"),
-        };
-        let resolution = Resolution {
-            q: array(py, r.resolution.q.clone())?,
-            a_r: array(py, r.resolution.a_r.clone())?,
-            data: part(&data, "resolution"),
-        };
+        let o = |k: &str| d[k].as_f64();
         Ok(Report {
-            preset: preset.to_string(),
-            a_r: s.a_r,
-            mean_contact_stress: s.mean_contact_stress,
-            contact_stress_variance: s.contact_stress_variance,
-            pr: Py::new(py, pr)?,
-            width: r.width,
-            converged: r.converged,
-            converged_note: r.converged_note.clone(),
-            error_estimate: r.error_estimate,
-            mean_gap: opt(r.mean_gap),
-            mean_gap_rel: opt(r.mean_gap_rel),
-            mean_gap_lower_rel: opt(r.mean_gap_lower_rel),
-            mean_gap_upper_rel: opt(r.mean_gap_upper_rel),
-            mean_gap_error: opt(r.mean_gap_error),
-            contact_load: opt(r.contact_load),
-            mean_gap_about: r.mean_gap_about.clone(),
-            mean_gap_note: r.mean_gap_note.clone(),
-            elastic_energy: r.elastic_energy,
-            sigma_a: r.sigma_a,
-            tensile_area: r.tensile_area,
-            detached_fraction: r.detached_fraction,
-            iterations: r.iterations,
-            residual: r.residual,
-            branch: r.branch.to_string(),
-            a_r_unloading: opt(r.a_r_unloading),
-            unloading_a_r: opt(r.unloading_a_r),
+            preset: text(d, "preset"),
+            a_r: num(d, "a_r"),
+            mean_contact_stress: num(d, "mean_contact_stress"),
+            contact_stress_variance: num(d, "contact_stress_variance"),
+            pr: Py::new(py, Pr::from_value(py, part(d, "pr"))?)?,
+            width: num(d, "width"),
+            converged: d["converged"].as_bool().unwrap_or(false),
+            converged_note: d["converged_note"].as_str().map(str::to_string),
+            error_estimate: num(d, "error_estimate"),
+            mean_gap: o("mean_gap"),
+            mean_gap_rel: o("mean_gap_rel"),
+            mean_gap_lower_rel: o("mean_gap_lower_rel"),
+            mean_gap_upper_rel: o("mean_gap_upper_rel"),
+            mean_gap_error: o("mean_gap_error"),
+            contact_load: o("contact_load"),
+            mean_gap_about: text(d, "mean_gap_about"),
+            mean_gap_note: d["mean_gap_note"].as_str().map(str::to_string),
+            elastic_energy: num(d, "elastic_energy"),
+            sigma_a: num(d, "sigma_a"),
+            tensile_area: num(d, "tensile_area"),
+            detached_fraction: num(d, "detached_fraction"),
+            iterations: d["iterations"].as_u64().unwrap_or(0) as usize,
+            residual: num(d, "residual"),
+            branch: text(d, "branch"),
+            a_r_unloading: o("a_r_unloading"),
+            unloading_a_r: o("unloading_a_r"),
             branches: PyList::new(py, branches)?.unbind(),
-            jump_in_pressure: opt(r.jump_in_pressure),
-            pull_off_pressure: opt(r.pull_off_pressure),
-            trust: Py::new(py, Record::new(py, part(&data, "trust"))?)?,
-            gamma_q: array(py, r.gamma_q.clone())?,
-            sigma_a_q: array(py, r.sigma_a_q.clone())?,
-            elapsed_s: r.elapsed_s,
-            elapsed_solve_s: r.elapsed_solve_s,
-            elapsed_window_s: r.elapsed_window_s,
-            elapsed_gap_s: r.elapsed_gap_s,
-            scene: Py::new(py, Record::new(py, part(&data, "scene"))?)?,
-            resolution: Py::new(py, resolution)?,
+            jump_in_pressure: o("jump_in_pressure"),
+            pull_off_pressure: o("pull_off_pressure"),
+            trust: Py::new(py, Record::new(py, part(d, "trust"))?)?,
+            gamma_q: floats(py, d, "gamma_q")?,
+            sigma_a_q: floats(py, d, "sigma_a_q")?,
+            elapsed_s: num(d, "elapsed_s"),
+            elapsed_solve_s: num(d, "elapsed_solve_s"),
+            elapsed_window_s: num(d, "elapsed_window_s"),
+            elapsed_gap_s: num(d, "elapsed_gap_s"),
+            scene: Py::new(py, Record::new(py, part(d, "scene"))?)?,
+            resolution: Py::new(py, Resolution::from_value(py, part(d, "resolution"))?)?,
             data,
         })
     }

@@ -16,7 +16,7 @@
 //! --points`, log-spaced).
 
 use crate::errors;
-use crate::record::{array, Record};
+use crate::record::Record;
 use crate::report::Report;
 use crate::scene::SceneCore;
 use crate::value;
@@ -105,8 +105,7 @@ pub fn evaluate<'py>(
 }
 
 /// The report as a [`Record`] with `reasons`: each row's reason, and for a load row that did
-/// not converge without one of its own the sweep's note (None: converged); and, not in
-/// `to_dict()`, `values`: the swept knob's values (∞ where a row's t·q_r is null, a half-space).
+/// not converge without one of its own the sweep's note (None: converged).
 fn into_py(py: Python<'_>, report: &SweepReport) -> PyResult<Record> {
     let reasons: Vec<Option<String>> = report
         .rows
@@ -123,15 +122,7 @@ fn into_py(py: Python<'_>, report: &SweepReport) -> PyResult<Record> {
         .collect();
     let mut data = value::json(report)?;
     data["reasons"] = value::json(&reasons)?;
-    let key = match report.over {
-        Over::Pressure => "p",
-        Over::Thickness => "thickness_qr",
-        Over::Gamma => "gamma",
-    };
-    let rows = data["rows"].as_array().map(Vec::as_slice).unwrap_or_default();
-    let values: Vec<f64> = rows.iter().map(|r| r[key].as_f64().unwrap_or(f64::INFINITY)).collect();
-    let values = array(py, values)?.into_any();
-    Record::new(py, Arc::new(data))?.with_attr(py, "values", values)
+    Record::new(py, Arc::new(data))
 }
 
 /// A load cycle's loads in Python's words: `cycle=True` and the `np.geomspace` that gives them.

@@ -226,3 +226,18 @@ def test_a_record_from_a_plain_dict_is_the_same(load_sweep):
     again = asperity.CycleResult(d)
     assert again.to_dict() == d and np.array_equal(again.a_r, load_sweep.cycle.a_r)
     assert asperity.SweepResult(load_sweep).values is load_sweep.values
+
+
+def test_results_pickle_and_rebuild_from_their_dicts(reports, load_sweep):
+    """Every result class is made again from its `to_dict()` (`Report(d)`), and so pickles
+    (a process pool returns results through pickle)."""
+    import pickle
+
+    r = reports[0]
+    for obj in (r, r.pr, r.resolution, r.branches[0], r.scene, load_sweep, load_sweep.cycle):
+        again = pickle.loads(pickle.dumps(obj))
+        assert type(again) is type(obj) and again.to_dict() == obj.to_dict()
+        assert type(obj)(obj.to_dict()).to_dict() == obj.to_dict()
+    again = pickle.loads(pickle.dumps(r))
+    assert again.a_r == r.a_r and np.array_equal(again.pr.sigma, r.pr.sigma) and again.branches[0].a_r == r.branches[0].a_r
+    assert np.array_equal(pickle.loads(pickle.dumps(load_sweep)).values, load_sweep.values)
