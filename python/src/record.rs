@@ -246,7 +246,7 @@ fn swept(over: Option<&Value>, rows: &[Value]) -> Option<Vec<f64>> {
 /// column array (`res.a_r`), for a sweep also `values` (the swept knob's); `to_dict()` gives
 /// the plain dict. `Record(d)` makes one from a
 /// plain dict (or shares another's), so that a Python subclass (`SweepResult`) wraps one.
-#[pyclass(module = "asperity._native", frozen, subclass)]
+#[pyclass(module = "asperity._native", frozen, subclass, dict)]
 pub struct Record {
     /// The attributes by key, built once.
     attrs: Arc<Py<PyDict>>,
@@ -300,9 +300,17 @@ impl FromValue for Record {
 }
 
 record_methods!(Record, None, {
+    /// An attribute that Python's own lookup did not find: on the first such reading the
+    /// record's attributes move into the instance's `__dict__`, where the lookup finds them
+    /// from then on at the speed of a plain attribute (a property of a subclass still wins).
     fn __getattr__(slf: &Bound<'_, Self>, name: &str) -> PyResult<Py<PyAny>> {
         let me = slf.get();
-        match me.attrs.bind(slf.py()).get_item(name)? {
+        let attrs = me.attrs.bind(slf.py());
+        let own = slf.getattr("__dict__")?;
+        if own.len()? == 0 {
+            own.call_method1("update", (attrs,))?;
+        }
+        match attrs.get_item(name)? {
             Some(v) => Ok(v.unbind()),
             None => Err(PyAttributeError::new_err(format!(
                 "{} has no field or column '{name}' (fields: {})",
@@ -310,6 +318,21 @@ record_methods!(Record, None, {
                 keys(&me.data).join(", ")
             ))),
         }
+    }
+
+    /// Frozen: no attribute is set or deleted.
+    fn __setattr__(slf: &Bound<'_, Self>, name: &str, _value: &Bound<'_, PyAny>) -> PyResult<()> {
+        Err(PyAttributeError::new_err(format!(
+            "{} is frozen: '{name}' cannot be set",
+            slf.get_type().name()?
+        )))
+    }
+
+    fn __delattr__(slf: &Bound<'_, Self>, name: &str) -> PyResult<()> {
+        Err(PyAttributeError::new_err(format!(
+            "{} is frozen: '{name}' cannot be deleted",
+            slf.get_type().name()?
+        )))
     }
 
     fn __dir__(slf: &Bound<'_, Self>) -> PyResult<Vec<String>> {
