@@ -15,6 +15,8 @@
 #   more    load cycles of the remaining thicknesses (1, 0.5, 0.1)
 #   large   the half-space's loading sweeps on L/lambda_r = 16 (2048²) and a second seed at 8
 #           (not in the default phases)
+#   seeds16 a second 2048² seed of the adhesive half-space, for a standard error at
+#           L/lambda_r = 16 (not in the default phases)
 # Runs are resumable (a case whose JSON exists is skipped); JOBS (default 1) run in parallel,
 # each on RAYON_NUM_THREADS (default 1) threads. Each run's CPU seconds (user + system, as
 # counted by the kernel) go to RUNS/cpu.log.
@@ -56,6 +58,8 @@ for phase in $PHASES; do
       # the half-space's small-load a_r has not converged at L/lambda_r = 8: 2048² maps and a
       # second 1024² seed
       for f in 1 0; do cases+=("sweep 16 inf $f 1" "sweep 8 inf $f 2"); done ;;
+    seeds16)
+      cases+=("sweep 16 inf 1 2") ;;
     more)
       for seed in 1 2 3; do
         for t in 1 0.5 0.1; do

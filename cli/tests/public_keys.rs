@@ -853,3 +853,91 @@ fn sweep_cycle_keys_and_columns() {
     assert_eq!(header, asperity_cli::cli::sweep::CYCLE_CSV_HEADER);
     assert_eq!(text.lines().filter(|l| !l.starts_with('#')).count(), 1 + 5);
 }
+
+/// The pull-off read-out's keys: `run --pull-off` adds `pull_off`; `sweep --cycle` carries it
+/// beside its cycle (and in its CSV's `#` lines).
+#[test]
+fn pull_off_read_out_keys() {
+    const PULL_OFF: &[&str] = &[
+        "pull_off_pressure",
+        "pull_off_bracket",
+        "tension_bound",
+        "bam_pull_off_pressure",
+        "gap_dmt_pull_off_pressure",
+        "gfmd",
+        "trust",
+        "trust.known",
+        "trust.measured_model",
+        "trust.cases",
+        "trust.theory_ratio",
+        "trust.bam_ratio",
+        "trust.gap_dmt_ratio",
+        "trust.bracketed",
+        "trust.summary",
+        "notes",
+    ];
+    let run = json(&["run", "--preset", "system-2", "--thickness", "0.3", "--pull-off"]);
+    assert_has(&run["pull_off"], PULL_OFF, "run --pull-off");
+    assert_has(
+        &run["pull_off"]["trust"]["cases"][0],
+        &[
+            "thickness_qr",
+            "gamma_factor",
+            "gamma_glo",
+            "gfmd",
+            "gfmd_err",
+            "theory_ratio",
+            "bam_ratio",
+            "gap_dmt_ratio",
+            "distance",
+        ],
+        "run --pull-off case",
+    );
+    assert!(json(&["run", "--preset", "system-2"]).get("pull_off").is_none());
+    let sweep = json(&[
+        "sweep",
+        "--preset",
+        "system-2",
+        "--thickness",
+        "0.3",
+        "--cycle",
+        "--from",
+        "1e-3",
+        "--to",
+        "1e-2",
+        "--points",
+        "2",
+        "--format",
+        "json",
+    ]);
+    assert_has(&sweep["pull_off"], PULL_OFF, "sweep --cycle");
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args([
+            "sweep",
+            "--preset",
+            "system-2",
+            "--thickness",
+            "0.3",
+            "--cycle",
+            "--from",
+            "1e-3",
+            "--to",
+            "1e-2",
+            "--points",
+            "2",
+            "--format",
+            "csv",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let csv = String::from_utf8_lossy(&out.stdout);
+    for line in [
+        "# bam_pull_off_pressure: -",
+        "# gap_dmt_pull_off_pressure: -",
+        "# gfmd_pull_off_pressure: -",
+        "# pull_off_trust: ",
+    ] {
+        assert!(csv.contains(line), "{line} in\n{csv}");
+    }
+}

@@ -17,6 +17,8 @@
 //!   seeds) and the rows of its sweeps and cycles, everything `asperity gfmd` prints.
 //! - [`mod@psd`]: a height map's PSD with its moments and self-affine fit, everything
 //!   `asperity psd` prints.
+//! - [`mod@pull_off`]: the theory's pull-off, the DMT routes', GFMD's nearest and how far
+//!   each was measured from GFMD: what `asperity run --pull-off` and `sweep --cycle` add.
 //! - [`mod@names`]: the public names kept as aliases of a preferred one.
 
 pub mod cycle;
@@ -25,6 +27,7 @@ pub mod gfmd;
 pub mod names;
 pub mod point;
 pub mod psd;
+pub mod pull_off;
 pub mod sweep;
 
 pub use point::{point, BranchReport, PointReport, ResolutionTable};

@@ -107,6 +107,10 @@ pub struct PointReport {
     /// Where the scene lies relative to asperity's GFMD reference set and how far the theory
     /// was measured from GFMD at the nearest stored points ([`crate::fit::trust`]).
     pub trust: crate::fit::trust::Trust,
+    /// The pull-off read-out where asked for ([`point_with_pull_off`]; absent otherwise): the
+    /// theory's pull-off in tension, the DMT routes', GFMD's nearest and their trust.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pull_off: Option<super::pull_off::PullOffReport>,
     /// γ(q)/γ_s along `resolution.q` (empty without adhesion).
     pub gamma_q: Vec<f64>,
     /// σ_a*(q) along `resolution.q` (empty without adhesion).
@@ -311,6 +315,7 @@ fn assemble(
         jump_in_pressure: window.and_then(|w| w.jump_in_pressure),
         pull_off_pressure: window.and_then(|w| w.pull_off_pressure),
         trust: crate::fit::trust::assess(scene),
+        pull_off: None,
         gamma_q: ev.gamma_q.clone(),
         sigma_a_q: ev.sigma_a_q.clone(),
         elapsed_s,
@@ -323,6 +328,17 @@ fn assemble(
             a_r: ev.resolution.iter().map(|r| r.a_r).collect(),
         },
     }
+}
+
+/// [`point()`] with the pull-off read-out ([`super::pull_off::pull_off`]) in `pull_off`: the
+/// theory's path into tension and the two routes, 0.1–3 s more on system II.
+///
+/// # Errors
+/// As [`point()`] and [`super::pull_off::pull_off`].
+pub fn point_with_pull_off(scene: &Scene, opts: &Options) -> Result<PointReport> {
+    let mut r = point(scene, opts)?;
+    r.pull_off = Some(super::pull_off::pull_off(scene, &opts.adhesion, None)?);
+    Ok(r)
 }
 
 /// The branches of an evaluation with their gaps (`gap` holds the loading branch's and,

@@ -167,6 +167,11 @@ pub struct SweepReport {
     /// stops where it does.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cycle: Option<TheoryCycle>,
+    /// With `cycle`: the pull-off read-out around the cycle's pull-off (the DMT routes,
+    /// GFMD's nearest measured pull-off and how far each was measured from GFMD,
+    /// [`super::pull_off`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pull_off: Option<super::pull_off::PullOffReport>,
 }
 
 /// How a load cycle's loads are described where a list of loads is not log-spaced (a front end
@@ -362,13 +367,23 @@ pub fn pressure(
         pull_off_pressure: None,
         window_edges: Vec::new(),
         cycle: None,
+        pull_off: None,
     };
     let mut notes = Vec::new();
     for (k, sp) in specs.iter().enumerate() {
         (ctl.progress)(if single { 0 } else { k }, n);
         let sw = sweep::sweep(&scene, sp, opts, ctl.cancel)?;
         if cycle && single {
-            out.cycle = Some(path_through_tension(&sw, &scene, &opts.adhesion, ctl.cancel)?);
+            let c = path_through_tension(&sw, &scene, &opts.adhesion, ctl.cancel)?;
+            out.pull_off = c.pull_off_pressure.map(|p| {
+                let theory = super::pull_off::TheoryPullOff {
+                    pull_off_pressure: p,
+                    pull_off_bracket: c.pull_off_bracket.unwrap_or([p, p]),
+                    tension_bound: c.tension_bound.unwrap_or(f64::NAN),
+                };
+                super::pull_off::read_out(&scene, theory)
+            });
+            out.cycle = Some(c);
         }
         for (r, why) in sw.rows.iter().zip(&sw.reasons) {
             out.rows.push(Row::new(*r, &scene).with_reason(why.clone()));
@@ -485,6 +500,7 @@ pub fn knob(
         pull_off_pressure: None,
         window_edges,
         cycle: None,
+        pull_off: None,
     })
 }
 

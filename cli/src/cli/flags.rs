@@ -156,6 +156,7 @@ pub fn table() -> Vec<Flag> {
         row("--raw-adhesion", Switch, ""),
         row("--extrapolate", Switch, ""),
         row("--cycle", Switch, ""),
+        row("--pull-off", Switch, ""),
         row("--ladder", Ladder, "lambda_s/da"),
         row("--seeds", Count(Field::Seeds), ""),
         only(&["gfmd", "gauge", "compare"], "--from", Number(Field::Pressure), "E* g"),

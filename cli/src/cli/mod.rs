@@ -188,6 +188,11 @@ pub struct RunArgs {
     /// Adhesive solver: self-consistency tolerance |gamma(q_s)/gamma_s - 1| at each root.
     #[arg(long, default_value_t = asperity::theory::adhesion::AdhesionAccuracy::default().tol)]
     pub adhesion_tol: f64,
+    /// Add the pull-off read-out (`pull_off`): the theory's pull-off in tension, the two DMT
+    /// routes' and GFMD's nearest measured one, each with how far it was measured from GFMD
+    /// (docs/physics.md 6.2-6.3; 0.1-3 s more).
+    #[arg(long)]
+    pub pull_off: bool,
 }
 
 impl SceneArgs {
@@ -375,7 +380,11 @@ fn run_cli() -> i32 {
             let mut opts = run_options(&args);
             // a scene exported on the unloading branch (`[load] branch = "unloading"`) reports it
             opts.adhesion.follow_unloading = preset.follows_unloading();
-            let out = asperity::report::point(&scene, &opts);
+            let out = if args.pull_off {
+                asperity::report::point::point_with_pull_off(&scene, &opts)
+            } else {
+                asperity::report::point(&scene, &opts)
+            };
             drop(beat);
             let out = out?;
             match args.format {

@@ -190,7 +190,7 @@ pub fn run(args: &SweepArgs) -> Result<String> {
         eprintln!("asperity sweep: {note}");
     }
     Ok(match (args.format, &out.cycle) {
-        (SweepFormat::Csv, Some(c)) => cycle_csv(c),
+        (SweepFormat::Csv, Some(c)) => out.pull_off.as_ref().map_or(String::new(), |p| p.csv_lines()) + &cycle_csv(c),
         (SweepFormat::Csv, None) => csv(&out.rows),
         (SweepFormat::Json, _) => serde_json::to_string_pretty(&out).expect("serialisable"),
     })
