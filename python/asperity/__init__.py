@@ -36,13 +36,24 @@ from ._api import (
     gfmd_cycle,
     gfmd_sweep,
     psd,
+    pull_off,
     read_surface,
     sweep,
     sweep_gamma,
     sweep_thickness,
 )
 from ._errors import AsperityError, AsperityWarning, InputError, InternalError, NotConverged, ResolutionWarning, UnitWarning
-from ._results import CycleResult, GfmdCycleResult, GfmdResult, GfmdSweepResult, PsdResult, Report, Result, SweepResult
+from ._results import (
+    CycleResult,
+    GfmdCycleResult,
+    GfmdResult,
+    GfmdSweepResult,
+    PsdResult,
+    PullOffResult,
+    Report,
+    Result,
+    SweepResult,
+)
 from ._scene import Scene, Surface
 
 __version__: str = _native.__version__
@@ -55,6 +66,7 @@ __all__ = [
     "sweep_thickness",
     "sweep_gamma",
     "cycle",
+    "pull_off",
     "gfmd",
     "gfmd_cycle",
     "gfmd_sweep",
@@ -67,6 +79,7 @@ __all__ = [
     "GfmdResult",
     "PsdResult",
     "CycleResult",
+    "PullOffResult",
     "GfmdCycleResult",
     "GfmdSweepResult",
     "Result",

@@ -25,7 +25,17 @@ from ._native import Report
 
 _T = TypeVar("_T")
 
-__all__ = ["Result", "Report", "SweepResult", "GfmdResult", "PsdResult", "CycleResult", "GfmdCycleResult", "GfmdSweepResult"]
+__all__ = [
+    "Result",
+    "Report",
+    "SweepResult",
+    "GfmdResult",
+    "PsdResult",
+    "CycleResult",
+    "PullOffResult",
+    "GfmdCycleResult",
+    "GfmdSweepResult",
+]
 
 
 def _is_number(x: Any) -> bool:
@@ -162,6 +172,12 @@ class SweepResult(_native.Record):
         """With ``cycle=True``: the theory's path along the load cycle (the CLI's
         ``sweep --cycle`` key ``cycle``); else None."""
         return CycleResult(self["cycle"]) if "cycle" in self else None
+
+    @property
+    def pull_off(self) -> Optional["PullOffResult"]:
+        """With ``cycle=True``: the pull-off read-out (the CLI's ``sweep --cycle`` key
+        ``pull_off``, :func:`asperity.pull_off`); else None."""
+        return PullOffResult(self["pull_off"]) if "pull_off" in self else None
 
     def __len__(self) -> int:
         return len(self.rows)
@@ -352,6 +368,47 @@ class CycleResult(_native.Record):
         return (
             f"CycleResult(rows={len(self)}, pull_off_pressure={self.pull_off_pressure!r}, "
             f"jump_in_pressure={self.jump_in_pressure!r}, ...)"
+        )
+
+
+class PullOffResult(_native.Record):
+    """The pull-off read-out (:func:`asperity.pull_off`, ``SweepResult.pull_off``): the object
+    under ``pull_off`` of ``asperity run --pull-off --format json``, a frozen record built in
+    Rust (docs/physics.md §6.4).
+
+    Fields: ``pull_off_pressure`` (the theory's pull-off p*, ≤ 0, along the tensile path 0,
+    −10⁻⁴, −2·10⁻⁴, … bisected to 3 %) with ``pull_off_bracket`` and ``tension_bound``;
+    ``bam_pull_off_pressure`` and ``gap_dmt_pull_off_pressure`` (the two DMT routes from the
+    PSD alone, None where a route did not converge, with the reason in ``notes``); ``gfmd``
+    (GFMD's measured pull-off at the nearest stored case: ``pull_off_pressure``,
+    ``pull_off_pressure_err``, ``thickness_qr``, ``gamma_factor``, ``gamma_glo``, ``seeds``,
+    ``distance``; None where none is within reach); ``trust``: ``known``, ``measured_model``,
+    ``cases`` (each with ``gfmd``, ``gfmd_err``, ``theory_ratio``, ``bam_ratio``,
+    ``gap_dmt_ratio``: each pull-off over GFMD's), the ranges ``theory_ratio``, ``bam_ratio``,
+    ``gap_dmt_ratio`` over those cases, ``bracketed`` and ``summary``. The ratios are what was
+    measured: none of the three pull-offs is an estimate of GFMD's.
+    """
+
+    __slots__ = ()
+
+    pull_off_pressure: float
+    tension_bound: float
+    bam_pull_off_pressure: Optional[float]
+    gap_dmt_pull_off_pressure: Optional[float]
+    gfmd: Optional[_native.Record]
+    trust: _native.Record
+    notes: List[str]
+
+    @property
+    def pull_off_bracket(self) -> Optional[Tuple[float, float]]:
+        """(the first p* lost, the last p* held) of the theory's tensile path."""
+        return _pair(self["pull_off_bracket"])
+
+    def __repr__(self) -> str:
+        return (
+            f"PullOffResult(pull_off_pressure={self.pull_off_pressure!r}, "
+            f"bam_pull_off_pressure={self.bam_pull_off_pressure!r}, "
+            f"gap_dmt_pull_off_pressure={self.gap_dmt_pull_off_pressure!r}, ...)"
         )
 
 

@@ -8,7 +8,7 @@
 //!
 //! - [`scene`]: the validated scene (`Scene.preset`, `Scene(...)`, `Scene.replace`);
 //! - [`theory`]: `evaluate` ([`asperity::report::point()`], a [`report::Report`]), `sweep` (loads, t·q_r, γ_s),
-//!   `cycle` (the theory's path along a load cycle);
+//!   `cycle` (the theory's path along a load cycle), `pull_off` (the pull-off read-out);
 //! - [`gfmd`]: one GFMD run on a generated or given map; [`gfmd_cycle`]: GFMD's load cycle
 //!   through tension to pull-off;
 //! - [`surface`]: `read_surface`, `psd`; [`generate`]: `generate_surface`, `write_surface`;
@@ -89,6 +89,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(theory::options_check, m)?)?;
     m.add_function(wrap_pyfunction!(theory::run_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(theory::run_cycle, m)?)?;
+    m.add_function(wrap_pyfunction!(theory::run_pull_off, m)?)?;
     m.add_function(wrap_pyfunction!(gfmd::run_gfmd, m)?)?;
     m.add_function(wrap_pyfunction!(gfmd_cycle::run_gfmd_cycle, m)?)?;
     m.add_function(wrap_pyfunction!(surface::read_surface, m)?)?;

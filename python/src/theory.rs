@@ -253,3 +253,17 @@ pub fn run_cycle<'py>(
     })?;
     Record::new(py, Arc::new(value::json(&out)?))
 }
+
+/// The pull-off read-out of `scene` (`asperity run --pull-off`'s `pull_off`): the theory's
+/// pull-off in tension, the DMT routes', GFMD's nearest and how far each was measured from
+/// GFMD, as a record.
+#[pyfunction]
+#[pyo3(name = "pull_off", signature = (scene, progress = None))]
+pub fn run_pull_off<'py>(py: Python<'py>, scene: &SceneCore, progress: Option<Bound<'py, PyAny>>) -> PyResult<Record> {
+    let core = scene.clone();
+    let acc = Options::default().adhesion;
+    let out = work::run(py, progress.as_ref(), move |ctx| {
+        asperity::report::pull_off::pull_off(&core.scene, &acc, Some(&*ctx.cancel))
+    })?;
+    Record::new(py, Arc::new(value::json(&out)?))
+}

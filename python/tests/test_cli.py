@@ -107,3 +107,16 @@ def test_gfmd_cycle_equals_cli(cli):
     py.pop("heights", None)
     ref = cli("gfmd", "--preset", "system-2", "--grid", "32", "--cycle", "--from", "1e-3", "--to", "4e-3", "--points", "3", "--format", "json")
     assert compare(py, ref, REL) == []
+
+
+def test_pull_off_equals_cli(cli):
+    scene = asperity.Scene.preset("system-2").replace(thickness_qr=0.3)
+    r = asperity.pull_off(scene)
+    ref = cli("run", "--preset", "system-2", "--thickness", "0.3", "--pull-off", "--format", "json")["pull_off"]
+    assert compare(r.to_dict(), ref, REL) == []
+    # the theory holds far less than GFMD's nearest measured pull-off, the routes far more
+    assert r.pull_off_pressure <= 0.0 and r.gfmd is not None
+    assert r.bam_pull_off_pressure is not None and r.bam_pull_off_pressure < r.gfmd.pull_off_pressure
+    assert r.trust.known and "lower bound" in r.trust.summary
+    sw = asperity.sweep(scene, np.geomspace(1e-3, 1e-2, 2), cycle=True)
+    assert sw.pull_off is not None and sw.pull_off.tension_bound == r.tension_bound
