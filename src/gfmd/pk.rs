@@ -31,6 +31,15 @@
 //! reads it ([`RealFft2::convolve_rows`]). Once an update changes no node of S (no clipped
 //! pressure, no overlap), p moved along t alone, so K⋆p follows as K⋆p − τ K⋆t and its
 //! convolution is skipped; a stop reached that way is confirmed with a fresh K⋆p.
+//!
+//! S (a few per cent of the nodes at the loads of interest) is kept as a list of its nodes
+//! (`Support`): p and t are zero off S, so the fields to convolve are written from it, the
+//! sums over S and the step visit its nodes only, and g is not stored (it is u − h − ḡ where
+//! it is needed). What needs every node is the overlap test (the least x = u − h off S, taken
+//! while a row of u is in the cache) and, when it finds one, the step in the chunks that hold
+//! it. The sums are those the node-by-node loops take, in the same order (Σ_S g² excepted: it
+//! is Σ (x − c)² − |S|(ḡ − c)² about the last ḡ, to one rounding of the node-by-node sum), so
+//! a run is the same to the last digit of a_r and ū as one over every node (BENCHMARKS.md).
 
 use crate::error::{Error, Result};
 use crate::numerics::fft2::{RealFft2, SpectralKernel};
@@ -69,28 +78,33 @@ pub fn relax(
     if !p.iter().any(|&x| x > 0.0) {
         p.iter_mut().for_each(|x| *x = p0);
     }
-    let (mut u, mut g, mut t, mut r) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let nx = pk.plan.nx();
+    let mut set = Support::of(&p, nx);
+    let (mut u, mut t, mut r) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let mut g_old = 0.0;
-    // `scale`: the load rescaling not yet applied to p (nor to u when u is carried over)
-    let (mut scale, mut carried) = (1.0, false);
+    // `scale`: the load rescaling not yet applied to p (nor to u when u is carried over);
+    // `tau`: the last step, whose u −= τ K⋆t is applied when u is carried over; `shift`: the
+    // last ḡ, the reference of the gap's sum of squares
+    let (mut scale, mut carried, mut tau, mut shift) = (1.0, false, 0.0, 0.0);
     let mut it = 0;
     loop {
-        let a = match carried {
-            true => pk.rescale_carried(&mut p, &mut u, scale),
-            false => pk.displacement(&mut p, &mut u, scale),
+        // `off`: per chunk, a lower bound of x = u − h off S
+        let (a, off) = match carried {
+            true => pk.carry(&set, &mut p, &mut u, &r, (tau, scale), shift),
+            false => pk.displacement(&set, &mut p, &mut u, scale, shift),
         };
         scale = 1.0;
-        let cnt = a[1];
-        let gbar = a[0] / cnt.max(1.0);
-        let b = pk.gap(&mut g, &u, &p, gbar);
-        let gg = b[0];
-        if !gg.is_finite() {
+        let cnt = a.count;
+        let gbar = a.sum / cnt.max(1.0);
+        let gap = a.gap(gbar);
+        shift = gbar;
+        if !gap.squares.is_finite() {
             return Err(Error::NotConverged {
                 solver: crate::error::Solver::GfmdPolonskyKeer,
                 reason: format!("non-finite gap after {it} iterations"),
             });
         }
-        let err = b[1].max(b[2]);
+        let err = gap.on.max(gap.overlap);
         if err <= gap_tol && carried {
             // confirm the stop with a fresh K⋆p
             carried = false;
@@ -107,18 +121,29 @@ pub fn relax(
         if cancel.load(Ordering::Relaxed) {
             return Err(Error::Cancelled);
         }
-        let beta = if g_old > 0.0 { gg / g_old } else { 0.0 };
-        g_old = gg;
-        let mut c = pk.direction(&mut t, &mut r, &p, &g, beta);
+        let beta = if g_old > 0.0 { gap.squares / g_old } else { 0.0 };
+        g_old = gap.squares;
+        let mut c = pk.direction(&set, &mut t, &mut r, &u, gbar, beta);
         if c[1] <= 0.0 && beta > 0.0 {
             // not a descent direction: restart from the gap
-            c = pk.direction(&mut t, &mut r, &p, &g, 0.0);
+            c = pk.direction(&set, &mut t, &mut r, &u, gbar, 0.0);
         }
         let rbar = c[0] / cnt.max(1.0);
         let rt = c[2] - rbar * c[3];
-        let tau = if rt > 0.0 { c[1] / rt } else { 0.0 };
-        let d = pk.step(&mut p, &mut u, &t, &r, &g, tau);
-        carried = d[1] == 0.0 && d[2] == 0.0;
+        tau = if rt > 0.0 { c[1] / rt } else { 0.0 };
+        let overlap = gap.overlap > 0.0;
+        let d = match overlap {
+            true => pk.step_all(&set, &mut p, &mut t, (&u, &off), gbar, tau),
+            false => pk.step(&set, &mut p, &mut t, tau),
+        };
+        // S changed: nodes joined (the overlap) or left (a clipped pressure)
+        if overlap {
+            set = Support::of(&p, nx);
+        } else if d[1] > 0.0 {
+            set.retain(&p, nx);
+        }
+        // u follows p without a convolution when p moved along t alone
+        carried = !overlap && d[1] == 0.0;
         let mean = d[0] / n as f64;
         if mean > 0.0 {
             scale = p0 / mean;
@@ -138,119 +163,356 @@ struct Pk<'a> {
 }
 
 impl Pk<'_> {
-    /// p ← scale·p, then u = K⋆p; returns Σ_S (u − h) and |S|.
-    fn displacement(&mut self, p: &mut [f64], u: &mut [f64], scale: f64) -> [f64; 4] {
+    /// p ← scale·p, then u = K⋆p; returns the sums over the contact of x = u − h, and per
+    /// chunk a lower bound of x off S.
+    fn displacement(
+        &mut self,
+        set: &Support,
+        p: &mut [f64],
+        u: &mut [f64],
+        scale: f64,
+        shift: f64,
+    ) -> (Contact, Vec<f64>) {
         let (nx, h) = (self.plan.nx(), self.h);
-        let parts = self.plan.convolve_rows(
+        let (_, parts) = self.plan.convolve_rows(
             p,
             &self.comp,
             &mut self.spec,
             u,
-            |_, row| row.iter_mut().for_each(|x| *x *= scale),
-            |y, prow, urow| on_contact_sums(prow, urow, &h[y * nx..(y + 1) * nx]),
-        );
-        combine(parts, SUMS)
-    }
-
-    /// p ← scale·p and u ← scale·u (u carried over from the last step: K⋆p is linear);
-    /// returns Σ_S (u − h) and |S|.
-    fn rescale_carried(&self, p: &mut [f64], u: &mut [f64], scale: f64) -> [f64; 4] {
-        let h = self.h;
-        map_reduce2(self.par, p, u, SUMS, |o, pc, uc| {
-            pc.iter_mut().for_each(|x| *x *= scale);
-            uc.iter_mut().for_each(|x| *x *= scale);
-            on_contact_sums(pc, uc, &h[o..o + pc.len()])
-        })
-    }
-
-    /// g = u − h − ḡ; returns Σ_S g², max_S |g| and the largest overlap off S.
-    fn gap(&self, g: &mut [f64], u: &[f64], p: &[f64], gbar: f64) -> [f64; 4] {
-        let h = self.h;
-        map_reduce(self.par, g, [false, true, true, false], |o, gc| {
-            let (mut gg, mut gmax, mut over) = (0.0, 0.0f64, 0.0f64);
-            for (j, gi) in gc.iter_mut().enumerate() {
-                let i = o + j;
-                *gi = u[i] - h[i] - gbar;
-                if p[i] > 0.0 {
-                    gg += *gi * *gi;
-                    gmax = gmax.max(gi.abs());
-                } else {
-                    over = over.max(-*gi);
+            |y, prow, row| {
+                // p is zero off S
+                row.fill(0.0);
+                for &i in set.row(y) {
+                    let k = i - y * nx;
+                    prow[k] *= scale;
+                    row[k] = prow[k];
                 }
-            }
-            [gg, gmax, over, 0.0]
-        })
+            },
+            |y, _, urow| Contact::of(set.row(y), y * nx, urow, &h[y * nx..(y + 1) * nx], shift),
+        );
+        // a chunk's bound: the least of its rows' minima
+        let n = h.len();
+        let off = (0..n.div_ceil(CHUNK))
+            .map(|c| {
+                let rows = c * CHUNK / nx..=(((c + 1) * CHUNK).min(n) - 1) / nx;
+                parts[rows].iter().fold(f64::INFINITY, |m, s| m.min(s.min_off))
+            })
+            .collect();
+        (parts.into_iter().fold(Contact::EMPTY, Contact::then), off)
     }
 
-    /// t = g + β t on S (0 elsewhere) and r = K⋆t; returns Σ_S r, Σ_S g t, Σ_S r t and Σ_S t
-    /// (then Σ_S (r − r̄) t = Σ r t − r̄ Σ t).
-    fn direction(&mut self, t: &mut [f64], r: &mut [f64], p: &[f64], g: &[f64], beta: f64) -> [f64; 4] {
-        let nx = self.plan.nx();
-        let parts = self.plan.convolve_rows(
+    /// u ← (u − τ r)·scale and p ← scale·p (u carried over from the last step: K⋆p is
+    /// linear); returns the sums over the contact of x = u − h, and per chunk the minimum of x
+    /// off S.
+    fn carry(
+        &self,
+        set: &Support,
+        p: &mut [f64],
+        u: &mut [f64],
+        r: &[f64],
+        (tau, scale): (f64, f64),
+        shift: f64,
+    ) -> (Contact, Vec<f64>) {
+        let h = self.h;
+        let parts = chunked(self.par, p, u, |c, o, pc, uc| {
+            let nodes = set.chunk(c);
+            for &i in nodes {
+                pc[i - o] *= scale;
+            }
+            let m = uc.len();
+            for (ui, &ri) in uc.iter_mut().zip(&r[o..o + m]) {
+                *ui = (*ui - tau * ri) * scale;
+            }
+            Contact::of(nodes, o, uc, &h[o..o + m], shift)
+        });
+        let off = parts.iter().map(|s| s.min_off).collect();
+        (parts.into_iter().fold(Contact::EMPTY, Contact::then), off)
+    }
+
+    /// t = g + β t on S (0 elsewhere), g = u − h − ḡ, and r = K⋆t; returns Σ_S r, Σ_S g t,
+    /// Σ_S r t and Σ_S t (then Σ_S (r − r̄) t = Σ r t − r̄ Σ t).
+    fn direction(&mut self, set: &Support, t: &mut [f64], r: &mut [f64], u: &[f64], gbar: f64, beta: f64) -> [f64; 4] {
+        let (nx, h) = (self.plan.nx(), self.h);
+        let (before, after) = self.plan.convolve_rows(
             t,
             &self.comp,
             &mut self.spec,
             r,
-            |y, row| {
-                let o = y * nx;
-                for (k, ti) in row.iter_mut().enumerate() {
-                    *ti = if p[o + k] > 0.0 { g[o + k] + beta * *ti } else { 0.0 };
+            |y, trow, row| {
+                // t is zero off S
+                row.fill(0.0);
+                let (mut gt, mut st) = (0.0, 0.0);
+                for &i in set.row(y) {
+                    let k = i - y * nx;
+                    let g = u[i] - h[i] - gbar;
+                    let ti = g + beta * trow[k];
+                    (trow[k], row[k]) = (ti, ti);
+                    gt += g * ti;
+                    st += ti;
                 }
+                [gt, st]
             },
             |y, trow, rrow| {
-                let o = y * nx;
-                let mut s = [0.0; 4];
-                for (k, (&ti, &ri)) in trow.iter().zip(rrow).enumerate() {
-                    if p[o + k] > 0.0 {
-                        s[0] += ri;
-                        s[1] += g[o + k] * ti;
-                        s[2] += ri * ti;
-                        s[3] += ti;
-                    }
+                let (mut sr, mut rt) = (0.0, 0.0);
+                for &i in set.row(y) {
+                    let k = i - y * nx;
+                    sr += rrow[k];
+                    rt += rrow[k] * trow[k];
                 }
-                s
+                [sr, rt]
             },
         );
-        combine(parts, SUMS)
+        let mut s = [0.0; 4];
+        for (b, a) in before.iter().zip(&after) {
+            s[0] += a[0];
+            s[1] += b[0];
+            s[2] += a[1];
+            s[3] += b[1];
+        }
+        s
     }
 
-    /// p_S −= τ t with the projection p ≥ 0, p_O = −τ g on the overlap, and u −= τ K⋆t;
-    /// returns Σ p, whether O was not empty and whether a pressure was clipped (then u is
-    /// stale and the next K⋆p is convolved).
-    fn step(&self, p: &mut [f64], u: &mut [f64], t: &[f64], r: &[f64], g: &[f64], tau: f64) -> [f64; 4] {
-        map_reduce2(self.par, p, u, SUMS, |o, pc, uc| {
-            let (mut sum, mut overlap, mut clipped) = (0.0, 0.0, 0.0);
-            for (j, (pi, ui)) in pc.iter_mut().zip(uc.iter_mut()).enumerate() {
-                let i = o + j;
-                if *pi > 0.0 {
-                    let q = *pi - tau * t[i];
-                    if q < 0.0 {
-                        clipped = 1.0;
-                    }
-                    *pi = q.max(0.0);
-                } else if g[i] < 0.0 {
-                    *pi = -tau * g[i];
-                    overlap = 1.0;
-                }
-                *ui -= tau * r[i];
-                sum += *pi;
+    /// p_S −= τ t with the projection p ≥ 0 (t = 0 where p drops to 0, so t stays 0 off S);
+    /// returns Σ p and whether a pressure was clipped (then K⋆p is convolved afresh).
+    fn step(&self, set: &Support, p: &mut [f64], t: &mut [f64], tau: f64) -> [f64; 2] {
+        let parts = chunked(self.par, p, t, |c, o, pc, tc| step_on(set.chunk(c), o, pc, tc, tau));
+        sum_and_flag(parts)
+    }
+
+    /// [`Pk::step`] when some node off S has g < 0: also p_O = −τ g on the overlap O, visiting
+    /// every node of the chunks whose bound `off` of x off S is below ḡ (the others as `step`).
+    fn step_all(
+        &self,
+        set: &Support,
+        p: &mut [f64],
+        t: &mut [f64],
+        (u, off): (&[f64], &[f64]),
+        gbar: f64,
+        tau: f64,
+    ) -> [f64; 2] {
+        let h = self.h;
+        let parts = chunked(self.par, p, t, |c, o, pc, tc| {
+            if off[c] - gbar >= 0.0 {
+                // no overlap here: g = fl(x − ḡ) ≥ fl(off − ḡ) ≥ 0 off S
+                return step_on(set.chunk(c), o, pc, tc, tau);
             }
-            [sum, overlap, clipped, 0.0]
-        })
+            let (mut sum, mut clipped) = (0.0, 0.0);
+            for (j, (pi, ti)) in pc.iter_mut().zip(tc.iter_mut()).enumerate() {
+                if *pi > 0.0 {
+                    clipped = project(pi, ti, tau, clipped);
+                } else {
+                    let g = u[o + j] - h[o + j] - gbar;
+                    if g < 0.0 {
+                        *pi = -tau * g;
+                    }
+                }
+                if *pi != 0.0 {
+                    sum += *pi;
+                }
+            }
+            [sum, clipped]
+        });
+        sum_and_flag(parts)
     }
 }
 
-/// Σ (u − h) and the number of nodes over the nodes of a stretch that carry pressure.
-fn on_contact_sums(p: &[f64], u: &[f64], h: &[f64]) -> [f64; 4] {
-    let (mut sum, mut cnt) = (0.0, 0.0);
-    for ((&pi, &ui), &hi) in p.iter().zip(u).zip(h) {
-        if pi > 0.0 {
-            sum += ui - hi;
-            cnt += 1.0;
+/// [`Pk::step`] on one chunk (nodes `o..`, values `p`, `t`), `nodes` the nodes of S in it.
+fn step_on(nodes: &[usize], o: usize, p: &mut [f64], t: &mut [f64], tau: f64) -> [f64; 2] {
+    let (mut sum, mut clipped) = (0.0, 0.0);
+    for &i in nodes {
+        let k = i - o;
+        clipped = project(&mut p[k], &mut t[k], tau, clipped);
+        // the zeros off S would not change the sum
+        if p[k] != 0.0 {
+            sum += p[k];
         }
     }
-    [sum, cnt, 0.0, 0.0]
+    [sum, clipped]
 }
+
+/// p −= τ t on a node of S, projected on p ≥ 0 (t zeroed where p drops to 0); returns 1 if p
+/// was clipped, else `clipped`.
+fn project(p: &mut f64, t: &mut f64, tau: f64, clipped: f64) -> f64 {
+    let q = *p - tau * *t;
+    *p = q.max(0.0);
+    if *p == 0.0 {
+        *t = 0.0;
+    }
+    if q < 0.0 {
+        1.0
+    } else {
+        clipped
+    }
+}
+
+/// The chunks' Σ p added in chunk order, and whether any chunk clipped.
+fn sum_and_flag(parts: Vec<[f64; 2]>) -> [f64; 2] {
+    parts.into_iter().fold([0.0; 2], |a, b| [a[0] + b[0], a[1].max(b[1])])
+}
+
+/// The contact set S = {p > 0}: its nodes in order, and where each row and each chunk of
+/// [`CHUNK`] nodes starts among them.
+struct Support {
+    nodes: Vec<usize>,
+    rows: Vec<usize>,
+    chunks: Vec<usize>,
+}
+
+impl Support {
+    /// S of `p` on rows of `nx` nodes.
+    fn of(p: &[f64], nx: usize) -> Support {
+        let nodes = (0..p.len()).filter(|&i| p[i] > 0.0).collect();
+        Support::indexed(nodes, p.len(), nx)
+    }
+
+    /// S less the nodes where p has dropped to 0.
+    fn retain(&mut self, p: &[f64], nx: usize) {
+        let mut nodes = std::mem::take(&mut self.nodes);
+        nodes.retain(|&i| p[i] > 0.0);
+        *self = Support::indexed(nodes, p.len(), nx);
+    }
+
+    fn indexed(nodes: Vec<usize>, n: usize, nx: usize) -> Support {
+        let starts = |step: usize| -> Vec<usize> {
+            let mut k = 0;
+            (0..=n.div_ceil(step))
+                .map(|b| {
+                    while k < nodes.len() && nodes[k] < b * step {
+                        k += 1;
+                    }
+                    k
+                })
+                .collect()
+        };
+        let (rows, chunks) = (starts(nx), starts(CHUNK));
+        Support { nodes, rows, chunks }
+    }
+
+    /// The nodes of S in row y.
+    fn row(&self, y: usize) -> &[usize] {
+        &self.nodes[self.rows[y]..self.rows[y + 1]]
+    }
+
+    /// The nodes of S in chunk c.
+    fn chunk(&self, c: usize) -> &[usize] {
+        &self.nodes[self.chunks[c]..self.chunks[c + 1]]
+    }
+}
+
+/// Sums over a stretch of nodes of x = u − h: over the contact S (p > 0) its sum, count,
+/// extremes and the sums of x − c and (x − c)² about a reference c; off S its minimum.
+#[derive(Debug, Clone, Copy)]
+struct Contact {
+    sum: f64,
+    count: f64,
+    max_on: f64,
+    min_on: f64,
+    min_off: f64,
+    dev: f64,
+    dev_sq: f64,
+}
+
+impl Default for Contact {
+    fn default() -> Self {
+        Contact::EMPTY
+    }
+}
+
+/// The gap g = x − ḡ measured from [`Contact`]: Σ_S g², max_S |g| and the largest overlap
+/// off S (max −g, 0 when there is none).
+struct Gap {
+    squares: f64,
+    on: f64,
+    overlap: f64,
+}
+
+impl Contact {
+    const EMPTY: Contact = Contact {
+        sum: 0.0,
+        count: 0.0,
+        max_on: f64::NEG_INFINITY,
+        min_on: f64::INFINITY,
+        min_off: f64::INFINITY,
+        dev: 0.0,
+        dev_sq: 0.0,
+    };
+
+    /// The sums over the stretch of nodes `o..o + u.len()` (`u`, `h` its values), `nodes`
+    /// the nodes of S in it, `c` the reference of the squares.
+    fn of(nodes: &[usize], o: usize, u: &[f64], h: &[f64], c: f64) -> Contact {
+        let mut s = Contact::EMPTY;
+        let mut from = 0;
+        for &i in nodes {
+            let k = i - o;
+            s.min_off = s.min_off.min(min_difference(&u[from..k], &h[from..k]));
+            from = k + 1;
+            let x = u[k] - h[k];
+            s.sum += x;
+            s.count += 1.0;
+            s.max_on = s.max_on.max(x);
+            s.min_on = s.min_on.min(x);
+            s.dev += x - c;
+            s.dev_sq += (x - c) * (x - c);
+        }
+        s.min_off = s.min_off.min(min_difference(&u[from..], &h[from..]));
+        s
+    }
+
+    /// The sums over this stretch and the next one.
+    fn then(self, b: Contact) -> Contact {
+        Contact {
+            sum: self.sum + b.sum,
+            count: self.count + b.count,
+            max_on: self.max_on.max(b.max_on),
+            min_on: self.min_on.min(b.min_on),
+            min_off: self.min_off.min(b.min_off),
+            dev: self.dev + b.dev,
+            dev_sq: self.dev_sq + b.dev_sq,
+        }
+    }
+
+    /// The gap about ḡ = `gbar`: the extremes of g are those of x less ḡ, the same as taken
+    /// node by node (rounding keeps the order); with the sums taken about c, Σ_S g² =
+    /// Σ (x − c)² − |S| d², d = Σ (x − c)/|S| = ḡ − c, accurate while d is not much larger than
+    /// the gap (c is the last iteration's ḡ).
+    fn gap(&self, gbar: f64) -> Gap {
+        let (on, squares) = if self.count > 0.0 {
+            let d = self.dev / self.count;
+            let on = (self.max_on - gbar).max(-(self.min_on - gbar)).max(0.0);
+            (on, (self.dev_sq - self.count * d * d).max(0.0))
+        } else {
+            (0.0, 0.0)
+        };
+        let overlap = if self.min_off < f64::INFINITY {
+            (-(self.min_off - gbar)).max(0.0)
+        } else {
+            0.0
+        };
+        Gap { squares, on, overlap }
+    }
+}
+
+/// min (u − h) over a stretch (+∞ when empty), in lanes: a minimum does not depend on the
+/// order.
+fn min_difference(u: &[f64], h: &[f64]) -> f64 {
+    let mut lanes = [f64::INFINITY; LANES];
+    let (uc, hc) = (u.chunks_exact(LANES), h.chunks_exact(LANES));
+    let tail = uc
+        .remainder()
+        .iter()
+        .zip(hc.remainder())
+        .fold(f64::INFINITY, |m, (&ui, &hi)| m.min(ui - hi));
+    for (u, h) in uc.zip(hc) {
+        for k in 0..LANES {
+            let x = u[k] - h[k];
+            lanes[k] = if x < lanes[k] { x } else { lanes[k] };
+        }
+    }
+    lanes.iter().fold(tail, |m, &x| m.min(x))
+}
+
+/// Nodes per lane group of [`min_difference`].
+const LANES: usize = 8;
 
 /// Node-loop chunk: partial results are combined in chunk order, so a run is bit-for-bit the
 /// same whatever the thread count.
@@ -258,72 +520,81 @@ const CHUNK: usize = 4096;
 /// Grids with at least this many nodes run their node loops on rayon.
 const PARALLEL_MIN_NODES: usize = 1 << 15;
 
-/// Combines per-chunk partials in chunk order: slot k is a maximum where `maxed[k]`, else a sum.
-fn combine(parts: Vec<[f64; 4]>, maxed: [bool; 4]) -> [f64; 4] {
-    parts.into_iter().fold([0.0; 4], |mut a, b| {
-        for k in 0..4 {
-            a[k] = if maxed[k] { a[k].max(b[k]) } else { a[k] + b[k] };
-        }
-        a
-    })
-}
-
-/// Slots that are all sums.
-const SUMS: [bool; 4] = [false; 4];
-
-/// Like [`map_reduce`], over matching mutable chunks of `x` and `y`.
-fn map_reduce2(
+/// `f(chunk, offset, x chunk, y chunk)` over matching chunks of [`CHUNK`] nodes of `x` and
+/// `y`, the partials in chunk order.
+fn chunked<T: Send>(
     par: bool,
     x: &mut [f64],
     y: &mut [f64],
-    maxed: [bool; 4],
-    f: impl Fn(usize, &mut [f64], &mut [f64]) -> [f64; 4] + Sync,
-) -> [f64; 4] {
+    f: impl Fn(usize, usize, &mut [f64], &mut [f64]) -> T + Sync,
+) -> Vec<T> {
     if par {
         use rayon::prelude::*;
-        combine(
-            x.par_chunks_mut(CHUNK)
-                .zip(y.par_chunks_mut(CHUNK))
-                .enumerate()
-                .map(|(c, (xc, yc))| f(c * CHUNK, xc, yc))
-                .collect(),
-            maxed,
-        )
+        x.par_chunks_mut(CHUNK)
+            .zip(y.par_chunks_mut(CHUNK))
+            .enumerate()
+            .map(|(c, (xc, yc))| f(c, c * CHUNK, xc, yc))
+            .collect()
     } else {
-        combine(
-            x.chunks_mut(CHUNK)
-                .zip(y.chunks_mut(CHUNK))
-                .enumerate()
-                .map(|(c, (xc, yc))| f(c * CHUNK, xc, yc))
-                .collect(),
-            maxed,
-        )
+        x.chunks_mut(CHUNK)
+            .zip(y.chunks_mut(CHUNK))
+            .enumerate()
+            .map(|(c, (xc, yc))| f(c, c * CHUNK, xc, yc))
+            .collect()
     }
 }
 
-/// Like [`reduce`], over mutable chunks of `x` (`f` gets the chunk's offset).
-fn map_reduce(
-    par: bool,
-    x: &mut [f64],
-    maxed: [bool; 4],
-    f: impl Fn(usize, &mut [f64]) -> [f64; 4] + Sync,
-) -> [f64; 4] {
-    if par {
-        use rayon::prelude::*;
-        combine(
-            x.par_chunks_mut(CHUNK)
-                .enumerate()
-                .map(|(c, xc)| f(c * CHUNK, xc))
-                .collect(),
-            maxed,
-        )
-    } else {
-        combine(
-            x.chunks_mut(CHUNK)
-                .enumerate()
-                .map(|(c, xc)| f(c * CHUNK, xc))
-                .collect(),
-            maxed,
-        )
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The contact list's sums by rows and by chunks against one loop over every node: the
+    /// same count and extremes of g (bit for bit), Σ_S x and Σ_S g² to rounding, on stretches
+    /// that S starts, ends and breaks.
+    #[test]
+    fn contact_list_sums_equal_a_loop_over_every_node() {
+        let (n, nx) = (2 * CHUNK + 37, 61);
+        let p: Vec<f64> = (0..n)
+            .map(|i| match (i * 7919) % 11 < 3 || i == 0 || i == n - 1 {
+                true => 1.0 + (i % 5) as f64,
+                false => 0.0,
+            })
+            .collect();
+        let u: Vec<f64> = (0..n).map(|i| ((i * 104_729) % 1009) as f64 * 1e-3).collect();
+        let h: Vec<f64> = (0..n).map(|i| ((i * 7) % 13) as f64 * 0.07).collect();
+        let set = Support::of(&p, nx);
+        assert_eq!(set.nodes.len(), p.iter().filter(|&&x| x > 0.0).count());
+        let by = |len: usize| {
+            (0..n.div_ceil(len))
+                .map(|b| {
+                    let (o, e) = (b * len, ((b + 1) * len).min(n));
+                    let nodes = if len == nx { set.row(b) } else { set.chunk(b) };
+                    assert!(nodes.iter().all(|&i| (o..e).contains(&i)));
+                    Contact::of(nodes, o, &u[o..e], &h[o..e], 0.3)
+                })
+                .fold(Contact::EMPTY, Contact::then)
+        };
+        for a in [by(nx), by(CHUNK)] {
+            let gbar = a.sum / a.count;
+            let (mut sum, mut squares, mut on, mut overlap) = (0.0, 0.0, 0.0f64, 0.0f64);
+            for i in 0..n {
+                let g = u[i] - h[i] - gbar;
+                if p[i] > 0.0 {
+                    (sum, squares, on) = (sum + (u[i] - h[i]), squares + g * g, on.max(g.abs()));
+                } else {
+                    overlap = overlap.max(-g);
+                }
+            }
+            let gap = a.gap(gbar);
+            assert_eq!(a.count, set.nodes.len() as f64);
+            assert_eq!((gap.on, gap.overlap), (on, overlap));
+            assert!(overlap > 0.0 && on > 0.0);
+            assert!((a.sum / sum - 1.0).abs() < 1e-12, "{} against {sum}", a.sum);
+            assert!(
+                (gap.squares / squares - 1.0).abs() < 1e-12,
+                "{} against {squares}",
+                gap.squares
+            );
+        }
     }
 }

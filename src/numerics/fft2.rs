@@ -91,6 +91,9 @@ const PARALLEL_MIN_POINTS: usize = 1 << 15;
 /// Columns per gathered strip of the column transforms.
 pub const STRIP: usize = 16;
 
+/// Padding (complex values) between the columns of a gathered strip.
+const STRIP_PAD: usize = 4;
+
 impl RealFft2 {
     /// Plans the transforms of an `nx`×`ny` grid (both ≥ 1).
     pub fn new(nx: usize, ny: usize) -> Self {
@@ -244,53 +247,56 @@ impl RealFft2 {
 
 impl RealFft2 {
     /// [`RealFft2::convolve`] with work fused into its two row passes, while each row is in
-    /// the cache: `prepare(y, row)` may change row y of `input` just before it is transformed
-    /// (the changed row stays in `input`), and `finish(y, input_row, out_row)` returns four
-    /// partial results of row y once its output is made. The partials come back one per row,
-    /// in row order, so a caller that combines them in that order gets the same bits whatever
-    /// the thread count. The convolution itself is the same, bit for bit, as `convolve` of the
-    /// prepared input.
+    /// the cache, beside a caller's `side` field (nx·ny, split by rows as the input):
+    /// `fill(y, side_row, row)` writes every value of row y of the field to convolve (it may
+    /// change the side row too) and returns a partial result of row y, and `finish(y, side_row,
+    /// out_row)` returns a second partial result of row y once its output is made. The partials
+    /// come back one per row, in row order, so a caller that combines them in that order gets
+    /// the same bits whatever the thread count. The convolution itself is the same, bit for
+    /// bit, as `convolve` of the filled field.
     #[allow(clippy::too_many_arguments)]
-    pub fn convolve_rows<P, F>(
+    pub fn convolve_rows<A, B, P, F>(
         &mut self,
-        input: &mut [f64],
+        side: &mut [f64],
         kernel: &SpectralKernel,
         spec: &mut [Complex64],
         out: &mut [f64],
-        prepare: P,
+        fill: P,
         finish: F,
-    ) -> Vec<[f64; 4]>
+    ) -> (Vec<A>, Vec<B>)
     where
-        P: Fn(usize, &mut [f64]) + Sync,
-        F: Fn(usize, &[f64], &[f64]) -> [f64; 4] + Sync,
+        A: Copy + Default + Send,
+        B: Copy + Default + Send,
+        P: Fn(usize, &mut [f64], &mut [f64]) -> A + Sync,
+        F: Fn(usize, &[f64], &[f64]) -> B + Sync,
     {
         let (nx, ny, nh) = (self.nx, self.ny, self.nh);
         let kernel = &kernel.columns[..];
         assert!(
-            input.len() == nx * ny && out.len() == nx * ny && spec.len() == nh * ny && kernel.len() == nh * ny,
+            side.len() == nx * ny && out.len() == nx * ny && spec.len() == nh * ny && kernel.len() == nh * ny,
             "RealFft2::convolve_rows: sizes"
         );
         let r2c = &self.r2c;
-        let forward = |y0: usize, (rin, rout): (&mut [f64], &mut [Complex64])| {
+        let forward = |y0: usize, (rin, rout): (&mut [f64], &mut [Complex64]), parts: &mut [A]| {
             let mut scratch = r2c.make_scratch_vec();
             let mut row = vec![0.0; nx];
             for (k, (a, b)) in rin.chunks_exact_mut(nx).zip(rout.chunks_exact_mut(nh)).enumerate() {
-                prepare(y0 + k, a);
-                row.copy_from_slice(a);
+                parts[k] = fill(y0 + k, a, &mut row);
                 r2c.process_with_scratch(&mut row, b, &mut scratch)
                     .expect("planned sizes");
             }
         };
         let per = self.rows_per_block();
+        let mut before = vec![A::default(); ny];
         if self.parallel {
             use rayon::prelude::*;
-            input
-                .par_chunks_mut(per * nx)
+            side.par_chunks_mut(per * nx)
                 .zip(spec.par_chunks_mut(per * nh))
+                .zip(before.par_chunks_mut(per))
                 .enumerate()
-                .for_each(|(b, blk)| forward(b * per, blk));
+                .for_each(|(b, (blk, pt))| forward(b * per, blk, pt));
         } else {
-            forward(0, (input, spec));
+            forward(0, (side, spec), &mut before);
         }
         columns_with(
             self.parallel,
@@ -301,27 +307,27 @@ impl RealFft2 {
             ny,
         );
         let c2r = &self.c2r;
-        let input = &*input;
-        let inverse = |y0: usize, (rout, rin): (&mut [f64], &mut [Complex64]), parts: &mut [[f64; 4]]| {
+        let side = &*side;
+        let inverse = |y0: usize, (rout, rin): (&mut [f64], &mut [Complex64]), parts: &mut [B]| {
             let mut scratch = c2r.make_scratch_vec();
             for (k, (a, b)) in rout.chunks_exact_mut(nx).zip(rin.chunks_exact_mut(nh)).enumerate() {
                 let _ = c2r.process_with_scratch(b, a, &mut scratch);
                 let y = y0 + k;
-                parts[k] = finish(y, &input[y * nx..(y + 1) * nx], a);
+                parts[k] = finish(y, &side[y * nx..(y + 1) * nx], a);
             }
         };
-        let mut parts = vec![[0.0; 4]; ny];
+        let mut after = vec![B::default(); ny];
         if self.parallel {
             use rayon::prelude::*;
             out.par_chunks_mut(per * nx)
                 .zip(spec.par_chunks_mut(per * nh))
-                .zip(parts.par_chunks_mut(per))
+                .zip(after.par_chunks_mut(per))
                 .enumerate()
                 .for_each(|(b, (blk, pt))| inverse(b * per, blk, pt));
         } else {
-            inverse(0, (out, spec), &mut parts);
+            inverse(0, (out, spec), &mut after);
         }
-        parts
+        (before, after)
     }
 
     /// Rows per parallel block of the row passes (four blocks per thread).
@@ -377,45 +383,59 @@ fn columns_with(
     }
     let strips = nc.div_ceil(STRIP);
     let ptr = SharedPtr(data.as_mut_ptr());
-    let work = |strip: usize| {
+    // a strip's columns lie `ld` apart in the buffer: a power-of-two stride (ny) would map all
+    // of a row's STRIP writes to one cache set
+    let ld = ny + STRIP_PAD;
+    let scratch_len = fft
+        .get_inplace_scratch_len()
+        .max(then.map_or(0, |(_, i)| i.get_inplace_scratch_len()));
+    let init = || {
+        (
+            vec![Complex64::new(0.0, 0.0); STRIP * ld],
+            vec![Complex64::new(0.0, 0.0); scratch_len],
+        )
+    };
+    let work = |(buf, scratch): &mut (Vec<Complex64>, Vec<Complex64>), strip: usize| {
         let p = ptr;
         let c0 = strip * STRIP;
         let w = STRIP.min(nc - c0);
-        let mut buf = vec![Complex64::new(0.0, 0.0); w * ny];
-        let scratch_len = fft
-            .get_inplace_scratch_len()
-            .max(then.map_or(0, |(_, i)| i.get_inplace_scratch_len()));
-        let mut scratch = vec![Complex64::new(0.0, 0.0); scratch_len];
         // SAFETY: columns c0..c0 + w of rows 0..ny lie inside `data` (len = ny·nc) and no other
         // strip reads or writes them; `data` outlives this call.
         unsafe {
             for r in 0..ny {
-                let row = p.0.add(r * nc + c0);
-                for c in 0..w {
-                    buf[c * ny + r] = *row.add(c);
+                let row = std::slice::from_raw_parts(p.0.add(r * nc + c0), w);
+                for (c, &x) in row.iter().enumerate() {
+                    *buf.get_unchecked_mut(c * ld + r) = x;
                 }
             }
-            fft.process_with_scratch(&mut buf, &mut scratch);
+        }
+        for c in 0..w {
+            let col = &mut buf[c * ld..c * ld + ny];
+            fft.process_with_scratch(col, scratch);
             if let Some((kernel, inverse)) = then {
-                let k = &kernel[c0 * ny..(c0 + w) * ny];
-                for (x, &f) in buf.iter_mut().zip(k) {
+                let k = &kernel[(c0 + c) * ny..(c0 + c + 1) * ny];
+                for (x, &f) in col.iter_mut().zip(k) {
                     *x *= f;
                 }
-                inverse.process_with_scratch(&mut buf, &mut scratch);
+                inverse.process_with_scratch(col, scratch);
             }
+        }
+        // SAFETY: as above.
+        unsafe {
             for r in 0..ny {
-                let row = p.0.add(r * nc + c0);
-                for c in 0..w {
-                    *row.add(c) = buf[c * ny + r];
+                let row = std::slice::from_raw_parts_mut(p.0.add(r * nc + c0), w);
+                for (c, x) in row.iter_mut().enumerate() {
+                    *x = *buf.get_unchecked(c * ld + r);
                 }
             }
         }
     };
     if parallel {
         use rayon::prelude::*;
-        (0..strips).into_par_iter().for_each(work);
+        (0..strips).into_par_iter().for_each_init(init, work);
     } else {
-        (0..strips).for_each(work);
+        let mut bufs = init();
+        (0..strips).for_each(|s| work(&mut bufs, s));
     }
 }
 
@@ -458,13 +478,22 @@ mod tests {
             // fused
             let mut input = h.clone();
             let mut got = vec![0.0; nx * ny];
-            let sums = plan.convolve_rows(
+            let (before, sums) = plan.convolve_rows(
                 &mut input,
                 &kernel,
                 &mut spec,
                 &mut got,
-                |_, row| row.iter_mut().for_each(|x| *x *= 1.5),
+                |y, side, row| {
+                    side.iter_mut().for_each(|x| *x *= 1.5);
+                    row.copy_from_slice(side);
+                    y
+                },
                 |_, i, o| [o.iter().sum(), i.iter().sum(), 0.0, 0.0],
+            );
+            assert_eq!(
+                before,
+                (0..ny).collect::<Vec<_>>(),
+                "{nx}x{ny}: the prepare partials, in row order"
             );
             assert_eq!(input, scaled, "{nx}x{ny}: the prepared input stays");
             assert_eq!(got, want, "{nx}x{ny}: the convolution");
