@@ -11,18 +11,26 @@
 //!   everything `asperity sweep` prints.
 //! - [`mod@cycle`]: the theory's path along a load cycle, what `asperity sweep --cycle`
 //!   prints.
+//! - [`mod@compare`]: every model against one reference, everything `asperity compare`
+//!   prints.
 //! - [`mod@gauge`]: the custom model fitted to a reference, and the reference assembled,
 //!   everything `asperity gauge` prints.
 //! - [`mod@gfmd`]: a GFMD run's spec with its defaults and ranges, its study (ladder,
 //!   seeds) and the rows of its sweeps and cycles, everything `asperity gfmd` prints.
 //! - [`mod@psd`]: a height map's PSD with its moments and self-affine fit, everything
 //!   `asperity psd` prints.
+//! - [`mod@csv`]: the reports as CSV, as every front end writes them.
 //! - [`mod@names`]: the public names kept as aliases of a preferred one.
+//! - [`mod@numfmt`]: numbers as every front end writes them (tick labels, legends, panel
+//!   values, durations).
 
+pub mod compare;
+pub mod csv;
 pub mod cycle;
 pub mod gauge;
 pub mod gfmd;
 pub mod names;
+pub mod numfmt;
 pub mod point;
 pub mod psd;
 pub mod sweep;

@@ -36,7 +36,9 @@ pub enum GfmdFormat {
     Csv,
 }
 
-pub use super::gfmd_csv::{single_csv, sweep_csv, GFMD_CSV_HEADER};
+/// `gfmd --format csv`: the library's header and writers ([`asperity::report::csv`]) under the
+/// names the binary has always used.
+pub use asperity::report::csv::{gfmd_single as single_csv, gfmd_sweep as sweep_csv, GFMD_HEADER as GFMD_CSV_HEADER};
 
 /// Arguments of `gfmd`.
 #[derive(Debug, Clone, Args)]
@@ -181,7 +183,7 @@ pub fn path_output(out: Outcome, format: GfmdFormat) -> String {
     let json = |v: serde_json::Result<String>| v.expect("serialisable");
     match (out, format) {
         (Outcome::Cycle(c), GfmdFormat::Json) => json(serde_json::to_string_pretty(&c)),
-        (Outcome::Cycle(c), _) => super::gfmd_cycle::cycle_csv(&c),
+        (Outcome::Cycle(c), _) => asperity::report::csv::gfmd_cycle(&c),
         (Outcome::Sweep(sw), GfmdFormat::Json) => json(serde_json::to_string_pretty(&sw)),
         (Outcome::Sweep(sw), _) => sweep_csv(&sw),
         (Outcome::Run(r), GfmdFormat::Json) => json(serde_json::to_string_pretty(&r)),
