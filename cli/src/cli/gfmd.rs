@@ -178,7 +178,7 @@ pub fn job(args: &GfmdArgs) -> Job {
 }
 
 /// A load sweep's or path's output in `format` (a table is the CSV); a single run's as
-/// [`table`] and [`single_csv`] write it (without the study of [`print_run`]).
+/// [`table`] and [`single_csv`] write it (without the study over seeds or resolutions).
 pub fn path_output(out: Outcome, format: GfmdFormat) -> String {
     let json = |v: serde_json::Result<String>| v.expect("serialisable");
     match (out, format) {
