@@ -4,7 +4,7 @@
 
 use asperity::gfmd::distributed::map::{self, Slab};
 use asperity::gfmd::distributed::slab_fft::SlabFft;
-use asperity::gfmd::distributed::{run_slab, Comm, ThreadComm};
+use asperity::gfmd::distributed::{run_on_ranks, Comm, Job, Outcome, ThreadComm};
 use asperity::gfmd::{self, GfmdOptions, GfmdSetup, GridSpec, Method};
 use asperity::input::preset::Preset;
 use asperity::numerics::fft2::RealFft2;
@@ -117,7 +117,12 @@ fn a_run_over_ranks_equals_the_serial_run_bit_for_bit() {
         let s = setup(preset, grid, p, adh, t);
         let serial = json(&gfmd::run(&s, &opts, &mut |_| {}, &no).unwrap());
         for ranks in [1, 2, 3, 4] {
-            let got = ThreadComm::run(ranks, |c| run_slab(c, &s, &opts, &mut |_| {}, &no).unwrap());
+            let got = ThreadComm::run(ranks, |c| {
+                match run_on_ranks(c, &s, Job::Run, &opts, &mut |_, _| {}, &no) {
+                    Ok(Outcome::Run(r)) => *r,
+                    o => panic!("{o:?}"),
+                }
+            });
             assert_eq!(
                 json(&got[0]),
                 serial,
@@ -134,7 +139,6 @@ fn a_run_over_ranks_equals_the_serial_run_bit_for_bit() {
 /// A load sweep (warm starts) over ranks equals the serial sweep, rows and theory.
 #[test]
 fn a_load_sweep_over_ranks_equals_the_serial_sweep_bit_for_bit() {
-    use asperity::gfmd::distributed::run_sweep_slab;
     use asperity::theory::sweep::SweepSpec;
     let opts = GfmdOptions {
         method: Method::Fire,
@@ -153,7 +157,10 @@ fn a_load_sweep_over_ranks_equals_the_serial_sweep_bit_for_bit() {
         serial.as_object_mut().unwrap().remove("elapsed_s");
         for ranks in [2, 3] {
             let got = ThreadComm::run(ranks, |c| {
-                run_sweep_slab(c, &s, &spec, &opts, &mut |_, _| {}, &no).unwrap()
+                match run_on_ranks(c, &s, Job::Sweep(spec), &opts, &mut |_, _| {}, &no) {
+                    Ok(Outcome::Sweep(sw)) => *sw,
+                    o => panic!("{o:?}"),
+                }
             });
             let mut v = serde_json::to_value(&got[0]).unwrap();
             v.as_object_mut().unwrap().remove("elapsed_s");
@@ -167,7 +174,6 @@ fn a_load_sweep_over_ranks_equals_the_serial_sweep_bit_for_bit() {
 #[test]
 fn a_load_cycle_over_ranks_equals_the_serial_cycle_bit_for_bit() {
     use asperity::gfmd::cycle::{run_cycle, CycleSpec};
-    use asperity::gfmd::distributed::run_cycle_slab;
     let opts = GfmdOptions {
         method: Method::Fire,
         ..GfmdOptions::default()
@@ -193,7 +199,10 @@ fn a_load_cycle_over_ranks_equals_the_serial_cycle_bit_for_bit() {
         let serial = without_time(&serial);
         for ranks in [1, 2, 3, 4] {
             let got = ThreadComm::run(ranks, |c| {
-                run_cycle_slab(c, &s, &spec, &opts, &mut |_, _| {}, &no).unwrap()
+                match run_on_ranks(c, &s, Job::Cycle(spec), &opts, &mut |_, _| {}, &no) {
+                    Ok(Outcome::Cycle(cy)) => *cy,
+                    o => panic!("{o:?}"),
+                }
             });
             assert_eq!(
                 without_time(&got[0]),

@@ -1,11 +1,12 @@
 //! The command line only serialises the library's reports: for a few scenes and each of
-//! `run`, `sweep`, `sweep --cycle`, `psd`, `gauge` and `gfmd` (a 32² grid), the JSON the binary
-//! prints carries the same names and the same numbers (to `PYTHON_CLI_REL`, timings aside) as
-//! the library's report of the same inputs, serialised. Python's results are held against the
+//! `run`, `sweep`, `sweep --cycle`, `psd`, `gauge`, `compare` and `gfmd` (a 32² grid), the
+//! JSON the binary prints carries the same names and the same numbers (to `PYTHON_CLI_REL`,
+//! timings aside) as the library's report of the same inputs, serialised. Python's results are held against the
 //! same JSON in python/tests/test_cli.py, so the three agree.
 
 mod common;
 
+use asperity::error::Field;
 use asperity::fit::{self, Param};
 use asperity::gfmd;
 use asperity::input::preset::Preset;
@@ -202,6 +203,33 @@ fn gauge_is_report_gauge() {
             "json",
         ],
     );
+}
+
+/// `compare`'s rows are the library's, notes included (a model the scene does not define is
+/// worded as the command line words errors).
+#[test]
+fn compare_is_report_compare() {
+    let (_, s) = scene("system-2");
+    let (r, sc) = report::gauge::reference("eq18", None, (Some(1e-3), Some(0.3), Some(5)), &s).unwrap();
+    let list = "1,3,5,yp08,xu24";
+    let models = report::compare::models(list, &sc.model(), &Field::Other("--models".into())).unwrap();
+    let lib = report::compare::compare(&sc, &r, &models, asperity_cli::cli::render_error);
+    let args = [
+        &["compare", "--preset", "system-2", "--reference", "eq18"][..],
+        &["--from", "1e-3", "--to", "0.3", "--points", "5"],
+        &["--models", list, "--format", "json"],
+    ]
+    .concat();
+    let mut diffs = Vec::new();
+    differences(
+        &serde_json::to_value(&lib).unwrap(),
+        &asperity_json(&args),
+        "",
+        &mut diffs,
+    );
+    assert!(diffs.is_empty(), "{}", diffs.join("\n"));
+    assert_eq!(lib.models.len(), 5);
+    assert!(lib.models.iter().any(|m| !m.scores.is_empty()), "no model scored");
 }
 
 #[test]

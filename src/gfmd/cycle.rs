@@ -24,9 +24,9 @@
 //! solver tolerance (tested); with adhesion unloading keeps more contact than loading at the
 //! same load (contact hysteresis; tested).
 
-use super::distributed::comm::Solo;
+use super::distributed::comm::{Comm, Solo};
 use super::sweep::PathSolver;
-use super::sweep::{GfmdSweepRow, Walker};
+use super::sweep::{GfmdSweepRow, LoadMap, Walker};
 use super::{prepare, GfmdOptions, GfmdSetup, Progress, Stage};
 use crate::error::{Error, Field, Result};
 use crate::surface::heightmap::Surface;
@@ -270,18 +270,37 @@ pub fn run_cycle(
     spec.validate()?;
     opts.validate()?;
     let t0 = Instant::now();
-    let mut walker = Walker::new(&Solo, prepare(setup)?, opts);
+    let (prep, cycle) = cycle_on(&Solo, (prepare(setup)?, setup), spec, opts, progress, cancel, t0)?;
+    Ok(GfmdCycle {
+        surface: Some(prep.surface),
+        ..cycle
+    })
+}
+
+/// The path of `spec` walked on `prep` (this rank's part of the map of `setup`, on `comm`),
+/// with the theory beside it, which rank 0 evaluates (None elsewhere); `t0` is the start of the
+/// run. Returns the map with the cycle.
+pub(crate) fn cycle_on<M: LoadMap>(
+    comm: &dyn Comm,
+    (prep, setup): (M, &GfmdSetup),
+    spec: &CycleSpec,
+    opts: &GfmdOptions,
+    progress: &mut dyn FnMut(usize, Progress),
+    cancel: &AtomicBool,
+    t0: Instant,
+) -> Result<(M, GfmdCycle)> {
+    let mut walker = Walker::new(comm, prep, opts);
     let path = walk(&mut walker, spec, progress, cancel)?;
     let rising = spec.rising();
-    let theory = theory_sweep(walker.prep.theory_scene(rising.from), &rising, cancel)?;
-    let map = (
-        walker.prep.surface.nx,
-        setup.surface.is_none().then_some(setup.seed),
-        walker.prep.reduction.clone(),
-    );
-    let mut cycle = path.into_cycle(theory, map, walker.iterations, t0);
-    cycle.surface = Some(walker.prep.surface);
-    Ok(cycle)
+    let theory = if comm.rank() == 0 {
+        theory_sweep(walker.prep.theory_scene(rising.from), &rising, cancel)?
+    } else {
+        (None, None, None)
+    };
+    let (grid, reduction) = walker.prep.grid_and_reduction();
+    let map = (grid, setup.surface.is_none().then_some(setup.seed), reduction);
+    let cycle = path.into_cycle(theory, map, walker.iterations, t0);
+    Ok((walker.prep, cycle))
 }
 
 /// The theory beside a path: its sweep over the positive loads on the map's scene, the sweep's

@@ -34,11 +34,13 @@
 //! bounds the relative error of the load balance and of every non-contact node's stress.
 //!
 
-use super::distributed::comm::Solo;
+use super::distributed::comm::{Comm, Solo};
+use super::distributed::fire::slab_kernel;
+use super::problem::{Layout, MapRows};
 use super::relax::{adhesion_units, fire, start_positions, stiffness_at, Convolver, Start};
 pub use super::relax::{Relaxation, DT_MAX};
 use super::{GfmdOptions, Problem, Progress, Solution, Stage};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::numerics::fft2::RealFft2;
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
@@ -73,41 +75,60 @@ pub fn solve_from(
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
 ) -> Result<Solution> {
-    relax_from(problem, opts, start_gap, progress, cancel)?.equilibrium()
+    relax_from(&Solo, problem, opts, start_gap, progress, cancel)?.equilibrium()
 }
 
-/// [`solve_from`], telling a loss of contact under tension ([`Relaxation::ContactLost`])
-/// apart from an equilibrium; the load cycle ([`super::cycle`]) steps into tension with it.
-pub fn relax_from(
-    problem: &Problem<'_>,
+/// [`solve_from`] on any layout of the map, telling a loss of contact under tension
+/// ([`Relaxation::ContactLost`]) apart from an equilibrium; the load cycle ([`super::cycle`])
+/// steps into tension with it. On the whole map ([`Solo`]) Polonsky–Keer starts the hard wall
+/// where [`super::Method::uses_pk`] says; on a rank's slab FIRE relaxes alone with the slab FFT
+/// ([`super::distributed::fire`]), every rank calling it with the same problem and options, and
+/// `start_gap` and the returned solution hold this rank's rows.
+///
+/// # Errors
+/// As [`solve_from`]; [`Error::Unsupported`] for `Method::PolonskyKeer` on the hard wall of a
+/// slab (not distributed).
+pub fn relax_from<M: MapRows>(
+    comm: &dyn Comm,
+    problem: &Problem<'_, M>,
     opts: &GfmdOptions,
     start_gap: Option<&[f64]>,
     progress: &mut dyn FnMut(Progress),
     cancel: &AtomicBool,
 ) -> Result<Relaxation> {
     crate::work::start();
-    problem.validate()?;
+    problem.validate(comm)?;
     opts.validate()?;
+    let layout = problem.surface.layout();
+    let whole = matches!(layout, Layout::Whole(_));
+    if !whole && problem.gamma == 0.0 && opts.method == super::Method::PolonskyKeer {
+        return Err(Error::Unsupported(
+            "Polonsky-Keer is not distributed over ranks: use FIRE (or Auto, which is FIRE on ranks)".into(),
+        ));
+    }
     let t0 = Instant::now();
-    let s = problem.surface;
-    let (nx, ny, da) = (s.nx, s.ny, s.spacing);
+    let ((nx, ny, da), heights, offset) = layout.rows();
     let n = nx * ny;
     let e = problem.modulus;
-    let mut plan = RealFft2::new(nx, ny);
-    let nh = plan.nh();
-    let (phi, phi_max) = stiffness(problem, nh);
-    let h: Vec<f64> = s.heights.iter().map(|x| x / da).collect();
+    let h: Vec<f64> = heights.iter().map(|x| x / da).collect();
     let (adh_stress, inv_range) = adhesion_units(problem.gamma, problem.range, e, da);
-    let mut w0 = start_positions(&Solo, &h, start_gap, da)?;
+    let mut w0 = start_positions(comm, &h, start_gap, da)?;
     let mut pk_steps = 0;
-    if problem.gamma == 0.0 && opts.method.uses_pk(n, problem.thickness.is_infinite()) {
-        (w0, pk_steps) = pk_start(problem, opts, &mut plan, (&phi, &h), progress, cancel)?;
-    }
-    let kernel = plan.kernel(&phi.iter().map(|p| p * (1.0 / n as f64)).collect::<Vec<_>>());
-    let conv = Convolver::Whole(plan, kernel);
+    let (conv, phi_max) = if whole {
+        let mut plan = RealFft2::new(nx, ny);
+        let (phi, phi_max) = stiffness((nx, ny, da), problem.thickness, plan.nh());
+        if problem.gamma == 0.0 && opts.method.uses_pk(n, problem.thickness.is_infinite()) {
+            let p0 = problem.pressure / e;
+            (w0, pk_steps) = pk_start(p0, opts, &mut plan, (&phi, &h), progress, cancel)?;
+        }
+        let kernel = plan.kernel(&phi.iter().map(|p| p * (1.0 / n as f64)).collect::<Vec<_>>());
+        (Convolver::Whole(plan, kernel), phi_max)
+    } else {
+        slab_kernel(comm, (nx, ny, da), problem.thickness)
+    };
     let start = Start {
         nodes: n,
-        offset: 0,
+        offset,
         h,
         w: w0,
         loads: (problem.pressure / e, adh_stress, inv_range),
@@ -116,7 +137,7 @@ pub fn relax_from(
         units: (da, e),
     };
     // the time of the whole relaxation, Polonsky–Keer's included
-    Ok(match fire(&Solo, conv, start, opts, progress, cancel)? {
+    Ok(match fire(comm, conv, start, opts, progress, cancel)? {
         Relaxation::Equilibrium(sol) => Relaxation::Equilibrium(Solution {
             elapsed_s: t0.elapsed().as_secs_f64(),
             ..sol
@@ -125,15 +146,14 @@ pub fn relax_from(
     })
 }
 
-/// The stiffness φ(q) = q f(qt)/2 in units of E*/Δa on the half spectrum (nh × ny), and its
-/// largest value.
-fn stiffness(problem: &Problem<'_>, nh: usize) -> (Vec<f64>, f64) {
-    let s = problem.surface;
-    let mut phi = vec![0.0; nh * s.ny];
+/// The stiffness φ(q) = q f(qt)/2 in units of E*/Δa on the half spectrum (nh × ny) of an
+/// nx × ny map of spacing Δa on a body of thickness `thickness` (m), and its largest value.
+fn stiffness((nx, ny, da): (usize, usize, f64), thickness: f64, nh: usize) -> (Vec<f64>, f64) {
+    let mut phi = vec![0.0; nh * ny];
     let mut phi_max: f64 = 0.0;
     for kx in 0..nh {
-        for ky in 0..s.ny {
-            let p = stiffness_at(kx, ky, (s.nx, s.ny, s.spacing), problem.thickness);
+        for ky in 0..ny {
+            let p = stiffness_at(kx, ky, (nx, ny, da), thickness);
             phi[ky * nh + kx] = p;
             phi_max = phi_max.max(p);
         }
@@ -151,7 +171,7 @@ fn stiffness(problem: &Problem<'_>, nh: usize) -> (Vec<f64>, f64) {
 /// uniform pressure (BENCHMARKS.md). From the uniform pressure each load of a sweep is also the
 /// single run's answer, bit for bit.
 fn pk_start(
-    problem: &Problem<'_>,
+    p0: f64,
     opts: &GfmdOptions,
     plan: &mut RealFft2,
     (phi, h): (&[f64], &[f64]),
@@ -159,7 +179,6 @@ fn pk_start(
     cancel: &AtomicBool,
 ) -> Result<(Vec<f64>, usize)> {
     let n = h.len();
-    let e = problem.modulus;
     // all zero: `pk::relax` starts from p₀ on every node
     let p_start = vec![0.0; n];
     let h_rms = {
@@ -171,7 +190,7 @@ fn pk_start(
         phi,
         h,
         p_start,
-        problem.pressure / e,
+        p0,
         PK_GAP_TOL * opts.tolerance * h_rms,
         opts.max_iterations,
         &mut |it, err, frac| {

@@ -1,6 +1,8 @@
 //! The contact problem and the solver's options, progress reports and relaxed configuration
 //! (see the [module docs](super) for the model).
 
+use super::distributed::comm::{all_max, all_min, Comm};
+use super::distributed::map::Slab;
 use crate::error::{Bound, Error, Field, Range, Result};
 use crate::surface::heightmap::{Surface, MAX_GRID};
 
@@ -146,11 +148,12 @@ impl GfmdOptions {
     }
 }
 
-/// One contact problem in physical units.
-#[derive(Debug, Clone, Copy)]
-pub struct Problem<'a> {
-    /// The rigid rough substrate.
-    pub surface: &'a Surface,
+/// One contact problem in physical units, on the whole map (`M` = [`Surface`], the serial run)
+/// or on one rank's rows of it (`M` = [`super::distributed::map::Slab`]).
+#[derive(Debug)]
+pub struct Problem<'a, M = Surface> {
+    /// The rigid rough substrate (this rank's rows of it on a slab).
+    pub surface: &'a M,
     /// Contact modulus E* (Pa).
     pub modulus: f64,
     /// Slab thickness t (m); `f64::INFINITY` = semi-infinite.
@@ -163,11 +166,63 @@ pub struct Problem<'a> {
     pub range: f64,
 }
 
-impl Problem<'_> {
-    /// Checks every field.
-    pub fn validate(&self) -> Result<()> {
+impl<M> Clone for Problem<'_, M> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<M> Copy for Problem<'_, M> {}
+
+/// The map of a [`Problem`] as this rank holds it.
+#[derive(Debug, Clone, Copy)]
+pub enum Layout<'a> {
+    /// The whole map (the serial run: Polonsky–Keer and the whole map's FFT run on it).
+    Whole(&'a Surface),
+    /// One rank's rows of the map (a run over ranks: FIRE with the slab FFT).
+    Slab(&'a Slab),
+}
+
+impl<'a> Layout<'a> {
+    /// (nx, ny, Δa) of the whole map, this rank's heights (m) and the index of its first node
+    /// in the whole map.
+    pub fn rows(self) -> ((usize, usize, f64), &'a [f64], usize) {
+        match self {
+            Layout::Whole(s) => ((s.nx, s.ny, s.spacing), &s.heights, 0),
+            Layout::Slab(s) => ((s.nx, s.ny, s.spacing), &s.heights, s.offset()),
+        }
+    }
+}
+
+/// A map a [`Problem`] is posed on: the whole map, or one rank's rows of it.
+pub trait MapRows {
+    /// How this rank holds the map.
+    fn layout(&self) -> Layout<'_>;
+}
+
+impl MapRows for Surface {
+    fn layout(&self) -> Layout<'_> {
+        Layout::Whole(self)
+    }
+}
+
+impl MapRows for Slab {
+    fn layout(&self) -> Layout<'_> {
+        Layout::Slab(self)
+    }
+}
+
+impl<M: MapRows> Problem<'_, M> {
+    /// Checks every field; the map (all ranks' rows, `comm` joining them:
+    /// [`super::distributed::Solo`] for the whole map) must not be flat. Every rank gets the
+    /// same answer.
+    pub fn validate(&self, comm: &dyn Comm) -> Result<()> {
         check_loads(self.modulus, self.thickness, self.pressure, self.gamma, self.range)?;
-        if self.surface.heights.iter().all(|&h| h == self.surface.heights[0]) {
+        let (_, heights, _) = self.surface.layout().rows();
+        let (lo, hi) = heights
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| (a.min(h), b.max(h)));
+        if all_min(comm, lo) == all_max(comm, hi) {
             return Err(Error::invalid_text(
                 Field::HeightMap,
                 "a flat map",

@@ -1,8 +1,13 @@
 //! One GFMD run of a scene: generate (or take) the map, relax, measure, and evaluate the theory
 //! on the map's own discrete spectrum.
 
+use super::distributed::comm::{Comm, Solo};
+use super::fire::relax_from;
+use super::measure::measure_slab;
+use super::problem::MapRows;
 use super::reduction::{reduce, Reduction};
-use super::{measure, solve_from, GfmdOptions, GfmdSetup, GridSpec, Problem, Progress, Stage};
+use super::sweep::LoadMap;
+use super::{GfmdOptions, GfmdSetup, GridSpec, Problem, Progress, Stage};
 use crate::contact::ContactStats;
 use crate::error::{Error, Field, Result};
 use crate::input::scene::Scene;
@@ -140,12 +145,30 @@ pub fn run(
 ) -> Result<GfmdResult> {
     let t0 = Instant::now();
     let prep = prepare(setup)?;
-    let scene = &prep.scene;
-    let surf = &prep.surface;
-    let gbar = prep.rms_gradient;
+    let r = run_on(&Solo, &prep, setup, opts, progress, cancel, t0)?;
+    Ok(GfmdResult {
+        surface: Some(prep.surface),
+        ..r
+    })
+}
+
+/// [`run()`] on `prep`, this rank's part of the map of `setup` (`comm` joining the ranks):
+/// relaxes, measures and (on rank 0; None elsewhere) evaluates the theory on the map; `t0` is
+/// the start of the run. The map is not in the result.
+pub(crate) fn run_on<M: LoadMap>(
+    comm: &dyn Comm,
+    prep: &M,
+    setup: &GfmdSetup,
+    opts: &GfmdOptions,
+    progress: &mut dyn FnMut(Progress),
+    cancel: &AtomicBool,
+    t0: Instant,
+) -> Result<GfmdResult> {
+    let (scene, rms_gradient, rms_height) = prep.scene_and_moments();
     let problem = prep.problem(scene.pressure);
-    let sol = solve_from(&problem, opts, None, progress, cancel)?;
-    let m = measure(&problem, &sol, opts);
+    let sol = relax_from(comm, &problem, opts, None, progress, cancel)?.equilibrium()?;
+    let ((nx, ny, da), _, _) = problem.surface.layout().rows();
+    let m = measure_slab(comm, &sol, opts, nx * ny, scene.modulus, rms_gradient, rms_height);
     progress(Progress {
         stage: Stage::Theory,
         iteration: sol.iterations,
@@ -154,9 +177,13 @@ pub fn run(
     });
     // theory on the same realisation
     let t_theory = Instant::now();
-    let (theory, theory_error) = theory_comparison(prep.theory_scene(scene.pressure), scene, cancel)?;
-    let grid_spec = setup.surface.is_none().then_some(setup.grid);
+    let (theory, theory_error) = if comm.rank() == 0 {
+        theory_comparison(prep.theory_scene(scene.pressure), scene, cancel)?
+    } else {
+        (None, None)
+    };
     let theory_elapsed_s = t_theory.elapsed().as_secs_f64();
+    let (grid, reduction) = prep.grid_and_reduction();
     Ok(GfmdResult {
         stats: m.stats,
         mean_gap: m.mean_gap,
@@ -168,7 +195,7 @@ pub fn run(
         elapsed_s: t0.elapsed().as_secs_f64(),
         solve_elapsed_s: sol.elapsed_s,
         theory_elapsed_s,
-        grid: surf.nx,
+        grid,
         converged: sol.residual <= opts.tolerance,
         seed: setup.surface.is_none().then_some(setup.seed),
         pressure: scene.pressure,
@@ -176,21 +203,21 @@ pub fn run(
         thickness_qr: scene.thickness_qr.is_finite().then_some(scene.thickness_qr),
         gamma: scene.gamma,
         range_m: scene.range,
-        system_size_m: surf.size_x(),
-        spacing_m: surf.spacing,
-        grid_spec,
-        rms_gradient: gbar,
-        rms_height_m: surf.rms_height(),
+        system_size_m: nx as f64 * da,
+        spacing_m: da,
+        grid_spec: setup.surface.is_none().then_some(setup.grid),
+        rms_gradient,
+        rms_height_m: rms_height,
         contact_nodes: m.contact_nodes,
         adhesion_resolution: if scene.gamma > 0.0 {
-            scene.gamma / scene.modulus * surf.spacing / (scene.range * scene.range)
+            scene.gamma / scene.modulus * da / (scene.range * scene.range)
         } else {
             0.0
         },
         theory,
         theory_error,
-        reduction: prep.reduction.clone(),
-        surface: Some(prep.surface),
+        reduction,
+        surface: None,
     })
 }
 
@@ -213,16 +240,7 @@ pub struct Prepared {
 impl Prepared {
     /// The problem at reduced pressure `pressure` (p* by the map's ḡ).
     pub fn problem(&self, pressure: f64) -> Problem<'_> {
-        let sc = &self.scene;
-        let (thickness, pressure) = body_and_load(sc, self.q_r, self.rms_gradient, pressure);
-        Problem {
-            surface: &self.surface,
-            modulus: sc.modulus,
-            thickness,
-            pressure,
-            gamma: sc.gamma,
-            range: sc.range,
-        }
+        problem_on(&self.surface, &self.scene, (self.q_r, self.rms_gradient), pressure)
     }
 
     /// The scene on the map's own discrete spectrum at p* = `pressure` (for the theory),
@@ -234,15 +252,28 @@ impl Prepared {
     }
 }
 
-/// The body's thickness t (m; ∞ for a half-space) and the load p₀ (Pa) of `scene` at
-/// p* = `pressure` on a map with q_r and ḡ = `rms_gradient` (the whole map and its slabs).
-pub(crate) fn body_and_load(scene: &Scene, q_r: f64, rms_gradient: f64, pressure: f64) -> (f64, f64) {
+/// The problem of `scene` at p* = `pressure` on `map` (the whole map or a rank's rows of it)
+/// with q_r and ḡ = `rms_gradient` of the whole map: the body's thickness t (m; ∞ for a
+/// half-space) and the load p₀ (Pa) from t·q_r and p*.
+pub(crate) fn problem_on<'a, M>(
+    map: &'a M,
+    scene: &Scene,
+    (q_r, rms_gradient): (f64, f64),
+    pressure: f64,
+) -> Problem<'a, M> {
     let thickness = if scene.thickness_qr.is_infinite() {
         f64::INFINITY
     } else {
         scene.thickness_qr / q_r
     };
-    (thickness, pressure * scene.modulus * rms_gradient)
+    Problem {
+        surface: map,
+        modulus: scene.modulus,
+        thickness,
+        pressure: pressure * scene.modulus * rms_gradient,
+        gamma: scene.gamma,
+        range: scene.range,
+    }
 }
 
 /// `scene` on a map's discrete spectrum `d` at p* = `pressure`, its mode groups merged into
@@ -263,15 +294,7 @@ pub fn prepare(setup: &GfmdSetup) -> Result<Prepared> {
     let scene = &setup.scene;
     match &setup.surface {
         Some(s) => {
-            if !s.is_square() {
-                return Err(Error::invalid_text(
-                    Field::HeightMap,
-                    format!("{} x {}", s.nx, s.ny),
-                    "an N x N map",
-                ));
-            }
-            s.check_rough()?;
-            let q_r = 2.0 * std::f64::consts::PI * setup.grid.system_size_ratio / s.size_x();
+            let q_r = given_map(s, setup, 1)?;
             Ok(Prepared {
                 scene: scene.clone(),
                 surface: s.clone(),
@@ -298,6 +321,37 @@ pub fn prepare(setup: &GfmdSetup) -> Result<Prepared> {
             })
         }
     }
+}
+
+/// The q_r of the map given to `setup`, checked for a run on `ranks` ranks: square, rough,
+/// and at least one row and one column of the half spectrum per rank.
+///
+/// # Errors
+/// [`Error::Invalid`] naming the map or the grid.
+pub(crate) fn given_map(s: &Surface, setup: &GfmdSetup, ranks: usize) -> Result<f64> {
+    if !s.is_square() {
+        return Err(Error::invalid_text(
+            Field::HeightMap,
+            format!("{} x {}", s.nx, s.ny),
+            "an N x N map",
+        ));
+    }
+    check_ranks(s.nx, ranks)?;
+    s.check_rough()?;
+    Ok(2.0 * std::f64::consts::PI * setup.grid.system_size_ratio / s.size_x())
+}
+
+/// A grid of side `n` splits over `size` ranks when every rank gets at least one row and one
+/// column of the half spectrum.
+pub(crate) fn check_ranks(n: usize, size: usize) -> Result<()> {
+    if n < size || n / 2 + 1 < size {
+        return Err(Error::invalid(
+            Field::Grid,
+            n as f64,
+            format!("N >= {size} (at least one row per rank on {size} ranks)"),
+        ));
+    }
+    Ok(())
 }
 
 /// The theory beside GFMD: the scene `th` on the map's spectrum evaluated (a_r, the stresses,

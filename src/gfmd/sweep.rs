@@ -19,7 +19,9 @@
 
 use super::distributed::comm::{chain_sum, Comm, Solo};
 use super::fire::{relax_from, Relaxation};
-use super::{measure, prepare, GfmdOptions, GfmdSetup, Measurements, Prepared, Problem, Progress, Solution, Stage};
+use super::measure::measure_slab;
+use super::problem::MapRows;
+use super::{prepare, GfmdOptions, GfmdSetup, Measurements, Prepared, Problem, Progress, Solution, Stage};
 use crate::error::{Error, Result};
 use crate::input::scene::Scene;
 use crate::surface::heightmap::Surface;
@@ -80,10 +82,23 @@ pub struct GfmdSweep {
 }
 
 impl GfmdSweepRow {
-    /// The row of a contact relaxed at p* = `p` (measured with [`measure()`], the energy with
-    /// [`energy`]).
-    pub fn measured(p: f64, problem: &Problem<'_>, sol: &Solution, opts: &GfmdOptions) -> GfmdSweepRow {
-        GfmdSweepRow::of(p, &measure(problem, sol, opts), energy(problem, sol), sol)
+    /// The row of a contact relaxed at p* = `p` on `problem`'s map: this rank's rows of it,
+    /// `comm` joining them ([`Solo`] for the whole map), the whole map's ḡ and h_rms (m) in
+    /// `moments`. Measured with [`super::measure::measure_slab`], the energy with
+    /// [`energy_slab`]; every rank gets the row.
+    pub fn measured<M: MapRows>(
+        comm: &dyn Comm,
+        p: f64,
+        problem: &Problem<'_, M>,
+        (rms_gradient, rms_height): (f64, f64),
+        sol: &Solution,
+        opts: &GfmdOptions,
+    ) -> GfmdSweepRow {
+        let ((nx, ny, _), heights, _) = problem.surface.layout().rows();
+        let nodes = nx * ny;
+        let m = measure_slab(comm, sol, opts, nodes, problem.modulus, rms_gradient, rms_height);
+        let load = (problem.pressure, problem.gamma, problem.range);
+        GfmdSweepRow::of(p, &m, energy_slab(comm, heights, nodes, load, sol), sol)
     }
 
     /// The row at p* = `p` from the measurements `m` and the energy `u` of the relaxation `sol`.
@@ -154,6 +169,17 @@ pub(crate) trait PathSolver {
 /// A map a [`Walker`] relaxes on: the whole map ([`Prepared`]) or one rank's slab of it
 /// (`distributed::run::PreparedSlab`).
 pub(crate) trait LoadMap {
+    /// How this rank holds the map.
+    type Map: MapRows;
+    /// The problem at p* = `p` (p₀ by the map's ḡ).
+    fn problem(&self, p: f64) -> Problem<'_, Self::Map>;
+    /// The scene GFMD runs, and the whole map's ḡ and h_rms (m).
+    fn scene_and_moments(&self) -> (&Scene, f64, f64);
+    /// The scene on the map's discrete spectrum at p* = `p` (for the theory).
+    fn theory_scene(&self, p: f64) -> Result<Scene>;
+    /// The side of the grid, and the full and reduced invariants (None for a loaded map).
+    fn grid_and_reduction(&self) -> (usize, Option<super::reduction::Reduction>);
+
     /// Relaxes at p* = `p` from `start` (this rank's gap, m; `None`: first touch) and measures
     /// an equilibrium: its row (every rank gets it) and the relaxation.
     fn relax_at(
@@ -164,32 +190,35 @@ pub(crate) trait LoadMap {
         opts: &GfmdOptions,
         progress: &mut dyn FnMut(Progress),
         cancel: &AtomicBool,
-    ) -> Result<(Option<GfmdSweepRow>, Relaxation)>;
-    /// The scene and the map's ḡ.
-    fn scene_and_gradient(&self) -> (&Scene, f64);
-}
-
-impl LoadMap for Prepared {
-    fn relax_at(
-        &self,
-        _comm: &dyn Comm,
-        p: f64,
-        start: Option<&[f64]>,
-        opts: &GfmdOptions,
-        progress: &mut dyn FnMut(Progress),
-        cancel: &AtomicBool,
     ) -> Result<(Option<GfmdSweepRow>, Relaxation)> {
         let problem = self.problem(p);
-        let out = relax_from(&problem, opts, start, progress, cancel)?;
+        let out = relax_from(comm, &problem, opts, start, progress, cancel)?;
+        let (_, g, h_rms) = self.scene_and_moments();
         let row = match &out {
-            Relaxation::Equilibrium(sol) => Some(GfmdSweepRow::measured(p, &problem, sol, opts)),
+            Relaxation::Equilibrium(sol) => Some(GfmdSweepRow::measured(comm, p, &problem, (g, h_rms), sol, opts)),
             Relaxation::ContactLost { .. } => None,
         };
         Ok((row, out))
     }
+}
 
-    fn scene_and_gradient(&self) -> (&Scene, f64) {
-        (&self.scene, self.rms_gradient)
+impl LoadMap for Prepared {
+    type Map = Surface;
+
+    fn problem(&self, p: f64) -> Problem<'_> {
+        Prepared::problem(self, p)
+    }
+
+    fn scene_and_moments(&self) -> (&Scene, f64, f64) {
+        (&self.scene, self.rms_gradient, self.surface.rms_height())
+    }
+
+    fn theory_scene(&self, p: f64) -> Result<Scene> {
+        Prepared::theory_scene(self, p)
+    }
+
+    fn grid_and_reduction(&self) -> (usize, Option<super::reduction::Reduction>) {
+        (self.surface.nx, self.reduction.clone())
     }
 }
 
@@ -241,7 +270,7 @@ impl<M: LoadMap> PathSolver for Walker<'_, M> {
     }
 
     fn strength(&self) -> Option<f64> {
-        let (sc, g) = self.prep.scene_and_gradient();
+        let (sc, g, _) = self.prep.scene_and_moments();
         (sc.gamma > 0.0).then(|| sc.gamma / sc.range / (sc.modulus * g))
     }
 }
@@ -285,18 +314,18 @@ pub(crate) fn walk_loads(
     Ok(rows)
 }
 
-/// The sweep of `rows` with the theory's sweep on the map beside it: `theory` is the scene on
-/// the map's spectrum (or why there is none), `None` where this rank does not evaluate it;
-/// `map` is (grid side, seed, reduction). `progress` gets the one [`Stage::Theory`] report.
+/// The sweep of `rows` on `prep` (this rank's part of the map of `setup`) with the theory's
+/// sweep on the map beside it, which rank 0 evaluates (None elsewhere); `iterations` and `t0`
+/// are the steps taken and the start of the run. `progress` gets the one [`Stage::Theory`]
+/// report.
 ///
 /// # Errors
 /// [`Error::Cancelled`] only (any other failure of the theory is reported beside the rows).
-pub(crate) fn beside_theory(
-    rows: Vec<GfmdSweepRow>,
-    theory: Option<Result<Scene>>,
+pub(crate) fn beside_theory<M: LoadMap>(
+    comm: &dyn Comm,
+    (prep, setup): (&M, &GfmdSetup),
+    (rows, iterations, t0): (Vec<GfmdSweepRow>, usize, Instant),
     spec: &SweepSpec,
-    map: (usize, Option<u64>, Option<super::reduction::Reduction>),
-    (iterations, t0): (usize, Instant),
     progress: &mut dyn FnMut(usize, Progress),
     cancel: &AtomicBool,
 ) -> Result<GfmdSweep> {
@@ -311,6 +340,7 @@ pub(crate) fn beside_theory(
             },
         );
     }
+    let theory = (comm.rank() == 0).then(|| prep.theory_scene(spec.from));
     let (theory, theory_error) =
         match theory.map(|sc| sc.and_then(|sc| sweep::sweep(&sc, spec, &Options::default(), Some(cancel)))) {
             None => (None, None),
@@ -318,11 +348,11 @@ pub(crate) fn beside_theory(
             Some(Ok(s)) => (Some(s), None),
             Some(Err(e)) => (None, Some(e.to_string())),
         };
-    let (grid, seed, reduction) = map;
+    let (grid, reduction) = prep.grid_and_reduction();
     Ok(GfmdSweep {
         rows,
         grid,
-        seed,
+        seed: setup.surface.is_none().then_some(setup.seed),
         reduction,
         theory,
         theory_error,
@@ -370,13 +400,7 @@ pub fn run_sweep(
 ) -> Result<GfmdSweep> {
     let t0 = Instant::now();
     let (prep, rows, iterations) = run_loads(setup, spec, opts, progress, cancel)?;
-    let map = (
-        prep.surface.nx,
-        setup.surface.is_none().then_some(setup.seed),
-        prep.reduction.clone(),
-    );
-    let theory = Some(prep.theory_scene(spec.from));
-    let sw = beside_theory(rows, theory, spec, map, (iterations, t0), progress, cancel)?;
+    let sw = beside_theory(&Solo, (&prep, setup), (rows, iterations, t0), spec, progress, cancel)?;
     Ok(GfmdSweep {
         surface: Some(prep.surface),
         ..sw
@@ -394,7 +418,20 @@ pub fn run_loads(
 ) -> Result<(Prepared, Vec<GfmdSweepRow>, usize)> {
     spec.validate()?;
     opts.validate()?;
-    let mut walker = Walker::new(&Solo, prepare(setup)?, opts);
-    let rows = walk_loads(&mut walker, &spec.pressures(), progress, cancel)?;
+    walk_on(&Solo, prepare(setup)?, &spec.pressures(), opts, progress, cancel)
+}
+
+/// The loads `loads` walked on `prep` (this rank's part of the map, on `comm`), each from the
+/// last one's gap: the map, one row per load and the total solver steps.
+pub(crate) fn walk_on<M: LoadMap>(
+    comm: &dyn Comm,
+    prep: M,
+    loads: &[f64],
+    opts: &GfmdOptions,
+    progress: &mut dyn FnMut(usize, Progress),
+    cancel: &AtomicBool,
+) -> Result<(M, Vec<GfmdSweepRow>, usize)> {
+    let mut walker = Walker::new(comm, prep, opts);
+    let rows = walk_loads(&mut walker, loads, progress, cancel)?;
     Ok((walker.prep, rows, walker.iterations))
 }

@@ -11,6 +11,8 @@
 //!   everything `asperity sweep` prints.
 //! - [`mod@cycle`]: the theory's path along a load cycle, what `asperity sweep --cycle`
 //!   prints.
+//! - [`mod@compare`]: every model against one reference, everything `asperity compare`
+//!   prints.
 //! - [`mod@gauge`]: the custom model fitted to a reference, and the reference assembled,
 //!   everything `asperity gauge` prints.
 //! - [`mod@gfmd`]: a GFMD run's spec with its defaults and ranges, its study (ladder,
@@ -19,12 +21,18 @@
 //!   `asperity psd` prints.
 //! - [`mod@pull_off`]: the theory's pull-off, the DMT routes', GFMD's nearest and how far
 //!   each was measured from GFMD: what `asperity run --pull-off` and `sweep --cycle` add.
+//! - [`mod@csv`]: the reports as CSV, as every front end writes them.
 //! - [`mod@names`]: the public names kept as aliases of a preferred one.
+//! - [`mod@numfmt`]: numbers as every front end writes them (tick labels, legends, panel
+//!   values, durations).
 
+pub mod compare;
+pub mod csv;
 pub mod cycle;
 pub mod gauge;
 pub mod gfmd;
 pub mod names;
+pub mod numfmt;
 pub mod point;
 pub mod psd;
 pub mod pull_off;

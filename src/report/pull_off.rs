@@ -58,27 +58,6 @@ pub struct PullOffReport {
     pub notes: Vec<String>,
 }
 
-impl PullOffReport {
-    /// The `#` lines a CSV carries above its rows: each pull-off, GFMD's nearest and the trust.
-    pub fn csv_lines(&self) -> String {
-        let opt = |x: Option<f64>| x.map_or(String::new(), |x| format!("{x:e}"));
-        let mut out = format!(
-            "# bam_pull_off_pressure: {}\n# gap_dmt_pull_off_pressure: {}\n",
-            opt(self.bam_pull_off_pressure),
-            opt(self.gap_dmt_pull_off_pressure)
-        );
-        if let Some(g) = &self.gfmd {
-            out += &format!(
-                "# gfmd_pull_off_pressure: {:e} {}\n",
-                g.pull_off_pressure,
-                opt(g.pull_off_pressure_err)
-            );
-        }
-        out += &format!("# pull_off_trust: {}\n", self.trust.summary);
-        out
-    }
-}
-
 /// The theory's pull-off of `scene` along the tensile path from `step`.
 ///
 /// # Errors
@@ -156,7 +135,7 @@ mod tests {
         // both DMT routes hold tension on this slab (§6.3)
         assert!(r.bam_pull_off_pressure.unwrap() < 0.0 && r.gap_dmt_pull_off_pressure.unwrap() < 0.0);
         assert!(r.gfmd.is_some() && r.trust.known, "{:?}", r.trust);
-        let lines = r.csv_lines();
+        let lines = super::super::csv::pull_off_comments(&r);
         assert!(lines.contains("# bam_pull_off_pressure: -") && lines.contains("# pull_off_trust: model"));
     }
 

@@ -289,6 +289,26 @@ pub fn wave_number_sq(kx: usize, ky: usize, nx: usize, ny: usize, da: f64) -> f6
 /// number π/Δa).
 pub fn generate(spec: &SelfAffine, n: usize, seed: u64) -> Result<Surface> {
     crate::work::start();
+    let (mut ht, da) = fourier_rows(spec, n, seed, (0, n))?;
+    // h(r) = Σ_q h̃(q) e^{iq·r}: the unnormalised inverse transform
+    crate::numerics::fft2::transform(&mut ht, n, true);
+    let heights: Vec<f64> = ht.iter().map(|c| c.re).collect();
+    Surface::new(n, n, da, heights)
+}
+
+/// Rows `y0..y1` of the Fourier amplitudes h̃ of [`generate`]'s n × n map (row-major, scaled
+/// to the spectrum's ḡ), and Δa (m). Every mode is drawn in the same order whatever the rows,
+/// so that a rank's rows equal the whole map's bit for bit (the map by slabs of a run over
+/// ranks, `gfmd::distributed::map`).
+///
+/// # Errors
+/// As [`generate`].
+pub(crate) fn fourier_rows(
+    spec: &SelfAffine,
+    n: usize,
+    seed: u64,
+    (y0, y1): (usize, usize),
+) -> Result<(Vec<Complex64>, f64)> {
     let l = spec.system_size;
     if !(4..=MAX_GRID).contains(&n) {
         return Err(Error::invalid(Field::Grid, n as f64, format!("4 <= N <= {MAX_GRID}")));
@@ -314,8 +334,9 @@ pub fn generate(spec: &SelfAffine, n: usize, seed: u64) -> Result<Surface> {
             i as i64 - n as i64
         }
     };
+    let mine = |i: usize| (y0..y1).contains(&i);
     let mut rng = SplitMix64::new(seed);
-    let mut ht = vec![Complex64::new(0.0, 0.0); n * n];
+    let mut ht = vec![Complex64::new(0.0, 0.0); (y1 - y0) * n];
     let mut g2 = 0.0;
     // row index i ↔ y, column j ↔ x; the conjugate of (i, j) is (−i, −j) mod n
     for i in 0..n {
@@ -333,13 +354,19 @@ pub fn generate(spec: &SelfAffine, n: usize, seed: u64) -> Result<Surface> {
             let amp = (spec.psd(q.min(qs)) * (2.0 * PI).powi(2) / area).sqrt();
             if ck == k {
                 let sign = if rng.next_u64() >> 63 == 0 { 1.0 } else { -1.0 };
-                ht[k] = Complex64::new(sign * amp, 0.0);
+                if mine(i) {
+                    ht[(i - y0) * n + j] = Complex64::new(sign * amp, 0.0);
+                }
                 g2 += q * q * amp * amp;
             } else {
                 let phase = 2.0 * PI * rng.next_f64();
                 let c = Complex64::from_polar(amp, phase);
-                ht[k] = c;
-                ht[ck] = c.conj();
+                if mine(i) {
+                    ht[(i - y0) * n + j] = c;
+                }
+                if mine(ci) {
+                    ht[(ci - y0) * n + cj] = c.conj();
+                }
                 g2 += 2.0 * q * q * amp * amp;
             }
         }
@@ -351,15 +378,11 @@ pub fn generate(spec: &SelfAffine, n: usize, seed: u64) -> Result<Surface> {
             "a grid resolving at least one mode below q_s",
         ));
     }
-    let target = spec.moment(2).sqrt();
-    let scale = target / g2.sqrt();
+    let scale = spec.moment(2).sqrt() / g2.sqrt();
     for c in ht.iter_mut() {
         *c *= scale;
     }
-    // h(r) = Σ_q h̃(q) e^{iq·r}: the unnormalised inverse transform
-    crate::numerics::fft2::transform(&mut ht, n, true);
-    let heights: Vec<f64> = ht.iter().map(|c| c.re).collect();
-    Surface::new(n, n, da, heights)
+    Ok((ht, da))
 }
 
 #[cfg(test)]

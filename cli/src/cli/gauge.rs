@@ -24,9 +24,8 @@ use asperity::fit::{self, Fit, Param};
 use asperity::input::model::Model;
 use asperity::input::preset::{ModelSpec, Preset};
 use asperity::input::scene::Scene;
-use asperity::report::gauge;
+use asperity::report::{self, gauge};
 use clap::Args;
-use serde::Serialize;
 use std::path::{Path, PathBuf};
 
 /// Reference options shared by `gauge` and `compare`.
@@ -376,55 +375,14 @@ pub struct CompareArgs {
     pub png: Option<PathBuf>,
 }
 
-/// One model's row of `compare`.
-#[derive(Debug, Serialize)]
-pub struct CompareRow {
-    /// "model 1".."model 4", "YP08", "Xu24", or the preset file's name.
-    pub model: String,
-    /// Per observable: observable, points, mean, max (relative errors; L1 for pr).
-    pub scores: Vec<fit::compare::Score>,
-    /// Why the model has no scores on this scene (e.g. a variant without adhesion); absent
-    /// when it has.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub note: Option<String>,
-}
-
-/// The JSON object printed by `compare --format json`.
-#[derive(Debug, Serialize)]
-pub struct CompareOutput {
-    /// "eq18" or the file name.
-    pub reference: String,
-    /// One row per model.
-    pub models: Vec<CompareRow>,
-}
+/// The JSON object printed by `compare --format json` (the library's report).
+pub use asperity::report::compare::CompareReport as CompareOutput;
 
 /// Runs `asperity compare`.
 pub fn compare(args: &CompareArgs) -> Result<()> {
-    use asperity::input::model::ModelKind;
     let (preset, mut scene) = args.scene.resolve(None)?;
     let (r, _) = resolve_reference(&args.reference, &preset, &args.scene, &mut scene)?;
-    let mut models: Vec<(String, Model)> = Vec::new();
-    for t in args.models.split(',').map(str::trim).filter(|t| !t.is_empty()) {
-        let kind: ModelKind = t.parse().map_err(|_| {
-            Error::invalid_text(
-                Field::Other("--models".into()),
-                t,
-                format!("a comma-separated list of {}", ModelKind::named_list()),
-            )
-        })?;
-        if kind == ModelKind::Custom {
-            return Err(Error::invalid_text(
-                Field::Other("--models".into()),
-                t,
-                format!(
-                    "{} (a custom model comes in with --fitted PRESET)",
-                    ModelKind::named_list()
-                ),
-            ));
-        }
-        let m = Model::of_kind(kind, &scene.model())?;
-        models.push((m.label(), m));
-    }
+    let mut models = report::compare::models(&args.models, &scene.model(), &Field::Other("--models".into()))?;
     for p in &args.fitted {
         let preset = Preset::load(p).map_err(|e| super::parse::preset_under_flag(e, "--fitted"))?;
         let name = p
@@ -432,39 +390,13 @@ pub fn compare(args: &CompareArgs) -> Result<()> {
             .map_or("fitted".into(), |s| s.to_string_lossy().into_owned());
         models.push((name, preset.model()?));
     }
-    let rows: Vec<CompareRow> = models
-        .iter()
-        .map(|(name, m)| match fit::compare::score(&scene, m, &r) {
-            Ok(scores) => CompareRow {
-                model: name.clone(),
-                scores,
-                note: None,
-            },
-            Err(e) => CompareRow {
-                model: name.clone(),
-                scores: Vec::new(),
-                note: Some(super::render_error(&e)),
-            },
-        })
-        .collect();
+    let out = report::compare::compare(&scene, &r, &models, super::render_error);
     if args.svg.is_some() || args.png.is_some() {
-        let drawable: Vec<(&str, Model)> = models
-            .iter()
-            .zip(&rows)
-            .filter(|(_, row)| row.note.is_none())
-            .map(|((n, m), _)| (n.as_str(), *m))
-            .collect();
-        let spec = overlay(&scene, &r, &drawable, "compare")?;
+        let spec = overlay(&scene, &r, &out.scored(&models), "compare")?;
         write_charts(&spec, args.svg.as_deref(), args.png.as_deref())?;
     }
     match args.format {
-        Format::Json => {
-            let out = CompareOutput {
-                reference: r.name.clone(),
-                models: rows,
-            };
-            emit(&serde_json::to_string_pretty(&out).expect("serialisable"));
-        }
+        Format::Json => emit(&serde_json::to_string_pretty(&out).expect("serialisable")),
         Format::Table => {
             let obs: Vec<&str> = r.observables().iter().map(|o| o.key()).collect();
             let mut t = format!(
@@ -477,7 +409,7 @@ pub fn compare(args: &CompareArgs) -> Result<()> {
                 t += &format!(" {:>26}", format!("{o} mean / max"));
             }
             t += "\n";
-            for row in &rows {
+            for row in &out.models {
                 t += &format!("{:<14}", row.model);
                 match &row.note {
                     Some(n) => t += &format!(" {n}"),

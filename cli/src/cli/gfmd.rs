@@ -12,6 +12,7 @@ use super::progress::{load_label, Steps};
 use super::{emit, SceneArgs};
 use asperity::error::{Error, Result};
 use asperity::gfmd::cycle::CycleSpec;
+use asperity::gfmd::distributed::{Job, Outcome};
 use asperity::gfmd::ladder::{Ensemble, Extrapolated, Ladder, MeanSe};
 use asperity::gfmd::reduction::Reduction;
 use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec, Progress, Stage};
@@ -35,7 +36,9 @@ pub enum GfmdFormat {
     Csv,
 }
 
-pub use super::gfmd_csv::{single_csv, sweep_csv, GFMD_CSV_HEADER};
+/// `gfmd --format csv`: the library's header and writers ([`asperity::report::csv`]) under the
+/// names the binary has always used.
+pub use asperity::report::csv::{gfmd_single as single_csv, gfmd_sweep as sweep_csv, GFMD_HEADER as GFMD_CSV_HEADER};
 
 /// Arguments of `gfmd`.
 #[derive(Debug, Clone, Args)]
@@ -155,19 +158,47 @@ pub fn setup(args: &GfmdArgs) -> Result<(GfmdSetup, GfmdOptions)> {
     spec.setup(&preset, &scene, surface)
 }
 
+/// What `args` ask GFMD to do: a load path (`--cycle`, or `--from` above `--to`), a load
+/// sweep (`--from` and `--to`), or one run.
+pub fn job(args: &GfmdArgs) -> Job {
+    match (args.from, args.to) {
+        (Some(from), Some(to)) if args.cycle || to < from => Job::Cycle(CycleSpec {
+            from,
+            to,
+            points: args.points,
+            cycle: args.cycle,
+        }),
+        (Some(from), Some(to)) => Job::Sweep(SweepSpec {
+            from,
+            to,
+            points: args.points,
+        }),
+        _ => Job::Run,
+    }
+}
+
+/// A load sweep's or path's output in `format` (a table is the CSV); a single run's as
+/// [`table`] and [`single_csv`] write it (without the study over seeds or resolutions).
+pub fn path_output(out: Outcome, format: GfmdFormat) -> String {
+    let json = |v: serde_json::Result<String>| v.expect("serialisable");
+    match (out, format) {
+        (Outcome::Cycle(c), GfmdFormat::Json) => json(serde_json::to_string_pretty(&c)),
+        (Outcome::Cycle(c), _) => asperity::report::csv::gfmd_cycle(&c),
+        (Outcome::Sweep(sw), GfmdFormat::Json) => json(serde_json::to_string_pretty(&sw)),
+        (Outcome::Sweep(sw), _) => sweep_csv(&sw),
+        (Outcome::Run(r), GfmdFormat::Json) => json(serde_json::to_string_pretty(&r)),
+        (Outcome::Run(r), GfmdFormat::Table) => table(&r),
+        (Outcome::Run(r), GfmdFormat::Csv) => single_csv(&r),
+    }
+}
+
 /// Runs `asperity gfmd`.
 /// On several MPI ranks the caller runs [`super::gfmd_mpi::on_ranks`] instead.
 pub fn run(args: &GfmdArgs) -> Result<()> {
     let (setup, opts) = setup(args)?;
     let cancel = AtomicBool::new(false);
-    if let (Some(from), Some(to)) = (args.from, args.to) {
-        if args.cycle || to < from {
-            let spec = CycleSpec {
-                from,
-                to,
-                points: args.points,
-                cycle: args.cycle,
-            };
+    match job(args) {
+        Job::Cycle(spec) => {
             let labels = super::gfmd_cycle::path_labels(&spec);
             let mut steps = Steps::new("gfmd", "load", labels.len());
             let c = gfmd::cycle::run_cycle(
@@ -178,34 +209,24 @@ pub fn run(args: &GfmdArgs) -> Result<()> {
                 &cancel,
             );
             steps.finish();
-            let c = c?;
-            match args.format {
-                GfmdFormat::Json => emit(&serde_json::to_string_pretty(&c).expect("serialisable")),
-                GfmdFormat::Table | GfmdFormat::Csv => emit(&super::gfmd_cycle::cycle_csv(&c)),
-            }
+            emit(&path_output(Outcome::Cycle(Box::new(c?)), args.format));
             return Ok(());
         }
-        let spec = SweepSpec {
-            from,
-            to,
-            points: args.points,
-        };
-        let loads = spec.pressures();
-        let mut steps = Steps::new("gfmd", "load", loads.len());
-        let sw = gfmd::sweep::run_sweep(
-            &setup,
-            &spec,
-            &opts,
-            &mut |k, p| report(&mut steps, k, &p, &opts, |k| loads.get(k).map(|&p| load_label(p))),
-            &cancel,
-        );
-        steps.finish();
-        let sw = sw?;
-        match args.format {
-            GfmdFormat::Json => emit(&serde_json::to_string_pretty(&sw).expect("serialisable")),
-            GfmdFormat::Table | GfmdFormat::Csv => emit(&sweep_csv(&sw)),
+        Job::Sweep(spec) => {
+            let loads = spec.pressures();
+            let mut steps = Steps::new("gfmd", "load", loads.len());
+            let sw = gfmd::sweep::run_sweep(
+                &setup,
+                &spec,
+                &opts,
+                &mut |k, p| report(&mut steps, k, &p, &opts, |k| loads.get(k).map(|&p| load_label(p))),
+                &cancel,
+            );
+            steps.finish();
+            emit(&path_output(Outcome::Sweep(Box::new(sw?)), args.format));
+            return Ok(());
         }
-        return Ok(());
+        Job::Run => {}
     }
     let pressure = setup.scene.pressure();
     let mut steps = Steps::new("gfmd", "run", 1);

@@ -38,12 +38,9 @@ pub fn on_ranks(args: &GfmdArgs) -> Option<Result<()>> {
 #[cfg(feature = "mpi")]
 mod distributed {
     use super::super::emit;
-    use super::super::gfmd::{setup, single_csv, sweep_csv, table, GfmdArgs, GfmdFormat, MethodArg};
-    use super::super::gfmd_cycle::cycle_csv;
+    use super::super::gfmd::{job, path_output, setup, GfmdArgs, MethodArg};
     use asperity::error::{Error, Result};
-    use asperity::gfmd::cycle::CycleSpec;
-    use asperity::gfmd::distributed::{run_cycle_slab, run_slab, run_sweep_slab, Comm};
-    use asperity::theory::sweep::SweepSpec;
+    use asperity::gfmd::distributed::{run_on_ranks, Comm};
     use std::sync::atomic::AtomicBool;
 
     pub fn run(comm: &dyn Comm, args: &GfmdArgs) -> Result<()> {
@@ -74,45 +71,9 @@ mod distributed {
                 comm.size()
             );
         }
-        let cancel = AtomicBool::new(false);
-        if let (Some(from), Some(to)) = (args.from, args.to) {
-            if args.cycle || to < from {
-                let spec = CycleSpec {
-                    from,
-                    to,
-                    points: args.points,
-                    cycle: args.cycle,
-                };
-                let c = run_cycle_slab(comm, &setup, &spec, &opts, &mut |_, _| {}, &cancel)?;
-                if root {
-                    match args.format {
-                        GfmdFormat::Json => emit(&serde_json::to_string_pretty(&c).expect("serialisable")),
-                        GfmdFormat::Table | GfmdFormat::Csv => emit(&cycle_csv(&c)),
-                    }
-                }
-                return Ok(());
-            }
-            let spec = SweepSpec {
-                from,
-                to,
-                points: args.points,
-            };
-            let sw = run_sweep_slab(comm, &setup, &spec, &opts, &mut |_, _| {}, &cancel)?;
-            if root {
-                match args.format {
-                    GfmdFormat::Json => emit(&serde_json::to_string_pretty(&sw).expect("serialisable")),
-                    GfmdFormat::Table | GfmdFormat::Csv => emit(&sweep_csv(&sw)),
-                }
-            }
-            return Ok(());
-        }
-        let out = run_slab(comm, &setup, &opts, &mut |_| {}, &cancel)?;
+        let out = run_on_ranks(comm, &setup, job(args), &opts, &mut |_, _| {}, &AtomicBool::new(false))?;
         if root {
-            match args.format {
-                GfmdFormat::Json => emit(&serde_json::to_string_pretty(&out).expect("serialisable")),
-                GfmdFormat::Table => emit(&table(&out)),
-                GfmdFormat::Csv => emit(&single_csv(&out)),
-            }
+            emit(&path_output(out, args.format));
         }
         Ok(())
     }

@@ -10,7 +10,6 @@ pub mod figure;
 pub mod gauge;
 pub mod gauge_gfmd;
 pub mod gfmd;
-pub mod gfmd_csv;
 pub mod gfmd_cycle;
 pub mod gfmd_mpi;
 

@@ -65,65 +65,14 @@ pub struct SweepArgs {
     pub cycle: bool,
 }
 
-/// The CSV header (the first nine columns are the public interface of the load sweep; the
-/// rest were added with `--over`).
-pub const CSV_HEADER: &str = "p,a_r,mean_gap_rel,mean_gap,mean_contact_stress,elastic_energy,converged,\
-elastic_energy_reduced,mean_gap_error,contact_stress_variance,a_r_over_p,a_r_eq18,thickness_qr,gamma,\
-a_r_unloading,branches,mean_gap_lower_rel,mean_gap_upper_rel,contact_load,mean_gap_unloading_rel,\
-mean_gap_unloading_error,mean_gap_unloading_lower_rel,contact_load_unloading,trust_inside,trust_a_r_log_error,reason";
+/// The CSV of `sweep` and `sweep --cycle`: the library's ([`asperity::report::csv`]), its
+/// header and writers under the names the binary has always used.
+pub use asperity::report::csv::{
+    sweep as csv, theory_cycle as cycle_csv, SWEEP_HEADER as CSV_HEADER, THEORY_CYCLE_HEADER as CYCLE_CSV_HEADER,
+};
 
 /// One row of `sweep` (CSV columns and JSON keys): the library's report row.
 pub use asperity::report::sweep::Row;
-
-/// A CSV field: as is, or quoted (RFC 4180) when it holds a comma, a quote or a line break.
-fn csv_field(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_string()
-    }
-}
-
-/// Formats rows as CSV.
-pub fn csv(rows: &[Row]) -> String {
-    let mut out = String::from(CSV_HEADER);
-    // an unavailable value (a load that did not converge, or a gap below one) is left empty
-    let f = |x: f64| if x.is_finite() { format!("{x:e}") } else { String::new() };
-    let o = |x: Option<f64>| x.map_or(String::new(), f);
-    for row in rows {
-        let r = &row.row;
-        out.push_str(&format!(
-            "\n{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
-            r.p,
-            f(r.a_r),
-            f(r.mean_gap_rel),
-            f(r.mean_gap),
-            f(r.mean_contact_stress),
-            f(r.elastic_energy),
-            r.converged,
-            f(r.elastic_energy_reduced),
-            f(r.mean_gap_error),
-            f(r.contact_stress_variance),
-            f(row.a_r_over_p),
-            o(row.a_r_eq18),
-            row.thickness_qr.map_or("inf".to_string(), f),
-            f(row.gamma),
-            f(r.a_r_unloading),
-            r.branches,
-            f(r.mean_gap_lower_rel),
-            f(r.mean_gap_upper_rel),
-            f(r.contact_load),
-            f(r.mean_gap_unloading_rel),
-            f(r.mean_gap_unloading_error),
-            f(r.mean_gap_unloading_lower_rel),
-            f(r.contact_load_unloading),
-            row.trust_inside,
-            f(row.trust_a_r_log_error),
-            row.reason.as_deref().map_or(String::new(), csv_field),
-        ));
-    }
-    out
-}
 
 /// Runs the sweep `args` asks for ([`asperity::report::sweep`]); returns the JSON object
 /// (rows included).
@@ -190,47 +139,8 @@ pub fn run(args: &SweepArgs) -> Result<String> {
         eprintln!("asperity sweep: {note}");
     }
     Ok(match (args.format, &out.cycle) {
-        (SweepFormat::Csv, Some(c)) => out.pull_off.as_ref().map_or(String::new(), |p| p.csv_lines()) + &cycle_csv(c),
+        (SweepFormat::Csv, Some(c)) => asperity::report::csv::sweep_cycle(out.pull_off.as_ref(), c),
         (SweepFormat::Csv, None) => csv(&out.rows),
         (SweepFormat::Json, _) => serde_json::to_string_pretty(&out).expect("serialisable"),
     })
 }
-
-/// The CSV of `sweep --cycle`: `#` lines (where the unloading branch ends, the jump-in, why the
-/// path stops), then `branch,p,a_r,mean_gap_rel,mean_contact_stress,on_unloading_branch`.
-pub fn cycle_csv(c: &asperity::theory::cycle::TheoryCycle) -> String {
-    let f = |x: f64| if x.is_finite() { format!("{x:e}") } else { String::new() };
-    let mut out = String::new();
-    if let Some(p) = c.unloading_branch_ends {
-        out.push_str(&format!("# unloading_branch_ends: {}\n", f(p)));
-    }
-    if let Some(p) = c.jump_in_pressure {
-        out.push_str(&format!("# jump_in_pressure: {}\n", f(p)));
-    }
-    if let Some(p) = c.pull_off_pressure {
-        out.push_str(&format!("# pull_off_pressure: {}\n", f(p)));
-    }
-    if let Some([lost, held]) = c.pull_off_bracket {
-        out.push_str(&format!("# pull_off_bracket: {} {}\n", f(lost), f(held)));
-    }
-    if let Some(b) = c.tension_bound {
-        out.push_str(&format!("# tension_bound: {}\n", f(b)));
-    }
-    out.push_str(&format!("# note: {}\n", c.note));
-    out.push_str(CYCLE_CSV_HEADER);
-    for r in &c.rows {
-        out.push_str(&format!(
-            "\n{},{},{},{},{},{}",
-            r.branch.name(),
-            f(r.p),
-            f(r.a_r),
-            f(r.mean_gap_rel),
-            f(r.mean_contact_stress),
-            r.on_unloading_branch
-        ));
-    }
-    out
-}
-
-/// The columns of `sweep --cycle --format csv`.
-pub const CYCLE_CSV_HEADER: &str = "branch,p,a_r,mean_gap_rel,mean_contact_stress,on_unloading_branch";

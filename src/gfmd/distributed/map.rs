@@ -12,11 +12,10 @@
 use super::comm::{chain_fold, chain_fold_var, chain_sum, share, Comm};
 use super::slab_fft::{transpose_cols_to_rows, transpose_rows_to_cols, SlabFft};
 use crate::error::{Error, Field, Result};
-use crate::surface::heightmap::{wave_number_sq, SplitMix64, MAX_GRID};
+use crate::surface::heightmap::{fourier_rows, wave_number_sq};
 use crate::surface::spectrum::{Discrete, SelfAffine};
 use rustfft::num_complex::Complex64;
 use std::collections::BTreeMap;
-use std::f64::consts::PI;
 
 /// Rows [y₀, y₁) of an nx × ny periodic height map (metres, row-major).
 #[derive(Debug, Clone, PartialEq)]
@@ -64,81 +63,10 @@ impl Slab {
 ///
 /// [`heightmap::generate`]: crate::surface::heightmap::generate
 pub fn generate(comm: &dyn Comm, spec: &SelfAffine, n: usize, seed: u64) -> Result<Slab> {
-    let l = spec.system_size;
-    if !(4..=MAX_GRID).contains(&n) {
-        return Err(Error::invalid(Field::Grid, n as f64, format!("4 <= N <= {MAX_GRID}")));
-    }
-    let da = l / n as f64;
-    if spec.lambda_s < 2.0 * da * (1.0 - 1e-12) {
-        return Err(Error::invalid(
-            Field::Grid,
-            n as f64,
-            format!(
-                "N >= 2 L/lambda_s = {} (at least two points per short wavelength)",
-                (2.0 * l / spec.lambda_s).ceil()
-            ),
-        ));
-    }
     let size = comm.size();
     let rows: Vec<_> = (0..size).map(|r| share(n, size, r)).collect();
     let (y0, y1) = rows[comm.rank()];
-    let area = l * l;
-    let qs = spec.q_s();
-    let ql = 2.0 * PI / l;
-    let wrap = |i: usize| -> i64 {
-        if i <= n / 2 {
-            i as i64
-        } else {
-            i as i64 - n as i64
-        }
-    };
-    let mine = |i: usize| (y0..y1).contains(&i);
-    let mut rng = SplitMix64::new(seed);
-    let mut ht = vec![Complex64::new(0.0, 0.0); (y1 - y0) * n];
-    let mut g2 = 0.0;
-    for i in 0..n {
-        for j in 0..n {
-            let (ci, cj) = ((n - i) % n, (n - j) % n);
-            let (k, ck) = (i * n + j, ci * n + cj);
-            if ck < k {
-                continue;
-            }
-            let (mi, mj) = (wrap(i) as f64, wrap(j) as f64);
-            let q = ql * (mi * mi + mj * mj).sqrt();
-            if q == 0.0 || q > qs * (1.0 + 1e-12) {
-                continue;
-            }
-            let amp = (spec.psd(q.min(qs)) * (2.0 * PI).powi(2) / area).sqrt();
-            if ck == k {
-                let sign = if rng.next_u64() >> 63 == 0 { 1.0 } else { -1.0 };
-                if mine(i) {
-                    ht[(i - y0) * n + j] = Complex64::new(sign * amp, 0.0);
-                }
-                g2 += q * q * amp * amp;
-            } else {
-                let phase = 2.0 * PI * rng.next_f64();
-                let c = Complex64::from_polar(amp, phase);
-                if mine(i) {
-                    ht[(i - y0) * n + j] = c;
-                }
-                if mine(ci) {
-                    ht[(ci - y0) * n + cj] = c.conj();
-                }
-                g2 += 2.0 * q * q * amp * amp;
-            }
-        }
-    }
-    if g2 == 0.0 {
-        return Err(Error::invalid(
-            Field::Grid,
-            n as f64,
-            "a grid resolving at least one mode below q_s",
-        ));
-    }
-    let scale = spec.moment(2).sqrt() / g2.sqrt();
-    for c in ht.iter_mut() {
-        *c *= scale;
-    }
+    let (mut ht, da) = fourier_rows(spec, n, seed, (y0, y1))?;
     complex_transform(comm, &mut ht, n, &rows, true);
     let heights: Vec<f64> = ht.iter().map(|c| c.re).collect();
     let bad = heights.iter().any(|h| !h.is_finite()) as usize;

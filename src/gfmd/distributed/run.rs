@@ -1,17 +1,22 @@
-//! [`crate::gfmd::run()`] over ranks: the map by slabs, FIRE on slabs, the measurements and
-//! the map's moments by ordered reductions, the theory on rank 0.
+//! GFMD over ranks: the map by slabs ([`prepare_slab`]), then the serial code on this rank's
+//! rows: the run of [`crate::gfmd::run()`], the load walk of [`crate::gfmd::sweep`] and
+//! [`crate::gfmd::cycle`], FIRE of [`crate::gfmd::fire::relax_from`] with the slab FFT, the
+//! measurements and the map's moments by ordered reductions, the theory on rank 0
+//! ([`run_on_ranks`]).
 
 use super::comm::{share, Comm};
-use super::fire::{solve_slab, SlabProblem};
+use super::fire::SlabProblem;
 use super::map::{self, Slab};
 use super::slab_fft::SlabFft;
-use crate::error::{Error, Field, Result};
-use crate::gfmd::measure::measure_slab;
+use crate::error::Result;
+use crate::gfmd::cycle::{cycle_on, CycleSpec, GfmdCycle};
 use crate::gfmd::reduction::{check_map_moments, reduce, Reduction};
-use crate::gfmd::result::{body_and_load, scene_on_spectrum, theory_comparison};
-use crate::gfmd::{GfmdOptions, GfmdResult, GfmdSetup, Progress, Stage};
+use crate::gfmd::result::{check_ranks, given_map, problem_on, run_on, scene_on_spectrum};
+use crate::gfmd::sweep::{beside_theory, walk_on, GfmdSweep, LoadMap};
+use crate::gfmd::{GfmdOptions, GfmdResult, GfmdSetup, Progress};
 use crate::input::scene::Scene;
 use crate::surface::spectrum::{Discrete, Spectrum};
+use crate::theory::sweep::SweepSpec;
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
 
@@ -34,24 +39,23 @@ pub struct PreparedSlab {
     pub reduction: Option<Reduction>,
 }
 
-impl PreparedSlab {
-    /// The problem at reduced pressure `pressure`, as [`crate::gfmd::Prepared::problem`].
-    pub fn problem(&self, pressure: f64) -> SlabProblem<'_> {
-        let sc = &self.scene;
-        let (thickness, pressure) = body_and_load(sc, self.q_r, self.rms_gradient, pressure);
-        SlabProblem {
-            slab: &self.slab,
-            modulus: sc.modulus,
-            thickness,
-            pressure,
-            gamma: sc.gamma,
-            range: sc.range,
-        }
+impl LoadMap for PreparedSlab {
+    type Map = Slab;
+
+    fn problem(&self, p: f64) -> SlabProblem<'_> {
+        problem_on(&self.slab, &self.scene, (self.q_r, self.rms_gradient), p)
     }
 
-    /// The scene on the map's discrete spectrum, as [`crate::gfmd::Prepared::theory_scene`].
-    pub fn theory_scene(&self, pressure: f64) -> Scene {
-        scene_on_spectrum(&self.scene, &self.spectrum, pressure)
+    fn scene_and_moments(&self) -> (&Scene, f64, f64) {
+        (&self.scene, self.rms_gradient, self.rms_height)
+    }
+
+    fn theory_scene(&self, p: f64) -> Result<Scene> {
+        Ok(scene_on_spectrum(&self.scene, &self.spectrum, p))
+    }
+
+    fn grid_and_reduction(&self) -> (usize, Option<Reduction>) {
+        (self.slab.nx, self.reduction.clone())
     }
 }
 
@@ -59,23 +63,14 @@ impl PreparedSlab {
 /// rank was handed whole, e.g. read from a file) cut to the rank's rows.
 ///
 /// # Errors
-/// As [`crate::gfmd::prepare`]; [`Error::Invalid`] naming the grid when it has fewer rows
+/// As [`crate::gfmd::prepare`]; [`crate::Error::Invalid`] naming the grid when it has fewer rows
 /// than ranks.
 pub fn prepare_slab(comm: &dyn Comm, setup: &GfmdSetup) -> Result<PreparedSlab> {
     let scene = &setup.scene;
     let size = comm.size();
     match &setup.surface {
         Some(s) => {
-            if !s.is_square() {
-                return Err(Error::invalid_text(
-                    Field::HeightMap,
-                    format!("{} x {}", s.nx, s.ny),
-                    "an N x N map",
-                ));
-            }
-            check_ranks(s.nx, size)?;
-            s.check_rough()?;
-            let q_r = 2.0 * std::f64::consts::PI * setup.grid.system_size_ratio / s.size_x();
+            let q_r = given_map(s, setup, size)?;
             let (y0, y1) = share(s.ny, size, comm.rank());
             Ok(PreparedSlab {
                 scene: scene.clone(),
@@ -113,94 +108,65 @@ pub fn prepare_slab(comm: &dyn Comm, setup: &GfmdSetup) -> Result<PreparedSlab> 
     }
 }
 
-/// A grid of side `n` splits over `size` ranks when every rank gets at least one row and one
-/// column of the half spectrum.
-fn check_ranks(n: usize, size: usize) -> Result<()> {
-    if n < size || n / 2 + 1 < size {
-        return Err(Error::invalid(
-            Field::Grid,
-            n as f64,
-            format!("N >= {size} (at least one row per rank on {size} ranks)"),
-        ));
-    }
-    Ok(())
+/// What a run over ranks does: one run ([`crate::gfmd::run()`]), a load sweep
+/// ([`crate::gfmd::sweep::run_sweep`]) or a load path ([`crate::gfmd::cycle::run_cycle`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Job {
+    /// One run at the scene's load.
+    Run,
+    /// A load sweep, warm-started from load to load.
+    Sweep(SweepSpec),
+    /// A load path: loading, unloading, tension to pull-off.
+    Cycle(CycleSpec),
 }
 
-/// [`crate::gfmd::run()`] on this rank of `comm`: every rank calls it with the same setup and
-/// options. Rank 0 returns the serial run's result (the map field `surface` is None: no rank
-/// holds the map); the other ranks return it without the theory (`theory` None, which only
-/// rank 0 evaluates).
+/// What a [`Job`] returns: the serial run's result, as rank 0 has it.
+#[derive(Debug, Clone)]
+pub enum Outcome {
+    /// Of [`Job::Run`].
+    Run(Box<GfmdResult>),
+    /// Of [`Job::Sweep`].
+    Sweep(Box<GfmdSweep>),
+    /// Of [`Job::Cycle`].
+    Cycle(Box<GfmdCycle>),
+}
+
+/// `job` on the map of `setup` on this rank of `comm`: every rank calls it with the same
+/// arguments. Rank 0 returns the serial result (the map field `surface` is None: no rank holds
+/// the map); the other ranks return it without the theory (None, which only rank 0
+/// evaluates). `progress` gets the row index (0 for one run) with each report.
 ///
 /// # Errors
-/// As [`crate::gfmd::run()`]; every rank returns the same error.
-pub fn run_slab(
+/// As the serial run, sweep or cycle; every rank returns the same error.
+pub fn run_on_ranks(
     comm: &dyn Comm,
     setup: &GfmdSetup,
+    job: Job,
     opts: &GfmdOptions,
-    progress: &mut dyn FnMut(Progress),
+    progress: &mut dyn FnMut(usize, Progress),
     cancel: &AtomicBool,
-) -> Result<GfmdResult> {
+) -> Result<Outcome> {
+    match job {
+        Job::Run => {}
+        Job::Sweep(spec) => spec.validate()?,
+        Job::Cycle(spec) => spec.validate()?,
+    }
+    opts.validate()?;
     let t0 = Instant::now();
     let prep = prepare_slab(comm, setup)?;
-    let scene = &prep.scene;
-    let problem = prep.problem(scene.pressure);
-    let sol = solve_slab(comm, &problem, opts, None, progress, cancel)?;
-    let (nx, ny, da) = (prep.slab.nx, prep.slab.ny, prep.slab.spacing);
-    let m = measure_slab(
-        comm,
-        &sol,
-        opts,
-        nx * ny,
-        scene.modulus,
-        prep.rms_gradient,
-        prep.rms_height,
-    );
-    progress(Progress {
-        stage: Stage::Theory,
-        iteration: sol.iterations,
-        residual: sol.residual,
-        contact_fraction: m.stats.a_r,
-    });
-    let t_theory = Instant::now();
-    let (theory, theory_error) = if comm.rank() == 0 {
-        theory_comparison(Ok(prep.theory_scene(scene.pressure)), scene, cancel)?
-    } else {
-        (None, None)
-    };
-    let theory_elapsed_s = t_theory.elapsed().as_secs_f64();
-    Ok(GfmdResult {
-        stats: m.stats,
-        mean_gap: m.mean_gap,
-        mean_gap_rel: m.mean_gap_rel,
-        iterations: sol.iterations,
-        pk_iterations: sol.pk_iterations,
-        residual: sol.residual,
-        tolerance: opts.tolerance,
-        elapsed_s: t0.elapsed().as_secs_f64(),
-        solve_elapsed_s: sol.elapsed_s,
-        theory_elapsed_s,
-        grid: nx,
-        converged: sol.residual <= opts.tolerance,
-        seed: setup.surface.is_none().then_some(setup.seed),
-        pressure: scene.pressure,
-        pressure_pa: problem.pressure,
-        thickness_qr: scene.thickness_qr.is_finite().then_some(scene.thickness_qr),
-        gamma: scene.gamma,
-        range_m: scene.range,
-        system_size_m: nx as f64 * da,
-        spacing_m: da,
-        grid_spec: setup.surface.is_none().then_some(setup.grid),
-        rms_gradient: prep.rms_gradient,
-        rms_height_m: prep.rms_height,
-        contact_nodes: m.contact_nodes,
-        adhesion_resolution: if scene.gamma > 0.0 {
-            scene.gamma / scene.modulus * da / (scene.range * scene.range)
-        } else {
-            0.0
-        },
-        theory,
-        theory_error,
-        reduction: prep.reduction.clone(),
-        surface: None,
+    Ok(match job {
+        Job::Run => {
+            let r = run_on(comm, &prep, setup, opts, &mut |p| progress(0, p), cancel, t0)?;
+            Outcome::Run(Box::new(r))
+        }
+        Job::Sweep(spec) => {
+            let (prep, rows, its) = walk_on(comm, prep, &spec.pressures(), opts, progress, cancel)?;
+            let sw = beside_theory(comm, (&prep, setup), (rows, its, t0), &spec, progress, cancel)?;
+            Outcome::Sweep(Box::new(sw))
+        }
+        Job::Cycle(spec) => {
+            let (_, c) = cycle_on(comm, (prep, setup), &spec, opts, progress, cancel, t0)?;
+            Outcome::Cycle(Box::new(c))
+        }
     })
 }
