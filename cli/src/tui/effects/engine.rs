@@ -151,6 +151,17 @@ pub fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Resu
     Ok(pd)
 }
 
+/// ū/h_rms of the loading branch at the scene's p*, at chart accuracy, where no load sweep was
+/// asked for (a screen showing no load chart): one evaluation and the adhesionless gap table
+/// from p* up to full contact ([`asperity::theory::gap::mean_gap_of_cancellable`]). It is the
+/// value a one-load [`sweep::sweep`] gives, for a tenth of the CPU: the sweep also solves the
+/// adhesive theory at every node of its grid up to full contact, which the gap does not use.
+pub fn point_gap(scene: &Scene, cancel: &AtomicBool) -> Result<f64> {
+    let opts = Options::chart();
+    let ev = engine::evaluate_warm(scene, &opts, None, Some(cancel))?;
+    Ok(asperity::theory::gap::mean_gap_of_cancellable(scene, &ev, &opts, Some(cancel))?.relative)
+}
+
 /// The load curves of the charts at chart accuracy: the loading branch with ū and σ̄_c*, and
 /// with adhesion the unloading branch and the jump-in and pull-off loads ([`sweep::sweep`]).
 pub fn load_sweep(scene: &Scene, spec: &SweepSpec, cancel: &AtomicBool) -> Result<SweepData> {

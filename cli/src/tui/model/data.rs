@@ -446,18 +446,6 @@ pub fn unloading_curve(p: &[f64], branches: &[Vec<BranchState>]) -> (Vec<f64>, O
     (unloading, jump, pull)
 }
 
-/// ū/h_rms at the current p* from a one-point sweep, or why it is unavailable (a load on
-/// the way to full contact did not converge).
-pub fn gap_of_sweep(s: &Sweep) -> asperity::Result<f64> {
-    match s.rows.first() {
-        Some(r) if r.mean_gap_rel.is_finite() => Ok(r.mean_gap_rel),
-        _ => Err(asperity::Error::NotConverged {
-            solver: asperity::error::Solver::MeanGap,
-            reason: s.note.clone().unwrap_or_else(|| "no load converged".into()),
-        }),
-    }
-}
-
 /// What the explorer shows of a finished GFMD run.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct GfmdView {
