@@ -5,10 +5,10 @@
 
 use asperity::input::preset::Preset;
 use asperity_cli::tui::app::App;
+use asperity_cli::tui::base::protocol::Reply;
 use asperity_cli::tui::drive::{compute_now, Caches};
 use asperity_cli::tui::model::command::Command;
 use asperity_cli::tui::model::msg::Msg;
-use asperity_cli::tui::model::protocol::Reply;
 use asperity_cli::tui::update::update;
 use asperity_cli::tui::view;
 use ratatui::backend::TestBackend;

@@ -18,13 +18,13 @@
 //! - Every reply carries its generation and its key; the UI keeps a reply only if the key is
 //!   the one its current scene needs (so stale replies are dropped).
 
+use crate::tui::base::data::{PointData, ScalesData, SweepData, ThicknessData};
+pub use crate::tui::base::protocol::*;
 pub use crate::tui::effects::engine::panic_text;
 use crate::tui::effects::engine::{evaluate_point, evaluate_preview};
 pub use crate::tui::effects::engine::{
     interpolate_gap, load_sweep, point_gap, preview_sweep, scale_view, spawn_gfmd, thickness_sweep, PREVIEW_EDGE_REL,
 };
-use crate::tui::model::data::{PointData, ScalesData, SweepData, ThicknessData};
-pub use crate::tui::model::protocol::*;
 use asperity::error::{Error, Result};
 use asperity::input::scene::Scene;
 use asperity::theory::sweep::SweepSpec;

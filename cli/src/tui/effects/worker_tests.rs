@@ -2,9 +2,9 @@
 #![allow(unused_imports)]
 
 use super::*;
+use crate::tui::base::data::*;
+use crate::tui::base::kinds::Needs;
 use crate::tui::effects::engine::*;
-use crate::tui::model::data::*;
-use crate::tui::model::kinds::Needs;
 use asperity::input::model::Model;
 use asperity::theory::engine::{self, Options};
 use asperity::theory::sweep;

@@ -1,6 +1,6 @@
 //! The work under way: the worker's requests, the GFMD run, the files written.
 
-use crate::tui::model::progress::GfmdState;
+use crate::tui::base::progress::GfmdState;
 use asperity::input::scene::Scene;
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
@@ -26,7 +26,7 @@ pub struct Jobs {
     /// [`crate::tui::model::app::App::refresh`], cleared by the request).
     pub(in crate::tui::model) pending: bool,
     /// What the last request asked for (the charts then shown).
-    pub(in crate::tui::model) asked: crate::tui::model::kinds::Needs,
+    pub(in crate::tui::model) asked: crate::tui::base::kinds::Needs,
     /// The last `e`/`s`: its scene, file name, number, and whether `e` and `s` were done
     /// under that number.
     pub last_export: Option<(Scene, String, u32, [bool; 2])>,

@@ -1,8 +1,8 @@
 //! The engine's results for the scene and the curves pinned (each with the key of the scene it was computed for).
 
-use crate::tui::model::data::{PointData, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::data::{PointData, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::protocol::{CacheKey, SceneKeys};
 use crate::tui::model::pins::Pin;
-use crate::tui::model::protocol::{CacheKey, SceneKeys};
 use asperity::error::Result;
 use std::collections::HashMap;
 

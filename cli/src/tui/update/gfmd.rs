@@ -2,9 +2,9 @@
 //! progress of the run shown (a reply of any other run, e.g. one cancelled before, is
 //! dropped), and its outcome with the time it took; and the status line's words for the run.
 
+use crate::tui::base::data::GfmdView;
+use crate::tui::base::progress::{format_secs, GfmdProgress};
 use crate::tui::model::app::*;
-use crate::tui::model::data::GfmdView;
-use crate::tui::model::progress::{format_secs, GfmdProgress};
 use asperity::error::{Error, Result};
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;

@@ -3,13 +3,13 @@
 //! find is handed in as its message.
 
 use super::update;
+use crate::tui::base::data::{GfmdView, ScaleFrame, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::kinds::ChartKind;
+use crate::tui::base::progress::GfmdProgress;
+use crate::tui::base::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
+use crate::tui::base::tour::{Tour, DEFAULT_TOUR};
 use crate::tui::model::app::*;
-use crate::tui::model::data::{GfmdView, ScaleFrame, ScalesData, SweepData, ThicknessData};
-use crate::tui::model::kinds::ChartKind;
 use crate::tui::model::msg::{Msg, Written};
-use crate::tui::model::progress::GfmdProgress;
-use crate::tui::model::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
-use crate::tui::model::tour::{Tour, DEFAULT_TOUR};
 use asperity::error::Error;
 use asperity::input::preset::Preset;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -463,7 +463,7 @@ fn the_mouse_focuses_selects_and_steps_only_when_asked_for() {
 
 #[test]
 fn a_resize_is_kept_and_decides_whether_the_screen_is_too_small() {
-    use crate::tui::model::wrap::MIN_SIZE;
+    use crate::tui::base::wrap::MIN_SIZE;
     let mut a = idle();
     // unknown size (a test's state, before the first frame): keys act
     assert_eq!(a.ui.size, None);

@@ -1,8 +1,8 @@
 //! The worker's replies → the next state: a result is kept only if it belongs to the current
 //! scene (or to another model of it, while `M` overlays every model).
 
+use crate::tui::base::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
 use crate::tui::model::app::*;
-use crate::tui::model::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
 
 impl App {
     /// Takes a worker reply: kept only if it belongs to the current scene.
