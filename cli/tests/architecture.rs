@@ -16,7 +16,12 @@ const MAX_LINES: usize = 600;
 /// The explorer's modules that may call the engine (the theory and GFMD jobs and the code
 /// that turns their results into plain data); every other explorer module only draws,
 /// steps knobs or writes files.
-const COMPUTE: [&str; 3] = ["tui::effects::worker", "tui::effects::engine", "tui::base::data"];
+const COMPUTE: [&str; 4] = [
+    "tui::effects::worker",
+    "tui::effects::engine",
+    "tui::base::data",
+    "tui::base::gfmd_view",
+];
 
 /// The explorer's folders, lowest first (their rank): the base is what the state is made of
 /// (the worker protocol, plain data, tours, the key table); the model is the state, plain

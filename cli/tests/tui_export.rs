@@ -6,7 +6,7 @@ use asperity::input::preset::Preset;
 use asperity::theory::engine::{evaluate, Options};
 use asperity::tolerances::CHART_ACCURACY_REL;
 use asperity_cli::tui::app::{App, Param};
-use asperity_cli::tui::base::data::GfmdView;
+use asperity_cli::tui::base::gfmd_view::GfmdView;
 use asperity_cli::tui::base::kinds::ChartKind;
 use asperity_cli::tui::effects::export::{export, gfmd_csv};
 

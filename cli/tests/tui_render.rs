@@ -188,7 +188,7 @@ fn adhesive_view_with_a_synthetic_point() {
 
 #[test]
 fn gfmd_overlay_with_a_synthetic_run() {
-    use asperity_cli::tui::base::data::GfmdView;
+    use asperity_cli::tui::base::gfmd_view::GfmdView;
     use asperity_cli::tui::drive::Reply;
     use asperity_cli::tui::{base::progress, effects::engine as jobs};
     let mut a = app("system-1");

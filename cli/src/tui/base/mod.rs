@@ -6,6 +6,7 @@
 
 pub mod caption;
 pub mod data;
+pub mod gfmd_view;
 pub mod keys;
 pub mod kinds;
 pub mod progress;

@@ -2,7 +2,7 @@
 //! scene, what the visible charts need), the [`Reply`]s, and the cache keys that tie a reply
 //! to the scene it belongs to. Plain data, shared by the state and the worker.
 
-use crate::tui::base::data::{self, PointData, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::data::{PointData, ScalesData, SweepData, ThicknessData};
 use crate::tui::base::kinds::Needs;
 pub use crate::tui::base::progress::GfmdProgress;
 use asperity::error::Result;
@@ -229,7 +229,7 @@ pub enum Reply {
         /// Run id.
         id: u64,
         /// The run, or its error.
-        result: Result<data::GfmdView>,
+        result: Result<crate::tui::base::gfmd_view::GfmdView>,
         /// Seconds the whole job took.
         elapsed_s: f64,
     },

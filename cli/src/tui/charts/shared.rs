@@ -52,7 +52,7 @@ pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T
 pub fn set_empty<T>(m: &mut Chart, app: &App, own: Option<&asperity::error::Result<T>>) {
     match own {
         Some(Err(e)) => mark_failed(m, &crate::tui::base::words::describe(e)),
-        _ => m.empty = Some(if app.jobs.busy { "computing…" } else { "no data" }.into()),
+        _ => m.empty = Some(if app.jobs.busy() { "computing…" } else { "no data" }.into()),
     }
 }
 

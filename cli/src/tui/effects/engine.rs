@@ -2,7 +2,8 @@
 //! adhesionless comparison), the load and thickness sweeps of the charts, and the GFMD run of
 //! `g` on its own thread. Each turns the engine's results into the plain data of [`crate::tui::base::data`].
 
-use crate::tui::base::data::{self, GfmdView, PointData, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::data::{self, PointData, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::gfmd_view::GfmdView;
 use crate::tui::base::protocol::*;
 use asperity::error::{Error, Result};
 use asperity::input::preset::Preset;

@@ -14,7 +14,8 @@
 //! pressed ([`crate::tui::charts::snapshot::export_job`]); nothing here reads the state.
 
 use crate::chart;
-use crate::tui::base::data::{GfmdView, SweepData, ThicknessData};
+use crate::tui::base::data::{SweepData, ThicknessData};
+use crate::tui::base::gfmd_view::GfmdView;
 use crate::tui::charts::snapshot::export_job;
 pub use crate::tui::charts::snapshot::safe_name;
 use crate::tui::charts::Chart;

@@ -3,9 +3,8 @@
 //! charts need, the request for the worker). Messages change it in [`crate::tui::update`];
 //! work that leaves the process (the worker, GFMD, files) is run by [`crate::tui::effects`].
 
-use crate::tui::base::data::{
-    GfmdView, PointData, ScaleFrame, ScalesData, SweepData, ThicknessData, ADHESION_BY_DEFAULT,
-};
+use crate::tui::base::data::{PointData, ScaleFrame, ScalesData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
+use crate::tui::base::gfmd_view::GfmdView;
 use crate::tui::base::kinds::{self as charts, ChartKind, Needs};
 use crate::tui::base::progress::same_system;
 pub use crate::tui::base::progress::GfmdState;
@@ -114,19 +113,7 @@ impl App {
                 sweep: None,
                 gap: None,
             },
-            jobs: Jobs {
-                gen: 0,
-                load_range: None,
-                busy: false,
-                busy_since: None,
-                gfmd: GfmdState::Idle,
-                gfmd_cancel: None,
-                gfmd_next: 0,
-                pending: true,
-                asked: Needs::default(),
-                last_export: None,
-                export_dir: PathBuf::from("."),
-            },
+            jobs: Jobs::new(PathBuf::from(".")),
         })
     }
 

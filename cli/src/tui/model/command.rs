@@ -6,7 +6,8 @@
 //! itself ([`crate::tui::drive`]).
 
 use crate::chart::Chart;
-use crate::tui::base::data::{GfmdView, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::data::{ScalesData, SweepData, ThicknessData};
+use crate::tui::base::gfmd_view::GfmdView;
 use crate::tui::base::kinds::ChartKind;
 use crate::tui::base::protocol::Request;
 use crate::tui::model::pins::Pin;

@@ -1,6 +1,6 @@
 //! Unit tests of `g` and the GFMD job's replies (no thread: the replies are made here).
 
-use crate::tui::base::data::GfmdView;
+use crate::tui::base::gfmd_view::GfmdView;
 use crate::tui::base::protocol::{GfmdProgress, Reply};
 use crate::tui::effects::engine as jobs;
 use crate::tui::model::app::*;

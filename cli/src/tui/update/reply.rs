@@ -66,17 +66,9 @@ impl App {
                     self.results.gap = Some(Err(fault));
                     self.results.gap_shown = Some(point_key(&p.source, &p.scene));
                 }
-                if gen == self.jobs.gen() {
-                    self.jobs.busy = false;
-                    self.jobs.busy_since = None;
-                }
+                self.jobs.served(gen);
             }
-            Reply::Done { gen } => {
-                if gen == self.jobs.gen() {
-                    self.jobs.busy = false;
-                    self.jobs.busy_since = None;
-                }
-            }
+            Reply::Done { gen } => self.jobs.served(gen),
         }
     }
 }

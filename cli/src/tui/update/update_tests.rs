@@ -156,7 +156,7 @@ fn requests_carry_increasing_generations_and_only_on_change() {
     key(&mut a, KeyCode::Right);
     let r2 = take_compute(&mut a).unwrap();
     assert!(r2.gen > r1.gen);
-    assert!(a.jobs.busy);
+    assert!(a.jobs.busy());
     // a stale point (from r1's scene) is dropped, the current one kept
     a.on_reply(Reply::Point {
         gen: r1.gen,
@@ -165,9 +165,9 @@ fn requests_carry_increasing_generations_and_only_on_change() {
     });
     assert!(a.results.point.is_none());
     a.on_reply(Reply::Done { gen: r1.gen });
-    assert!(a.jobs.busy);
+    assert!(a.jobs.busy());
     a.on_reply(Reply::Done { gen: r2.gen });
-    assert!(!a.jobs.busy);
+    assert!(!a.jobs.busy());
 }
 
 #[test]

@@ -191,8 +191,8 @@ fn draw_title(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     ];
     // the spinner only once a computation has taken a while (most take milliseconds)
     if app.ui.show_timing
-        && app.jobs.busy_since.is_some()
-        && app.ui.elapsed_s(app.jobs.busy_since) >= SPINNER_DELAY.as_secs_f64()
+        && app.jobs.busy_since().is_some()
+        && app.ui.elapsed_s(app.jobs.busy_since()) >= SPINNER_DELAY.as_secs_f64()
     {
         spans.push(Span::styled(
             format!("{} computing", SPINNER[app.ui.spinner % SPINNER.len()]),

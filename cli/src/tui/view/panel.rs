@@ -111,7 +111,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         row_styled("μ_T", sig(app.params.scene.tabor(), 3), false);
     }
     let state = match (&app.results.point, shown) {
-        _ if stale_point || (app.jobs.busy && app.results.point.is_none()) => "computing…".to_string(),
+        _ if stale_point || (app.jobs.busy() && app.results.point.is_none()) => "computing…".to_string(),
         (Some(Ok(_)), Some(p)) if p.preview => format!("{} · refining…", p.branch),
         (Some(Ok(_)), Some(p)) => p.branch.clone(),
         (Some(Err(_)), _) => "failed (see below)".into(),
