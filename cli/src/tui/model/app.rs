@@ -97,9 +97,7 @@ impl App {
             },
             results: Results {
                 keys,
-                overlay_points: HashMap::new(),
-                overlay_sweeps: HashMap::new(),
-                overlay_thickness: HashMap::new(),
+                overlays: HashMap::new(),
                 thickness: None,
                 point_shown: None,
                 sweep_shown: None,
@@ -225,7 +223,7 @@ impl App {
             return self.results.point.as_ref().and_then(|r| r.as_ref().ok());
         }
         let key = &self.results.keys.of_model(m)?[0];
-        self.results.overlay_points.get(key).and_then(|r| r.as_ref().ok())
+        self.results.overlay_point(key)
     }
 
     /// The load sweep of model `m`.
@@ -234,7 +232,7 @@ impl App {
             return self.results.sweep.as_ref().and_then(|r| r.as_ref().ok());
         }
         let key = &self.results.keys.of_model(m)?[1];
-        self.results.overlay_sweeps.get(key).and_then(|r| r.as_ref().ok())
+        self.results.overlay_sweep(key)
     }
 
     /// The thickness sweep of model `m`.
@@ -243,7 +241,7 @@ impl App {
             return self.results.thickness.as_ref().and_then(|r| r.as_ref().ok());
         }
         let key = &self.results.keys.of_model(m)?[2];
-        self.results.overlay_thickness.get(key).and_then(|r| r.as_ref().ok())
+        self.results.overlay_thickness(key)
     }
 
     /// Whether the shown point belongs to an earlier scene.
@@ -431,14 +429,6 @@ impl App {
             error: true,
         });
     }
-}
-
-/// Inserts into a reply map, forgetting everything when it grows past a few hundred entries.
-pub(crate) fn bounded_insert<V>(map: &mut HashMap<CacheKey, V>, key: CacheKey, v: V) {
-    if map.len() >= 256 {
-        map.clear();
-    }
-    map.insert(key, v);
 }
 
 /// The scene the explorer opens a preset with (γ_s per [`ADHESION_BY_DEFAULT`]).

@@ -3,6 +3,7 @@
 
 use crate::tui::base::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
 use crate::tui::model::app::*;
+use crate::tui::model::results::Stored;
 
 impl App {
     /// Takes a worker reply: kept only if it belongs to the current scene.
@@ -14,7 +15,7 @@ impl App {
                     self.results.point = Some(result);
                     self.results.point_shown = Some(key);
                 } else if self.overlay_keys().0.contains(&key) {
-                    bounded_insert(&mut self.results.overlay_points, key, result);
+                    self.results.store(key, Stored::Point(result));
                 }
             }
             Reply::Sweep { key, result, .. } => {
@@ -23,7 +24,7 @@ impl App {
                     self.results.sweep_shown = Some(key);
                     self.follow_window();
                 } else if self.overlay_keys().1.contains(&key) {
-                    bounded_insert(&mut self.results.overlay_sweeps, key, result);
+                    self.results.store(key, Stored::Sweep(result));
                 }
             }
             Reply::Gap { key, result, .. } => {
@@ -37,7 +38,7 @@ impl App {
                     self.results.thickness = Some(result);
                     self.results.thickness_shown = Some(key);
                 } else if self.overlay_keys().2.contains(&key) {
-                    bounded_insert(&mut self.results.overlay_thickness, key, result);
+                    self.results.store(key, Stored::Thickness(result));
                 }
             }
             Reply::Scales { key, result, .. } => {
