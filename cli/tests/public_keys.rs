@@ -526,8 +526,8 @@ fn bench_rung_keys() {
 /// columns of the explorer's load CSV.
 #[test]
 fn explorer_names() {
+    use asperity_cli::tui::base::keys::TABLE;
     use asperity_cli::tui::charts::ChartKind;
-    use asperity_cli::tui::model::keys::TABLE;
     use asperity_cli::tui::tour::Tour;
     let names: Vec<&str> = ChartKind::ALL.iter().map(|k| k.name()).collect();
     for n in [

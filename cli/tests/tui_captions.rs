@@ -15,9 +15,9 @@
 use asperity::input::preset::Preset;
 use asperity_cli::looks::{look, model_slot, Glyph, Ink, Role};
 use asperity_cli::tui::app::App;
+use asperity_cli::tui::base::caption;
 use asperity_cli::tui::charts::{self, Draw};
 use asperity_cli::tui::drive::{compute_now, send, Caches};
-use asperity_cli::tui::model::caption;
 use asperity_cli::tui::model::msg::Msg;
 use asperity_cli::tui::tour::{Tour, BUILTIN};
 use asperity_cli::tui::view::{self, Palette};

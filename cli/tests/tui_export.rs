@@ -6,9 +6,9 @@ use asperity::input::preset::Preset;
 use asperity::theory::engine::{evaluate, Options};
 use asperity::tolerances::CHART_ACCURACY_REL;
 use asperity_cli::tui::app::{App, Param};
+use asperity_cli::tui::base::gfmd_view::GfmdView;
+use asperity_cli::tui::base::kinds::ChartKind;
 use asperity_cli::tui::effects::export::{export, gfmd_csv};
-use asperity_cli::tui::model::data::GfmdView;
-use asperity_cli::tui::model::kinds::ChartKind;
 
 /// A CSV read back: header columns, rows of cells, `# key: value` lines.
 type Csv = (Vec<String>, Vec<Vec<String>>, Vec<(String, String)>);

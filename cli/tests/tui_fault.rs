@@ -5,10 +5,10 @@
 
 use asperity::input::preset::Preset;
 use asperity_cli::tui::app::App;
+use asperity_cli::tui::base::protocol::Reply;
 use asperity_cli::tui::drive::{compute_now, Caches};
 use asperity_cli::tui::model::command::Command;
 use asperity_cli::tui::model::msg::Msg;
-use asperity_cli::tui::model::protocol::Reply;
 use asperity_cli::tui::update::update;
 use asperity_cli::tui::view;
 use ratatui::backend::TestBackend;
@@ -38,7 +38,7 @@ fn quits(a: &mut App, code: KeyCode, mods: KeyModifiers) -> bool {
 fn a_worker_fault_is_shown_and_the_explorer_stays_responsive() {
     let mut a = app();
     let req = a.take_request().expect("the first request");
-    a.jobs.busy = true;
+    assert!(a.jobs.busy());
     assert!(render(&a).contains("computing"));
     let _ = update(
         &mut a,
@@ -47,7 +47,7 @@ fn a_worker_fault_is_shown_and_the_explorer_stays_responsive() {
             message: "internal fault: injected".into(),
         })),
     );
-    assert!(!a.jobs.busy);
+    assert!(!a.jobs.busy());
     let screen = render(&a);
     assert!(!screen.contains("computing"), "{screen}");
     assert!(screen.contains("failed"), "{screen}");

@@ -6,9 +6,9 @@ mod common;
 
 use asperity::input::preset::Preset;
 use asperity_cli::tui::app::App;
+use asperity_cli::tui::base::data::SweepData;
 use asperity_cli::tui::charts::ChartKind;
 use asperity_cli::tui::drive::{compute_now, Caches};
-use asperity_cli::tui::model::data::SweepData;
 use asperity_cli::tui::view;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -127,7 +127,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         preview: false,
         gap_note: None,
     }));
-    a.results.thickness = Some(Ok(asperity_cli::tui::model::data::ThicknessData {
+    a.results.thickness = Some(Ok(asperity_cli::tui::base::data::ThicknessData {
         t: vec![f64::NAN, 0.0, 1e-2, 1e-1, f64::INFINITY, 1.0],
         a_r: vec![1.0, f64::NAN, 0.0, -1.0, 0.5, 0.5],
         a_r_inf: f64::NAN,
@@ -188,9 +188,9 @@ fn adhesive_view_with_a_synthetic_point() {
 
 #[test]
 fn gfmd_overlay_with_a_synthetic_run() {
+    use asperity_cli::tui::base::gfmd_view::GfmdView;
     use asperity_cli::tui::drive::Reply;
-    use asperity_cli::tui::model::data::GfmdView;
-    use asperity_cli::tui::{effects::engine as jobs, model::progress};
+    use asperity_cli::tui::{base::progress, effects::engine as jobs};
     let mut a = app("system-1");
     let cs = asperity_cli::tui::drive::press(&mut a, KeyEvent::new(KeyCode::Char('g'), KeyModifiers::NONE));
     let id = cs
@@ -421,7 +421,7 @@ fn defects_gap_axis_stale_values_long_messages_hints() {
 /// the same in the SVG export. Synthetic sweep (the engine's is tested in the library).
 #[test]
 fn hysteresis_on_the_area_chart() {
-    use asperity_cli::tui::model::data::BranchRow;
+    use asperity_cli::tui::base::data::BranchRow;
     let mut a = adhesionless("system-1");
     a.set_charts([ChartKind::Area, ChartKind::AreaRatio, ChartKind::Gap]);
     compute_now(&mut a, &mut Caches::default());

@@ -15,9 +15,9 @@ use asperity::input::scene::Scene;
 use asperity::theory::closed_form;
 use asperity::theory::engine::{self, Options};
 use asperity::theory::sweep::SweepSpec;
+use asperity_cli::tui::base::stored_gfmd::stored_gfmd;
 use asperity_cli::tui::charts::ChartKind;
 use asperity_cli::tui::effects::worker;
-use asperity_cli::tui::model::stored_gfmd::stored_gfmd;
 use asperity_cli::tui::tour::{Check, Knob, Side, Step, Tour, BUILTIN};
 use std::sync::atomic::AtomicBool;
 

@@ -1,6 +1,6 @@
 //! Every tour caption against the screen it is shown on: a caption names a colour, a glyph or
 //! a key only through a reference (`{look:NAME}`, `{key:KEY}`, see
-//! `asperity_cli::tui::model::caption`), and
+//! `asperity_cli::tui::base::caption`), and
 //!
 //! - no colour word and no glyph of the table of looks stands bare in a caption (`+` and `·`
 //!   are left to formulas: `0.35 + 0.65`, `t·q_r`);
@@ -13,10 +13,10 @@
 use asperity::input::preset::Preset;
 use asperity_cli::looks::{self, look, Glyph, Ink, Role};
 use asperity_cli::tui::app::App;
+use asperity_cli::tui::base::caption::{self, Press};
+use asperity_cli::tui::base::keys;
 use asperity_cli::tui::charts;
 use asperity_cli::tui::drive::{compute_now, Caches};
-use asperity_cli::tui::model::caption::{self, Press};
-use asperity_cli::tui::model::keys;
 use asperity_cli::tui::tour::{Knob, Step, Tour, BUILTIN};
 use asperity_cli::tui::view;
 use ratatui::backend::TestBackend;

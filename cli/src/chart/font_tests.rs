@@ -59,10 +59,10 @@ const LABEL_SOURCES: [&str; 20] = [
     "src/tui/charts/scales.rs",
     "src/tui/charts/shared.rs",
     "src/tui/effects/export.rs",
-    "src/tui/model/kinds.rs",
+    "src/tui/base/kinds.rs",
     "src/tui/model/pins.rs",
     "src/tui/charts/plot.rs",
-    "src/tui/model/words.rs",
+    "src/tui/base/words.rs",
     "../src/input/model.rs",
     "../src/input/preset.rs",
 ];
@@ -89,7 +89,7 @@ fn every_character_of_the_labels_has_a_glyph() {
     )
     .unwrap();
     crate::tui::drive::compute_now(&mut app, &mut Default::default());
-    for k in crate::tui::model::kinds::ChartKind::ALL {
+    for k in crate::tui::base::kinds::ChartKind::ALL {
         let chart =
             crate::tui::effects::export::file_chart(&crate::tui::charts::build(&app, k), "γ_s = 0.05 J/m², t·q_r = ∞");
         let spec = crate::chart::flatten(&chart);

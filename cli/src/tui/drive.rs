@@ -4,14 +4,14 @@
 //! returned to the caller; [`compute_now`] serves the last computation asked for on the
 //! calling thread (kept per thread, outside the state, as the event loop keeps its commands).
 
+pub use crate::tui::base::protocol::Reply;
+use crate::tui::base::protocol::Request;
 use crate::tui::effects::worker::process;
 pub use crate::tui::effects::worker::Caches;
 use crate::tui::effects::{self, load};
 use crate::tui::model::app::App;
 use crate::tui::model::command::Command;
 use crate::tui::model::msg::Msg;
-pub use crate::tui::model::protocol::Reply;
-use crate::tui::model::protocol::Request;
 use crate::tui::update::update;
 use ratatui::crossterm::event::KeyEvent;
 use std::cell::Cell;

@@ -3,9 +3,11 @@
 //! One typed update loop (the Elm shape), in folders that show it; no module imports one in a
 //! folder above it (`cli/tests/architecture.rs` checks the arrows):
 //!
+//! - [`base`]: what the state is made of: the worker's protocol, the plain data of the
+//!   engine's results, chart kinds, tours, the key table; imports nothing else of the explorer.
 //! - [`model`]: the state as plain data, [`model::app::App`] in four parts (the scene's
 //!   parameters, the UI, the results, the jobs), and the [`model::msg::Msg`]s and
-//!   [`model::command::Command`]s that cross it; the key table, tours, the worker's protocol.
+//!   [`model::command::Command`]s that cross it; reads no file and no clock; reads `base`.
 //! - [`charts`]: the charts as plain data, built from the state (drawn by the view, saved by
 //!   `s`); reads the model.
 //! - [`update`]: `update(state, msg) -> Vec<Command>`, pure; reads and changes the model.
@@ -15,7 +17,7 @@
 //! - this module: the event loop, which feeds messages to the update, runs its commands and
 //!   draws; [`drive`] does the same without a terminal (tests), [`trace`] times it.
 //!
-//! Only [`effects::worker`], [`effects::engine`] and [`model::data`] call the engine
+//! Only [`effects::worker`], [`effects::engine`] and [`base::data`] call the engine
 //! (`cli/tests/architecture.rs`).
 //!
 //! The event loop blocks on one channel that carries key/resize events (from an input
@@ -35,6 +37,7 @@
 //! the load charts from the full sweep (`charts_final_ms`), and the frame after which nothing
 //! is left to compute (`all_drawn_ms`: the point refined to full accuracy, the other charts).
 
+pub mod base;
 pub mod charts;
 pub mod drive;
 pub mod effects;
@@ -44,15 +47,16 @@ pub mod update;
 pub mod view;
 
 /// The state under the names the front ends use.
-pub use model::{app, tour};
+pub use base::tour;
+pub use model::app;
 
 use asperity::error::{Error, Result};
 use asperity::input::preset::Preset;
+use base::protocol::Reply;
 use effects::worker::Worker;
 use model::app::App;
 use model::command::Command;
 use model::msg::Msg;
-use model::protocol::Reply;
 use ratatui::crossterm::event::{self, Event, KeyEventKind};
 use std::collections::VecDeque;
 use std::sync::mpsc::{channel, RecvTimeoutError, Sender};

@@ -54,7 +54,7 @@ impl Trace {
             let _ = writeln!(f, "gen {gen} charts_final_ms {ms:.2}");
             self.final_logged = true;
         }
-        if !app.jobs.busy {
+        if !app.jobs.busy() {
             let _ = writeln!(f, "gen {gen} all_drawn_ms {ms:.2}");
             self.started = None;
         }

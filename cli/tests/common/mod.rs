@@ -127,7 +127,7 @@ pub fn figure_7_against_run(extra: &[&str]) -> (usize, String) {
 
 /// A synthetic hysteresis on a load sweep: the unloading branch a_r = 0.45 + 0.3 p* between
 /// the pull-off load `pull` and the jump-in load `jump` (none elsewhere), and both loads.
-pub fn add_hysteresis(sw: &mut asperity_cli::tui::model::data::SweepData, jump: f64, pull: f64) {
+pub fn add_hysteresis(sw: &mut asperity_cli::tui::base::data::SweepData, jump: f64, pull: f64) {
     sw.a_r_unloading =
         sw.p.iter()
             .map(|&p| {
@@ -155,14 +155,14 @@ pub fn ideal_table(sa: &asperity::surface::spectrum::SelfAffine, n: usize) -> (V
 /// A finished GFMD run for the explorer's tests at load `p`: a histogram shaped like the
 /// theory of system 1 at p* = 0.01 and a little wider, a 512² grid, two sweep loads and the
 /// theory on the map at three.
-pub fn synthetic_gfmd(p: f64) -> asperity_cli::tui::model::data::GfmdView {
+pub fn synthetic_gfmd(p: f64) -> asperity_cli::tui::base::gfmd_view::GfmdView {
     let pr: Vec<(f64, f64)> = (0..60)
         .map(|i| {
             let s = -0.5 + 2.2 * (i as f64 + 0.5) / 60.0;
             (s, 0.04 * (-(s - 0.3) * (s - 0.3) / 0.3).exp())
         })
         .collect();
-    asperity_cli::tui::model::data::GfmdView {
+    asperity_cli::tui::base::gfmd_view::GfmdView {
         pressure: p,
         a_r: 0.0418,
         mean_contact_stress: 0.2434,

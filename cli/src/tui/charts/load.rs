@@ -1,11 +1,11 @@
 //! The load and thickness charts: a_r(p*), a_r/p*, σ̄_c*(p*), ū/h_rms(p*) with the hysteresis
 //! window's branches and edges, and a_r(t·q_r).
 
+use crate::tui::base::data::{self, SweepData, ThicknessData};
+use crate::tui::base::kinds::{slot_name, ChartKind};
 use crate::tui::charts::plot::{self, Scale};
 use crate::tui::charts::shared::*;
 use crate::tui::model::app::App;
-use crate::tui::model::data::{self, SweepData, ThicknessData};
-use crate::tui::model::kinds::{slot_name, ChartKind};
 
 pub fn area(app: &App, ratio: bool) -> Chart {
     let (kind, title, ylab, ys) = if ratio {
@@ -215,7 +215,7 @@ pub fn loads(app: &App, kind: ChartKind) -> Chart {
     let gap_failed = gap.then(|| gap_failure(app, sw)).flatten();
     if let Some(why) = &gap_failed {
         m.title
-            .push_str(&format!(" · failed: {}", crate::tui::model::words::brief(why)));
+            .push_str(&format!(" · failed: {}", crate::tui::base::words::brief(why)));
     }
     if gap {
         // the bracket of the loading branch's gap, shaded under the curves (§5.1)
@@ -303,7 +303,7 @@ fn gap_failure(app: &App, sw: &SweepData) -> Option<String> {
         return None;
     }
     let point = match &app.results.gap {
-        Some(Err(e)) => Some(crate::tui::model::words::describe(e)),
+        Some(Err(e)) => Some(crate::tui::base::words::describe(e)),
         _ => None,
     };
     Some(

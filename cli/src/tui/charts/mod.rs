@@ -31,12 +31,12 @@ pub mod scales;
 pub mod shared;
 pub mod snapshot;
 
+use crate::tui::base::data::{self, PointData};
+pub use crate::tui::base::kinds::{overlay_models, slot, slot_name, ChartKind, Needs};
 use crate::tui::charts::load::{area, loads, thickness};
 use crate::tui::charts::shared::{base, current_point, data_bounds, others, set_empty, theory_name, theory_role};
 pub use crate::tui::charts::shared::{Chart, Draw, Role, Series, VLine};
 use crate::tui::model::app::App;
-use crate::tui::model::data::{self, PointData};
-pub use crate::tui::model::kinds::{overlay_models, slot, slot_name, ChartKind, Needs};
 use crate::tui::model::pins::{self, Pin};
 use asperity::input::scene::Scene;
 use plot::Scale;
@@ -370,7 +370,7 @@ mod tests {
         let theory = m.series.iter().find(|s| s.role == Role::Theory).unwrap();
         // at the smallest σ* the theory (mirror Gaussian) and the asymptote agree to 1e-3
         let (s0, d0) = theory.points[0];
-        assert!(s0 <= 2.0 * crate::tui::model::data::PR_LOG_FROM);
+        assert!(s0 <= 2.0 * crate::tui::base::data::PR_LOG_FROM);
         assert!(
             (small.points[0].1 / d0 - 1.0).abs() < 1e-3,
             "{} vs {d0}",
@@ -380,7 +380,7 @@ mod tests {
         let m = build(&a, ChartKind::Area);
         let eq = m.series.iter().find(|s| s.name == "eq. (18)").unwrap();
         for &(x, y) in &eq.points {
-            assert_eq!(y, crate::tui::model::data::eq18_area(x));
+            assert_eq!(y, crate::tui::base::data::eq18_area(x));
         }
         // reference points of Table 1 (γ_s = 0, as the scene): named by source only
         let r = m.series.iter().find(|s| s.role == Role::Reference).unwrap();

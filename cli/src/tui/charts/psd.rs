@@ -83,7 +83,7 @@ pub fn psd(app: &App) -> Chart {
 
 /// The table, the interpolant the theory integrates, and the self-affine fit.
 fn tabulated(m: &mut Chart, t: &Tabulated) {
-    let name = crate::tui::model::words::surface_name_of(t);
+    let name = crate::tui::base::words::surface_name_of(t);
     m.title = format!("C(q) of {name}");
     m.series.push(Series {
         name: "table".into(),

@@ -4,7 +4,7 @@
 //! and, for comparison, the final Pr at q_s; `scales-area` draws a_r(q) along the whole
 //! march with the current frame marked (and σ_a*(q) in its title). `[`/`]` scrub the frames,
 //! Space plays them from q_L to q_s. The frames are the engine's own march
-//! ([`crate::tui::model::data::ScalesData`]); nothing here computes.
+//! ([`crate::tui::base::data::ScalesData`]); nothing here computes.
 
 use crate::numfmt::sig;
 use crate::tui::charts::plot::{self, Scale};

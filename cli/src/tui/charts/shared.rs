@@ -2,11 +2,11 @@
 //! data, the preset's reference points, the current-point marker. The chart they build is
 //! the one chart model, [`crate::chart::Chart`].
 
+use crate::tui::base::data::{PointData, SweepData};
+use crate::tui::base::kinds::{overlay_models, slot, slot_name};
+use crate::tui::base::stored_gfmd::stored_gfmd;
 use crate::tui::charts::plot::{self, Scale};
 use crate::tui::model::app::App;
-use crate::tui::model::data::{PointData, SweepData};
-use crate::tui::model::kinds::{overlay_models, slot, slot_name};
-use crate::tui::model::stored_gfmd::stored_gfmd;
 use asperity::input::model::Model;
 
 /// How a series is drawn: the one chart model's style, so the screen and the `s` export
@@ -51,8 +51,8 @@ pub fn others<'a, T>(app: &'a App, get: impl Fn(&'a App, &Model) -> Option<&'a T
 /// "computing…" while the worker runs, or "no data".
 pub fn set_empty<T>(m: &mut Chart, app: &App, own: Option<&asperity::error::Result<T>>) {
     match own {
-        Some(Err(e)) => mark_failed(m, &crate::tui::model::words::describe(e)),
-        _ => m.empty = Some(if app.jobs.busy { "computing…" } else { "no data" }.into()),
+        Some(Err(e)) => mark_failed(m, &crate::tui::base::words::describe(e)),
+        _ => m.empty = Some(if app.jobs.busy() { "computing…" } else { "no data" }.into()),
     }
 }
 
@@ -60,7 +60,7 @@ pub fn set_empty<T>(m: &mut Chart, app: &App, own: Option<&asperity::error::Resu
 /// the body.
 pub fn mark_failed(m: &mut Chart, why: &str) {
     m.title
-        .push_str(&format!(" · failed: {}", crate::tui::model::words::brief(why)));
+        .push_str(&format!(" · failed: {}", crate::tui::base::words::brief(why)));
     m.empty = Some(format!("no data: {why}"));
 }
 
@@ -162,7 +162,7 @@ pub fn path_gap(app: &App) -> Option<f64> {
 }
 
 /// The point's unloading branch, where the path is on it.
-pub fn path_row(app: &App) -> Option<&crate::tui::model::data::BranchRow> {
+pub fn path_row(app: &App) -> Option<&crate::tui::base::data::BranchRow> {
     let p = current_point(app)?;
     (app.params.history.on == crate::tui::model::history::Path::Unloading)
         .then(|| p.branches.iter().find(|b| b.name == "unloading"))
@@ -173,7 +173,7 @@ pub fn path_row(app: &App) -> Option<&crate::tui::model::data::BranchRow> {
 /// points the library stores for the scene's case ([`stored_gfmd`]).
 pub fn references(app: &App, quantity: &str) -> Vec<asperity::input::preset::ReferencePoint> {
     // a measured surface is another system: the preset's reference values are not its own
-    if crate::tui::model::words::surface_name(&app.params.scene).is_some() {
+    if crate::tui::base::words::surface_name(&app.params.scene).is_some() {
         return Vec::new();
     }
     let preset = &app.params.preset;

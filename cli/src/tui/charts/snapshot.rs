@@ -68,7 +68,7 @@ pub fn export_job(app: &App, charts: bool) -> ExportJob {
 /// The scene's name as a file name (`asperity-NAME-N…`): the measured surface's file stem,
 /// else the preset's name.
 pub fn safe_name(app: &App) -> String {
-    let surface = crate::tui::model::words::surface_name(&app.params.scene)
+    let surface = crate::tui::base::words::surface_name(&app.params.scene)
         .map(|f| f.rsplit_once('.').map_or(f.clone(), |(stem, _)| stem.to_string()));
     surface
         .unwrap_or_else(|| app.params.preset.name.clone())

@@ -3,7 +3,7 @@
 //! ([`GfmdProgress`], with the estimate of the time left, [`eta_s`]). The clock is read
 //! here, in the effect, never in the state.
 
-use crate::tui::model::progress::{eta_s, GfmdPhase, GfmdProgress};
+use crate::tui::base::progress::{eta_s, GfmdPhase, GfmdProgress};
 use std::time::Instant;
 
 /// The job's clock: which phase runs since when, and how long the finished ones took.
@@ -61,7 +61,7 @@ impl Timeline {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tui::model::progress::plan;
+    use crate::tui::base::progress::plan;
 
     fn job() -> Vec<GfmdPhase> {
         plan(0.01, &[0.003, 0.01, 0.03])

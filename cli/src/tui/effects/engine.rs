@@ -1,9 +1,10 @@
 //! The engine jobs of the explorer: the current point (at full and at chart accuracy, with the
 //! adhesionless comparison), the load and thickness sweeps of the charts, and the GFMD run of
-//! `g` on its own thread. Each turns the engine's results into the plain data of [`crate::tui::model::data`].
+//! `g` on its own thread. Each turns the engine's results into the plain data of [`crate::tui::base::data`].
 
-use crate::tui::model::data::{self, GfmdView, PointData, ScalesData, SweepData, ThicknessData};
-use crate::tui::model::protocol::*;
+use crate::tui::base::data::{self, PointData, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::gfmd_view::GfmdView;
+use crate::tui::base::protocol::*;
 use asperity::error::{Error, Result};
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
@@ -149,6 +150,17 @@ pub fn evaluate_point(scene: &Scene, cancel: &AtomicBool, compare: bool) -> Resu
         add_comparison(&mut pd, scene);
     }
     Ok(pd)
+}
+
+/// ū/h_rms of the loading branch at the scene's p*, at chart accuracy, where no load sweep was
+/// asked for (a screen showing no load chart): one evaluation and the adhesionless gap table
+/// from p* up to full contact ([`asperity::theory::gap::mean_gap_of_cancellable`]). It is the
+/// value a one-load [`sweep::sweep`] gives, for a tenth of the CPU: the sweep also solves the
+/// adhesive theory at every node of its grid up to full contact, which the gap does not use.
+pub fn point_gap(scene: &Scene, cancel: &AtomicBool) -> Result<f64> {
+    let opts = Options::chart();
+    let ev = engine::evaluate_warm(scene, &opts, None, Some(cancel))?;
+    Ok(asperity::theory::gap::mean_gap_of_cancellable(scene, &ev, &opts, Some(cancel))?.relative)
 }
 
 /// The load curves of the charts at chart accuracy: the loading branch with ū and σ̄_c*, and
@@ -389,7 +401,7 @@ pub fn gfmd_sweep_spec(p: f64) -> SweepSpec {
     }
 }
 
-/// The GFMD job of `g` ([`crate::tui::model::progress::plan`]): the relaxation at p* from first touch and
+/// The GFMD job of `g` ([`crate::tui::base::progress::plan`]): the relaxation at p* from first touch and
 /// the theory on the map's spectrum ([`asperity::gfmd::run`]), then the same map over the
 /// loads of [`gfmd_sweep_spec`], each warm-started from the one below, and the theory's
 /// sweep on the map ([`asperity::gfmd::sweep::run_sweep`]). `report` gets the progress: at
@@ -400,7 +412,7 @@ pub fn gfmd_sweep_spec(p: f64) -> SweepSpec {
 pub fn gfmd_job(
     setup: &asperity::gfmd::GfmdSetup,
     cancel: &AtomicBool,
-    report: &mut dyn FnMut(crate::tui::model::progress::GfmdProgress),
+    report: &mut dyn FnMut(crate::tui::base::progress::GfmdProgress),
 ) -> Result<GfmdView> {
     use asperity::gfmd::{Progress, Stage};
     // a chart-sized histogram: ~10⁴ contact nodes on 512² give ~100 per bin
@@ -409,7 +421,7 @@ pub fn gfmd_job(
         ..asperity::gfmd::GfmdOptions::default()
     };
     let spec = gfmd_sweep_spec(setup.scene.pressure());
-    let plan = crate::tui::model::progress::plan(setup.scene.pressure(), &spec.pressures());
+    let plan = crate::tui::base::progress::plan(setup.scene.pressure(), &spec.pressures());
     let mut clock = crate::tui::effects::clock::Timeline::new(plan, grid_side(setup));
     let mut last: Option<std::time::Instant> = None;
     let mut on = |index: usize, p: &Progress| {

@@ -3,7 +3,7 @@
 //! measured values are in BENCHMARKS.md).
 
 use super::*;
-use crate::tui::model::progress::{GfmdPhase, GfmdProgress};
+use crate::tui::base::progress::{GfmdPhase, GfmdProgress};
 use asperity::input::preset::Preset;
 use std::sync::mpsc::channel;
 use std::time::{Duration, Instant};

@@ -14,12 +14,13 @@
 //! pressed ([`crate::tui::charts::snapshot::export_job`]); nothing here reads the state.
 
 use crate::chart;
+use crate::tui::base::data::{SweepData, ThicknessData};
+use crate::tui::base::gfmd_view::GfmdView;
 use crate::tui::charts::snapshot::export_job;
 pub use crate::tui::charts::snapshot::safe_name;
 use crate::tui::charts::Chart;
 use crate::tui::model::app::App;
 use crate::tui::model::command::ExportJob;
-use crate::tui::model::data::{GfmdView, SweepData, ThicknessData};
 use asperity::error::{Error, Result};
 use asperity::input::preset::{LoadBranch, ModelSpec, Preset};
 use asperity::input::scene::Scene;
@@ -58,7 +59,7 @@ pub fn scene_comment(job: &ExportJob, name: &str) -> String {
         format!("{}", s.thickness_qr())
     };
     // the surface: the measured one by its file, else the preset's
-    let surface = match crate::tui::model::words::surface_name(s) {
+    let surface = match crate::tui::base::words::surface_name(s) {
         Some(file) => format!("# surface: {file} (measured; the preset below gives the material, adhesion and load)\n"),
         None => String::new(),
     };
@@ -353,7 +354,7 @@ pub fn export_charts_as(job: &ExportJob, n: u32) -> Result<Vec<String>> {
     } else {
         crate::numfmt::short(sc.thickness_qr())
     };
-    let system = crate::tui::model::words::surface_name(sc).unwrap_or_else(|| job.preset.name.clone());
+    let system = crate::tui::base::words::surface_name(sc).unwrap_or_else(|| job.preset.name.clone());
     let note = format!(
         "{}, {}, t·q_r = {t}, γ_s = {} J/m²",
         system,
@@ -378,7 +379,7 @@ pub fn export_charts_as(job: &ExportJob, n: u32) -> Result<Vec<String>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tui::model::kinds::ChartKind;
+    use crate::tui::base::kinds::ChartKind;
 
     #[test]
     fn export_writes_three_files_without_overwriting() {

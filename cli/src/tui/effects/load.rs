@@ -1,11 +1,21 @@
 //! Reading a preset or a tour (a name built in, or a file) for the update, which never reads
 //! files itself: [`Command::LoadPreset`] and [`Command::LoadTour`] are run here and their
-//! outcome goes back as [`Msg::PresetLoaded`] and [`Msg::TourLoaded`].
+//! outcome goes back as [`Msg::PresetLoaded`] and [`Msg::TourLoaded`]. A fresh explorer
+//! ([`App::new`]) is opened here too: its preset picker lists the preset files found.
 
+use crate::tui::base::tour::Tour;
+use crate::tui::model::app::App;
 use crate::tui::model::command::Command;
 use crate::tui::model::msg::Msg;
-use crate::tui::model::tour::Tour;
 use asperity::input::preset::Preset;
+
+impl App {
+    /// A fresh explorer on `preset` (resolved from `source`), its picker listing the presets
+    /// built in and those under `presets/` in the working directory.
+    pub fn new(source: &str, preset: Preset) -> asperity::error::Result<App> {
+        App::open(source, preset, asperity::input::preset::list_available())
+    }
+}
 
 /// The message of a load command (None for the other commands).
 pub fn run(cmd: &Command) -> Option<Msg> {

@@ -10,9 +10,9 @@ pub mod files;
 pub mod load;
 pub mod worker;
 
+use crate::tui::base::protocol::Reply;
 use crate::tui::model::command::Command;
 use crate::tui::model::msg::Msg;
-use crate::tui::model::protocol::Reply;
 use asperity::error::{Error, Result};
 use std::sync::atomic::Ordering;
 

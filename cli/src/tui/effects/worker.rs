@@ -8,25 +8,25 @@
 //!   request (holding a key never queues a backlog) and skips it if `latest` has moved on.
 //! - Work is done cheapest first, each part sent as soon as it is ready: the current point
 //!   (Pr(σ*), a_r, …), then the load sweep of the charts (cancellable: `sweep` polls `cancel`),
-//!   then ū at the current p* (a one-point sweep, cancellable); the scale view's snapshots
-//!   (cancellable between frames) come right after the point when a visible chart needs them. Between parts the worker
-//!   checks `latest` and abandons stale work; a cancelled part is neither sent nor cached.
+//!   then ū at the current p* (read off the load sweep where one was computed, else
+//!   [`point_gap`], cancellable); the scale view's snapshots (cancellable between frames) come
+//!   right after the point when a visible chart needs them. A part no chart on screen needs
+//!   (the request's [`Request::needs`]) is not computed. Between parts the worker checks
+//!   `latest` and abandons stale work; a cancelled part is neither sent nor cached.
 //! - Results are cached in small LRUs keyed by the scene's parameters as bits (the sweep's
 //!   key leaves out p*), so stepping p* reuses the sweep and toggling back is instant.
 //! - Every reply carries its generation and its key; the UI keeps a reply only if the key is
 //!   the one its current scene needs (so stale replies are dropped).
 
+use crate::tui::base::data::{PointData, ScalesData, SweepData, ThicknessData};
+pub use crate::tui::base::protocol::*;
 pub use crate::tui::effects::engine::panic_text;
 use crate::tui::effects::engine::{evaluate_point, evaluate_preview};
 pub use crate::tui::effects::engine::{
-    interpolate_gap, load_sweep, preview_sweep, scale_view, spawn_gfmd, thickness_sweep, PREVIEW_EDGE_REL,
+    interpolate_gap, load_sweep, point_gap, preview_sweep, scale_view, spawn_gfmd, thickness_sweep, PREVIEW_EDGE_REL,
 };
-use crate::tui::model::data::{self, PointData, ScalesData, SweepData, ThicknessData};
-pub use crate::tui::model::protocol::*;
 use asperity::error::{Error, Result};
 use asperity::input::scene::Scene;
-use asperity::theory::engine::Options;
-use asperity::theory::sweep;
 use asperity::theory::sweep::SweepSpec;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::mpsc::{channel, Receiver, Sender};
@@ -159,22 +159,13 @@ pub fn process(
     let gap = match caches.gaps.get(&pkey) {
         Some(g) => g,
         None if from_sweep.is_some() => Ok(from_sweep.unwrap_or_default()),
-        None => {
-            let p = req.scene.pressure();
-            let spec = SweepSpec {
-                from: p,
-                to: p,
-                points: 1,
-            };
-            match sweep::sweep(&req.scene, &spec, &Options::chart(), Some(cancel)) {
-                Err(Error::Cancelled) => return,
-                r => {
-                    let g = r.and_then(|s| data::gap_of_sweep(&s));
-                    caches.gaps.put(pkey.clone(), g.clone());
-                    g
-                }
+        None => match point_gap(&req.scene, cancel) {
+            Err(Error::Cancelled) => return,
+            g => {
+                caches.gaps.put(pkey.clone(), g.clone());
+                g
             }
-        }
+        },
     };
     send(Reply::Gap {
         gen,

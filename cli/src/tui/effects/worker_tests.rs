@@ -2,11 +2,12 @@
 #![allow(unused_imports)]
 
 use super::*;
+use crate::tui::base::data::*;
+use crate::tui::base::kinds::Needs;
 use crate::tui::effects::engine::*;
-use crate::tui::model::data::*;
-use crate::tui::model::kinds::Needs;
 use asperity::input::model::Model;
 use asperity::theory::engine::{self, Options};
+use asperity::theory::sweep;
 
 #[test]
 fn gap_interpolation_is_exact_for_cubics_in_ln_p() {
@@ -468,4 +469,47 @@ fn the_scale_view_follows_the_point_is_cached_and_a_cancelled_one_is_neither_sen
     assert!(again
         .iter()
         .any(|r| matches!(r, Reply::Scales { result: Ok(s), .. } if s == sd)));
+}
+
+/// Compute what is shown: a request for the point alone (80×24 with the Pr chart on screen)
+/// computes no load sweep, and the panel's ū comes from the point's own gap table
+/// ([`point_gap`]) at the value a one-load sweep gives (the reference: [`sweep::sweep`] at that
+/// load, to `RUN_SWEEP_REL`), on the thin adhesive slab of the benchmark and without adhesion.
+#[test]
+fn a_point_alone_computes_no_load_sweep_and_its_gap_is_the_sweep_s() {
+    let thin = asperity::input::preset::Preset::resolve("system-2")
+        .unwrap()
+        .scene()
+        .unwrap()
+        .with_thickness_qr(0.0631)
+        .unwrap();
+    let dry = request(1, 0.01).scene;
+    for scene in [thin, dry] {
+        let mut req = request(1, 0.01);
+        req.scene = scene.clone();
+        req.needs = Needs {
+            point: true,
+            ..Needs::default()
+        };
+        let mut c = Caches::default();
+        let out = serve(&req, &mut c, false, false);
+        assert!(!kinds(&out).contains(&"sweep"), "{:?}", kinds(&out));
+        assert!(c.sweeps.is_empty());
+        let Some(Reply::Gap { result: Ok(g), .. }) = out.iter().find(|r| matches!(r, Reply::Gap { .. })) else {
+            panic!("a gap: {:?}", kinds(&out));
+        };
+        let p = scene.pressure();
+        let spec = asperity::theory::sweep::SweepSpec {
+            from: p,
+            to: p,
+            points: 1,
+        };
+        let sw = asperity::theory::sweep::sweep(&scene, &spec, &Options::chart(), None).unwrap();
+        let want = sw.rows[0].mean_gap_rel;
+        assert!(
+            (g / want - 1.0).abs() < asperity::tolerances::RUN_SWEEP_REL,
+            "ū/h_rms {g} against the one-load sweep's {want} (adhesive: {})",
+            scene.is_adhesive()
+        );
+    }
 }

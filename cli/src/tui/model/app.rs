@@ -3,22 +3,21 @@
 //! charts need, the request for the worker). Messages change it in [`crate::tui::update`];
 //! work that leaves the process (the worker, GFMD, files) is run by [`crate::tui::effects`].
 
+use crate::tui::base::data::{PointData, ScaleFrame, ScalesData, SweepData, ThicknessData, ADHESION_BY_DEFAULT};
+use crate::tui::base::gfmd_view::GfmdView;
+use crate::tui::base::kinds::{self as charts, ChartKind, Needs};
+use crate::tui::base::progress::same_system;
+pub use crate::tui::base::progress::GfmdState;
+use crate::tui::base::protocol::{CacheKey, Request, SceneKeys};
 pub use crate::tui::model::command::Command;
-use crate::tui::model::data::{
-    GfmdView, PointData, ScaleFrame, ScalesData, SweepData, ThicknessData, ADHESION_BY_DEFAULT,
-};
 pub use crate::tui::model::jobs::Jobs;
-use crate::tui::model::kinds::{self as charts, ChartKind, Needs};
 pub use crate::tui::model::knobs::*;
 pub use crate::tui::model::params::{Params, PresetEntry};
-use crate::tui::model::progress::same_system;
-pub use crate::tui::model::progress::GfmdState;
-use crate::tui::model::protocol::{CacheKey, Request, SceneKeys};
 pub use crate::tui::model::results::Results;
 pub use crate::tui::model::ui::{Message, Overlay, TourState, Ui};
 use asperity::error::Result;
 use asperity::input::model::{Model, ModelKind};
-use asperity::input::preset::{self, Preset};
+use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use asperity::surface::heightmap::Surface;
 use asperity::surface::spectrum::Spectrum;
@@ -42,11 +41,13 @@ pub struct App {
 }
 
 impl App {
-    /// A fresh explorer on `preset` (resolved from `source`).
-    pub fn new(source: &str, preset: Preset) -> Result<App> {
+    /// A fresh explorer on `preset` (resolved from `source`), whose picker lists `listed`
+    /// (name, where) as `asperity::input::preset::list_available` gives them (read by the
+    /// effects: `App::new` there lists them and calls this).
+    pub fn open(source: &str, preset: Preset, listed: Vec<(String, String)>) -> Result<App> {
         let base = initial_scene(&preset)?;
         let keys = SceneKeys::of(source, &base, sticky_range(None, base.pressure()));
-        let mut presets: Vec<PresetEntry> = preset::list_available()
+        let mut presets: Vec<PresetEntry> = listed
             .into_iter()
             .map(|(name, place)| PresetEntry { source: name, place })
             .collect();
@@ -96,9 +97,7 @@ impl App {
             },
             results: Results {
                 keys,
-                overlay_points: HashMap::new(),
-                overlay_sweeps: HashMap::new(),
-                overlay_thickness: HashMap::new(),
+                overlays: HashMap::new(),
                 thickness: None,
                 point_shown: None,
                 sweep_shown: None,
@@ -112,19 +111,7 @@ impl App {
                 sweep: None,
                 gap: None,
             },
-            jobs: Jobs {
-                gen: 0,
-                load_range: None,
-                busy: false,
-                busy_since: None,
-                gfmd: GfmdState::Idle,
-                gfmd_cancel: None,
-                gfmd_next: 0,
-                pending: true,
-                asked: Needs::default(),
-                last_export: None,
-                export_dir: PathBuf::from("."),
-            },
+            jobs: Jobs::new(PathBuf::from(".")),
         })
     }
 
@@ -193,7 +180,7 @@ impl App {
     }
 
     /// The charts the screen shows (indices into [`Ui::charts`]): those the terminal's size
-    /// holds ([`crate::tui::model::wrap::shown_charts`]: all three at 160×48, the focused one
+    /// holds ([`crate::tui::base::wrap::shown_charts`]: all three at 160×48, the focused one
     /// at 80×24, the focused one under `z`); all three while the size is unknown.
     pub fn shown_charts(&self) -> Vec<usize> {
         let Some((cols, rows)) = self.ui.size else {
@@ -205,7 +192,7 @@ impl App {
             .as_ref()
             .map(|t| t.tour.steps[t.step].caption.as_slice())
             .unwrap_or_default();
-        crate::tui::model::wrap::shown_charts(cols, rows, caption, self.ui.focus, self.ui.zoom)
+        crate::tui::base::wrap::shown_charts(cols, rows, caption, self.ui.focus, self.ui.zoom)
     }
 
     /// What the charts shown need computed: a chart not on screen is computed when it is
@@ -236,7 +223,7 @@ impl App {
             return self.results.point.as_ref().and_then(|r| r.as_ref().ok());
         }
         let key = &self.results.keys.of_model(m)?[0];
-        self.results.overlay_points.get(key).and_then(|r| r.as_ref().ok())
+        self.results.overlay_point(key)
     }
 
     /// The load sweep of model `m`.
@@ -245,7 +232,7 @@ impl App {
             return self.results.sweep.as_ref().and_then(|r| r.as_ref().ok());
         }
         let key = &self.results.keys.of_model(m)?[1];
-        self.results.overlay_sweeps.get(key).and_then(|r| r.as_ref().ok())
+        self.results.overlay_sweep(key)
     }
 
     /// The thickness sweep of model `m`.
@@ -254,7 +241,7 @@ impl App {
             return self.results.thickness.as_ref().and_then(|r| r.as_ref().ok());
         }
         let key = &self.results.keys.of_model(m)?[2];
-        self.results.overlay_thickness.get(key).and_then(|r| r.as_ref().ok())
+        self.results.overlay_thickness(key)
     }
 
     /// Whether the shown point belongs to an earlier scene.
@@ -398,7 +385,7 @@ impl App {
 
     /// The first error of the current results, for the status bar.
     pub fn compute_error(&self) -> Option<String> {
-        use crate::tui::model::words::describe;
+        use crate::tui::base::words::describe;
         if let Some(Err(e)) = &self.results.point {
             return Some(describe(e));
         }
@@ -442,14 +429,6 @@ impl App {
             error: true,
         });
     }
-}
-
-/// Inserts into a reply map, forgetting everything when it grows past a few hundred entries.
-pub(crate) fn bounded_insert<V>(map: &mut HashMap<CacheKey, V>, key: CacheKey, v: V) {
-    if map.len() >= 256 {
-        map.clear();
-    }
-    map.insert(key, v);
 }
 
 /// The scene the explorer opens a preset with (γ_s per [`ADHESION_BY_DEFAULT`]).

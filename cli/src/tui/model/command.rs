@@ -6,10 +6,11 @@
 //! itself ([`crate::tui::drive`]).
 
 use crate::chart::Chart;
-use crate::tui::model::data::{GfmdView, ScalesData, SweepData, ThicknessData};
-use crate::tui::model::kinds::ChartKind;
+use crate::tui::base::data::{ScalesData, SweepData, ThicknessData};
+use crate::tui::base::gfmd_view::GfmdView;
+use crate::tui::base::kinds::ChartKind;
+use crate::tui::base::protocol::Request;
 use crate::tui::model::pins::Pin;
-use crate::tui::model::protocol::Request;
 use asperity::input::preset::{MeasuredSpec, Preset};
 use asperity::input::scene::Scene;
 use asperity::surface::heightmap::Surface;

@@ -214,8 +214,8 @@ pub(crate) fn parse_bool(field: &str, s: &str) -> Result<bool> {
 }
 
 /// The panel row of a tour step's knob.
-pub fn knob_param(k: crate::tui::model::tour::Knob) -> Param {
-    use crate::tui::model::tour::Knob;
+pub fn knob_param(k: crate::tui::base::tour::Knob) -> Param {
+    use crate::tui::base::tour::Knob;
     match k {
         Knob::Preset => Param::Preset,
         Knob::Model => Param::Model,

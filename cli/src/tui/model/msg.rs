@@ -3,8 +3,8 @@
 //! started). Every message is plain data, so [`crate::tui::update::update`] is a function of
 //! the state and the message and is unit-tested message by message.
 
-use crate::tui::model::protocol::Reply;
-use crate::tui::model::tour::Tour;
+use crate::tui::base::protocol::Reply;
+use crate::tui::base::tour::Tour;
 use asperity::error::Result;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;

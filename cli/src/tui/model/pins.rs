@@ -6,7 +6,7 @@
 //! them.
 
 use crate::numfmt::short;
-use crate::tui::model::kinds::ChartKind;
+use crate::tui::base::kinds::ChartKind;
 use asperity::input::scene::Scene;
 
 /// Most pins kept (each has its own colour; the oldest goes first).

@@ -1,8 +1,8 @@
 //! What the screen shows and how: the knob selected, the charts, overlays, the tour, the status line.
 
-use crate::tui::model::kinds::ChartKind;
-use crate::tui::model::tour::Tour;
-use crate::tui::model::wrap::MIN_SIZE;
+use crate::tui::base::kinds::ChartKind;
+use crate::tui::base::tour::Tour;
+use crate::tui::base::wrap::MIN_SIZE;
 
 /// Whether a terminal of `cols`×`rows` is smaller than [`MIN_SIZE`]: the view then shows
 /// only the "terminal too small" screen, and the update takes only the keys that quit.

@@ -1,9 +1,9 @@
 //! An action of the key table → the next state, and the commands it asks for (files, GFMD,
 //! a tour to load).
 
+use crate::tui::base::keys::Action;
+use crate::tui::base::kinds::ChartKind;
 use crate::tui::model::app::*;
-use crate::tui::model::keys::Action;
-use crate::tui::model::kinds::ChartKind;
 
 impl App {
     /// Performs an action of the key table; the command it asks for, if any.
@@ -62,7 +62,7 @@ impl App {
                 if self.ui.tour.is_some() {
                     self.leave_tour();
                 } else {
-                    let name = crate::tui::model::tour::DEFAULT_TOUR.to_string();
+                    let name = crate::tui::base::tour::DEFAULT_TOUR.to_string();
                     return Some(Command::LoadTour(name));
                 }
             }
@@ -93,7 +93,7 @@ impl App {
             Action::Play => self.toggle_play(),
             Action::CaptionDown => {
                 let most = self.ui.tour.as_ref().map_or(0, |t| {
-                    crate::tui::model::wrap::caption_rows_at_most(&t.tour.steps[t.step].caption)
+                    crate::tui::base::wrap::caption_rows_at_most(&t.tour.steps[t.step].caption)
                 });
                 self.ui.caption_scroll = (self.ui.caption_scroll + 1).min(most.saturating_sub(1));
             }

@@ -2,39 +2,27 @@
 //! progress of the run shown (a reply of any other run, e.g. one cancelled before, is
 //! dropped), and its outcome with the time it took; and the status line's words for the run.
 
+use crate::tui::base::gfmd_view::GfmdView;
+use crate::tui::base::progress::{format_secs, GfmdProgress};
 use crate::tui::model::app::*;
-use crate::tui::model::data::GfmdView;
-use crate::tui::model::progress::{format_secs, GfmdProgress};
 use asperity::error::{Error, Result};
-use std::sync::atomic::AtomicBool;
-use std::sync::Arc;
 
 impl App {
     /// `g`: asks for a GFMD run of the current scene on the preset's reduced grid (with
     /// the preset and the measured map it is set up from), or cancels the running one (a
     /// run started in the same burst stops at its first check).
     pub fn toggle_gfmd(&mut self) -> Option<Command> {
-        if let GfmdState::Running { .. } = self.jobs.gfmd {
-            self.jobs.gfmd = GfmdState::Idle;
+        if let Some(cancel) = self.jobs.cancel_gfmd() {
             self.info("GFMD cancelled");
-            return self.jobs.gfmd_cancel.take().map(Command::CancelGfmd);
+            return Some(Command::CancelGfmd(cancel));
         }
-        self.jobs.gfmd_next += 1;
-        let id = self.jobs.gfmd_next;
-        let cancel = Arc::new(AtomicBool::new(false));
-        self.jobs.gfmd_cancel = Some(cancel.clone());
+        let (id, cancel) = self.jobs.start_gfmd(&self.params.scene);
         let start = Command::StartGfmd {
             id,
             scene: self.params.scene.clone(),
             preset: Box::new(self.params.preset.clone()),
             map: self.shared_map_of(&self.params.scene),
             cancel,
-        };
-        self.jobs.gfmd = GfmdState::Running {
-            id,
-            scene: self.params.scene.clone(),
-            progress: GfmdProgress::starting(self.params.scene.pressure()),
-            started: None,
         };
         self.info("GFMD started on the preset's reduced grid (g cancels)");
         Some(start)
@@ -66,14 +54,9 @@ impl App {
     /// The end of run `id` (if it is the running one): its outcome and time, "GFMD done in
     /// X s" in the status line; a cancelled run leaves nothing.
     pub(crate) fn on_gfmd_done(&mut self, id: u64, result: Result<GfmdView>, elapsed_s: f64) {
-        let GfmdState::Running { id: cur, scene, .. } = &self.jobs.gfmd else {
+        let Some(scene) = self.jobs.end_gfmd(id) else {
             return;
         };
-        if *cur != id {
-            return;
-        }
-        let scene = scene.clone();
-        self.jobs.gfmd_cancel = None;
         self.clear_gfmd_start_message();
         let took = if self.ui.show_timing {
             format!(" in {}", format_secs(elapsed_s))

@@ -1,9 +1,9 @@
 //! Unit tests of `g` and the GFMD job's replies (no thread: the replies are made here).
 
+use crate::tui::base::gfmd_view::GfmdView;
+use crate::tui::base::protocol::{GfmdProgress, Reply};
 use crate::tui::effects::engine as jobs;
 use crate::tui::model::app::*;
-use crate::tui::model::data::GfmdView;
-use crate::tui::model::protocol::{GfmdProgress, Reply};
 use asperity::error::Error;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
@@ -39,7 +39,7 @@ fn started(cs: Vec<Command>) -> Option<Start> {
 
 /// A progress report of run `id` in phase `index` of a five-load job at p* = 0.01.
 fn report(index: usize, iteration: usize, residual: f64) -> GfmdProgress {
-    let plan = crate::tui::model::progress::plan(0.01, &jobs::gfmd_sweep_spec(0.01).pressures());
+    let plan = crate::tui::base::progress::plan(0.01, &jobs::gfmd_sweep_spec(0.01).pressures());
     GfmdProgress {
         phase: plan[index],
         index,

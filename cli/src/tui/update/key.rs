@@ -1,9 +1,9 @@
 //! Key presses → the next state: the overlays (help, preset picker) and the field being
 //! typed take keys first; the tour takes ←/→ and Esc; a digit starts typing a value; every
-//! other key is looked up in the key table ([`crate::tui::model::keys`]) and acted on.
+//! other key is looked up in the key table ([`crate::tui::base::keys`]) and acted on.
 
+use crate::tui::base::keys;
 use crate::tui::model::app::*;
-use crate::tui::model::keys;
 use crate::tui::update::scene::load_preset;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
@@ -21,7 +21,7 @@ impl App {
         match self.ui.overlay {
             Overlay::Help => {
                 // ↓↑ (j k, PgDn PgUp) scroll, any other key closes the help; q still quits
-                let n = crate::tui::model::keys::help_rows();
+                let n = crate::tui::base::keys::help_rows();
                 match ev.code {
                     KeyCode::Down | KeyCode::Char('j') => self.ui.help_scroll = (self.ui.help_scroll + 1).min(n),
                     KeyCode::PageDown => self.ui.help_scroll = (self.ui.help_scroll + 8).min(n),
@@ -91,7 +91,7 @@ impl App {
                     match self.set_typed(self.selected_param(), &text) {
                         Ok(cmd) => return cmd,
                         // in the panel's words (t·q_r, p*), not the preset's keys
-                        Err(e) => self.fail(crate::tui::model::words::describe(&e)),
+                        Err(e) => self.fail(crate::tui::base::words::describe(&e)),
                     }
                 }
             }

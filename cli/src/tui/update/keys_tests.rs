@@ -2,8 +2,8 @@
 //! key asks for, typed values out of range, pins of an unchanged scene; only the charts a
 //! terminal shows (`f`, `z`, a resize) are computed.
 
+use crate::tui::base::kinds::ChartKind;
 use crate::tui::model::app::*;
-use crate::tui::model::kinds::ChartKind;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 fn app() -> App {
@@ -197,7 +197,7 @@ fn a_gamma_below_the_resolvable_floor_is_refused_with_one_line() {
 
 #[test]
 fn the_keys_are_computed_once_per_scene_change_and_the_view_hashes_nothing() {
-    use crate::tui::model::protocol::{point_key, sweep_key, SceneKeys};
+    use crate::tui::base::protocol::{point_key, sweep_key, SceneKeys};
     let mut a = app();
     key(&mut a, KeyCode::Char('y'));
     let before = a.results.keys().clone();

@@ -21,7 +21,7 @@ impl App {
     /// (with the reason in the status line) where the scene does not take them.
     pub(crate) fn cycle_model(&mut self, dir: i32) {
         let m = self.params.scene.model();
-        let [yp08, xu24] = crate::tui::model::kinds::variants(&m);
+        let [yp08, xu24] = crate::tui::base::kinds::variants(&m);
         let cycle = [
             Model::named(1),
             Model::named(2),
@@ -34,7 +34,7 @@ impl App {
         ];
         let n = cycle.len() as i32;
         // the cycle is in the order of the model slots (model 5 is slot 7)
-        let cur = crate::tui::model::kinds::slot(&m) as i32;
+        let cur = crate::tui::base::kinds::slot(&m) as i32;
         let mut skipped = Vec::new();
         for k in 1..n {
             let next = &cycle[(cur + dir * k).rem_euclid(n) as usize];

@@ -3,13 +3,14 @@
 //! find is handed in as its message.
 
 use super::update;
+use crate::tui::base::data::{ScaleFrame, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::gfmd_view::GfmdView;
+use crate::tui::base::kinds::ChartKind;
+use crate::tui::base::progress::GfmdProgress;
+use crate::tui::base::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
+use crate::tui::base::tour::{Tour, DEFAULT_TOUR};
 use crate::tui::model::app::*;
-use crate::tui::model::data::{GfmdView, ScaleFrame, ScalesData, SweepData, ThicknessData};
-use crate::tui::model::kinds::ChartKind;
 use crate::tui::model::msg::{Msg, Written};
-use crate::tui::model::progress::GfmdProgress;
-use crate::tui::model::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
-use crate::tui::model::tour::{Tour, DEFAULT_TOUR};
 use asperity::error::Error;
 use asperity::input::preset::Preset;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -192,10 +193,10 @@ fn the_clock_is_the_loops_and_times_the_busy_state_and_the_gfmd_run() {
     // a request is busy since the loop's clock, not since a clock update read itself
     a.refresh();
     a.take_request().unwrap();
-    assert_eq!(a.jobs.busy_since, Some(t0));
+    assert_eq!(a.jobs.busy_since(), Some(t0));
     let later = t0 + std::time::Duration::from_millis(1500);
     update(&mut a, Msg::Clock(later));
-    assert!((a.ui.elapsed_s(a.jobs.busy_since) - 1.5).abs() < 1e-9);
+    assert!((a.ui.elapsed_s(a.jobs.busy_since()) - 1.5).abs() < 1e-9);
     // an earlier instant than the clock's reads as no time, never negative
     assert_eq!(a.ui.elapsed_s(Some(later + std::time::Duration::from_secs(1))), 0.0);
     // the GFMD status line's time is the clock's since the run started
@@ -325,11 +326,11 @@ fn done_ends_the_busy_state_of_the_newest_request_only() {
     let first = a.take_request().unwrap().gen;
     a.refresh();
     let second = a.take_request().unwrap().gen;
-    assert!(a.jobs.busy);
+    assert!(a.jobs.busy());
     assert!(reply(&mut a, Reply::Done { gen: first }).is_empty());
-    assert!(a.jobs.busy, "an older request's end is not the newest's");
+    assert!(a.jobs.busy(), "an older request's end is not the newest's");
     reply(&mut a, Reply::Done { gen: second });
-    assert!(!a.jobs.busy && a.jobs.busy_since.is_none());
+    assert!(!a.jobs.busy() && a.jobs.busy_since().is_none());
 }
 
 #[test]
@@ -463,7 +464,7 @@ fn the_mouse_focuses_selects_and_steps_only_when_asked_for() {
 
 #[test]
 fn a_resize_is_kept_and_decides_whether_the_screen_is_too_small() {
-    use crate::tui::model::wrap::MIN_SIZE;
+    use crate::tui::base::wrap::MIN_SIZE;
     let mut a = idle();
     // unknown size (a test's state, before the first frame): keys act
     assert_eq!(a.ui.size, None);

@@ -1,8 +1,9 @@
 //! The worker's replies → the next state: a result is kept only if it belongs to the current
 //! scene (or to another model of it, while `M` overlays every model).
 
+use crate::tui::base::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
 use crate::tui::model::app::*;
-use crate::tui::model::protocol::{point_key, scales_key, sweep_key, thickness_key, Reply};
+use crate::tui::model::results::Stored;
 
 impl App {
     /// Takes a worker reply: kept only if it belongs to the current scene.
@@ -14,7 +15,7 @@ impl App {
                     self.results.point = Some(result);
                     self.results.point_shown = Some(key);
                 } else if self.overlay_keys().0.contains(&key) {
-                    bounded_insert(&mut self.results.overlay_points, key, result);
+                    self.results.store(key, Stored::Point(result));
                 }
             }
             Reply::Sweep { key, result, .. } => {
@@ -23,7 +24,7 @@ impl App {
                     self.results.sweep_shown = Some(key);
                     self.follow_window();
                 } else if self.overlay_keys().1.contains(&key) {
-                    bounded_insert(&mut self.results.overlay_sweeps, key, result);
+                    self.results.store(key, Stored::Sweep(result));
                 }
             }
             Reply::Gap { key, result, .. } => {
@@ -37,7 +38,7 @@ impl App {
                     self.results.thickness = Some(result);
                     self.results.thickness_shown = Some(key);
                 } else if self.overlay_keys().2.contains(&key) {
-                    bounded_insert(&mut self.results.overlay_thickness, key, result);
+                    self.results.store(key, Stored::Thickness(result));
                 }
             }
             Reply::Scales { key, result, .. } => {
@@ -66,17 +67,9 @@ impl App {
                     self.results.gap = Some(Err(fault));
                     self.results.gap_shown = Some(point_key(&p.source, &p.scene));
                 }
-                if gen == self.jobs.gen() {
-                    self.jobs.busy = false;
-                    self.jobs.busy_since = None;
-                }
+                self.jobs.served(gen);
             }
-            Reply::Done { gen } => {
-                if gen == self.jobs.gen() {
-                    self.jobs.busy = false;
-                    self.jobs.busy_since = None;
-                }
-            }
+            Reply::Done { gen } => self.jobs.served(gen),
         }
     }
 }

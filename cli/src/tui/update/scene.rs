@@ -1,8 +1,8 @@
 //! A new scene or preset: the load history follows the hysteresis window it moves under the
 //! load; a preset arrives resolved (the effect [`crate::tui::effects::load`] reads the file).
 
+use crate::tui::base::protocol::sweep_key;
 use crate::tui::model::app::*;
-use crate::tui::model::protocol::sweep_key;
 use asperity::error::Result;
 use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;

@@ -1,8 +1,8 @@
 //! Walking a tour: its steps set the preset, the scene, the charts and the knob selected;
 //! ←/→ move between steps, Esc leaves.
 
+use crate::tui::base::tour::Tour;
 use crate::tui::model::app::*;
-use crate::tui::model::tour::Tour;
 use asperity::error::Result;
 
 impl App {

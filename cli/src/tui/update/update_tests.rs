@@ -1,13 +1,13 @@
 //! Unit tests of the state and its updates (every key without a terminal).
 #![allow(unused_imports)]
 
+use crate::tui::base::data::*;
+use crate::tui::base::keys::Action;
+use crate::tui::base::kinds::ChartKind;
+use crate::tui::base::protocol::{point_key, Reply};
+use crate::tui::base::tour::Tour;
 use crate::tui::effects::engine;
 use crate::tui::model::app::*;
-use crate::tui::model::data::*;
-use crate::tui::model::keys::Action;
-use crate::tui::model::kinds::ChartKind;
-use crate::tui::model::protocol::{point_key, Reply};
-use crate::tui::model::tour::Tour;
 use asperity::error::{Error, Result};
 use asperity::input::model::{Model, ModelKind};
 use asperity::input::preset::Preset;
@@ -156,7 +156,7 @@ fn requests_carry_increasing_generations_and_only_on_change() {
     key(&mut a, KeyCode::Right);
     let r2 = take_compute(&mut a).unwrap();
     assert!(r2.gen > r1.gen);
-    assert!(a.jobs.busy);
+    assert!(a.jobs.busy());
     // a stale point (from r1's scene) is dropped, the current one kept
     a.on_reply(Reply::Point {
         gen: r1.gen,
@@ -165,9 +165,9 @@ fn requests_carry_increasing_generations_and_only_on_change() {
     });
     assert!(a.results.point.is_none());
     a.on_reply(Reply::Done { gen: r1.gen });
-    assert!(a.jobs.busy);
+    assert!(a.jobs.busy());
     a.on_reply(Reply::Done { gen: r2.gen });
-    assert!(!a.jobs.busy);
+    assert!(!a.jobs.busy());
 }
 
 #[test]
@@ -262,7 +262,7 @@ fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() 
     key(&mut a, KeyCode::Char('m'));
     assert_eq!(a.params.scene.model().kind, ModelKind::Xu24);
     // with a variant current, M draws both variants beside models 1–4
-    let kinds: Vec<ModelKind> = crate::tui::model::kinds::overlay_models(&a.params.scene)
+    let kinds: Vec<ModelKind> = crate::tui::base::kinds::overlay_models(&a.params.scene)
         .iter()
         .filter_map(|m| a.params.scene.clone().with_model(*m).ok())
         .map(|s| s.model().kind)
@@ -276,7 +276,7 @@ fn the_variants_of_the_literature_are_in_the_cycle_where_the_scene_takes_them() 
     assert_eq!(a.params.scene.model().number(), Some(5));
     key(&mut a, KeyCode::Char('m'));
     assert_eq!(a.params.scene.model().number(), Some(1));
-    assert_eq!(crate::tui::model::kinds::overlay_models(&a.params.scene).len(), 4);
+    assert_eq!(crate::tui::base::kinds::overlay_models(&a.params.scene).len(), 4);
     // a slab is refused while a variant is current, and the scene stays as it was
     for _ in 0..5 {
         key(&mut a, KeyCode::Char('m'));
@@ -360,7 +360,7 @@ fn a_tour_step_selects_the_knob_its_caption_names() {
     a.act(Action::Up);
     a.tour_go(jump as i32);
     let step = &a.ui.tour.as_ref().unwrap().tour.steps[jump];
-    assert_eq!(step.select, Some(crate::tui::model::tour::Knob::Pressure));
+    assert_eq!(step.select, Some(crate::tui::base::tour::Knob::Pressure));
     assert_eq!(a.selected_param(), Param::Pressure);
     a.tour_go(-2);
     assert_eq!(a.selected_param(), Param::Thickness);
@@ -449,13 +449,13 @@ fn the_scale_view_scrubs_plays_to_the_end_and_pauses() {
     other.set_pressure(other.pressure() * 2.0).unwrap();
     a.on_reply(Reply::Scales {
         gen: 1,
-        key: crate::tui::model::protocol::scales_key(&a.params.source, &other),
+        key: crate::tui::base::protocol::scales_key(&a.params.source, &other),
         result: Ok(frames(2)),
     });
     assert_eq!(a.scales_data().map(|d| d.frames.len()), Some(4));
     a.on_reply(Reply::Scales {
         gen: 1,
-        key: crate::tui::model::protocol::scales_key(&a.params.source, &a.params.scene),
+        key: crate::tui::base::protocol::scales_key(&a.params.source, &a.params.scene),
         result: Ok(frames(2)),
     });
     assert_eq!(a.scales_data().map(|d| d.frames.len()), Some(2));
@@ -520,7 +520,7 @@ fn typed_values_stay_on_their_own_grid_until_the_next_typed_value() {
 fn j_and_k_scroll_a_cut_caption_and_a_new_step_starts_at_its_top() {
     let mut a = app();
     a.start_tour(Tour::resolve("wang-muser").unwrap(), 1);
-    let most = crate::tui::model::wrap::caption_rows_at_most(&a.ui.tour.as_ref().unwrap().tour.steps[1].caption);
+    let most = crate::tui::base::wrap::caption_rows_at_most(&a.ui.tour.as_ref().unwrap().tour.steps[1].caption);
     for _ in 0..50 {
         key(&mut a, KeyCode::Char('J'));
     }

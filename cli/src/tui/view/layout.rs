@@ -11,8 +11,8 @@
 //!   where each is at least [`MIN_PANEL_COLS`] wide, else the focused chart alone (`f` shows
 //!   the next). Fewer panels, never unreadable ones.
 
-use crate::tui::model::wrap::{caption_box_rows, chart_panels, CAPTION_BORDER_ROWS};
-pub use crate::tui::model::wrap::{wrap, MIN_PANEL_COLS, MIN_PANEL_ROWS, MIN_PLOT_ROWS, MIN_SIZE, PANEL_CHROME_ROWS};
+use crate::tui::base::wrap::{caption_box_rows, chart_panels, CAPTION_BORDER_ROWS};
+pub use crate::tui::base::wrap::{wrap, MIN_PANEL_COLS, MIN_PANEL_ROWS, MIN_PLOT_ROWS, MIN_SIZE, PANEL_CHROME_ROWS};
 use ratatui::layout::Rect;
 
 /// Where everything goes.

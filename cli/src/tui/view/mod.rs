@@ -12,10 +12,10 @@ pub mod panel;
 use crate::chart::dashes;
 use crate::looks::Glyph;
 pub use crate::numfmt::sig;
+use crate::tui::base::keys;
 use crate::tui::charts::plot;
 use crate::tui::charts::{self, Draw, Role};
 use crate::tui::model::app::{App, Overlay};
-use crate::tui::model::keys;
 pub use crate::tui::view::layout::MIN_SIZE;
 pub use crate::tui::view::palette::{Palette, SPINNER, SPINNER_DELAY};
 use crate::tui::view::panel::draw_panel;
@@ -99,7 +99,7 @@ pub fn screen_of(app: &App, area: Rect, pal: Palette) -> (Line<'static>, layout:
         wrapped_rows(status_line.width(), area.width).clamp(1, STATUS_ROWS)
     };
     let caption = caption_text(app);
-    let panel_w = crate::tui::model::wrap::panel_cols(area.width);
+    let panel_w = crate::tui::base::wrap::panel_cols(area.width);
     let scr = layout::screen(
         area,
         &caption,
@@ -191,8 +191,8 @@ fn draw_title(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     ];
     // the spinner only once a computation has taken a while (most take milliseconds)
     if app.ui.show_timing
-        && app.jobs.busy_since.is_some()
-        && app.ui.elapsed_s(app.jobs.busy_since) >= SPINNER_DELAY.as_secs_f64()
+        && app.jobs.busy_since().is_some()
+        && app.ui.elapsed_s(app.jobs.busy_since()) >= SPINNER_DELAY.as_secs_f64()
     {
         spans.push(Span::styled(
             format!("{} computing", SPINNER[app.ui.spinner % SPINNER.len()]),

@@ -3,8 +3,8 @@
 //! the scene in physical units.
 
 use crate::numfmt::sig;
+use crate::tui::base::progress::format_secs;
 use crate::tui::model::app::{App, GfmdState, Param};
-use crate::tui::model::progress::format_secs;
 use crate::tui::view::palette::{Palette, SPINNER};
 use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
@@ -111,7 +111,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         row_styled("μ_T", sig(app.params.scene.tabor(), 3), false);
     }
     let state = match (&app.results.point, shown) {
-        _ if stale_point || (app.jobs.busy && app.results.point.is_none()) => "computing…".to_string(),
+        _ if stale_point || (app.jobs.busy() && app.results.point.is_none()) => "computing…".to_string(),
         (Some(Ok(_)), Some(p)) if p.preview => format!("{} · refining…", p.branch),
         (Some(Ok(_)), Some(p)) => p.branch.clone(),
         (Some(Err(_)), _) => "failed (see below)".into(),
@@ -159,7 +159,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
 
 /// A hysteresis: every branch at this load, ◀ the one the load history is on.
 fn branch_lines(
-    branches: &[crate::tui::model::data::BranchRow],
+    branches: &[crate::tui::base::data::BranchRow],
     on_unloading: bool,
     style: Style,
 ) -> Vec<Line<'static>> {
@@ -180,7 +180,7 @@ fn branch_lines(
 }
 
 /// The trust row: computed with the point by the worker, not while drawing (– until then).
-fn trust_of(shown: Option<&crate::tui::model::data::PointData>) -> String {
+fn trust_of(shown: Option<&crate::tui::base::data::PointData>) -> String {
     match shown.map(|p| p.trust.as_str()) {
         Some(t) if !t.is_empty() => t.to_string(),
         _ => "–".to_string(),
@@ -261,7 +261,7 @@ fn gfmd_rows(app: &App) -> Vec<(String, String)> {
     v
 }
 
-pub use crate::tui::model::words::{surface_name, surface_name_of};
+pub use crate::tui::base::words::{surface_name, surface_name_of};
 
 /// A value with an SI prefix: 250.0 kPa, 0.7766 µm.
 pub fn si(x: f64, unit: &str) -> String {

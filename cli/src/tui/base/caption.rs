@@ -17,8 +17,8 @@
 //! presses it in the explorer and checks.
 
 use crate::looks::{describe, Role};
-use crate::tui::model::keys;
-use crate::tui::model::kinds::ChartKind;
+use crate::tui::base::keys;
+use crate::tui::base::kinds::ChartKind;
 use serde::Deserialize;
 
 /// What pressing a key at a step gives (checked by the tour test in the explorer).

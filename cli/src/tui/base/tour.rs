@@ -38,7 +38,7 @@
 //! below = { quantity = "eq18/p*" }   # and/or below/above/near another quantity or scene
 //!
 //! [[step.press]]               # optional: what a `{key:KEY}` of the caption does
-//! says = "l turns p* up"       # see [`crate::tui::model::caption`] (also `{look:NAME}` references)
+//! says = "l turns p* up"       # see [`crate::tui::base::caption`] (also `{look:NAME}` references)
 //! key = "l"
 //! raises = "pressure"
 //! ```
@@ -47,8 +47,8 @@
 //! the test `cli/tests/tui_tour_claims.rs` evaluates every one of them with the engine.
 
 use crate::looks::Role;
-use crate::tui::model::caption::{self, Press};
-use crate::tui::model::kinds::ChartKind;
+use crate::tui::base::caption::{self, Press};
+use crate::tui::base::kinds::ChartKind;
 use asperity::error::{Error, Result};
 use asperity::input::model::Model;
 use asperity::input::overrides::Overrides;
@@ -129,7 +129,7 @@ impl Knob {
     }
 }
 
-pub use crate::tui::model::tour_check::{Check, Side, QUANTITIES};
+pub use crate::tui::base::tour_check::{Check, Side, QUANTITIES};
 
 /// One validated step.
 #[derive(Debug, Clone, PartialEq)]

@@ -2,9 +2,9 @@
 //! scene, what the visible charts need), the [`Reply`]s, and the cache keys that tie a reply
 //! to the scene it belongs to. Plain data, shared by the state and the worker.
 
-use crate::tui::model::data::{self, PointData, ScalesData, SweepData, ThicknessData};
-use crate::tui::model::kinds::Needs;
-pub use crate::tui::model::progress::GfmdProgress;
+use crate::tui::base::data::{PointData, ScalesData, SweepData, ThicknessData};
+use crate::tui::base::kinds::Needs;
+pub use crate::tui::base::progress::GfmdProgress;
 use asperity::error::Result;
 use asperity::input::model::Model;
 use asperity::input::scene::Scene;
@@ -133,7 +133,7 @@ pub struct SceneKeys {
 impl SceneKeys {
     /// The keys of `scene` of preset `source` with the load charts over `range`.
     pub fn of(source: &str, scene: &Scene, range: (f64, f64)) -> SceneKeys {
-        let overlays = crate::tui::model::kinds::overlay_models(scene)
+        let overlays = crate::tui::base::kinds::overlay_models(scene)
             .into_iter()
             .filter_map(|m| {
                 let s = scene.clone().with_model(m).ok()?;
@@ -229,7 +229,7 @@ pub enum Reply {
         /// Run id.
         id: u64,
         /// The run, or its error.
-        result: Result<data::GfmdView>,
+        result: Result<crate::tui::base::gfmd_view::GfmdView>,
         /// Seconds the whole job took.
         elapsed_s: f64,
     },

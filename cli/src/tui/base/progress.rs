@@ -15,7 +15,7 @@
 //! Until the relaxation and the theory at p* have both finished there is no estimate
 //! ("estimating").
 
-use crate::tui::model::data::GfmdView;
+use crate::tui::base::gfmd_view::GfmdView;
 use asperity::input::scene::Scene;
 
 /// One phase of the GFMD job, in the order the job runs them ([`plan`]).
