@@ -130,23 +130,8 @@ pub fn point_table(preset: &str, out: &PointReport) -> String {
     }
     line("elastic_energy", format!("{:.6e} J/m^2", out.elastic_energy));
     line("trust", out.trust.summary.clone());
-    if let Some(po) = &out.pull_off {
-        let opt = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.3e}"));
-        line(
-            "pull-off",
-            format!(
-                "{:.3e} (tension bound {:.3e}); DMT routes: bam {}, gap-dmt {}; GFMD nearest {}",
-                po.pull_off_pressure,
-                po.tension_bound,
-                opt(po.bam_pull_off_pressure),
-                opt(po.gap_dmt_pull_off_pressure),
-                opt(po.gfmd.map(|g| g.pull_off_pressure))
-            ),
-        );
-        line("pull-off trust", po.trust.summary.clone());
-        for n in &po.notes {
-            line("pull-off note", n.clone());
-        }
+    for (k, v) in out.pull_off.as_ref().map(pull_off_rows).unwrap_or_default() {
+        line(k, v);
     }
     match &out.converged_note {
         Some(why) if !out.converged => line("converged", format!("false: {why}")),
@@ -161,3 +146,25 @@ pub fn point_table(preset: &str, out: &PointReport) -> String {
     );
     t.trim_end().to_string()
 }
+
+/// `run --pull-off --format table`'s rows: the three pull-offs and their trust.
+fn pull_off_rows(po: &asperity::report::pull_off::PullOffReport) -> Vec<(&'static str, String)> {
+    let opt = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.3e}"));
+    let mut rows = vec![
+        (
+            "pull-off",
+            format!(
+                "{:.3e} (tension bound {:.3e}); DMT routes: bam {}, gap-dmt {}; GFMD nearest {}",
+                po.pull_off_pressure,
+                po.tension_bound,
+                opt(po.bam_pull_off_pressure),
+                opt(po.gap_dmt_pull_off_pressure),
+                opt(po.gfmd.map(|g| g.pull_off_pressure))
+            ),
+        ),
+        ("pull-off trust", po.trust.summary.clone()),
+    ];
+    rows.extend(po.notes.iter().map(|n| ("pull-off note", n.clone())));
+    rows
+}
+
