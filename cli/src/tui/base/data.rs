@@ -338,6 +338,10 @@ pub struct SweepData {
     /// The quick first sweep of an adhesive scene (fewer loads, see
     /// `worker::PREVIEW_POINTS`), drawn while the full one runs.
     pub preview: bool,
+    /// The pull-off read-out of an adhesive scene in one line (the theory's pull-off under
+    /// tension beside GFMD's nearest measured one, [`asperity::report::pull_off`]), added by
+    /// the worker after the full sweep; None until then and without adhesion.
+    pub pull_off_read_out: Option<String>,
     /// Why loads with a_r have no ū/h_rms (the mean gap failed on its own), if so.
     pub gap_note: Option<String>,
 }
@@ -389,6 +393,7 @@ impl SweepData {
             jump_in: s.jump_in_pressure,
             pull_off: s.pull_off_pressure,
             preview: false,
+            pull_off_read_out: None,
             gap_note: s.gap_note.clone(),
         }
     }

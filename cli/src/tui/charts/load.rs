@@ -23,6 +23,9 @@ pub fn area(app: &App, ratio: bool) -> Chart {
     };
     m.stale = app.sweep_is_stale();
     mark_preview(&mut m, sw);
+    if let Some(line) = sw.pull_off_read_out.as_ref().filter(|_| !ratio) {
+        m.title = format!("a_r(p*) · {line}");
+    }
     if app.eq18_applies() {
         m.series.push(Series {
             name: "eq. (18)".into(),

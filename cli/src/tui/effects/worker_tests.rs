@@ -513,3 +513,40 @@ fn a_point_alone_computes_no_load_sweep_and_its_gap_is_the_sweep_s() {
         );
     }
 }
+
+#[test]
+fn an_adhesive_load_chart_gets_its_pull_off_read_out_last_and_once() {
+    // system 2 at its own surface energy (half-space): the sweep comes back a second time with
+    // the pull-off line, GFMD's nearest measured pull-off in it; a second request reads it
+    // from the cache
+    let mut req = request(1, 1e-3);
+    let mut scene = asperity::input::preset::Preset::resolve("system-2")
+        .unwrap()
+        .scene()
+        .unwrap();
+    scene.set_pressure(1e-3).unwrap();
+    req.scene = scene;
+    req.source = "system-2".into();
+    req.range = (1e-4, 1e-2);
+    let mut caches = Caches::default();
+    let replies = serve(&req, &mut caches, false, false);
+    let lines: Vec<Option<String>> = replies
+        .iter()
+        .filter_map(|r| match r {
+            Reply::Sweep { result: Ok(sd), .. } if !sd.preview => Some(sd.pull_off_read_out.clone()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(lines.len(), 2, "the sweep, then the sweep with its read-out");
+    assert_eq!(lines[0], None);
+    let line = lines[1].clone().expect("the read-out");
+    assert!(line.starts_with("pull-off ") && line.contains("GFMD -"), "{line}");
+    let again = serve(&req, &mut caches, false, false);
+    let n = again.iter().filter(|r| matches!(r, Reply::Sweep { .. })).count();
+    assert_eq!(n, 1, "cached with the sweep");
+    // without adhesion there is nothing to add
+    let dry = serve(&request(2, 1e-2), &mut Caches::default(), false, false);
+    assert!(dry
+        .iter()
+        .all(|r| !matches!(r, Reply::Sweep { result: Ok(sd), .. } if sd.pull_off_read_out.is_some())));
+}
