@@ -167,4 +167,3 @@ fn pull_off_rows(po: &asperity::report::pull_off::PullOffReport) -> Vec<(&'stati
     rows.extend(po.notes.iter().map(|n| ("pull-off note", n.clone())));
     rows
 }
-

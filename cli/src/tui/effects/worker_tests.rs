@@ -304,8 +304,9 @@ fn an_adhesive_point_comes_first_at_chart_accuracy_then_refined() {
     let mut req = request(1, 0.01);
     req.scene.set_surface_energy_j_m2(0.05).unwrap();
     let r = serve(&req, &mut c, false, false);
-    // the load curves too come first as a preview (fewer loads), then in full
-    assert_eq!(kinds(&r), ["point", "sweep", "sweep", "gap", "point", "done"]);
+    // the load curves too come first as a preview (fewer loads), then in full, and last again
+    // with the pull-off read-out
+    assert_eq!(kinds(&r), ["point", "sweep", "sweep", "gap", "point", "sweep", "done"]);
     let (Reply::Sweep { result: Ok(quick), .. }, Reply::Sweep { result: Ok(full), .. }) = (&r[1], &r[2]) else {
         panic!("{r:?}");
     };
