@@ -125,7 +125,6 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         jump_in: Some(f64::NAN),
         pull_off: Some(0.0),
         preview: false,
-        pull_off_read_out: None,
         gap_note: None,
     }));
     a.results.thickness = Some(Ok(asperity_cli::tui::base::data::ThicknessData {

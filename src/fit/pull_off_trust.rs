@@ -10,7 +10,7 @@
 //!
 //! A pull-off does not depend on the load, so a case is placed by (t·q_r, γ̃_glo) alone, in
 //! the coordinates of [`super::trust_band`], and read within its
-//! [`CASE_REACH`](super::trust_band::CASE_REACH), the [`NEAREST`] nearest first. At each
+//! [`CASE_REACH`], the [`NEAREST`] nearest first. At each
 //! case the read-out gives r = p\*_c(x)/p\*_c(GFMD) for the theory x (the scene's model; model 4's
 //! column for models 1 and 2, labelled) and each route (0 where x holds no tension), and
 //! whether GFMD's pull-off lies between the theory's and the larger route's. With fewer than

@@ -152,6 +152,9 @@ pub struct PointData {
     pub gap: Option<BranchGapView>,
     /// The panel's `trust` row, computed with the point (empty until then).
     pub trust: String,
+    /// The pull-off read-out in one line for the a_r(p*) chart (adhesive scenes; None
+    /// without adhesion or until computed with the trust).
+    pub pull_off: Option<String>,
 }
 
 /// ū/h_rms of one branch with its bracket.
@@ -187,6 +190,7 @@ impl PointData {
             unloading: None,
             gap: None,
             trust: String::new(),
+            pull_off: None,
         }
     }
 
@@ -338,10 +342,6 @@ pub struct SweepData {
     /// The quick first sweep of an adhesive scene (fewer loads, see
     /// `worker::PREVIEW_POINTS`), drawn while the full one runs.
     pub preview: bool,
-    /// The pull-off read-out of an adhesive scene in one line (the theory's pull-off under
-    /// tension beside GFMD's nearest measured one, [`asperity::report::pull_off`]), added by
-    /// the worker after the full sweep; None until then and without adhesion.
-    pub pull_off_read_out: Option<String>,
     /// Why loads with a_r have no ū/h_rms (the mean gap failed on its own), if so.
     pub gap_note: Option<String>,
 }
@@ -393,7 +393,6 @@ impl SweepData {
             jump_in: s.jump_in_pressure,
             pull_off: s.pull_off_pressure,
             preview: false,
-            pull_off_read_out: None,
             gap_note: s.gap_note.clone(),
         }
     }

@@ -23,7 +23,14 @@ pub fn area(app: &App, ratio: bool) -> Chart {
     };
     m.stale = app.sweep_is_stale();
     mark_preview(&mut m, sw);
-    if let Some(line) = sw.pull_off_read_out.as_ref().filter(|_| !ratio) {
+    if let Some(line) = app
+        .results
+        .point
+        .as_ref()
+        .and_then(|p| p.as_ref().ok())
+        .and_then(|p| p.pull_off.as_ref())
+        .filter(|_| !ratio)
+    {
         m.title = format!("a_r(p*) · {line}");
     }
     if app.eq18_applies() {

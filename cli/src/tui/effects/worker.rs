@@ -12,10 +12,7 @@
 //!   [`point_gap`], cancellable); the scale view's snapshots (cancellable between frames) come
 //!   right after the point when a visible chart needs them. A part no chart on screen needs
 //!   (the request's [`Request::needs`]) is not computed. Between parts the worker checks
-//!   `latest` and abandons stale work; a cancelled part is neither sent nor cached. Last, for
-//!   an adhesive scene whose a_r(p*) chart is shown, the load sweep is sent again with its
-//!   pull-off read-out (the theory's pull-off under tension and GFMD's nearest, 0.1–3 s; kept
-//!   with the sweep).
+//!   `latest` and abandons stale work; a cancelled part is neither sent nor cached.
 //! - Results are cached in small LRUs keyed by the scene's parameters as bits (the sweep's
 //!   key leaves out p*), so stepping p* reuses the sweep and toggling back is instant.
 //! - Every reply carries its generation and its key; the UI keeps a reply only if the key is
@@ -207,46 +204,7 @@ pub fn process(
             }
         }
     }
-    // last, as the least urgent: the pull-off read-out for the a_r(p*) chart (0.1–3 s)
-    if req.needs.loads && req.scene.is_adhesive() && (stale() || serve_pull_off(req, caches, cancel, send).is_none()) {
-        return;
-    }
     send(Reply::Done { gen });
-}
-
-/// The request's load sweep again with its pull-off read-out (`pull_off_read_out`), computed
-/// once per sweep and kept with it; `None` when cancelled.
-fn serve_pull_off(req: &Request, caches: &mut Caches, cancel: &AtomicBool, send: &dyn Fn(Reply)) -> Option<()> {
-    let key = sweep_key(&req.source, &req.scene, req.range);
-    let Some(Ok(mut sd)) = caches.sweeps.get(&key) else {
-        return Some(());
-    };
-    if sd.pull_off_read_out.is_some() {
-        return Some(());
-    }
-    let acc = asperity::theory::engine::Options::default().adhesion;
-    let line = match asperity::report::pull_off::pull_off(&req.scene, &acc, Some(cancel)) {
-        Err(Error::Cancelled) => return None,
-        Ok(r) => pull_off_line(&r),
-        Err(e) => format!("pull-off not found: {e}"),
-    };
-    sd.pull_off_read_out = Some(line);
-    caches.sweeps.put(key.clone(), Ok(sd.clone()));
-    send(Reply::Sweep {
-        gen: req.gen,
-        key,
-        result: Ok(sd),
-    });
-    Some(())
-}
-
-/// The pull-off read-out in one short line for the a_r(p*) chart's title: the theory's pull-off
-/// beside GFMD's at the nearest measured case (`run --pull-off` gives the whole read-out).
-pub fn pull_off_line(r: &asperity::report::pull_off::PullOffReport) -> String {
-    let gfmd = r.gfmd.map_or("no GFMD case near".to_string(), |g| {
-        format!("GFMD {:.1e} nearby", g.pull_off_pressure)
-    });
-    format!("pull-off {:.1e} ({gfmd})", r.pull_off_pressure)
 }
 
 /// `pd` with the panel's short form of the trust read-out of `scene`
@@ -273,7 +231,33 @@ fn with_trust(mut pd: PointData, scene: &Scene) -> PointData {
         u.trust = text.clone();
     }
     pd.trust = text;
+    pd.pull_off = scene.is_adhesive().then(|| pull_off_line(scene, &t));
     pd
+}
+
+/// The pull-off read-out in one line for the a_r(p*) chart's title, from the stored set alone
+/// (no solve): GFMD's pull-off at the nearest measured case and how much of it the theory's
+/// pull-off was measured to hold near the scene ([`asperity::fit::pull_off_trust`];
+/// `run --pull-off` computes the theory's own and the DMT routes').
+pub fn pull_off_line(scene: &Scene, t: &asperity::fit::trust::Trust) -> String {
+    let read =
+        asperity::fit::pull_off_trust::assess(scene.thickness_qr(), scene.gamma_glo(), scene.model().number(), true);
+    match (t.pull_off, read.theory_ratio) {
+        (Some(g), Some([_, hi])) if hi == 0.0 => format!(
+            "pull-off GFMD {}, m{} none of it",
+            crate::numfmt::sig(g.pull_off_pressure, 2),
+            read.measured_model
+        ),
+        (Some(g), Some([lo, hi])) => format!(
+            "pull-off GFMD {}, m{} {}–{} % of it",
+            crate::numfmt::sig(g.pull_off_pressure, 2),
+            read.measured_model,
+            crate::numfmt::sig(100.0 * lo, 1),
+            crate::numfmt::sig(100.0 * hi, 1)
+        ),
+        (Some(g), None) => format!("pull-off GFMD {}", crate::numfmt::sig(g.pull_off_pressure, 2)),
+        _ => "pull-off: no GFMD case near".into(),
+    }
 }
 
 /// The chart-accuracy point of the request's scene (cached); `None` when cancelled.

@@ -304,9 +304,8 @@ fn an_adhesive_point_comes_first_at_chart_accuracy_then_refined() {
     let mut req = request(1, 0.01);
     req.scene.set_surface_energy_j_m2(0.05).unwrap();
     let r = serve(&req, &mut c, false, false);
-    // the load curves too come first as a preview (fewer loads), then in full, and last again
-    // with the pull-off read-out
-    assert_eq!(kinds(&r), ["point", "sweep", "sweep", "gap", "point", "sweep", "done"]);
+    // the load curves too come first as a preview (fewer loads), then in full
+    assert_eq!(kinds(&r), ["point", "sweep", "sweep", "gap", "point", "done"]);
     let (Reply::Sweep { result: Ok(quick), .. }, Reply::Sweep { result: Ok(full), .. }) = (&r[1], &r[2]) else {
         panic!("{r:?}");
     };
@@ -516,38 +515,34 @@ fn a_point_alone_computes_no_load_sweep_and_its_gap_is_the_sweep_s() {
 }
 
 #[test]
-fn an_adhesive_load_chart_gets_its_pull_off_read_out_last_and_once() {
-    // system 2 at its own surface energy (half-space): the sweep comes back a second time with
-    // the pull-off line, GFMD's nearest measured pull-off in it; a second request reads it
-    // from the cache
-    let mut req = request(1, 1e-3);
+fn an_adhesive_point_carries_the_pull_off_line_from_the_stored_set() {
+    // system 2 at t·q_r 0.3 (a case of the set): GFMD's nearest pull-off and the share of it
+    // the theory was measured to hold, with the point and at no extra solve; none without
+    // adhesion
     let mut scene = asperity::input::preset::Preset::resolve("system-2")
         .unwrap()
         .scene()
         .unwrap();
-    scene.set_pressure(1e-3).unwrap();
+    scene.set_thickness_qr(0.3).unwrap();
+    let t = asperity::fit::trust::assess(&scene);
+    let g = t.pull_off.expect("a measured case near").pull_off_pressure;
+    let line = pull_off_line(&scene, &t);
+    assert!(
+        line.starts_with("pull-off GFMD -") && line.contains("% of it"),
+        "{line}"
+    );
+    assert!(line.contains(&crate::numfmt::sig(g, 2)), "{line} vs {g}");
+    let mut req = request(1, 1e-3);
     req.scene = scene;
     req.source = "system-2".into();
-    req.range = (1e-4, 1e-2);
-    let mut caches = Caches::default();
-    let replies = serve(&req, &mut caches, false, false);
-    let lines: Vec<Option<String>> = replies
-        .iter()
-        .filter_map(|r| match r {
-            Reply::Sweep { result: Ok(sd), .. } if !sd.preview => Some(sd.pull_off_read_out.clone()),
-            _ => None,
-        })
-        .collect();
-    assert_eq!(lines.len(), 2, "the sweep, then the sweep with its read-out");
-    assert_eq!(lines[0], None);
-    let line = lines[1].clone().expect("the read-out");
-    assert!(line.starts_with("pull-off ") && line.contains("GFMD -"), "{line}");
-    let again = serve(&req, &mut caches, false, false);
-    let n = again.iter().filter(|r| matches!(r, Reply::Sweep { .. })).count();
-    assert_eq!(n, 1, "cached with the sweep");
-    // without adhesion there is nothing to add
+    let r = serve(&req, &mut Caches::default(), false, false);
+    let Reply::Point { result: Ok(pd), .. } = &r[0] else {
+        panic!("{r:?}");
+    };
+    assert_eq!(pd.pull_off.as_deref(), Some(line.as_str()));
     let dry = serve(&request(2, 1e-2), &mut Caches::default(), false, false);
-    assert!(dry
-        .iter()
-        .all(|r| !matches!(r, Reply::Sweep { result: Ok(sd), .. } if sd.pull_off_read_out.is_some())));
+    let Reply::Point { result: Ok(pd), .. } = &dry[0] else {
+        panic!("{dry:?}");
+    };
+    assert_eq!(pd.pull_off, None);
 }

@@ -137,6 +137,11 @@ fn draw_body(f: &mut Frame, scr: &layout::Screen, app: &App, pal: Palette) {
             // one chart at a time on a small terminal: which one, and how to see the others
             m.title = format!("{}/3 (f next) · {}", i + 1, m.title);
         }
+        // the pull-off read-out in a title goes where the border has no room for it
+        let room = usize::from(r.width.saturating_sub(4));
+        if let Some(k) = m.title.find(" · pull-off").filter(|_| m.title.chars().count() > room) {
+            m.title.truncate(k);
+        }
         render_model(f, *r, &m, pal, *i == app.ui.focus && shown > 1);
     }
 }
