@@ -243,7 +243,7 @@ pub fn pull_off_line(scene: &Scene, t: &asperity::fit::trust::Trust) -> String {
     let read =
         asperity::fit::pull_off_trust::assess(scene.thickness_qr(), scene.gamma_glo(), scene.model().number(), true);
     match (t.pull_off, read.theory_ratio) {
-        (Some(g), Some([_, hi])) if hi == 0.0 => format!(
+        (Some(g), Some([_, 0.0])) => format!(
             "pull-off GFMD {}, m{} none of it",
             crate::numfmt::sig(g.pull_off_pressure, 2),
             read.measured_model
