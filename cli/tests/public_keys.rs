@@ -894,7 +894,7 @@ fn pull_off_read_out_keys() {
         "run --pull-off case",
     );
     assert!(json(&["run", "--preset", "system-2"]).get("pull_off").is_none());
-    let sweep = json(&[
+    let cycle = [
         "sweep",
         "--preset",
         "system-2",
@@ -908,26 +908,11 @@ fn pull_off_read_out_keys() {
         "--points",
         "2",
         "--format",
-        "json",
-    ]);
+    ];
+    let sweep = json(&[&cycle[..], &["json"]].concat());
     assert_has(&sweep["pull_off"], PULL_OFF, "sweep --cycle");
     let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args([
-            "sweep",
-            "--preset",
-            "system-2",
-            "--thickness",
-            "0.3",
-            "--cycle",
-            "--from",
-            "1e-3",
-            "--to",
-            "1e-2",
-            "--points",
-            "2",
-            "--format",
-            "csv",
-        ])
+        .args(cycle.iter().chain(&["csv"]))
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()
         .unwrap();
