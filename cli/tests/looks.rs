@@ -126,7 +126,7 @@ fn second_source(a: &App) -> Vec<ReferencePoint> {
 /// The app's load curves, and the same with a hysteresis: an unloading branch and the
 /// jump-in and pull-off loads.
 fn hysteresis(a: &App) -> Option<(SweepData, SweepData)> {
-    let Some(Ok(sw)) = a.results.sweep.as_ref() else {
+    let Some(Ok(sw)) = a.results.sweep() else {
         return None;
     };
     let (jump, pull) = (0.03, 0.005);
@@ -168,7 +168,7 @@ fn scenes() -> Vec<(&'static str, App)> {
     a.params.scene.set_spectrum(Spectrum::Tabulated(t)).unwrap();
     out.push(("measured spectrum", a));
     for (_, a) in out.iter_mut() {
-        if a.results.sweep.is_some() {
+        if a.results.sweep().is_some() {
             with_gfmd(a);
         }
     }
@@ -222,18 +222,19 @@ fn every_chart_with_every_overlay_tells_its_curves_apart() {
     let mut failures = Vec::new();
     let mut checked = 0;
     for (scene, mut a) in scenes() {
-        let (gfmd, all_pins, refs) = (a.jobs.gfmd.clone(), pins(&a), a.params.preset.reference.clone());
+        let (gfmd, all_pins, refs) = (a.jobs.gfmd().clone(), pins(&a), a.params.preset.reference.clone());
         let more_refs = second_source(&a);
         let sweeps = hysteresis(&a);
         for combo in 0..64u32 {
             let on = |bit: u32| combo & (1 << bit) != 0;
             a.ui.all_models = on(0);
             a.ui.compare = on(1);
-            a.jobs.gfmd = if on(2) { gfmd.clone() } else { Default::default() };
+            a.jobs.show_gfmd(if on(2) { gfmd.clone() } else { Default::default() });
             a.results.pins = if on(3) { all_pins.clone() } else { Vec::new() };
             a.params.preset.reference = if on(4) { more_refs.clone() } else { refs.clone() };
             if let Some((plain, hyst)) = &sweeps {
-                a.results.sweep = Some(Ok(if on(5) { hyst.clone() } else { plain.clone() }));
+                a.results
+                    .set_sweep(Ok(if on(5) { hyst.clone() } else { plain.clone() }));
             } else if on(5) {
                 continue;
             }
@@ -327,7 +328,7 @@ fn at_80x24_no_key_entry_is_lost() {
             a.ui.all_models = m;
             a.results.pins = pins;
             if let Some((plain, hyst)) = &sweeps {
-                a.results.sweep = Some(Ok(if m { plain.clone() } else { hyst.clone() }));
+                a.results.set_sweep(Ok(if m { plain.clone() } else { hyst.clone() }));
             }
             for k in ChartKind::ALL {
                 for charts in [[k, k.cycle(1), k.cycle(2)], [k.cycle(1), k, k.cycle(2)]] {

@@ -63,7 +63,7 @@ fn the_weakest_surface_energy_is_solved_in_the_explorer() {
     let mut a = app();
     a.params.scene = a.params.scene.clone().with_surface_energy_j_m2(1e-320).unwrap();
     compute_now(&mut a, &mut Caches::default());
-    let point = a.results.point.as_ref().expect("a point");
+    let point = a.results.point().expect("a point");
     assert!(point.is_ok(), "{point:?}");
     assert!(!render(&a).contains("failed"));
 }

@@ -49,8 +49,8 @@ fn system1_adhesionless() {
     key(&mut a, KeyCode::Enter);
     assert_eq!(a.params.scene.surface_energy_j_m2(), 0.0);
     compute_now(&mut a, &mut Caches::default());
-    assert!(a.results.point.as_ref().is_some_and(|p| p.is_ok()));
-    assert!(a.results.sweep.as_ref().is_some_and(|p| p.is_ok()));
+    assert!(a.results.point().is_some_and(|p| p.is_ok()));
+    assert!(a.results.sweep().is_some_and(|p| p.is_ok()));
     insta::assert_snapshot!("system1_80x24", render(&a, 80, 24));
     insta::assert_snapshot!("system1_160x48", render(&a, 160, 48));
     // the smallest size the explorer draws in full
@@ -62,7 +62,7 @@ fn system1_with_adhesion() {
     // the preset's own γ_s is the default
     let a = app("system-1");
     assert_eq!(a.params.scene.surface_energy_j_m2(), 0.05);
-    assert!(a.results.point.as_ref().is_some_and(|p| p.is_ok()));
+    assert!(a.results.point().is_some_and(|p| p.is_ok()));
     insta::assert_snapshot!("system1_adhesion_80x24", render(&a, 80, 24));
     insta::assert_snapshot!("system1_adhesion_160x48", render(&a, 160, 48));
 }
@@ -112,7 +112,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         }
     }
     // curves full of NaN/inf/zeros, a degenerate point
-    a.results.sweep = Some(Ok(SweepData {
+    a.results.set_sweep(Ok(SweepData {
         p: vec![f64::NAN, 0.0, 1e-3, 1e-2, f64::INFINITY, 1.0],
         a_r: vec![1.0, f64::NAN, 0.0, -1.0, 0.5, 0.5],
         gap_rel: vec![f64::NAN; 6],
@@ -127,16 +127,17 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
         preview: false,
         gap_note: None,
     }));
-    a.results.thickness = Some(Ok(asperity_cli::tui::base::data::ThicknessData {
-        t: vec![f64::NAN, 0.0, 1e-2, 1e-1, f64::INFINITY, 1.0],
-        a_r: vec![1.0, f64::NAN, 0.0, -1.0, 0.5, 0.5],
-        a_r_inf: f64::NAN,
-        adhesionless: Some(vec![f64::NAN; 6]),
-        a_r_unloading: vec![f64::NAN, 0.9, f64::INFINITY, -1.0, 0.7],
-        jump_in: vec![f64::NAN, 0.0, -1.0],
-        pull_off: vec![f64::INFINITY],
-    }));
-    if let Some(Ok(p)) = a.results.point.as_mut() {
+    a.results
+        .set_thickness(Ok(asperity_cli::tui::base::data::ThicknessData {
+            t: vec![f64::NAN, 0.0, 1e-2, 1e-1, f64::INFINITY, 1.0],
+            a_r: vec![1.0, f64::NAN, 0.0, -1.0, 0.5, 0.5],
+            a_r_inf: f64::NAN,
+            adhesionless: Some(vec![f64::NAN; 6]),
+            a_r_unloading: vec![f64::NAN, 0.9, f64::INFINITY, -1.0, 0.7],
+            jump_in: vec![f64::NAN, 0.0, -1.0],
+            pull_off: vec![f64::INFINITY],
+        }));
+    if let Some(Ok(p)) = a.results.point_mut() {
         p.pr = vec![(0.0, 0.0), (f64::NAN, 1.0), (1.0, f64::INFINITY)];
         p.wall = Some(f64::NAN);
         p.a_r = f64::NAN;
@@ -157,8 +158,8 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
             render(&a, w, h);
         }
     }
-    a.results.sweep = Some(Ok(SweepData::default()));
-    a.results.point = None;
+    a.results.set_sweep(Ok(SweepData::default()));
+    a.results.unshow(asperity_cli::tui::model::results::Slot::Point);
     render(&a, 80, 24);
 }
 
@@ -168,7 +169,7 @@ fn tiny_sizes_and_bad_data_do_not_panic() {
 #[test]
 fn adhesive_view_with_a_synthetic_point() {
     let mut a = app("system-1");
-    if let Some(Ok(p)) = a.results.point.as_mut() {
+    if let Some(Ok(p)) = a.results.point_mut() {
         let comparison = p.pr.clone();
         p.pr = (0..=200)
             .map(|i| {
@@ -272,7 +273,7 @@ fn new_charts() {
 
     let mut b = app("system-2");
     show(&mut b, [ChartKind::Thickness, ChartKind::Gap, ChartKind::Area]);
-    assert!(b.results.thickness.as_ref().is_some_and(|t| t.is_ok()));
+    assert!(b.results.thickness().is_some_and(|t| t.is_ok()));
     let s = render(&b, 160, 48);
     for needle in ["a_r(t·q_r) at p* = 0.00500", "t·q_r", "γ_s=0", "t=∞", "ū/h_rms(p*)"] {
         assert!(s.contains(needle), "{needle}: {s}");
@@ -380,7 +381,7 @@ fn tour_step() {
 fn defects_gap_axis_stale_values_long_messages_hints() {
     let mut a = adhesionless("system-1");
     a.set_charts([ChartKind::Gap, ChartKind::Area, ChartKind::Stress]);
-    if let Some(Ok(sw)) = a.results.sweep.as_mut() {
+    if let Some(Ok(sw)) = a.results.sweep_mut() {
         for g in sw.gap_rel.iter_mut() {
             *g -= 2.0;
         }
@@ -426,7 +427,7 @@ fn hysteresis_on_the_area_chart() {
     a.set_charts([ChartKind::Area, ChartKind::AreaRatio, ChartKind::Gap]);
     compute_now(&mut a, &mut Caches::default());
     let (jump, pull) = (0.03, 0.005);
-    if let Some(Ok(sw)) = a.results.sweep.as_mut() {
+    if let Some(Ok(sw)) = a.results.sweep_mut() {
         let n = sw.p.len();
         sw.a_r =
             sw.p.iter()
@@ -435,7 +436,7 @@ fn hysteresis_on_the_area_chart() {
         common::add_hysteresis(sw, jump, pull);
         assert_eq!(sw.a_r_unloading.len(), n);
     }
-    if let Some(Ok(p)) = a.results.point.as_mut() {
+    if let Some(Ok(p)) = a.results.point_mut() {
         p.branches = vec![
             BranchRow {
                 name: "loading".into(),
@@ -554,7 +555,7 @@ fn a_failed_mean_gap_blanks_only_its_own_chart() {
     a.set_charts([ChartKind::Gap, ChartKind::Area, ChartKind::Stress]);
     compute_now(&mut a, &mut Caches::default());
     assert!(
-        a.results.sweep.as_ref().is_some_and(|s| s.is_ok()),
+        a.results.sweep().is_some_and(|s| s.is_ok()),
         "the load sweep itself converged"
     );
     let gap = build(&a, ChartKind::Gap);
@@ -601,7 +602,7 @@ fn the_thickness_chart_marks_the_hysteresis_window() {
     a.set_typed(Param::Pressure, "1e-5").unwrap();
     a.set_charts([ChartKind::Thickness, ChartKind::Area, ChartKind::Gap]);
     compute_now(&mut a, &mut Caches::default());
-    let td = a.results.thickness.as_ref().unwrap().as_ref().unwrap().clone();
+    let td = a.results.thickness().unwrap().as_ref().unwrap().clone();
     let m = build(&a, ChartKind::Thickness);
     let un = m
         .series

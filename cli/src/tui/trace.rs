@@ -1,7 +1,7 @@
 //! The latency trace of `ASPERITY_TRACE=FILE` (see [`crate::tui`]): per generation, the time
 //! from the key press to the frames that show the point, the load charts and everything.
 
-use crate::tui::model::app::App;
+use crate::tui::model::app::{App, Slot};
 use std::io::Write;
 use std::time::Instant;
 
@@ -36,20 +36,16 @@ impl Trace {
             return;
         }
         let ms = t0.elapsed().as_secs_f64() * 1e3;
-        if !self.point_logged && app.results.point.is_some() && app.results.point_gen >= gen {
+        if !self.point_logged && app.results.point().is_some() && app.results.point_gen >= gen {
             let _ = writeln!(f, "gen {gen} point_drawn_ms {ms:.2}");
             self.point_logged = true;
         }
-        let shown = app.results.point_gen >= gen && app.results.sweep_shown.as_ref() == Some(&app.results.keys().sweep);
+        let shown = app.results.point_gen >= gen && app.results.is_current(Slot::Sweep);
         if !self.charts_logged && shown {
             let _ = writeln!(f, "gen {gen} charts_drawn_ms {ms:.2}");
             self.charts_logged = true;
         }
-        let preview = app
-            .results
-            .sweep
-            .as_ref()
-            .is_some_and(|s| s.as_ref().is_ok_and(|s| s.preview));
+        let preview = app.results.sweep().is_some_and(|s| s.as_ref().is_ok_and(|s| s.preview));
         if !self.final_logged && shown && !preview {
             let _ = writeln!(f, "gen {gen} charts_final_ms {ms:.2}");
             self.final_logged = true;

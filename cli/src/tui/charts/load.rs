@@ -18,15 +18,14 @@ pub fn area(app: &App, ratio: bool) -> Chart {
     let curve =
         |sw: &SweepData| -> Vec<(f64, f64)> { sw.p.iter().zip(&sw.a_r).map(|(&p, &a)| (p, y_of(p, a))).collect() };
     let Some(sw) = sweep_of(app) else {
-        set_empty(&mut m, app, app.results.sweep.as_ref());
+        set_empty(&mut m, app, app.results.sweep());
         return m;
     };
     m.stale = app.sweep_is_stale();
     mark_preview(&mut m, sw);
     if let Some(line) = app
         .results
-        .point
-        .as_ref()
+        .point()
         .and_then(|p| p.as_ref().ok())
         .and_then(|p| p.pull_off.as_ref())
         .filter(|_| !ratio)
@@ -216,7 +215,7 @@ pub fn loads(app: &App, kind: ChartKind) -> Chart {
         sw.p.iter().copied().zip(ys.iter().copied()).collect()
     };
     let Some(sw) = sweep_of(app) else {
-        set_empty(&mut m, app, app.results.sweep.as_ref());
+        set_empty(&mut m, app, app.results.sweep());
         return m;
     };
     m.stale = app.sweep_is_stale();
@@ -312,7 +311,7 @@ fn gap_failure(app: &App, sw: &SweepData) -> Option<String> {
     if sw.gap_rel.iter().any(|g| g.is_finite()) {
         return None;
     }
-    let point = match &app.results.gap {
+    let point = match app.results.gap() {
         Some(Err(e)) => Some(crate::tui::base::words::describe(e)),
         _ => None,
     };
@@ -330,8 +329,8 @@ pub fn thickness(app: &App) -> Chart {
         crate::numfmt::sig(app.params.scene.pressure(), 3)
     );
     let mut m = base(title, "t·q_r", "a_r", Scale::Log10, Scale::Linear);
-    let Some(td) = app.results.thickness.as_ref().and_then(|r| r.as_ref().ok()) else {
-        set_empty(&mut m, app, app.results.thickness.as_ref());
+    let Some(td) = app.results.thickness().and_then(|r| r.as_ref().ok()) else {
+        set_empty(&mut m, app, app.results.thickness());
         return m;
     };
     m.stale = app.thickness_is_stale();

@@ -100,7 +100,7 @@ fn pr_linear(app: &App) -> Chart {
     let mut m = base(title, "σ* = σ/E*ḡ", "Pr", Scale::Linear, ys);
     m.clip_y = app.ui.log_pr;
     let Some(p) = current_point(app) else {
-        set_empty(&mut m, app, app.results.point.as_ref());
+        set_empty(&mut m, app, app.results.point());
         return m;
     };
     m.stale = app.point_is_stale();
@@ -195,7 +195,7 @@ fn pr_loglog(app: &App) -> Chart {
     let mut m = base(title, "σ* = σ/E*ḡ", "Pr", Scale::Log10, Scale::Log10);
     m.clip_y = true;
     let Some(p) = current_point(app) else {
-        set_empty(&mut m, app, app.results.point.as_ref());
+        set_empty(&mut m, app, app.results.point());
         return m;
     };
     m.stale = app.point_is_stale();
@@ -342,7 +342,7 @@ mod tests {
     #[test]
     fn load_charts_share_the_requested_x_axis_when_low_loads_fail() {
         let mut a = app();
-        if let Some(Ok(sw)) = a.results.sweep.as_mut() {
+        if let Some(Ok(sw)) = a.results.sweep_mut() {
             // the lowest third of the loads failed
             let n = sw.p.len() / 3;
             for i in 0..n {
@@ -365,7 +365,7 @@ mod tests {
     fn asymptotes_follow_the_closed_forms_and_eq18_is_drawn() {
         let a = app();
         let m = build(&a, ChartKind::PrLog);
-        let p = a.results.point.as_ref().unwrap().as_ref().unwrap();
+        let p = a.results.point().unwrap().as_ref().unwrap();
         let small = m.series.iter().find(|s| s.name == "σ→0 asymptote").unwrap();
         let theory = m.series.iter().find(|s| s.role == Role::Theory).unwrap();
         // at the smallest σ* the theory (mirror Gaussian) and the asymptote agree to 1e-3

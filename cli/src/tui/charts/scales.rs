@@ -13,7 +13,7 @@ use crate::tui::model::app::App;
 
 /// Why a scale chart is empty.
 fn empty(app: &App, m: &mut Chart) {
-    set_empty(m, app, app.results.scales.as_ref());
+    set_empty(m, app, app.results.scales());
 }
 
 /// Pr(σ*, q) at the current frame.

@@ -89,7 +89,7 @@ pub fn data_bounds(m: &Chart) -> (Option<[f64; 2]>, Option<[f64; 2]>) {
 }
 
 pub fn current_point(app: &App) -> Option<&PointData> {
-    app.results.point.as_ref().and_then(|r| r.as_ref().ok())
+    app.results.point().and_then(|r| r.as_ref().ok())
 }
 
 /// The point on the branch the user's path is on: the current point, or where the path is on
@@ -138,7 +138,7 @@ pub fn path_gap_bracket(app: &App) -> Option<(f64, f64)> {
         let g = current_point(app)?.unloading.as_deref()?.gap?;
         return Some((g.lower, g.upper));
     }
-    let sw = app.results.sweep.as_ref()?.as_ref().ok()?;
+    let sw = app.results.sweep()?.as_ref().ok()?;
     sw.gap_bracket_at(app.params.scene.pressure())
 }
 
@@ -153,7 +153,7 @@ pub fn path_gap(app: &App) -> Option<f64> {
     if let Some(g) = current_point(app)?.unloading.as_deref().and_then(|u| u.gap) {
         return Some(g.relative).filter(|g| g.is_finite());
     }
-    let sw = app.results.sweep.as_ref()?.as_ref().ok()?;
+    let sw = app.results.sweep()?.as_ref().ok()?;
     let p = app.params.scene.pressure();
     let k = sw.p.windows(2).position(|w| w[0] <= p && p <= w[1])?;
     let (u0, u1) = (*sw.gap_unloading.get(k)?, *sw.gap_unloading.get(k + 1)?);
@@ -236,7 +236,7 @@ pub fn mark_preview(m: &mut Chart, sw: &SweepData) {
 }
 
 pub fn sweep_of(app: &App) -> Option<&SweepData> {
-    app.results.sweep.as_ref().and_then(|r| r.as_ref().ok())
+    app.results.sweep().and_then(|r| r.as_ref().ok())
 }
 
 /// The load charts share one x axis: the requested p* range, whatever converged.

@@ -50,11 +50,10 @@ pub fn export_job(app: &App, charts: bool) -> ExportJob {
         measured,
         unloading: shared::on_unloading(app),
         pr: shared::shown_point(app).map(|p| p.pr.clone()),
-        sweep: app.results.sweep.as_ref().and_then(|r| r.as_ref().ok()).cloned(),
+        sweep: app.results.sweep().and_then(|r| r.as_ref().ok()).cloned(),
         thickness: app
             .results
-            .thickness
-            .as_ref()
+            .thickness()
             .and_then(|r| r.as_ref().ok())
             .filter(|_| app.ui.charts.contains(&ChartKind::Thickness))
             .cloned(),

@@ -8,12 +8,12 @@ use crate::tui::base::gfmd_view::GfmdView;
 use crate::tui::base::kinds::{self as charts, ChartKind, Needs};
 use crate::tui::base::progress::same_system;
 pub use crate::tui::base::progress::GfmdState;
-use crate::tui::base::protocol::{CacheKey, Request, SceneKeys};
+use crate::tui::base::protocol::{Request, SceneKeys};
 pub use crate::tui::model::command::Command;
 pub use crate::tui::model::jobs::Jobs;
 pub use crate::tui::model::knobs::*;
 pub use crate::tui::model::params::{Params, PresetEntry};
-pub use crate::tui::model::results::Results;
+pub use crate::tui::model::results::{Results, Slot};
 pub use crate::tui::model::ui::{Message, Overlay, TourState, Ui};
 use asperity::error::Result;
 use asperity::input::model::{Model, ModelKind};
@@ -21,7 +21,6 @@ use asperity::input::preset::Preset;
 use asperity::input::scene::Scene;
 use asperity::surface::heightmap::Surface;
 use asperity::surface::spectrum::Spectrum;
-use std::collections::HashMap;
 use std::path::PathBuf;
 
 /// The charts the explorer opens with: Pr(σ*) big, a_r(p*) and ū(p*) small.
@@ -95,22 +94,7 @@ impl App {
                 now: None,
                 size: None,
             },
-            results: Results {
-                keys,
-                overlays: HashMap::new(),
-                thickness: None,
-                point_shown: None,
-                sweep_shown: None,
-                gap_shown: None,
-                thickness_shown: None,
-                scales: None,
-                scales_shown: None,
-                pins: Vec::new(),
-                point: None,
-                point_gen: 0,
-                sweep: None,
-                gap: None,
-            },
+            results: Results::new(keys),
             jobs: Jobs::new(PathBuf::from(".")),
         })
     }
@@ -220,73 +204,58 @@ impl App {
     /// The point of model `m` at the current scene (the current point for the current model).
     pub fn model_point(&self, m: &Model) -> Option<&PointData> {
         if charts::slot(m) == charts::slot(&self.params.scene.model()) {
-            return self.results.point.as_ref().and_then(|r| r.as_ref().ok());
+            return self.results.point().and_then(|r| r.as_ref().ok());
         }
-        let key = &self.results.keys.of_model(m)?[0];
+        let key = &self.results.keys().of_model(m)?[0];
         self.results.overlay_point(key)
     }
 
     /// The load sweep of model `m`.
     pub fn model_sweep(&self, m: &Model) -> Option<&SweepData> {
         if charts::slot(m) == charts::slot(&self.params.scene.model()) {
-            return self.results.sweep.as_ref().and_then(|r| r.as_ref().ok());
+            return self.results.sweep().and_then(|r| r.as_ref().ok());
         }
-        let key = &self.results.keys.of_model(m)?[1];
+        let key = &self.results.keys().of_model(m)?[1];
         self.results.overlay_sweep(key)
     }
 
     /// The thickness sweep of model `m`.
     pub fn model_thickness(&self, m: &Model) -> Option<&ThicknessData> {
         if charts::slot(m) == charts::slot(&self.params.scene.model()) {
-            return self.results.thickness.as_ref().and_then(|r| r.as_ref().ok());
+            return self.results.thickness().and_then(|r| r.as_ref().ok());
         }
-        let key = &self.results.keys.of_model(m)?[2];
+        let key = &self.results.keys().of_model(m)?[2];
         self.results.overlay_thickness(key)
     }
 
     /// Whether the shown point belongs to an earlier scene.
     pub fn point_is_stale(&self) -> bool {
-        self.results
-            .point_shown
-            .as_ref()
-            .is_some_and(|k| *k != self.results.keys.point)
+        self.results.is_stale(Slot::Point)
     }
 
     /// Whether the shown load sweep belongs to an earlier scene.
     pub fn sweep_is_stale(&self) -> bool {
-        self.results
-            .sweep_shown
-            .as_ref()
-            .is_some_and(|k| *k != self.results.keys.sweep)
+        self.results.is_stale(Slot::Sweep)
     }
 
     /// Whether the shown gap belongs to an earlier scene.
     pub fn gap_is_stale(&self) -> bool {
-        self.results
-            .gap_shown
-            .as_ref()
-            .is_some_and(|k| *k != self.results.keys.point)
+        self.results.is_stale(Slot::Gap)
     }
 
     /// Whether the shown thickness sweep belongs to an earlier scene.
     pub fn thickness_is_stale(&self) -> bool {
-        self.results
-            .thickness_shown
-            .as_ref()
-            .is_some_and(|k| *k != self.results.keys.thickness)
+        self.results.is_stale(Slot::Thickness)
     }
 
     /// Whether the shown scale view belongs to an earlier scene.
     pub fn scales_is_stale(&self) -> bool {
-        self.results
-            .scales_shown
-            .as_ref()
-            .is_some_and(|k| *k != self.results.keys.scales)
+        self.results.is_stale(Slot::Scales)
     }
 
     /// The scale view, if computed.
     pub fn scales_data(&self) -> Option<&ScalesData> {
-        self.results.scales.as_ref().and_then(|r| r.as_ref().ok())
+        self.results.scales().and_then(|r| r.as_ref().ok())
     }
 
     /// The scale view's current frame: its index, the number of frames and the frame.
@@ -309,13 +278,13 @@ impl App {
     /// clock, or the scale view plays).
     pub fn animating(&self) -> bool {
         self.jobs.busy
-            || matches!(self.jobs.gfmd, GfmdState::Running { .. })
+            || matches!(self.jobs.gfmd(), GfmdState::Running { .. })
             || (self.ui.playing && self.shows_scales())
     }
 
     /// ū/h_rms at the current point, if computed.
     pub fn gap_value(&self) -> Option<f64> {
-        match &self.results.gap {
+        match self.results.gap() {
             Some(Ok(g)) => Some(*g),
             _ => None,
         }
@@ -347,21 +316,6 @@ impl App {
         self.jobs.pending = true;
     }
 
-    /// Keys of the other models' results for the current scene (for keeping replies).
-    pub(crate) fn overlay_keys(&self) -> (Vec<CacheKey>, Vec<CacheKey>, Vec<CacheKey>) {
-        let mut p = Vec::new();
-        let mut sw = Vec::new();
-        let mut t = Vec::new();
-        if self.ui.all_models {
-            for (_, [kp, ks, kt]) in &self.results.keys.overlays {
-                p.push(kp.clone());
-                sw.push(ks.clone());
-                t.push(kt.clone());
-            }
-        }
-        (p, sw, t)
-    }
-
     /// Whether the scene changed since the last request.
     pub fn has_pending(&self) -> bool {
         self.jobs.pending
@@ -375,7 +329,7 @@ impl App {
     /// The finished GFMD result, when it was run on the scene shown now (the model only
     /// matters for the theory, so it is not compared).
     pub fn gfmd_for_scene(&self) -> Option<&GfmdView> {
-        match &self.jobs.gfmd {
+        match self.jobs.gfmd() {
             GfmdState::Done {
                 scene, result: Ok(v), ..
             } if same_system(scene, &self.params.scene) => Some(v),
@@ -386,22 +340,22 @@ impl App {
     /// The first error of the current results, for the status bar.
     pub fn compute_error(&self) -> Option<String> {
         use crate::tui::base::words::describe;
-        if let Some(Err(e)) = &self.results.point {
+        if let Some(Err(e)) = self.results.point() {
             return Some(describe(e));
         }
-        if let Some(Err(e)) = &self.results.sweep {
+        if let Some(Err(e)) = self.results.sweep() {
             return Some(format!("load sweep: {}", describe(e)));
         }
-        if let Some(Err(e)) = &self.results.gap {
+        if let Some(Err(e)) = self.results.gap() {
             return Some(format!("mean gap: {}", describe(e)));
         }
         if self.shows_scales() {
-            if let Some(Err(e)) = &self.results.scales {
+            if let Some(Err(e)) = self.results.scales() {
                 return Some(format!("scale view: {}", describe(e)));
             }
         }
         if self.ui.charts.contains(&ChartKind::Thickness) {
-            if let Some(Err(e)) = &self.results.thickness {
+            if let Some(Err(e)) = self.results.thickness() {
                 return Some(format!("thickness chart: {}", describe(e)));
             }
         }
@@ -410,7 +364,7 @@ impl App {
 
     /// Why the current point has no error bar, if so (shown in the status line).
     pub fn compute_warning(&self) -> Option<String> {
-        match &self.results.point {
+        match self.results.point() {
             Some(Ok(p)) => p.warning.as_ref().map(|w| format!("a_r without error bar: {w}")),
             _ => None,
         }

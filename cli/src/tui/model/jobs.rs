@@ -20,8 +20,8 @@ pub struct Jobs {
     pub(in crate::tui::model) busy: bool,
     /// When the current request was made (while busy; read it with [`Jobs::busy_since`]).
     pub(in crate::tui::model) busy_since: Option<std::time::Instant>,
-    /// The background GFMD run (started with `g`).
-    pub gfmd: GfmdState,
+    /// The background GFMD run (started with `g`; read it with [`Jobs::gfmd`]).
+    gfmd: GfmdState,
     /// The flag that stops the running GFMD run: Some exactly while one runs (set by
     /// [`Jobs::start_gfmd`], taken by [`Jobs::cancel_gfmd`] and [`Jobs::end_gfmd`]).
     gfmd_cancel: Option<Arc<AtomicBool>>,
@@ -107,15 +107,47 @@ impl Jobs {
         self.gfmd_cancel.take()
     }
 
-    /// The end of GFMD run `id`: when it is the running one, its scene (its flag is dropped;
-    /// the caller sets the outcome in [`Jobs::gfmd`]); None for any other run.
+    /// The end of GFMD run `id`: when it is the running one, its scene (its flag is dropped,
+    /// nothing runs any more; the caller shows the outcome with [`Jobs::show_gfmd`]); None for
+    /// any other run.
     pub fn end_gfmd(&mut self, id: u64) -> Option<Scene> {
         match &self.gfmd {
             GfmdState::Running { id: cur, scene, .. } if *cur == id => {
+                let scene = scene.clone();
                 self.gfmd_cancel = None;
-                Some(scene.clone())
+                self.gfmd = GfmdState::Idle;
+                Some(scene)
             }
             _ => None,
         }
+    }
+
+    /// The GFMD run: idle, running (with its progress) or done.
+    pub fn gfmd(&self) -> &GfmdState {
+        &self.gfmd
+    }
+
+    /// The progress and start time of run `id`, when it is the running one (to update them).
+    pub fn gfmd_running(&mut self, id: u64) -> Option<(&mut GfmdProgress, &mut Option<std::time::Instant>)> {
+        match &mut self.gfmd {
+            GfmdState::Running {
+                id: cur,
+                progress,
+                started,
+                ..
+            } if *cur == id => Some((progress, started)),
+            _ => None,
+        }
+    }
+
+    /// Shows a finished run's outcome, or nothing (`Idle`). A running run is not a state to
+    /// show: it starts with [`Jobs::start_gfmd`], so a `Running` state here is taken as `Idle`.
+    /// Whatever ran is stopped: its flag is returned, to be raised.
+    pub fn show_gfmd(&mut self, state: GfmdState) -> Option<Arc<AtomicBool>> {
+        self.gfmd = match state {
+            GfmdState::Running { .. } => GfmdState::Idle,
+            s => s,
+        };
+        self.gfmd_cancel.take()
     }
 }

@@ -107,7 +107,7 @@ impl App {
                 }
             }
             Action::Cancel => {
-                if matches!(self.jobs.gfmd, GfmdState::Running { .. }) {
+                if matches!(self.jobs.gfmd(), GfmdState::Running { .. }) {
                     return self.toggle_gfmd();
                 } else if self.ui.zoom {
                     self.ui.zoom = false;

@@ -31,23 +31,19 @@ impl App {
     /// Run `id` started at `at` (the effect built its setup and its thread): its clock starts,
     /// the status line names its grid.
     pub fn gfmd_started(&mut self, id: u64, grid: usize, at: std::time::Instant) {
-        if let GfmdState::Running { id: cur, started, .. } = &mut self.jobs.gfmd {
-            if *cur == id {
-                *started = Some(at);
-                self.info(format!("GFMD started on a {grid}x{grid} grid (g cancels)"));
-            }
+        if let Some((_, started)) = self.jobs.gfmd_running(id) {
+            *started = Some(at);
+            self.info(format!("GFMD started on a {grid}x{grid} grid (g cancels)"));
         }
     }
 
     /// A progress report of run `id`: shown if it is the running one. The start message gives
     /// way to the progress in the status line.
     pub(crate) fn on_gfmd_progress(&mut self, id: u64, report: GfmdProgress) {
-        if let GfmdState::Running { id: cur, progress, .. } = &mut self.jobs.gfmd {
-            if *cur == id {
-                *progress = report;
-                self.ui.spinner = self.ui.spinner.wrapping_add(1);
-                self.clear_gfmd_start_message();
-            }
+        if let Some((progress, _)) = self.jobs.gfmd_running(id) {
+            *progress = report;
+            self.ui.spinner = self.ui.spinner.wrapping_add(1);
+            self.clear_gfmd_start_message();
         }
     }
 
@@ -64,22 +60,22 @@ impl App {
             String::new()
         };
         match result {
-            Err(Error::Cancelled) => self.jobs.gfmd = GfmdState::Idle,
+            Err(Error::Cancelled) => {}
             Ok(v) => {
                 self.info(format!("GFMD done{took}"));
-                self.jobs.gfmd = GfmdState::Done {
+                self.jobs.show_gfmd(GfmdState::Done {
                     scene,
                     result: Ok(v),
                     elapsed_s,
-                };
+                });
             }
             Err(e) => {
                 self.fail(format!("GFMD failed{}: {e}", took.replace(" in", " after")));
-                self.jobs.gfmd = GfmdState::Done {
+                self.jobs.show_gfmd(GfmdState::Done {
                     scene,
                     result: Err(e.to_string()),
                     elapsed_s,
-                };
+                });
             }
         }
     }
@@ -87,7 +83,7 @@ impl App {
     /// The status line of a running job (phase, steps, residual, time and time left; the
     /// times only with [`Ui::show_timing`](crate::tui::model::ui::Ui::show_timing)).
     pub fn gfmd_status(&self) -> Option<String> {
-        match &self.jobs.gfmd {
+        match self.jobs.gfmd() {
             GfmdState::Running { progress, started, .. } => {
                 Some(progress.status_text(self.ui.show_timing.then(|| self.ui.elapsed_s(*started))))
             }

@@ -53,7 +53,7 @@ fn report(index: usize, iteration: usize, residual: f64) -> GfmdProgress {
 }
 
 fn shown_progress(a: &App) -> Option<&GfmdProgress> {
-    match &a.jobs.gfmd {
+    match a.jobs.gfmd() {
         GfmdState::Running { progress, .. } => Some(progress),
         _ => None,
     }
@@ -63,7 +63,7 @@ fn shown_progress(a: &App) -> Option<&GfmdProgress> {
 fn g_starts_and_cancels_a_gfmd_run() {
     let mut a = app();
     let cs = key(&mut a, KeyCode::Char('g'));
-    assert!(matches!(a.jobs.gfmd, GfmdState::Running { .. }));
+    assert!(matches!(a.jobs.gfmd(), GfmdState::Running { .. }));
     assert!(a.animating(), "the panel's clock ticks while GFMD runs");
     let (id, scene, map, cancel) = started(cs).expect("a run to start");
     assert!(map.is_none(), "the preset's spectrum: a generated map");
@@ -84,7 +84,7 @@ fn g_starts_and_cancels_a_gfmd_run() {
     // g again cancels
     let cs = key(&mut a, KeyCode::Char('g'));
     assert!(cancel.load(Ordering::Relaxed));
-    assert_eq!(a.jobs.gfmd, GfmdState::Idle);
+    assert_eq!(*a.jobs.gfmd(), GfmdState::Idle);
     assert!(started(cs).is_none());
     // a finished run is shown for its own scene only
     let (id, ..) = started(key(&mut a, KeyCode::Char('g'))).unwrap();
@@ -146,7 +146,7 @@ fn gfmd_progress_phases_and_the_time_it_took() {
         elapsed_s: 49.8,
     });
     assert_eq!(a.ui.message.as_ref().unwrap().text, "GFMD done in 50 s");
-    assert!(matches!(a.jobs.gfmd, GfmdState::Done { elapsed_s, .. } if elapsed_s == 49.8));
+    assert!(matches!(a.jobs.gfmd(), GfmdState::Done { elapsed_s, .. } if *elapsed_s == 49.8));
     assert_eq!(a.gfmd_status(), None);
     assert!(!a.animating());
 }
@@ -166,7 +166,7 @@ fn replies_of_a_cancelled_gfmd_run_are_dropped() {
         result: Err(Error::Cancelled),
         elapsed_s: 3.0,
     });
-    assert_eq!(a.jobs.gfmd, GfmdState::Idle);
+    assert_eq!(*a.jobs.gfmd(), GfmdState::Idle);
     // nor once a new run started
     let (new, ..) = started(key(&mut a, KeyCode::Char('g'))).unwrap();
     assert_ne!(new, old);
@@ -179,7 +179,7 @@ fn replies_of_a_cancelled_gfmd_run_are_dropped() {
         result: Ok(GfmdView::default()),
         elapsed_s: 3.0,
     });
-    assert!(matches!(a.jobs.gfmd, GfmdState::Running { id, .. } if id == new));
+    assert!(matches!(a.jobs.gfmd(), GfmdState::Running { id, .. } if *id == new));
     assert_eq!(shown_progress(&a).unwrap().iteration, 0);
     // a failure of the running one is kept with its reason and time
     a.on_reply(Reply::GfmdDone {
@@ -187,7 +187,7 @@ fn replies_of_a_cancelled_gfmd_run_are_dropped() {
         result: Err(Error::io("export", "test")),
         elapsed_s: 2.0,
     });
-    assert!(matches!(&a.jobs.gfmd, GfmdState::Done { result: Err(e), .. } if e.contains("test")));
+    assert!(matches!(a.jobs.gfmd(), GfmdState::Done { result: Err(e), .. } if e.contains("test")));
     assert!(a
         .ui
         .message

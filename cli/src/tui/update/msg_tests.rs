@@ -88,7 +88,7 @@ fn file_and_gfmd_keys_return_their_commands() {
         !flag.load(std::sync::atomic::Ordering::Relaxed),
         "the update itself stops nothing"
     );
-    assert_eq!(a.jobs.gfmd, GfmdState::Idle);
+    assert_eq!(*a.jobs.gfmd(), GfmdState::Idle);
 }
 
 #[test]
@@ -167,7 +167,7 @@ fn a_tick_turns_the_spinner_and_plays_the_scale_view_to_its_end() {
         sigma_a: 0.0,
         pr: Vec::new(),
     };
-    a.results.scales = Some(Ok(ScalesData {
+    a.results.set_scales(Ok(ScalesData {
         frames: vec![frame(1.0), frame(2.0), frame(4.0)],
         area: Vec::new(),
         wall: Vec::new(),
@@ -230,7 +230,7 @@ fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
             result: Err(oops()),
         },
     );
-    assert!(a.results.point.is_none());
+    assert!(a.results.point().is_none());
     reply(
         &mut a,
         Reply::Point {
@@ -239,7 +239,7 @@ fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
             result: Err(oops()),
         },
     );
-    assert!(matches!(a.results.point, Some(Err(_))) && a.results.point_gen == 1);
+    assert!(matches!(a.results.point(), Some(Err(_))) && a.results.point_gen == 1);
     // a load sweep
     let sweep = || Ok(SweepData::default());
     reply(
@@ -250,7 +250,7 @@ fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
             result: sweep(),
         },
     );
-    assert!(a.results.sweep.is_none());
+    assert!(a.results.sweep().is_none());
     reply(
         &mut a,
         Reply::Sweep {
@@ -259,7 +259,7 @@ fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
             result: sweep(),
         },
     );
-    assert!(matches!(a.results.sweep, Some(Ok(_))));
+    assert!(matches!(a.results.sweep(), Some(Ok(_))));
     // the mean gap
     reply(
         &mut a,
@@ -289,7 +289,7 @@ fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
             result: th(),
         },
     );
-    assert!(a.results.thickness.is_none());
+    assert!(a.results.thickness().is_none());
     reply(
         &mut a,
         Reply::Thickness {
@@ -298,7 +298,7 @@ fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
             result: th(),
         },
     );
-    assert!(matches!(a.results.thickness, Some(Ok(_))));
+    assert!(matches!(a.results.thickness(), Some(Ok(_))));
     // the scale view
     reply(
         &mut a,
@@ -308,7 +308,7 @@ fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
             result: Err(oops()),
         },
     );
-    assert!(a.results.scales.is_none());
+    assert!(a.results.scales().is_none());
     reply(
         &mut a,
         Reply::Scales {
@@ -317,7 +317,7 @@ fn replies_of_the_current_scene_are_kept_and_of_another_dropped() {
             result: Err(oops()),
         },
     );
-    assert!(a.results.scales.is_some());
+    assert!(a.results.scales().is_some());
 }
 
 #[test]
@@ -351,10 +351,10 @@ fn gfmd_start_progress_and_end_follow_the_running_run_only() {
         },
     );
     assert!(!a.ui.message.as_ref().is_some_and(|m| m.text.contains("64x64")));
-    assert!(matches!(a.jobs.gfmd, GfmdState::Running { started: None, .. }));
+    assert!(matches!(a.jobs.gfmd(), GfmdState::Running { started: None, .. }));
     update(&mut a, Msg::GfmdStarted { id, grid: 32, at });
     assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("32x32")));
-    assert!(matches!(a.jobs.gfmd, GfmdState::Running { started: Some(t), .. } if t == at));
+    assert!(matches!(a.jobs.gfmd(), GfmdState::Running { started: Some(t), .. } if *t == at));
     // progress of the running run shows, and clears the start message
     let p = a.params.scene.pressure();
     reply(
@@ -375,7 +375,7 @@ fn gfmd_start_progress_and_end_follow_the_running_run_only() {
             elapsed_s: 1.0,
         },
     );
-    assert!(matches!(a.jobs.gfmd, GfmdState::Running { .. }));
+    assert!(matches!(a.jobs.gfmd(), GfmdState::Running { .. }));
     reply(
         &mut a,
         Reply::GfmdDone {
@@ -384,7 +384,7 @@ fn gfmd_start_progress_and_end_follow_the_running_run_only() {
             elapsed_s: 1.0,
         },
     );
-    assert!(matches!(a.jobs.gfmd, GfmdState::Done { result: Ok(_), .. }));
+    assert!(matches!(a.jobs.gfmd(), GfmdState::Done { result: Ok(_), .. }));
     assert!(a.ui.message.as_ref().is_some_and(|m| m.text == "GFMD done"));
 }
 

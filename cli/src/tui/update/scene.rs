@@ -54,7 +54,7 @@ impl App {
         if self.sweep_is_stale() {
             return;
         }
-        let Some(Ok(sw)) = &self.results.sweep else { return };
+        let Some(Ok(sw)) = self.results.sweep() else { return };
         let w = crate::tui::model::history::Window {
             jump_in: sw.jump_in,
             pull_off: sw.pull_off,

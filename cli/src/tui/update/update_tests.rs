@@ -93,7 +93,7 @@ fn pressure_steps_return_to_the_presets_value() {
 fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
     let mut a = app();
     crate::tui::drive::compute_now(&mut a, &mut Default::default());
-    assert!(a.results.sweep.as_ref().is_some_and(|s| s.is_ok()));
+    assert!(a.results.sweep().is_some_and(|s| s.is_ok()));
     let key_now = point_key(&a.params.source, &a.params.scene);
     a.on_reply(Reply::Point {
         gen: a.jobs.gen(),
@@ -103,11 +103,8 @@ fn a_failed_point_keeps_the_load_charts_and_the_panel_agrees() {
             reason: "test".into(),
         }),
     });
-    assert!(
-        a.results.sweep.as_ref().is_some_and(|s| s.is_ok()),
-        "the load charts stay"
-    );
-    assert!(a.results.gap.is_some());
+    assert!(a.results.sweep().is_some_and(|s| s.is_ok()), "the load charts stay");
+    assert!(a.results.gap().is_some());
     assert!(a.compute_error().unwrap().contains("did not converge"));
 }
 
@@ -163,7 +160,7 @@ fn requests_carry_increasing_generations_and_only_on_change() {
         key: point_key(&r1.source, &r1.scene),
         result: Err(Error::Cancelled),
     });
-    assert!(a.results.point.is_none());
+    assert!(a.results.point().is_none());
     a.on_reply(Reply::Done { gen: r1.gen });
     assert!(a.jobs.busy());
     a.on_reply(Reply::Done { gen: r2.gen });
@@ -412,7 +409,7 @@ fn the_scale_view_scrubs_plays_to_the_end_and_pauses() {
     assert!(a.ui.message.as_ref().is_some_and(|m| m.text.contains("scales")));
     a.set_charts([ChartKind::Scales, ChartKind::ScalesArea, ChartKind::Area]);
     assert!(take_compute(&mut a).is_some_and(|r| r.needs.scales && r.needs.loads && !r.needs.point));
-    a.results.scales = Some(Ok(frames(4)));
+    a.results.set_scales(Ok(frames(4)));
     // opens at q_s, the last frame
     assert_eq!(a.scale_frame().map(|f| (f.0, f.1)), Some((3, 4)));
     key(&mut a, KeyCode::Char('['));
@@ -548,7 +545,7 @@ fn m_overlays_model_5_where_adhesion_sets_it_apart_from_model_3() {
     // overlay's keys find the reply
     let scene = a.params.scene.clone().with_model(*five[0]).unwrap();
     assert_eq!(scene.model().kind, ModelKind::Five);
-    assert_eq!(a.overlay_keys().0.len(), 5);
+    assert_eq!(a.results.keys().overlays.len(), 5);
     // without adhesion model 5 is model 3: it is left out, not drawn over model 3
     a.set_typed(Param::Gamma, "0").unwrap();
     let r = take_compute(&mut a).unwrap();

@@ -62,7 +62,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
         lines.push(Line::from(format!(" {}{name}", pad("surface", 9))));
     }
     lines.push(Line::from(Span::styled("─ results ─", pal.dim())));
-    let pt = app.results.point.as_ref().and_then(|r| r.as_ref().ok());
+    let pt = app.results.point().and_then(|r| r.as_ref().ok());
     let dash = || "–".to_string();
     // values of an earlier scene stay while the new one computes: dimmed and marked ⋯
     let stale_point = app.point_is_stale() && pt.is_some();
@@ -97,7 +97,7 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     let stress = sh::path_stress(app).map_or_else(dash, |s| sig(s, 4));
     row_styled("σ̄_c*", stress, stale_point);
     let gap = sh::path_gap(app).map_or_else(dash, |g| sig(g, 4));
-    row_styled("ū/h_rms", gap, stale_gap && app.results.gap.is_some());
+    row_styled("ū/h_rms", gap, stale_gap && app.results.gap().is_some());
     // with adhesion: the bracket of the gap of the branch shown (docs/physics.md §5.1)
     if app.params.scene.is_adhesive() {
         if let Some((lo, hi)) = sh::path_gap_bracket(app) {
@@ -110,8 +110,8 @@ pub fn draw_panel(f: &mut Frame, area: Rect, app: &App, pal: Palette) {
     if app.params.scene.is_adhesive() {
         row_styled("μ_T", sig(app.params.scene.tabor(), 3), false);
     }
-    let state = match (&app.results.point, shown) {
-        _ if stale_point || (app.jobs.busy() && app.results.point.is_none()) => "computing…".to_string(),
+    let state = match (app.results.point(), shown) {
+        _ if stale_point || (app.jobs.busy() && app.results.point().is_none()) => "computing…".to_string(),
         (Some(Ok(_)), Some(p)) if p.preview => format!("{} · refining…", p.branch),
         (Some(Ok(_)), Some(p)) => p.branch.clone(),
         (Some(Err(_)), _) => "failed (see below)".into(),
@@ -206,7 +206,7 @@ fn scene_rows(sc: &asperity::input::scene::Scene) -> Vec<Line<'static>> {
 fn gfmd_rows(app: &App) -> Vec<(String, String)> {
     let mut v: Vec<(String, String)> = Vec::new();
     let mut row = |k: &str, val: String| v.push((k.to_string(), val));
-    match &app.jobs.gfmd {
+    match app.jobs.gfmd() {
         GfmdState::Idle => {}
         GfmdState::Running { progress, started, .. } => {
             row(
