@@ -68,32 +68,16 @@ impl GfmdView {
 
 /// Panel rows: γ̃_glo and μ_T of the run (and of the full system), λ_r/λ_s likewise, and a count of what was not kept.
 fn invariant_rows(r: &asperity::gfmd::reduction::Reduction) -> Vec<(String, String)> {
-    let mut v = vec![(
-        "λr/λs".to_string(),
-        // ratios like 200.000000000 (a quotient of lengths) in four significant digits
-        format!(
-            "{} (full {})",
-            crate::numfmt::sig(r.reduced.bandwidth, 4),
-            crate::numfmt::sig(r.full.bandwidth, 4)
-        ),
-    )];
+    // the run's value and the full system's, e.g. "200.0 (full 2000)"
+    let pair = |name: &str, reduced: f64, full: f64, digits: usize| {
+        let sig = |x| crate::numfmt::sig(x, digits);
+        (name.to_string(), format!("{} (full {})", sig(reduced), sig(full)))
+    };
+    // ratios like 200.000000000 (a quotient of lengths) in four significant digits
+    let mut v = vec![pair("λr/λs", r.reduced.bandwidth, r.full.bandwidth, 4)];
     if r.full.gamma > 0.0 {
-        v.push((
-            "GFMD γ̃".to_string(),
-            format!(
-                "{} (full {})",
-                crate::numfmt::sig(r.reduced.gamma_glo, 3),
-                crate::numfmt::sig(r.full.gamma_glo, 3)
-            ),
-        ));
-        v.push((
-            "GFMD μT".to_string(),
-            format!(
-                "{} (full {})",
-                crate::numfmt::sig(r.reduced.tabor, 3),
-                crate::numfmt::sig(r.full.tabor, 3)
-            ),
-        ));
+        v.push(pair("GFMD γ̃", r.reduced.gamma_glo, r.full.gamma_glo, 3));
+        v.push(pair("GFMD μT", r.reduced.tabor, r.full.tabor, 3));
     }
     let lost: Vec<&str> = r
         .not_kept

@@ -33,56 +33,43 @@ pub fn area(app: &App, ratio: bool) -> Chart {
         m.title = format!("a_r(p*) · {line}");
     }
     if app.eq18_applies() {
-        m.series.push(Series {
-            name: "eq. (18)".into(),
-            points: sw.p.iter().map(|&p| (p, y_of(p, data::eq18_area(p)))).collect(),
-            role: Role::Closed,
-            style: Draw::Dashed,
-            look: None,
-        });
+        m.series.push(Series::new(
+            "eq. (18)",
+            sw.p.iter().map(|&p| (p, y_of(p, data::eq18_area(p)))).collect(),
+            Role::Closed,
+            Draw::Dashed,
+        ));
     }
     for (i, o) in others(app, App::model_sweep) {
-        m.series.push(Series {
-            name: slot_name(i),
-            points: curve(o),
-            role: Role::Model(i),
-            style: Draw::Line,
-            look: None,
-        });
+        m.series
+            .push(Series::new(slot_name(i), curve(o), Role::Model(i), Draw::Line));
     }
     if !app.ui.all_models {
         hysteresis(&mut m, sw, &y_of);
     }
-    m.series.push(Series {
-        name: theory_name(app),
-        points: curve(sw),
-        role: theory_role(app),
-        style: Draw::Line,
-        look: None,
-    });
+    m.series
+        .push(Series::new(theory_name(app), curve(sw), theory_role(app), Draw::Line));
     m.series
         .extend(reference_series(app, kind.reference_quantity().unwrap_or("a_r"), y_of));
     if let Some(g) = app.gfmd_for_scene() {
         // the theory on GFMD's own (reduced) map: a second system, apart from the scene's curve
         if g.theory_sweep.len() > 1 {
-            m.series.push(Series {
-                name: "theory on the GFMD map".into(),
-                points: g.theory_sweep.iter().map(|&(p, a, _)| (p, y_of(p, a))).collect(),
-                role: Role::GfmdTheory,
-                style: Draw::Dashed,
-                look: None,
-            });
+            m.series.push(Series::new(
+                "theory on the GFMD map",
+                g.theory_sweep.iter().map(|&(p, a, _)| (p, y_of(p, a))).collect(),
+                Role::GfmdTheory,
+                Draw::Dashed,
+            ));
         }
-        m.series.push(Series {
-            name: "GFMD".into(),
-            points: std::iter::once((g.pressure, g.a_r))
+        m.series.push(Series::new(
+            "GFMD",
+            std::iter::once((g.pressure, g.a_r))
                 .chain(g.sweep.iter().map(|&(p, a, _)| (p, a)))
                 .map(|(p, a)| (p, y_of(p, a)))
                 .collect(),
-            role: Role::Gfmd,
-            style: Draw::Points,
-            look: None,
-        });
+            Role::Gfmd,
+            Draw::Points,
+        ));
     }
     let p = app.params.scene.pressure();
     add_current(&mut m, p, path_a_r(app).map(|a| y_of(p, a)));
@@ -125,13 +112,8 @@ fn hysteresis(m: &mut Chart, sw: &SweepData, y_of: &dyn Fn(f64, f64) -> f64) {
 /// the jump-in and pull-off edges as vertical markers named `jump-in {unit}x`.
 fn push_window(m: &mut Chart, points: Vec<(f64, f64)>, [jump_in, pull_off]: [Vec<f64>; 2], unit: &str) {
     if points.iter().any(|q| q.0.is_finite() && q.1.is_finite()) {
-        m.series.push(Series {
-            name: "unloading".into(),
-            points,
-            role: Role::Unloading,
-            style: Draw::Dashed,
-            look: None,
-        });
+        m.series
+            .push(Series::new("unloading", points, Role::Unloading, Draw::Dashed));
     }
     for (xs, role, what) in [
         (jump_in, Role::JumpIn, "jump-in"),
@@ -192,13 +174,7 @@ pub fn gap_band(sw: &SweepData) -> Option<Series> {
             points.extend((0..=BAND_ROWS).map(|k| (p, lo + (hi - lo) * k as f64 / BAND_ROWS as f64)));
         }
     }
-    (!points.is_empty()).then(|| Series {
-        name: "bracket (same a_r … same load)".into(),
-        points,
-        role: Role::Band,
-        style: Draw::Points,
-        look: None,
-    })
+    (!points.is_empty()).then(|| Series::new("bracket (same a_r … same load)", points, Role::Band, Draw::Points))
 }
 
 pub fn loads(app: &App, kind: ChartKind) -> Chart {
@@ -233,29 +209,18 @@ pub fn loads(app: &App, kind: ChartKind) -> Chart {
         }
     }
     for (i, o) in others(app, App::model_sweep) {
-        m.series.push(Series {
-            name: slot_name(i),
-            points: pick(o),
-            role: Role::Model(i),
-            style: Draw::Line,
-            look: None,
-        });
+        m.series
+            .push(Series::new(slot_name(i), pick(o), Role::Model(i), Draw::Line));
     }
-    m.series.push(Series {
-        name: theory_name(app),
-        points: pick(sw),
-        role: theory_role(app),
-        style: Draw::Line,
-        look: None,
-    });
+    m.series
+        .push(Series::new(theory_name(app), pick(sw), theory_role(app), Draw::Line));
     if gap && sw.gap_unloading.len() == sw.p.len() {
-        m.series.push(Series {
-            name: "unloading".into(),
-            points: sw.p.iter().copied().zip(sw.gap_unloading.iter().copied()).collect(),
-            role: Role::Unloading,
-            style: Draw::Dashed,
-            look: None,
-        });
+        m.series.push(Series::new(
+            "unloading",
+            sw.p.iter().copied().zip(sw.gap_unloading.iter().copied()).collect(),
+            Role::Unloading,
+            Draw::Dashed,
+        ));
     }
     m.series.extend(reference_series(app, quantity, |_, v| v));
     if let Some(g) = app.gfmd_for_scene() {
@@ -263,23 +228,16 @@ pub fn loads(app: &App, kind: ChartKind) -> Chart {
         let mut points = vec![(g.pressure, y)];
         if gap {
             if g.theory_sweep.len() > 1 {
-                m.series.push(Series {
-                    name: "theory on the GFMD map".into(),
-                    points: g.theory_sweep.iter().map(|&(p, _, u)| (p, u)).collect(),
-                    role: Role::GfmdTheory,
-                    style: Draw::Dashed,
-                    look: None,
-                });
+                m.series.push(Series::new(
+                    "theory on the GFMD map",
+                    g.theory_sweep.iter().map(|&(p, _, u)| (p, u)).collect(),
+                    Role::GfmdTheory,
+                    Draw::Dashed,
+                ));
             }
             points.extend(g.sweep.iter().map(|&(p, _, u)| (p, u)));
         }
-        m.series.push(Series {
-            name: "GFMD".into(),
-            points,
-            role: Role::Gfmd,
-            style: Draw::Points,
-            look: None,
-        });
+        m.series.push(Series::new("GFMD", points, Role::Gfmd, Draw::Points));
     }
     let y = if gap {
         path_gap(app)
@@ -340,42 +298,30 @@ pub fn thickness(app: &App) -> Chart {
         td.t.last().copied().unwrap_or(1e2),
     );
     if let Some(a0) = &td.adhesionless {
-        m.series.push(Series {
-            name: "γ_s=0".into(),
-            points: td.t.iter().copied().zip(a0.iter().copied()).collect(),
-            role: Role::Compare,
-            style: Draw::Line,
-            look: None,
-        });
+        m.series.push(Series::new(
+            "γ_s=0",
+            td.t.iter().copied().zip(a0.iter().copied()).collect(),
+            Role::Compare,
+            Draw::Line,
+        ));
     }
     if td.a_r_inf.is_finite() {
-        m.series.push(Series {
-            name: "t=∞".into(),
-            points: vec![(t0, td.a_r_inf), (t1, td.a_r_inf)],
-            role: Role::Closed,
-            style: Draw::Dashed,
-            look: None,
-        });
+        m.series.push(Series::new(
+            "t=∞",
+            vec![(t0, td.a_r_inf), (t1, td.a_r_inf)],
+            Role::Closed,
+            Draw::Dashed,
+        ));
     }
     for (i, o) in others(app, App::model_thickness) {
-        m.series.push(Series {
-            name: slot_name(i),
-            points: curve(o),
-            role: Role::Model(i),
-            style: Draw::Line,
-            look: None,
-        });
+        m.series
+            .push(Series::new(slot_name(i), curve(o), Role::Model(i), Draw::Line));
     }
     if !app.ui.all_models {
         thickness_window(&mut m, td);
     }
-    m.series.push(Series {
-        name: theory_name(app),
-        points: curve(td),
-        role: theory_role(app),
-        style: Draw::Line,
-        look: None,
-    });
+    m.series
+        .push(Series::new(theory_name(app), curve(td), theory_role(app), Draw::Line));
     // reference a_r points at this p* with a finite thickness
     let mut refs: Vec<Series> = Vec::new();
     for r in references(app, ChartKind::Thickness.reference_quantity().unwrap_or("a_r")) {

@@ -105,41 +105,29 @@ fn pr_linear(app: &App) -> Chart {
     };
     m.stale = app.point_is_stale();
     if let Some(c) = p.adhesionless.as_ref().filter(|_| app.ui.compare) {
-        m.series.push(Series {
-            name: "γ_s=0".into(),
-            points: c.clone(),
-            role: Role::Compare,
-            style: Draw::Line,
-            look: None,
-        });
+        m.series
+            .push(Series::new("γ_s=0", c.clone(), Role::Compare, Draw::Line));
     }
     if let Some(g) = app.gfmd_for_scene() {
-        m.series.push(Series {
-            name: "GFMD".into(),
-            points: g.pr.iter().copied().filter(|(_, d)| *d > 0.0).collect(),
-            role: Role::Gfmd,
-            style: Draw::Points,
-            look: None,
-        });
+        m.series.push(Series::new(
+            "GFMD",
+            g.pr.iter().copied().filter(|(_, d)| *d > 0.0).collect(),
+            Role::Gfmd,
+            Draw::Points,
+        ));
     }
     for (i, o) in others(app, App::model_point) {
-        m.series.push(Series {
-            name: slot_name(i),
-            points: o.pr.clone(),
-            role: Role::Model(i),
-            style: Draw::Line,
-            look: None,
-        });
+        m.series
+            .push(Series::new(slot_name(i), o.pr.clone(), Role::Model(i), Draw::Line));
     }
     // the theory's distribution and wall on the branch the path is on
     let on = crate::tui::charts::shared::shown_point(app).unwrap_or(p);
-    m.series.push(Series {
-        name: theory_name(app),
-        points: on.pr.clone(),
-        role: theory_role(app),
-        style: Draw::Line,
-        look: None,
-    });
+    m.series.push(Series::new(
+        theory_name(app),
+        on.pr.clone(),
+        theory_role(app),
+        Draw::Line,
+    ));
     if let Some(w) = on.wall {
         m.vlines.push(VLine {
             x: w,
@@ -209,67 +197,47 @@ fn pr_loglog(app: &App) -> Chart {
     // the branch the path is on
     let theory = curve(crate::tui::charts::shared::shown_point(app).unwrap_or(p));
     if let Some(c) = p.adhesionless.as_ref().filter(|_| app.ui.compare) {
-        m.series.push(Series {
-            name: "γ_s=0".into(),
-            points: positive(c),
-            role: Role::Compare,
-            style: Draw::Line,
-            look: None,
-        });
+        m.series
+            .push(Series::new("γ_s=0", positive(c), Role::Compare, Draw::Line));
     }
     if app.params.scene.surface_energy_j_m2() == 0.0 && p.width > 0.0 {
         // [S] Fig. 3: Pr ∝ σ* for σ* → 0 and the Gaussian tail
         let (pp, d) = (app.params.scene.pressure(), p.width);
         let xs: Vec<f64> = theory.iter().map(|q| q.0).collect();
         // each where it applies: σ* below Δ, and above Δ/2 (they coincide for σ* ≪ Δ)
-        m.series.push(Series {
-            name: "σ→0 asymptote".into(),
-            points: xs
-                .iter()
+        m.series.push(Series::new(
+            "σ→0 asymptote",
+            xs.iter()
                 .filter(|&&s| s <= d)
                 .map(|&s| (s, data::pr_small_stress(s, pp, d)))
                 .collect(),
-            role: Role::Closed,
-            style: Draw::Dashed,
-            look: None,
-        });
-        m.series.push(Series {
-            name: "large-σ asymptote".into(),
-            points: xs
-                .iter()
+            Role::Closed,
+            Draw::Dashed,
+        ));
+        m.series.push(Series::new(
+            "large-σ asymptote",
+            xs.iter()
                 .filter(|&&s| s >= 0.5 * d)
                 .map(|&s| (s, data::pr_large_stress(s, pp, d)))
                 .collect(),
-            role: Role::Closed2,
-            style: Draw::Dashed,
-            look: None,
-        });
+            Role::Closed2,
+            Draw::Dashed,
+        ));
     }
     if let Some(g) = app.gfmd_for_scene() {
-        m.series.push(Series {
-            name: "GFMD".into(),
-            points: positive(&g.pr),
-            role: Role::Gfmd,
-            style: Draw::Points,
-            look: None,
-        });
+        m.series
+            .push(Series::new("GFMD", positive(&g.pr), Role::Gfmd, Draw::Points));
     }
     for (i, o) in others(app, App::model_point) {
-        m.series.push(Series {
-            name: slot_name(i),
-            points: curve(o),
-            role: Role::Model(i),
-            style: Draw::Line,
-            look: None,
-        });
+        m.series
+            .push(Series::new(slot_name(i), curve(o), Role::Model(i), Draw::Line));
     }
-    m.series.push(Series {
-        name: theory_name(app),
-        points: theory.clone(),
-        role: theory_role(app),
-        style: Draw::Line,
-        look: None,
-    });
+    m.series.push(Series::new(
+        theory_name(app),
+        theory.clone(),
+        theory_role(app),
+        Draw::Line,
+    ));
     // x: the theory's σ* range; y: from 10⁻⁶ of the peak to twice the peak
     let runs = plot::segments(&theory, m.xs, m.ys);
     let refs: Vec<&[(f64, f64)]> = runs.iter().map(|r| r.as_slice()).collect();
@@ -288,13 +256,12 @@ fn draw_pins(m: &mut Chart, kind: ChartKind, pins: &[Pin], now: &Scene) {
     let mut added = Vec::new();
     for (i, p) in pins.iter().enumerate() {
         if let Some((_, pts)) = p.curves.iter().find(|(k, _)| *k == kind) {
-            added.push(Series {
-                name: pins::label(&p.scene, now),
-                points: pts.clone(),
-                role: Role::Pin(i),
-                style: Draw::Dotted,
-                look: None,
-            });
+            added.push(Series::new(
+                pins::label(&p.scene, now),
+                pts.clone(),
+                Role::Pin(i),
+                Draw::Dotted,
+            ));
         }
     }
     if added.is_empty() {

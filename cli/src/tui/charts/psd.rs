@@ -32,13 +32,7 @@ pub fn psd(app: &App) -> Chart {
         Spectrum::SelfAffine(s) => {
             m.title = format!("C(q) self-affine H={}", sig(s.hurst, 3));
             let corners: Vec<(f64, f64)> = [s.q_l(), s.q_r(), s.q_s()].into_iter().map(|q| (q, s.psd(q))).collect();
-            m.series.push(Series {
-                name: "C(q)".into(),
-                points: corners,
-                role: Role::Theory,
-                style: Draw::Line,
-                look: None,
-            });
+            m.series.push(Series::new("C(q)", corners, Role::Theory, Draw::Line));
         }
         Spectrum::Tabulated(t) => tabulated(&mut m, t),
         Spectrum::Discrete(_) => {
@@ -85,13 +79,12 @@ pub fn psd(app: &App) -> Chart {
 fn tabulated(m: &mut Chart, t: &Tabulated) {
     let name = crate::tui::base::words::surface_name_of(t);
     m.title = format!("C(q) of {name}");
-    m.series.push(Series {
-        name: "table".into(),
-        points: t.q.iter().copied().zip(t.psd.iter().copied()).collect(),
-        role: Role::Reference,
-        style: Draw::Points,
-        look: None,
-    });
+    m.series.push(Series::new(
+        "table",
+        t.q.iter().copied().zip(t.psd.iter().copied()).collect(),
+        Role::Reference,
+        Draw::Points,
+    ));
     let mut used: Vec<(f64, f64)> = vec![(t.q_min, t.psd_at(t.q_min))];
     used.extend(
         t.q.iter()
@@ -100,13 +93,8 @@ fn tabulated(m: &mut Chart, t: &Tabulated) {
             .map(|(&q, &c)| (q, c)),
     );
     used.push((t.q_max, t.psd_at(t.q_max)));
-    m.series.push(Series {
-        name: "C(q) used".into(),
-        points: used.clone(),
-        role: Role::Theory,
-        style: Draw::Line,
-        look: None,
-    });
+    m.series
+        .push(Series::new("C(q) used", used.clone(), Role::Theory, Draw::Line));
     let (q, c): (Vec<f64>, Vec<f64>) = used.iter().copied().unzip();
     let fit = fit_self_affine(&q, &c, &vec![1.0; q.len()]);
     // a fit whose H is outside the self-affine range says the table is not self-affine
@@ -126,11 +114,10 @@ fn tabulated(m: &mut Chart, t: &Tabulated) {
         pts.push((fit.q_r, law(fit.q_r)));
     }
     pts.push((fit.q_s, law(fit.q_s)));
-    m.series.push(Series {
-        name: format!("fit H={}±{}", sig(fit.hurst, 3), sig(fit.hurst_error, 1)),
-        points: pts,
-        role: Role::Closed,
-        style: Draw::Dashed,
-        look: None,
-    });
+    m.series.push(Series::new(
+        format!("fit H={}±{}", sig(fit.hurst, 3), sig(fit.hurst_error, 1)),
+        pts,
+        Role::Closed,
+        Draw::Dashed,
+    ));
 }

@@ -39,21 +39,15 @@ pub fn scales(app: &App) -> Chart {
         sig(f.a_r, 3)
     );
     if let Some(last) = d.frames.last().filter(|_| i + 1 < n) {
-        m.series.push(Series {
-            name: "q = q_s".into(),
-            points: last.pr.clone(),
-            role: Role::Compare,
-            style: Draw::Line,
-            look: None,
-        });
+        m.series
+            .push(Series::new("q = q_s", last.pr.clone(), Role::Compare, Draw::Line));
     }
-    m.series.push(Series {
-        name: format!("q/q_L = {}", sig(f.q_rel, 3)),
-        points: f.pr.clone(),
-        role: Role::Theory,
-        style: Draw::Line,
-        look: None,
-    });
+    m.series.push(Series::new(
+        format!("q/q_L = {}", sig(f.q_rel, 3)),
+        f.pr.clone(),
+        Role::Theory,
+        Draw::Line,
+    ));
     let lo = f.pr.first().map_or(0.0, |p| p.0);
     let hi = f.pr.last().map_or(1.0, |p| p.0);
     if lo < 0.0 {
@@ -104,26 +98,16 @@ pub fn scales_area(app: &App) -> Chart {
     } else {
         format!("a_r(q)={} no wall", sig(f.a_r, 3))
     };
-    m.series.push(Series {
-        name: "a_r(q)".into(),
-        points: d.area.clone(),
-        role: Role::Theory,
-        style: Draw::Line,
-        look: None,
-    });
+    m.series
+        .push(Series::new("a_r(q)", d.area.clone(), Role::Theory, Draw::Line));
     let x = f.q_rel.log10();
     m.vlines.push(VLine {
         x: f.q_rel,
         role: Role::Guide,
         name: String::new(),
     });
-    m.series.push(Series {
-        name: "q".into(),
-        points: vec![(f.q_rel, f.a_r)],
-        role: Role::Current,
-        style: Draw::Points,
-        look: None,
-    });
+    m.series
+        .push(Series::new("q", vec![(f.q_rel, f.a_r)], Role::Current, Draw::Points));
     // a_r(q) falls from 1 at q_L over decades: log axes, the top at a_r = 1
     let q_hi = d.area.last().map_or(10.0, |p| p.0).max(1.0 + 1e-9);
     m.xb = [0.0, q_hi.log10().max(x)];

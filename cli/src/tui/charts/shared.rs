@@ -263,15 +263,7 @@ pub fn add_current(m: &mut Chart, x: f64, y: Option<f64>) {
             .iter()
             .position(|s| s.role == Role::Reference)
             .unwrap_or(m.series.len());
-        m.series.insert(
-            at,
-            Series {
-                name: "p*".into(),
-                points: vec![(x, y)],
-                role: Role::Current,
-                style: Draw::Points,
-                look: None,
-            },
-        );
+        m.series
+            .insert(at, Series::new("p*", vec![(x, y)], Role::Current, Draw::Points));
     }
 }
