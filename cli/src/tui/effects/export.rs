@@ -41,14 +41,8 @@ pub fn scene_preset(base: &Preset, scene: &Scene) -> Preset {
     p
 }
 
-/// A CSV cell: empty where the value is unavailable (as `asperity sweep` writes it).
-pub fn cell(x: f64) -> String {
-    if x.is_finite() {
-        format!("{x:e}")
-    } else {
-        String::new()
-    }
-}
+/// A CSV cell: empty where the value is unavailable (the library's, as `asperity sweep` writes it).
+pub use asperity::report::csv::cell;
 
 /// `# key: value` lines describing the scene, for the top of every exported CSV.
 pub fn scene_comment(job: &ExportJob, name: &str) -> String {
