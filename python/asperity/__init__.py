@@ -45,6 +45,7 @@ from ._api import (
 from ._errors import AsperityError, AsperityWarning, InputError, InternalError, NotConverged, ResolutionWarning, UnitWarning
 from ._results import (
     CycleResult,
+    GaugeResult,
     GfmdCycleResult,
     GfmdResult,
     GfmdSweepResult,
@@ -78,6 +79,7 @@ __all__ = [
     "SweepResult",
     "GfmdResult",
     "PsdResult",
+    "GaugeResult",
     "CycleResult",
     "PullOffResult",
     "GfmdCycleResult",

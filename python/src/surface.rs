@@ -1,11 +1,11 @@
 //! Height maps in and out: a numpy array (rows along y, heights in m) and the x side L in m
 //! as a library [`Surface`] (Δa = L/n_x, square pixels), `read_surface` (the library's
 //! readers: .txt .asc .dat .xyz .npy .gsf) and `psd` (the radial average of the map's PSD
-//! [S-2] with h_rms, ḡ, the rms curvature and the self-affine fit, the keys of
-//! `asperity psd --format json`).
+//! [S-2] with h_rms, ḡ, the rms curvature and the self-affine fit, a record of
+//! `asperity psd --format json`'s object).
 
 use crate::errors;
-use crate::value;
+use crate::record::Record;
 use asperity::report;
 use asperity::surface::heightmap::Surface;
 use asperity::surface::psd::PsdOptions;
@@ -30,13 +30,10 @@ pub fn map_of(py: Python<'_>, heights: &PyReadonlyArray2<'_, f64>, size_m: f64) 
     errors::detached(py, || Surface::new(nx, ny, size_m / nx as f64, values))
 }
 
-/// A result's dict with `heights`, the map a GFMD run walked on (m, rows along y), where it
-/// has one.
-pub fn with_heights<'py>(py: Python<'py>, d: Bound<'py, PyAny>, map: Option<Surface>) -> PyResult<Bound<'py, PyAny>> {
-    if let Some(m) = map {
-        d.set_item("heights", heights_of(py, &m)?)?;
-    }
-    Ok(d)
+/// The record of a GFMD result with `heights`, the map it walked on (m, rows along y), where
+/// it has one.
+pub fn on_map<T: serde::Serialize>(py: Python<'_>, x: &T, map: Option<Surface>) -> PyResult<Record> {
+    Record::on_map(py, x, map.map(|m| heights_of(py, &m)).transpose()?.map(Bound::into_any))
 }
 
 /// The heights of `s` as a numpy array of shape (n_y, n_x).
@@ -92,12 +89,12 @@ pub fn map_psd<'py>(
     periodic: bool,
     bins_per_decade: f64,
     source: String,
-) -> PyResult<Bound<'py, PyAny>> {
+) -> PyResult<Record> {
     let s = map_of(py, &heights, size_m)?;
     let opts = PsdOptions {
         periodic,
         bins_per_decade,
     };
     let r = errors::detached(py, || report::psd::psd(&source, &s, &opts))?;
-    value::ser(py, &r)
+    Record::of(py, &r)
 }
