@@ -41,6 +41,7 @@ __all__ = [
     "sweep_thickness",
     "sweep_gamma",
     "cycle",
+    "pull_off",
     "gfmd",
     "gfmd_cycle",
     "gfmd_sweep",
@@ -358,9 +359,9 @@ def gfmd_cycle(
     ``grid`` < 4, ...), :class:`NotConverged` when a load misses its tolerance; Ctrl-C stops it
     within one relaxation step.
     """
-    return GfmdCycleResult(
-        _gfmd_walk(scene, from_, to, points, heights, size, grid, seed, tolerance, max_iterations, bins, method, rescale, progress, True)
-    )
+    loads = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
+    m, knobs = _given_map(heights, size), _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale)
+    return GfmdCycleResult(_gfmd_walk(scene, loads, m, knobs, progress, True))
 
 
 def gfmd_sweep(
@@ -392,33 +393,17 @@ def gfmd_sweep(
     Raises :class:`InputError` before any work for bad input, :class:`NotConverged` when a load
     misses its tolerance; Ctrl-C stops it within one relaxation step.
     """
-    return GfmdSweepResult(
-        _gfmd_walk(scene, from_, to, points, heights, size, grid, seed, tolerance, max_iterations, bins, method, rescale, progress, False)
-    )
+    loads = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
+    m, knobs = _given_map(heights, size), _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale)
+    return GfmdSweepResult(_gfmd_walk(scene, loads, m, knobs, progress, False))
 
 
 def _gfmd_walk(
-    scene: Scene,
-    from_: float,
-    to: float,
-    points: int,
-    heights: Any,
-    size: Optional[float],
-    grid: Optional[int],
-    seed: int,
-    tolerance: float,
-    max_iterations: Optional[int],
-    bins: Optional[int],
-    method: str,
-    rescale: bool,
-    progress: Progress,
-    cycle: bool,
+    scene: Scene, loads: "tuple[float, float, int]", m: "_native.GivenMap", knobs: "_native.GfmdKnobs", progress: Progress, cycle: bool
 ) -> Result:
-    """The arguments of :func:`gfmd_cycle` and :func:`gfmd_sweep` checked and passed to the
-    library's walk over loads."""
-    f, t, n = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
-    m, knobs = _given_map(heights, size), _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale)
-    walk = _native.gfmd_cycle(_scene(scene), f, t, n, m, knobs, a.callback(progress), cycle)
+    """The library's walk over loads of :func:`gfmd_cycle` and :func:`gfmd_sweep` on their
+    checked arguments."""
+    walk = _native.gfmd_cycle(_scene(scene), *loads, m, knobs, a.callback(progress), cycle)
     _warn_resolution(walk, 4)
     return walk
 
