@@ -14,18 +14,20 @@ use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+/// Nothing where `size` is a length > 0, else the `InputError` naming `size` (`allowed`: the
+/// range in words).
+fn positive_size(py: Python<'_>, size: f64, allowed: &str) -> PyResult<()> {
+    if size.is_finite() && size > 0.0 {
+        return Ok(());
+    }
+    Err(errors::input(py, "size", &asperity::error::fmt_value(size), allowed))
+}
+
 /// The map of `heights` (shape (n_y, n_x), m) with x side `size_m` (m).
 pub fn map_of(py: Python<'_>, heights: &PyReadonlyArray2<'_, f64>, size_m: f64) -> PyResult<Surface> {
     let a = heights.as_array();
     let (ny, nx) = a.dim();
-    if !(size_m.is_finite() && size_m > 0.0) {
-        return Err(errors::input(
-            py,
-            "size",
-            &asperity::error::fmt_value(size_m),
-            "a length > 0 in metres (the map's x side)",
-        ));
-    }
+    positive_size(py, size_m, "a length > 0 in metres (the map's x side)")?;
     let values: Vec<f64> = a.iter().copied().collect();
     errors::detached(py, || Surface::new(nx, ny, size_m / nx as f64, values))
 }
@@ -57,14 +59,7 @@ pub fn read_surface<'py>(
         Some(u) => Some(Unit::parse(u).ok_or_else(|| errors::input(py, "height_unit", u, "m, mm, um, nm or pm"))?),
     };
     if let Some(l) = size {
-        if !(l.is_finite() && l > 0.0) {
-            return Err(errors::input(
-                py,
-                "size",
-                &asperity::error::fmt_value(l),
-                "a length > 0 in metres",
-            ));
-        }
+        positive_size(py, l, "a length > 0 in metres")?;
     }
     let opts = ReadOptions {
         size,
