@@ -4,13 +4,15 @@
 //! - [`Record`]: a frozen object whose attributes are a value's keys, each converted once when
 //!   the record is made: an object becomes a record, a list of objects a list of records, a
 //!   list of numbers a read-only float64 numpy array (null as NaN), anything else the plain
-//!   value (`r.x is r.x`);
+//!   value (`r.x is r.x`); the keys of its `rows` (or a PSD's `table`) as column arrays; a GFMD
+//!   result's map as `heights`, outside `to_dict()`; a Python subclass's `_parts` (its typed
+//!   parts) made once when it is made;
 //! - `record_methods!`: the dict-like methods every result class shares: `to_dict()` (a
 //!   fresh plain dict, JSON types only, unavailable values None), `keys()`, `r["key"]`,
-//!   `"key" in r`, iteration over the keys and a short `repr`.
+//!   `"key" in r`, iteration over the keys, a short `repr`, `Class(d)` and pickling.
 //!
-//! A non-finite number, which JSON writes as null, is None in `to_dict()` as in the CLI's
-//! output.
+//! Values cross with pythonize. A non-finite number, which JSON writes as null, is None in
+//! `to_dict()` as in the CLI's output.
 
 use crate::value;
 use numpy::PyArray1;
