@@ -26,68 +26,15 @@ warnings :class:`UnitWarning` and :class:`ResolutionWarning`. See docs/python.md
 
 from __future__ import annotations
 
-from . import _native
-from ._api import (
-    cycle,
-    evaluate,
-    gauge,
-    generate_surface,
-    gfmd,
-    gfmd_cycle,
-    gfmd_sweep,
-    psd,
-    pull_off,
-    read_surface,
-    sweep,
-    sweep_gamma,
-    sweep_thickness,
-)
-from ._errors import AsperityError, AsperityWarning, InputError, InternalError, NotConverged, ResolutionWarning, UnitWarning
-from ._results import (
-    CycleResult,
-    GfmdCycleResult,
-    GfmdResult,
-    GfmdSweepResult,
-    PsdResult,
-    PullOffResult,
-    Report,
-    Result,
-    SweepResult,
-)
+from . import _api, _errors, _native, _results
+from ._api import *  # noqa: F401,F403 (the functions, each in _api.__all__)
+from ._errors import *  # noqa: F401,F403 (the exceptions and warnings)
+from ._results import *  # noqa: F401,F403 (the result classes)
 from ._scene import Scene, Surface
 
 __version__: str = _native.__version__
 
-__all__ = [
-    "Scene",
-    "Surface",
-    "evaluate",
-    "sweep",
-    "sweep_thickness",
-    "sweep_gamma",
-    "cycle",
-    "pull_off",
-    "gfmd",
-    "gfmd_cycle",
-    "gfmd_sweep",
-    "psd",
-    "read_surface",
-    "generate_surface",
-    "gauge",
-    "Report",
-    "SweepResult",
-    "GfmdResult",
-    "PsdResult",
-    "CycleResult",
-    "PullOffResult",
-    "GfmdCycleResult",
-    "GfmdSweepResult",
-    "Result",
-    "AsperityError",
-    "InputError",
-    "NotConverged",
-    "InternalError",
-    "AsperityWarning",
-    "UnitWarning",
-    "ResolutionWarning",
-]
+__all__ = ["Scene", "Surface"]
+__all__ += _api.__all__
+__all__ += _results.__all__
+__all__ += _errors.__all__

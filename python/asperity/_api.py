@@ -23,6 +23,7 @@ from . import _native
 from ._errors import InputError, ResolutionWarning, UnitWarning
 from ._results import (
     CycleResult,
+    GaugeResult,
     GfmdCycleResult,
     GfmdResult,
     GfmdSweepResult,
@@ -40,6 +41,7 @@ __all__ = [
     "sweep_thickness",
     "sweep_gamma",
     "cycle",
+    "pull_off",
     "gfmd",
     "gfmd_cycle",
     "gfmd_sweep",
@@ -269,14 +271,13 @@ def gfmd(
     ``heights`` (the map). Raises :class:`NotConverged` when the relaxation misses its
     tolerance within ``max_iterations`` steps; Ctrl-C stops it within one step.
     """
-    arr, size_m = _given_map(heights, size)
-    knobs = _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale, progress)
-    d = _native.gfmd(_scene(scene), arr, size_m, *knobs)
-    _warn_resolution(d)
-    return GfmdResult(d)
+    m, knobs = _given_map(heights, size), _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale)
+    r = GfmdResult(_native.gfmd(_scene(scene), m, knobs, a.callback(progress)))
+    _warn_resolution(r)
+    return r
 
 
-def _given_map(heights: Any, size: Any) -> "tuple[Optional[np.ndarray], Optional[float]]":
+def _given_map(heights: Any, size: Any) -> "_native.GivenMap":
     """The map GFMD runs on (None: generated) with its x side in m."""
     if heights is not None:
         arr, size_m, _, _ = as_map(heights, size)
@@ -292,10 +293,9 @@ def _given_map(heights: Any, size: Any) -> "tuple[Optional[np.ndarray], Optional
 
 
 def _gfmd_knobs(
-    grid: Any, seed: Any, tolerance: Any, max_iterations: Any, bins: Any, method: Any, rescale: Any, progress: Any
-) -> "tuple[Any, ...]":
-    """GFMD's knobs checked: (grid, seed, tolerance, max_iterations, bins, method, rescale,
-    progress), in the order of the extension's arguments."""
+    grid: Any, seed: Any, tolerance: Any, max_iterations: Any, bins: Any, method: Any, rescale: Any
+) -> "_native.GfmdKnobs":
+    """GFMD's knobs checked, as the extension takes them."""
     return (
         _opt_count(grid, "grid", "gfmd.grid"),
         a.seed(seed),
@@ -304,17 +304,15 @@ def _gfmd_knobs(
         _opt_count(bins, "bins", "gfmd.bins"),
         a.choice(method, "method", ("auto", "pk", "fire")),
         a.flag(rescale, "rescale"),
-        a.callback(progress),
     )
 
 
-def _warn_resolution(d: Mapping[str, Any], stacklevel: int = 3) -> None:
+def _warn_resolution(res: Result, stacklevel: int = 3) -> None:
     """The CLI's note on an under-resolved attraction, as a :class:`ResolutionWarning`:
-    (γ_s/E*)·Δa/ρ² above the library's limit on the grid GFMD ran."""
-    r = d.get("adhesion_resolution")
-    red = d.get("reduction")
-    if r is None and isinstance(red, Mapping):
-        r = red.get("adhesion_resolution")
+    (γ_s/E*)·Δa/ρ² above the library's limit on the grid GFMD ran (a sweep's or cycle's
+    under ``reduction``, None for a given map)."""
+    red = res["reduction"] if "reduction" in res else None
+    r = res["adhesion_resolution"] if "adhesion_resolution" in res else (red or {}).get("adhesion_resolution")
     limit = float(_native.ADHESION_RESOLUTION_MAX)
     if isinstance(r, (int, float)) and r > limit:
         warnings.warn(
@@ -361,9 +359,9 @@ def gfmd_cycle(
     ``grid`` < 4, ...), :class:`NotConverged` when a load misses its tolerance; Ctrl-C stops it
     within one relaxation step.
     """
-    return GfmdCycleResult(
-        _gfmd_walk(scene, from_, to, points, heights, size, grid, seed, tolerance, max_iterations, bins, method, rescale, progress, True)
-    )
+    loads = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
+    m, knobs = _given_map(heights, size), _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale)
+    return GfmdCycleResult(_gfmd_walk(scene, loads, m, knobs, progress, True))
 
 
 def gfmd_sweep(
@@ -395,37 +393,19 @@ def gfmd_sweep(
     Raises :class:`InputError` before any work for bad input, :class:`NotConverged` when a load
     misses its tolerance; Ctrl-C stops it within one relaxation step.
     """
-    return GfmdSweepResult(
-        _gfmd_walk(scene, from_, to, points, heights, size, grid, seed, tolerance, max_iterations, bins, method, rescale, progress, False)
-    )
+    loads = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
+    m, knobs = _given_map(heights, size), _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale)
+    return GfmdSweepResult(_gfmd_walk(scene, loads, m, knobs, progress, False))
 
 
 def _gfmd_walk(
-    scene: Scene,
-    from_: float,
-    to: float,
-    points: int,
-    heights: Any,
-    size: Optional[float],
-    grid: Optional[int],
-    seed: int,
-    tolerance: float,
-    max_iterations: Optional[int],
-    bins: Optional[int],
-    method: str,
-    rescale: bool,
-    progress: Progress,
-    cycle: bool,
-) -> Dict[str, Any]:
-    """The arguments of :func:`gfmd_cycle` and :func:`gfmd_sweep` checked and passed to the
-    library's walk over loads."""
-    f, t, n = _number(from_, "from_"), _number(to, "to"), _count(points, "points")
-    arr, size_m = _given_map(heights, size)
-    knobs = _gfmd_knobs(grid, seed, tolerance, max_iterations, bins, method, rescale, progress)
-    g, sd, tol, mi, b, m, r, cb = knobs
-    d: Dict[str, Any] = _native.gfmd_cycle(_scene(scene), f, t, n, arr, size_m, g, sd, tol, mi, b, m, r, cb, cycle)
-    _warn_resolution(d, 4)
-    return d
+    scene: Scene, loads: "tuple[float, float, int]", m: "_native.GivenMap", knobs: "_native.GfmdKnobs", progress: Progress, cycle: bool
+) -> Result:
+    """The library's walk over loads of :func:`gfmd_cycle` and :func:`gfmd_sweep` on their
+    checked arguments."""
+    walk = _native.gfmd_cycle(_scene(scene), *loads, m, knobs, a.callback(progress), cycle)
+    _warn_resolution(walk, 4)
+    return walk
 
 
 #: Metres per unit of the ``height_unit`` and ``size_unit`` arguments (the readers' units).
@@ -498,9 +478,9 @@ def psd(
     per = topo_periodic if periodic is None else a.flag(periodic, "periodic")
     bpd = a.number(bins_per_decade, "bins_per_decade", "psd.bins_per_decade")
     arr = arr * hu if hu != 1.0 else arr
-    d = _native.psd(arr, size_m, bool(per), bpd, source)
-    _warn_units(d.get("rms_height_m"), d.get("rms_gradient"), f"heights in {height_unit}, size in {size_unit}")
-    return PsdResult(d)
+    r = PsdResult(_native.psd(arr, size_m, bool(per), bpd, source))
+    _warn_units(r.rms_height_m, r.rms_gradient, f"heights in {height_unit}, size in {size_unit}")
+    return r
 
 
 def read_surface(
@@ -624,7 +604,7 @@ def gauge(
     points: Optional[int] = None,
     observables: Optional[Sequence[str]] = None,
     progress: Progress = None,
-) -> Result:
+) -> GaugeResult:
     """Fits coefficients of the custom model [S-17] (``fit``: c1, c2, alpha, k_griffith, w0) to
     a reference (``asperity gauge``): library ``asperity::fit::fit`` (weighted least squares,
     Levenberg-Marquardt).
@@ -633,7 +613,7 @@ def gauge(
     ``to``, on the scene made adhesionless and semi-infinite), a CSV file, or a mapping of
     columns (``p``, ``a_r``, ``a_r_err``, ``mean_contact_stress``, ``mean_contact_stress_err``,
     ``mean_gap_rel``, ``mean_gap_rel_err``; arrays of one length, NaN for a missing value).
-    Returns a :class:`Result` with the keys of ``asperity gauge --format json`` (``params``
+    Returns a :class:`GaugeResult` with the keys of ``asperity gauge --format json`` (``params``
     with values and standard errors, ``correlation``, ``chi2``, ``model``, ``start``, ...).
     """
     names = ",".join(a.text_list(fit, "fit", "a coefficient name or a list of them (c1, c2, alpha, k_griffith, w0)"))
@@ -643,7 +623,7 @@ def gauge(
     n = _opt_count(points, "points", "sweep.points")
     cb = a.callback(progress)
     if isinstance(reference, Mapping):
-        return Result(_native.gauge(_scene(scene), names, "data", _csv(reference), f, t, n, obs, cb))
+        return GaugeResult(_native.gauge(_scene(scene), names, "data", _csv(reference), f, t, n, obs, cb))
     if not isinstance(reference, (str, os.PathLike)):
         raise a.refuse("reference", reference, '"eq18", a CSV file or a mapping of columns')
-    return Result(_native.gauge(_scene(scene), names, os.fspath(reference), None, f, t, n, obs, cb))
+    return GaugeResult(_native.gauge(_scene(scene), names, os.fspath(reference), None, f, t, n, obs, cb))

@@ -10,6 +10,11 @@ Progress = Optional[Callable[[Dict[str, Any]], Any]]
 
 FloatArray = npt.NDArray[np.float64]
 
+# GFMD's map (heights in m, rows along y; the x side in m; both None: generated) and knobs
+# (grid, seed, tolerance, max_iterations, bins, method, rescale)
+GivenMap = Tuple[Optional[FloatArray], Optional[float]]
+GfmdKnobs = Tuple[Optional[int], int, float, Optional[int], Optional[int], str, bool]
+
 class _Fields:
     """The dict-like methods every result class shares (python/src/record.rs)."""
 
@@ -38,26 +43,21 @@ class Resolution(_Fields):
     @property
     def a_r(self) -> FloatArray: ...
 
-@final
-class BranchReport(_Fields):
+class _Branch(_Fields):
+    """The fields a branch and a report share (a stub-only base)."""
+
     @property
     def branch(self) -> str: ...
-    @property
-    def stable(self) -> bool: ...
     @property
     def a_r(self) -> float: ...
     @property
     def sigma_a(self) -> float: ...
-    @property
-    def gamma_coarse(self) -> float: ...
     @property
     def elastic_energy(self) -> float: ...
     @property
     def residual(self) -> float: ...
     @property
     def mean_gap_rel(self) -> Optional[float]: ...
-    @property
-    def mean_gap_reversible_rel(self) -> Optional[float]: ...
     @property
     def mean_gap_lower_rel(self) -> Optional[float]: ...
     @property
@@ -68,11 +68,18 @@ class BranchReport(_Fields):
     def contact_load(self) -> Optional[float]: ...
 
 @final
-class Report(_Fields):
+class BranchReport(_Branch):
+    @property
+    def stable(self) -> bool: ...
+    @property
+    def gamma_coarse(self) -> float: ...
+    @property
+    def mean_gap_reversible_rel(self) -> Optional[float]: ...
+
+@final
+class Report(_Branch):
     @property
     def preset(self) -> str: ...
-    @property
-    def a_r(self) -> float: ...
     @property
     def mean_contact_stress(self) -> float: ...
     @property
@@ -90,33 +97,15 @@ class Report(_Fields):
     @property
     def mean_gap(self) -> Optional[float]: ...
     @property
-    def mean_gap_rel(self) -> Optional[float]: ...
-    @property
-    def mean_gap_lower_rel(self) -> Optional[float]: ...
-    @property
-    def mean_gap_upper_rel(self) -> Optional[float]: ...
-    @property
-    def mean_gap_error(self) -> Optional[float]: ...
-    @property
-    def contact_load(self) -> Optional[float]: ...
-    @property
     def mean_gap_about(self) -> str: ...
     @property
     def mean_gap_note(self) -> Optional[str]: ...
-    @property
-    def elastic_energy(self) -> float: ...
-    @property
-    def sigma_a(self) -> float: ...
     @property
     def tensile_area(self) -> float: ...
     @property
     def detached_fraction(self) -> float: ...
     @property
     def iterations(self) -> int: ...
-    @property
-    def residual(self) -> float: ...
-    @property
-    def branch(self) -> str: ...
     @property
     def a_r_unloading(self) -> Optional[float]: ...
     @property
@@ -172,14 +161,6 @@ class SceneCore:
 
 def scene_from_preset(name_or_path: str) -> SceneCore: ...
 def scene_new(fields: Dict[str, Any]) -> SceneCore: ...
-def options_check(
-    sigma_points: int = ...,
-    sigma_max: Optional[float] = ...,
-    rtol: Optional[float] = ...,
-    adhesion_steps: Optional[float] = ...,
-    adhesion_points: Optional[float] = ...,
-    adhesion_tol: Optional[float] = ...,
-) -> None: ...
 def evaluate(
     scene: SceneCore,
     sigma_points: int = ...,
@@ -195,36 +176,10 @@ def sweep(
 ) -> Record: ...
 def cycle(scene: SceneCore, from_: float, to: float, points: int = ..., progress: Progress = ...) -> Record: ...
 def pull_off(scene: SceneCore, progress: Progress = ...) -> Record: ...
-def gfmd(
-    scene: SceneCore,
-    heights: Optional[npt.NDArray[np.float64]] = ...,
-    size_m: Optional[float] = ...,
-    grid: Optional[int] = ...,
-    seed: int = ...,
-    tolerance: float = ...,
-    max_iterations: Optional[int] = ...,
-    bins: Optional[int] = ...,
-    method: str = ...,
-    rescale: bool = ...,
-    progress: Progress = ...,
-) -> Dict[str, Any]: ...
+def gfmd(scene: SceneCore, map: GivenMap, knobs: GfmdKnobs, progress: Progress) -> Record: ...
 def gfmd_cycle(
-    scene: SceneCore,
-    from_: float,
-    to: float,
-    points: int = ...,
-    heights: Optional[npt.NDArray[np.float64]] = ...,
-    size_m: Optional[float] = ...,
-    grid: Optional[int] = ...,
-    seed: int = ...,
-    tolerance: float = ...,
-    max_iterations: Optional[int] = ...,
-    bins: Optional[int] = ...,
-    method: str = ...,
-    rescale: bool = ...,
-    progress: Progress = ...,
-    cycle: bool = ...,
-) -> Dict[str, Any]: ...
+    scene: SceneCore, from_: float, to: float, points: int, map: GivenMap, knobs: GfmdKnobs, progress: Progress, cycle: bool
+) -> Record: ...
 def read_surface(path: Union[str, Any], size: Optional[float] = ..., height_unit: Optional[str] = ...) -> Dict[str, Any]: ...
 def psd(
     heights: npt.NDArray[np.float64],
@@ -232,7 +187,7 @@ def psd(
     periodic: bool = ...,
     bins_per_decade: float = ...,
     source: str = ...,
-) -> Dict[str, Any]: ...
+) -> Record: ...
 def _panic(where_: str) -> None: ...
 def _sleep(seconds: float, progress: Progress = ...) -> float: ...
 def gauge(
@@ -245,7 +200,7 @@ def gauge(
     points: Optional[int] = ...,
     observables: Optional[List[str]] = ...,
     progress: Progress = ...,
-) -> Dict[str, Any]: ...
+) -> Record: ...
 def generate_surface(
     grid: int,
     size_m: float,

@@ -52,33 +52,11 @@ pub fn to_py(py: Python<'_>, e: Error) -> PyErr {
     match &e {
         Error::Invalid { field, value, allowed } => {
             let name = python_name(field);
-            let allowed = allowed.describe(&name);
-            raise(
-                py,
-                "InputError",
-                format!("invalid {name} = {value}: allowed {allowed}"),
-                &[
-                    ("field", Some(name.clone())),
-                    ("key", Some(field.key().to_string())),
-                    ("value", Some(value.clone())),
-                    ("allowed", Some(allowed)),
-                ],
-            )
+            invalid(py, &name, field.key(), value, &allowed.describe(&name))
         }
         Error::InvalidField { field, value, allowed } => {
             let name = field.trim_start_matches('-').replace('-', "_");
-            let allowed = allowed.describe(&name);
-            raise(
-                py,
-                "InputError",
-                format!("invalid {name} = {value}: allowed {allowed}"),
-                &[
-                    ("field", Some(name.clone())),
-                    ("key", Some(field.clone())),
-                    ("value", Some(value.clone())),
-                    ("allowed", Some(allowed)),
-                ],
-            )
+            invalid(py, &name, field, value, &allowed.describe(&name))
         }
         Error::Unsupported(_) => raise(py, "InputError", e.to_string(), &[("field", Some("model".into()))]),
         Error::Preset { source, .. } => raise(
@@ -100,19 +78,25 @@ pub fn to_py(py: Python<'_>, e: Error) -> PyErr {
     }
 }
 
-/// An `InputError` about a Python argument that the library never sees (a type, a shape).
-pub fn input(py: Python<'_>, field: &str, value: &str, allowed: &str) -> PyErr {
+/// An `InputError` about the argument `name` (the library's key `key`): its value and the
+/// allowed range in words.
+fn invalid(py: Python<'_>, name: &str, key: &str, value: &str, allowed: &str) -> PyErr {
     raise(
         py,
         "InputError",
-        format!("invalid {field} = {value}: allowed {allowed}"),
+        format!("invalid {name} = {value}: allowed {allowed}"),
         &[
-            ("field", Some(field.to_string())),
-            ("key", Some(field.to_string())),
+            ("field", Some(name.to_string())),
+            ("key", Some(key.to_string())),
             ("value", Some(value.to_string())),
             ("allowed", Some(allowed.to_string())),
         ],
     )
+}
+
+/// An `InputError` about a Python argument that the library never sees (a type, a shape).
+pub fn input(py: Python<'_>, field: &str, value: &str, allowed: &str) -> PyErr {
+    invalid(py, field, field, value, allowed)
 }
 
 /// The `InternalError` of a Rust panic (its payload's message).

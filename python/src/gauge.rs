@@ -5,15 +5,15 @@
 //! mean_contact_stress_err, mean_gap_rel, mean_gap_rel_err) or the same CSV as text.
 
 use crate::errors;
+use crate::record::Record;
 use crate::scene::SceneCore;
-use crate::value;
 use crate::work;
 use asperity::fit::{self, Param};
 use asperity::report;
 use pyo3::prelude::*;
 
-/// `gauge(scene, fit, reference, ...)`: see the module docs; the keys of `asperity gauge
-/// --format json` (`reference`, `gfmd` (None), the fit's fields, `saved_preset` (None)).
+/// `gauge(scene, fit, reference, ...)`: see the module docs; a record of `asperity gauge
+/// --format json`'s object (`reference`, `gfmd` (None), the fit's fields, `saved_preset` (None)).
 #[pyfunction]
 #[pyo3(name = "gauge", signature = (scene, fit, reference = "eq18".to_string(), reference_csv = None, from_ = None, to = None, points = None, observables = None, progress = None))]
 #[allow(clippy::too_many_arguments)]
@@ -28,7 +28,7 @@ pub fn run_gauge<'py>(
     points: Option<usize>,
     observables: Option<Vec<String>>,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyAny>> {
+) -> PyResult<Record> {
     // without the GIL: a reference file is read and the reference scene resolved here
     let (r, sc) = errors::detached(py, || {
         let loads = (from_, to, points);
@@ -48,5 +48,5 @@ pub fn run_gauge<'py>(
         fit,
         saved_preset: None,
     };
-    value::ser(py, &out)
+    Record::of(py, &out)
 }

@@ -6,30 +6,30 @@
 //! ([`crate::work`]).
 
 use crate::errors;
+use crate::record::Record;
 use crate::scene::SceneCore;
-use crate::surface::{map_of, with_heights};
-use crate::value;
+use crate::surface::{map_of, on_map};
 use crate::work::{self, Info};
 use asperity::gfmd::{self, GfmdOptions, GfmdSetup, Method, Progress, Stage};
 use asperity::report::gfmd::GfmdSpec;
 use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
 
+/// GFMD's knobs as the Python side checked them: (grid, seed, tolerance, max_iterations,
+/// bins, method, rescale).
+#[derive(FromPyObject)]
+pub struct Knobs(Option<i64>, u64, f64, Option<usize>, Option<usize>, String, bool);
+
+/// The map GFMD runs on: (heights in m, rows along y; the x side in m), or none (generated).
+pub type GivenMap<'py> = (Option<PyReadonlyArray2<'py, f64>>, Option<f64>);
+
 /// The run's setup and solver options from the arguments of `gfmd` and `gfmd_cycle`, every one
 /// checked before any work.
-#[allow(clippy::too_many_arguments)]
 pub fn setup<'py>(
     py: Python<'py>,
     scene: &SceneCore,
-    heights: Option<PyReadonlyArray2<'py, f64>>,
-    size_m: Option<f64>,
-    grid: Option<i64>,
-    seed: u64,
-    tolerance: f64,
-    max_iterations: Option<usize>,
-    bins: Option<usize>,
-    method: &str,
-    rescale: bool,
+    (heights, size_m): GivenMap<'py>,
+    Knobs(grid, seed, tolerance, max_iterations, bins, method, rescale): Knobs,
 ) -> PyResult<(GfmdSetup, GfmdOptions)> {
     let surface = match (&heights, size_m) {
         (Some(h), Some(l)) => Some(map_of(py, h, l)?),
@@ -71,42 +71,22 @@ pub fn info(p: Progress, total: usize) -> Info {
     }
 }
 
-/// `gfmd(scene, heights=None, size_m=None, grid=None, seed=1, ...)`: see the module docs.
+/// `gfmd(scene, map, knobs, progress)`: see the module docs.
 #[pyfunction]
-#[pyo3(name = "gfmd", signature = (scene, heights = None, size_m = None, grid = None, seed = 1, tolerance = 1e-8, max_iterations = None, bins = None, method = "auto", rescale = true, progress = None))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(name = "gfmd")]
 pub fn run_gfmd<'py>(
     py: Python<'py>,
     scene: &SceneCore,
-    heights: Option<PyReadonlyArray2<'py, f64>>,
-    size_m: Option<f64>,
-    grid: Option<i64>,
-    seed: u64,
-    tolerance: f64,
-    max_iterations: Option<usize>,
-    bins: Option<usize>,
-    method: &str,
-    rescale: bool,
+    map: GivenMap<'py>,
+    knobs: Knobs,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let (setup, opts) = setup(
-        py,
-        scene,
-        heights,
-        size_m,
-        grid,
-        seed,
-        tolerance,
-        max_iterations,
-        bins,
-        method,
-        rescale,
-    )?;
+) -> PyResult<Record> {
+    let (setup, opts) = setup(py, scene, map, knobs)?;
     let total = opts.max_iterations;
     let mut r = work::run(py, progress.as_ref(), move |ctx| {
         let mut report = |p: Progress| ctx.report(info(p, total));
         gfmd::run(&setup, &opts, &mut report, &ctx.cancel)
     })?;
     let map = r.surface.take();
-    with_heights(py, value::ser(py, &r)?, map)
+    on_map(py, &r, map)
 }

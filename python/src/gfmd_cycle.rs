@@ -13,22 +13,21 @@
 //! way up) when B < A.
 
 use crate::errors;
-use crate::gfmd::{info, setup};
+use crate::gfmd::{info, setup, GivenMap, Knobs};
+use crate::record::Record;
 use crate::scene::SceneCore;
-use crate::surface::with_heights;
-use crate::value;
+use crate::surface::on_map;
 use crate::work;
 use asperity::gfmd::cycle::{run_cycle, CycleSpec};
 use asperity::gfmd::sweep::run_sweep;
 use asperity::gfmd::Progress;
 use asperity::theory::sweep::SweepSpec;
-use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
 
-/// `gfmd_cycle(scene, from_, to, points=8, heights=None, size_m=None, grid=None, seed=1, ...)`:
-/// see the module docs.
+/// `gfmd_cycle(scene, from_, to, points, map, knobs, progress, cycle)`: see the
+/// module docs.
 #[pyfunction]
-#[pyo3(name = "gfmd_cycle", signature = (scene, from_, to, points = 8, heights = None, size_m = None, grid = None, seed = 1, tolerance = 1e-8, max_iterations = None, bins = None, method = "auto", rescale = true, progress = None, cycle = true))]
+#[pyo3(name = "gfmd_cycle")]
 #[allow(clippy::too_many_arguments)]
 pub fn run_gfmd_cycle<'py>(
     py: Python<'py>,
@@ -36,18 +35,11 @@ pub fn run_gfmd_cycle<'py>(
     from_: f64,
     to: f64,
     points: usize,
-    heights: Option<PyReadonlyArray2<'py, f64>>,
-    size_m: Option<f64>,
-    grid: Option<i64>,
-    seed: u64,
-    tolerance: f64,
-    max_iterations: Option<usize>,
-    bins: Option<usize>,
-    method: &str,
-    rescale: bool,
+    map: GivenMap<'py>,
+    knobs: Knobs,
     progress: Option<Bound<'py, PyAny>>,
     cycle: bool,
-) -> PyResult<Bound<'py, PyAny>> {
+) -> PyResult<Record> {
     let spec = CycleSpec {
         from: from_,
         to,
@@ -55,19 +47,7 @@ pub fn run_gfmd_cycle<'py>(
         cycle,
     };
     errors::guard(py, || spec.validate())?;
-    let (setup, opts) = setup(
-        py,
-        scene,
-        heights,
-        size_m,
-        grid,
-        seed,
-        tolerance,
-        max_iterations,
-        bins,
-        method,
-        rescale,
-    )?;
+    let (setup, opts) = setup(py, scene, map, knobs)?;
     let total = opts.max_iterations;
     if !cycle && to >= from_ {
         let rising = SweepSpec {
@@ -80,12 +60,12 @@ pub fn run_gfmd_cycle<'py>(
             run_sweep(&setup, &rising, &opts, &mut report, &ctx.cancel)
         })?;
         let map = sw.surface.take();
-        return with_heights(py, value::ser(py, &sw)?, map);
+        return on_map(py, &sw, map);
     }
     let mut c = work::run(py, progress.as_ref(), move |ctx| {
         let mut report = |_: usize, p: Progress| ctx.report(info(p, total));
         run_cycle(&setup, &spec, &opts, &mut report, &ctx.cancel)
     })?;
     let map = c.surface.take();
-    with_heights(py, value::ser(py, &c)?, map)
+    on_map(py, &c, map)
 }

@@ -1,8 +1,8 @@
 //! `asperity._native`: the extension module of the `asperity` Python package (PyO3, abi3 for
 //! CPython >= 3.9). A thin layer on the library: every function here calls the library's own
 //! (the same calls as the `asperity` binary's commands) and hands its result to Python as a
-//! frozen result class converted in Rust (`Report`) or as dicts, lists and numpy arrays, each
-//! with the keys of the CLI's JSON. The documented API (classes `Scene`, `SweepResult`, ...,
+//! frozen result class converted in Rust: a `Report`, or a `Record` of the library's report
+//! (GFMD's, a PSD's, a gauge's, a sweep's), each with the keys of the CLI's JSON. The documented API (classes `Scene`, `SweepResult`, ...,
 //! docstrings with units and \[S\] equation numbers) is the pure-Python package in
 //! `python/asperity/`; this module is its engine.
 //!
@@ -19,7 +19,7 @@
 //! - [`report`]: `Report`, `evaluate`'s result, a frozen class converted from the library's
 //!   report; [`record`]: result parts read as attributes, built once;
 //! - [`errors`]: the library's typed errors as Python exceptions; [`value`]: serde values as
-//!   Python objects.
+//!   Python objects (pythonize).
 
 pub mod args;
 pub mod errors;
@@ -86,7 +86,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(scene::scene_from_preset, m)?)?;
     m.add_function(wrap_pyfunction!(scene::scene_new, m)?)?;
     m.add_function(wrap_pyfunction!(theory::evaluate, m)?)?;
-    m.add_function(wrap_pyfunction!(theory::options_check, m)?)?;
     m.add_function(wrap_pyfunction!(theory::run_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(theory::run_cycle, m)?)?;
     m.add_function(wrap_pyfunction!(theory::run_pull_off, m)?)?;

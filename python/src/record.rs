@@ -4,19 +4,21 @@
 //! - [`Record`]: a frozen object whose attributes are a value's keys, each converted once when
 //!   the record is made: an object becomes a record, a list of objects a list of records, a
 //!   list of numbers a read-only float64 numpy array (null as NaN), anything else the plain
-//!   value (`r.x is r.x`);
+//!   value (`r.x is r.x`); the keys of its `rows` (or a PSD's `table`) as column arrays; a GFMD
+//!   result's map as `heights`, outside `to_dict()`; a Python subclass's `_parts` (its typed
+//!   parts) made once when it is made;
 //! - `record_methods!`: the dict-like methods every result class shares: `to_dict()` (a
 //!   fresh plain dict, JSON types only, unavailable values None), `keys()`, `r["key"]`,
-//!   `"key" in r`, iteration over the keys and a short `repr`.
+//!   `"key" in r`, iteration over the keys, a short `repr`, `Class(d)` and pickling.
 //!
-//! A non-finite number, which JSON writes as null, is None in `to_dict()` as in the CLI's
-//! output.
+//! Values cross with pythonize. A non-finite number, which JSON writes as null, is None in
+//! `to_dict()` as in the CLI's output.
 
 use crate::value;
 use numpy::PyArray1;
 use pyo3::exceptions::{PyAttributeError, PyKeyError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyDict, PyList, PyType};
 use serde_json::Value;
 use std::sync::Arc;
 
@@ -104,33 +106,10 @@ pub fn repr(obj: &Bound<'_, PyAny>, data: &Value, shown: Option<&[&str]>) -> PyR
 /// dicts with string keys) as a JSON value, every float exactly; a non-finite float as null,
 /// as `to_dict()` has it.
 fn plain(source: &Bound<'_, PyAny>) -> PyResult<Value> {
-    use pyo3::types::{PyBool, PyFloat, PyInt, PyString, PyTuple};
-    Ok(if source.is_none() {
-        Value::Null
-    } else if let Ok(b) = source.cast::<PyBool>() {
-        Value::Bool(b.is_true())
-    } else if source.is_instance_of::<PyInt>() {
-        match source.extract::<i64>() {
-            Ok(i) => Value::from(i),
-            Err(_) => Value::from(source.extract::<u64>()?),
-        }
-    } else if let Ok(f) = source.cast::<PyFloat>() {
-        serde_json::Number::from_f64(f.value()).map_or(Value::Null, Value::Number)
-    } else if let Ok(t) = source.cast::<PyString>() {
-        Value::String(t.extract::<String>()?)
-    } else if let Ok(d) = source.cast::<PyDict>() {
-        let mut m = serde_json::Map::new();
-        for (k, v) in d.iter() {
-            m.insert(k.extract::<String>()?, plain(&v)?);
-        }
-        Value::Object(m)
-    } else if source.is_instance_of::<PyList>() || source.is_instance_of::<PyTuple>() {
-        Value::Array(source.try_iter()?.map(|x| plain(&x?)).collect::<PyResult<_>>()?)
-    } else {
-        return Err(PyValueError::new_err(format!(
-            "not a plain value (None, bool, int, float, str, list or dict): {}",
-            source.get_type().name()?
-        )));
+    pythonize::depythonize(source).map_err(|e| {
+        PyValueError::new_err(format!(
+            "not a plain value (None, bool, int, float, str, list or dict): {e}"
+        ))
     })
 }
 
@@ -148,6 +127,14 @@ pub trait FromValue: Sized {
     /// `ValueError` for anything JSON cannot hold.
     fn from_source(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Self> {
         Self::from_value(py, Arc::new(plain(source)?))
+    }
+
+    /// `cls(source)`: the result of `source` for the class `cls` (a Python subclass included).
+    ///
+    /// # Errors
+    /// As [`FromValue::from_source`].
+    fn from_class(cls: &Bound<'_, PyType>, source: &Bound<'_, PyAny>) -> PyResult<Self> {
+        Self::from_source(cls.py(), source)
     }
 }
 
@@ -188,14 +175,16 @@ macro_rules! record_methods {
             /// `Class(d)`: the result of a plain dict `d` with the keys of `to_dict()` (how a
             /// pickled result returns).
             #[new]
-            fn py_new(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Self> {
-                <Self as $crate::record::FromValue>::from_source(py, source)
+            #[classmethod]
+            fn py_new(cls: &Bound<'_, pyo3::types::PyType>, source: &Bound<'_, PyAny>) -> PyResult<Self> {
+                <Self as $crate::record::FromValue>::from_class(cls, source)
             }
 
             fn __reduce__<'py>(
                 slf: &Bound<'py, Self>,
             ) -> PyResult<(Bound<'py, pyo3::types::PyType>, (Bound<'py, PyAny>,))> {
-                Ok((slf.get_type(), ($crate::value::to_py(slf.py(), &slf.get().data)?,)))
+                let d = $crate::value::to_py(slf.py(), &slf.get().data)?;
+                Ok((slf.get_type(), ($crate::record::with_map(slf.as_any(), d)?,)))
             }
 
             $($extra)*
@@ -241,11 +230,17 @@ fn swept(over: Option<&Value>, rows: &[Value]) -> Option<Vec<f64>> {
     Some(rows.iter().map(|r| r[key].as_f64().unwrap_or(f64::INFINITY)).collect())
 }
 
+/// The attribute of a GFMD result that holds the map it ran on (m, rows along y): not a key
+/// of its value (the CLI's JSON has no map), kept through pickling.
+const MAP: &str = "heights";
+
 /// A result part read as attributes: the keys of a library value, each converted once (module
-/// docs), and where it has `rows` (a list of objects) each row key not among its own as a
-/// column array (`res.a_r`), for a sweep also `values` (the swept knob's); `to_dict()` gives
-/// the plain dict. `Record(d)` makes one from a
-/// plain dict (or shares another's), so that a Python subclass (`SweepResult`) wraps one.
+/// docs), and where it has `rows` or `table` (a list of objects) each of their keys not among
+/// its own as a column array (`res.a_r`, `psd.q`), for a sweep also `values` (the swept
+/// knob's); `to_dict()` gives the plain dict. `Record(d)` makes one from a plain dict (or
+/// shares another's), so that a Python subclass (`SweepResult`) wraps one; a subclass's
+/// `_parts` (name → function of the attribute, None where absent) makes its typed parts once,
+/// when it is made (`CycleResult` of `cycle`, a tuple of a bracket).
 #[pyclass(module = "asperity._native", frozen, subclass, dict)]
 pub struct Record {
     /// The attributes by key, built once.
@@ -262,14 +257,16 @@ impl Record {
             for (k, v) in m {
                 attrs.set_item(k, attr(py, v)?)?;
             }
-            if let Some(Value::Array(rows)) = m.get("rows") {
-                if let Some(Value::Object(first)) = rows.first() {
-                    for k in first.keys().filter(|k| !m.contains_key(*k)) {
-                        attrs.set_item(k, column(py, rows, k)?)?;
+            for list in ["rows", "table"] {
+                if let Some(Value::Array(rows)) = m.get(list) {
+                    if let Some(Value::Object(first)) = rows.first() {
+                        for k in first.keys().filter(|k| !m.contains_key(*k)) {
+                            attrs.set_item(k, column(py, rows, k)?)?;
+                        }
                     }
-                }
-                if let Some(values) = swept(m.get("over"), rows) {
-                    attrs.set_item("values", array(py, values)?)?;
+                    if let Some(values) = swept(m.get("over"), rows) {
+                        attrs.set_item("values", array(py, values)?)?;
+                    }
                 }
             }
         }
@@ -278,6 +275,32 @@ impl Record {
             data,
         })
     }
+
+    /// The record of a library result (its serde value, the CLI's JSON object).
+    pub fn of<T: serde::Serialize>(py: Python<'_>, x: &T) -> PyResult<Record> {
+        Record::new(py, Arc::new(value::json(x)?))
+    }
+
+    /// The record of a GFMD result with `heights`, the map it ran on (an array), where it
+    /// has one.
+    pub fn on_map<T: serde::Serialize>(py: Python<'_>, x: &T, heights: Option<Bound<'_, PyAny>>) -> PyResult<Record> {
+        let r = Record::of(py, x)?;
+        if let Some(h) = heights {
+            r.attrs.bind(py).set_item(MAP, h)?;
+        }
+        Ok(r)
+    }
+}
+
+/// `d`, the plain dict of the result `obj`, with the map of a record that has one (what
+/// `Record(d)` takes back).
+pub fn with_map<'py>(obj: &Bound<'py, PyAny>, d: Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    if let Ok(r) = obj.cast::<Record>() {
+        if let Some(m) = r.get().attrs.bind(obj.py()).get_item(MAP)? {
+            d.set_item(MAP, m)?;
+        }
+    }
+    Ok(d)
 }
 
 impl FromValue for Record {
@@ -286,7 +309,7 @@ impl FromValue for Record {
     }
 
     /// A record sharing the record `source` (how a Python subclass wraps one), else the
-    /// record of a plain dict.
+    /// record of a plain dict (with the map under `heights`, as pickling passes it).
     fn from_source(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Record> {
         if let Ok(r) = source.cast::<Record>() {
             let r = r.get();
@@ -295,7 +318,36 @@ impl FromValue for Record {
                 data: Arc::clone(&r.data),
             });
         }
-        Record::new(py, Arc::new(plain(source)?))
+        let map = match source.cast::<PyDict>() {
+            Ok(d) => d.get_item(MAP)?.filter(|m| !m.is_instance_of::<PyList>()),
+            Err(_) => None,
+        };
+        let Some(map) = map else {
+            return Record::new(py, Arc::new(plain(source)?));
+        };
+        let rest = source.cast::<PyDict>()?.copy()?;
+        rest.del_item(MAP)?;
+        let r = Record::new(py, Arc::new(plain(rest.as_any())?))?;
+        r.attrs.bind(py).set_item(MAP, map)?;
+        Ok(r)
+    }
+
+    /// The record of `source` with the class's `_parts` made.
+    fn from_class(cls: &Bound<'_, PyType>, source: &Bound<'_, PyAny>) -> PyResult<Record> {
+        let py = cls.py();
+        let r = Record::from_source(py, source)?;
+        let Ok(parts) = cls.getattr("_parts") else {
+            return Ok(r);
+        };
+        let attrs = r.attrs.bind(py).copy()?;
+        for (k, make) in parts.cast::<PyDict>()?.iter() {
+            let v = attrs.get_item(&k)?.unwrap_or_else(|| py.None().into_bound(py));
+            attrs.set_item(k, make.call1((v,))?)?;
+        }
+        Ok(Record {
+            attrs: Arc::new(attrs.unbind()),
+            data: r.data,
+        })
     }
 }
 

@@ -41,53 +41,54 @@ fn part(data: &Value, key: &str) -> Arc<Value> {
     Arc::new(data.get(key).cloned().unwrap_or(Value::Null))
 }
 
-/// Pr(σ*), the distribution of contact stresses: ∫ density dσ* = a_r [S-9, S-14].
-#[pyclass(module = "asperity._native", frozen)]
-pub struct Pr {
-    /// σ* (ascending; from −σ_a* with adhesion).
-    #[pyo3(get)]
-    sigma: Py<PyArray1<f64>>,
-    /// Pr(σ*).
-    #[pyo3(get)]
-    density: Py<PyArray1<f64>>,
-    data: Arc<Value>,
+/// A frozen class of two arrays (read from the keys of their names).
+macro_rules! arrays_class {
+    ($(#[$doc:meta])* $ty:ident { $(#[$da:meta])* $a:ident, $(#[$db:meta])* $b:ident }) => {
+        $(#[$doc])*
+        #[pyclass(module = "asperity._native", frozen)]
+        pub struct $ty {
+            $(#[$da])*
+            #[pyo3(get)]
+            $a: Py<PyArray1<f64>>,
+            $(#[$db])*
+            #[pyo3(get)]
+            $b: Py<PyArray1<f64>>,
+            data: Arc<Value>,
+        }
+
+        record_methods!($ty, None, {});
+
+        impl FromValue for $ty {
+            fn from_value(py: Python<'_>, data: Arc<Value>) -> PyResult<$ty> {
+                Ok($ty {
+                    $a: floats(py, &data, stringify!($a))?,
+                    $b: floats(py, &data, stringify!($b))?,
+                    data,
+                })
+            }
+        }
+    };
 }
 
-record_methods!(Pr, None, {});
-
-impl FromValue for Pr {
-    fn from_value(py: Python<'_>, data: Arc<Value>) -> PyResult<Pr> {
-        Ok(Pr {
-            sigma: floats(py, &data, "sigma")?,
-            density: floats(py, &data, "density")?,
-            data,
-        })
+arrays_class!(
+    /// Pr(σ*), the distribution of contact stresses: ∫ density dσ* = a_r [S-9, S-14].
+    Pr {
+        /// σ* (ascending; from −σ_a* with adhesion).
+        sigma,
+        /// Pr(σ*).
+        density
     }
-}
+);
 
-/// a_r(q) along the resolution q_L → q_s.
-#[pyclass(module = "asperity._native", frozen)]
-pub struct Resolution {
-    /// q (1/m).
-    #[pyo3(get)]
-    q: Py<PyArray1<f64>>,
-    /// a_r(q).
-    #[pyo3(get)]
-    a_r: Py<PyArray1<f64>>,
-    data: Arc<Value>,
-}
-
-record_methods!(Resolution, None, {});
-
-impl FromValue for Resolution {
-    fn from_value(py: Python<'_>, data: Arc<Value>) -> PyResult<Resolution> {
-        Ok(Resolution {
-            q: floats(py, &data, "q")?,
-            a_r: floats(py, &data, "a_r")?,
-            data,
-        })
+arrays_class!(
+    /// a_r(q) along the resolution q_L → q_s.
+    Resolution {
+        /// q (1/m).
+        q,
+        /// a_r(q).
+        a_r
     }
-}
+);
 
 /// One branch of the adhesive solution at the load, with its mean gap (docs/physics.md §5.1).
 #[pyclass(module = "asperity._native", frozen)]

@@ -1,11 +1,11 @@
 //! Height maps in and out: a numpy array (rows along y, heights in m) and the x side L in m
 //! as a library [`Surface`] (Δa = L/n_x, square pixels), `read_surface` (the library's
 //! readers: .txt .asc .dat .xyz .npy .gsf) and `psd` (the radial average of the map's PSD
-//! [S-2] with h_rms, ḡ, the rms curvature and the self-affine fit, the keys of
-//! `asperity psd --format json`).
+//! [S-2] with h_rms, ḡ, the rms curvature and the self-affine fit, a record of
+//! `asperity psd --format json`'s object).
 
 use crate::errors;
-use crate::value;
+use crate::record::Record;
 use asperity::report;
 use asperity::surface::heightmap::Surface;
 use asperity::surface::psd::PsdOptions;
@@ -14,29 +14,28 @@ use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+/// Nothing where `size` is a length > 0, else the `InputError` naming `size` (`allowed`: the
+/// range in words).
+fn positive_size(py: Python<'_>, size: f64, allowed: &str) -> PyResult<()> {
+    if size.is_finite() && size > 0.0 {
+        return Ok(());
+    }
+    Err(errors::input(py, "size", &asperity::error::fmt_value(size), allowed))
+}
+
 /// The map of `heights` (shape (n_y, n_x), m) with x side `size_m` (m).
 pub fn map_of(py: Python<'_>, heights: &PyReadonlyArray2<'_, f64>, size_m: f64) -> PyResult<Surface> {
     let a = heights.as_array();
     let (ny, nx) = a.dim();
-    if !(size_m.is_finite() && size_m > 0.0) {
-        return Err(errors::input(
-            py,
-            "size",
-            &asperity::error::fmt_value(size_m),
-            "a length > 0 in metres (the map's x side)",
-        ));
-    }
+    positive_size(py, size_m, "a length > 0 in metres (the map's x side)")?;
     let values: Vec<f64> = a.iter().copied().collect();
     errors::detached(py, || Surface::new(nx, ny, size_m / nx as f64, values))
 }
 
-/// A result's dict with `heights`, the map a GFMD run walked on (m, rows along y), where it
-/// has one.
-pub fn with_heights<'py>(py: Python<'py>, d: Bound<'py, PyAny>, map: Option<Surface>) -> PyResult<Bound<'py, PyAny>> {
-    if let Some(m) = map {
-        d.set_item("heights", heights_of(py, &m)?)?;
-    }
-    Ok(d)
+/// The record of a GFMD result with `heights`, the map it walked on (m, rows along y), where
+/// it has one.
+pub fn on_map<T: serde::Serialize>(py: Python<'_>, x: &T, map: Option<Surface>) -> PyResult<Record> {
+    Record::on_map(py, x, map.map(|m| heights_of(py, &m)).transpose()?.map(Bound::into_any))
 }
 
 /// The heights of `s` as a numpy array of shape (n_y, n_x).
@@ -60,14 +59,7 @@ pub fn read_surface<'py>(
         Some(u) => Some(Unit::parse(u).ok_or_else(|| errors::input(py, "height_unit", u, "m, mm, um, nm or pm"))?),
     };
     if let Some(l) = size {
-        if !(l.is_finite() && l > 0.0) {
-            return Err(errors::input(
-                py,
-                "size",
-                &asperity::error::fmt_value(l),
-                "a length > 0 in metres",
-            ));
-        }
+        positive_size(py, l, "a length > 0 in metres")?;
     }
     let opts = ReadOptions {
         size,
@@ -92,12 +84,12 @@ pub fn map_psd<'py>(
     periodic: bool,
     bins_per_decade: f64,
     source: String,
-) -> PyResult<Bound<'py, PyAny>> {
+) -> PyResult<Record> {
     let s = map_of(py, &heights, size_m)?;
     let opts = PsdOptions {
         periodic,
         bins_per_decade,
     };
     let r = errors::detached(py, || report::psd::psd(&source, &s, &opts))?;
-    value::ser(py, &r)
+    Record::of(py, &r)
 }

@@ -29,48 +29,6 @@ use asperity::theory::sweep::SweepSpec;
 use pyo3::prelude::*;
 use std::sync::Arc;
 
-/// The engine's options of `evaluate` (the accuracy flags of `asperity run`).
-#[pyfunction]
-#[pyo3(signature = (sigma_points = 201, sigma_max = None, rtol = None, adhesion_steps = None, adhesion_points = None, adhesion_tol = None))]
-pub fn options_check(
-    py: Python<'_>,
-    sigma_points: usize,
-    sigma_max: Option<f64>,
-    rtol: Option<f64>,
-    adhesion_steps: Option<f64>,
-    adhesion_points: Option<f64>,
-    adhesion_tol: Option<f64>,
-) -> PyResult<()> {
-    let o = options(
-        sigma_points,
-        sigma_max,
-        rtol,
-        adhesion_steps,
-        adhesion_points,
-        adhesion_tol,
-    );
-    errors::guard(py, || o.validate())
-}
-
-fn options(
-    sigma_points: usize,
-    sigma_max: Option<f64>,
-    rtol: Option<f64>,
-    adhesion_steps: Option<f64>,
-    adhesion_points: Option<f64>,
-    adhesion_tol: Option<f64>,
-) -> Options {
-    AccuracyKnobs {
-        sigma_points: Some(sigma_points),
-        sigma_max,
-        rtol,
-        adhesion_steps,
-        adhesion_points,
-        adhesion_tol,
-    }
-    .options()
-}
-
 /// `evaluate(scene, ...)`: the [`Report`] of one scene at its load (`to_dict()`: the keys of
 /// `asperity run --format json`, the preset's name under `preset`).
 #[pyfunction]
@@ -87,15 +45,15 @@ pub fn evaluate<'py>(
     adhesion_tol: Option<f64>,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Report> {
-    let opts = options(
-        sigma_points,
+    let mut opts = AccuracyKnobs {
+        sigma_points: Some(sigma_points),
         sigma_max,
         rtol,
         adhesion_steps,
         adhesion_points,
         adhesion_tol,
-    );
-    let mut opts = opts;
+    }
+    .options();
     // a scene exported on the unloading branch (`[load] branch = "unloading"`) reports it, as
     // `asperity run --preset` does
     opts.adhesion.follow_unloading = scene.preset.follows_unloading();
@@ -251,7 +209,7 @@ pub fn run_cycle<'py>(
         };
         asperity::report::cycle::cycle(&core.scene, &core.preset.name, &spec, &opts, ctl)
     })?;
-    Record::new(py, Arc::new(value::json(&out)?))
+    Record::of(py, &out)
 }
 
 /// The pull-off read-out of `scene` (`asperity run --pull-off`'s `pull_off`): the theory's
@@ -265,5 +223,5 @@ pub fn run_pull_off<'py>(py: Python<'py>, scene: &SceneCore, progress: Option<Bo
     let out = work::run(py, progress.as_ref(), move |ctx| {
         asperity::report::pull_off::pull_off(&core.scene, &acc, Some(&*ctx.cancel))
     })?;
-    Record::new(py, Arc::new(value::json(&out)?))
+    Record::of(py, &out)
 }

@@ -10,7 +10,6 @@
 use crate::errors;
 use asperity::Result;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, RecvTimeoutError};
 use std::sync::Arc;
@@ -20,7 +19,7 @@ use std::time::{Duration, Instant};
 pub const POLL: Duration = Duration::from_millis(50);
 
 /// One progress report: the stage and its numbers (a dict on the Python side).
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Default, serde::Serialize)]
 pub struct Info {
     /// "relax" (GFMD relaxation), "theory" (the theory on a GFMD map), "sweep" (values done).
     pub stage: &'static str,
@@ -35,14 +34,8 @@ pub struct Info {
 }
 
 impl Info {
-    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let d = PyDict::new(py);
-        d.set_item("stage", self.stage)?;
-        d.set_item("done", self.done)?;
-        d.set_item("total", self.total)?;
-        d.set_item("residual", self.residual)?;
-        d.set_item("contact_fraction", self.contact_fraction)?;
-        Ok(d)
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        Ok(pythonize::pythonize(py, self)?)
     }
 }
 

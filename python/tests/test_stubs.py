@@ -31,6 +31,13 @@ if TYPE_CHECKING:
         assert_type(r.branches[0].a_r, float)
         assert_type(r.window, Tuple[float, float])
 
+    def _mypy_reads_the_records(g: asperity.GfmdResult, c: asperity.GfmdCycleResult, p: asperity.PsdResult) -> None:
+        assert_type(g.a_r, float)
+        assert_type(g.pr.sigma, npt.NDArray[np.float64])
+        assert_type(c.pull_off_bracket, Optional[Tuple[float, float]])
+        assert_type(c.theory_cycle, Optional[asperity.CycleResult])
+        assert_type(p.rms_gradient, float)
+
 
 STUB = Path(asperity.__file__).with_name("_native.pyi")
 
@@ -193,32 +200,74 @@ def load_sweep() -> Any:
     return asperity.sweep(asperity.Scene.preset("system-2"), np.geomspace(1e-3, 1e-2, 3), cycle=True)
 
 
-def _records(sw: Any) -> Dict[str, Any]:
-    return {"SweepResult": sw, "CycleResult": sw.cycle}
+@pytest.fixture(scope="module")
+def records(load_sweep) -> Dict[str, Any]:
+    """A sample of each result class over a Rust record, on small grids."""
+    s1 = asperity.Scene.preset("system-1").replace(pressure=0.05, surface_energy_j_m2=0.0)
+    s2 = asperity.Scene.preset("system-2")
+    g = asperity.gfmd(s1, grid=32)
+    with pytest.warns(asperity.ResolutionWarning):
+        cyc = asperity.gfmd_cycle(s2, 1e-3, 4e-3, points=3, grid=32)
+    return {
+        "SweepResult": load_sweep,
+        "CycleResult": load_sweep.cycle,
+        "PullOffResult": load_sweep.pull_off,
+        "GfmdResult": g,
+        "GfmdCycleResult": cyc,
+        "GfmdSweepResult": asperity.gfmd_sweep(s1, 0.02, 0.05, points=2, grid=32),
+        "PsdResult": asperity.psd(g.heights, g.system_size_m),
+        "GaugeResult": asperity.gauge(s1, ["c1"], "eq18", from_=1e-3, to=0.3, points=6),
+    }
 
 
-@pytest.mark.parametrize("name", ("SweepResult", "CycleResult"))
-def test_records_have_their_annotated_types(name, load_sweep):
-    """The Python classes over a Rust record (`SweepResult`, `CycleResult`): each annotated
-    field has its type, every key of `to_dict()` and every row key is an attribute with the
-    dict's numbers, every array is read-only."""
-    obj = _records(load_sweep)[name]
+def _hints(cls: type) -> Dict[str, Any]:
+    return {k: t for k, t in typing.get_type_hints(cls).items() if not k.startswith("_")}
+
+
+RECORDS = ("SweepResult", "CycleResult", "PullOffResult", "GfmdResult", "GfmdCycleResult", "GfmdSweepResult", "PsdResult", "GaugeResult")
+
+
+@pytest.mark.parametrize("name", RECORDS)
+def test_records_have_their_annotated_types(name, records):
+    """The Python classes over a Rust record: every key of `to_dict()` is annotated (a type
+    checker never sees Any), each annotated field has its type, every key and every row key
+    is an attribute with the dict's numbers, made once, every array is read-only."""
+    obj = records[name]
     cls = getattr(asperity, name)
-    assert isinstance(obj, _native.Record) and type(obj) is cls
-    hints = typing.get_type_hints(cls)
-    for attr, t in hints.items():
-        assert _conforms(getattr(obj, attr), t), f"{name}.{attr} = {getattr(obj, attr)!r} is not {t}"
+    assert isinstance(obj, _native.Record) and isinstance(obj, asperity.Result) and type(obj) is cls
+    hints = _hints(cls)
     plain = obj.to_dict()
+    assert set(plain) <= set(hints), f"not annotated: {set(plain) - set(hints)}"
+    for attr, t in hints.items():
+        if attr in plain or attr in dir(obj):
+            v = getattr(obj, attr)
+            assert _conforms(v, t), f"{name}.{attr} = {v!r} is not {t}"
+            assert v is getattr(obj, attr), attr
     for key, x in plain.items():
         assert _same(getattr(obj, key), x), f"{name}.{key}"
-    for key in plain["rows"][0]:
+    rows = plain.get("rows") or plain.get("table") or []
+    for key in [k for k in (rows[0] if rows else ()) if k not in plain]:
         col = getattr(obj, key)
-        assert isinstance(col, np.ndarray) and not col.flags.writeable and len(col) == len(obj), key
-        want = [r[key] for r in plain["rows"]]
+        assert isinstance(col, np.ndarray) and not col.flags.writeable and len(col) == len(rows), key
+        want = [r[key] for r in rows]
         assert _same(col, want) if col.dtype == np.float64 else col.tolist() == want, key
     with pytest.raises(AttributeError):
         obj.a_r = None
-    assert obj.a_r is obj.a_r
+
+
+def test_gfmd_results_keep_their_map_out_of_the_dict_and_through_pickle(records):
+    import pickle
+
+    for name in ("GfmdResult", "GfmdCycleResult", "GfmdSweepResult"):
+        g = records[name]
+        assert isinstance(g.heights, np.ndarray) and g.heights.shape == (32, 32) and g.heights is g.heights
+        assert "heights" not in g.to_dict() and "heights" not in g
+        again = pickle.loads(pickle.dumps(g))
+        assert type(again) is type(g) and again.to_dict() == g.to_dict()
+        assert np.array_equal(again.heights, g.heights)
+    c = records["GfmdCycleResult"]
+    assert isinstance(c.theory_cycle, asperity.CycleResult) and c.theory_cycle is c.theory_cycle
+    assert isinstance(records["GfmdResult"].pr, _native.Pr) and records["PsdResult"].modes.dtype.kind == "i"
 
 
 def test_a_record_from_a_plain_dict_is_the_same(load_sweep):
