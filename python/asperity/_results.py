@@ -386,7 +386,10 @@ class PullOffResult(_native.Record):
     ``cases`` (each with ``gfmd``, ``gfmd_err``, ``theory_ratio``, ``bam_ratio``,
     ``gap_dmt_ratio``: each pull-off over GFMD's), the ranges ``theory_ratio``, ``bam_ratio``,
     ``gap_dmt_ratio`` over those cases, ``bracketed`` and ``summary``. The ratios are what was
-    measured: none of the three pull-offs is an estimate of GFMD's.
+    measured: none of the three pull-offs is an estimate of GFMD's. ``estimate`` is the one
+    estimate (docs/physics.md §6.5): an empirical correlation gauged on GFMD's stored pull-offs,
+    ``pull_off_pressure`` (None outside the measured range, the reasons in ``outside``) with its
+    ``band``, ``band_factor``, ``band_held``, ``coefficients``, ``held_out`` and ``summary``.
     """
 
     __slots__ = ()
@@ -398,6 +401,7 @@ class PullOffResult(_native.Record):
     gfmd: Optional[_native.Record]
     trust: _native.Record
     notes: List[str]
+    estimate: _native.Record
 
     @property
     def pull_off_bracket(self) -> Optional[Tuple[float, float]]:
