@@ -291,3 +291,175 @@ fn the_pull_off_read_out_holds_what_it_states_on_cases_left_out() {
         held[0]
     );
 }
+
+/// (a, b, c) of ln(−p*_c) = a + b·ln γ̃_glo + c/(t·q_r) over `rows` by Gaussian elimination on
+/// [XᵀX | Xᵀy], written apart from the library's Cramer's rule.
+#[allow(clippy::needless_range_loop)]
+fn direct_least_squares(rows: &[&asperity::fit::pull_off_trust::PullOffCase]) -> [f64; 3] {
+    let mut m = [[0.0f64; 4]; 3];
+    for c in rows {
+        let thin = if c.thickness_qr.is_finite() {
+            1.0 / c.thickness_qr
+        } else {
+            0.0
+        };
+        let x = [1.0, c.gamma_glo.ln(), thin];
+        let y = (-c.gfmd.0).ln();
+        for i in 0..3 {
+            for j in 0..3 {
+                m[i][j] += x[i] * x[j];
+            }
+            m[i][3] += x[i] * y;
+        }
+    }
+    for k in 0..3 {
+        for i in k + 1..3 {
+            let f = m[i][k] / m[k][k];
+            for j in k..4 {
+                m[i][j] -= f * m[k][j];
+            }
+        }
+    }
+    let mut b = [0.0; 3];
+    for k in (0..3).rev() {
+        b[k] = (m[k][3] - (k + 1..3).map(|j| m[k][j] * b[j]).sum::<f64>()) / m[k][k];
+    }
+    b
+}
+
+#[test]
+fn the_gauged_estimate_holds_gfmds_pull_off_on_cases_left_out() {
+    // the correlation ln(−p*_c) = a + b·ln γ̃_glo + c/(t·q_r) (physics.md §6.5), each case of
+    // the table estimated from a fit on the others: recomputed here from the stored set, the
+    // ratio estimate/GFMD by direct least squares (an independent 3×3 elimination)
+    use asperity::fit::pull_off_gauge::{gauge, leave_one_out, leave_thickness_out, HeldOut};
+    use asperity::fit::pull_off_trust::table;
+    let all = table();
+    let mut direct = Vec::new();
+    for (i, c) in all.iter().enumerate() {
+        let others: Vec<_> = all
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| *j != i)
+            .map(|(_, c)| c)
+            .collect();
+        let b = direct_least_squares(&others);
+        let t = if c.thickness_qr.is_finite() {
+            1.0 / c.thickness_qr
+        } else {
+            0.0
+        };
+        let est = -(b[0] + b[1] * c.gamma_glo.ln() + b[2] * t).exp();
+        direct.push((est / c.gfmd.0).ln());
+    }
+    let loo = leave_one_out(all);
+    for (d, l) in direct.iter().zip(&loo) {
+        assert!((d - l.unwrap()).abs() < PULL_OFF_GAUGE_REPRODUCED_ABS, "{d} vs {l:?}");
+    }
+    let h = HeldOut::of(&loo);
+    assert_eq!(h.cases, 21);
+    // measured (physics.md §6.5): mean |ln| 0.211, 18 of 21 within 1.5×, worst 2.33×
+    assert!(h.mean_abs_ln <= PULL_OFF_GAUGE_LOO_MEAN_ABS_LN, "{h:?}");
+    assert!(h.within_1_5 >= PULL_OFF_GAUGE_LOO_WITHIN, "{h:?}");
+    assert!(h.worst_factor <= PULL_OFF_GAUGE_LOO_WORST, "{h:?}");
+    // every thickness left out with its three γ_s: mean |ln| 0.230, 18 of 21, worst 2.31×
+    let t = HeldOut::of(&leave_thickness_out(all));
+    assert!(
+        t.mean_abs_ln <= PULL_OFF_GAUGE_LOO_MEAN_ABS_LN && t.within_1_5 >= PULL_OFF_GAUGE_LOO_WITHIN,
+        "{t:?}"
+    );
+    assert_eq!(gauge().unwrap().leave_one_out, h);
+}
+
+#[test]
+fn the_gauged_estimates_band_holds_the_left_out_pull_offs() {
+    // each case left out, the gauge (fit and band) built on the other 20 alone: the band it
+    // states at the case must hold GFMD's pull-off there
+    use asperity::fit::pull_off_gauge::{estimate_with, Gauge};
+    use asperity::fit::pull_off_trust::table;
+    let all = table();
+    let mut held = 0;
+    for (i, c) in all.iter().enumerate() {
+        let others: Vec<_> = all
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| *j != i)
+            .map(|(_, c)| *c)
+            .collect();
+        let g = Gauge::on(&others).unwrap();
+        let e = estimate_with(Some(&g), c.gamma_glo, c.thickness_qr, Vec::new());
+        let [lo, hi] = e.band.unwrap();
+        held += usize::from(lo <= c.gfmd.0 && c.gfmd.0 <= hi);
+    }
+    // measured: 19 of 21
+    assert!(
+        held as f64 / all.len() as f64 >= PULL_OFF_GAUGE_BAND_COVERAGE,
+        "the band held {held} of {}",
+        all.len()
+    );
+    assert_eq!(Gauge::on(all).unwrap().band_held, [held, all.len()]);
+}
+
+#[test]
+fn the_gauged_fit_uses_no_left_out_case() {
+    // a left-out case's GFMD pull-off changed 100-fold: its own held-out estimate must not
+    // move (the fit never saw it), while every other case's does (it is in their fits)
+    use asperity::fit::pull_off_gauge::held_out_estimates;
+    use asperity::fit::pull_off_trust::table;
+    let all = table().to_vec();
+    for i in [0, 10, 20] {
+        let mut changed = all.clone();
+        changed[i].gfmd.0 *= 100.0;
+        let before = held_out_estimates(&all, |a, b| a == b);
+        let after = held_out_estimates(&changed, |a, b| a == b);
+        assert_eq!(before[i], after[i], "case {i}: its estimate saw its own pull-off");
+        for j in (0..all.len()).filter(|&j| j != i) {
+            assert_ne!(before[j], after[j], "case {j}: case {i} is not in its fit");
+        }
+        // a whole thickness left out: no case of it is in the fit
+        let same = |a: usize, b: usize| all[a].thickness_qr == all[b].thickness_qr;
+        let (b2, a2) = (held_out_estimates(&all, same), held_out_estimates(&changed, same));
+        for j in (0..all.len()).filter(|&j| same(i, j)) {
+            assert_eq!(b2[j], a2[j], "case {j} saw case {i} of its thickness");
+        }
+    }
+}
+
+#[test]
+fn outside_the_measured_range_the_gauge_gives_no_estimate() {
+    use asperity::fit::pull_off_gauge::estimate;
+    // inside: system II's slab at t·q_r 0.3, the preset's γ_s (a stored case)
+    let inside = estimate(&system2(0.3, 1.0));
+    let p = inside.pull_off_pressure.expect("inside");
+    let [lo, hi] = inside.band.unwrap();
+    assert!(lo < p && p < hi && hi < 0.0 && inside.outside.is_empty(), "{inside:?}");
+    // thinner than the set, far stronger adhesion than at that thickness, another Hurst
+    // exponent, a tenfold range ρ (μ_T ÷ 10): each outside, no number
+    let thin = system2(0.05, 1.0);
+    let strong = system2(f64::INFINITY, 8.0);
+    let base = Preset::resolve("system-2").unwrap().scene().unwrap();
+    let rho = base.range_m() * 10.0;
+    let long_range = base.clone().with_thickness_qr(0.3).unwrap().with_range_m(rho).unwrap();
+    let mut preset = Preset::resolve("system-2").unwrap();
+    preset.surface.hurst = 0.5;
+    let rough = preset.scene().unwrap().with_thickness_qr(0.3).unwrap();
+    for (what, s) in [
+        ("thin", thin),
+        ("strong", strong),
+        ("range", long_range),
+        ("hurst", rough),
+    ] {
+        let e = estimate(&s);
+        assert!(
+            e.pull_off_pressure.is_none() && e.band.is_none() && !e.outside.is_empty(),
+            "{what}: {e:?}"
+        );
+        assert!(
+            e.summary.starts_with("outside the measured range: no estimate"),
+            "{what}: {}",
+            e.summary
+        );
+    }
+    // without adhesion: no tension
+    assert_eq!(estimate(&system2(0.3, 0.0)).pull_off_pressure, Some(0.0));
+}

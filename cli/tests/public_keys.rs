@@ -875,6 +875,20 @@ fn pull_off_read_out_keys() {
         "trust.bracketed",
         "trust.summary",
         "notes",
+        "estimate",
+        "estimate.pull_off_pressure",
+        "estimate.band",
+        "estimate.band_factor",
+        "estimate.band_coverage",
+        "estimate.band_held",
+        "estimate.coefficients",
+        "estimate.held_out",
+        "estimate.held_out.cases",
+        "estimate.held_out.mean_abs_ln",
+        "estimate.held_out.worst_factor",
+        "estimate.held_out.within_1_5",
+        "estimate.outside",
+        "estimate.summary",
     ];
     let run = json(&["run", "--preset", "system-2", "--thickness", "0.3", "--pull-off"]);
     assert_has(&run["pull_off"], PULL_OFF, "run --pull-off");
@@ -922,6 +936,8 @@ fn pull_off_read_out_keys() {
         "# gap_dmt_pull_off_pressure: -",
         "# gfmd_pull_off_pressure: -",
         "# pull_off_trust: ",
+        "# pull_off_estimate: -",
+        "# pull_off_estimate_summary: gauged estimate -",
     ] {
         assert!(csv.contains(line), "{line} in\n{csv}");
     }

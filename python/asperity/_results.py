@@ -116,7 +116,10 @@ class PullOffResult(Result):
     ``cases`` (each with ``gfmd``, ``gfmd_err``, ``theory_ratio``, ``bam_ratio``,
     ``gap_dmt_ratio``: each pull-off over GFMD's), the ranges ``theory_ratio``, ``bam_ratio``,
     ``gap_dmt_ratio`` over those cases, ``bracketed`` and ``summary``. The ratios are what was
-    measured: none of the three pull-offs is an estimate of GFMD's.
+    measured: none of the three pull-offs is an estimate of GFMD's. ``estimate`` is the one
+    estimate (docs/physics.md §6.5): an empirical correlation gauged on GFMD's stored pull-offs,
+    ``pull_off_pressure`` (None outside the measured range, the reasons in ``outside``) with its
+    ``band``, ``band_factor``, ``band_held``, ``coefficients``, ``held_out`` and ``summary``.
     """
 
     __slots__ = ()
@@ -130,6 +133,7 @@ class PullOffResult(Result):
     gfmd: Optional[Result]
     trust: Result
     notes: List[str]
+    estimate: _native.Record
 
 
 class CycleResult(_Path):

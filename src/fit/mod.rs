@@ -23,6 +23,7 @@ pub mod compare;
 pub mod finite_size;
 pub mod gfmd_reference;
 pub mod predict;
+pub mod pull_off_gauge;
 pub mod pull_off_trust;
 pub mod reference;
 pub mod reference_set;

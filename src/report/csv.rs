@@ -116,7 +116,8 @@ fn sci(x: f64) -> String {
 
 /// The pull-off read-out's `#` lines ([`super::pull_off::PullOffReport`]): each route's
 /// pull-off (empty where it did not converge), GFMD's nearest with its standard error, the
-/// trust's summary.
+/// trust's summary, the gauged estimate with its band (empty outside the measured range) and
+/// its summary.
 pub fn pull_off_comments(p: &PullOffReport) -> String {
     comments(&[
         ("bam_pull_off_pressure", Some(opt_cell(p.bam_pull_off_pressure))),
@@ -127,6 +128,16 @@ pub fn pull_off_comments(p: &PullOffReport) -> String {
                 .map(|g| format!("{} {}", cell(g.pull_off_pressure), opt_cell(g.pull_off_pressure_err))),
         ),
         ("pull_off_trust", Some(p.trust.summary.clone())),
+        (
+            "pull_off_estimate",
+            Some(format!(
+                "{} {} {}",
+                opt_cell(p.estimate.pull_off_pressure),
+                opt_cell(p.estimate.band.map(|b| b[0])),
+                opt_cell(p.estimate.band.map(|b| b[1]))
+            )),
+        ),
+        ("pull_off_estimate_summary", Some(p.estimate.summary.clone())),
     ])
 }
 

@@ -4,13 +4,17 @@
 //! bisected to [`PULL_OFF_REL`] (physics.md §6.2), the two DMT routes' from the PSD alone
 //! (Ciavarella's bearing-area model and the gap distribution's attraction after Persson &
 //! Scaraggi, §6.3), GFMD's measured pull-off at the nearest stored case, and how far each was
-//! measured from GFMD near the scene ([`crate::fit::pull_off_trust`]).
+//! measured from GFMD near the scene ([`crate::fit::pull_off_trust`]), and a gauged estimate of
+//! GFMD's pull-off with the band it held on cases left out ([`crate::fit::pull_off_gauge`]).
 //!
 //! On the stored set the theory holds 0–4 % of GFMD's pull-off and the routes 6–420× of it
 //! (§6.2–6.3): the read-out reports the three with those measured ratios and never as an
-//! estimate with an error bar, which none of them has earned.
+//! estimate with an error bar, which none of them has earned. The gauged estimate is the one
+//! number with a band: an empirical correlation fitted on GFMD's pull-offs (§6.5), stated only
+//! inside the range they cover.
 
 use crate::error::Result;
+use crate::fit::pull_off_gauge::{self, PullOffEstimate};
 use crate::fit::pull_off_trust::{self, PullOffTrust};
 use crate::fit::trust::{pull_off_reference, PullOffReference};
 use crate::fit::trust_band::Place;
@@ -54,6 +58,9 @@ pub struct PullOffReport {
     pub gfmd: Option<PullOffReference>,
     /// How far each was measured from GFMD near the scene.
     pub trust: PullOffTrust,
+    /// The gauged estimate of GFMD's pull-off with its held-out band
+    /// ([`crate::fit::pull_off_gauge`]; its value is null outside the measured range).
+    pub estimate: PullOffEstimate,
     /// Why a route has no value, one line each.
     pub notes: Vec<String>,
 }
@@ -103,6 +110,7 @@ pub fn read_out(scene: &Scene, theory: TheoryPullOff) -> PullOffReport {
         gap_dmt_pull_off_pressure: gap_dmt,
         gfmd: adhesive.then(|| pull_off_reference(place)).flatten(),
         trust: pull_off_trust::assess(scene.thickness_qr(), scene.gamma_glo(), scene.model.number(), adhesive),
+        estimate: pull_off_gauge::estimate(scene),
         notes,
     }
 }

@@ -163,6 +163,7 @@ fn pull_off_rows(po: &asperity::report::pull_off::PullOffReport) -> Vec<(&'stati
             ),
         ),
         ("pull-off trust", po.trust.summary.clone()),
+        ("pull-off estimate", po.estimate.summary.clone()),
     ];
     rows.extend(po.notes.iter().map(|n| ("pull-off note", n.clone())));
     rows
