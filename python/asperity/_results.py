@@ -133,7 +133,7 @@ class PullOffResult(Result):
     gfmd: Optional[Result]
     trust: Result
     notes: List[str]
-    estimate: _native.Record
+    estimate: Result
 
 
 class CycleResult(_Path):

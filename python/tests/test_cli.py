@@ -118,5 +118,13 @@ def test_pull_off_equals_cli(cli):
     assert r.pull_off_pressure <= 0.0 and r.gfmd is not None
     assert r.bam_pull_off_pressure is not None and r.bam_pull_off_pressure < r.gfmd.pull_off_pressure
     assert r.trust.known and "lower bound" in r.trust.summary
+    # the gauged estimate lies within its stated band of GFMD's nearest pull-off at this
+    # stored case (system II, t·q_r 0.3, γ_s × 1); outside the set it states none
+    est = r.estimate.pull_off_pressure
+    assert est is not None and r.estimate.band_factor > 1.0
+    ratio = est / r.gfmd.pull_off_pressure
+    assert 1.0 / r.estimate.band_factor <= ratio <= r.estimate.band_factor
+    far = asperity.pull_off(asperity.Scene.preset("system-1"))
+    assert far.estimate.pull_off_pressure is None and far.estimate.summary.startswith("outside")
     sw = asperity.sweep(scene, np.geomspace(1e-3, 1e-2, 2), cycle=True)
     assert sw.pull_off is not None and sw.pull_off.tension_bound == r.tension_bound
