@@ -157,6 +157,10 @@ pub struct PointData {
     pub pull_off: Option<String>,
 }
 
+/// Where the gauged pull-off estimate starts in [`PointData::pull_off`] (the view drops it
+/// first where a chart's border is short).
+pub const PULL_OFF_EST_SEGMENT: &str = " · est. ";
+
 /// ū/h_rms of one branch with its bracket.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BranchGapView {

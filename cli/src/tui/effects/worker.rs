@@ -237,9 +237,26 @@ fn with_trust(mut pd: PointData, scene: &Scene) -> PointData {
 
 /// The pull-off read-out in one line for the a_r(p*) chart's title, from the stored set alone
 /// (no solve): GFMD's pull-off at the nearest measured case and how much of it the theory's
-/// pull-off was measured to hold near the scene ([`asperity::fit::pull_off_trust`];
-/// `run --pull-off` computes the theory's own and the DMT routes').
+/// pull-off was measured to hold near the scene ([`asperity::fit::pull_off_trust`]), then,
+/// inside the measured range, the gauged estimate with its band (` · est. −0.001 ×/÷2.1`,
+/// [`asperity::fit::pull_off_gauge`]; the view drops it first where the border is short).
+/// `run --pull-off` computes the theory's own pull-off and the DMT routes'.
 pub fn pull_off_line(scene: &Scene, t: &asperity::fit::trust::Trust) -> String {
+    let est = asperity::fit::pull_off_gauge::estimate(scene);
+    let tail = match (est.pull_off_pressure, est.band_factor) {
+        (Some(p), Some(f)) => format!(
+            "{}{} ×/÷{}",
+            crate::tui::base::data::PULL_OFF_EST_SEGMENT,
+            crate::numfmt::sig(p, 2),
+            crate::numfmt::sig(f, 2)
+        ),
+        _ => String::new(),
+    };
+    measured_pull_off(scene, t) + &tail
+}
+
+/// GFMD's nearest pull-off and the share of it the theory was measured to hold.
+fn measured_pull_off(scene: &Scene, t: &asperity::fit::trust::Trust) -> String {
     let read =
         asperity::fit::pull_off_trust::assess(scene.thickness_qr(), scene.gamma_glo(), scene.model().number(), true);
     match (t.pull_off, read.theory_ratio) {

@@ -532,6 +532,18 @@ fn an_adhesive_point_carries_the_pull_off_line_from_the_stored_set() {
         "{line}"
     );
     assert!(line.contains(&crate::numfmt::sig(g, 2)), "{line} vs {g}");
+    // inside the measured range the gauged estimate follows, with the run's own numbers
+    let est = asperity::fit::pull_off_gauge::estimate(&scene);
+    let (p, f) = (est.pull_off_pressure.unwrap(), est.band_factor.unwrap());
+    let tail = format!(" · est. {} ×/÷{}", crate::numfmt::sig(p, 2), crate::numfmt::sig(f, 2));
+    assert!(line.ends_with(&tail), "{line}");
+    // and its band holds GFMD's nearest pull-off at this stored case
+    assert!((1.0 / f..=f).contains(&(p / g)), "{p} vs {g} ×/÷{f}");
+    // a thinner slab than the set measured states no estimate
+    let mut thin = scene.clone();
+    thin.set_thickness_qr(0.05).unwrap();
+    let t_thin = asperity::fit::trust::assess(&thin);
+    assert!(!pull_off_line(&thin, &t_thin).contains(" · est."));
     let mut req = request(1, 1e-3);
     req.scene = scene;
     req.source = "system-2".into();

@@ -137,10 +137,13 @@ fn draw_body(f: &mut Frame, scr: &layout::Screen, app: &App, pal: Palette) {
             // one chart at a time on a small terminal: which one, and how to see the others
             m.title = format!("{}/3 (f next) · {}", i + 1, m.title);
         }
-        // the pull-off read-out in a title goes where the border has no room for it
+        // the pull-off read-out in a title goes where the border has no room for it: its
+        // estimate first, then the whole read-out
         let room = usize::from(r.width.saturating_sub(4));
-        if let Some(k) = m.title.find(" · pull-off").filter(|_| m.title.chars().count() > room) {
-            m.title.truncate(k);
+        for cut in [crate::tui::base::data::PULL_OFF_EST_SEGMENT, " · pull-off"] {
+            if let Some(k) = m.title.find(cut).filter(|_| m.title.chars().count() > room) {
+                m.title.truncate(k);
+            }
         }
         render_model(f, *r, &m, pal, *i == app.ui.focus && shown > 1);
     }
