@@ -209,7 +209,14 @@ pub fn compute_on(
     closed_form_series(spec, &widths, &mut data);
     paper_series(spec, on, &mut data);
     if let Some(choice) = gfmd {
-        gfmd_series(spec, &preset, &scenes, (choice, on), &mut data, progress)?;
+        let runs = Runs {
+            spec,
+            preset: &preset,
+            scenes: &scenes,
+            choice,
+            on,
+        };
+        gfmd_series(runs, &mut data, progress)?;
     }
     Ok(data)
 }
@@ -353,15 +360,26 @@ pub fn gfmd_run(
     )
 }
 
+/// What a figure's GFMD runs are of: the figure, its preset, the curves' scenes, the grid and
+/// seed, and the measured surface where there is one.
+#[derive(Clone, Copy)]
+struct Runs<'a> {
+    spec: &'a FigureSpec,
+    preset: &'a Preset,
+    scenes: &'a [Scene],
+    choice: GfmdChoice,
+    on: Option<&'a Measured>,
+}
+
 /// A stress-axis figure's GFMD: Pr(σ*) of one run per distinct scene of the curves.
-fn gfmd_pr_series(
-    spec: &FigureSpec,
-    preset: &Preset,
-    scenes: &[Scene],
-    (choice, on): (GfmdChoice, Option<&Measured>),
-    data: &mut FigureData,
-    progress: &mut dyn FnMut(RunProgress),
-) {
+fn gfmd_pr_series(runs: Runs, data: &mut FigureData, progress: &mut dyn FnMut(RunProgress)) {
+    let Runs {
+        spec,
+        preset,
+        scenes,
+        choice,
+        on,
+    } = runs;
     let map = on.and_then(|m| m.map.as_ref());
     let mut done: Vec<(f64, f64, f64)> = Vec::new();
     for (c, s) in spec.curve.iter().zip(scenes) {
@@ -412,19 +430,19 @@ fn gfmd_pr_series(
 
 /// A sweep figure's GFMD: one run at each x of `gfmd_at` (the theory on the same map beside
 /// it); a stress figure's: [`gfmd_pr_series`].
-fn gfmd_series(
-    spec: &FigureSpec,
-    preset: &Preset,
-    scenes: &[Scene],
-    (choice, on): (GfmdChoice, Option<&Measured>),
-    data: &mut FigureData,
-    progress: &mut dyn FnMut(RunProgress),
-) -> Result<()> {
+fn gfmd_series(runs: Runs, data: &mut FigureData, progress: &mut dyn FnMut(RunProgress)) -> Result<()> {
+    let Runs {
+        spec,
+        preset,
+        choice,
+        on,
+        ..
+    } = runs;
     // GFMD does not depend on the model: the figure's scene without the curves' models
     let base = on_surface(curve_scene(preset, &spec.overrides(), &Overrides::default())?, on)?;
     let map = on.and_then(|m| m.map.as_ref());
     if spec.x == XAxis::Stress {
-        gfmd_pr_series(spec, preset, scenes, (choice, on), data, progress);
+        gfmd_pr_series(runs, data, progress);
         return Ok(());
     }
     let mut points = Vec::new();

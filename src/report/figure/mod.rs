@@ -133,13 +133,9 @@ impl FigureData {
         let mut out = String::from("series,x,y,note");
         for s in &self.series {
             for p in &s.points {
-                out.push_str(&format!(
-                    "\n{},{},{},{}",
-                    text(&s.name),
-                    cell(p.x),
-                    opt_cell(p.y),
-                    text(p.note.as_deref().unwrap_or(""))
-                ));
+                let note = text(p.note.as_deref().unwrap_or(""));
+                out.push('\n');
+                out.push_str(&[text(&s.name), cell(p.x), opt_cell(p.y), note].join(","));
             }
         }
         out

@@ -123,15 +123,14 @@ impl Table1 {
             "column,mean_contact_stress,contact_stress_variance,a_r,paper_mean_contact_stress,paper_contact_stress_variance",
         );
         for c in &self.columns {
-            out.push_str(&format!(
-                "\n{},{},{},{},{},{}",
-                text(&c.column),
-                opt_cell(c.mean_contact_stress),
-                opt_cell(c.contact_stress_variance),
-                opt_cell(c.a_r),
-                cell(c.paper_mean_contact_stress),
-                cell(c.paper_contact_stress_variance)
-            ));
+            let computed = [c.mean_contact_stress, c.contact_stress_variance, c.a_r].map(opt_cell);
+            let paper = [c.paper_mean_contact_stress, c.paper_contact_stress_variance].map(cell);
+            out.push('\n');
+            out.push_str(
+                &[vec![text(&c.column)], computed.to_vec(), paper.to_vec()]
+                    .concat()
+                    .join(","),
+            );
         }
         out
     }
