@@ -190,12 +190,17 @@ pub const REFERENCE_MARKS: [(char, Shape); 6] = [
 
 /// Model slot of a model: 0–3 for models 1–4, 4 custom, 5 YP08, 6 Xu24, 7 model 5.
 pub fn model_slot(m: &Model) -> usize {
-    match m.kind {
+    kind_slot(m.kind)
+}
+
+/// Model slot of a kind of model ([`model_slot`]).
+pub fn kind_slot(kind: ModelKind) -> usize {
+    match kind {
         ModelKind::Custom => 4,
         ModelKind::Yp08 => 5,
         ModelKind::Xu24 => 6,
         ModelKind::Five => 7,
-        _ => m.number().map_or(4, |n| usize::from(n) - 1),
+        _ => kind.number().map_or(4, |n| usize::from(n) - 1),
     }
 }
 

@@ -350,15 +350,15 @@ fn at_80x24_no_key_entry_is_lost() {
 
 #[test]
 fn a_model_has_one_colour_in_every_figure_and_its_curves_are_told_apart() {
-    use asperity_cli::figure::compute::compute;
-    use asperity_cli::figure::spec::{FigureSpec, BUILTIN};
+    use asperity::report::figure::compute::compute;
+    use asperity::report::figure::spec::{FigureSpec, BUILTIN};
     let mut seen: Vec<(String, u8)> = Vec::new();
     for (id, text) in BUILTIN {
         let mut spec = FigureSpec::parse(text, id).unwrap();
         // few points: the looks, not the values, are under test
         spec.points = spec.points.min(if spec.from.is_none() { 41 } else { 3 });
         let data = compute(&spec, None).unwrap();
-        let chart = flatten(&data.chart());
+        let chart = flatten(&asperity_cli::figure::chart(&data));
         let clashes = file_clashes(&chart);
         assert!(clashes.is_empty(), "figure {id}: {clashes:?}");
         let mut colours = Vec::new();

@@ -21,6 +21,9 @@
 //!   `asperity psd` prints.
 //! - [`mod@pull_off`]: the theory's pull-off, the DMT routes', GFMD's nearest and how far
 //!   each was measured from GFMD: what `asperity run --pull-off` and `sweep --cycle` add.
+//! - [`mod@figure`]: the figures and Table 1 of \[S\] as data (their files, curves refined
+//!   where they bend, closed forms, the values \[S\] states, GFMD points), everything
+//!   `asperity figure` prints.
 //! - [`mod@csv`]: the reports as CSV, as every front end writes them.
 //! - [`mod@names`]: the public names kept as aliases of a preferred one.
 //! - [`mod@numfmt`]: numbers as every front end writes them (tick labels, legends, panel
@@ -29,6 +32,7 @@
 pub mod compare;
 pub mod csv;
 pub mod cycle;
+pub mod figure;
 pub mod gauge;
 pub mod gfmd;
 pub mod names;

@@ -153,8 +153,9 @@ pub fn dashes(run: &[(f64, f64)], pattern: &[f64], scale: (f64, f64)) -> Vec<Vec
     out
 }
 
-/// Size of the SVG drawing in pixels (the viewBox).
-pub const SVG_SIZE: (u32, u32) = (800, 560);
+/// Size of the SVG drawing in pixels (the viewBox), the drawing the library refines a
+/// figure's curves for.
+pub const SVG_SIZE: (u32, u32) = asperity::report::figure::refine::DRAWING_PX;
 /// Size of the PNG image in pixels (twice the SVG's, for slides).
 pub const PNG_SIZE: (u32, u32) = (1600, 1120);
 

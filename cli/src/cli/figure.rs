@@ -1,5 +1,5 @@
 //! `asperity figure ID`: a figure or table of \[S\] as data, a text chart and SVG/PNG files
-//! ([`crate::figure`]).
+//! (the library's [`asperity::report::figure`], drawn by [`crate::figure`]).
 //!
 //! ```text
 //! asperity figure --list
@@ -16,9 +16,10 @@
 
 use super::emit;
 use crate::chart;
-use crate::figure::compute::{self, GfmdChoice, Measured};
-use crate::figure::{self, spec, table1};
+use crate::figure::{self as draw};
 use asperity::error::{Error, Result};
+use asperity::report::figure::compute::{self, GfmdChoice, Measured};
+use asperity::report::figure::{self, spec, table1, RunProgress};
 use clap::{Args, ValueEnum};
 use std::path::PathBuf;
 
@@ -111,6 +112,18 @@ fn measured(args: &FigureArgs) -> Result<Option<Measured>> {
     Ok(Some(Measured { spectrum, map }))
 }
 
+/// Runs `work` with the figure's GFMD runs reported on stderr ([`super::progress`]): one step
+/// per run, labelled with its p*, the solver's step and residual as it goes.
+fn with_progress<T>(work: impl FnOnce(&mut dyn FnMut(RunProgress)) -> T) -> T {
+    let opts = compute::gfmd_options();
+    let mut steps: Option<super::progress::Steps> = None;
+    work(&mut |r: RunProgress| {
+        let steps = steps.get_or_insert_with(|| super::progress::Steps::new("figure", "GFMD run", r.runs));
+        let label = super::progress::load_label(r.pressure);
+        super::gfmd::report(steps, r.run, &r.solver, &opts, |_| Some(label.clone()));
+    })
+}
+
 /// Runs `asperity figure`.
 pub fn run(args: &FigureArgs) -> Result<()> {
     if args.list {
@@ -149,18 +162,18 @@ pub fn run(args: &FigureArgs) -> Result<()> {
         if args.points.is_some() {
             return Err(Error::field("--points", args.points.unwrap_or(0), "none for table-1"));
         }
-        let t = table1::compute(gfmd)?;
+        let t = with_progress(|p| table1::compute(gfmd, p))?;
         match args.format {
-            FigureFormat::Table => emit(&t.table()),
+            FigureFormat::Table => emit(&draw::table1(&t)),
             FigureFormat::Csv => emit(&t.csv()),
             FigureFormat::Json => emit(&serde_json::to_string_pretty(&t).expect("serialisable")),
             FigureFormat::Chart => {}
         }
         let fig = t.figure();
         if args.format == FigureFormat::Chart {
-            emit(&t.table());
+            emit(&draw::table1(&t));
             emit("");
-            emit(chart::render_text(&fig.chart(), args.width, args.height).trim_end());
+            emit(chart::render_text(&draw::chart(&fig), args.width, args.height).trim_end());
         }
         fig
     } else {
@@ -181,36 +194,23 @@ pub fn run(args: &FigureArgs) -> Result<()> {
                     asperity::input::model::ModelKind::named_list(),
                 ));
             }
-            let label = match kind.number() {
-                Some(n) => format!("model {n}"),
-                None => {
-                    asperity::input::model::Model::of_kind(kind, &asperity::input::model::Model::named(1)?)?.label()
-                }
-            };
-            s.curve.push(spec::CurveSpec {
-                label,
-                pressure: None,
-                thickness_qr: None,
-                gamma: None,
-                model: kind.number(),
-                variant: kind.number().is_none().then(|| kind.name().to_string()),
-            });
+            s.curve.push(spec::CurveSpec::of_model(kind)?);
         }
-        let data = compute::compute_on(&s, gfmd, on.as_ref())?;
+        let data = with_progress(|p| compute::compute_on(&s, gfmd, on.as_ref(), p))?;
         match args.format {
             FigureFormat::Chart => {
-                emit(chart::render_text(&data.chart(), args.width, args.height).trim_end());
+                emit(chart::render_text(&draw::chart(&data), args.width, args.height).trim_end());
                 for n in &data.notes {
                     emit(&format!("note: {n}"));
                 }
             }
-            FigureFormat::Table => emit(&data.table()),
+            FigureFormat::Table => emit(&draw::table(&data)),
             FigureFormat::Csv => emit(&data.csv()),
             FigureFormat::Json => emit(&serde_json::to_string_pretty(&data).expect("serialisable")),
         }
         data
     };
-    let spec = data.chart();
+    let spec = draw::chart(&data);
     for (path, png) in [(&args.svg, false), (&args.png, true)] {
         if let Some(p) = path {
             let write = if png { chart::write_png } else { chart::write_svg };

@@ -356,7 +356,7 @@ fn check_tour(s: &str) -> Result<(), String> {
 
 /// `figure ID`: a figure of the paper or a figure file.
 fn check_figure(s: &str) -> Result<(), String> {
-    name_or_file(s, crate::figure::list(), "figure")
+    name_or_file(s, asperity::report::figure::list(), "figure")
 }
 
 /// `--reference`: eq18, gfmd or a CSV file that exists.

@@ -1,8 +1,7 @@
 //! Curves refined where they bend: a figure's theory curve starts on the figure file's x
 //! values and gains points until the polyline it draws lies within [`CHORD_PX`] of the curve
-//! at the default chart size ([`crate::chart::SVG_SIZE`], the whole drawing taken as the
-//! plot, so the true plot area is finer still), and window edges are located to one pixel in
-//! x.
+//! at the default drawing size ([`DRAWING_PX`], the whole drawing taken as the plot, so the
+//! true plot area is finer still), and window edges are located to one pixel in x.
 //!
 //! Each sample carries up to two branches (the loading branch and, inside a hysteresis window,
 //! the unloading one) and the number of stable branches. Passes, until nothing is flagged or
@@ -25,6 +24,9 @@
 
 use rayon::prelude::*;
 
+/// The drawing the curves are refined for, in pixels (width, height): the default size of a
+/// figure's SVG file.
+pub const DRAWING_PX: (u32, u32) = (800, 560);
 /// Largest distance between the drawn polyline and the curve, in pixels.
 pub const CHORD_PX: f64 = 0.5;
 /// Intervals narrower than this (pixels in x) are not split.

@@ -4,14 +4,13 @@
 
 use super::refine::{Axes, Refined, Sample};
 use super::spec::{FigureSpec, XAxis, YAxis};
-use super::{DataPoint, DataSeries};
-use crate::chart::{Rgb, SeriesStyle, Shape};
-use asperity::error::Result;
-use asperity::input::scene::Scene;
-use asperity::theory::engine::{self, Options};
-use asperity::theory::gap;
-use asperity::theory::knob::{Knob, KnobSpec};
-use asperity::theory::sweep::{self, SweepSpec};
+use super::{DataPoint, DataSeries, SeriesKind, Style};
+use crate::error::Result;
+use crate::input::scene::Scene;
+use crate::theory::engine::{self, Options};
+use crate::theory::gap;
+use crate::theory::knob::{Knob, KnobSpec};
+use crate::theory::sweep::{self, SweepSpec};
 use rayon::prelude::*;
 
 /// The x values of a sweep figure.
@@ -191,7 +190,7 @@ pub(super) fn refine_axes(spec: &FigureSpec, curves: &[Vec<Sample>]) -> Axes {
             }
         }
     }
-    let (w, h) = crate::chart::SVG_SIZE;
+    let (w, h) = super::refine::DRAWING_PX;
     Axes {
         x_log: spec.x_log,
         y_log: spec.y_log,
@@ -206,7 +205,7 @@ pub(super) fn refine_axes(spec: &FigureSpec, curves: &[Vec<Sample>]) -> Axes {
 /// edges.
 pub(super) fn branch_series(
     label: &str,
-    colour: Rgb,
+    kind: SeriesKind,
     r: &Refined,
     axes: &Axes,
     x_name: &str,
@@ -234,10 +233,9 @@ pub(super) fn branch_series(
     }
     let mut out = vec![DataSeries {
         name: label.to_string(),
-        style: SeriesStyle::Line,
+        style: Style::Line,
         points: loading,
-        colour,
-        shape: Shape::Circle,
+        kind,
     }];
     if r.samples.iter().any(|s| s.y_unloading.is_some()) {
         let mut pts: Vec<DataPoint> = Vec::new();
@@ -261,13 +259,12 @@ pub(super) fn branch_series(
             inside[0],
             inside[inside.len() - 1]
         ));
-        // the same model's colour, dashed: one model, two branches
+        // the same model's curve, dashed: one model, two branches
         out.push(DataSeries {
             name: format!("{label} (unloading)"),
-            style: SeriesStyle::Dashed,
+            style: Style::Dashed,
             points: pts,
-            colour,
-            shape: Shape::Circle,
+            kind,
         });
     }
     out

@@ -1,5 +1,5 @@
 //! Figure files: what a figure of \[S\] plots, as TOML (`figures/fig-N.toml`, built into the
-//! binary; any other file can be given by path). Parsed and validated like presets: unknown
+//! library; any other file can be given by path). Parsed and validated like presets: unknown
 //! or mistyped fields give one line naming the file, the line and the key.
 //!
 //! ```toml
@@ -39,12 +39,13 @@
 //! model = 1                     # (optional) the model it is of: drawn in that model's colour
 //! ```
 
-use asperity::error::{Error, Result};
-use asperity::input::preset::{toml_error_message, Preset};
+use crate::error::{Error, Result};
+use crate::input::model::{Model, ModelKind};
+use crate::input::preset::{toml_error_message, Preset};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
-/// The figures of \[S\] shipped with the binary: (id, file text).
+/// The figures of \[S\] built into the library: (id, file text).
 pub const BUILTIN: [(&str, &str); 9] = [
     ("1", include_str!("../../../figures/fig-1.toml")),
     ("2", include_str!("../../../figures/fig-2.toml")),
@@ -149,6 +150,22 @@ pub struct CurveSpec {
 }
 
 impl CurveSpec {
+    /// A curve of `kind` at the figure's scene, labelled `model N` or with the variant's name.
+    pub fn of_model(kind: ModelKind) -> Result<CurveSpec> {
+        let label = match kind.number() {
+            Some(n) => format!("model {n}"),
+            None => Model::of_kind(kind, &Model::named(1)?)?.label(),
+        };
+        Ok(CurveSpec {
+            label,
+            pressure: None,
+            thickness_qr: None,
+            gamma: None,
+            model: kind.number(),
+            variant: kind.number().is_none().then(|| kind.name().to_string()),
+        })
+    }
+
     /// The curve's overrides.
     pub fn overrides(&self) -> Overrides {
         Overrides {
@@ -271,11 +288,11 @@ impl FigureSpec {
 
     /// Reads a figure file.
     pub fn load(path: &Path) -> Result<FigureSpec> {
-        let text = asperity::input::file::read_text(
+        let text = crate::input::file::read_text(
             path,
             "figure",
-            asperity::error::Field::Other("figure".into()),
-            asperity::input::preset::MAX_TOML_BYTES,
+            crate::error::Field::Other("figure".into()),
+            crate::input::preset::MAX_TOML_BYTES,
             "a figure file in TOML",
         )?;
         FigureSpec::parse(&text, &path.display().to_string())
@@ -372,21 +389,21 @@ pub fn resolve(id_or_path: &str) -> Result<FigureSpec> {
     if p.is_file() {
         return FigureSpec::load(p);
     }
-    Err(Error::field("figure", asperity::error::fmt_text(id_or_path), allowed()))
+    Err(Error::field("figure", crate::error::fmt_text(id_or_path), allowed()))
 }
 /// The scene of a curve: the preset's, then the figure's overrides, then the curve's.
 pub fn curve_scene(
     preset: &Preset,
     fig: &Overrides,
     curve: &Overrides,
-) -> asperity::error::Result<asperity::input::scene::Scene> {
+) -> crate::error::Result<crate::input::scene::Scene> {
     // the curve's values over the figure's, validated once
     let pick = |f: fn(&Overrides) -> Option<f64>| f(curve).or(f(fig));
     let model = match curve.model.or(fig.model) {
-        Some(m) => Some(asperity::input::model::Model::named(m)?),
+        Some(m) => Some(Model::named(m)?),
         None => None,
     };
-    preset.scene()?.apply(&asperity::input::overrides::Overrides {
+    preset.scene()?.apply(&crate::input::overrides::Overrides {
         model,
         pressure: pick(|o| o.pressure),
         thickness_qr: pick(|o| o.thickness_qr),

@@ -3,15 +3,13 @@
 
 use super::compute::{curve_scene, gfmd_run, GfmdChoice};
 use super::spec::Overrides;
-use super::{DataPoint, DataSeries, FigureData};
-use crate::chart::{SeriesStyle, Shape};
-use crate::looks::{look, Role};
-use asperity::error::Result;
-use asperity::input::preset::Preset;
-use asperity::theory::engine::{self, Options};
+use super::{DataPoint, DataSeries, FigureData, RunProgress, SeriesKind, Style};
+use crate::error::Result;
+use crate::input::preset::Preset;
+use crate::theory::engine::{self, Options};
 use serde::Serialize;
 
-/// One line for `--list`.
+/// One line for the list of figures.
 pub const DESCRIPTION: &str =
     "Table 1: σ̄_c* and ⟨δσ_c²⟩* at p* = 0.01, models 1-3 against [S]'s values (system I, no adhesion)";
 
@@ -54,8 +52,8 @@ pub struct Table1 {
     pub notes: Vec<String>,
 }
 
-/// Computes Table 1 (GFMD on the chosen grid with `gfmd`).
-pub fn compute(gfmd: Option<GfmdChoice>) -> Result<Table1> {
+/// Computes Table 1 (GFMD on the chosen grid with `gfmd`, its run reporting to `progress`).
+pub fn compute(gfmd: Option<GfmdChoice>, progress: &mut dyn FnMut(RunProgress)) -> Result<Table1> {
     let preset = Preset::resolve("system-1")?;
     let fig = Overrides {
         pressure: Some(PRESSURE),
@@ -76,8 +74,7 @@ pub fn compute(gfmd: Option<GfmdChoice>) -> Result<Table1> {
     };
     if let Some(choice) = gfmd {
         let scene = curve_scene(&preset, &fig, &Overrides::default())?;
-        let mut steps = crate::cli::progress::Steps::new("figure", "GFMD run", 1);
-        match gfmd_run(&preset, &scene, choice, None, (&mut steps, 0)) {
+        match gfmd_run(&preset, &scene, (choice, None), (0, 1), progress) {
             Ok(r) => {
                 g.column = format!("{name} ({}²)", r.grid);
                 g.mean_contact_stress = Some(r.stats.mean_contact_stress);
@@ -119,54 +116,21 @@ pub fn compute(gfmd: Option<GfmdChoice>) -> Result<Table1> {
 }
 
 impl Table1 {
-    /// The table as \[S\] prints it, computed values above \[S\]'s.
-    pub fn table(&self) -> String {
-        let f = |x: Option<f64>| x.map_or("–".to_string(), |v| format!("{v:.4}"));
-        let mut out = format!(
-            "[S] Table 1: system I, no adhesion, semi-infinite, p* = {}\n\n",
-            self.pressure
-        );
-        out.push_str(&format!("{:<26}", ""));
-        for c in &self.columns {
-            out.push_str(&format!("{:>14}", c.column));
-        }
-        out.push('\n');
-        let mut row = |label: &str, get: &dyn Fn(&Column) -> String| {
-            out.push_str(&format!("{label:<26}"));
-            for c in &self.columns {
-                out.push_str(&format!("{:>14}", get(c)));
-            }
-            out.push('\n');
-        };
-        row("σ̄_c* (asperity)", &|c| f(c.mean_contact_stress));
-        row("σ̄_c* ([S])", &|c| format!("{:.4}", c.paper_mean_contact_stress));
-        row("⟨δσ_c²⟩* (asperity)", &|c| f(c.contact_stress_variance));
-        row("⟨δσ_c²⟩* ([S])", &|c| {
-            format!("{:.4}", c.paper_contact_stress_variance)
-        });
-        row("a_r (asperity)", &|c| f(c.a_r));
-        for n in &self.notes {
-            out.push_str(&format!("\n{n}"));
-        }
-        out.trim_end().to_string()
-    }
-
     /// CSV: one row per column.
     pub fn csv(&self) -> String {
-        let f = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v:e}"));
+        use crate::report::csv::{cell, opt_cell, text};
         let mut out = String::from(
             "column,mean_contact_stress,contact_stress_variance,a_r,paper_mean_contact_stress,paper_contact_stress_variance",
         );
         for c in &self.columns {
-            out.push_str(&format!(
-                "\n{},{},{},{},{:e},{:e}",
-                c.column,
-                f(c.mean_contact_stress),
-                f(c.contact_stress_variance),
-                f(c.a_r),
-                c.paper_mean_contact_stress,
-                c.paper_contact_stress_variance
-            ));
+            let computed = [c.mean_contact_stress, c.contact_stress_variance, c.a_r].map(opt_cell);
+            let paper = [c.paper_mean_contact_stress, c.paper_contact_stress_variance].map(cell);
+            out.push('\n');
+            out.push_str(
+                &[vec![text(&c.column)], computed.to_vec(), paper.to_vec()]
+                    .concat()
+                    .join(","),
+            );
         }
         out
     }
@@ -193,16 +157,12 @@ impl Table1 {
         ]
         .into_iter()
         .map(|(n, p)| DataSeries {
-            // asperity's values in the theory's colour (model 3's), [S]'s in the text colour
-            colour: if n.contains("[S]") {
-                look(Role::Reference, 0, 0).ink.rgb()
-            } else {
-                look(Role::Theory, 2, 0).ink.rgb()
+            kind: SeriesKind::Moments {
+                paper: n.contains("[S]"),
             },
             name: n.into(),
-            style: SeriesStyle::Points,
+            style: Style::Points,
             points: p,
-            shape: Shape::Circle,
         })
         .collect();
         FigureData {

@@ -1,30 +1,30 @@
 //! Computing a figure's data: the theory curves (the engine, each point as `run` computes
-//! it), the closed forms, the values \[S\] states, and with `--gfmd` the brute-force points.
+//! it), the closed forms (eq. (18) \[S-18, S-19\] and the small- and large-stress asymptotes
+//! of Pr(σ*)), the values \[S\] states, and when asked the brute-force GFMD points (one run
+//! per x value, or one Pr(σ*) histogram per curve scene), each run's progress passed to the
+//! caller as a [`RunProgress`].
 
 pub use super::curves::x_values;
 use super::curves::{branch_series, point, refine_axes, sample_at, sweep_curve, x_name, y_of};
 use super::refine::{self, Refined, Sample};
 use super::spec::{ClosedFormKind, FigureSpec, Overrides, XAxis, YAxis};
-use super::{DataPoint, DataSeries, FigureData};
-use crate::chart::{Rgb, SeriesStyle, Shape};
-use crate::cli::progress::Steps;
-use crate::looks::{look, model_colour, model_slot, Role, REFERENCE_MARKS};
-use asperity::error::{Error, Result};
-use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec};
-use asperity::input::model::Model;
-use asperity::input::preset::Preset;
-use asperity::input::scene::Scene;
-use asperity::surface::heightmap::Surface;
-use asperity::surface::spectrum::Spectrum;
-use asperity::theory::closed_form;
-use asperity::theory::engine::{self, Evaluation, Options};
+use super::{DataPoint, DataSeries, FigureData, RunProgress, SeriesKind, Style};
+use crate::error::{Error, Result};
+use crate::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec};
+use crate::input::model::{Model, ModelKind};
+use crate::input::preset::Preset;
+use crate::input::scene::Scene;
+use crate::surface::heightmap::Surface;
+use crate::surface::spectrum::Spectrum;
+use crate::theory::closed_form;
+use crate::theory::engine::{self, Evaluation, Options};
 use rayon::prelude::*;
 use std::sync::atomic::AtomicBool;
 
 pub use super::spec::curve_scene;
 
 /// A measured surface a figure is drawn for instead of its preset's self-affine spectrum
-/// (`figure --surface FILE` or `--psd FILE`): every theory curve uses `spectrum`; GFMD runs on
+/// (a height map or a PSD table): every theory curve uses `spectrum`; GFMD runs on
 /// `map`, which a PSD table does not have.
 #[derive(Debug, Clone)]
 pub struct Measured {
@@ -99,15 +99,21 @@ fn stress_curve(spec: &FigureSpec, scene: &Scene) -> Result<(Vec<DataPoint>, Eva
     Ok((pts, e))
 }
 
-/// Computes the figure's data (theory, closed forms, \[S\] values; GFMD when `gfmd` is given).
+/// Computes the figure's data (theory, closed forms, \[S\] values; GFMD when `gfmd` is given,
+/// without progress reports).
 pub fn compute(spec: &FigureSpec, gfmd: Option<GfmdChoice>) -> Result<FigureData> {
-    compute_on(spec, gfmd, None)
+    compute_on(spec, gfmd, None, &mut |_| {})
 }
 
 /// Computes the figure's data on a measured surface when `on` is given: the theory curves and
 /// closed forms of its spectrum, GFMD on its map; the values \[S\] states are of the paper's
-/// surfaces and are left out (with a note).
-pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measured>) -> Result<FigureData> {
+/// surfaces and are left out (with a note). The GFMD runs report to `progress`.
+pub fn compute_on(
+    spec: &FigureSpec,
+    gfmd: Option<GfmdChoice>,
+    on: Option<&Measured>,
+    progress: &mut dyn FnMut(RunProgress),
+) -> Result<FigureData> {
     let preset = Preset::resolve(&spec.preset)?;
     if gfmd.is_some() && on.is_some_and(|m| m.map.is_none()) {
         return Err(Error::field(
@@ -143,10 +149,10 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
             }
         })
         .collect::<Result<_>>()?;
-    let colours = curve_colours(&scenes);
+    let kinds = curve_kinds(&scenes);
     let mut widths: Vec<(u8, f64, f64)> = Vec::new(); // (model, p*, Δ*) for the asymptotes
     if spec.x == XAxis::Stress {
-        for ((c, scene), &colour) in spec.curve.iter().zip(&scenes).zip(&colours) {
+        for ((c, scene), &kind) in spec.curve.iter().zip(&scenes).zip(&kinds) {
             let points = match stress_curve(spec, scene) {
                 Ok((pts, e)) => {
                     data.notes.push(format!(
@@ -166,10 +172,9 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
             };
             data.series.push(DataSeries {
                 name: c.label.clone(),
-                style: SeriesStyle::Line,
+                style: Style::Line,
                 points,
-                colour,
-                shape: Shape::Circle,
+                kind,
             });
         }
     } else {
@@ -188,7 +193,7 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
             .zip(base)
             .map(|(scene, first)| refine::refine_from(first, &axes, &|x| sample_at(spec, scene, x)))
             .collect();
-        for ((c, &colour), refined) in spec.curve.iter().zip(&colours).zip(refined) {
+        for ((c, &kind), refined) in spec.curve.iter().zip(&kinds).zip(refined) {
             for s in refined.samples.iter().filter(|s| s.y.is_none()) {
                 data.notes.push(format!(
                     "{} at x = {:e}: no value ({})",
@@ -197,14 +202,21 @@ pub fn compute_on(spec: &FigureSpec, gfmd: Option<GfmdChoice>, on: Option<&Measu
                     s.note.as_deref().unwrap_or("unavailable")
                 ));
             }
-            let series = branch_series(&c.label, colour, &refined, &axes, x_name, &mut data.notes);
+            let series = branch_series(&c.label, kind, &refined, &axes, x_name, &mut data.notes);
             data.series.extend(series);
         }
     }
     closed_form_series(spec, &widths, &mut data);
     paper_series(spec, on, &mut data);
     if let Some(choice) = gfmd {
-        gfmd_series(spec, &preset, &scenes, choice, on, &mut data)?;
+        let runs = Runs {
+            spec,
+            preset: &preset,
+            scenes: &scenes,
+            choice,
+            on,
+        };
+        gfmd_series(runs, &mut data, progress)?;
     }
     Ok(data)
 }
@@ -244,17 +256,13 @@ fn closed_form_series(spec: &FigureSpec, widths: &[(u8, f64, f64)], data: &mut F
                     .collect()
             }
         };
-        let role = if cf.kind == ClosedFormKind::PrLargeStress {
-            Role::Closed2
-        } else {
-            Role::Closed
-        };
         data.series.push(DataSeries {
             name: cf.label.clone(),
-            style: SeriesStyle::Dashed,
+            style: Style::Dashed,
             points,
-            colour: role_colour(role),
-            shape: Shape::Circle,
+            kind: SeriesKind::ClosedForm {
+                second: cf.kind == ClosedFormKind::PrLargeStress,
+            },
         });
     }
 }
@@ -274,58 +282,58 @@ fn paper_series(spec: &FigureSpec, on: Option<&Measured>, data: &mut FigureData)
             labels.push(&pp.label);
         }
     }
-    for (k, l) in labels.into_iter().enumerate() {
-        // a value of a model in the model's colour, the others in the text colour
+    for (nth, l) in labels.into_iter().enumerate() {
+        // the model of the values where one of them names it
         let of = spec.paper.iter().filter(|p| p.label == l);
-        let colour = of
+        let model = of
             .clone()
             .find_map(|p| p.model)
-            .map_or(role_colour(Role::Reference), |m| {
-                model_colour(Model::named(m).map_or(4, |m| model_slot(&m)))
-            });
+            .and_then(|m| Model::named(m).ok())
+            .map(|m| m.kind);
         data.series.push(DataSeries {
             name: l.to_string(),
-            style: SeriesStyle::Points,
+            style: Style::Points,
             points: of.map(|p| point(p.x, Some(p.y), None)).collect(),
-            colour,
-            shape: REFERENCE_MARKS[k % REFERENCE_MARKS.len()].1,
+            kind: SeriesKind::Paper { model, nth },
         });
     }
 }
 
-/// The colour of each curve: its model's, and for a later curve of a model already drawn
-/// (Fig. 8: one model at several thicknesses) the pins' colours in turn, so the curves are
-/// told apart.
-fn curve_colours(scenes: &[Scene]) -> Vec<Rgb> {
-    let slots: Vec<usize> = scenes.iter().map(|s| model_slot(&s.model())).collect();
+/// What each curve is: its model's curve, numbered as a repeat where a curve of the same
+/// model came before (Fig. 8: one model at several thicknesses), so a front end can tell the
+/// curves apart.
+fn curve_kinds(scenes: &[Scene]) -> Vec<SeriesKind> {
+    let models: Vec<ModelKind> = scenes.iter().map(|s| s.model().kind).collect();
     let mut extra = 0;
-    slots
+    models
         .iter()
         .enumerate()
-        .map(|(i, &slot)| {
-            if slots[..i].contains(&slot) {
+        .map(|(i, &model)| {
+            let repeat = models[..i].contains(&model).then(|| {
                 extra += 1;
-                crate::looks::PIN_COLOURS[(extra - 1) % crate::looks::PIN_COLOURS.len()]
-            } else {
-                model_colour(slot)
-            }
+                extra - 1
+            });
+            SeriesKind::Theory { model, repeat }
         })
         .collect()
 }
 
-/// The file colour of a role ([`crate::looks`]).
-fn role_colour(role: Role) -> Rgb {
-    look(role, 0, 0).ink.rgb()
+/// The options of every GFMD run of a figure.
+pub fn gfmd_options() -> GfmdOptions {
+    GfmdOptions {
+        tolerance: 1e-8,
+        ..GfmdOptions::default()
+    }
 }
 
-/// One GFMD run of `scene` on the chosen grid, or on `map` where one is given: step `k` of
-/// `steps` (the figure's GFMD points).
+/// One GFMD run of `scene` on the chosen grid, or on `map` where one is given: run `run` of
+/// `runs` (the figure's GFMD points), reporting to `progress`.
 pub fn gfmd_run(
     preset: &Preset,
     scene: &Scene,
-    choice: GfmdChoice,
-    map: Option<&Surface>,
-    (steps, k): (&mut Steps, usize),
+    (choice, map): (GfmdChoice, Option<&Surface>),
+    (run, runs): (usize, usize),
+    progress: &mut dyn FnMut(RunProgress),
 ) -> Result<GfmdResult> {
     let grid = GridSpec::of_preset(preset, choice.grid.map(|n| n as i64))?;
     let setup = GfmdSetup {
@@ -336,31 +344,44 @@ pub fn gfmd_run(
         // the reduced grid keeps the full system's gamma_glo and Tabor parameter
         rescale: true,
     };
-    let opts = GfmdOptions {
-        tolerance: 1e-8,
-        ..GfmdOptions::default()
-    };
-    let label = crate::cli::progress::load_label(scene.pressure());
+    let pressure = scene.pressure();
     gfmd::run(
         &setup,
-        &opts,
-        &mut |p| crate::cli::gfmd::report(steps, k, &p, &opts, |_| Some(label.clone())),
+        &gfmd_options(),
+        &mut |solver| {
+            progress(RunProgress {
+                run,
+                runs,
+                pressure,
+                solver,
+            })
+        },
         &AtomicBool::new(false),
     )
 }
 
-/// A stress-axis figure's GFMD: Pr(σ*) of one run per distinct scene of the curves.
-fn gfmd_pr_series(
-    spec: &FigureSpec,
-    preset: &Preset,
-    scenes: &[Scene],
+/// What a figure's GFMD runs are of: the figure, its preset, the curves' scenes, the grid and
+/// seed, and the measured surface where there is one.
+#[derive(Clone, Copy)]
+struct Runs<'a> {
+    spec: &'a FigureSpec,
+    preset: &'a Preset,
+    scenes: &'a [Scene],
     choice: GfmdChoice,
-    on: Option<&Measured>,
-    data: &mut FigureData,
-) {
+    on: Option<&'a Measured>,
+}
+
+/// A stress-axis figure's GFMD: Pr(σ*) of one run per distinct scene of the curves.
+fn gfmd_pr_series(runs: Runs, data: &mut FigureData, progress: &mut dyn FnMut(RunProgress)) {
+    let Runs {
+        spec,
+        preset,
+        scenes,
+        choice,
+        on,
+    } = runs;
     let map = on.and_then(|m| m.map.as_ref());
     let mut done: Vec<(f64, f64, f64)> = Vec::new();
-    let mut steps = Steps::new("figure", "GFMD run", scenes.len());
     for (c, s) in spec.curve.iter().zip(scenes) {
         let key = (s.pressure(), s.thickness_qr(), s.surface_energy_j_m2());
         if !spec.gfmd || done.contains(&key) {
@@ -372,7 +393,7 @@ fn gfmd_pr_series(
         } else {
             format!("GFMD, {}", c.label)
         };
-        match gfmd_run(preset, s, choice, map, (&mut steps, done.len() - 1)) {
+        match gfmd_run(preset, s, (choice, map), (done.len() - 1, scenes.len()), progress) {
             Ok(r) => {
                 let map_words = match on {
                     Some(m) => format!("on {}", m.name()),
@@ -391,9 +412,8 @@ fn gfmd_pr_series(
                 ));
                 data.series.push(DataSeries {
                     name: format!("{name} ({}²)", r.grid),
-                    style: SeriesStyle::Points,
-                    colour: role_colour(Role::Gfmd),
-                    shape: look(Role::Gfmd, 0, 0).shape,
+                    style: Style::Points,
+                    kind: SeriesKind::Gfmd,
                     points: r
                         .stats
                         .pr
@@ -408,26 +428,27 @@ fn gfmd_pr_series(
     }
 }
 
-fn gfmd_series(
-    spec: &FigureSpec,
-    preset: &Preset,
-    scenes: &[Scene],
-    choice: GfmdChoice,
-    on: Option<&Measured>,
-    data: &mut FigureData,
-) -> Result<()> {
+/// A sweep figure's GFMD: one run at each x of `gfmd_at` (the theory on the same map beside
+/// it); a stress figure's: [`gfmd_pr_series`].
+fn gfmd_series(runs: Runs, data: &mut FigureData, progress: &mut dyn FnMut(RunProgress)) -> Result<()> {
+    let Runs {
+        spec,
+        preset,
+        choice,
+        on,
+        ..
+    } = runs;
     // GFMD does not depend on the model: the figure's scene without the curves' models
     let base = on_surface(curve_scene(preset, &spec.overrides(), &Overrides::default())?, on)?;
     let map = on.and_then(|m| m.map.as_ref());
     if spec.x == XAxis::Stress {
-        gfmd_pr_series(spec, preset, scenes, choice, on, data);
+        gfmd_pr_series(runs, data, progress);
         return Ok(());
     }
     let mut points = Vec::new();
     let mut on_map: Vec<DataPoint> = Vec::new();
     let mut grid = 0;
     let mut map_note = String::new();
-    let mut steps = Steps::new("figure", "GFMD run", spec.gfmd_at.len());
     for (k, &x) in spec.gfmd_at.iter().enumerate() {
         let s = match spec.x {
             XAxis::Pressure => base.clone().with_pressure(x),
@@ -435,7 +456,12 @@ fn gfmd_series(
             XAxis::Gamma => base.clone().with_surface_energy_j_m2(x),
             XAxis::Stress => Ok(base.clone()),
         };
-        let run = s.and_then(|s| Ok((gfmd_run(preset, &s, choice, map, (&mut steps, k))?, s)));
+        let run = s.and_then(|s| {
+            Ok((
+                gfmd_run(preset, &s, (choice, map), (k, spec.gfmd_at.len()), progress)?,
+                s,
+            ))
+        });
         match run {
             Ok((r, s)) => {
                 grid = r.grid;
@@ -493,18 +519,16 @@ fn gfmd_series(
         } else {
             "GFMD".into()
         },
-        style: SeriesStyle::Points,
+        style: Style::Points,
         points,
-        colour: role_colour(Role::Gfmd),
-        shape: look(Role::Gfmd, 0, 0).shape,
+        kind: SeriesKind::Gfmd,
     });
     if spec.y != YAxis::MeanGapRel {
         data.series.push(DataSeries {
             name: format!("theory on the GFMD map ({})", base.model().label()),
-            style: SeriesStyle::Points,
+            style: Style::Points,
             points: on_map,
-            colour: role_colour(Role::GfmdTheory),
-            shape: look(Role::GfmdTheory, 0, 0).shape,
+            kind: SeriesKind::GfmdTheory,
         });
     }
     Ok(())
