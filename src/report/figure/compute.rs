@@ -507,7 +507,7 @@ fn gfmd_series(runs: Runs, data: &mut FigureData, progress: &mut dyn FnMut(RunPr
                 m.name()
             ),
             None => format!(
-                "GFMD: {grid}² grid, {map_note} (the preset's reduced grid unless --grid), seed {}; the theory \
+                "GFMD: {grid}² grid, {map_note} (the preset's reduced grid unless another grid was asked for), seed {}; the theory \
                  curves are of the full spectrum, the \"theory on the GFMD map\" points of the map's own",
                 choice.seed
             ),

@@ -81,7 +81,7 @@ pub fn compute(gfmd: Option<GfmdChoice>, progress: &mut dyn FnMut(RunProgress)) 
                 g.contact_stress_variance = Some(r.stats.contact_stress_variance);
                 g.a_r = Some(r.stats.a_r);
                 notes.push(format!(
-                    "GFMD: {}² grid (the preset's reduced grid unless --grid; [S]: 65536²), seed {}",
+                    "GFMD: {}² grid (the preset's reduced grid unless another grid was asked for; [S]: 65536²), seed {}",
                     r.grid, choice.seed
                 ));
             }
