@@ -88,15 +88,7 @@ fn every_preset_key_refuses_hard_values_naming_the_key() {
     // every key the type serialises, with every option set
     let mut all = base.clone();
     all.surface.rms_height_m = Some(1e-6);
-    all.model = ModelSpec {
-        variant: Variant::Number(4),
-        c1: Some(0.0),
-        c2: Some(0.0),
-        alpha: Some(0.0),
-        k_griffith: Some(0.0),
-        cap: Some(true),
-        fudge_gamma: Some(1.0),
-    };
+    all.model = common::model_with_every_option();
     all.reference = vec![reference];
     let mut every = Vec::new();
     common::leaves(&toml::Value::try_from(&all).unwrap(), "", &mut every);

@@ -40,18 +40,10 @@ fn every_number_flag_names_a_field_of_the_table() {
 
 #[test]
 fn every_numeric_preset_key_is_a_field_of_the_table() {
-    use asperity::input::preset::{MeasuredSpec, ModelSpec, Preset, Variant};
+    use asperity::input::preset::{MeasuredSpec, Preset};
     let mut all = Preset::resolve("system-2").unwrap();
     all.surface.rms_height_m = Some(1e-6);
-    all.model = ModelSpec {
-        variant: Variant::Number(4),
-        c1: Some(0.0),
-        c2: Some(0.0),
-        alpha: Some(0.0),
-        k_griffith: Some(0.0),
-        cap: Some(true),
-        fudge_gamma: Some(1.0),
-    };
+    all.model = common::model_with_every_option();
     all.measured = Some(MeasuredSpec {
         size_m: Some(1e-6),
         q_min_per_m: Some(1e5),

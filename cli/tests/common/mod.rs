@@ -213,3 +213,17 @@ pub fn svg_texts(path: &std::path::Path) -> Vec<String> {
         .filter_map(|n| n.text().map(|t| t.trim().to_string()))
         .collect()
 }
+
+/// A preset's `[model]` with every option set (model 4's number, each coefficient, the cap
+/// and the fudge factor): a preset carrying it serialises every key of the table.
+pub fn model_with_every_option() -> asperity::input::preset::ModelSpec {
+    asperity::input::preset::ModelSpec {
+        variant: asperity::input::preset::Variant::Number(4),
+        c1: Some(0.0),
+        c2: Some(0.0),
+        alpha: Some(0.0),
+        k_griffith: Some(0.0),
+        cap: Some(true),
+        fudge_gamma: Some(1.0),
+    }
+}
