@@ -229,6 +229,13 @@ fn header<'a>(source: &str, recs: &'a [Record], known: &[&str], extra: &[&str]) 
     Ok((n, cols))
 }
 
+/// The rows after the header: (line, the line as written, cells).
+fn data_rows<'a>(recs: &'a [Record]) -> impl Iterator<Item = (usize, &'a str, Vec<&'a str>)> {
+    recs.iter()
+        .skip(1)
+        .map(|r| (r.line, r.text, r.cells.iter().map(String::as_str).collect()))
+}
+
 fn number(source: &str, line: usize, column: &str, s: &str, allowed: &str) -> Result<f64> {
     s.parse::<f64>()
         .ok()
@@ -286,14 +293,7 @@ pub fn parse_csv(text: &str, source: &str) -> Result<Reference> {
         }
     }
     let mut points = Vec::new();
-    for Record {
-        line: n,
-        text: l,
-        cells,
-    } in &recs[1..]
-    {
-        let (n, l) = (*n, *l);
-        let cells: Vec<&str> = cells.iter().map(String::as_str).collect();
+    for (n, l, cells) in data_rows(&recs) {
         if cells.len() != cols.len() {
             return Err(cell_error(
                 source,
@@ -370,14 +370,7 @@ pub fn parse_pr_csv(text: &str, source: &str) -> Result<Vec<Observation>> {
         ));
     }
     let mut out = Vec::new();
-    for Record {
-        line: n,
-        text: l,
-        cells,
-    } in &recs[1..]
-    {
-        let (n, l) = (*n, *l);
-        let cells: Vec<&str> = cells.iter().map(String::as_str).collect();
+    for (n, l, cells) in data_rows(&recs) {
         if cells.len() != 3 {
             return Err(cell_error(source, n, "(row)", l, "3 cells as in the header"));
         }
