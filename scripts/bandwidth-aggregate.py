@@ -8,52 +8,15 @@ gamma_glo of the reduced system, the mean and standard error s/sqrt(K) over the 
 a_r, mean_gap_rel, mean_contact_stress and contact_stress_variance, the theory (the preset's
 model 4) on the same maps (mean), and the wall seconds of the case's runs (wall_s).
 """
-import csv
-import glob
-import json
-import os
-import re
 import sys
 
-NAME = re.compile(r"(system-\d)-t([^-]+)-g([^-]+)-s(\d+)\.json$")
-OBS = ["a_r", "mean_gap_rel", "mean_contact_stress", "contact_stress_variance"]
-
-
-def mean_se(xs):
-    xs = [x for x in xs if x is not None]
-    if not xs:
-        return None, None
-    m = sum(xs) / len(xs)
-    if len(xs) < 2:
-        return m, None
-    var = sum((x - m) ** 2 for x in xs) / (len(xs) - 1)
-    return m, (var / len(xs)) ** 0.5
-
-
-def fmt(x):
-    return "" if x is None else f"{x:.10e}"
-
-
-def theory_at(run, p):
-    for r in (run.get("theory") or {}).get("rows", []):
-        if r["p"] and abs(r["p"] / p - 1) < 1e-9:
-            return r.get("a_r"), r.get("mean_gap_rel")
-    return None, None
+from gfmd_runs import OBS, fmt, mean_se, read_cases, theory_at, write_csv
 
 
 def main(set_csv, *runs_dirs):
     rows = []
     for runs_dir in runs_dirs:
-        cases = {}
-        for path in sorted(glob.glob(os.path.join(runs_dir, "*.json"))):
-            m = NAME.search(os.path.basename(path))
-            if not m:
-                continue
-            sys_, t, g, seed = m.groups()
-            with open(path) as fh:
-                cases.setdefault((sys_, t, g), []).append((int(seed), json.load(fh)))
-        for (sys_, t, g), runs in sorted(cases.items()):
-            runs.sort(key=lambda sr: sr[0])
+        for (sys_, t, g), runs in read_cases(runs_dir).items():
             grid = runs[0][1]["grid"]
             glo = ((runs[0][1].get("reduction") or {}).get("reduced") or {}).get("gamma_glo")
             loads = [r["p"] for r in runs[0][1]["rows"]]
@@ -73,10 +36,7 @@ def main(set_csv, *runs_dirs):
                 row["theory_mean_gap_rel"] = fmt(mean_se([x[1] for x in ths])[0])
                 row["wall_s"] = f"{sum(run['elapsed_s'] for _, run in runs):.1f}"
                 rows.append(row)
-    with open(set_csv, "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
+    write_csv(set_csv, rows)
     print(f"{len(rows)} rows -> {set_csv}", file=sys.stderr)
 
 

@@ -14,6 +14,8 @@ import csv
 import math
 import sys
 
+from gfmd_runs import write_csv
+
 
 def read(path):
     try:
@@ -48,10 +50,7 @@ def main(l2, l2_cases, l4, l8, out, l16=None):
         rows.append(row)
     fields = ["system", "thickness_qr", "gamma_factor", "gamma_glo", "p", "a_r_L2", "a_r_L2_err",
               "a_r_L4", "a_r_L4_err", "a_r_L8", "a_r_L8_err", "log_error", "a_r_L16", "a_r_L16_err"]
-    with open(out, "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=fields)
-        w.writeheader()
-        w.writerows(rows)
+    write_csv(out, rows, fields)
     print(f"{len(rows)} rows -> {out}", file=sys.stderr)
     print("| t·q_r | γ_s × | p* | a_r at L/λ_r = 2 | 4 | 8 | 16 | \\|ln(a_r(2)/a_r(largest))\\| |")
     print("|---|---|---|---|---|---|---|---|")

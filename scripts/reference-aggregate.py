@@ -11,56 +11,15 @@ PULL_OFF_CSV: per (system, thickness_qr, gamma_factor) the pull-off p* and jump-
 PER_SEED_CSV: every row of every run (seed, step, branch, p and the observables), and each
 run's pull-off as a row with branch `pull_off`.
 """
-import csv
-import glob
-import json
-import math
-import os
-import re
 import sys
 
-NAME = re.compile(r"(system-\d)-t([^-]+)-g([^-]+)-s(\d+)\.json$")
-OBS = ["a_r", "mean_gap_rel", "mean_contact_stress", "contact_stress_variance"]
-
-
-def mean_se(xs):
-    xs = [x for x in xs if x is not None and math.isfinite(x)]
-    if not xs:
-        return None, None
-    m = sum(xs) / len(xs)
-    if len(xs) < 2:
-        return m, None
-    var = sum((x - m) ** 2 for x in xs) / (len(xs) - 1)
-    return m, math.sqrt(var / len(xs))
-
-
-def fmt(x):
-    return "" if x is None else f"{x:.10e}"
-
-
-def theory_at(run, p, branch):
-    th = run.get("theory") or {}
-    for r in th.get("rows", []):
-        if r["p"] and abs(r["p"] / p - 1) < 1e-9:
-            if branch == "unloading" and r.get("a_r_unloading") is not None:
-                return r["a_r_unloading"], r.get("mean_gap_unloading_rel")
-            return r.get("a_r"), r.get("mean_gap_rel")
-    return None, None
+from gfmd_runs import OBS, fmt, mean_se, read_cases, theory_at, write_csv
 
 
 def main(runs_dir, set_csv, pull_csv, seed_csv=None):
-    cases = {}
-    for path in sorted(glob.glob(os.path.join(runs_dir, "*.json"))):
-        m = NAME.search(os.path.basename(path))
-        if not m:
-            continue
-        sys_, t, g, seed = m.groups()
-        with open(path) as fh:
-            run = json.load(fh)
-        cases.setdefault((sys_, t, g), []).append((int(seed), run))
+    cases = read_cases(runs_dir)
     set_rows, pull_rows, seed_rows = [], [], []
-    for (sys_, t, g), runs in sorted(cases.items()):
-        runs.sort(key=lambda sr: sr[0])
+    for (sys_, t, g), runs in cases.items():
         k = len(runs)
         for seed, run in runs:
             for i, r in enumerate(run["rows"]):
@@ -107,10 +66,7 @@ def main(runs_dir, set_csv, pull_csv, seed_csv=None):
     for path, rows in ((set_csv, set_rows), (pull_csv, pull_rows), (seed_csv, seed_rows)):
         if not rows or not path:
             continue
-        with open(path, "w", newline="") as fh:
-            w = csv.DictWriter(fh, fieldnames=list(rows[0].keys()))
-            w.writeheader()
-            w.writerows(rows)
+        write_csv(path, rows)
     print(f"{len(cases)} cases, {len(set_rows)} rows -> {set_csv}; pull-off -> {pull_csv}", file=sys.stderr)
 
 

@@ -12,9 +12,7 @@ cd "$(dirname "$0")/.."
 OUT=${1:-data/reference}
 GRID=${2:-256}
 SEEDS=${3:-3}
-JOBS=${JOBS:-2}
-BIN=${ASPERITY:-target/release/asperity}
-[ -x "$BIN" ] || cargo build --release -q -p asperity-cli
+source scripts/gfmd-cases.sh
 RUNS="$OUT/runs-$GRID"
 mkdir -p "$RUNS"
 G2=0.157  # system II's gamma_s (J/m^2)
@@ -29,21 +27,12 @@ for seed in $(seq 1 "$SEEDS"); do
 done
 run_case() {
   local sys=$1 t=$2 f=$3 seed=$4
-  local file="$RUNS/$sys-t$t-g$f-s$seed.json"
-  [ -s "$file" ] && return 0
   local g0; g0=$([ "$sys" = system-2 ] && echo $G2 || echo 0.05)
-  local gamma; gamma=$(python3 -c "print($g0*$f)")
-  local t0; t0=$(date +%s.%N)
-  if "$BIN" gfmd --preset "$sys" --thickness "$t" --gamma "$gamma" --grid "$GRID" --seed "$seed" \
-      --cycle --from 1e-4 --to 1e-2 --points 7 --format json > "$file.tmp" 2> "$file.err"; then
-    mv "$file.tmp" "$file"
-  else
-    mv "$file.tmp" "$file.failed"
-  fi
-  echo "$sys t=$t gamma x$f seed $seed: $(python3 -c "import time;print(round(time.time()-$t0,1))") s" >&2
+  gfmd_case "$RUNS/$sys-t$t-g$f-s$seed.json" "$sys t=$t gamma x$f seed $seed" --preset "$sys" \
+    --thickness "$t" --gamma "$(python3 -c "print($g0*$f)")" --grid "$GRID" --seed "$seed" \
+    --cycle --from 1e-4 --to 1e-2 --points 7
 }
-export -f run_case
-export BIN RUNS G2 GRID
-printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case $0 $1 $2 $3'
+export RUNS G2 GRID
+run_cases run_case "${cases[@]}"
 python3 scripts/reference-aggregate.py "$RUNS" "$OUT/reference-set-$GRID.csv" "$OUT/pull-off-$GRID.csv" \
   "$OUT/runs-$GRID.csv"

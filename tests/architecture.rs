@@ -7,6 +7,10 @@
 //! that exists. Re-export shims (`pub use crate::x` as the only reference) count as edges too,
 //! so a cycle cannot hide behind one.
 
+#[path = "support/module_graph.rs"]
+mod module_graph;
+
+use module_graph::{find_cycle, paths_after, resolve, rust_files};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
@@ -14,27 +18,8 @@ fn src_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
 }
 
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let p = entry.unwrap().path();
-        if p.is_dir() {
-            rust_files(&p, out);
-        } else if p.extension().is_some_and(|e| e == "rs") {
-            out.push(p);
-        }
-    }
-}
-
-/// `src/theory/gap.rs` → "theory::gap"; `src/gfmd/mod.rs` → "gfmd"; `src/lib.rs` → "".
 fn module_of(path: &Path) -> String {
-    let rel = path.strip_prefix(src_dir()).unwrap();
-    let mut parts: Vec<String> = rel.iter().map(|c| c.to_string_lossy().into_owned()).collect();
-    let last = parts.pop().unwrap();
-    let stem = last.trim_end_matches(".rs");
-    if stem != "mod" && stem != "lib" {
-        parts.push(stem.to_string());
-    }
-    parts.join("::")
+    module_graph::module_of(&src_dir(), path)
 }
 
 /// Code without comments (line and doc comments), so doc links do not count as imports.
@@ -48,39 +33,6 @@ fn code_of(text: &str) -> String {
         .join("\n")
 }
 
-/// Every `crate::a::b::…` path in `code`, expanded over one level of `{…}` groups.
-fn crate_paths(code: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut rest = code;
-    while let Some(i) = rest.find("crate::") {
-        rest = &rest[i + "crate::".len()..];
-        let end = rest
-            .find(|c: char| {
-                !(c.is_alphanumeric()
-                    || c == '_'
-                    || c == ':'
-                    || c == '{'
-                    || c == '}'
-                    || c == ','
-                    || c == ' '
-                    || c == '\n')
-            })
-            .unwrap_or(rest.len());
-        let path = &rest[..end];
-        match path.find('{') {
-            Some(b) => {
-                let head = &path[..b];
-                let inner = path[b + 1..].split('}').next().unwrap_or("");
-                for item in inner.split(',') {
-                    out.push(format!("{head}{}", item.trim()));
-                }
-            }
-            None => out.push(path.split([' ', '\n', ',', '}']).next().unwrap_or("").to_string()),
-        }
-    }
-    out
-}
-
 fn graph() -> BTreeMap<String, BTreeSet<String>> {
     let mut files = Vec::new();
     rust_files(&src_dir(), &mut files);
@@ -91,14 +43,9 @@ fn graph() -> BTreeMap<String, BTreeSet<String>> {
         let code = code_of(&std::fs::read_to_string(f).unwrap());
         // tests inside a module may reach anywhere; they are not part of the layering
         let code = code.split("#[cfg(test)]").next().unwrap_or("").to_string();
-        for path in crate_paths(&code) {
+        for path in paths_after(&code, "crate::") {
             // the longest prefix that is a module
-            let segs: Vec<&str> = path.split("::").filter(|s| !s.is_empty()).collect();
-            let target = (1..=segs.len())
-                .rev()
-                .map(|k| segs[..k].join("::"))
-                .find(|m| modules.contains(m));
-            if let Some(to) = target {
+            if let Some(to) = resolve(&path, &modules) {
                 if to != from && !from.starts_with(&format!("{to}::")) && !to.starts_with(&format!("{from}::")) {
                     g.entry(from.clone()).or_default().insert(to);
                 }
@@ -106,48 +53,6 @@ fn graph() -> BTreeMap<String, BTreeSet<String>> {
         }
     }
     g
-}
-
-fn find_cycle(g: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
-    // depth-first search with colours
-    fn visit(
-        n: &str,
-        g: &BTreeMap<String, BTreeSet<String>>,
-        state: &mut BTreeMap<String, u8>,
-        stack: &mut Vec<String>,
-    ) -> Option<Vec<String>> {
-        state.insert(n.to_string(), 1);
-        stack.push(n.to_string());
-        for m in g.get(n).into_iter().flatten() {
-            match state.get(m.as_str()).copied().unwrap_or(0) {
-                1 => {
-                    let i = stack.iter().position(|s| s == m).unwrap();
-                    let mut c = stack[i..].to_vec();
-                    c.push(m.clone());
-                    return Some(c);
-                }
-                0 => {
-                    if let Some(c) = visit(m, g, state, stack) {
-                        return Some(c);
-                    }
-                }
-                _ => {}
-            }
-        }
-        stack.pop();
-        state.insert(n.to_string(), 2);
-        None
-    }
-    let mut state = BTreeMap::new();
-    for n in g.keys() {
-        if state.get(n.as_str()).copied().unwrap_or(0) == 0 {
-            let mut stack = Vec::new();
-            if let Some(c) = visit(n, g, &mut state, &mut stack) {
-                return Some(c);
-            }
-        }
-    }
-    None
 }
 
 #[test]
@@ -159,7 +64,10 @@ fn the_cycle_finder_finds_a_planted_cycle() {
     g.entry("c".into()).or_default().insert("a".into());
     assert_eq!(find_cycle(&g).map(|c| c.len()), Some(4));
     assert_eq!(
-        crate_paths("use crate::theory::{gap::X, loads};\nlet y = crate::error::Field::Hurst;"),
+        paths_after(
+            "use crate::theory::{gap::X, loads};\nlet y = crate::error::Field::Hurst;",
+            "crate::"
+        ),
         vec!["theory::gap::X", "theory::loads", "error::Field::Hurst"]
     );
 }

@@ -6,26 +6,16 @@
 //! level whose first word ends in `/` (a folder, its entries one level deeper) or `.rs` (a
 //! file); a line indented deeper than the next level is a description's continuation.
 
+#[path = "support/module_graph.rs"]
+mod module_graph;
+
 use std::collections::BTreeSet;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 const ROOTS: [&str; 3] = ["src/", "cli/src/", "python/src/"];
 
 fn repo() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// Every `.rs` file under `dir`, as a path relative to the repository root with `/`.
-fn rust_files(dir: &Path, out: &mut BTreeSet<String>) {
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let p = entry.unwrap().path();
-        if p.is_dir() {
-            rust_files(&p, out);
-        } else if p.extension().is_some_and(|e| e == "rs") {
-            let rel = p.strip_prefix(repo()).unwrap();
-            out.insert(rel.to_string_lossy().replace('\\', "/"));
-        }
-    }
 }
 
 /// The files a code-map block names, as paths relative to the repository root.
@@ -89,10 +79,15 @@ fn the_code_map_names_every_source_file_and_no_other() {
         ROOTS.iter().map(|r| r.to_string()).collect(),
         "docs/README.md has a code-map block for each source tree"
     );
-    let mut tree = BTreeSet::new();
+    let mut files = Vec::new();
     for r in ROOTS {
-        rust_files(&repo().join(r), &mut tree);
+        module_graph::rust_files(&repo().join(r), &mut files);
     }
+    // as paths relative to the repository root, with `/`
+    let tree: BTreeSet<String> = files
+        .iter()
+        .map(|p| p.strip_prefix(repo()).unwrap().to_string_lossy().replace('\\', "/"))
+        .collect();
     let missing: Vec<_> = tree.difference(&named).collect();
     let stale: Vec<_> = named.difference(&tree).collect();
     assert!(

@@ -5,7 +5,7 @@
 
 mod common;
 
-use asperity::gfmd::cycle::{run_cycle, CycleSpec, PathBranch};
+use asperity::gfmd::cycle::{run_cycle, CycleSpec, GfmdCycle, PathBranch};
 use asperity::gfmd::{GfmdOptions, GfmdSetup, GridSpec};
 use asperity::tolerances::GFMD_RETRACE_A_R;
 use std::sync::atomic::AtomicBool;
@@ -19,14 +19,23 @@ fn small() -> GridSpec {
     }
 }
 
-fn setup(scene: asperity::input::scene::Scene, seed: u64) -> GfmdSetup {
-    GfmdSetup {
+/// GFMD's load path `spec` on `scene`'s 64² map of seed `seed`, default options.
+fn path_of(scene: asperity::input::scene::Scene, seed: u64, spec: &CycleSpec) -> GfmdCycle {
+    let setup = GfmdSetup {
         scene,
         grid: small(),
         seed,
         surface: None,
         rescale: true,
-    }
+    };
+    run_cycle(
+        &setup,
+        spec,
+        &GfmdOptions::default(),
+        &mut |_, _| {},
+        &AtomicBool::new(false),
+    )
+    .unwrap()
 }
 
 fn cycle(from: f64, to: f64, points: usize) -> CycleSpec {
@@ -45,14 +54,7 @@ fn without_adhesion_unloading_retraces_loading() {
             .without_adhesion()
             .with_thickness_qr(t)
             .unwrap();
-        let c = run_cycle(
-            &setup(scene, 3),
-            &cycle(0.005, 0.05, 4),
-            &GfmdOptions::default(),
-            &mut |_, _| {},
-            &AtomicBool::new(false),
-        )
-        .unwrap();
+        let c = path_of(scene, 3, &cycle(0.005, 0.05, 4));
         let load: Vec<_> = c.rows.iter().filter(|r| r.branch == PathBranch::Loading).collect();
         let unload: Vec<_> = c.rows.iter().filter(|r| r.branch == PathBranch::Unloading).collect();
         assert_eq!(load.len(), 4);
@@ -78,14 +80,7 @@ fn without_adhesion_unloading_retraces_loading() {
 fn with_adhesion_unloading_keeps_more_contact_and_pulls_off_under_tension() {
     for t in [f64::INFINITY, 0.3] {
         let scene = common::preset("system-2").with_thickness_qr(t).unwrap();
-        let c = run_cycle(
-            &setup(scene, 1),
-            &cycle(0.002, 0.02, 3),
-            &GfmdOptions::default(),
-            &mut |_, _| {},
-            &AtomicBool::new(false),
-        )
-        .unwrap();
+        let c = path_of(scene, 1, &cycle(0.002, 0.02, 3));
         let load: Vec<_> = c.rows.iter().filter(|r| r.branch == PathBranch::Loading).collect();
         for u in c.rows.iter().filter(|r| r.branch == PathBranch::Unloading) {
             if let Some(l) = load.iter().find(|l| l.row.p == u.row.p) {
@@ -122,14 +117,7 @@ fn a_plain_sweep_downwards_unloads() {
         points: 3,
         cycle: false,
     };
-    let c = run_cycle(
-        &setup(scene, 2),
-        &spec,
-        &GfmdOptions::default(),
-        &mut |_, _| {},
-        &AtomicBool::new(false),
-    )
-    .unwrap();
+    let c = path_of(scene, 2, &spec);
     let ps: Vec<f64> = c.rows.iter().map(|r| r.row.p).collect();
     assert_eq!(ps.len(), 3);
     assert!(ps.windows(2).all(|w| w[1] < w[0]), "{ps:?}");

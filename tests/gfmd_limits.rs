@@ -141,6 +141,15 @@ fn seeds_are_independent_and_the_standard_error_shrinks() {
     assert!((e8.a_r.mean - e32.a_r.mean).abs() < 3.0 * e8.a_r.standard_error.unwrap());
 }
 
+/// GFMD's single run of `setup` at p* = `p` (the reference a sweep's row is checked against).
+fn single_run(setup: &GfmdSetup, p: f64, o: &GfmdOptions) -> gfmd::GfmdResult {
+    let setup = GfmdSetup {
+        scene: setup.scene.clone().with_pressure(p).unwrap(),
+        ..setup.clone()
+    };
+    gfmd::run(&setup, o, &mut |_| {}, &AtomicBool::new(false)).unwrap()
+}
+
 /// A warm-started sweep gives the single runs' answers to the solver tolerance (no adhesion:
 /// one minimum per load).
 #[test]
@@ -156,16 +165,7 @@ fn sweep_equals_single_runs() {
     let sw = run_sweep(&setup, &spec, &o, &mut |_, _| {}, &cancel).unwrap();
     let n2 = (sw.grid * sw.grid) as f64;
     for (row, p) in sw.rows.iter().zip(spec.pressures()) {
-        let single = gfmd::run(
-            &GfmdSetup {
-                scene: setup.scene.clone().with_pressure(p).unwrap(),
-                ..setup.clone()
-            },
-            &o,
-            &mut |_| {},
-            &cancel,
-        )
-        .unwrap();
+        let single = single_run(&setup, p, &o);
         eprintln!(
             "p* = {p:.3e}: a_r {} vs {}, u {} vs {}, steps {} vs {}",
             row.a_r, single.stats.a_r, row.mean_gap_rel, single.mean_gap_rel, row.iterations, single.iterations
@@ -207,16 +207,7 @@ fn small_steps_cost_what_single_runs_cost() {
     let sw = run_sweep(&setup, &spec, &o, &mut |_, _| {}, &cancel).unwrap();
     let rel = |a: f64, b: f64| (a / b - 1.0).abs();
     for (row, p) in sw.rows.iter().zip(spec.pressures()) {
-        let single = gfmd::run(
-            &GfmdSetup {
-                scene: setup.scene.clone().with_pressure(p).unwrap(),
-                ..setup.clone()
-            },
-            &o,
-            &mut |_| {},
-            &cancel,
-        )
-        .unwrap();
+        let single = single_run(&setup, p, &o);
         eprintln!(
             "p* = {p:.4e}: a_r {} vs {}, steps {} vs {}",
             row.a_r, single.stats.a_r, row.iterations, single.iterations

@@ -95,34 +95,7 @@ fn model1_is_erf_sqrt2_p() {
 /// autonomous, so G(v) = 4∫₀^v W(a(v'))^{−2α} dv' and v(q_s) solves G(v) = 1. Integrated here
 /// with Simpson's rule in ln v' and bisection, sharing no code with the ODE solver.
 fn oracle_variance(model: &Model, p: f64) -> f64 {
-    let g_of = |v: f64| -> f64 {
-        let lo = (1e-12 * p * p).min(1e-14 * v);
-        // below lo, a = 1 and W = 1: contributes 4·lo
-        let n = 4000;
-        let (a, b) = (lo.ln(), v.ln());
-        let h = (b - a) / n as f64;
-        let integrand = |y: f64| {
-            let vv = y.exp();
-            let ar = erf(p / (2.0 * vv).sqrt());
-            let w = model.w(ar).max(0.0);
-            vv * w.powf(-2.0 * model.alpha)
-        };
-        let mut s = integrand(a) + integrand(b);
-        for i in 1..n {
-            s += integrand(a + i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
-        }
-        4.0 * (lo + s * h / 3.0)
-    };
-    let (mut lo, mut hi) = (1e-6f64, 10.0f64);
-    for _ in 0..200 {
-        let mid = (lo * hi).sqrt();
-        if g_of(mid) > 1.0 {
-            hi = mid
-        } else {
-            lo = mid
-        }
-    }
-    (lo * hi).sqrt()
+    common::autonomous_variance(p, |a| model.w(a).max(0.0).powf(-2.0 * model.alpha))
 }
 
 #[test]

@@ -24,32 +24,7 @@ fn solve(s: &Scene) -> persson::Solution {
 /// v(q_s) solves 4∫₀^v dv'/S(a(v')) = 1, S(a) = γ_f + (1 − γ_f)a², a = erf(p/√(2v)).
 /// Simpson in ln v' and bisection.
 fn yp08_oracle(gamma_f: f64, p: f64) -> f64 {
-    let g_of = |v: f64| -> f64 {
-        let lo = (1e-12 * p * p).min(1e-14 * v);
-        let n = 4000;
-        let (a, b) = (lo.ln(), v.ln());
-        let h = (b - a) / n as f64;
-        let f = |y: f64| {
-            let vv = y.exp();
-            let ar = erf(p / (2.0 * vv).sqrt());
-            vv / (gamma_f + (1.0 - gamma_f) * ar * ar)
-        };
-        let mut s = f(a) + f(b);
-        for i in 1..n {
-            s += f(a + i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
-        }
-        4.0 * (lo + s * h / 3.0)
-    };
-    let (mut lo, mut hi) = (1e-6f64, 10.0f64);
-    for _ in 0..200 {
-        let mid = (lo * hi).sqrt();
-        if g_of(mid) > 1.0 {
-            hi = mid
-        } else {
-            lo = mid
-        }
-    }
-    (lo * hi).sqrt()
+    common::autonomous_variance(p, |a| 1.0 / (gamma_f + (1.0 - gamma_f) * a * a))
 }
 
 #[test]

@@ -19,7 +19,7 @@
 mod common;
 
 use asperity_cli::cli::flags::{self, Kind};
-use common::corpus::{allowed, context, run_forbidden, scratch, write_map, Ran};
+use common::corpus::{allowed, context, npy, run_forbidden, scratch, write_map, Ran};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -176,20 +176,6 @@ fn flag_cases(dir: &Path, out: &Path, map: &str) -> Vec<Case> {
         }
     }
     cases
-}
-
-/// A NumPy file: the header (dict text) and `data`, as version 1.0.
-fn npy(header: &str, data: &[u8]) -> Vec<u8> {
-    let mut h = header.to_string();
-    while !(10 + h.len() + 1).is_multiple_of(64) {
-        h.push(' ');
-    }
-    h.push('\n');
-    let mut b = b"\x93NUMPY\x01\x00".to_vec();
-    b.extend((h.len() as u16).to_le_bytes());
-    b.extend(h.as_bytes());
-    b.extend(data);
-    b
 }
 
 /// The hard files, by kind, each with the extension `ext`: (kind, path).

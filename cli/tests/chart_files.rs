@@ -1,6 +1,8 @@
 //! The chart renderer's files: SVG parses as XML and names every series; PNG is a PNG of the
 //! promised size; empty and gappy series do not break either.
 
+mod common;
+
 use asperity_cli::chart::{write_png, write_svg, Chart, Rgb, Scale, Series, SeriesStyle, Shape, PNG_SIZE};
 use asperity_cli::looks::{look, model_colour, Role};
 
@@ -63,14 +65,8 @@ fn svg_is_xml_and_names_every_series() {
     for (xl, yl) in [(false, false), (true, false), (false, true), (true, true)] {
         let path = tmp(&format!("c-{xl}-{yl}.svg"));
         write_svg(&spec(xl, yl), &path).unwrap();
+        let texts = common::svg_texts(&path);
         let text = std::fs::read_to_string(&path).unwrap();
-        let doc = roxmltree::Document::parse(&text).expect("SVG parses as XML");
-        assert_eq!(doc.root_element().tag_name().name(), "svg");
-        let texts: Vec<String> = doc
-            .descendants()
-            .filter(|n| n.has_tag_name("text"))
-            .filter_map(|n| n.text().map(|t| t.trim().to_string()))
-            .collect();
         for name in [
             "model 3",
             "eq. (18)",
@@ -171,13 +167,7 @@ fn file_ticks_are_the_shared_round_values() {
     ));
     let path = tmp("ticks.svg");
     write_svg(&c, &path).unwrap();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let doc = roxmltree::Document::parse(&text).unwrap();
-    let texts: Vec<String> = doc
-        .descendants()
-        .filter(|n| n.has_tag_name("text"))
-        .filter_map(|n| n.text().map(|t| t.trim().to_string()))
-        .collect();
+    let texts = common::svg_texts(&path);
     let values = asperity_cli::numfmt::nice_ticks(-0.05, 1.05, false, 8);
     assert_eq!(values, [0.0, 0.2, 0.4, 0.6, 0.8, 1.0]);
     for v in values.into_iter().chain([1e-3, 1e-2, 0.1]) {

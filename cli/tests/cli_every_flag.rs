@@ -13,7 +13,7 @@
 mod common;
 
 use asperity_cli::cli::flags;
-use common::corpus::{allowed, context, run_forbidden, scratch, write_map};
+use common::corpus::{allowed, context, npy, run_forbidden, scratch, write_map};
 use std::path::Path;
 
 /// Runs the binary with work forbidden; returns (exit code, stdout, stderr, work started).
@@ -153,20 +153,6 @@ fn file(dir: &Path, name: &str, bytes: &[u8]) -> String {
     let p = dir.join(name);
     std::fs::write(&p, bytes).unwrap();
     p.display().to_string()
-}
-
-/// A NumPy file: the header (dict text) and `data`, as version 1.0.
-fn npy(header: &str, data: &[u8]) -> Vec<u8> {
-    let mut h = header.to_string();
-    while !(10 + h.len() + 1).is_multiple_of(64) {
-        h.push(' ');
-    }
-    h.push('\n');
-    let mut b = b"\x93NUMPY\x01\x00".to_vec();
-    b.extend((h.len() as u16).to_le_bytes());
-    b.extend(h.as_bytes());
-    b.extend(data);
-    b
 }
 
 #[test]

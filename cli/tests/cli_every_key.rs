@@ -3,32 +3,9 @@
 //! true): the binary refuses the file in one line naming the key, with exit code 2 and no
 //! computation started (`ASPERITY_FORBID_WORK`), or the value is valid for that key.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
 
-/// A scratch folder of this test process.
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("asperity-every-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-/// `asperity ARGS` with work forbidden and stdin closed: (exit code, stdout, stderr).
-fn run(args: &[String], log: &Path) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .env(asperity_cli::cli::FORBID_WORK_ENV, "1")
-        .env(asperity_cli::cli::WORK_LOG_ENV, log)
-        .stdin(std::process::Stdio::null())
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use common::corpus::{run_forbidden, scratch, Ran};
 
 /// The hard values, as TOML values.
 fn hard_values() -> Vec<toml::Value> {
@@ -43,29 +20,6 @@ fn hard_values() -> Vec<toml::Value> {
         toml::Value::Float(-1e-300),
         toml::Value::Boolean(true),
     ]
-}
-
-/// The leaf keys of a preset as its `Serialize` gives them (dotted; `reference.0.value` for the
-/// first `[[reference]]` entry), with their TOML values.
-fn leaves(v: &toml::Value, prefix: &str, out: &mut Vec<(String, toml::Value)>) {
-    match v {
-        toml::Value::Table(t) => {
-            for (k, x) in t {
-                let p = if prefix.is_empty() {
-                    k.clone()
-                } else {
-                    format!("{prefix}.{k}")
-                };
-                leaves(x, &p, out);
-            }
-        }
-        toml::Value::Array(a) if a.iter().all(|x| x.is_table()) => {
-            for (i, x) in a.iter().enumerate() {
-                leaves(x, &format!("{prefix}.{i}"), out);
-            }
-        }
-        _ => out.push((prefix.to_string(), v.clone())),
-    }
 }
 
 /// `v` with the leaf at dotted `path` set to `x`.
@@ -134,24 +88,16 @@ fn every_preset_key_refuses_hard_values_naming_the_key() {
     // every key the type serialises, with every option set
     let mut all = base.clone();
     all.surface.rms_height_m = Some(1e-6);
-    all.model = ModelSpec {
-        variant: Variant::Number(4),
-        c1: Some(0.0),
-        c2: Some(0.0),
-        alpha: Some(0.0),
-        k_griffith: Some(0.0),
-        cap: Some(true),
-        fudge_gamma: Some(1.0),
-    };
+    all.model = common::model_with_every_option();
     all.reference = vec![reference];
     let mut every = Vec::new();
-    leaves(&toml::Value::try_from(&all).unwrap(), "", &mut every);
+    common::leaves(&toml::Value::try_from(&all).unwrap(), "", &mut every);
     let mut covered = std::collections::BTreeSet::new();
     let hard: Vec<toml::Value> = hard_values();
     let (mut n, mut broken) = (0, Vec::new());
     for b in &bases {
         let mut keys = Vec::new();
-        leaves(b, "", &mut keys);
+        common::leaves(b, "", &mut keys);
         for (key, _) in &keys {
             // each key once: the second preset adds the keys the first lacks
             if !covered.insert(key.clone()) {
@@ -165,7 +111,7 @@ fn every_preset_key_refuses_hard_values_naming_the_key() {
                 std::fs::write(&p, text).unwrap();
                 n += 1;
                 let args = vec!["run".to_string(), "--preset".into(), p.display().to_string()];
-                let (code, out, err) = run(&args, &log);
+                let Ran { code, out, err, .. } = run_forbidden(&args, &log);
                 let line = err.trim_end();
                 let accepted = line.contains("work was forbidden");
                 let refused = code == 2
@@ -205,7 +151,7 @@ fn every_tour_key_refuses_hard_values_naming_the_key() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../tours/wang-muser.toml");
     let tour: toml::Value = toml::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     let mut keys = Vec::new();
-    leaves(&tour, "", &mut keys);
+    common::leaves(&tour, "", &mut keys);
     let mut seen = std::collections::BTreeSet::new();
     let mut known = std::collections::BTreeSet::new();
     let hard: Vec<toml::Value> = hard_values();
@@ -221,7 +167,7 @@ fn every_tour_key_refuses_hard_values_naming_the_key() {
             let p = dir.join("tour.toml");
             std::fs::write(&p, toml::to_string(&replaced(&tour, key, bad.clone())).unwrap()).unwrap();
             n += 1;
-            let (code, out, err) = run(&["tour".to_string(), p.display().to_string()], &log);
+            let Ran { code, out, err, .. } = run_forbidden(&["tour".to_string(), p.display().to_string()], &log);
             let line = err.trim_end();
             let accepted = line.contains("needs a terminal");
             let refused = code == 2

@@ -116,13 +116,7 @@ fn svg_and_png_files_carry_every_series() {
         "json",
     ]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = std::fs::read_to_string(&svg).unwrap();
-    let doc = roxmltree::Document::parse(&text).expect("the SVG parses as XML");
-    let texts: Vec<String> = doc
-        .descendants()
-        .filter(|n| n.has_tag_name("text"))
-        .filter_map(|n| n.text().map(|t| t.trim().to_string()))
-        .collect();
+    let texts = common::svg_texts(&svg);
     for name in [
         "model 1",
         "model 2",

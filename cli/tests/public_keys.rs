@@ -2,21 +2,13 @@
 //! and the CSV columns of `sweep`, `gfmd` and `figure`, as first published. Scripts
 //! depend on them: a change may add keys, never remove or rename one.
 
+mod common;
+
+use common::asperity_here_ok;
 use std::collections::BTreeSet;
-use std::process::Command;
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+    serde_json::from_str(&asperity_here_ok(args)).unwrap()
 }
 
 /// Dotted paths of every key of nested objects (arrays are not entered).
@@ -140,12 +132,7 @@ fn psd_keys_and_columns() {
         "psd",
     );
     assert_has(&v["table"][0], &["q", "psd", "modes"], "psd table");
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(["psd", map, "--format", "csv"])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    assert!(String::from_utf8_lossy(&out.stdout).starts_with("q,psd\n"));
+    assert!(asperity_here_ok(&["psd", map, "--format", "csv"]).starts_with("q,psd\n"));
 }
 
 #[test]
@@ -257,17 +244,13 @@ fn sweep_keys_and_columns() {
         "sweep rows",
     );
     assert_has(&v, &["over", "failed_values"], "sweep");
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args([
-            "sweep", "--preset", "system-1", "--from", "0.01", "--to", "0.1", "--points", "2",
-        ])
-        .output()
-        .unwrap();
-    let header = String::from_utf8_lossy(&out.stdout)
-        .lines()
-        .next()
-        .unwrap_or("")
-        .to_string();
+    let header = asperity_here_ok(&[
+        "sweep", "--preset", "system-1", "--from", "0.01", "--to", "0.1", "--points", "2",
+    ])
+    .lines()
+    .next()
+    .unwrap_or("")
+    .to_string();
     assert!(header.contains(",a_r_unloading,branches"), "{header}");
     assert!(
         header.contains(
@@ -464,16 +447,7 @@ fn gfmd_csv_columns() {
             "gfmd", "--grid", "32", "--gamma", "0", "--from", "0.01", "--to", "0.1", "--points", "2", "--format", "csv",
         ][..],
     ] {
-        let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-            .args(args)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{args:?}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let text = String::from_utf8_lossy(&out.stdout).to_string();
+        let text = asperity_here_ok(args);
         let mut lines = text.lines();
         let header: Vec<&str> = lines.next().unwrap_or("").split(',').collect();
         assert_eq!(header, columns, "{args:?}");
@@ -739,12 +713,7 @@ fn figure_keys_and_columns() {
         "--periodic",
     ]);
     assert_has(&w, &["spectrum_source"], "figure --surface");
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(["figure", "2", "--format", "csv", "--points", "5"])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    let csv = String::from_utf8_lossy(&out.stdout);
+    let csv = asperity_here_ok(&["figure", "2", "--format", "csv", "--points", "5"]);
     assert_eq!(csv.lines().next(), Some("series,x,y,note"));
 }
 
@@ -793,13 +762,7 @@ fn gfmd_cycle_keys_and_columns() {
         ],
         "gfmd --cycle row",
     );
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .args(["--format", "csv"])
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let text = asperity_here_ok(&[&args[..], &["--format", "csv"]].concat());
     let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
     assert_eq!(header, format!("{},branch", asperity_cli::cli::gfmd::GFMD_CSV_HEADER));
     assert!(text.contains("# pull_off_pressure: "), "{text}");
@@ -843,12 +806,7 @@ fn sweep_cycle_keys_and_columns() {
         ],
         "sweep --cycle row",
     );
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let text = asperity_here_ok(&args);
     let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
     assert_eq!(header, asperity_cli::cli::sweep::CYCLE_CSV_HEADER);
     assert_eq!(text.lines().filter(|l| !l.starts_with('#')).count(), 1 + 5);
@@ -925,12 +883,7 @@ fn pull_off_read_out_keys() {
     ];
     let sweep = json(&[&cycle[..], &["json"]].concat());
     assert_has(&sweep["pull_off"], PULL_OFF, "sweep --cycle");
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(cycle.iter().chain(&["csv"]))
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    let csv = String::from_utf8_lossy(&out.stdout);
+    let csv = asperity_here_ok(&[&cycle[..], &["csv"]].concat());
     for line in [
         "# bam_pull_off_pressure: -",
         "# gap_dmt_pull_off_pressure: -",

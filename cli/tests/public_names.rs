@@ -4,23 +4,11 @@
 //! ([`asperity::report::names::ALIASES`]), and an alias beside its preferred name carries the
 //! same value.
 
-use asperity::report::names::{clashes, preferred, ALIASES};
-use std::collections::BTreeSet;
-use std::process::Command;
+mod common;
 
-fn out(args: &[&str]) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
+use asperity::report::names::{clashes, preferred, ALIASES};
+use common::asperity_here_ok as out;
+use std::collections::BTreeSet;
 
 /// Every key of nested objects, arrays entered (each element's keys).
 fn names(v: &serde_json::Value, out: &mut BTreeSet<String>) {

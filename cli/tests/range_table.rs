@@ -4,6 +4,8 @@
 //! (enumerated from the preset type's own serialisation, every option set) is a field of the
 //! table, so that the command line, a preset and Python state one range for one quantity.
 
+mod common;
+
 use asperity::error::Field;
 use asperity::limits::{allowed, FIELDS};
 use asperity_cli::cli::flags::{self, Kind};
@@ -36,37 +38,12 @@ fn every_number_flag_names_a_field_of_the_table() {
     assert!(broken.is_empty(), "{}", broken.join("\n"));
 }
 
-/// The leaf keys of a TOML value (dotted), with their values.
-fn leaves(v: &toml::Value, prefix: &str, out: &mut Vec<(String, toml::Value)>) {
-    match v {
-        toml::Value::Table(t) => {
-            for (k, x) in t {
-                let p = if prefix.is_empty() {
-                    k.clone()
-                } else {
-                    format!("{prefix}.{k}")
-                };
-                leaves(x, &p, out);
-            }
-        }
-        _ => out.push((prefix.to_string(), v.clone())),
-    }
-}
-
 #[test]
 fn every_numeric_preset_key_is_a_field_of_the_table() {
-    use asperity::input::preset::{MeasuredSpec, ModelSpec, Preset, Variant};
+    use asperity::input::preset::{MeasuredSpec, Preset};
     let mut all = Preset::resolve("system-2").unwrap();
     all.surface.rms_height_m = Some(1e-6);
-    all.model = ModelSpec {
-        variant: Variant::Number(4),
-        c1: Some(0.0),
-        c2: Some(0.0),
-        alpha: Some(0.0),
-        k_griffith: Some(0.0),
-        cap: Some(true),
-        fudge_gamma: Some(1.0),
-    };
+    all.model = common::model_with_every_option();
     all.measured = Some(MeasuredSpec {
         size_m: Some(1e-6),
         q_min_per_m: Some(1e5),
@@ -74,7 +51,7 @@ fn every_numeric_preset_key_is_a_field_of_the_table() {
         ..MeasuredSpec::default()
     });
     let mut keys = Vec::new();
-    leaves(&toml::Value::try_from(&all).unwrap(), "", &mut keys);
+    common::leaves(&toml::Value::try_from(&all).unwrap(), "", &mut keys);
     // a key whose field is named differently: the measured map's side is the system's size
     let alias = |k: &str| match k {
         "measured.size_m" => Some(Field::SystemSize),

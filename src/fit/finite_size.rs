@@ -9,6 +9,7 @@
 //! how far the set's value is from the largest system measured. The trust read-out adds it to
 //! its band where a measured case lies within reach of the scene ([`log_error`]).
 
+use super::table::{number, rows};
 use super::trust_band::{case_distance, Place, CASE_REACH, LOAD_REACH};
 use std::sync::OnceLock;
 
@@ -38,29 +39,17 @@ pub fn points() -> &'static [FiniteSizePoint] {
 }
 
 fn parse(text: &str) -> Vec<FiniteSizePoint> {
-    let mut lines = text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty());
-    let header: Vec<&str> = lines.next().map(|h| h.split(',').collect()).unwrap_or_default();
-    let col = |row: &[&str], key: &str| -> f64 {
-        header
-            .iter()
-            .position(|h| *h == key)
-            .and_then(|i| row.get(i))
-            .map_or(f64::NAN, |s| match *s {
-                "inf" => f64::INFINITY,
-                s => s.parse().unwrap_or(f64::NAN),
-            })
-    };
-    lines
-        .map(|l| {
-            let row: Vec<&str> = l.split(',').collect();
-            let pair = |l: u8| (col(&row, &format!("a_r_L{l}")), col(&row, &format!("a_r_L{l}_err")));
+    rows(text)
+        .iter()
+        .map(|row| {
+            let pair = |l: u8| (number(row, &format!("a_r_L{l}")), number(row, &format!("a_r_L{l}_err")));
             FiniteSizePoint {
-                thickness_qr: col(&row, "thickness_qr"),
-                gamma_factor: col(&row, "gamma_factor"),
-                gamma_glo: col(&row, "gamma_glo"),
-                p: col(&row, "p"),
+                thickness_qr: number(row, "thickness_qr"),
+                gamma_factor: number(row, "gamma_factor"),
+                gamma_glo: number(row, "gamma_glo"),
+                p: number(row, "p"),
                 a_r: [pair(2), pair(4), pair(8)],
-                log_error: col(&row, "log_error"),
+                log_error: number(row, "log_error"),
             }
         })
         .filter(|p| p.p > 0.0 && p.log_error.is_finite())

@@ -29,6 +29,7 @@ pub mod reference;
 pub mod reference_set;
 mod residuals;
 pub mod set_gauge;
+mod table;
 pub mod trust;
 pub mod trust_band;
 

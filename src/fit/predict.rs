@@ -126,14 +126,7 @@ fn pr_at(s: &Scene, p: f64, max_sigma: f64) -> Result<Vec<(f64, f64)>> {
     let mut s = s.clone();
     s.pressure = p;
     let ev = engine::evaluate(&s, &pr_options(max_sigma))?;
-    Ok(ev
-        .stats
-        .pr
-        .sigma
-        .iter()
-        .copied()
-        .zip(ev.stats.pr.density.iter().copied())
-        .collect())
+    Ok(ev.stats.pr.points())
 }
 
 fn pr_options(max_sigma: f64) -> Options {
@@ -177,13 +170,6 @@ fn one_load(s: &Scene, p: f64, want_pr: bool, max_sigma: f64) -> Result<AtLoad> 
         a_r: ev.stats.a_r,
         mean_contact_stress: ev.stats.mean_contact_stress,
         mean_gap_rel: f64::NAN,
-        pr: ev
-            .stats
-            .pr
-            .sigma
-            .iter()
-            .copied()
-            .zip(ev.stats.pr.density.iter().copied())
-            .collect(),
+        pr: ev.stats.pr.points(),
     })
 }

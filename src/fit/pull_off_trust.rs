@@ -17,9 +17,9 @@
 //! [`MIN_CASES`] cases within reach, or without adhesion, nothing is claimed: the read-out says
 //! so. It states the measured ratios; it does not turn them into an estimate.
 
+use super::table::{number, rows};
 use super::trust_band::{case_distance, Place, CASE_REACH, MIN_CASES};
 use serde::Serialize;
-use std::collections::HashMap;
 use std::sync::OnceLock;
 
 /// Cases the read-out takes at most.
@@ -57,16 +57,10 @@ pub fn table() -> &'static [PullOffCase] {
 }
 
 fn parse(text: &str) -> Vec<PullOffCase> {
-    let mut lines = text.lines().filter(|l| !l.trim().is_empty() && !l.starts_with('#'));
-    let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
-    lines
-        .map(|l| {
-            let row: HashMap<&str, &str> = header.iter().copied().zip(l.split(',')).collect();
-            let num = |k: &str| {
-                row.get(k)
-                    .and_then(|v| v.trim().parse::<f64>().ok())
-                    .unwrap_or(f64::NAN)
-            };
+    rows(text)
+        .iter()
+        .map(|row| {
+            let num = |k: &str| number(row, k);
             PullOffCase {
                 thickness_qr: num("thickness_qr"),
                 gamma_factor: num("gamma_factor"),

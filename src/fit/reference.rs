@@ -1,7 +1,8 @@
 //! Reference data for gauging: the closed form [S-18, S-19], CSV files of a_r, σ̄_c*, ū/h_rms
 //! against p*, and Pr(σ*) histograms.
 //!
-//! Reference CSV (one header line, `#` comments and blank lines skipped; column order free):
+//! Reference CSV (one header line, `#` comments and blank lines skipped; column order free;
+//! read by the `csv` crate, so a cell may be quoted as RFC 4180 says):
 //!
 //! ```text
 //! p,a_r,a_r_err,mean_contact_stress,mean_contact_stress_err,mean_gap_rel,mean_gap_rel_err
@@ -14,6 +15,7 @@
 //! a_r), one row per bin, histograms grouped by p*. A bad cell is reported as one line naming
 //! the file, the line, the column, the value and what is allowed.
 
+use super::table::{records, Record};
 use crate::error::{Error, Field, Result};
 use crate::theory::closed_form::eq18_area;
 use serde::Serialize;
@@ -170,14 +172,6 @@ fn cell_error(source: &str, line: usize, column: &str, value: &str, allowed: &st
     )
 }
 
-/// The non-comment lines of a CSV with their 1-based line numbers.
-fn lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    text.lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
-}
-
 /// The columns of `gfmd --format csv` (runs, sweeps, cycles) that a reference file may carry
 /// besides its own: read past, so that GFMD's CSV is a reference as written (its rows that did
 /// not converge, and a cycle's rows off the loading branch, are skipped).
@@ -194,11 +188,6 @@ pub const GFMD_CSV_EXTRA_COLUMNS: [&str; 10] = [
     "branch",
 ];
 
-fn header<'a>(source: &str, text: &'a str, known: &[&str]) -> Result<(usize, Vec<&'a str>)> {
-    header_with(source, text, known, &[])
-}
-
-/// As [`header`], also taking the columns `extra` (not named in the message).
 /// The columns `known` in words, each `_err` column folded into its value's ("a_r (and
 /// a_r_err)" would double the list): the allowed part of a header error stays one short line.
 fn columns_text(known: &[&str]) -> String {
@@ -210,8 +199,10 @@ fn columns_text(known: &[&str]) -> String {
     }
 }
 
-fn header_with<'a>(source: &str, text: &'a str, known: &[&str], extra: &[&str]) -> Result<(usize, Vec<&'a str>)> {
-    let Some((n, h)) = lines(text).next() else {
+/// The header's line and columns (the first of `recs`), each one of `known` or `extra`
+/// (`extra` not named in the message).
+fn header<'a>(source: &str, recs: &'a [Record], known: &[&str], extra: &[&str]) -> Result<(usize, Vec<&'a str>)> {
+    let Some(Record { line: n, cells, .. }) = recs.first() else {
         return Err(cell_error(
             source,
             1,
@@ -220,7 +211,7 @@ fn header_with<'a>(source: &str, text: &'a str, known: &[&str], extra: &[&str]) 
             &format!("a header line naming the columns {}", columns_text(known)),
         ));
     };
-    let cols: Vec<&str> = h.split(',').map(str::trim).collect();
+    let (n, cols): (usize, Vec<&str>) = (*n, cells.iter().map(String::as_str).collect());
     for (i, c) in cols.iter().enumerate() {
         if !known.contains(c) && !extra.contains(c) {
             return Err(cell_error(
@@ -236,6 +227,13 @@ fn header_with<'a>(source: &str, text: &'a str, known: &[&str], extra: &[&str]) 
         }
     }
     Ok((n, cols))
+}
+
+/// The rows after the header: (line, the line as written, cells).
+fn data_rows<'a>(recs: &'a [Record]) -> impl Iterator<Item = (usize, &'a str, Vec<&'a str>)> {
+    recs.iter()
+        .skip(1)
+        .map(|r| (r.line, r.text, r.cells.iter().map(String::as_str).collect()))
 }
 
 fn number(source: &str, line: usize, column: &str, s: &str, allowed: &str) -> Result<f64> {
@@ -270,7 +268,8 @@ pub fn parse_csv(text: &str, source: &str) -> Result<Reference> {
         "mean_gap_rel",
         "mean_gap_rel_err",
     ];
-    let (hline, cols) = header_with(source, text, &known, &GFMD_CSV_EXTRA_COLUMNS)?;
+    let recs = records(text);
+    let (hline, cols) = header(source, &recs, &known, &GFMD_CSV_EXTRA_COLUMNS)?;
     if !cols.contains(&"p") || !Observable::COLUMNS.iter().any(|o| cols.contains(&o.key())) {
         return Err(cell_error(
             source,
@@ -294,8 +293,7 @@ pub fn parse_csv(text: &str, source: &str) -> Result<Reference> {
         }
     }
     let mut points = Vec::new();
-    for (n, l) in lines(text).skip(1) {
-        let cells: Vec<&str> = l.split(',').map(str::trim).collect();
+    for (n, l, cells) in data_rows(&recs) {
         if cells.len() != cols.len() {
             return Err(cell_error(
                 source,
@@ -360,7 +358,8 @@ pub fn parse_csv(text: &str, source: &str) -> Result<Reference> {
 /// # Errors
 /// As [`parse_csv`].
 pub fn parse_pr_csv(text: &str, source: &str) -> Result<Vec<Observation>> {
-    let (hline, cols) = header(source, text, &["p", "sigma", "density"])?;
+    let recs = records(text);
+    let (hline, cols) = header(source, &recs, &["p", "sigma", "density"], &[])?;
     if cols.len() != 3 {
         return Err(cell_error(
             source,
@@ -371,8 +370,7 @@ pub fn parse_pr_csv(text: &str, source: &str) -> Result<Vec<Observation>> {
         ));
     }
     let mut out = Vec::new();
-    for (n, l) in lines(text).skip(1) {
-        let cells: Vec<&str> = l.split(',').map(str::trim).collect();
+    for (n, l, cells) in data_rows(&recs) {
         if cells.len() != 3 {
             return Err(cell_error(source, n, "(row)", l, "3 cells as in the header"));
         }

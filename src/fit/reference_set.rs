@@ -19,8 +19,8 @@
 //! (λ_r/λ_s = 128) at the same loads, a_r only: what the trust read-out gives a model 5 scene of
 //! the full bandwidth.
 
+use super::table::{number as num, rows, Row};
 use crate::theory::cycle::PathBranch;
-use std::collections::HashMap;
 use std::sync::OnceLock;
 
 const SET_CSV: &str = include_str!("../../data/reference/reference-set-256.csv");
@@ -77,24 +77,7 @@ pub struct ReferencePoint {
     pub theory_models: [(f64, f64); MODELS],
 }
 
-/// The cells of a CSV with a header, row by row.
-fn rows(text: &str) -> Vec<HashMap<&str, &str>> {
-    let mut lines = text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty());
-    let header: Vec<&str> = lines.next().map(|h| h.split(',').collect()).unwrap_or_default();
-    lines
-        .map(|l| header.iter().copied().zip(l.split(',')).collect())
-        .collect()
-}
-
-fn num(row: &HashMap<&str, &str>, key: &str) -> f64 {
-    match row.get(key).copied() {
-        Some("inf") => f64::INFINITY,
-        Some(s) => s.parse().unwrap_or(f64::NAN),
-        None => f64::NAN,
-    }
-}
-
-fn system_of(row: &HashMap<&str, &str>) -> u8 {
+fn system_of(row: &Row) -> u8 {
     row.get("system")
         .and_then(|s| s.strip_prefix("system-"))
         .and_then(|s| s.parse().ok())
@@ -113,7 +96,7 @@ fn parse(set_csv: &str, cases_csv: &str, model5: &str, models_csv: &str) -> Vec<
             system_of(c) == sys
                 && num(c, "thickness_qr") == t
                 && num(c, "gamma_factor") == f
-                && c.get("branch") == Some(&branch)
+                && c.get("branch").map(String::as_str) == Some(branch)
                 && (num(c, "p") / p - 1.0).abs() < 1e-6
         }) {
             let m = num(c, "model");
@@ -129,7 +112,7 @@ fn parse(set_csv: &str, cases_csv: &str, model5: &str, models_csv: &str) -> Vec<
                 system_of(c) == sys
                     && num(c, "thickness_qr") == t
                     && num(c, "gamma_factor") == f
-                    && c.get("branch") == Some(&branch)
+                    && c.get("branch").map(String::as_str) == Some(branch)
                     && (num(c, "p") / p - 1.0).abs() < 1e-6
             })
             .map_or((f64::NAN, f64::NAN), |c| {
@@ -149,7 +132,7 @@ fn parse(set_csv: &str, cases_csv: &str, model5: &str, models_csv: &str) -> Vec<
             let pair = |k: &str| (num(r, k), num(r, &format!("{k}_err")));
             let grid = num(r, "grid");
             let own_glo = num(r, "gamma_glo");
-            let branch = r.get("branch").copied().unwrap_or("");
+            let branch = r.get("branch").map_or("", String::as_str);
             let five = five_at(system, t, f, branch, num(r, "p"));
             let theory_models = models_at(system, t, f, branch, num(r, "p"));
             ReferencePoint {
@@ -162,7 +145,7 @@ fn parse(set_csv: &str, cases_csv: &str, model5: &str, models_csv: &str) -> Vec<
                 } else {
                     glo(system, t, f)
                 },
-                branch: if r.get("branch") == Some(&"unloading") {
+                branch: if branch == "unloading" {
                     PathBranch::Unloading
                 } else {
                     PathBranch::Loading

@@ -173,6 +173,15 @@ impl RealFft2 {
             "RealFft2::inverse: sizes"
         );
         columns(self.parallel, &*self.col_inv, spec, nh, ny);
+        self.rows_inverse(spec, out);
+    }
+}
+
+impl RealFft2 {
+    /// Complex-to-real transforms of every row of `spec` into `out` (`spec` is overwritten:
+    /// realfft uses its input as scratch).
+    fn rows_inverse(&self, spec: &mut [Complex64], out: &mut [f64]) {
+        let (nx, ny, nh) = (self.nx, self.ny, self.nh);
         let c2r = &self.c2r;
         let rows = |(rout, rin): (&mut [f64], &mut [Complex64])| {
             let mut scratch = c2r.make_scratch_vec();
@@ -184,9 +193,7 @@ impl RealFft2 {
         };
         run_chunks(self.parallel, out, nx, spec, nh, ny, rows);
     }
-}
 
-impl RealFft2 {
     /// Real-to-complex transforms of every row of `input` into `spec` (each row is copied into a
     /// small buffer first: realfft uses its input as scratch).
     fn rows_forward(&self, input: &[f64], spec: &mut [Complex64]) {
@@ -234,14 +241,7 @@ impl RealFft2 {
             nh,
             ny,
         );
-        let c2r = &self.c2r;
-        let rows = |(rout, rin): (&mut [f64], &mut [Complex64])| {
-            let mut scratch = c2r.make_scratch_vec();
-            for (a, b) in rout.chunks_exact_mut(nx).zip(rin.chunks_exact_mut(nh)) {
-                let _ = c2r.process_with_scratch(b, a, &mut scratch);
-            }
-        };
-        run_chunks(self.parallel, out, nx, spec, nh, ny, rows);
+        self.rows_inverse(spec, out);
     }
 }
 

@@ -5,8 +5,9 @@
 //!
 //! A number is written as `{:e}` (shortest round trip); a value that is not available (a load
 //! that did not converge, a gap below one, a theory that failed) or not finite is an empty
-//! cell; text is quoted by RFC 4180 where it needs to be ([`text`]). A load path starts with
-//! `#` lines naming its pull-off and jump-in.
+//! cell. The records are written by the `csv` crate ([`table`]): a cell holding a comma, a
+//! quote or a line break is quoted as RFC 4180 says. A load path starts with `#` lines naming
+//! its pull-off and jump-in.
 
 use super::gfmd::{self, GfmdRow};
 use super::pull_off::PullOffReport;
@@ -46,53 +47,59 @@ pub fn opt_cell(x: Option<f64>) -> String {
     x.map_or(String::new(), cell)
 }
 
-/// A text field: as is, or quoted (RFC 4180) when it holds a comma, a quote or a line break.
-pub fn text(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
+/// The line `header`, then one line per row of cells, written by the `csv` crate (a cell is
+/// quoted where it holds a comma, a quote or a line break); lines end in `\n`, the last one
+/// without it.
+pub fn table(header: &str, rows: impl IntoIterator<Item = Vec<String>>) -> String {
+    let mut w = csv::WriterBuilder::new().flexible(true).from_writer(Vec::new());
+    let records = std::iter::once(header.split(',').map(str::to_string).collect()).chain(rows);
+    for cells in records {
+        // writing into memory: the only failure would be an allocation's, which aborts
+        w.write_record(&cells).expect("a CSV record written to memory");
     }
+    let bytes = w.into_inner().expect("a CSV table flushed to memory");
+    let mut out = String::from_utf8(bytes).expect("CSV cells are UTF-8 strings");
+    out.pop();
+    out
 }
 
 /// `sweep`'s rows under [`SWEEP_HEADER`].
 pub fn sweep(rows: &[Row]) -> String {
-    let mut out = String::from(SWEEP_HEADER);
     let f = cell;
-    for row in rows {
-        let r = &row.row;
-        let cells = [
-            format!("{:e}", r.p),
-            f(r.a_r),
-            f(r.mean_gap_rel),
-            f(r.mean_gap),
-            f(r.mean_contact_stress),
-            f(r.elastic_energy),
-            r.converged.to_string(),
-            f(r.elastic_energy_reduced),
-            f(r.mean_gap_error),
-            f(r.contact_stress_variance),
-            f(row.a_r_over_p),
-            opt_cell(row.a_r_eq18),
-            row.thickness_qr.map_or("inf".to_string(), f),
-            f(row.gamma),
-            f(r.a_r_unloading),
-            r.branches.to_string(),
-            f(r.mean_gap_lower_rel),
-            f(r.mean_gap_upper_rel),
-            f(r.contact_load),
-            f(r.mean_gap_unloading_rel),
-            f(r.mean_gap_unloading_error),
-            f(r.mean_gap_unloading_lower_rel),
-            f(r.contact_load_unloading),
-            row.trust_inside.to_string(),
-            f(row.trust_a_r_log_error),
-            row.reason.as_deref().map_or(String::new(), text),
-        ];
-        out.push('\n');
-        out.push_str(&cells.join(","));
-    }
-    out
+    table(
+        SWEEP_HEADER,
+        rows.iter().map(|row| {
+            let r = &row.row;
+            vec![
+                format!("{:e}", r.p),
+                f(r.a_r),
+                f(r.mean_gap_rel),
+                f(r.mean_gap),
+                f(r.mean_contact_stress),
+                f(r.elastic_energy),
+                r.converged.to_string(),
+                f(r.elastic_energy_reduced),
+                f(r.mean_gap_error),
+                f(r.contact_stress_variance),
+                f(row.a_r_over_p),
+                opt_cell(row.a_r_eq18),
+                row.thickness_qr.map_or("inf".to_string(), f),
+                f(row.gamma),
+                f(r.a_r_unloading),
+                r.branches.to_string(),
+                f(r.mean_gap_lower_rel),
+                f(r.mean_gap_upper_rel),
+                f(r.contact_load),
+                f(r.mean_gap_unloading_rel),
+                f(r.mean_gap_unloading_error),
+                f(r.mean_gap_unloading_lower_rel),
+                f(r.contact_load_unloading),
+                row.trust_inside.to_string(),
+                f(row.trust_a_r_log_error),
+                row.reason.clone().unwrap_or_default(),
+            ]
+        }),
+    )
 }
 
 /// The `#` lines of a load path: `key: value` for each value present.
@@ -158,50 +165,50 @@ pub fn theory_cycle(c: &TheoryCycle) -> String {
         ("tension_bound", c.tension_bound.map(cell)),
         ("note", Some(c.note.clone())),
     ]);
-    out.push_str(THEORY_CYCLE_HEADER);
-    for r in &c.rows {
-        let cells = [
-            r.branch.name().to_string(),
-            cell(r.p),
-            cell(r.a_r),
-            cell(r.mean_gap_rel),
-            cell(r.mean_contact_stress),
-            r.on_unloading_branch.to_string(),
-        ];
-        out.push('\n');
-        out.push_str(&cells.join(","));
-    }
+    out.push_str(&table(
+        THEORY_CYCLE_HEADER,
+        c.rows.iter().map(|r| {
+            vec![
+                r.branch.name().to_string(),
+                cell(r.p),
+                cell(r.a_r),
+                cell(r.mean_gap_rel),
+                cell(r.mean_contact_stress),
+                r.on_unloading_branch.to_string(),
+            ]
+        }),
+    ));
     out
 }
 
 /// `header`, then one line per GFMD row: [`GFMD_HEADER`]'s cells (and `branch` for a load
 /// path's row).
 pub fn gfmd_rows(header: &str, rows: &[GfmdRow]) -> String {
-    let mut out = String::from(header);
-    for row in rows {
-        let r = &row.row;
-        let mut cells: Vec<String> = [
-            r.p,
-            r.a_r,
-            r.mean_gap_rel,
-            r.mean_gap,
-            r.mean_contact_stress,
-            r.elastic_energy,
-        ]
-        .map(cell)
-        .to_vec();
-        cells.push(r.converged.to_string());
-        cells.push(cell(r.contact_stress_variance));
-        cells.push(r.iterations.to_string());
-        cells.push(cell(r.residual));
-        cells.extend([row.theory_a_r, row.theory_mean_gap_rel, row.theory_mean_contact_stress].map(opt_cell));
-        if let Some(b) = row.branch {
-            cells.push(b.name().to_string());
-        }
-        out.push('\n');
-        out.push_str(&cells.join(","));
-    }
-    out
+    table(
+        header,
+        rows.iter().map(|row| {
+            let r = &row.row;
+            let mut cells: Vec<String> = [
+                r.p,
+                r.a_r,
+                r.mean_gap_rel,
+                r.mean_gap,
+                r.mean_contact_stress,
+                r.elastic_energy,
+            ]
+            .map(cell)
+            .to_vec();
+            cells.push(r.converged.to_string());
+            cells.push(cell(r.contact_stress_variance));
+            cells.push(r.iterations.to_string());
+            cells.push(cell(r.residual));
+            cells.extend([row.theory_a_r, row.theory_mean_gap_rel, row.theory_mean_contact_stress].map(opt_cell));
+            if let Some(b) = row.branch {
+                cells.push(b.name().to_string());
+            }
+            cells
+        }),
+    )
 }
 
 /// A GFMD sweep under [`GFMD_HEADER`]: GFMD's rows with the theory's a_r, ū/h_rms and σ̄_c* on
@@ -231,4 +238,20 @@ pub fn gfmd_cycle(c: &GfmdCycle) -> String {
     ]);
     out.push_str(&gfmd_rows(&format!("{GFMD_HEADER},branch"), &gfmd::cycle_rows(c)));
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::table;
+
+    #[test]
+    fn table_quotes_cells_as_rfc_4180_says_and_ends_without_a_line_break() {
+        let rows = vec![
+            vec!["plain".to_string(), "1e-3".to_string(), String::new()],
+            vec!["a, b".to_string(), "say \"hi\"".to_string(), "two\nlines".to_string()],
+        ];
+        let want = "x,y,z\nplain,1e-3,\n\"a, b\",\"say \"\"hi\"\"\",\"two\nlines\"";
+        assert_eq!(table("x,y,z", rows), want);
+        assert_eq!(table("x,y,z", Vec::new()), "x,y,z");
+    }
 }

@@ -20,6 +20,7 @@
 
 use crate::error::{check_in, Error, Field, Result};
 pub use crate::surface::tabulated::Tabulated;
+use rustfft::num_complex::Complex64;
 use std::f64::consts::PI;
 
 pub use crate::surface::ranges::{HURST_RANGE, LENGTH_RANGE_M, RMS_GRADIENT_RANGE, RMS_HEIGHT_RANGE_M};
@@ -213,8 +214,22 @@ impl Discrete {
             check_in(Field::SystemSize, system_size, LENGTH_RANGE_M.0, LENGTH_RANGE_M.1)?;
         }
         let spec = crate::numerics::fft2::forward_real(h, n);
+        let mut by_k2 = std::collections::BTreeMap::new();
+        Discrete::add_mode_sums(&spec, 0..n, n, &mut by_k2);
+        Discrete::from_mode_sums(by_k2, system_size, q_r)
+    }
+
+    /// Adds Σ|h̃|² per |k|² = m_x² + m_y² of the rows `rows` of an N×N map's complex
+    /// transform to `by_k2` (k = 0 left out): `spec` holds those rows (row-major, `n` wide),
+    /// unnormalised (h̃ = entry/N²). Row by row in order, so that partial sums passed on over
+    /// consecutive rows add up bit for bit as one pass over the whole map does.
+    pub fn add_mode_sums(
+        spec: &[Complex64],
+        rows: std::ops::Range<usize>,
+        n: usize,
+        by_k2: &mut std::collections::BTreeMap<i64, f64>,
+    ) {
         let norm = 1.0 / (n * n) as f64;
-        let mut by_k2: std::collections::BTreeMap<i64, f64> = std::collections::BTreeMap::new();
         let wrap = |i: usize| -> i64 {
             if i <= n / 2 {
                 i as i64
@@ -222,7 +237,8 @@ impl Discrete {
                 i as i64 - n as i64
             }
         };
-        for i in 0..n {
+        let y0 = rows.start;
+        for i in rows {
             let mi = wrap(i);
             for j in 0..n {
                 let mj = wrap(j);
@@ -230,11 +246,10 @@ impl Discrete {
                 if k2 == 0 {
                     continue;
                 }
-                let c = spec[i * n + j] * norm;
+                let c = spec[(i - y0) * n + j] * norm;
                 *by_k2.entry(k2).or_insert(0.0) += c.norm_sqr();
             }
         }
-        Discrete::from_mode_sums(by_k2, system_size, q_r)
     }
 
     /// The spectrum from Σ|h̃|² per |k|² = m_x² + m_y² (integer wave vectors of an N×N map of side

@@ -14,7 +14,7 @@ use asperity::error::{Error, Result};
 use asperity::gfmd::cycle::CycleSpec;
 use asperity::gfmd::distributed::{Job, Outcome};
 use asperity::gfmd::ladder::{Ensemble, Extrapolated, Ladder, MeanSe};
-use asperity::gfmd::reduction::Reduction;
+use asperity::gfmd::reduction::{Invariants, Reduction};
 use asperity::gfmd::{self, GfmdOptions, GfmdResult, GfmdSetup, GridSpec, Progress, Stage};
 use asperity::report::gfmd::GfmdSpec;
 use asperity::theory::sweep::SweepSpec;
@@ -398,44 +398,19 @@ fn ensemble_table(e: &Ensemble) -> String {
 pub fn reduction_table(r: &Reduction) -> String {
     let mut t = format!("{:<28}{:<14}{:<14}\n", "invariant", "full", "reduced (run)");
     let thick = |x: Option<f64>| x.map_or("inf".to_string(), |v| format!("{v:.4}"));
+    let (e4, f4) = (|x: f64| format!("{x:.4e}"), |x: f64| format!("{x:.4}"));
+    // an invariant's row: its name, then `cell` of the full and of the reduced system
+    let row = |k: &'static str, cell: &dyn Fn(&Invariants) -> String| (k, cell(&r.full), cell(&r.reduced));
     for (k, a, b) in [
-        (
-            "p*",
-            format!("{:.4e}", r.full.pressure),
-            format!("{:.4e}", r.reduced.pressure),
-        ),
-        (
-            "gamma_glo",
-            format!("{:.4}", r.full.gamma_glo),
-            format!("{:.4}", r.reduced.gamma_glo),
-        ),
-        (
-            "Tabor mu_T",
-            format!("{:.4}", r.full.tabor),
-            format!("{:.4}", r.reduced.tabor),
-        ),
-        ("t*q_r", thick(r.full.thickness_qr), thick(r.reduced.thickness_qr)),
-        (
-            "L/lambda_r",
-            num(r.full.system_size_ratio),
-            num(r.reduced.system_size_ratio),
-        ),
-        ("lambda_r/lambda_s", num(r.full.bandwidth), num(r.reduced.bandwidth)),
-        (
-            "gamma/(rho E* g)",
-            format!("{:.4}", r.full.tensile_stress),
-            format!("{:.4}", r.reduced.tensile_stress),
-        ),
-        (
-            "gamma_s (J/m^2)",
-            format!("{:.4e}", r.full.gamma),
-            format!("{:.4e}", r.reduced.gamma),
-        ),
-        (
-            "rho (m)",
-            format!("{:.4e}", r.full.range_m),
-            format!("{:.4e}", r.reduced.range_m),
-        ),
+        row("p*", &|s| e4(s.pressure)),
+        row("gamma_glo", &|s| f4(s.gamma_glo)),
+        row("Tabor mu_T", &|s| f4(s.tabor)),
+        row("t*q_r", &|s| thick(s.thickness_qr)),
+        row("L/lambda_r", &|s| num(s.system_size_ratio)),
+        row("lambda_r/lambda_s", &|s| num(s.bandwidth)),
+        row("gamma/(rho E* g)", &|s| f4(s.tensile_stress)),
+        row("gamma_s (J/m^2)", &|s| e4(s.gamma)),
+        row("rho (m)", &|s| e4(s.range_m)),
     ] {
         t.push_str(&format!("  {k:<26}{a:<14}{b:<14}\n"));
     }

@@ -122,3 +122,17 @@ pub fn write_map(dir: &Path) -> String {
     std::fs::write(&p, rows.join("\n")).unwrap();
     p.display().to_string()
 }
+
+/// A NumPy file: the header (dict text) and `data`, as version 1.0.
+pub fn npy(header: &str, data: &[u8]) -> Vec<u8> {
+    let mut h = header.to_string();
+    while !(10 + h.len() + 1).is_multiple_of(64) {
+        h.push(' ');
+    }
+    h.push('\n');
+    let mut b = b"\x93NUMPY\x01\x00".to_vec();
+    b.extend((h.len() as u16).to_le_bytes());
+    b.extend(h.as_bytes());
+    b.extend(data);
+    b
+}

@@ -178,3 +178,52 @@ pub fn synthetic_gfmd(p: f64) -> asperity_cli::tui::base::gfmd_view::GfmdView {
         sweep_error: None,
     }
 }
+
+/// The leaf keys of a TOML value (a preset as its `Serialize` gives it, a tour) (dotted; `reference.0.value` for the
+/// first `[[reference]]` entry), with their TOML values.
+pub fn leaves(v: &toml::Value, prefix: &str, out: &mut Vec<(String, toml::Value)>) {
+    match v {
+        toml::Value::Table(t) => {
+            for (k, x) in t {
+                let p = if prefix.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{prefix}.{k}")
+                };
+                leaves(x, &p, out);
+            }
+        }
+        toml::Value::Array(a) if a.iter().all(|x| x.is_table()) => {
+            for (i, x) in a.iter().enumerate() {
+                leaves(x, &format!("{prefix}.{i}"), out);
+            }
+        }
+        _ => out.push((prefix.to_string(), v.clone())),
+    }
+}
+
+/// The text of every `<text>` element of the SVG file at `path`, trimmed; the file must parse
+/// as XML with an `<svg>` root.
+pub fn svg_texts(path: &std::path::Path) -> Vec<String> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let doc = roxmltree::Document::parse(&text).expect("the SVG parses as XML");
+    assert_eq!(doc.root_element().tag_name().name(), "svg");
+    doc.descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text().map(|t| t.trim().to_string()))
+        .collect()
+}
+
+/// A preset's `[model]` with every option set (model 4's number, each coefficient, the cap
+/// and the fudge factor): a preset carrying it serialises every key of the table.
+pub fn model_with_every_option() -> asperity::input::preset::ModelSpec {
+    asperity::input::preset::ModelSpec {
+        variant: asperity::input::preset::Variant::Number(4),
+        c1: Some(0.0),
+        c2: Some(0.0),
+        alpha: Some(0.0),
+        k_griffith: Some(0.0),
+        cap: Some(true),
+        fudge_gamma: Some(1.0),
+    }
+}

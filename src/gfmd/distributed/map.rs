@@ -156,29 +156,10 @@ pub fn discrete_spectrum(comm: &dyn Comm, s: &Slab, q_r: f64) -> Result<Discrete
     let rows: Vec<_> = (0..size).map(|r| share(n, size, r)).collect();
     let mut data: Vec<Complex64> = s.heights.iter().map(|&x| Complex64::new(x, 0.0)).collect();
     complex_transform(comm, &mut data, n, &rows, false);
-    let norm = 1.0 / (n * n) as f64;
-    let wrap = |i: usize| -> i64 {
-        if i <= n / 2 {
-            i as i64
-        } else {
-            i as i64 - n as i64
-        }
-    };
     // the state: (k², Σ) pairs of the bins met so far, ascending in k²
     let flat = chain_fold_var(comm, Vec::new(), &mut |st| {
         let mut by_k2: BTreeMap<i64, f64> = st.chunks(2).map(|p| (p[0] as i64, p[1])).collect();
-        for i in s.y0..s.y1 {
-            let mi = wrap(i);
-            for j in 0..n {
-                let mj = wrap(j);
-                let k2 = mi * mi + mj * mj;
-                if k2 == 0 {
-                    continue;
-                }
-                let c = data[(i - s.y0) * n + j] * norm;
-                *by_k2.entry(k2).or_insert(0.0) += c.norm_sqr();
-            }
-        }
+        Discrete::add_mode_sums(&data, s.y0..s.y1, n, &mut by_k2);
         *st = by_k2.into_iter().flat_map(|(k, v)| [k as f64, v]).collect();
     });
     let by_k2: BTreeMap<i64, f64> = flat.chunks(2).map(|p| (p[0] as i64, p[1])).collect();
