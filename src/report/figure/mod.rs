@@ -129,16 +129,14 @@ pub struct FigureData {
 impl FigureData {
     /// CSV: `series,x,y,note`, one row per point; no value is an empty cell.
     pub fn csv(&self) -> String {
-        use super::csv::{cell, opt_cell, text};
-        let mut out = String::from("series,x,y,note");
-        for s in &self.series {
-            for p in &s.points {
-                let note = text(p.note.as_deref().unwrap_or(""));
-                out.push('\n');
-                out.push_str(&[text(&s.name), cell(p.x), opt_cell(p.y), note].join(","));
-            }
-        }
-        out
+        use super::csv::{cell, opt_cell, table};
+        let rows = self.series.iter().flat_map(|s| {
+            s.points.iter().map(|p| {
+                let note = p.note.clone().unwrap_or_default();
+                vec![s.name.clone(), cell(p.x), opt_cell(p.y), note]
+            })
+        });
+        table("series,x,y,note", rows)
     }
 }
 

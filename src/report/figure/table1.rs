@@ -118,21 +118,16 @@ pub fn compute(gfmd: Option<GfmdChoice>, progress: &mut dyn FnMut(RunProgress)) 
 impl Table1 {
     /// CSV: one row per column.
     pub fn csv(&self) -> String {
-        use crate::report::csv::{cell, opt_cell, text};
-        let mut out = String::from(
-            "column,mean_contact_stress,contact_stress_variance,a_r,paper_mean_contact_stress,paper_contact_stress_variance",
-        );
-        for c in &self.columns {
+        use crate::report::csv::{cell, opt_cell, table};
+        let rows = self.columns.iter().map(|c| {
             let computed = [c.mean_contact_stress, c.contact_stress_variance, c.a_r].map(opt_cell);
             let paper = [c.paper_mean_contact_stress, c.paper_contact_stress_variance].map(cell);
-            out.push('\n');
-            out.push_str(
-                &[vec![text(&c.column)], computed.to_vec(), paper.to_vec()]
-                    .concat()
-                    .join(","),
-            );
-        }
-        out
+            [vec![c.column.clone()], computed.to_vec(), paper.to_vec()].concat()
+        });
+        table(
+            "column,mean_contact_stress,contact_stress_variance,a_r,paper_mean_contact_stress,paper_contact_stress_variance",
+            rows,
+        )
     }
 
     /// As a figure: the moments against the column (0 = GFMD, 1–3 = models), computed as
