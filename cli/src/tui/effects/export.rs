@@ -43,6 +43,7 @@ pub fn scene_preset(base: &Preset, scene: &Scene) -> Preset {
 
 /// A CSV cell: empty where the value is unavailable (the library's, as `asperity sweep` writes it).
 pub use asperity::report::csv::cell;
+use asperity::report::csv::table;
 
 /// `# key: value` lines describing the scene, for the top of every exported CSV.
 pub fn scene_comment(job: &ExportJob, name: &str) -> String {
@@ -202,26 +203,19 @@ pub fn loads_csv(sw: &SweepData) -> String {
     let edge = |x: Option<f64>| x.map_or_else(|| "none in the range".to_string(), |v| format!("{v:e}"));
     let _ = writeln!(t, "# jump_in_pressure: {}", edge(sw.jump_in));
     let _ = writeln!(t, "# pull_off_pressure: {}", edge(sw.pull_off));
-    t.push_str(
+    let rows = (0..sw.p.len()).map(|i| {
+        let mut r: Vec<String> = [sw.p[i], sw.a_r[i], sw.gap_rel[i], sw.mean_contact_stress[i]]
+            .map(cell)
+            .to_vec();
+        r.push(sw.converged.get(i).copied().unwrap_or(false).to_string());
+        r.extend([&sw.gap_lower, &sw.gap_upper, &sw.a_r_unloading, &sw.gap_unloading].map(|v| cell(at(v, i))));
+        r
+    });
+    t + &table(
         "p,a_r,mean_gap_rel,mean_contact_stress,converged,mean_gap_lower_rel,mean_gap_upper_rel,\
-         a_r_unloading,mean_gap_unloading_rel\n",
-    );
-    for i in 0..sw.p.len() {
-        let _ = writeln!(
-            t,
-            "{},{},{},{},{},{},{},{},{}",
-            cell(sw.p[i]),
-            cell(sw.a_r[i]),
-            cell(sw.gap_rel[i]),
-            cell(sw.mean_contact_stress[i]),
-            sw.converged.get(i).copied().unwrap_or(false),
-            cell(at(&sw.gap_lower, i)),
-            cell(at(&sw.gap_upper, i)),
-            cell(at(&sw.a_r_unloading, i)),
-            cell(at(&sw.gap_unloading, i)),
-        );
-    }
-    t
+         a_r_unloading,mean_gap_unloading_rel",
+        rows,
+    ) + "\n"
 }
 
 /// The thickness chart as CSV (with the thickness chart shown): a_r against t·q_r at the
@@ -241,32 +235,24 @@ pub fn thickness_csv(th: &ThicknessData) -> String {
     let _ = writeln!(t, "# a_r_half_space: {}", cell(th.a_r_inf));
     let _ = writeln!(t, "# jump_in_thickness_qr: {}", list(&th.jump_in));
     let _ = writeln!(t, "# pull_off_thickness_qr: {}", list(&th.pull_off));
-    t.push_str("thickness_qr,a_r,a_r_unloading,a_r_adhesionless\n");
-    for i in 0..th.t.len() {
+    let rows = (0..th.t.len()).map(|i| {
         let dry = th.adhesionless.as_deref().map_or(f64::NAN, |d| at(d, i));
-        let _ = writeln!(
-            t,
-            "{},{},{},{}",
-            cell(th.t[i]),
-            cell(th.a_r[i]),
-            cell(at(&th.a_r_unloading, i)),
-            cell(dry)
-        );
-    }
-    t
+        [th.t[i], th.a_r[i], at(&th.a_r_unloading, i), dry].map(cell).to_vec()
+    });
+    t + &table("thickness_qr,a_r,a_r_unloading,a_r_adhesionless", rows) + "\n"
 }
 
 /// The GFMD results of the scene as CSV, long format: `source` is `gfmd` (the run at p* and
 /// the loads of its sweep) or `theory_on_map` (the theory on the map's own discrete spectrum
 /// at the same loads: the like-for-like comparison).
 pub fn gfmd_csv(g: &GfmdView) -> String {
-    let mut t = format!(
+    let t = format!(
         "# GFMD on a {n}x{n} grid, {it} steps at p* = {p:e}\n",
         n = g.grid,
         it = g.iterations,
         p = g.pressure
     );
-    t.push_str("source,p,a_r,mean_gap_rel,mean_contact_stress\n");
+
     let mut rows: Vec<(&str, f64, f64, f64, f64)> = vec![("gfmd", g.pressure, g.a_r, g.gap_rel, g.mean_contact_stress)];
     // the sweep's middle load is the run itself
     let other = |p: f64| (p / g.pressure - 1.0).abs() > 1e-9;
@@ -286,10 +272,10 @@ pub fn gfmd_csv(g: &GfmdView) -> String {
             .map(|r| ("theory_on_map", r.0, r.1, r.2, f64::NAN)),
     );
     rows.sort_by(|a, b| a.0.cmp(b.0).then(a.1.total_cmp(&b.1)));
-    for (src, p, a, u, s) in rows {
-        let _ = writeln!(t, "{src},{},{},{},{}", cell(p), cell(a), cell(u), cell(s));
-    }
-    t
+    let cells = rows
+        .into_iter()
+        .map(|(src, p, a, u, s)| [src.to_string(), cell(p), cell(a), cell(u), cell(s)].to_vec());
+    t + &table("source,p,a_r,mean_gap_rel,mean_contact_stress", cells) + "\n"
 }
 
 /// The chart `m` as the `s` export writes it: the same value the view drew, its title
