@@ -246,12 +246,7 @@ fn the_pull_off_read_out_holds_what_it_states_on_cases_left_out() {
     let mut held = [0usize; 4];
     let mut known = 0;
     for (i, c) in all.iter().enumerate() {
-        let others: Vec<_> = all
-            .iter()
-            .enumerate()
-            .filter(|(j, _)| *j != i)
-            .map(|(_, c)| *c)
-            .collect();
+        let others = all_but(all, i);
         let own = |x: f64| (x / c.gfmd.0).abs();
         // GFMD's pull-off lies between the theory's and the larger route's at every case
         assert!(
@@ -380,12 +375,7 @@ fn the_gauged_estimates_band_holds_the_left_out_pull_offs() {
     let all = table();
     let mut held = 0;
     for (i, c) in all.iter().enumerate() {
-        let others: Vec<_> = all
-            .iter()
-            .enumerate()
-            .filter(|(j, _)| *j != i)
-            .map(|(_, c)| *c)
-            .collect();
+        let others = all_but(all, i);
         let g = Gauge::on(&others).unwrap();
         let e = estimate_with(Some(&g), c.gamma_glo, c.thickness_qr, Vec::new());
         let [lo, hi] = e.band.unwrap();
@@ -462,4 +452,13 @@ fn outside_the_measured_range_the_gauge_gives_no_estimate() {
     }
     // without adhesion: no tension
     assert_eq!(estimate(&system2(0.3, 0.0)).pull_off_pressure, Some(0.0));
+}
+
+/// Every case of `all` but the `i`-th (a case left out).
+fn all_but<T: Copy>(all: &[T], i: usize) -> Vec<T> {
+    all.iter()
+        .enumerate()
+        .filter(|(j, _)| *j != i)
+        .map(|(_, c)| *c)
+        .collect()
 }

@@ -15,18 +15,18 @@ impl App {
                 if &key == Slot::Point.key_in(self.results.keys()) {
                     self.results.point_gen = self.results.point_gen.max(gen);
                 }
-                self.keep(key, Stored::Point(result), 0);
+                self.keep(key, Stored::Point(result));
             }
             Reply::Sweep { key, result, .. } => {
                 let current = &key == Slot::Sweep.key_in(self.results.keys());
-                self.keep(key, Stored::Sweep(result), 1);
+                self.keep(key, Stored::Sweep(result));
                 if current {
                     self.follow_window();
                 }
             }
-            Reply::Gap { key, result, .. } => self.keep(key, Stored::Gap(result), usize::MAX),
-            Reply::Thickness { key, result, .. } => self.keep(key, Stored::Thickness(result), 2),
-            Reply::Scales { key, result, .. } => self.keep(key, Stored::Scales(result), usize::MAX),
+            Reply::Gap { key, result, .. } => self.keep(key, Stored::Gap(result)),
+            Reply::Thickness { key, result, .. } => self.keep(key, Stored::Thickness(result)),
+            Reply::Scales { key, result, .. } => self.keep(key, Stored::Scales(result)),
             Reply::GfmdProgress { id, progress } => self.on_gfmd_progress(id, progress),
             Reply::GfmdDone { id, result, elapsed_s } => self.on_gfmd_done(id, result, elapsed_s),
             Reply::Fault { gen, message } => {
@@ -49,13 +49,19 @@ impl App {
     }
 
     /// Stores `value` under `key`: shown where `key` is the current scene's; kept for `M`
-    /// where it is another model's key of kind `overlay` (0 point, 1 sweep, 2 thickness;
-    /// usize::MAX: a kind only the current model has); dropped otherwise.
-    fn keep(&mut self, key: CacheKey, value: Stored, overlay: usize) {
+    /// where it is another model's key of the same kind (points, load and thickness sweeps:
+    /// the kinds [`crate::tui::base::protocol::SceneKeys::overlays`] holds); dropped otherwise.
+    fn keep(&mut self, key: CacheKey, value: Stored) {
         let keys = self.results.keys();
+        let overlay = match value.slot() {
+            Slot::Point => Some(0),
+            Slot::Sweep => Some(1),
+            Slot::Thickness => Some(2),
+            Slot::Gap | Slot::Scales => None,
+        };
         if &key == value.slot().key_in(keys) {
             self.results.put(key, value, true);
-        } else if self.ui.all_models && keys.overlays.iter().any(|(_, k)| k.get(overlay) == Some(&key)) {
+        } else if self.ui.all_models && overlay.is_some_and(|o| keys.overlays.iter().any(|(_, k)| k[o] == key)) {
             self.results.put(key, value, false);
         }
     }
