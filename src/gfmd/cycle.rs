@@ -25,7 +25,6 @@
 //! same load (contact hysteresis; tested).
 
 use super::distributed::comm::{Comm, Solo};
-use super::sweep::PathSolver;
 use super::sweep::{GfmdSweepRow, LoadMap, Walker};
 use super::{prepare, GfmdOptions, GfmdSetup, Progress, Stage};
 use crate::error::{Error, Field, Result};
@@ -199,8 +198,8 @@ impl PathWalk {
 ///
 /// # Errors
 /// As [`run_cycle`] for the GFMD part.
-pub(crate) fn walk(
-    solver: &mut dyn PathSolver,
+pub(crate) fn walk<M: LoadMap>(
+    solver: &mut Walker<'_, M>,
     spec: &CycleSpec,
     progress: &mut dyn FnMut(usize, Progress),
     cancel: &AtomicBool,
@@ -350,8 +349,8 @@ struct PullOff {
 
 /// Steps from the smallest load `p1` into tension until contact is lost, then bisects the
 /// bracket (module docs, step 3); appends the loads held to `rows`.
-fn tension(
-    solver: &mut dyn PathSolver,
+fn tension<M: LoadMap>(
+    solver: &mut Walker<'_, M>,
     p1: f64,
     rows: &mut Vec<CycleRow>,
     progress: &mut dyn FnMut(usize, Progress),

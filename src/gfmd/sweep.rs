@@ -146,26 +146,6 @@ pub fn energy_slab(comm: &dyn Comm, heights: &[f64], nodes: usize, load: (f64, f
     el + inter
 }
 
-/// One relaxation at a time along a path of loads, warm-started from the last state held: the
-/// whole map or one rank's slab ([`Walker`] on either [`LoadMap`]). A load sweep
-/// ([`walk_loads`]) and the load cycle's path (`cycle::walk`) are the same code for both, so
-/// the loads visited (bisections included) depend only on the rows, which are equal bit for
-/// bit.
-pub(crate) trait PathSolver {
-    /// Relaxes at p* = `p` (row index `k` for progress) from the last state held; `None` when
-    /// contact is lost (the state is kept).
-    fn step(
-        &mut self,
-        p: f64,
-        k: usize,
-        progress: &mut dyn FnMut(usize, Progress),
-        cancel: &AtomicBool,
-    ) -> Result<Option<GfmdSweepRow>>;
-    /// The interaction's theoretical strength γ/ρ in p* (by the map's ḡ); `None` without
-    /// adhesion.
-    fn strength(&self) -> Option<f64>;
-}
-
 /// A map a [`Walker`] relaxes on: the whole map ([`Prepared`]) or one rank's slab of it
 /// (`distributed::run::PreparedSlab`).
 pub(crate) trait LoadMap {
@@ -223,7 +203,11 @@ impl LoadMap for Prepared {
 }
 
 /// The walker along a path on a map (the whole map on one rank, or this rank's slab): the map,
-/// this rank's part of the last relaxed gap and the step count.
+/// this rank's part of the last relaxed gap and the step count. It relaxes one load at a time,
+/// warm-started from the last state held, on either [`LoadMap`]: a load sweep
+/// ([`walk_loads`]) and the load cycle's path (`cycle::walk`) are the same code for both, so
+/// the loads visited (bisections included) depend only on the rows, which are equal bit for
+/// bit.
 pub(crate) struct Walker<'a, M> {
     comm: &'a dyn Comm,
     pub(crate) prep: M,
@@ -246,8 +230,10 @@ impl<'a, M: LoadMap> Walker<'a, M> {
     }
 }
 
-impl<M: LoadMap> PathSolver for Walker<'_, M> {
-    fn step(
+impl<M: LoadMap> Walker<'_, M> {
+    /// Relaxes at p* = `p` (row index `k` for progress) from the last state held; `None` when
+    /// contact is lost (the state is kept).
+    pub(crate) fn step(
         &mut self,
         p: f64,
         k: usize,
@@ -269,7 +255,9 @@ impl<M: LoadMap> PathSolver for Walker<'_, M> {
         Ok(row)
     }
 
-    fn strength(&self) -> Option<f64> {
+    /// The interaction's theoretical strength γ/ρ in p* (by the map's ḡ); `None` without
+    /// adhesion.
+    pub(crate) fn strength(&self) -> Option<f64> {
         let (sc, g, _) = self.prep.scene_and_moments();
         (sc.gamma > 0.0).then(|| sc.gamma / sc.range / (sc.modulus * g))
     }
@@ -295,8 +283,8 @@ pub(crate) fn held(out: Relaxation, iterations: &mut usize) -> Option<Solution> 
 ///
 /// # Errors
 /// As the solver's; [`Error::NotConverged`] if contact were lost (no equilibrium).
-pub(crate) fn walk_loads(
-    solver: &mut dyn PathSolver,
+pub(crate) fn walk_loads<M: LoadMap>(
+    solver: &mut Walker<'_, M>,
     pressures: &[f64],
     progress: &mut dyn FnMut(usize, Progress),
     cancel: &AtomicBool,

@@ -36,36 +36,51 @@ pub struct Trajectory {
     pub evaluations: usize,
 }
 
-const C2: f64 = 1.0 / 5.0;
-const C3: f64 = 3.0 / 10.0;
-const C4: f64 = 4.0 / 5.0;
-const C5: f64 = 8.0 / 9.0;
-const A21: f64 = 1.0 / 5.0;
-const A31: f64 = 3.0 / 40.0;
-const A32: f64 = 9.0 / 40.0;
-const A41: f64 = 44.0 / 45.0;
-const A42: f64 = -56.0 / 15.0;
-const A43: f64 = 32.0 / 9.0;
-const A51: f64 = 19372.0 / 6561.0;
-const A52: f64 = -25360.0 / 2187.0;
-const A53: f64 = 64448.0 / 6561.0;
-const A54: f64 = -212.0 / 729.0;
-const A61: f64 = 9017.0 / 3168.0;
-const A62: f64 = -355.0 / 33.0;
-const A63: f64 = 46732.0 / 5247.0;
-const A64: f64 = 49.0 / 176.0;
-const A65: f64 = -5103.0 / 18656.0;
-const B1: f64 = 35.0 / 384.0;
-const B3: f64 = 500.0 / 1113.0;
-const B4: f64 = 125.0 / 192.0;
-const B5: f64 = -2187.0 / 6784.0;
-const B6: f64 = 11.0 / 84.0;
-const E1: f64 = 71.0 / 57600.0;
-const E3: f64 = -71.0 / 16695.0;
-const E4: f64 = 71.0 / 1920.0;
-const E5: f64 = -17253.0 / 339200.0;
-const E6: f64 = 22.0 / 525.0;
-const E7: f64 = -1.0 / 40.0;
+/// The Dormand–Prince 5(4) tableau: nodes `C[i]` and weights `A[i]` of stage i+1 (stage 1 is
+/// the derivative at the step's start), the fifth-order weights `B` of stages 1–6 and the error
+/// weights `E` (fifth minus embedded fourth order) of stages 1–7 (stage 7: the derivative at
+/// the step's end). Stage 2 enters no sum (its weights are 0).
+const C: [f64; 6] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0];
+const A: [&[f64]; 6] = [
+    &[],
+    &[1.0 / 5.0],
+    &[3.0 / 40.0, 9.0 / 40.0],
+    &[44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0],
+    &[19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0],
+    &[
+        9017.0 / 3168.0,
+        -355.0 / 33.0,
+        46732.0 / 5247.0,
+        49.0 / 176.0,
+        -5103.0 / 18656.0,
+    ],
+];
+const B: [f64; 6] = [
+    35.0 / 384.0,
+    0.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+];
+const E: [f64; 7] = [
+    71.0 / 57600.0,
+    0.0,
+    -71.0 / 16695.0,
+    71.0 / 1920.0,
+    -17253.0 / 339200.0,
+    22.0 / 525.0,
+    -1.0 / 40.0,
+];
+
+/// Σ wᵢ·kᵢ over the non-zero weights, summed from the first stage on.
+fn weighted(w: &[f64], k: &[f64]) -> f64 {
+    w.iter()
+        .zip(k)
+        .skip(1)
+        .filter(|(w, _)| **w != 0.0)
+        .fold(w[0] * k[0], |acc, (w, k)| acc + w * k)
+}
 
 impl Trajectory {
     /// Starts a trajectory at (s0, y0).
@@ -103,14 +118,16 @@ impl Trajectory {
             if last {
                 h = s_end - s;
             }
-            let k2 = f(s + C2 * h, y + h * A21 * k1);
-            let k3 = f(s + C3 * h, y + h * (A31 * k1 + A32 * k2));
-            let k4 = f(s + C4 * h, y + h * (A41 * k1 + A42 * k2 + A43 * k3));
-            let k5 = f(s + C5 * h, y + h * (A51 * k1 + A52 * k2 + A53 * k3 + A54 * k4));
-            let k6 = f(s + h, y + h * (A61 * k1 + A62 * k2 + A63 * k3 + A64 * k4 + A65 * k5));
-            let y_new = y + h * (B1 * k1 + B3 * k3 + B4 * k4 + B5 * k5 + B6 * k6);
+            // Stages 2–6 (stage 2 as (h·a₂₁)·k₁), then the fifth-order step.
+            let mut k = [k1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+            k[1] = f(s + C[1] * h, y + h * A[1][0] * k1);
+            for i in 2..6 {
+                k[i] = f(s + C[i] * h, y + h * weighted(A[i], &k));
+            }
+            let y_new = y + h * weighted(&B, &k);
             let s_new = if last { s_end } else { s + h };
-            let k7 = f(s_new, y_new);
+            k[6] = f(s_new, y_new);
+            let k7 = k[6];
             self.evaluations += 6;
             if !(y_new.is_finite() && k7.is_finite()) {
                 return Err(Error::NotConverged {
@@ -118,7 +135,7 @@ impl Trajectory {
                     reason: format!("non-finite value at s = {s:.6}"),
                 });
             }
-            let err = (h * (E1 * k1 + E3 * k3 + E4 * k4 + E5 * k5 + E6 * k6 + E7 * k7)).abs();
+            let err = (h * weighted(&E, &k)).abs();
             let scale = ctl.atol + ctl.rtol * y.abs().max(y_new.abs());
             let ratio = err / scale;
             let factor = if ratio == 0.0 {
@@ -159,14 +176,10 @@ impl Trajectory {
     /// (1980), so the interpolant never leaves [y_i, y_{i+1}]. Where a step is well resolved
     /// (slopes below 3Δy/h) it equals [`Trajectory::eval`].
     pub fn eval_monotone(&self, s: f64) -> f64 {
-        let n = self.s.len();
-        if n == 1 || s <= self.s[0] {
-            return self.y[0];
-        }
-        if s >= self.s[n - 1] {
-            return self.y[n - 1];
-        }
-        let i = self.s.partition_point(|&x| x <= s) - 1;
+        let i = match self.interval(s) {
+            Ok(i) => i,
+            Err(end) => return end,
+        };
         let (s0, s1) = (self.s[i], self.s[i + 1]);
         let h = s1 - s0;
         let (y0, y1) = (self.y[i], self.y[i + 1]);
@@ -177,23 +190,15 @@ impl Trajectory {
         let t = (s - s0) / h;
         let d0 = (self.dy[i] * h).clamp(0.0, 3.0 * dy);
         let d1 = (self.dy[i + 1] * h).clamp(0.0, 3.0 * dy);
-        let t2 = t * t;
-        let t3 = t2 * t;
-        let v =
-            (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * d0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * d1;
-        v.clamp(y0, y1)
+        hermite(t, y0, d0, y1, d1).clamp(y0, y1)
     }
 
     /// Cubic Hermite interpolation of y at s (clamped to the trajectory's range).
     pub fn eval(&self, s: f64) -> f64 {
-        let n = self.s.len();
-        if n == 1 || s <= self.s[0] {
-            return self.y[0];
-        }
-        if s >= self.s[n - 1] {
-            return self.y[n - 1];
-        }
-        let i = self.s.partition_point(|&x| x <= s) - 1;
+        let i = match self.interval(s) {
+            Ok(i) => i,
+            Err(end) => return end,
+        };
         let (s0, s1) = (self.s[i], self.s[i + 1]);
         let h = s1 - s0;
         if h <= 0.0 {
@@ -201,10 +206,30 @@ impl Trajectory {
         }
         let t = (s - s0) / h;
         let (y0, y1, d0, d1) = (self.y[i], self.y[i + 1], self.dy[i] * h, self.dy[i + 1] * h);
-        let t2 = t * t;
-        let t3 = t2 * t;
-        (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * d0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * d1
+        hermite(t, y0, d0, y1, d1)
     }
+
+    /// The step holding `s`: `Ok(i)` for s in (s_i, s_{i+1}), `Err(y)` at or beyond an end of
+    /// the trajectory (or on a one-point trajectory) with that end's y, where the interpolants
+    /// clamp.
+    fn interval(&self, s: f64) -> std::result::Result<usize, f64> {
+        let n = self.s.len();
+        if n == 1 || s <= self.s[0] {
+            return Err(self.y[0]);
+        }
+        if s >= self.s[n - 1] {
+            return Err(self.y[n - 1]);
+        }
+        Ok(self.s.partition_point(|&x| x <= s) - 1)
+    }
+}
+
+/// The cubic Hermite interpolant at t ∈ [0, 1] with values y0, y1 and slopes d0, d1 (per unit
+/// t) at its ends.
+fn hermite(t: f64, y0: f64, d0: f64, y1: f64, d1: f64) -> f64 {
+    let t2 = t * t;
+    let t3 = t2 * t;
+    (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * d0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * d1
 }
 
 #[cfg(test)]

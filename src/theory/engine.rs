@@ -214,6 +214,19 @@ pub fn evaluate_warm(
     evaluate_continued(scene, opts, warm.as_slice(), cancel)
 }
 
+/// The contact statistics of a solution: `[a_r, σ̄_c*, ⟨δσ_c²⟩*]` and Pr(σ*) as (σ*, density).
+fn stats_of(
+    [a_r, mean_contact_stress, contact_stress_variance]: [f64; 3],
+    (sigma, density): (Vec<f64>, Vec<f64>),
+) -> ContactStats {
+    ContactStats {
+        a_r,
+        mean_contact_stress,
+        contact_stress_variance,
+        pr: PrCurve { sigma, density },
+    }
+}
+
 /// [`evaluate_warm`] continued along a path of evaluations of the same scene at other loads,
 /// oldest first: with adhesion the solver extrapolates the branches from the last two, or
 /// interpolates between them where this load lies between ([`adhesion::solve_continued`]);
@@ -243,15 +256,10 @@ pub fn evaluate_continued(
         Some(s) => check_in(Field::SigmaMax, s, SIGMA_MAX_RANGE.0, SIGMA_MAX_RANGE.1)?,
         None => sol.default_sigma_max(),
     };
-    let (sigma, density) = sol.sample(sigma_max, opts.sigma_points);
+    let pr = sol.sample(sigma_max, opts.sigma_points);
     let elastic_energy = crate::theory::energy::elastic_energy(scene, |q| sol.area_at(q));
     Ok(Evaluation {
-        stats: ContactStats {
-            a_r: sol.a_r,
-            mean_contact_stress: sol.mean_contact_stress,
-            contact_stress_variance: sol.contact_stress_variance,
-            pr: PrCurve { sigma, density },
-        },
+        stats: stats_of([sol.a_r, sol.mean_contact_stress, sol.contact_stress_variance], pr),
         width: sol.width,
         resolution: sol.resolution,
         error_estimate: sol.error_estimate,
@@ -363,14 +371,9 @@ fn evaluate_adhesive(
         .iter()
         .map(|&q| adhesion::interpolate(&sol, q, &sol.sigma_a_q))
         .collect();
-    let (sigma, density) = resample(&sol, opts);
+    let pr = resample(&sol, opts);
     Ok(Evaluation {
-        stats: ContactStats {
-            a_r: sol.a_r,
-            mean_contact_stress: sol.mean_contact_stress,
-            contact_stress_variance: sol.contact_stress_variance,
-            pr: PrCurve { sigma, density },
-        },
+        stats: stats_of([sol.a_r, sol.mean_contact_stress, sol.contact_stress_variance], pr),
         width: sol.width,
         resolution,
         error_estimate,

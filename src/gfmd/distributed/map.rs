@@ -10,7 +10,7 @@
 //! between ([`super::slab_fft`]). The slab equals the serial map's rows bit for bit.
 
 use super::comm::{chain_fold, chain_fold_var, chain_sum, share, Comm};
-use super::slab_fft::{transpose_cols_to_rows, transpose_rows_to_cols, SlabFft};
+use super::slab_fft::{SlabFft, Transpose};
 use crate::error::{Error, Field, Result};
 use crate::surface::heightmap::{fourier_rows, wave_number_sq};
 use crate::surface::spectrum::{Discrete, SelfAffine};
@@ -101,10 +101,17 @@ fn complex_transform(comm: &dyn Comm, data: &mut [Complex64], n: usize, rows: &[
     let (c0, c1) = cols[comm.rank()];
     fft.process(data);
     let mut colsbuf = vec![Complex64::new(0.0, 0.0); (c1 - c0) * n];
-    let (mut s, mut r) = (Vec::new(), Vec::new());
-    transpose_rows_to_cols(comm, data, n, n, rows, &cols, &mut s, &mut r, &mut colsbuf);
+    let mut t = Transpose {
+        width: n,
+        ny: n,
+        rows: rows.to_vec(),
+        cols,
+        send: Vec::new(),
+        recv: Vec::new(),
+    };
+    t.rows_to_cols(comm, data, &mut colsbuf);
     fft.process(&mut colsbuf);
-    transpose_cols_to_rows(comm, &colsbuf, n, n, rows, &cols, &mut s, &mut r, data);
+    t.cols_to_rows(comm, &colsbuf, data);
 }
 
 /// h_rms about the mean (m): [`Surface::rms_height`] of the whole map, bit for bit.

@@ -24,8 +24,6 @@ pub struct SlabFft {
     nx: usize,
     ny: usize,
     nh: usize,
-    rows: Vec<(usize, usize)>,
-    cols: Vec<(usize, usize)>,
     rank: usize,
     r2c: Arc<dyn realfft::RealToComplex<f64>>,
     c2r: Arc<dyn realfft::ComplexToReal<f64>>,
@@ -33,8 +31,7 @@ pub struct SlabFft {
     col_inv: Arc<dyn rustfft::Fft<f64>>,
     /// The rank's rows of the half spectrum (row-major, nh per row).
     rowspec: Vec<Complex64>,
-    send: Vec<f64>,
-    recv: Vec<f64>,
+    transpose: Transpose,
     parallel: bool,
 }
 
@@ -77,21 +74,25 @@ impl SlabFft {
             col_fwd: cp.plan_fft_forward(ny),
             col_inv: cp.plan_fft_inverse(ny),
             rowspec: vec![Complex64::new(0.0, 0.0); (y1 - y0) * nh],
-            send: vec![0.0; words],
-            recv: vec![0.0; words],
             parallel: nx * (y1 - y0) >= PARALLEL_MIN_POINTS,
-            rows,
-            cols,
+            transpose: Transpose {
+                width: nh,
+                ny,
+                rows,
+                cols,
+                send: vec![0.0; words],
+                recv: vec![0.0; words],
+            },
         }
     }
 
     /// This rank's rows [y₀, y₁) of the real field.
     pub fn my_rows(&self) -> (usize, usize) {
-        self.rows[self.rank]
+        self.transpose.rows[self.rank]
     }
     /// This rank's columns [c₀, c₁) of the half spectrum.
     pub fn my_cols(&self) -> (usize, usize) {
-        self.cols[self.rank]
+        self.transpose.cols[self.rank]
     }
     /// nx/2 + 1.
     pub fn nh(&self) -> usize {
@@ -213,120 +214,104 @@ impl SlabFft {
 
     /// The rank's spectrum rows → its spectrum columns (all ky).
     fn rows_to_cols(&mut self, comm: &dyn Comm, spec: &mut [Complex64]) {
-        transpose_rows_to_cols(
-            comm,
-            &self.rowspec,
-            self.nh,
-            self.ny,
-            &self.rows,
-            &self.cols,
-            &mut self.send,
-            &mut self.recv,
-            spec,
-        );
+        self.transpose.rows_to_cols(comm, &self.rowspec, spec);
     }
 
     /// The rank's spectrum columns → its spectrum rows.
     fn cols_to_rows(&mut self, comm: &dyn Comm, spec: &[Complex64]) {
-        transpose_cols_to_rows(
-            comm,
-            spec,
-            self.nh,
-            self.ny,
-            &self.rows,
-            &self.cols,
-            &mut self.send,
-            &mut self.recv,
-            &mut self.rowspec,
-        );
+        self.transpose.cols_to_rows(comm, spec, &mut self.rowspec);
     }
 }
 
-/// Rows [y₀, y₁) of a `width`-wide complex array (row-major) → columns [c₀, c₁) of it, each
-/// column contiguous over all `ny` rows (`out[(c − c₀)·ny + y]`).
-#[allow(clippy::too_many_arguments)]
-pub fn transpose_rows_to_cols(
-    comm: &dyn Comm,
-    rows_local: &[Complex64],
-    width: usize,
-    ny: usize,
-    rows: &[(usize, usize)],
-    cols: &[(usize, usize)],
-    send: &mut Vec<f64>,
-    recv: &mut Vec<f64>,
-    out: &mut [Complex64],
-) {
-    let me = comm.rank();
-    let (y0, y1) = rows[me];
-    let (c0, c1) = cols[me];
-    let nl = y1 - y0;
-    let sc: Vec<usize> = cols.iter().map(|&(a, b)| 2 * nl * (b - a)).collect();
-    let rc: Vec<usize> = rows.iter().map(|&(a, b)| 2 * (b - a) * (c1 - c0)).collect();
-    send.resize(sc.iter().sum::<usize>().max(send.len()), 0.0);
-    recv.resize(rc.iter().sum::<usize>().max(recv.len()), 0.0);
-    let mut k = 0;
-    for &(a, b) in cols {
-        for y in 0..nl {
-            let w = as_words(&rows_local[y * width + a..y * width + b]);
-            send[k..k + w.len()].copy_from_slice(w);
-            k += w.len();
-        }
-    }
-    let total_r: usize = rc.iter().sum();
-    comm.all_to_all_v(&send[..k], &sc, &mut recv[..total_r], &rc);
-    let nc = c1 - c0;
-    let mut k = 0;
-    for &(a, b) in rows {
-        for y in a..b {
-            for c in 0..nc {
-                out[c * ny + y] = Complex64::new(recv[k], recv[k + 1]);
-                k += 2;
-            }
-        }
-    }
+/// The all-to-all transpose of a `width`-wide complex array of `ny` rows between its two
+/// layouts: rank r holds rows `rows[r]` (row-major) in one and columns `cols[r]` in the other,
+/// each column contiguous over all `ny` rows (`out[(c − c₀)·ny + y]`). Holds the exchange
+/// buffers.
+pub struct Transpose {
+    /// Row length of the array.
+    pub width: usize,
+    /// Number of rows.
+    pub ny: usize,
+    /// Each rank's rows [y₀, y₁).
+    pub rows: Vec<(usize, usize)>,
+    /// Each rank's columns [c₀, c₁).
+    pub cols: Vec<(usize, usize)>,
+    /// Words sent (reused between transposes).
+    pub send: Vec<f64>,
+    /// Words received (reused between transposes).
+    pub recv: Vec<f64>,
 }
 
-/// The inverse of [`transpose_rows_to_cols`].
-#[allow(clippy::too_many_arguments)]
-pub fn transpose_cols_to_rows(
-    comm: &dyn Comm,
-    cols_local: &[Complex64],
-    width: usize,
-    ny: usize,
-    rows: &[(usize, usize)],
-    cols: &[(usize, usize)],
-    send: &mut Vec<f64>,
-    recv: &mut Vec<f64>,
-    out: &mut [Complex64],
-) {
-    let me = comm.rank();
-    let (y0, y1) = rows[me];
-    let (c0, c1) = cols[me];
-    let nl = y1 - y0;
-    let nc = c1 - c0;
-    let sc: Vec<usize> = rows.iter().map(|&(a, b)| 2 * (b - a) * nc).collect();
-    let rc: Vec<usize> = cols.iter().map(|&(a, b)| 2 * nl * (b - a)).collect();
-    send.resize(sc.iter().sum::<usize>().max(send.len()), 0.0);
-    recv.resize(rc.iter().sum::<usize>().max(recv.len()), 0.0);
-    let mut k = 0;
-    for &(a, b) in rows {
-        for y in a..b {
-            for c in 0..nc {
-                let z = cols_local[c * ny + y];
-                send[k] = z.re;
-                send[k + 1] = z.im;
-                k += 2;
+impl Transpose {
+    /// Rank `me`'s numbers of rows and of columns, and the words it holds for each rank in
+    /// the row layout (2 · its rows · their columns) and in the column layout (2 · their rows ·
+    /// its columns), with the send and receive buffers grown to hold the larger of the two
+    /// totals.
+    fn counts(&mut self, me: usize) -> ((usize, usize), Vec<usize>, Vec<usize>) {
+        let (nl, nc) = (self.rows[me].1 - self.rows[me].0, self.cols[me].1 - self.cols[me].0);
+        let by_row: Vec<usize> = self.cols.iter().map(|&(a, b)| 2 * nl * (b - a)).collect();
+        let by_col: Vec<usize> = self.rows.iter().map(|&(a, b)| 2 * (b - a) * nc).collect();
+        let words = by_row.iter().sum::<usize>().max(by_col.iter().sum());
+        for buf in [&mut self.send, &mut self.recv] {
+            buf.resize(words.max(buf.len()), 0.0);
+        }
+        ((nl, nc), by_row, by_col)
+    }
+
+    /// Sends the first `k` words of the send buffer, `sc[r]` of them to rank r, and receives
+    /// `rc[r]` from rank r into the receive buffer.
+    fn exchange(&mut self, comm: &dyn Comm, k: usize, sc: &[usize], rc: &[usize]) {
+        let total_r: usize = rc.iter().sum();
+        comm.all_to_all_v(&self.send[..k], sc, &mut self.recv[..total_r], rc);
+    }
+
+    /// Rows `rows[rank]` of the array (`rows_local`, row-major) → columns `cols[rank]` of it.
+    pub fn rows_to_cols(&mut self, comm: &dyn Comm, rows_local: &[Complex64], out: &mut [Complex64]) {
+        let ((nl, nc), sc, rc) = self.counts(comm.rank());
+        let (width, ny) = (self.width, self.ny);
+        let mut k = 0;
+        for &(a, b) in &self.cols {
+            for y in 0..nl {
+                let w = as_words(&rows_local[y * width + a..y * width + b]);
+                self.send[k..k + w.len()].copy_from_slice(w);
+                k += w.len();
+            }
+        }
+        self.exchange(comm, k, &sc, &rc);
+        let mut k = 0;
+        for &(a, b) in &self.rows {
+            for y in a..b {
+                for c in 0..nc {
+                    out[c * ny + y] = Complex64::new(self.recv[k], self.recv[k + 1]);
+                    k += 2;
+                }
             }
         }
     }
-    let total_r: usize = rc.iter().sum();
-    comm.all_to_all_v(&send[..k], &sc, &mut recv[..total_r], &rc);
-    let mut k = 0;
-    for &(a, b) in cols {
-        for y in 0..nl {
-            let dst = as_words_mut(&mut out[y * width + a..y * width + b]);
-            dst.copy_from_slice(&recv[k..k + dst.len()]);
-            k += dst.len();
+
+    /// The inverse of [`Transpose::rows_to_cols`].
+    pub fn cols_to_rows(&mut self, comm: &dyn Comm, cols_local: &[Complex64], out: &mut [Complex64]) {
+        let ((nl, nc), rc, sc) = self.counts(comm.rank());
+        let (width, ny) = (self.width, self.ny);
+        let mut k = 0;
+        for &(a, b) in &self.rows {
+            for y in a..b {
+                for c in 0..nc {
+                    let z = cols_local[c * ny + y];
+                    self.send[k] = z.re;
+                    self.send[k + 1] = z.im;
+                    k += 2;
+                }
+            }
+        }
+        self.exchange(comm, k, &sc, &rc);
+        let mut k = 0;
+        for &(a, b) in &self.cols {
+            for y in 0..nl {
+                let dst = as_words_mut(&mut out[y * width + a..y * width + b]);
+                dst.copy_from_slice(&self.recv[k..k + dst.len()]);
+                k += dst.len();
+            }
         }
     }
 }

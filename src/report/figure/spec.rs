@@ -129,6 +129,18 @@ pub struct Overrides {
     pub model: Option<u8>,
 }
 
+impl Overrides {
+    /// p*, t·q_r, γ_s and the model, in the order of the fields.
+    pub fn new(pressure: Option<f64>, thickness_qr: Option<f64>, gamma: Option<f64>, model: Option<u8>) -> Self {
+        Overrides {
+            pressure,
+            thickness_qr,
+            gamma,
+            model,
+        }
+    }
+}
+
 /// One theory curve.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
@@ -168,12 +180,7 @@ impl CurveSpec {
 
     /// The curve's overrides.
     pub fn overrides(&self) -> Overrides {
-        Overrides {
-            pressure: self.pressure,
-            thickness_qr: self.thickness_qr,
-            gamma: self.gamma,
-            model: self.model,
-        }
+        Overrides::new(self.pressure, self.thickness_qr, self.gamma, self.model)
     }
 }
 
@@ -270,12 +277,7 @@ fn bad(source: &str, message: String) -> Error {
 impl FigureSpec {
     /// The figure-wide overrides.
     pub fn overrides(&self) -> Overrides {
-        Overrides {
-            pressure: self.pressure,
-            thickness_qr: self.thickness_qr,
-            gamma: self.gamma,
-            model: self.model,
-        }
+        Overrides::new(self.pressure, self.thickness_qr, self.gamma, self.model)
     }
 
     /// Parses TOML text; `source` names the file in errors (the same one-line errors as

@@ -5,6 +5,14 @@
 use super::{bad, Raw, Unit};
 use crate::error::Result;
 
+/// Fails on the first height that is not finite, `at` naming its place in the file.
+fn all_finite(values: &[f64], source: &str, allowed: &str, at: impl Fn(usize) -> String) -> Result<()> {
+    match values.iter().position(|v| !v.is_finite()) {
+        Some(k) => Err(bad(source, at(k), "a height that is not finite", allowed)),
+        None => Ok(()),
+    }
+}
+
 pub(super) fn parse_npy(bytes: &[u8], source: &str) -> Result<Raw> {
     const ALLOWED: &str = "a 1-D or 2-D NumPy array of floats or integers";
     let file = npyz::NpyFile::new(bytes)
@@ -70,14 +78,7 @@ pub(super) fn parse_npy(bytes: &[u8], source: &str) -> Result<Raw> {
     } else {
         values
     };
-    if let Some(k) = values.iter().position(|v| !v.is_finite()) {
-        return Err(bad(
-            source,
-            format!("element {k}"),
-            "a height that is not finite",
-            ALLOWED,
-        ));
-    }
+    all_finite(&values, source, ALLOWED, |k| format!("element {k}"))?;
     Ok(Raw {
         nx,
         ny,
@@ -174,14 +175,7 @@ pub(super) fn parse_gsf(bytes: &[u8], source: &str) -> Result<Raw> {
         .chunks_exact(4)
         .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]) as f64)
         .collect();
-    if let Some(k) = values.iter().position(|v| !v.is_finite()) {
-        return Err(bad(
-            source,
-            format!("byte {}", data_at + 4 * k),
-            "a height that is not finite",
-            ALLOWED,
-        ));
-    }
+    all_finite(&values, source, ALLOWED, |k| format!("byte {}", data_at + 4 * k))?;
     Ok(Raw {
         nx,
         ny,
