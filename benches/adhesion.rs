@@ -75,10 +75,7 @@ fn sweeps(c: &mut Criterion) {
             to: 1.0,
             points: 64,
         };
-        let fine = SweepSpec {
-            points: 4 * 63 + 1,
-            ..spec
-        };
+        let fine = spec.refined(4);
         let reference = sweep::sweep(&scene, &fine, &Options::default(), None).unwrap();
         let sw = sweep::sweep(&scene, &spec, &opts, None).unwrap();
         let (ea, eg) = sw.max_errors_against(&reference, 4);

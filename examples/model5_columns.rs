@@ -13,7 +13,6 @@ use asperity::fit::bandwidth_gauge::full_system_cases;
 use asperity::fit::reference_set::reference_set;
 use asperity::fit::set_gauge::{case_errors, cases_of, ModelChoice};
 use asperity::input::model::Model;
-use asperity::theory::cycle::PathBranch;
 use asperity::theory::engine::Options;
 use rayon::prelude::*;
 
@@ -34,10 +33,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .iter()
                 .filter_map(|p| {
                     let e = errs.iter().find(|e| e.branch == p.branch && e.p == p.p)?;
-                    let branch = match p.branch {
-                        PathBranch::Loading => "loading",
-                        PathBranch::Unloading => "unloading",
-                    };
+                    let branch = p.branch.name();
                     let t = if c.thickness_qr.is_finite() {
                         format!("{}", c.thickness_qr)
                     } else {

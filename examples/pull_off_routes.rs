@@ -7,7 +7,7 @@
 //! (the upper edge of its hysteresis window), and per route the mean |ln(route/GFMD)| over
 //! the adhesive cases, split at t·q_r ≤ 0.3 (slabs) and above. Neither route has a free
 //! coefficient: every case is out of sample.
-use asperity::fit::reference_set::{pull_offs, reference_set};
+use asperity::fit::reference_set::{pull_off_of, reference_set};
 use asperity::fit::set_gauge::cases_of;
 use asperity::theory::dmt::{pull_off_route, Route, RouteOptions};
 use rayon::prelude::*;
@@ -29,10 +29,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // per route: (γ factor, GFMD pull-off, each map's (p_rep*, p_att*) table) for the scan
     let mut tables: Vec<Vec<Scaled>> = vec![Vec::new(); Route::ALL.len()];
     for c in &cases {
-        let Some(g) = pull_offs()
-            .iter()
-            .find(|r| r.system == 2 && r.thickness_qr == c.thickness_qr && r.gamma_factor == c.gamma_factor)
-        else {
+        let Some(g) = pull_off_of(2, c.thickness_qr, c.gamma_factor) else {
             continue;
         };
         let mut line = format!(

@@ -11,7 +11,6 @@
 use asperity::fit::reference_set::small_load_set;
 use asperity::fit::set_gauge::{case_errors, cases_of, ModelChoice};
 use asperity::input::model::Model;
-use asperity::theory::cycle::PathBranch;
 use asperity::theory::engine::Options;
 use rayon::prelude::*;
 
@@ -44,10 +43,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .iter()
                 .filter_map(|p| {
                     let e = errs.iter().find(|e| e.branch == p.branch && e.p == p.p)?;
-                    let branch = match p.branch {
-                        PathBranch::Loading => "loading",
-                        PathBranch::Unloading => "unloading",
-                    };
+                    let branch = p.branch.name();
                     Some(format!(
                         "system-2,{t},{},{branch},{:.10e},{m},{:.10e},{:.10e}",
                         c.gamma_factor,

@@ -8,7 +8,7 @@
 //! pass, each route's, and the summary per model; with OUT.csv it writes the table the
 //! pull-off read-out is built on (`data/reference/pull-off-theory-256.csv`,
 //! [`asperity::fit::pull_off_trust`]).
-use asperity::fit::reference_set::{pull_offs, reference_set};
+use asperity::fit::reference_set::{pull_off_of, reference_set};
 use asperity::fit::set_gauge::cases_of;
 use asperity::input::model::Model;
 use asperity::theory::adhesion::pull_off;
@@ -36,10 +36,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "t*q_r  gamma  glo    GFMD pull-off        model 3     model 4     model 5     bound       bam         gap-dmt"
     );
     for c in cases.iter().filter(|c| c.gamma_factor > 0.0) {
-        let Some(g) = pull_offs()
-            .iter()
-            .find(|r| r.system == 2 && r.thickness_qr == c.thickness_qr && r.gamma_factor == c.gamma_factor)
-        else {
+        let Some(g) = pull_off_of(2, c.thickness_qr, c.gamma_factor) else {
             continue;
         };
         let mut line = format!(

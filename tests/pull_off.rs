@@ -2,7 +2,7 @@
 //! minimisation of the bearing-area model, the gap distribution's coarsest patch gap against
 //! the Yang–Persson closed form, and both routes against GFMD's stored pull-offs.
 
-use asperity::fit::reference_set::pull_offs;
+use asperity::fit::reference_set::pull_off_of;
 use asperity::gfmd::result::prepare;
 use asperity::gfmd::{GfmdSetup, GridSpec};
 use asperity::input::model::Model;
@@ -140,12 +140,7 @@ fn both_routes_give_the_pull_off_measured_against_gfmd_not_the_zero_of_s() {
         (0.15, 2.0, 18.4, 21.7),
     ];
     for (t, f, bam, gap) in cases {
-        let g = pull_offs()
-            .iter()
-            .find(|r| r.system == 2 && r.thickness_qr == t && r.gamma_factor == f)
-            .unwrap()
-            .pressure
-            .0;
+        let g = pull_off_of(2, t, f).unwrap().pressure.0;
         let scene = reference_scene(t, f);
         for (route, measured) in [(Route::BearingArea, bam), (Route::GapDistribution, gap)] {
             let r = pull_off_route(&scene, route, &[], &RouteOptions::default()).unwrap();

@@ -221,6 +221,13 @@ pub fn pull_offs() -> &'static [ReferencePullOff] {
     SET.get_or_init(|| parse_pull_offs(CASES_CSV))
 }
 
+/// The stored set's pull-off of the case (system, t·q_r, γ_s factor), if it holds the case.
+pub fn pull_off_of(system: u8, thickness_qr: f64, gamma_factor: f64) -> Option<&'static ReferencePullOff> {
+    pull_offs()
+        .iter()
+        .find(|r| r.system == system && r.thickness_qr == thickness_qr && r.gamma_factor == gamma_factor)
+}
+
 /// Whether the small-load set holds the case (system, t·q_r, γ_s factor): where it does, it
 /// stands for the 256² set's case.
 pub fn small_load_holds(system: u8, thickness_qr: f64, gamma_factor: f64) -> bool {

@@ -60,6 +60,15 @@ pub(crate) fn check_points(points: usize) -> Result<()> {
 }
 
 impl SweepSpec {
+    /// The sweep of the same range `ratio` times finer: row k of this one is row ratio·k of it
+    /// (the reference of [`Sweep::max_errors_against`]).
+    pub fn refined(&self, ratio: usize) -> SweepSpec {
+        SweepSpec {
+            points: ratio * (self.points - 1) + 1,
+            ..*self
+        }
+    }
+
     /// Checks the range against the engine's pressure range.
     pub fn validate(&self) -> Result<()> {
         let allowed = format!("{:e} <= p* <= {:e}", PRESSURE_RANGE.0, PRESSURE_RANGE.1);

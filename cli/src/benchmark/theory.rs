@@ -243,10 +243,7 @@ pub fn sweeps(quick: bool) -> Result<Report> {
         to: 1.0,
         points: 64,
     };
-    let fine = SweepSpec {
-        points: 4 * 63 + 1,
-        ..spec
-    };
+    let fine = spec.refined(4);
     let mut cases = vec![("adhesionless", 0.0, "default", Options::default(), true)];
     cases.push((
         "adhesive",
