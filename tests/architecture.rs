@@ -10,7 +10,7 @@
 #[path = "support/module_graph.rs"]
 mod module_graph;
 
-use module_graph::{find_cycle, paths_after, resolve, rust_files};
+use module_graph::{code_of, find_cycle, paths_after, resolve, rust_files};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
@@ -20,17 +20,6 @@ fn src_dir() -> PathBuf {
 
 fn module_of(path: &Path) -> String {
     module_graph::module_of(&src_dir(), path)
-}
-
-/// Code without comments (line and doc comments), so doc links do not count as imports.
-fn code_of(text: &str) -> String {
-    text.lines()
-        .map(|l| match l.find("//") {
-            Some(i) => &l[..i],
-            None => l,
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
 }
 
 fn graph() -> BTreeMap<String, BTreeSet<String>> {
@@ -123,34 +112,15 @@ fn library_files_stay_readable() {
 #[path = "support/fn_length.rs"]
 mod fn_length;
 
-/// Longest function of the library (lines, from `fn` to its closing brace).
-const MAX_FN_LINES: usize = 120;
-
 #[test]
 fn library_functions_stay_short() {
     let mut files = Vec::new();
     rust_files(&src_dir(), &mut files);
-    let mut long = Vec::new();
-    for f in &files {
-        let text = std::fs::read_to_string(f).unwrap();
-        let text = match text.find("#[cfg(test)]\nmod tests") {
-            Some(i) => &text[..i],
-            None => &text[..],
-        };
-        let rel = f
-            .strip_prefix(src_dir().parent().unwrap())
-            .unwrap()
-            .display()
-            .to_string();
-        for (name, line, n) in fn_length::functions(text) {
-            if n > MAX_FN_LINES {
-                long.push((format!("{rel}::{name}"), line, n));
-            }
-        }
-    }
-    let long: Vec<String> = long
-        .iter()
-        .map(|(n, l, c)| format!("{n} (line {l}, {c} lines)"))
-        .collect();
-    assert!(long.is_empty(), "functions over {MAX_FN_LINES} lines: {long:#?}");
+    let root = src_dir().parent().unwrap().to_path_buf();
+    let long = fn_length::too_long(&files, |f| f.strip_prefix(&root).unwrap().display().to_string());
+    assert!(
+        long.is_empty(),
+        "functions over {} lines: {long:#?}",
+        fn_length::MAX_FN_LINES
+    );
 }

@@ -10,6 +10,25 @@ use asperity::input::model::Model;
 use asperity::input::scene::Scene;
 use asperity::tolerances::*;
 
+/// A reference named `name` of the observations given.
+fn reference_of(name: &str, points: impl IntoIterator<Item = Observation>) -> Reference {
+    Reference {
+        name: name.into(),
+        points: points.into_iter().collect(),
+    }
+}
+
+/// An observation without a stated error: `observable` at p* = `p` (at σ* = `sigma` for Pr).
+fn exact(p: f64, observable: Observable, value: f64, sigma: f64) -> Observation {
+    Observation {
+        p,
+        observable,
+        value,
+        error: None,
+        sigma,
+    }
+}
+
 fn half_space(model: Model) -> Scene {
     common::dry(1, model).half_space()
 }
@@ -83,7 +102,7 @@ fn synthetic_round_trip() {
             z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
             ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
         };
-        let points = clean
+        let points: Vec<_> = clean
             .points
             .iter()
             .zip(&y)
@@ -96,10 +115,7 @@ fn synthetic_round_trip() {
                 }
             })
             .collect();
-        let r = Reference {
-            name: format!("synthetic {seed}"),
-            points,
-        };
+        let r = reference_of(&format!("synthetic {seed}"), points);
         let f = fit::fit(&half_space(Model::named(1).unwrap()), &r, &[Param::C1, Param::C2]).unwrap();
         for (p, t) in f.params.iter().zip([0.3, 0.25]) {
             assert!(
@@ -133,16 +149,7 @@ fn unidentifiable_parameters_are_named() {
         "{t}"
     );
     // a single load cannot tell c₁ from c₂... unless it has more points than parameters
-    let r1 = Reference {
-        name: "one".into(),
-        points: vec![Observation {
-            p: 0.01,
-            observable: Observable::Area,
-            value: 0.02,
-            error: None,
-            sigma: 0.0,
-        }],
-    };
+    let r1 = reference_of("one", [exact(0.01, Observable::Area, 0.02, 0.0)]);
     let e = fit::fit(&half_space(Model::named(1).unwrap()), &r1, &[Param::C1, Param::C2]).unwrap_err();
     assert!(e.to_string().contains("more points than fitted parameters"), "{e}");
 }
@@ -150,20 +157,8 @@ fn unidentifiable_parameters_are_named() {
 #[test]
 fn unreachable_reference_is_refused() {
     // a_r = 1 at every load: W would have to vanish; the best fit leaves the model's range
-    let points = [1e-3, 1e-2, 0.1, 0.5]
-        .iter()
-        .map(|&p| Observation {
-            p,
-            observable: Observable::Area,
-            value: 1.0,
-            error: None,
-            sigma: 0.0,
-        })
-        .collect();
-    let r = Reference {
-        name: "full".into(),
-        points,
-    };
+    let points = [1e-3, 1e-2, 0.1, 0.5].map(|p| exact(p, Observable::Area, 1.0, 0.0));
+    let r = reference_of("full", points);
     let e = fit::fit(&half_space(Model::named(1).unwrap()), &r, &[Param::C1]).unwrap_err();
     assert!(
         matches!(e, Error::NotConverged { .. }) && e.to_string().contains("outside what the model can reach"),
@@ -239,20 +234,11 @@ fn gap_and_pr_observables_follow_the_theory() {
         points: 6,
     };
     let sw = sweep::sweep(&s, &spec, &Options::default(), None).unwrap();
-    let r = Reference {
-        name: "gaps".into(),
-        points: sw
-            .rows
-            .iter()
-            .map(|row| Observation {
-                p: row.p,
-                observable: Observable::MeanGapRel,
-                value: row.mean_gap_rel,
-                error: None,
-                sigma: 0.0,
-            })
-            .collect(),
-    };
+    let gaps = sw
+        .rows
+        .iter()
+        .map(|row| exact(row.p, Observable::MeanGapRel, row.mean_gap_rel, 0.0));
+    let r = reference_of("gaps", gaps);
     let y = fit::predict(&s, &m3, &r).unwrap();
     for (v, o) in y.iter().zip(&r.points) {
         assert!(
@@ -267,20 +253,12 @@ fn gap_and_pr_observables_follow_the_theory() {
     s1.set_pressure(0.01).unwrap();
     let sol = persson::solve(&s1, &Accuracy::default()).unwrap();
     let (sig, den) = sol.sample(2.0, 101);
-    let r = Reference {
-        name: "pr".into(),
-        points: sig
-            .iter()
+    let r = reference_of(
+        "pr",
+        sig.iter()
             .zip(&den)
-            .map(|(&sigma, &value)| Observation {
-                p: 0.01,
-                observable: Observable::Pr,
-                value,
-                error: None,
-                sigma,
-            })
-            .collect(),
-    };
+            .map(|(&sigma, &value)| exact(0.01, Observable::Pr, value, sigma)),
+    );
     let own = compare::score(&s, &m3, &r).unwrap();
     let other = compare::score(&s, &Model::named(1).unwrap(), &r).unwrap();
     assert_eq!(own[0].observable, "pr");
@@ -293,33 +271,22 @@ fn gap_and_pr_observables_follow_the_theory() {
 fn data_too_noisy_to_pin_a_parameter_say_so() {
     // standard errors of 10 on a_r ≤ 1: no coefficient is determined
     let r = reference::eq18(1e-3, 1.0, 11).unwrap();
-    let noisy = Reference {
-        name: "noisy".into(),
-        points: r
-            .points
-            .iter()
-            .map(|o| Observation {
-                error: Some(10.0),
+    let with_error = |name: &str, error: &dyn Fn(&Observation) -> f64| {
+        reference_of(
+            name,
+            r.points.iter().map(|o| Observation {
+                error: Some(error(o)),
                 ..*o
-            })
-            .collect(),
+            }),
+        )
     };
+    let noisy = with_error("noisy", &|_| 10.0);
     let e = fit::fit(&half_space(Model::named(1).unwrap()), &noisy, &[Param::C1])
         .unwrap_err()
         .to_string();
     assert!(e.contains("cannot pin down c1"), "{e}");
     // with errors of 1 % the same fit is determined
-    let fine = Reference {
-        name: "fine".into(),
-        points: r
-            .points
-            .iter()
-            .map(|o| Observation {
-                error: Some(0.01 * o.value),
-                ..*o
-            })
-            .collect(),
-    };
+    let fine = with_error("fine", &|o| 0.01 * o.value);
     assert!(fit::fit(&half_space(Model::named(1).unwrap()), &fine, &[Param::C1]).is_ok());
 }
 

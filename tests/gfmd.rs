@@ -92,13 +92,19 @@ fn thin_plate_limit_of_the_slab_stiffness() {
     assert!((amp / plate - 1.0).abs() < GFMD_THIN_PLATE_REL, "{amp:e} vs {plate:e}");
 }
 
+/// Johnson's sinusoid h = Δ cos(2πx/λ), one period over `nx` nodes of Δa = Δ = 10 nm (two
+/// rows): the map, Δa, λ = L and p_full = πE*Δ/λ, the load of full contact.
+fn johnson(nx: usize) -> (Surface, f64, f64, f64) {
+    let (da, amp) = (1e-8, 1e-8);
+    let lambda = nx as f64 * da;
+    (sinusoid(nx, 2, da, 1, amp), da, lambda, PI * E * amp / lambda)
+}
+
 #[test]
 fn johnson_sinusoid_partial_contact_width() {
-    // h = Δ cos(2πx/λ), λ = L = 512 Δa: sin²(πc/λ) = p̄/p_full, p_full = πE*Δ/λ
-    let (nx, ny, da, amp) = (512, 2, 1e-8, 1e-8);
-    let s = sinusoid(nx, ny, da, 1, amp);
-    let lambda = nx as f64 * da;
-    let p_full = PI * E * amp / lambda;
+    // λ = L = 512 Δa: sin²(πc/λ) = p̄/p_full
+    let nx = 512;
+    let (s, da, lambda, p_full) = johnson(nx);
     for ratio in [0.1, 0.3, 0.6] {
         let pr = problem(&s, f64::INFINITY, ratio * p_full);
         let sol = gfmd::solve(&pr, &opts(1e-9), &mut |_| {}, &no_cancel()).unwrap();
@@ -129,10 +135,8 @@ fn johnson_sinusoid_partial_contact_width() {
 /// the half-width c (intercept/slope) and the amplitude below the grid resolution.
 #[test]
 fn johnson_sinusoid_pressure_profile_at_128_points_per_wavelength() {
-    let (nx, ny, da, amp) = (128, 2, 1e-8, 1e-8);
-    let s = sinusoid(nx, ny, da, 1, amp);
-    let lambda = nx as f64 * da;
-    let p_full = PI * E * amp / lambda;
+    let nx = 128;
+    let (s, da, lambda, p_full) = johnson(nx);
     for ratio in [0.1, 0.3, 0.6, 0.9] {
         let pr = problem(&s, f64::INFINITY, ratio * p_full);
         let sol = gfmd::solve(&pr, &GfmdOptions::default(), &mut |_| {}, &no_cancel()).unwrap();

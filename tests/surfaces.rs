@@ -11,6 +11,9 @@ use asperity::theory::engine;
 use asperity::tolerances::{PSD_HURST_ABS, PSD_MOMENT_REL, PSD_WINDOWED_MOMENT_REL, TABULATED_THEORY_REL};
 use std::f64::consts::PI;
 
+#[path = "support/ideal_table.rs"]
+mod ideal_table;
+
 fn map(nx: usize, ny: usize) -> Surface {
     let h = (0..nx * ny)
         .map(|k| {
@@ -268,16 +271,7 @@ fn a_line_scan_gives_the_isotropic_spectrum() {
 
 /// The analytic C(q) written as a table at q_L, q_r, q_s and log-spaced points between.
 fn table_of(sa: &SelfAffine) -> Tabulated {
-    let mut q: Vec<f64> = (0..=60)
-        .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / 60.0))
-        .collect();
-    q.push(sa.q_r());
-    q.sort_by(f64::total_cmp);
-    q.dedup_by(|a, b| (*a / *b - 1.0).abs() < 1e-9);
-    q[0] = sa.q_l();
-    *q.last_mut().unwrap() = sa.q_s();
-    let c: Vec<f64> = q.iter().map(|&x| sa.psd(x)).collect();
-    let csv = asperity::surface::tabulated::to_csv(&q, &c);
+    let csv = ideal_table::ideal_csv(sa, 60);
     Tabulated::parse_csv(&csv, "ideal.csv", None, None).unwrap()
 }
 

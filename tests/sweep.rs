@@ -15,6 +15,11 @@ use asperity::Error;
 
 use std::sync::atomic::AtomicBool;
 
+/// The sweep of `points` log-spaced loads from p* = `from` to `to`.
+fn loads(from: f64, to: f64, points: usize) -> SweepSpec {
+    SweepSpec { from, to, points }
+}
+
 fn system1(n: u8) -> Scene {
     common::dry(1, Model::named(n).unwrap())
 }
@@ -26,11 +31,7 @@ fn thin_slab_window() -> (Scene, SweepSpec) {
     s.set_model(Model::named(3).unwrap()).unwrap();
     s.set_thickness_qr(0.1).unwrap();
     s.set_surface_energy_j_m2(s.surface_energy_j_m2() * 0.8).unwrap();
-    let spec = SweepSpec {
-        from: 1e-6,
-        to: 1e-3,
-        points: 14,
-    };
+    let spec = loads(1e-6, 1e-3, 14);
     (s, spec)
 }
 
@@ -63,11 +64,7 @@ fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
 #[test]
 fn rows_match_single_evaluations() {
     let s = system1(3);
-    let spec = SweepSpec {
-        from: 1e-3,
-        to: 1.0,
-        points: 64,
-    };
+    let spec = loads(1e-3, 1.0, 64);
     let sw = sweep::sweep(&s, &spec, &Options::default(), None).unwrap();
     assert_eq!(sw.rows.len(), 64);
     // spacing 0.11 in ln p*: no refinement, only the extension to full contact
@@ -102,11 +99,7 @@ fn rows_match_single_evaluations() {
 fn sixty_four_points_against_four_times_finer() {
     for n in [1, 3] {
         let s = system1(n);
-        let coarse = SweepSpec {
-            from: 1e-3,
-            to: 1.0,
-            points: 64,
-        };
+        let coarse = loads(1e-3, 1.0, 64);
         let fine = SweepSpec { points: 253, ..coarse };
         let a = sweep::sweep(&s, &coarse, &Options::default(), None).unwrap();
         let b = sweep::sweep(&s, &fine, &Options::default(), None).unwrap();
@@ -124,11 +117,7 @@ fn sixty_four_points_against_four_times_finer() {
 #[test]
 fn cancellation_and_validation() {
     let s = system1(1);
-    let spec = SweepSpec {
-        from: 1e-3,
-        to: 1.0,
-        points: 16,
-    };
+    let spec = loads(1e-3, 1.0, 16);
     let stop = AtomicBool::new(true);
     assert_eq!(
         sweep::sweep(&s, &spec, &Options::default(), Some(&stop)),
@@ -158,11 +147,7 @@ fn adhesive_sweep_is_clean() {
         let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
         s.set_thickness_qr(t).unwrap();
         assert!(s.surface_energy_j_m2() > 0.0);
-        let spec = SweepSpec {
-            from: 1e-4,
-            to: 1.0,
-            points: 32,
-        };
+        let spec = loads(1e-4, 1.0, 32);
         match sweep::sweep(&s, &spec, &Options::default(), None) {
             Err(e) => panic!("t = {t}: {e}"),
             Ok(sw) => {
@@ -196,11 +181,7 @@ fn adhesive_sweeps_do_not_depend_on_the_thread_count() {
     // the same numbers bit for bit
     let s = Preset::resolve("system-1").unwrap().scene().unwrap();
     assert!(s.surface_energy_j_m2() > 0.0);
-    let spec = SweepSpec {
-        from: 1e-3,
-        to: 0.3,
-        points: 40,
-    };
+    let spec = loads(1e-3, 0.3, 40);
     let opts = Options::chart();
     let on = |threads: usize| on_threads(threads, || sweep::sweep(&s, &spec, &opts, None).unwrap());
     let (one, two) = (on(1), on(2));
@@ -239,11 +220,7 @@ fn tracked_loads_agree_with_full_scans() {
     let mut s = Preset::resolve("system-2").unwrap().scene().unwrap();
     s.set_model(Model::named(4).unwrap()).unwrap();
     s.set_thickness_qr(0.1).unwrap();
-    let spec = SweepSpec {
-        from: 1e-5,
-        to: 1.0,
-        points: 16,
-    };
+    let spec = loads(1e-5, 1.0, 16);
     let mut opts = Options::default();
     let sw = sweep::sweep(&s, &spec, &opts, None).unwrap();
     opts.accuracy.rtol = gap::ENERGY_RTOL;
@@ -316,17 +293,7 @@ fn run_and_sweep_agree_at_small_loads_on_a_thin_slab() {
     for p in [1e-7, 1e-5] {
         s.set_pressure(p).unwrap();
         let ev = engine::evaluate(&s, &Options::default()).unwrap();
-        let sw = sweep::sweep(
-            &s,
-            &SweepSpec {
-                from: p,
-                to: p,
-                points: 1,
-            },
-            &Options::default(),
-            None,
-        )
-        .unwrap();
+        let sw = sweep::sweep(&s, &loads(p, p, 1), &Options::default(), None).unwrap();
         let rel = |a: f64, b: f64| (a / b - 1.0).abs();
         assert!(
             rel(ev.elastic_energy, sw.rows[0].elastic_energy) < RUN_SWEEP_REL,

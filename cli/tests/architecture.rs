@@ -84,13 +84,7 @@ fn code_of(text: &str) -> String {
         Some(i) => &text[..i],
         None => text,
     };
-    text.lines()
-        .map(|l| match l.find("//") {
-            Some(i) => &l[..i],
-            None => l,
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
+    module_graph::code_of(text)
 }
 
 struct Crate {
@@ -273,27 +267,17 @@ fn the_explorer_draws_but_never_computes_physics() {
 #[path = "../../tests/support/fn_length.rs"]
 mod fn_length;
 
-/// Longest function of the binary crate (lines, from `fn` to its closing brace).
-const MAX_FN_LINES: usize = 120;
-
 #[test]
 fn functions_of_the_binary_crate_stay_short() {
     let mut files = Vec::new();
     rust_files(&src_dir(), &mut files);
-    let mut long = Vec::new();
-    for f in files.iter().filter(|f| !f.to_string_lossy().ends_with("_tests.rs")) {
-        let text = std::fs::read_to_string(f).unwrap();
-        let text = match text.find("#[cfg(test)]\nmod tests") {
-            Some(i) => &text[..i],
-            None => &text[..],
-        };
-        for (name, line, n) in fn_length::functions(text) {
-            if n > MAX_FN_LINES {
-                long.push(format!("{}::{name} (line {line}, {n} lines)", module_of(f)));
-            }
-        }
-    }
-    assert!(long.is_empty(), "functions over {MAX_FN_LINES} lines: {long:#?}");
+    let files = files.iter().filter(|f| !f.to_string_lossy().ends_with("_tests.rs"));
+    let long = fn_length::too_long(files, module_of);
+    assert!(
+        long.is_empty(),
+        "functions over {} lines: {long:#?}",
+        fn_length::MAX_FN_LINES
+    );
 }
 
 /// The pure parts of the explorer (the state, the update, the view and the chart builders)

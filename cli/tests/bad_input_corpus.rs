@@ -19,7 +19,7 @@
 mod common;
 
 use asperity_cli::cli::flags::{self, Kind};
-use common::corpus::{allowed, context, npy, run_forbidden, scratch, write_map, Ran};
+use common::corpus::{allowed, context, every_arg, npy, run_forbidden, scratch, write_map, Ran};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -100,79 +100,72 @@ fn sample(kind: &Kind, arg: &clap::Arg, dir: &Path) -> Option<String> {
 /// Every flag of every command × the hard values, and each flag repeated.
 fn flag_cases(dir: &Path, out: &Path, map: &str) -> Vec<Case> {
     let mut cases = Vec::new();
-    let cmd = flags::command();
-    for sub in cmd.get_subcommands() {
-        let s = sub.get_name();
-        for arg in sub.get_arguments() {
-            let id = arg.get_id().as_str();
-            if id == "help" || id == "version" {
+    for (s, arg, name) in every_arg() {
+        let (s, arg) = (s.as_str(), &arg);
+        let id = arg.get_id().as_str();
+        let Some(row) = flags::lookup(s, &name) else { continue };
+        let positional = arg.get_long().is_none();
+        let list = arg.get_value_delimiter().is_some();
+        let mut base = vec![s.to_string()];
+        // the map `surface generate` writes goes to the folder that must stay empty
+        let written = format!("{map}.npy");
+        base.extend(context(s, &name, map).into_iter().map(|a| {
+            if a == written {
+                out.join("map.npy").display().to_string()
+            } else {
+                a
+            }
+        }));
+        if let Some((flag, path)) = output_flag(s, out).filter(|(f, _)| *f != name) {
+            base.extend([flag.to_string(), path.display().to_string()]);
+        }
+        if !arg.get_action().takes_values() {
+            // a switch given twice
+            let mut args = base.clone();
+            args.extend([name.clone(), name.clone()]);
+            cases.push(Case {
+                command: s.into(),
+                args,
+                names: name.clone(),
+                value: String::new(),
+                needs_allowed: false,
+                list: false,
+            });
+            continue;
+        }
+        for v in values() {
+            if allowed(&row.kind, arg, &v) {
                 continue;
             }
-            let name = flags::name_of(arg);
-            let Some(row) = flags::lookup(s, &name) else { continue };
-            let positional = arg.get_long().is_none();
-            let list = arg.get_value_delimiter().is_some();
-            let mut base = vec![s.to_string()];
-            // the map `surface generate` writes goes to the folder that must stay empty
-            let written = format!("{map}.npy");
-            base.extend(context(s, &name, map).into_iter().map(|a| {
-                if a == written {
-                    out.join("map.npy").display().to_string()
-                } else {
-                    a
-                }
-            }));
-            if let Some((flag, path)) = output_flag(s, out).filter(|(f, _)| *f != name) {
-                base.extend([flag.to_string(), path.display().to_string()]);
+            let mut args = base.clone();
+            if !positional {
+                args.push(name.clone());
             }
-            if !arg.get_action().takes_values() {
-                // a switch given twice
-                let mut args = base.clone();
-                args.extend([name.clone(), name.clone()]);
-                cases.push(Case {
-                    command: s.into(),
-                    args,
-                    names: name.clone(),
-                    value: String::new(),
-                    needs_allowed: false,
-                    list: false,
-                });
-                continue;
-            }
-            for v in values() {
-                if allowed(&row.kind, arg, &v) {
-                    continue;
-                }
-                let mut args = base.clone();
-                if !positional {
-                    args.push(name.clone());
-                }
-                args.push(v.clone());
-                cases.push(Case {
-                    command: s.into(),
-                    args,
-                    names: if positional { id.to_string() } else { name.clone() },
-                    value: v,
-                    needs_allowed: true,
-                    list,
-                });
-            }
-            // a list flag given twice appends to its list
-            if positional || list {
-                continue;
-            }
-            if let Some(v) = sample(&row.kind, arg, dir) {
-                let mut args = base.clone();
-                args.extend([name.clone(), v.clone(), name.clone(), v.clone()]);
-                cases.push(Case {
-                    command: s.into(),
-                    args,
-                    names: name.clone(),
-                    value: v,
-                    needs_allowed: false,
-                    list: false,
-                });
-            }
+            args.push(v.clone());
+            cases.push(Case {
+                command: s.into(),
+                args,
+                names: if positional { id.to_string() } else { name.clone() },
+                value: v,
+                needs_allowed: true,
+                list,
+            });
+        }
+        // a list flag given twice appends to its list
+        if positional || list {
+            continue;
+        }
+        if let Some(v) = sample(&row.kind, arg, dir) {
+            let mut args = base.clone();
+            args.extend([name.clone(), v.clone(), name.clone(), v.clone()]);
+            cases.push(Case {
+                command: s.into(),
+                args,
+                names: name.clone(),
+                value: v,
+                needs_allowed: false,
+                list: false,
+            });
         }
     }
     cases

@@ -13,7 +13,7 @@
 mod common;
 
 use asperity_cli::cli::flags;
-use common::corpus::{allowed, context, npy, run_forbidden, scratch, write_map};
+use common::corpus::{allowed, context, every_arg, npy, run_forbidden, scratch, write_map};
 use std::path::Path;
 
 /// Runs the binary with work forbidden; returns (exit code, stdout, stderr, work started).
@@ -75,51 +75,44 @@ fn every_flag_of_every_command_refuses_hard_values_in_one_line_before_any_work()
     let dir = scratch("flags");
     let log = dir.join("work.log");
     let map = write_map(&dir);
-    let cmd = flags::command();
     let (mut cases, mut flags_seen, mut accepted) = (0, 0, 0);
     let mut broken = Vec::new();
-    for sub in cmd.get_subcommands() {
-        let s = sub.get_name();
-        for arg in sub.get_arguments() {
-            let id = arg.get_id().as_str();
-            if id == "help" || id == "version" {
-                continue;
+    for (s, arg, name) in every_arg() {
+        let (s, arg) = (s.as_str(), &arg);
+        let id = arg.get_id().as_str();
+        let Some(row) = flags::lookup(s, &name) else {
+            broken.push(format!("{s} {name}: no row in the flag table"));
+            continue;
+        };
+        flags_seen += 1;
+        if !arg.get_action().takes_values() {
+            continue;
+        }
+        let positional = arg.get_long().is_none();
+        for v in values(&dir) {
+            cases += 1;
+            let mut args = vec![s.to_string()];
+            args.extend(context(s, &name, &map));
+            if !positional {
+                args.push(name.clone());
             }
-            let name = flags::name_of(arg);
-            let Some(row) = flags::lookup(s, &name) else {
-                broken.push(format!("{s} {name}: no row in the flag table"));
-                continue;
-            };
-            flags_seen += 1;
-            if !arg.get_action().takes_values() {
-                continue;
-            }
-            let positional = arg.get_long().is_none();
-            for v in values(&dir) {
-                cases += 1;
-                let mut args = vec![s.to_string()];
-                args.extend(context(s, &name, &map));
-                if !positional {
-                    args.push(name.clone());
-                }
-                args.push(v.clone());
-                if allowed(&row.kind, arg, &v) {
-                    accepted += 1;
-                    // the parser takes it (other flags may still be missing: not a value error)
-                    let mut full = vec!["asperity".to_string()];
-                    full.extend(args.iter().cloned());
-                    if let Err(e) = flags::command().try_get_matches_from(&full) {
-                        use clap::error::ErrorKind::*;
-                        if matches!(e.kind(), ValueValidation | InvalidValue | UnknownArgument) {
-                            broken.push(format!("{args:?}: refused a value the table allows: {e}"));
-                        }
+            args.push(v.clone());
+            if allowed(&row.kind, arg, &v) {
+                accepted += 1;
+                // the parser takes it (other flags may still be missing: not a value error)
+                let mut full = vec!["asperity".to_string()];
+                full.extend(args.iter().cloned());
+                if let Err(e) = flags::command().try_get_matches_from(&full) {
+                    use clap::error::ErrorKind::*;
+                    if matches!(e.kind(), ValueValidation | InvalidValue | UnknownArgument) {
+                        broken.push(format!("{args:?}: refused a value the table allows: {e}"));
                     }
-                    continue;
                 }
-                let (code, out, err, work) = run(&args, &log);
-                if let Err(why) = refused_well(code, &out, &err, &work, if positional { id } else { &name }, &v) {
-                    broken.push(format!("{args:?}: {why}"));
-                }
+                continue;
+            }
+            let (code, out, err, work) = run(&args, &log);
+            if let Err(why) = refused_well(code, &out, &err, &work, if positional { id } else { &name }, &v) {
+                broken.push(format!("{args:?}: {why}"));
             }
         }
     }

@@ -4,6 +4,8 @@
 //! `figure` on the map against `run` and `gfmd` on it.
 
 mod common;
+#[path = "../../tests/support/ideal_table.rs"]
+mod ideal_table;
 
 use asperity::input::preset::Preset;
 use asperity::surface::spectrum::Spectrum;
@@ -137,17 +139,8 @@ fn the_theory_on_the_csv_of_an_ideal_spectrum_equals_the_preset() {
     let Spectrum::SelfAffine(sa) = p.spectrum().unwrap() else {
         unreachable!()
     };
-    let mut q: Vec<f64> = (0..=50)
-        .map(|k| sa.q_l() * (sa.q_s() / sa.q_l()).powf(k as f64 / 50.0))
-        .collect();
-    q.push(sa.q_r());
-    q.sort_by(f64::total_cmp);
-    q.dedup_by(|a, b| (*a / *b - 1.0).abs() < 1e-9);
-    q[0] = sa.q_l();
-    *q.last_mut().unwrap() = sa.q_s();
-    let c: Vec<f64> = q.iter().map(|&x| sa.psd(x)).collect();
     let path = tmp("ideal.csv");
-    std::fs::write(&path, asperity::surface::tabulated::to_csv(&q, &c)).unwrap();
+    std::fs::write(&path, ideal_table::ideal_csv(&sa, 50)).unwrap();
     for extra in [&["--thickness", "inf"][..], &["--thickness", "0.5", "--gamma", "0"][..]] {
         let mut base = vec!["run", "--preset", "system-2"];
         base.extend_from_slice(extra);

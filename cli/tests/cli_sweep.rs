@@ -281,17 +281,11 @@ fn bad_sweep_knobs_are_one_line_errors() {
 #[test]
 fn a_thickness_sweep_reports_the_window_the_explorer_finds() {
     use asperity::theory::engine::{CHART_EDGE_REL, EDGE_REL};
+    use asperity_cli::tui::base::tour::{Tour, DEFAULT_TOUR};
     use asperity_cli::tui::effects::engine::thickness_sweep;
-    let scene = Preset::resolve("system-2")
-        .unwrap()
-        .scene()
-        .unwrap()
-        .with_model(Model::named(3).unwrap())
-        .unwrap()
-        .with_surface_energy_j_m2(0.1256)
-        .unwrap()
-        .with_pressure(1e-4)
-        .unwrap();
+    let tour = Tour::resolve(DEFAULT_TOUR).unwrap();
+    let step = tour.steps.iter().find(|s| s.title == "Jump into contact");
+    let scene = step.unwrap().scene.clone();
     let chart = thickness_sweep(&scene, &std::sync::atomic::AtomicBool::new(false)).unwrap();
     assert_eq!((chart.jump_in.len(), chart.pull_off.len()), (1, 1), "{chart:?}");
     let near = |a: f64, b: f64| (a / b - 1.0).abs() <= CHART_EDGE_REL + EDGE_REL;

@@ -62,14 +62,7 @@ fn compute_all(a: &mut App) {
 /// A finished GFMD run on the current scene (its histogram, load points and the theory on
 /// its map).
 fn with_gfmd(a: &mut App) {
-    let cs = asperity_cli::tui::drive::press(a, KeyEvent::new(KeyCode::Char('g'), KeyModifiers::NONE));
-    let id = cs
-        .iter()
-        .find_map(|c| match c {
-            asperity_cli::tui::model::command::Command::StartGfmd { id, .. } => Some(*id),
-            _ => None,
-        })
-        .expect("g starts a run");
+    let id = common::start_gfmd(a);
     a.on_reply(Reply::GfmdDone {
         id,
         elapsed_s: 1.0,

@@ -193,14 +193,7 @@ fn gfmd_overlay_with_a_synthetic_run() {
     use asperity_cli::tui::drive::Reply;
     use asperity_cli::tui::{base::progress, effects::engine as jobs};
     let mut a = app("system-1");
-    let cs = asperity_cli::tui::drive::press(&mut a, KeyEvent::new(KeyCode::Char('g'), KeyModifiers::NONE));
-    let id = cs
-        .iter()
-        .find_map(|c| match c {
-            asperity_cli::tui::model::command::Command::StartGfmd { id, .. } => Some(*id),
-            _ => None,
-        })
-        .expect("g starts a run");
+    let id = common::start_gfmd(&mut a);
     let plan = progress::plan(
         a.params.scene.pressure(),
         &jobs::gfmd_sweep_spec(a.params.scene.pressure()).pressures(),

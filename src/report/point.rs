@@ -381,18 +381,8 @@ mod tests {
     /// t·q_r = 0.1, γ_s = 0.1256 J/m², p* = 1e-4, inside its hysteresis window.
     #[test]
     fn the_unloading_branch_is_the_listed_unloading_root() {
-        use crate::input::model::Model;
-        let scene = Preset::resolve("system-2")
-            .unwrap()
-            .scene()
-            .unwrap()
-            .with_model(Model::named(3).unwrap())
-            .unwrap()
+        let scene = crate::report::sweep::tests::jump_scene()
             .with_thickness_qr(0.1)
-            .unwrap()
-            .with_surface_energy_j_m2(0.1256)
-            .unwrap()
-            .with_pressure(1e-4)
             .unwrap();
         let loading = point(&scene, &Options::default()).unwrap();
         let mut o = Options::default();

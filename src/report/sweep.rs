@@ -506,4 +506,4 @@ pub fn knob(
 
 #[cfg(test)]
 #[path = "sweep_tests.rs"]
-mod tests;
+pub(crate) mod tests;

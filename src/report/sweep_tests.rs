@@ -5,7 +5,7 @@ use crate::theory::hysteresis::{stable_branches, EDGE_REL};
 
 /// The tour's "Jump into contact" scene: system II, model 3, γ_s = 0.1256 J/m², p* = 1e-4
 /// (tours/wang-muser.toml), whose hysteresis window in t·q_r lies at 0.099–0.101.
-fn jump_scene() -> Scene {
+pub(crate) fn jump_scene() -> Scene {
     Preset::resolve("system-2")
         .unwrap()
         .scene()

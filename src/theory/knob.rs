@@ -233,6 +233,18 @@ mod tests {
     use super::*;
     use crate::input::preset::Preset;
 
+    fn spec(knob: Knob, from: f64, to: f64, points: usize) -> KnobSpec {
+        KnobSpec { knob, from, to, points }
+    }
+
+    /// The field a spec's validation names (None: valid, or another error).
+    fn invalid_field(spec: &KnobSpec) -> Option<Field> {
+        match spec.validate() {
+            Err(Error::Invalid { field, .. }) => Some(field),
+            _ => None,
+        }
+    }
+
     fn scene() -> Scene {
         let mut s = Preset::resolve("system-1").unwrap().scene().unwrap();
         s.gamma = 0.0;
@@ -241,63 +253,26 @@ mod tests {
 
     #[test]
     fn thickness_values_are_log_spaced_and_gamma_values_linear() {
-        let t = KnobSpec {
-            knob: Knob::Thickness,
-            from: 0.01,
-            to: 1.0,
-            points: 3,
-        };
+        let t = spec(Knob::Thickness, 0.01, 1.0, 3);
         let v = t.values();
         assert!((v[1] / 0.1 - 1.0).abs() < 1e-14 && v[0] == 0.01 && v[2] == 1.0, "{v:?}");
-        let g = KnobSpec {
-            knob: Knob::Gamma,
-            from: 0.0,
-            to: 0.1,
-            points: 3,
-        };
+        let g = spec(Knob::Gamma, 0.0, 0.1, 3);
         assert_eq!(g.values(), vec![0.0, 0.05, 0.1]);
     }
 
     #[test]
     fn bad_ranges_name_the_field() {
-        let bad = KnobSpec {
-            knob: Knob::Thickness,
-            from: 0.0,
-            to: 1.0,
-            points: 3,
-        };
-        assert!(matches!(
-            bad.validate(),
-            Err(Error::Invalid {
-                field: Field::SweepFrom,
-                ..
-            })
-        ));
-        let bad = KnobSpec {
-            knob: Knob::Gamma,
-            from: 0.1,
-            to: 0.05,
-            points: 3,
-        };
-        assert!(matches!(
-            bad.validate(),
-            Err(Error::Invalid {
-                field: Field::SweepTo,
-                ..
-            })
-        ));
+        let bad = spec(Knob::Thickness, 0.0, 1.0, 3);
+        assert_eq!(invalid_field(&bad), Some(Field::SweepFrom));
+        let bad = spec(Knob::Gamma, 0.1, 0.05, 3);
+        assert_eq!(invalid_field(&bad), Some(Field::SweepTo));
     }
 
     #[test]
     fn each_point_is_the_engine_on_that_scene() {
         // independent reference: the engine called directly on the scene with the knob set
         let s = scene();
-        let spec = KnobSpec {
-            knob: Knob::Thickness,
-            from: 0.05,
-            to: 5.0,
-            points: 3,
-        };
+        let spec = spec(Knob::Thickness, 0.05, 5.0, 3);
         let pts = knob_sweep(&s, &spec, &Options::default(), false, None).unwrap();
         for p in &pts {
             let mut direct = s.clone();

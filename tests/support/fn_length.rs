@@ -161,6 +161,32 @@ pub fn functions(text: &str) -> Vec<(String, usize, usize)> {
     out
 }
 
+/// Longest function of either crate (lines, from `fn` to its closing brace).
+pub const MAX_FN_LINES: usize = 120;
+
+/// The functions of `files` longer than [`MAX_FN_LINES`], each as
+/// `PLACE::NAME (line L, N lines)` with `place` naming its file; a file's test module
+/// (`#[cfg(test)] mod tests` to the end of the file) is left out.
+pub fn too_long<'a>(
+    files: impl IntoIterator<Item = &'a std::path::PathBuf>,
+    place: impl Fn(&std::path::Path) -> String,
+) -> Vec<String> {
+    let mut long = Vec::new();
+    for f in files {
+        let text = std::fs::read_to_string(f).unwrap();
+        let text = match text.find("#[cfg(test)]\nmod tests") {
+            Some(i) => &text[..i],
+            None => &text[..],
+        };
+        for (name, line, n) in functions(text) {
+            if n > MAX_FN_LINES {
+                long.push(format!("{}::{name} (line {line}, {n} lines)", place(f)));
+            }
+        }
+    }
+    long
+}
+
 /// Where `fn ` starts in a line, as a keyword (not `fn_x`, not in `Fn(`).
 fn fn_keyword(line: &str) -> Option<usize> {
     let mut from = 0;

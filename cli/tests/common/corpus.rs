@@ -1,11 +1,24 @@
-//! The bad-input corpus's shared parts: running the binary with work forbidden, a scratch
-//! folder per test, and whether a flag's row of the table allows a value (decided from the
+//! The bad-input corpus's shared parts: every flag of the parser, running the binary with work
+//! forbidden, a scratch folder per test, and whether a flag's row of the table allows a value (decided from the
 //! row's kind and the library's ranges, never by running the parser).
 
 use asperity::error::Range;
-use asperity_cli::cli::flags::Kind;
+use asperity_cli::cli::flags::{self, Kind};
 use std::path::{Path, PathBuf};
 use std::process::Command;
+
+/// Every argument of every command of the parser ([`flags::command`]) but help and version:
+/// (command, argument, its name in the flag table).
+pub fn every_arg() -> Vec<(String, clap::Arg, String)> {
+    let cmd = flags::command();
+    cmd.get_subcommands()
+        .flat_map(|sub| {
+            sub.get_arguments()
+                .filter(|arg| !matches!(arg.get_id().as_str(), "help" | "version"))
+                .map(|arg| (sub.get_name().to_string(), arg.clone(), flags::name_of(arg)))
+        })
+        .collect()
+}
 
 /// A scratch folder of this test process.
 pub fn scratch(name: &str) -> PathBuf {

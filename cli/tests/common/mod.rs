@@ -152,6 +152,18 @@ pub fn ideal_table(sa: &asperity::surface::spectrum::SelfAffine, n: usize) -> (V
     (q, c)
 }
 
+/// Presses `g` in the explorer and returns the id of the GFMD run it starts.
+pub fn start_gfmd(a: &mut asperity_cli::tui::app::App) -> u64 {
+    use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+    let cs = asperity_cli::tui::drive::press(a, KeyEvent::new(KeyCode::Char('g'), KeyModifiers::NONE));
+    cs.iter()
+        .find_map(|c| match c {
+            asperity_cli::tui::model::command::Command::StartGfmd { id, .. } => Some(*id),
+            _ => None,
+        })
+        .expect("g starts a run")
+}
+
 /// A finished GFMD run for the explorer's tests at load `p`: a histogram shaped like the
 /// theory of system 1 at p* = 0.01 and a little wider, a 512² grid, two sweep loads and the
 /// theory on the map at three.

@@ -77,22 +77,17 @@ fn thickness_sweep_tends_to_the_semi_infinite_body() {
         .is_none());
 }
 
-/// A hysteresis window 3 % wide in t·q_r (system II, model 3, γ_s = 0.1256 J/m², p* = 1e-4:
-/// 0.0989–0.1018, narrower than the chart's grid step ×1.78) is resolved, not bridged: its edges
-/// to 0.1 %, and thicknesses between them each with both branches, at the a_r of the engine's
-/// own evaluation at full accuracy (the reference: its stable branches, lowest and highest).
+/// A hysteresis window 3 % wide in t·q_r (the tour's "Jump into contact" scene: system II,
+/// model 3, γ_s = 0.1256 J/m², p* = 1e-4: 0.0989–0.1018, narrower than the chart's grid step
+/// ×1.78) is resolved, not bridged: its edges to 0.1 %, and thicknesses between them each with
+/// both branches, at the a_r of the engine's own evaluation at full accuracy (the reference: its
+/// stable branches, lowest and highest).
 #[test]
 fn the_thickness_chart_resolves_a_window_narrower_than_its_step() {
-    let scene = asperity::input::preset::Preset::resolve("system-2")
-        .unwrap()
-        .scene()
-        .unwrap()
-        .with_model(Model::named(3).unwrap())
-        .unwrap()
-        .with_surface_energy_j_m2(0.1256)
-        .unwrap()
-        .with_pressure(1e-4)
-        .unwrap();
+    use crate::tui::base::tour::{Tour, DEFAULT_TOUR};
+    let tour = Tour::resolve(DEFAULT_TOUR).unwrap();
+    let step = tour.steps.iter().find(|s| s.title == "Jump into contact");
+    let scene = step.unwrap().scene.clone();
     let t0 = std::time::Instant::now();
     let td = thickness_sweep(&scene, &AtomicBool::new(false)).unwrap();
     eprintln!(

@@ -64,19 +64,7 @@ fn typed_gamma_off(a: &mut App) {
 
 #[test]
 fn work_leaves_the_update_as_commands() {
-    let kinds = |cs: &[Command]| -> Vec<&'static str> {
-        cs.iter()
-            .map(|c| match c {
-                Command::Compute(_) => "compute",
-                Command::StartGfmd { .. } => "gfmd",
-                Command::CancelGfmd(_) => "cancel",
-                Command::Export(job) if job.charts => "save",
-                Command::Export(_) => "export",
-                Command::LoadPreset(_) | Command::LoadTour(_) => "load",
-                Command::Quit => "quit",
-            })
-            .collect()
-    };
+    let kinds = super::msg_tests::names;
     let mut a = app();
     // the first frame computes
     assert!(a.take_request().is_some());

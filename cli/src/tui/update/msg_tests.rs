@@ -36,7 +36,8 @@ fn reply(a: &mut App, r: Reply) -> Vec<Command> {
     update(a, Msg::Reply(Box::new(r)))
 }
 
-fn names(cs: &[Command]) -> Vec<&'static str> {
+/// The commands' names, in order (also the keys tests').
+pub(super) fn names(cs: &[Command]) -> Vec<&'static str> {
     cs.iter()
         .map(|c| match c {
             Command::Compute(_) => "compute",
