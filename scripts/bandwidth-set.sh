@@ -18,7 +18,6 @@ export RAYON_NUM_THREADS=${RAYON_NUM_THREADS:-1}
 source scripts/gfmd-cases.sh
 RUNS="$OUT/runs-bw-$GRID"
 mkdir -p "$RUNS"
-G2=0.157  # system II's gamma_s (J/m^2)
 cases=()
 for seed in $(seq 1 "$SEEDS"); do
   for f in ${GAMMAS:-1 0.5 2}; do

@@ -1,9 +1,11 @@
 # Sourced from the repository root by the scripts that build GFMD reference data
 # (reference-set.sh, bandwidth-set.sh): the binary (ASPERITY, else a release build), one case
-# of `asperity gfmd` run into its JSON file, and the cases run JOBS at a time.
+# of `asperity gfmd` run into its JSON file, and the cases run JOBS at a time; G2, system II's
+# gamma_s, which the scripts' gamma factors multiply.
 BIN=${ASPERITY:-target/release/asperity}
 [ -x "$BIN" ] || cargo build --release -q -p asperity-cli
 JOBS=${JOBS:-2}
+G2=0.157  # system II's gamma_s (J/m^2)
 
 # gfmd_case FILE LABEL ARGS...: `$BIN gfmd ARGS... --format json` into FILE, skipped where FILE
 # exists and is not empty (the runs are resumable); a failed run's output goes to FILE.failed,

@@ -15,7 +15,6 @@ SEEDS=${3:-3}
 source scripts/gfmd-cases.sh
 RUNS="$OUT/runs-$GRID"
 mkdir -p "$RUNS"
-G2=0.157  # system II's gamma_s (J/m^2)
 cases=()
 for seed in $(seq 1 "$SEEDS"); do
   for t in inf 1 0.5 0.3 0.2 0.15 0.1; do

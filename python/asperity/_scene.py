@@ -9,7 +9,7 @@ t·q_r (``thickness_qr``; ``math.inf`` or ``"inf"`` for a semi-infinite body) [S
 from __future__ import annotations
 
 import math
-from typing import Any, Dict, Optional, Tuple, Union
+from typing import Any, Dict, Optional, Tuple, Union, overload
 
 import numpy as np
 
@@ -214,6 +214,30 @@ def _checked(fields: Dict[str, Any]) -> Dict[str, Any]:
 _SURFACE_FIELDS = ("system_size_m", "rolloff_wavelength_m", "short_wavelength_m", "hurst", "rms_gradient", "rms_height_m")
 
 
+class _Input:
+    """A read-only number of :class:`Scene`: its input of the attribute's name (a key of
+    :meth:`Scene.fields`), as a float."""
+
+    def __init__(self, doc: str) -> None:
+        self.__doc__ = doc
+        self.name = ""
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self.name = name
+
+    @overload
+    def __get__(self, scene: None, owner: type) -> "_Input": ...
+
+    @overload
+    def __get__(self, scene: "Scene", owner: type) -> float: ...
+
+    def __get__(self, scene: Optional["Scene"], owner: type) -> Union["_Input", float]:
+        return self if scene is None else float(scene.fields()[self.name])
+
+    def __set__(self, scene: "Scene", value: Any) -> None:
+        raise AttributeError(f"Scene.{self.name} is read-only: use replace({self.name}=...)")
+
+
 class Scene:
     """A validated scene: the surface's spectrum, the material, adhesion, load, thickness and
     model of Persson theory with adhesion (Wang & Müser 2017, [S]).
@@ -364,30 +388,11 @@ class Scene:
         """The preset's name ("custom" for a scene built from keywords)."""
         return self._core.preset_name
 
-    @property
-    def pressure(self) -> float:
-        """p* = p/(E*ḡ)."""
-        return float(self.fields()["pressure"])
-
-    @property
-    def thickness_qr(self) -> float:
-        """t·q_r (``math.inf``: semi-infinite)."""
-        return float(self.fields()["thickness_qr"])
-
-    @property
-    def surface_energy_j_m2(self) -> float:
-        """γ_s in J/m² (0: no adhesion)."""
-        return float(self.fields()["surface_energy_j_m2"])
-
-    @property
-    def range_m(self) -> float:
-        """ρ, the range of the adhesive interaction, in m."""
-        return float(self.fields()["range_m"])
-
-    @property
-    def contact_modulus_pa(self) -> float:
-        """E* = E/(1 − ν²) in Pa."""
-        return float(self.fields()["contact_modulus_pa"])
+    pressure = _Input("p* = p/(E*ḡ).")
+    thickness_qr = _Input("t·q_r (``math.inf``: semi-infinite).")
+    surface_energy_j_m2 = _Input("γ_s in J/m² (0: no adhesion).")
+    range_m = _Input("ρ, the range of the adhesive interaction, in m.")
+    contact_modulus_pa = _Input("E* = E/(1 − ν²) in Pa.")
 
     @property
     def model(self) -> str:

@@ -14,6 +14,21 @@ import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 
+#: System II of [S] (presets/system-2.toml: model 4, p* = 0.005) as the keywords of
+#: ``asperity.Scene``, written out by hand.
+SYSTEM_2: Dict[str, Any] = dict(
+    system_size_m=25.6e-6,
+    rolloff_wavelength_m=12.8e-6,
+    short_wavelength_m=0.1e-6,
+    hurst=0.8,
+    rms_gradient=1.0,
+    contact_modulus_pa=25e6,
+    surface_energy_j_m2=0.157,
+    range_m=14.2e-9,
+    pressure=0.005,
+    model=4,
+)
+
 
 def tolerance(name: str) -> float:
     """The constant `name` of src/tolerances.rs."""

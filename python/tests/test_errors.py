@@ -11,19 +11,7 @@ import pytest
 
 import asperity
 from asperity import _native
-
-BASE = dict(
-    system_size_m=25.6e-6,
-    rolloff_wavelength_m=12.8e-6,
-    short_wavelength_m=0.1e-6,
-    hurst=0.8,
-    rms_gradient=1.0,
-    contact_modulus_pa=25e6,
-    surface_energy_j_m2=0.157,
-    range_m=14.2e-9,
-    pressure=0.005,
-    model=4,
-)
+from conftest import SYSTEM_2
 
 # field, bad value, the error's field, a piece of the allowed range in the message
 TABLE = [
@@ -58,7 +46,7 @@ TABLE = [
 @pytest.mark.parametrize("field,value,err_field,allowed", TABLE)
 def test_every_field_is_checked_in_the_constructor_and_in_replace(field, value, err_field, allowed):
     custom = {"model": "custom"} if field in ("c1", "c2", "alpha", "k_griffith", "cap") else {}
-    base = {k: v for k, v in BASE.items() if not (field == "rms_height_m" and k == "rms_gradient")}
+    base = {k: v for k, v in SYSTEM_2.items() if not (field == "rms_height_m" and k == "rms_gradient")}
     for make in (
         lambda: asperity.Scene(**{**base, **custom, field: value}),
         lambda: asperity.Scene.preset("system-2").replace(**{field: value}),

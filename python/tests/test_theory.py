@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import asperity
-from conftest import REPO, tolerance
+from conftest import REPO, SYSTEM_2, tolerance
 
 
 @pytest.mark.parametrize("p", [1e-4, 0.01, 0.1, 0.5])
@@ -49,18 +49,7 @@ def test_replace_returns_a_validated_copy():
 
 
 def test_keyword_scene_equals_the_preset():
-    kw = asperity.Scene(
-        system_size_m=25.6e-6,
-        rolloff_wavelength_m=12.8e-6,
-        short_wavelength_m=0.1e-6,
-        hurst=0.8,
-        rms_gradient=1.0,
-        contact_modulus_pa=25e6,
-        surface_energy_j_m2=0.157,
-        range_m=14.2e-9,
-        pressure=0.005,
-        model=4,
-    )
+    kw = asperity.Scene(**SYSTEM_2)
     a = asperity.evaluate(kw).to_dict()
     b = asperity.evaluate(asperity.Scene.preset("system-2")).to_dict()
     for k in ("a_r", "mean_contact_stress", "contact_stress_variance", "mean_gap_rel"):
