@@ -24,7 +24,10 @@ Routes (equations in physics.md §6.6):
            (the pinned contact: n from the anchor); b = 1/2: one JKR contact's
            sqrt(a)-law as a function of area at a linear p_rep; b fitted: on the slabs'
            other thicknesses (leave-one-thickness-out); b = 3/4 anchored at GFMD's own
-           turning a_r as a diagnostic (how much of the error is the theory's a_t).
+           turning a_r as a diagnostic (how much of the error is the theory's a_t);
+  split    the turning tension split into a share carried in proportion to the area
+           (reversible) and a pinned share phi carried as a^(3/4), phi = 1 - d ln T/d ln p*
+           of the theory's loading tension T = p_rep(a_r(p*)) - p* between p_lo and p*_max.
 
 Prints, per route and model: the mean |ln(a_r route / a_r GFMD)| over GFMD's
 unloading rows (positive loads below the turning load, p* = 0 and tensile loads), the rows
@@ -145,6 +148,37 @@ class Griffith:
         return Ensemble.area(self, p)
 
 
+class Split(Ensemble):
+    """The turning tension T_t = p_rep(a_t) - p*_max split into a reversible share carried in
+    proportion to the area and a pinned share phi carried as a^(3/4):
+    p*(a) = p_rep(a) - (1 - phi) T_t a/a_t - phi T_t (a/a_t)^(3/4)."""
+
+    def __init__(self, table, a_t, phi, b=0.75):
+        tension = max(p_rep(table, a_t) - P_MAX, 0.0)
+        self.curve = []
+        n = 4000
+        for i in range(n + 1):
+            a = a_t * 10 ** (-8.0 * i / n)
+            p = p_rep(table, a) - tension * ((1 - phi) * a / a_t + phi * (a / a_t) ** b)
+            if self.curve and p > self.curve[-1][1]:
+                break
+            self.curve.append((a, p))
+        self.pull_off = min(self.curve[-1][1], 0.0)
+
+
+def stickiness(table, rows, p_lo):
+    """phi = 1 - d ln T / d ln p* of the theory's loading tension T = p_rep(a_r(p*)) - p*
+    between p_lo and p*_max, in [0, 1]: 0 where T grows as p* (adhesion only steepens a
+    linear a_r(p*)), 1 where T stays finite as p* falls (a sticky contact)."""
+
+    def tension(p):
+        row = rows[min(rows, key=lambda q: abs(q - p))]
+        return p_rep(table, float(row["a_r"])) - p
+
+    x = 1 - math.log(tension(P_MAX) / tension(p_lo)) / math.log(P_MAX / p_lo)
+    return min(max(x, 0.0), 1.0)
+
+
 def unloading_rows(gfmd, k):
     """GFMD's unloading rows below the turning load: (p, a_r, err)."""
     return sorted(
@@ -256,6 +290,11 @@ def main():
             a_g = lambda t, g: gfmd[key(t, g)]["loading"][max(gfmd[key(t, g)]["loading"])][0]
             route = lambda t, g, a, tab: Ensemble(tab, a_g(t, g), 0.75)
             report("jkr b = 0.75 at GFMD's a_t", judge(gfmd, dry, loading, cases, route, model))
+            # the pinned share from the theory's loading tension between p_lo and p*_max
+            for p_lo in (1e-4, 1e-3):
+                phi = lambda t, g, p_lo=p_lo, m=model: stickiness(dry[t], loading[key(t, g) + (m,)], p_lo)
+                route = lambda t, g, a, tab, phi=phi: Split(tab, a, phi(t, g))
+                report(f"split, phi from {p_lo:.0e}", judge(gfmd, dry, loading, cases, route, model))
             # b fitted without the case's own thickness (slabs), or on all slabs (others)
             route = lambda t, g, a, tab: Ensemble(tab, a, betas.get(t, b_all))
             report("jkr b fitted (held out)", judge(gfmd, dry, loading, cases, route, model))
