@@ -1,7 +1,7 @@
 //! An unloading branch with hysteresis from the theory's own quantities: the pinned contact as
 //! an ensemble of JKR patches anchored at the turning load (physics.md §6.6).
 //!
-//! [S]'s formulation gives no hysteresis window at the loads where GFMD unloads with 1.1–6.7×
+//! \[S\]'s formulation gives no hysteresis window at the loads where GFMD unloads with 1.1–6.7×
 //! its loading contact (§6.2). This route keeps the contact reached at the turning load p*_max
 //! and lets it recede as a fixed population of adhesive patches:
 //!
