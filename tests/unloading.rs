@@ -182,3 +182,47 @@ fn on_the_slabs_the_branch_holds_gfmds_unloading_contact_and_its_hysteresis() {
         "hysteresis at {both_hyst} of {gfmd_hyst} loads"
     );
 }
+
+#[test]
+fn the_cycle_reports_the_pinned_branch_on_its_way_down_and_only_on_slabs() {
+    use asperity::report::cycle::cycle;
+    use asperity::report::sweep::Control;
+    use asperity::theory::sweep::SweepSpec;
+    let opts = Options::default();
+    let loads = SweepSpec {
+        from: 1e-3,
+        to: P_MAX,
+        points: 3,
+    };
+    let run = |scene: &Scene| {
+        let mut quiet = |_: usize, _: usize| {};
+        cycle(scene, "system-2", &loads, &opts, Control::none(&mut quiet)).unwrap()
+    };
+    let scene = system2(0.3, 1.0);
+    let c = run(&scene);
+    let b = pinned_unloading(&scene, P_MAX, PINNED_EXPONENT, &opts).unwrap();
+    let mut down = 0;
+    for r in &c.rows {
+        if r.branch == PathBranch::Loading {
+            assert!(r.a_r_unloading_pinned.is_none(), "{r:?}");
+            continue;
+        }
+        match (b.a_r_at(r.p), r.a_r_unloading_pinned) {
+            (None, got) => assert!(got.is_none(), "{r:?}"),
+            (Some(expected), got) => {
+                let got = got.unwrap_or_else(|| panic!("{r:?}: none, {expected} expected"));
+                down += 1;
+                assert!((got / expected - 1.0).abs() < 1e-12, "{r:?}: {expected}");
+                // hysteresis: more contact on the way down than the theory's branch at the load
+                assert!(got > r.a_r, "{r:?}");
+            }
+        }
+    }
+    assert_eq!(
+        down, 2,
+        "the two loads below the top (no tensile rows: the theory holds no tension here)"
+    );
+    // outside the measured range (the half-space) the cycle says nothing
+    let thick = run(&system2(f64::INFINITY, 1.0));
+    assert!(thick.rows.iter().all(|r| r.a_r_unloading_pinned.is_none()));
+}

@@ -134,6 +134,45 @@ pub fn from_parts(dry: &DryGap, turning_a_r: f64, turning_load: f64, exponent: f
     })
 }
 
+/// The thickest slab (t·q_r) the route was measured to hold on (system II's slabs 0.1–0.3,
+/// physics.md §6.6); on thicker bodies and the half-space it claims a hysteresis GFMD does not
+/// show, so the cycle reports it only up to here.
+pub const PINNED_THICKEST_QR: f64 = 0.3;
+
+/// The route's a_r on a cycle's path: for each load of `unloading` (p*, the path's unloading
+/// and tensile loads below the turning load) the pinned branch's a_r from the turning state
+/// (`turning_load`, `turning_a_r`: the path's top), NaN below the branch's fold. All NaN where
+/// the scene is thicker than [`PINNED_THICKEST_QR`], the turning state is not a number, or the
+/// adhesionless table cannot be built: the value is an addition to the path, never a reason
+/// for it to fail.
+pub fn pinned_on_path(
+    scene: &Scene,
+    turning_load: f64,
+    turning_a_r: f64,
+    unloading: &[f64],
+    opts: &Options,
+) -> Vec<f64> {
+    let none = vec![f64::NAN; unloading.len()];
+    if scene.thickness_qr() > PINNED_THICKEST_QR || !(turning_a_r > 0.0 && turning_load > 0.0) {
+        return none;
+    }
+    let p_lo = DRY_P_LO.min(turning_load);
+    let Ok(dry) = scene
+        .clone()
+        .with_pressure(turning_load)
+        .and_then(|s| DryGap::new(&s, p_lo, opts))
+    else {
+        return none;
+    };
+    let Ok(branch) = from_parts(&dry, turning_a_r, turning_load, PINNED_EXPONENT) else {
+        return none;
+    };
+    unloading
+        .iter()
+        .map(|&p| branch.a_r_at(p).unwrap_or(f64::NAN))
+        .collect()
+}
+
 /// The pinned unloading branch of `scene` from the turning load p*_max: its loading a_r there
 /// by the scene's model and its adhesionless table (γ_s = 0, the same model), then
 /// [`from_parts`] with β.
