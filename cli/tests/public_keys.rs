@@ -767,6 +767,12 @@ fn gfmd_cycle_keys_and_columns() {
     assert_eq!(header, format!("{},branch", asperity_cli::cli::gfmd::GFMD_CSV_HEADER));
     assert!(text.contains("# pull_off_pressure: "), "{text}");
     assert!(text.contains("# theory_pull_off_pressure: "), "{text}");
+    // the theory's path beside it has the rows of `sweep --cycle`
+    assert_has(
+        &c["theory_cycle"]["rows"][0],
+        &["branch", "p", "a_r", "on_unloading_branch", "a_r_unloading_pinned"],
+        "gfmd --cycle theory_cycle row",
+    );
 }
 
 /// `sweep --cycle`: the load sweep's keys and `cycle` (rows with `branch`); the CSV's columns.
@@ -803,6 +809,7 @@ fn sweep_cycle_keys_and_columns() {
             "mean_gap_rel",
             "mean_contact_stress",
             "on_unloading_branch",
+            "a_r_unloading_pinned",
         ],
         "sweep --cycle row",
     );

@@ -2,7 +2,9 @@
 //! in its JSON, or as its CSV) and Python's `cycle()` returns: the path up the loading branch
 //! over log-spaced loads, back down the unloading branch while it exists and on into tension
 //! to the theory's pull-off ([`crate::theory::cycle::path_through_tension`]), with where the
-//! unloading branch ends, the jump-in, the pull-off and its bracket, and why the path stops.
+//! unloading branch ends, the jump-in, the pull-off and its bracket, and why the path stops;
+//! on the way down each row also carries the pinned unloading branch's a_r on slabs
+//! ([`crate::theory::unloading`], physics.md §6.6).
 //!
 //! The path runs on the load sweep's own continuation ([`super::sweep::pressure`]), so the
 //! cycle and the sweep beside it share one gap table. The serialised field names are those of

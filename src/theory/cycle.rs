@@ -11,6 +11,7 @@
 //! [`TheoryCycle::note`] says in one line why the path ends where it does.
 
 use super::adhesion::{pull_off, AdhesionAccuracy, TensilePullOff};
+use super::engine::Options;
 use super::sweep::{Sweep, SweepRow};
 use crate::error::Result;
 use crate::input::scene::Scene;
@@ -56,6 +57,11 @@ pub struct TheoryPathRow {
     pub mean_contact_stress: f64,
     /// Whether the value is the theory's unloading branch (true) or its loading/only branch.
     pub on_unloading_branch: bool,
+    /// On the unloading and tensile rows of [`path_through_tension`]: a_r of the pinned
+    /// unloading branch from the path's top load ([`super::unloading`], physics.md §6.6);
+    /// null on loading rows, below that branch's pull-off, and on bodies thicker than
+    /// t·q_r = [`super::unloading::PINNED_THICKEST_QR`], where it was not measured to hold.
+    pub a_r_unloading_pinned: Option<f64>,
 }
 
 /// The theory's path over a cycle's positive loads.
@@ -92,6 +98,7 @@ pub fn path(sweep: &Sweep) -> TheoryCycle {
         mean_gap_rel: r.mean_gap_rel,
         mean_contact_stress: r.mean_contact_stress,
         on_unloading_branch: false,
+        a_r_unloading_pinned: None,
     };
     let mut rows: Vec<TheoryPathRow> = sweep.rows.iter().map(load).collect();
     for r in sweep.rows.iter().rev().skip(1) {
@@ -104,6 +111,7 @@ pub fn path(sweep: &Sweep) -> TheoryCycle {
                 mean_gap_rel: r.mean_gap_unloading_rel,
                 mean_contact_stress: f64::NAN,
                 on_unloading_branch: true,
+                a_r_unloading_pinned: None,
             }
         } else {
             TheoryPathRow {
@@ -152,6 +160,7 @@ pub fn path_through_tension(
         return Ok(cycle);
     };
     if scene.gamma <= 0.0 {
+        add_pinned(&mut cycle, sweep, scene, acc);
         cycle.pull_off_pressure = Some(0.0);
         cycle.note =
             "without adhesion the contact holds no tension: the theory's path ends at p* -> 0 (pull-off 0)".into();
@@ -165,12 +174,34 @@ pub fn path_through_tension(
         mean_gap_rel: f64::NAN,
         mean_contact_stress: s.mean_contact_stress,
         on_unloading_branch: true,
+        a_r_unloading_pinned: None,
     }));
+    add_pinned(&mut cycle, sweep, scene, acc);
     cycle.note = tension_note(&po);
     cycle.pull_off_pressure = Some(po.pressure);
     cycle.pull_off_bracket = Some([po.lost, po.pressure]);
     cycle.tension_bound = Some(po.bound);
     Ok(cycle)
+}
+
+/// The pinned unloading branch's a_r on the path's unloading and tensile rows, from the top
+/// of the sweep (its largest load and the loading a_r there).
+fn add_pinned(cycle: &mut TheoryCycle, sweep: &Sweep, scene: &Scene, acc: &AdhesionAccuracy) {
+    let Some(top) = sweep.rows.last() else {
+        return;
+    };
+    let opts = Options {
+        adhesion: *acc,
+        ..Options::default()
+    };
+    let down: Vec<usize> = (0..cycle.rows.len())
+        .filter(|&i| cycle.rows[i].branch == PathBranch::Unloading)
+        .collect();
+    let loads: Vec<f64> = down.iter().map(|&i| cycle.rows[i].p).collect();
+    let a = super::unloading::pinned_on_path(scene, top.p, top.a_r, &loads, &opts);
+    for (&i, v) in down.iter().zip(a) {
+        cycle.rows[i].a_r_unloading_pinned = v.is_finite().then_some(v);
+    }
 }
 
 /// One line on where the tensile path ended and why.

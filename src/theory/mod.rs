@@ -16,6 +16,7 @@ pub mod loads;
 pub mod mirror;
 pub mod persson;
 pub mod sweep;
+pub mod unloading;
 pub mod window;
 
 /// The slab factor moved to [`crate::elastic::slab`] (below inputs and theory alike); this
