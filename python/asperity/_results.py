@@ -145,8 +145,10 @@ class CycleResult(_Path):
     on into tension at p* = 0, −p₁, −2p₁, … to the pull-off): ``branch``, ``p``, ``a_r``,
     ``mean_gap_rel`` (NaN under tension, where the mean gap is not defined),
     ``mean_contact_stress`` (NaN on the unloading branch inside a hysteresis window),
-    ``on_unloading_branch`` (bool: the theory's unloading, highest stable branch); ``loading``
-    (bool). Fields: ``unloading_branch_ends`` (p* below which the unloading branch no longer
+    ``on_unloading_branch`` (bool: the theory's unloading, highest stable branch);
+    ``a_r_unloading_pinned`` (a_r of the pinned unloading branch below the top load, NaN where
+    null: loading rows, past that branch's pull-off, and t·q_r > 0.3; docs/physics.md §6.6);
+    ``loading`` (bool). Fields: ``unloading_branch_ends`` (p* below which the unloading branch no longer
     exists, where the range holds it), ``jump_in_pressure``, ``pull_off_pressure`` (the
     theory's pull-off, ≤ 0) with ``pull_off_bracket``, ``tension_bound`` (the most tension any
     contact branch could hold, the coarsest scale's Griffith stress) and ``note`` (why the path
@@ -156,6 +158,7 @@ class CycleResult(_Path):
     __slots__ = ()
 
     on_unloading_branch: np.ndarray
+    a_r_unloading_pinned: np.ndarray
     unloading_branch_ends: Optional[float]
     tension_bound: Optional[float]
     note: str

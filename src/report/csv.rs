@@ -25,7 +25,8 @@ a_r_unloading,branches,mean_gap_lower_rel,mean_gap_upper_rel,contact_load,mean_g
 mean_gap_unloading_error,mean_gap_unloading_lower_rel,contact_load_unloading,trust_inside,trust_a_r_log_error,reason";
 
 /// The columns of `sweep --cycle`.
-pub const THEORY_CYCLE_HEADER: &str = "branch,p,a_r,mean_gap_rel,mean_contact_stress,on_unloading_branch";
+pub const THEORY_CYCLE_HEADER: &str =
+    "branch,p,a_r,mean_gap_rel,mean_contact_stress,on_unloading_branch,a_r_unloading_pinned";
 
 /// The columns of GFMD's single runs and sweeps: the columns of `sweep` that GFMD measures,
 /// under the same names, then GFMD's own (`iterations`, `residual`), then the theory on the
@@ -175,6 +176,7 @@ pub fn theory_cycle(c: &TheoryCycle) -> String {
                 cell(r.mean_gap_rel),
                 cell(r.mean_contact_stress),
                 r.on_unloading_branch.to_string(),
+                opt_cell(r.a_r_unloading_pinned),
             ]
         }),
     ));
