@@ -466,3 +466,11 @@ pub const PULL_OFF_GAUGE_LOO_WORST: f64 = 2.5;
 /// Share of the stored cases, each left out, whose GFMD pull-off the band stated without them
 /// holds (measured 19 of 21).
 pub const PULL_OFF_GAUGE_BAND_COVERAGE: f64 = 0.85;
+
+// Polonsky–Keer's cold start
+
+/// Polonsky–Keer from its guess against from the uniform pressure on the same map: the largest
+/// difference of the relaxed surfaces, in units of the solver's gap tolerance (both stop once
+/// the gap on the contact and the overlap off it are below that tolerance; measured 0.3–0.6 on
+/// the test's 128² map).
+pub const PK_COLD_START_W: f64 = 2.0;
