@@ -47,7 +47,7 @@
 //! it, the sums over S and the step visit its nodes only, and g is not stored (it is u − h − ḡ where
 //! it is needed). What needs every node is the overlap test (the least x = u − h off S, taken
 //! while a row of u is in the cache) and, when it finds one, the step in the chunks that hold
-//! it. The sums are those the node-by-node loops take, in the same order (Σ_S g² excepted: it
+//! it, which lists the new S there as it goes (the other chunks keep their nodes with p > 0). The sums are those the node-by-node loops take, in the same order (Σ_S g² excepted: it
 //! is Σ (x − c)² − |S|(ḡ − c)² about the last ḡ, to one rounding of the node-by-node sum), so
 //! a run is the same to the last digit of a_r and ū as one over every node (BENCHMARKS.md).
 
@@ -156,13 +156,16 @@ pub fn relax(
             continue;
         }
         let d = match overlap {
-            true => pk.step_all(&set, &mut p, &mut t, (&u, &off), gbar, tau),
+            true => {
+                // S changed: nodes joined (the overlap), and maybe left
+                let (d, joined) = pk.step_all(&set, &mut p, &mut t, (&u, &off), gbar, tau);
+                set = joined;
+                d
+            }
             false => pk.step(&set, &mut p, &mut t, tau),
         };
-        // S changed: nodes joined (the overlap) or left (a clipped pressure)
-        if overlap {
-            set = Support::of(&p, nx);
-        } else if d[1] > 0.0 {
+        if !overlap && d[1] > 0.0 {
+            // S changed: nodes left (a clipped pressure)
             set.retain(&p, nx);
         }
         // u follows p without a convolution when p moved along t alone
@@ -303,7 +306,8 @@ impl Pk<'_> {
     }
 
     /// [`Pk::step`] when some node off S has g < 0: also p_O = −τ g on the overlap O, visiting
-    /// every node of the chunks whose bound `off` of x off S is below ḡ (the others as `step`).
+    /// every node of the chunks whose bound `off` of x off S is below ḡ (the others as `step`);
+    /// returns also the new S, listed chunk by chunk as the step leaves it (no pass over p).
     fn step_all(
         &self,
         set: &Support,
@@ -312,14 +316,16 @@ impl Pk<'_> {
         (u, off): (&[f64], &[f64]),
         gbar: f64,
         tau: f64,
-    ) -> [f64; 2] {
+    ) -> ([f64; 2], Support) {
         let h = self.h;
         let parts = chunked(self.par, p, t, |c, o, pc, tc| {
             if off[c] - gbar >= 0.0 {
                 // no overlap here: g = fl(x − ḡ) ≥ fl(off − ḡ) ≥ 0 off S
-                return step_on(set.chunk(c), o, pc, tc, tau);
+                let d = step_on(set.chunk(c), o, pc, tc, tau);
+                let kept = set.chunk(c).iter().copied().filter(|&i| pc[i - o] > 0.0).collect();
+                return (d, kept);
             }
-            let (mut sum, mut clipped) = (0.0, 0.0);
+            let (mut sum, mut clipped, mut nodes) = (0.0, 0.0, Vec::new());
             for (j, (pi, ti)) in pc.iter_mut().zip(tc.iter_mut()).enumerate() {
                 if *pi > 0.0 {
                     clipped = project(pi, ti, tau, clipped);
@@ -332,10 +338,15 @@ impl Pk<'_> {
                 if *pi != 0.0 {
                     sum += *pi;
                 }
+                if *pi > 0.0 {
+                    nodes.push(o + j);
+                }
             }
-            [sum, clipped]
+            ([sum, clipped], nodes)
         });
-        sum_and_flag(parts)
+        let (sums, lists): (Vec<[f64; 2]>, Vec<Vec<usize>>) = parts.into_iter().unzip();
+        let set = Support::from_sorted(lists.concat(), p.len(), self.plan.nx());
+        (sum_and_flag(sums), set)
     }
 }
 

@@ -31,6 +31,12 @@ impl Support {
         *self = Support::indexed(nodes, p.len(), nx);
     }
 
+    /// S of the nodes `nodes` (in increasing order) of a field of `n` values on rows of `nx`.
+    pub(super) fn from_sorted(nodes: Vec<usize>, n: usize, nx: usize) -> Support {
+        debug_assert!(nodes.windows(2).all(|w| w[0] < w[1]));
+        Support::indexed(nodes, n, nx)
+    }
+
     fn indexed(nodes: Vec<usize>, n: usize, nx: usize) -> Support {
         let starts = |step: usize| -> Vec<usize> {
             let mut k = 0;
