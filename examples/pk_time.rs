@@ -12,8 +12,9 @@
 //! final residual, and the solve's wall and CPU seconds (user + system of the process, all
 //! threads, from `/proc/self/stat`; the map's reading is not in them).
 
-use asperity::gfmd::{self, GfmdOptions, Method, Problem};
-use asperity::surface::heightmap::Surface;
+mod saved_map;
+
+use asperity::gfmd::{self, GfmdOptions, Method};
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
 
@@ -35,24 +36,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         [_, m, p, t] => (m, p.parse::<f64>()?, t.parse::<f64>()?),
         _ => return Err("usage: pk_time MAP.txt P_STAR [TOLERANCE]".into()),
     };
-    let text = std::fs::read_to_string(map)?;
-    let spacing: f64 = text
-        .lines()
-        .next()
-        .and_then(|l| l.split("spacing ").nth(1))
-        .and_then(|s| s.split_whitespace().next())
-        .ok_or("no spacing in the map's header")?
-        .parse()?;
-    let n = text.lines().filter(|l| !l.starts_with('#')).count();
-    let surface = Surface::parse(&text, map, n as f64 * spacing)?;
-    let problem = Problem {
-        surface: &surface,
-        modulus: 1.0,
-        thickness: f64::INFINITY,
-        pressure: p_star * surface.rms_gradient(),
-        gamma: 0.0,
-        range: 1e-9,
-    };
+    let surface = saved_map::load(map)?;
+    let problem = saved_map::problem(&surface, p_star);
     let opts = GfmdOptions {
         method: Method::PolonskyKeer,
         tolerance: tol,
