@@ -33,9 +33,9 @@
 //! spends its first ≈ 10 iterations shrinking S from the whole grid: 108 → 95 iterations on
 //! system I at 1024², p* = 0.01, and 9 % fewer over p* = 1e-4…1 and 64²…512² (half as many
 //! at p* = 1e-4, more in no case), the same contact set to the node and ū to 1e-10
-//! (BENCHMARKS.md).
-//! Should the guess stall (its set already in equilibrium with an overlap outside it, so that
-//! τ = 0 and no step adds the overlap, as for a single node), the run starts afresh from p₀.
+//! (BENCHMARKS.md). Should the guess stall (its set already in equilibrium with an overlap
+//! outside it, so that τ = 0 and no step adds the overlap, as for a single node), the run
+//! starts afresh from p₀.
 //!
 //! **Cost.** Two convolutions per iteration, each fused with the node loop that feeds it or
 //! reads it ([`RealFft2::convolve_rows`]). Once an update changes no node of S (no clipped
@@ -44,12 +44,14 @@
 //!
 //! S (a few per cent of the nodes at the loads of interest) is kept as a list of its nodes
 //! (`gfmd::pk_support`): p and t are zero off S, so the fields to convolve are written from
-//! it, the sums over S and the step visit its nodes only, and g is not stored (it is u − h − ḡ where
-//! it is needed). What needs every node is the overlap test (the least x = u − h off S, taken
-//! while a row of u is in the cache) and, when it finds one, the step in the chunks that hold
-//! it, which lists the new S there as it goes (the other chunks keep their nodes with p > 0). The sums are those the node-by-node loops take, in the same order (Σ_S g² excepted: it
-//! is Σ (x − c)² − |S|(ḡ − c)² about the last ḡ, to one rounding of the node-by-node sum), so
-//! a run is the same to the last digit of a_r and ū as one over every node (BENCHMARKS.md).
+//! it, the sums over S and the step visit its nodes only, and g is not stored (it is
+//! u − h − ḡ where it is needed). What needs every node is the overlap test (the least
+//! x = u − h off S, taken while a row of u is in the cache) and, when it finds one, the step in
+//! the chunks that hold it, which lists the new S there as it goes (the other chunks keep their
+//! nodes with p > 0). The sums are those the node-by-node loops take, in the same order
+//! (Σ_S g² excepted: it is Σ (x − c)² − |S|(ḡ − c)² about the last ḡ, to one rounding of the
+//! node-by-node sum), so a run is the same to the last digit of a_r and ū as one over every
+//! node (BENCHMARKS.md).
 
 use super::pk_support::{Contact, Support, CHUNK};
 use crate::error::{Error, Result};
@@ -58,8 +60,8 @@ use rustfft::num_complex::Complex64;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Runs PK from the pressure `p` (internal units, E*; where it is all zero, from the guess of
-/// `gfmd::pk_start`)
-/// and returns the elastic surface w (internal units, Δa) and the iterations taken.
+/// `gfmd::pk_start`) and returns the elastic surface w (internal units, Δa) and the
+/// iterations taken.
 /// `phi` is the stiffness on the half spectrum (E*/Δa), `h` the heights (Δa).
 #[allow(clippy::too_many_arguments)]
 pub fn relax(
