@@ -485,3 +485,11 @@ pub const UNLOADING_RETRACE_REL: f64 = 1e-3;
 /// The branch's fold against the closed-form minimum of p = a/c − κa^β on a linear table
 /// (relative; the nodes are 1/400 decade apart).
 pub const UNLOADING_FOLD_REL: f64 = 1e-4;
+
+// Polonsky–Keer's cold start
+
+/// Polonsky–Keer from its guess against from the uniform pressure on the same map: the largest
+/// difference of the relaxed surfaces, in units of the solver's gap tolerance (both stop once
+/// the gap on the contact and the overlap off it are below that tolerance; measured 0.3–0.6 on
+/// the test's 128² map).
+pub const PK_COLD_START_W: f64 = 2.0;

@@ -162,13 +162,13 @@ fn stiffness((nx, ny, da): (usize, usize, f64), thickness: f64, nh: usize) -> (V
 }
 
 /// Relaxes the hard wall with Polonsky–Keer (`phi`: the stiffness, `h`: the heights in Δa)
-/// from the uniform pressure p₀, whatever start the caller has: the positions on or above the
-/// heights and the iterations taken.
+/// from its cold start (a pressure guessed from the heights, see [`super::pk`]), whatever start
+/// the caller has: the positions on or above the heights and the iterations taken.
 ///
 /// Polonsky–Keer does not start from the previous load's contact pressure: on a 32² system-I
 /// sweep with 4 % load steps that start took 168–925 iterations at 10 of 19 loads and
 /// 15 000–83 000 at the other 9, with the contact no longer changing, against 26–31 from the
-/// uniform pressure (BENCHMARKS.md). From the uniform pressure each load of a sweep is also the
+/// uniform pressure (BENCHMARKS.md). From the cold start each load of a sweep is also the
 /// single run's answer, bit for bit.
 fn pk_start(
     p0: f64,
@@ -179,7 +179,7 @@ fn pk_start(
     cancel: &AtomicBool,
 ) -> Result<(Vec<f64>, usize)> {
     let n = h.len();
-    // all zero: `pk::relax` starts from p₀ on every node
+    // all zero: `pk::relax` starts from its guess made from the heights
     let p_start = vec![0.0; n];
     let h_rms = {
         let m = h.iter().sum::<f64>() / n as f64;

@@ -58,6 +58,8 @@ pub mod grid;
 pub mod ladder;
 pub mod measure;
 pub mod pk;
+mod pk_start;
+mod pk_support;
 pub mod problem;
 pub mod reduction;
 pub mod relax;

@@ -27,27 +27,41 @@
 //! part and is reset only when it stops being a descent direction (Σ_S g t ≤ 0): 108 and 126
 //! iterations on the same maps, the same contact set to the node (BENCHMARKS.md).
 //!
+//! **Cold start.** Where the caller gives no pressure (every run of [`super::solve_from`]),
+//! PK starts from a guess made from the heights (`gfmd::pk_start`: the few per cent highest
+//! nodes, Persson's adhesionless a_r three times over) instead of p₀ on every node, which
+//! spends its first ≈ 10 iterations shrinking S from the whole grid: 108 → 95 iterations on
+//! system I at 1024², p* = 0.01, and 9 % fewer over p* = 1e-4…1 and 64²…512² (half as many
+//! at p* = 1e-4, more in no case), the same contact set to the node and ū to 1e-10
+//! (BENCHMARKS.md). Should the guess stall (its set already in equilibrium with an overlap
+//! outside it, so that τ = 0 and no step adds the overlap, as for a single node), the run
+//! starts afresh from p₀.
+//!
 //! **Cost.** Two convolutions per iteration, each fused with the node loop that feeds it or
 //! reads it ([`RealFft2::convolve_rows`]). Once an update changes no node of S (no clipped
 //! pressure, no overlap), p moved along t alone, so K⋆p follows as K⋆p − τ K⋆t and its
 //! convolution is skipped; a stop reached that way is confirmed with a fresh K⋆p.
 //!
 //! S (a few per cent of the nodes at the loads of interest) is kept as a list of its nodes
-//! (`Support`): p and t are zero off S, so the fields to convolve are written from it, the
-//! sums over S and the step visit its nodes only, and g is not stored (it is u − h − ḡ where
-//! it is needed). What needs every node is the overlap test (the least x = u − h off S, taken
-//! while a row of u is in the cache) and, when it finds one, the step in the chunks that hold
-//! it. The sums are those the node-by-node loops take, in the same order (Σ_S g² excepted: it
-//! is Σ (x − c)² − |S|(ḡ − c)² about the last ḡ, to one rounding of the node-by-node sum), so
-//! a run is the same to the last digit of a_r and ū as one over every node (BENCHMARKS.md).
+//! (`gfmd::pk_support`): p and t are zero off S, so the fields to convolve are written from
+//! it, the sums over S and the step visit its nodes only, and g is not stored (it is
+//! u − h − ḡ where it is needed). What needs every node is the overlap test (the least
+//! x = u − h off S, taken while a row of u is in the cache) and, when it finds one, the step in
+//! the chunks that hold it, which lists the new S there as it goes (the other chunks keep their
+//! nodes with p > 0). The sums are those the node-by-node loops take, in the same order
+//! (Σ_S g² excepted: it is Σ (x − c)² − |S|(ḡ − c)² about the last ḡ, to one rounding of the
+//! node-by-node sum), so a run is the same to the last digit of a_r and ū as one over every
+//! node (BENCHMARKS.md).
 
+use super::pk_support::{Contact, Support, CHUNK};
 use crate::error::{Error, Result};
 use crate::numerics::fft2::{RealFft2, SpectralKernel};
 use rustfft::num_complex::Complex64;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-/// Runs PK from the pressure `p` (internal units, E*; replaced by p₀ where it is all zero)
-/// and returns the elastic surface w (internal units, Δa) and the iterations taken.
+/// Runs PK from the pressure `p` (internal units, E*; where it is all zero, from the guess of
+/// `gfmd::pk_start`) and returns the elastic surface w (internal units, Δa) and the
+/// iterations taken.
 /// `phi` is the stiffness on the half spectrum (E*/Δa), `h` the heights (Δa).
 #[allow(clippy::too_many_arguments)]
 pub fn relax(
@@ -75,10 +89,12 @@ pub fn relax(
         spec,
         par: n >= PARALLEL_MIN_NODES,
     };
-    if !p.iter().any(|&x| x > 0.0) {
-        p.iter_mut().for_each(|x| *x = p0);
-    }
     let nx = pk.plan.nx();
+    // a start guessed from the heights, given up for p₀ if it stalls (below)
+    let mut guessed = !p.iter().any(|&x| x > 0.0);
+    if guessed {
+        p = super::pk_start::guess(h, nx, p0);
+    }
     let mut set = Support::of(&p, nx);
     let (mut u, mut t, mut r) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let mut g_old = 0.0;
@@ -132,14 +148,26 @@ pub fn relax(
         let rt = c[2] - rbar * c[3];
         tau = if rt > 0.0 { c[1] / rt } else { 0.0 };
         let overlap = gap.overlap > 0.0;
+        if guessed && overlap && tau == 0.0 {
+            // the guess is at equilibrium on its own set (e.g. a single node) and no step
+            // would add the overlap to it: start afresh from p₀ on every node
+            (guessed, g_old, carried) = (false, 0.0, false);
+            p.iter_mut().for_each(|x| *x = p0);
+            set = Support::of(&p, nx);
+            it += 1;
+            continue;
+        }
         let d = match overlap {
-            true => pk.step_all(&set, &mut p, &mut t, (&u, &off), gbar, tau),
+            true => {
+                // S changed: nodes joined (the overlap), and maybe left
+                let (d, joined) = pk.step_all(&set, &mut p, &mut t, (&u, &off), gbar, tau);
+                set = joined;
+                d
+            }
             false => pk.step(&set, &mut p, &mut t, tau),
         };
-        // S changed: nodes joined (the overlap) or left (a clipped pressure)
-        if overlap {
-            set = Support::of(&p, nx);
-        } else if d[1] > 0.0 {
+        if !overlap && d[1] > 0.0 {
+            // S changed: nodes left (a clipped pressure)
             set.retain(&p, nx);
         }
         // u follows p without a convolution when p moved along t alone
@@ -280,7 +308,8 @@ impl Pk<'_> {
     }
 
     /// [`Pk::step`] when some node off S has g < 0: also p_O = −τ g on the overlap O, visiting
-    /// every node of the chunks whose bound `off` of x off S is below ḡ (the others as `step`).
+    /// every node of the chunks whose bound `off` of x off S is below ḡ (the others as `step`);
+    /// returns also the new S, listed chunk by chunk as the step leaves it (no pass over p).
     fn step_all(
         &self,
         set: &Support,
@@ -289,14 +318,16 @@ impl Pk<'_> {
         (u, off): (&[f64], &[f64]),
         gbar: f64,
         tau: f64,
-    ) -> [f64; 2] {
+    ) -> ([f64; 2], Support) {
         let h = self.h;
         let parts = chunked(self.par, p, t, |c, o, pc, tc| {
             if off[c] - gbar >= 0.0 {
                 // no overlap here: g = fl(x − ḡ) ≥ fl(off − ḡ) ≥ 0 off S
-                return step_on(set.chunk(c), o, pc, tc, tau);
+                let d = step_on(set.chunk(c), o, pc, tc, tau);
+                let kept = set.chunk(c).iter().copied().filter(|&i| pc[i - o] > 0.0).collect();
+                return (d, kept);
             }
-            let (mut sum, mut clipped) = (0.0, 0.0);
+            let (mut sum, mut clipped, mut nodes) = (0.0, 0.0, Vec::new());
             for (j, (pi, ti)) in pc.iter_mut().zip(tc.iter_mut()).enumerate() {
                 if *pi > 0.0 {
                     clipped = project(pi, ti, tau, clipped);
@@ -309,10 +340,15 @@ impl Pk<'_> {
                 if *pi != 0.0 {
                     sum += *pi;
                 }
+                if *pi > 0.0 {
+                    nodes.push(o + j);
+                }
             }
-            [sum, clipped]
+            ([sum, clipped], nodes)
         });
-        sum_and_flag(parts)
+        let (sums, lists): (Vec<[f64; 2]>, Vec<Vec<usize>>) = parts.into_iter().unzip();
+        let set = Support::from_sorted(lists.concat(), p.len(), self.plan.nx());
+        (sum_and_flag(sums), set)
     }
 }
 
@@ -350,173 +386,6 @@ fn sum_and_flag(parts: Vec<[f64; 2]>) -> [f64; 2] {
     parts.into_iter().fold([0.0; 2], |a, b| [a[0] + b[0], a[1].max(b[1])])
 }
 
-/// The contact set S = {p > 0}: its nodes in order, and where each row and each chunk of
-/// [`CHUNK`] nodes starts among them.
-struct Support {
-    nodes: Vec<usize>,
-    rows: Vec<usize>,
-    chunks: Vec<usize>,
-}
-
-impl Support {
-    /// S of `p` on rows of `nx` nodes.
-    fn of(p: &[f64], nx: usize) -> Support {
-        let nodes = (0..p.len()).filter(|&i| p[i] > 0.0).collect();
-        Support::indexed(nodes, p.len(), nx)
-    }
-
-    /// S less the nodes where p has dropped to 0.
-    fn retain(&mut self, p: &[f64], nx: usize) {
-        let mut nodes = std::mem::take(&mut self.nodes);
-        nodes.retain(|&i| p[i] > 0.0);
-        *self = Support::indexed(nodes, p.len(), nx);
-    }
-
-    fn indexed(nodes: Vec<usize>, n: usize, nx: usize) -> Support {
-        let starts = |step: usize| -> Vec<usize> {
-            let mut k = 0;
-            (0..=n.div_ceil(step))
-                .map(|b| {
-                    while k < nodes.len() && nodes[k] < b * step {
-                        k += 1;
-                    }
-                    k
-                })
-                .collect()
-        };
-        let (rows, chunks) = (starts(nx), starts(CHUNK));
-        Support { nodes, rows, chunks }
-    }
-
-    /// The nodes of S in row y.
-    fn row(&self, y: usize) -> &[usize] {
-        &self.nodes[self.rows[y]..self.rows[y + 1]]
-    }
-
-    /// The nodes of S in chunk c.
-    fn chunk(&self, c: usize) -> &[usize] {
-        &self.nodes[self.chunks[c]..self.chunks[c + 1]]
-    }
-}
-
-/// Sums over a stretch of nodes of x = u − h: over the contact S (p > 0) its sum, count,
-/// extremes and the sums of x − c and (x − c)² about a reference c; off S its minimum.
-#[derive(Debug, Clone, Copy)]
-struct Contact {
-    sum: f64,
-    count: f64,
-    max_on: f64,
-    min_on: f64,
-    min_off: f64,
-    dev: f64,
-    dev_sq: f64,
-}
-
-impl Default for Contact {
-    fn default() -> Self {
-        Contact::EMPTY
-    }
-}
-
-/// The gap g = x − ḡ measured from [`Contact`]: Σ_S g², max_S |g| and the largest overlap
-/// off S (max −g, 0 when there is none).
-struct Gap {
-    squares: f64,
-    on: f64,
-    overlap: f64,
-}
-
-impl Contact {
-    const EMPTY: Contact = Contact {
-        sum: 0.0,
-        count: 0.0,
-        max_on: f64::NEG_INFINITY,
-        min_on: f64::INFINITY,
-        min_off: f64::INFINITY,
-        dev: 0.0,
-        dev_sq: 0.0,
-    };
-
-    /// The sums over the stretch of nodes `o..o + u.len()` (`u`, `h` its values), `nodes`
-    /// the nodes of S in it, `c` the reference of the squares.
-    fn of(nodes: &[usize], o: usize, u: &[f64], h: &[f64], c: f64) -> Contact {
-        let mut s = Contact::EMPTY;
-        let mut from = 0;
-        for &i in nodes {
-            let k = i - o;
-            s.min_off = s.min_off.min(min_difference(&u[from..k], &h[from..k]));
-            from = k + 1;
-            let x = u[k] - h[k];
-            s.sum += x;
-            s.count += 1.0;
-            s.max_on = s.max_on.max(x);
-            s.min_on = s.min_on.min(x);
-            s.dev += x - c;
-            s.dev_sq += (x - c) * (x - c);
-        }
-        s.min_off = s.min_off.min(min_difference(&u[from..], &h[from..]));
-        s
-    }
-
-    /// The sums over this stretch and the next one.
-    fn then(self, b: Contact) -> Contact {
-        Contact {
-            sum: self.sum + b.sum,
-            count: self.count + b.count,
-            max_on: self.max_on.max(b.max_on),
-            min_on: self.min_on.min(b.min_on),
-            min_off: self.min_off.min(b.min_off),
-            dev: self.dev + b.dev,
-            dev_sq: self.dev_sq + b.dev_sq,
-        }
-    }
-
-    /// The gap about ḡ = `gbar`: the extremes of g are those of x less ḡ, the same as taken
-    /// node by node (rounding keeps the order); with the sums taken about c, Σ_S g² =
-    /// Σ (x − c)² − |S| d², d = Σ (x − c)/|S| = ḡ − c, accurate while d is not much larger than
-    /// the gap (c is the last iteration's ḡ).
-    fn gap(&self, gbar: f64) -> Gap {
-        let (on, squares) = if self.count > 0.0 {
-            let d = self.dev / self.count;
-            let on = (self.max_on - gbar).max(-(self.min_on - gbar)).max(0.0);
-            (on, (self.dev_sq - self.count * d * d).max(0.0))
-        } else {
-            (0.0, 0.0)
-        };
-        let overlap = if self.min_off < f64::INFINITY {
-            (-(self.min_off - gbar)).max(0.0)
-        } else {
-            0.0
-        };
-        Gap { squares, on, overlap }
-    }
-}
-
-/// min (u − h) over a stretch (+∞ when empty), in lanes: a minimum does not depend on the
-/// order.
-fn min_difference(u: &[f64], h: &[f64]) -> f64 {
-    let mut lanes = [f64::INFINITY; LANES];
-    let (uc, hc) = (u.chunks_exact(LANES), h.chunks_exact(LANES));
-    let tail = uc
-        .remainder()
-        .iter()
-        .zip(hc.remainder())
-        .fold(f64::INFINITY, |m, (&ui, &hi)| m.min(ui - hi));
-    for (u, h) in uc.zip(hc) {
-        for k in 0..LANES {
-            let x = u[k] - h[k];
-            lanes[k] = if x < lanes[k] { x } else { lanes[k] };
-        }
-    }
-    lanes.iter().fold(tail, |m, &x| m.min(x))
-}
-
-/// Nodes per lane group of [`min_difference`].
-const LANES: usize = 8;
-
-/// Node-loop chunk: partial results are combined in chunk order, so a run is bit-for-bit the
-/// same whatever the thread count.
-const CHUNK: usize = 4096;
 /// Grids with at least this many nodes run their node loops on rayon.
 const PARALLEL_MIN_NODES: usize = 1 << 15;
 
@@ -541,60 +410,5 @@ fn chunked<T: Send>(
             .enumerate()
             .map(|(c, (xc, yc))| f(c, c * CHUNK, xc, yc))
             .collect()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The contact list's sums by rows and by chunks against one loop over every node: the
-    /// same count and extremes of g (bit for bit), Σ_S x and Σ_S g² to rounding, on stretches
-    /// that S starts, ends and breaks.
-    #[test]
-    fn contact_list_sums_equal_a_loop_over_every_node() {
-        let (n, nx) = (2 * CHUNK + 37, 61);
-        let p: Vec<f64> = (0..n)
-            .map(|i| match (i * 7919) % 11 < 3 || i == 0 || i == n - 1 {
-                true => 1.0 + (i % 5) as f64,
-                false => 0.0,
-            })
-            .collect();
-        let u: Vec<f64> = (0..n).map(|i| ((i * 104_729) % 1009) as f64 * 1e-3).collect();
-        let h: Vec<f64> = (0..n).map(|i| ((i * 7) % 13) as f64 * 0.07).collect();
-        let set = Support::of(&p, nx);
-        assert_eq!(set.nodes.len(), p.iter().filter(|&&x| x > 0.0).count());
-        let by = |len: usize| {
-            (0..n.div_ceil(len))
-                .map(|b| {
-                    let (o, e) = (b * len, ((b + 1) * len).min(n));
-                    let nodes = if len == nx { set.row(b) } else { set.chunk(b) };
-                    assert!(nodes.iter().all(|&i| (o..e).contains(&i)));
-                    Contact::of(nodes, o, &u[o..e], &h[o..e], 0.3)
-                })
-                .fold(Contact::EMPTY, Contact::then)
-        };
-        for a in [by(nx), by(CHUNK)] {
-            let gbar = a.sum / a.count;
-            let (mut sum, mut squares, mut on, mut overlap) = (0.0, 0.0, 0.0f64, 0.0f64);
-            for i in 0..n {
-                let g = u[i] - h[i] - gbar;
-                if p[i] > 0.0 {
-                    (sum, squares, on) = (sum + (u[i] - h[i]), squares + g * g, on.max(g.abs()));
-                } else {
-                    overlap = overlap.max(-g);
-                }
-            }
-            let gap = a.gap(gbar);
-            assert_eq!(a.count, set.nodes.len() as f64);
-            assert_eq!((gap.on, gap.overlap), (on, overlap));
-            assert!(overlap > 0.0 && on > 0.0);
-            assert!((a.sum / sum - 1.0).abs() < 1e-12, "{} against {sum}", a.sum);
-            assert!(
-                (gap.squares / squares - 1.0).abs() < 1e-12,
-                "{} against {squares}",
-                gap.squares
-            );
-        }
     }
 }

@@ -78,11 +78,14 @@ impl std::fmt::Debug for RealFft2 {
 }
 
 /// A real convolution kernel on the half spectrum of a [`RealFft2`], stored column by column
-/// (`values[kx * ny + ky]`) so that the column pass of a convolution reads it in order. Made
-/// once per kernel with [`RealFft2::kernel`].
+/// (`values[kx * len + ky]`) so that the column pass of a convolution reads it in order. Made
+/// once per kernel with [`RealFft2::kernel`]. A kernel even in ky (k(kx, ky) = k(kx, ny − ky),
+/// bit for bit, as every kernel of |q|) keeps ky = 0..=ny/2 only (`len` = ny/2 + 1 instead
+/// of ny): the column pass then reads half as much.
 #[derive(Debug, Clone)]
 pub struct SpectralKernel {
     columns: Vec<f64>,
+    len: usize,
 }
 
 /// Grids with at least this many points are transformed with rayon.
@@ -93,6 +96,34 @@ pub const STRIP: usize = 16;
 
 /// Padding (complex values) between the columns of a gathered strip.
 const STRIP_PAD: usize = 4;
+
+impl SpectralKernel {
+    /// Whether this is a kernel of an `nh` × `ny` half spectrum.
+    fn fits(&self, nh: usize, ny: usize) -> bool {
+        (self.len == ny || self.len == ny / 2 + 1) && self.columns.len() == nh * self.len
+    }
+
+    /// Multiplies column `kx` of a spectrum (ky = 0..ny) by the kernel.
+    fn apply(&self, kx: usize, col: &mut [Complex64]) {
+        let ny = col.len();
+        let k = &self.columns[kx * self.len..(kx + 1) * self.len];
+        if self.len == ny {
+            for (x, &f) in col.iter_mut().zip(k) {
+                *x *= f;
+            }
+        } else {
+            // ky = 0..=ny/2 as stored, then ny/2 + 1..ny from ny − ky = ny/2 − 1 (odd ny:
+            // ny/2)..1
+            let (low, high) = col.split_at_mut(ny / 2 + 1);
+            for (x, &f) in low.iter_mut().zip(k) {
+                *x *= f;
+            }
+            for (x, &f) in high.iter_mut().zip(k[1..ny - ny / 2].iter().rev()) {
+                *x *= f;
+            }
+        }
+    }
+}
 
 impl RealFft2 {
     /// Plans the transforms of an `nx`×`ny` grid (both ≥ 1).
@@ -143,13 +174,15 @@ impl RealFft2 {
     pub fn kernel(&self, values: &[f64]) -> SpectralKernel {
         let (ny, nh) = (self.ny, self.nh);
         assert_eq!(values.len(), nh * ny, "RealFft2::kernel: size");
-        let mut columns = vec![0.0; nh * ny];
-        for ky in 0..ny {
+        let even = (1..ny).all(|ky| (0..nh).all(|kx| values[ky * nh + kx] == values[(ny - ky) * nh + kx]));
+        let len = if even { ny / 2 + 1 } else { ny };
+        let mut columns = vec![0.0; nh * len];
+        for ky in 0..len {
             for kx in 0..nh {
-                columns[kx * ny + ky] = values[ky * nh + kx];
+                columns[kx * len + ky] = values[ky * nh + kx];
             }
         }
-        SpectralKernel { columns }
+        SpectralKernel { columns, len }
     }
 
     /// Unnormalised forward transform of the real field `input` (nx·ny) into `spec` (half
@@ -227,9 +260,8 @@ impl RealFft2 {
     /// `inverse`, in fewer passes over memory.
     pub fn convolve(&mut self, input: &[f64], kernel: &SpectralKernel, spec: &mut [Complex64], out: &mut [f64]) {
         let (nx, ny, nh) = (self.nx, self.ny, self.nh);
-        let kernel = &kernel.columns[..];
         assert!(
-            input.len() == nx * ny && out.len() == nx * ny && spec.len() == nh * ny && kernel.len() == nh * ny,
+            input.len() == nx * ny && out.len() == nx * ny && spec.len() == nh * ny && kernel.fits(nh, ny),
             "RealFft2::convolve: sizes"
         );
         self.rows_forward(input, spec);
@@ -271,9 +303,8 @@ impl RealFft2 {
         F: Fn(usize, &[f64], &[f64]) -> B + Sync,
     {
         let (nx, ny, nh) = (self.nx, self.ny, self.nh);
-        let kernel = &kernel.columns[..];
         assert!(
-            side.len() == nx * ny && out.len() == nx * ny && spec.len() == nh * ny && kernel.len() == nh * ny,
+            side.len() == nx * ny && out.len() == nx * ny && spec.len() == nh * ny && kernel.fits(nh, ny),
             "RealFft2::convolve_rows: sizes"
         );
         let r2c = &self.r2c;
@@ -372,14 +403,14 @@ fn columns(parallel: bool, fft: &dyn rustfft::Fft<f64>, data: &mut [Complex64], 
 fn columns_with(
     parallel: bool,
     fft: &dyn rustfft::Fft<f64>,
-    then: Option<(&[f64], &dyn rustfft::Fft<f64>)>,
+    then: Option<(&SpectralKernel, &dyn rustfft::Fft<f64>)>,
     data: &mut [Complex64],
     nc: usize,
     ny: usize,
 ) {
     assert_eq!(data.len(), nc * ny, "fft2 columns: sizes");
     if let Some((k, _)) = then {
-        assert_eq!(k.len(), nc * ny, "fft2 columns: kernel size");
+        assert!(k.fits(nc, ny), "fft2 columns: kernel size");
     }
     let strips = nc.div_ceil(STRIP);
     let ptr = SharedPtr(data.as_mut_ptr());
@@ -413,10 +444,7 @@ fn columns_with(
             let col = &mut buf[c * ld..c * ld + ny];
             fft.process_with_scratch(col, scratch);
             if let Some((kernel, inverse)) = then {
-                let k = &kernel[(c0 + c) * ny..(c0 + c + 1) * ny];
-                for (x, &f) in col.iter_mut().zip(k) {
-                    *x *= f;
-                }
+                kernel.apply(c0 + c, col);
                 inverse.process_with_scratch(col, scratch);
             }
         }
@@ -527,19 +555,32 @@ mod tests {
                     assert!(d.norm() < 1e-9, "{nx}x{ny} ({kx},{ky})");
                 }
             }
-            // convolve == forward · kernel · inverse, bit for bit
-            let values: Vec<f64> = (0..plan.spectrum_len()).map(|k| 1.0 + (k % 7) as f64 * 0.25).collect();
-            let kernel = plan.kernel(&values);
-            let mut a = vec![0.0; nx * ny];
-            let mut b = vec![0.0; nx * ny];
-            let mut s2 = spec.clone();
-            for (c, &k) in s2.iter_mut().zip(&values) {
-                *c *= k;
+            // convolve == forward · kernel · inverse, bit for bit, with a kernel stored whole
+            // and with one even in ky (stored for ky ≤ ny/2)
+            let nh = plan.nh();
+            let odd: Vec<f64> = (0..plan.spectrum_len())
+                .map(|k| 1.0 + (k % 7) as f64 * 0.25 + (k / nh) as f64 * 0.125)
+                .collect();
+            let even: Vec<f64> = (0..plan.spectrum_len())
+                .map(|k| {
+                    let (kx, ky) = (k % nh, k / nh);
+                    1.0 / (1.0 + (kx * kx + ky.min(ny - ky).pow(2)) as f64)
+                })
+                .collect();
+            for (values, half) in [(odd, false), (even, true)] {
+                let kernel = plan.kernel(&values);
+                assert_eq!(kernel.len, if half { ny / 2 + 1 } else { ny }, "{nx}x{ny}");
+                let mut a = vec![0.0; nx * ny];
+                let mut b = vec![0.0; nx * ny];
+                let mut s2 = spec.clone();
+                for (c, &k) in s2.iter_mut().zip(&values) {
+                    *c *= k;
+                }
+                plan.inverse(&mut s2, &mut a);
+                let mut scratch = vec![Complex64::new(0.0, 0.0); plan.spectrum_len()];
+                plan.convolve(&h, &kernel, &mut scratch, &mut b);
+                assert_eq!(a, b, "{nx}x{ny}, half stored: {half}");
             }
-            plan.inverse(&mut s2, &mut a);
-            let mut scratch = vec![Complex64::new(0.0, 0.0); plan.spectrum_len()];
-            plan.convolve(&h, &kernel, &mut scratch, &mut b);
-            assert_eq!(a, b);
             let mut back = vec![0.0; nx * ny];
             plan.inverse(&mut spec, &mut back);
             let s = 1.0 / (nx * ny) as f64;
